@@ -1,0 +1,35 @@
+// Outputs are written under a temporary name beside the target and renamed into place, so a
+// failure never leaves half a file. Errors writing become InputError naming the path.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace curdle {
+
+class StagedFile {
+ public:
+  explicit StagedFile(std::filesystem::path target);
+  ~StagedFile();  // removes the temporary file unless committed
+  StagedFile(const StagedFile&) = delete;
+  StagedFile& operator=(const StagedFile&) = delete;
+
+  const std::filesystem::path& temporary() const { return temporary_; }
+  const std::filesystem::path& target() const { return target_; }
+  void commit();  // renames the temporary file onto the target
+
+ private:
+  std::filesystem::path target_, temporary_;
+  bool committed_ = false;
+};
+
+// Writes `target` through a stream, atomically.
+void write_file(const std::filesystem::path& target,
+                const std::function<void(std::ostream&)>& write);
+
+// Creates `dir` and its parents, or throws InputError saying why it cannot.
+void make_output_dir(const std::filesystem::path& dir);
+
+}  // namespace curdle

@@ -1,0 +1,46 @@
+#include "export/cells_csv.h"
+
+#include <charconv>
+#include <string>
+
+#include "curdle/overlay.h"
+
+namespace curdle {
+
+void write_cells_csv(std::ostream& out, const Design& design, const CurdField& field,
+                     const Box& view) {
+  const int E = design.lattice.dimension;
+  static const char* axes[] = {"x", "y", "z"};
+  std::string header;
+  for (int d = 0; d < E; ++d) header += std::string(d ? "," : "") + axes[d];
+  header += ",value";
+  for (const CurdSpec& c : design.curds) header += "," + c.name;
+  out << header << "\r\n";
+
+  std::string buffer;
+  buffer.reserve(1 << 20);
+  char num[24];
+  auto put = [&](int64_t v) {
+    auto [p, ec] = std::to_chars(num, num + sizeof num, v);
+    buffer.append(num, p);
+  };
+  const size_t n = design.curds.size();
+  scan_rows(field, view, [&](int64_t y, int64_t z, std::span<const uint16_t> row) {
+    for (size_t i = 0; i < row.size(); ++i) {
+      put(view.origin[0] + static_cast<int64_t>(i));
+      if (E >= 2) buffer += ',', put(y);
+      if (E >= 3) buffer += ',', put(z);
+      buffer += ',';
+      put(row[i]);
+      for (size_t c = 0; c < n; ++c) buffer += (row[i] >> c & 1) ? ",1" : ",0";
+      buffer += "\r\n";
+    }
+    if (buffer.size() > (1 << 20) - 4096) {
+      out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+      buffer.clear();
+    }
+  });
+  out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+}
+
+}  // namespace curdle

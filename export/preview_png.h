@@ -1,0 +1,22 @@
+// preview.png: a colour per value, cells scaled up so they can be seen (or averaged down when
+// there are more cells than pixels). 2-D: the view as a plan, y up. 1-D: a strip, wrapped
+// into lines. 3-D: a sheet of z-slices, z = 0 first.
+#pragma once
+
+#include <filesystem>
+
+#include "curdle/curd.h"
+
+namespace curdle {
+
+struct PreviewImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;  // row-major, top row first
+};
+
+PreviewImage render_preview(const Design& design, const CurdField& field, const Box& view);
+
+// Writes through OpenImageIO, atomically.
+void write_png(const std::filesystem::path& target, const PreviewImage& image);
+
+}  // namespace curdle

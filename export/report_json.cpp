@@ -1,0 +1,83 @@
+#include "export/report_json.h"
+
+#include <cmath>
+
+namespace curdle {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// Three significant decimals beyond the unit are plenty for a report and keep it diffable.
+json rounded(double x, int digits = 4) {
+  if (!std::isfinite(x)) return nullptr;
+  const double scale = std::pow(10.0, digits);
+  return std::round(x * scale) / scale;
+}
+json rounded(const std::optional<double>& x, int digits = 4) {
+  return x ? rounded(*x, digits) : json(nullptr);
+}
+
+json box_json(const Box& box, int dimension) {
+  json origin = json::array(), size = json::array();
+  for (int d = 0; d < dimension; ++d) {
+    origin.push_back(box.origin[d]);
+    size.push_back(box.size[d]);
+  }
+  return {{"origin", origin}, {"size", size}};
+}
+
+}  // namespace
+
+json report_to_json(const Report& r) {
+  json j;
+  j["recipe"] = r.recipe;
+  j["seed"] = r.seed;
+  j["lattice"] = {{"base", r.lattice.base},
+                  {"dimension", r.lattice.dimension},
+                  {"stages", r.lattice.stages},
+                  {"mode", std::string(to_string(r.lattice.mode))}};
+  j["field"] = box_json(r.field, r.lattice.dimension);
+  j["view"] = box_json(r.view, r.lattice.dimension);
+  j["cells"] = r.cells;
+  if (r.sd_is_approximate)
+    j["note"] = "quota mode seen through a window: expected_sd is the canonical-mode value";
+  json curds = json::array();
+  for (const CurdReport& c : r.curds) {
+    json stages = json::array();
+    for (const StageRow& s : c.stages) {
+      stages.push_back({{"stage", s.stage},
+                        {"probability", rounded(s.probability.value(), 6)},
+                        {"probability_text", s.probability.text()},
+                        {"cells", s.cells},
+                        {"survivors", s.survivors},
+                        {"expected", rounded(s.expected, 3)},
+                        {"expected_sd", rounded(s.expected_sd, 3)},
+                        {"box_count", s.box_count},
+                        {"local_dimension", rounded(s.local_dimension)},
+                        {"log_ratio_dimension", rounded(s.mean_dimension)},
+                        {"theory_dimension", rounded(s.theory_dimension)}});
+    }
+    json fit = {{"fit", c.fit ? rounded(c.fit->slope) : json(nullptr)},
+                {"r2", c.fit ? rounded(c.fit->r2) : json(nullptr)},
+                {"levels", c.fit ? c.fit->points : 0},
+                {"theory", rounded(c.theory_dimension)}};
+    curds.push_back({{"name", c.name},
+                     {"final_probability", rounded(c.final_probability, 6)},
+                     {"roots", c.roots},
+                     {"root_box_count", c.root_box_count},
+                     {"stages", stages},
+                     {"box_counts", c.box_counts},
+                     {"box_dimension", fit}});
+  }
+  j["curds"] = curds;
+  json values = json::array();
+  for (const ValueRow& v : r.values)
+    values.push_back({{"value", v.value},
+                      {"label", v.label},
+                      {"count", v.count},
+                      {"expected", rounded(v.expected, 3)}});
+  j["values"] = values;
+  return j;
+}
+
+}  // namespace curdle

@@ -1,0 +1,56 @@
+#include "export/report_table.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace curdle {
+namespace {
+
+std::string number(const std::optional<double>& x, int decimals = 3) {
+  return x ? fmt::format("{:.{}f}", *x, decimals) : std::string("-");
+}
+
+}  // namespace
+
+std::string format_report_table(const Report& r) {
+  std::string out;
+  auto line = [&](const std::string& s) { out += s + "\n"; };
+  std::string size;
+  for (int d = 0; d < r.lattice.dimension; ++d)
+    size += (d ? " x " : "") + std::to_string(r.view.size[d]);
+  line(fmt::format("{} - seed {} - base {}, {}-D, {} stages, {} mode - {} cells ({})", r.recipe,
+                   r.seed, r.lattice.base, r.lattice.dimension, r.lattice.stages,
+                   to_string(r.lattice.mode), r.cells, size));
+  for (const CurdReport& c : r.curds) {
+    line("");
+    line(fmt::format("curd '{}': P(final) = {:.6g}", c.name, c.final_probability));
+    line(fmt::format("  {:>5} {:>9} {:>12} {:>12} {:>10} {:>12} {:>8} {:>8} {:>8}", "stage", "p",
+                     "survivors", "expected", "sd", "box count", "local D", "logN/klb",
+                     "theory D"));
+    for (const StageRow& s : c.stages)
+      line(fmt::format("  {:>5} {:>9} {:>12} {:>12.1f} {:>10.2f} {:>12} {:>8} {:>8} {:>8}", s.stage,
+                       s.probability.text(), s.survivors, s.expected, s.expected_sd, s.box_count,
+                       number(s.local_dimension), number(s.mean_dimension),
+                       number(s.theory_dimension)));
+    line(fmt::format("  box dimension: fit {} (R^2 {}, {} levels), theory {}",
+                     c.fit ? number(c.fit->slope) : "-", c.fit ? number(c.fit->r2, 4) : "-",
+                     c.fit ? c.fit->points : 0, number(c.theory_dimension)));
+  }
+  line("");
+  line(fmt::format("  {:>6} {:<28} {:>12} {:>12}", "value", "curds", "count", "expected"));
+  const bool all = r.values.size() <= 64;
+  size_t hidden = 0;
+  for (const ValueRow& v : r.values) {
+    if (!all && v.count == 0) {
+      ++hidden;
+      continue;
+    }
+    line(fmt::format("  {:>6} {:<28} {:>12} {:>12.1f}", v.value, v.label, v.count, v.expected));
+  }
+  if (hidden) line(fmt::format("  ({} values with no cells not shown)", hidden));
+  if (r.sd_is_approximate) line("  note: quota mode through a window; sd is the canonical value");
+  return out;
+}
+
+}  // namespace curdle

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs what curdle needs to build, test and benchmark, from Debian packages only.
+# Idempotent: installs only what is missing, and runs `apt-get update` at most once.
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config
+  libcgal-dev libopenimageio-dev libtinygltf-dev libtomlplusplus-dev libcli11-dev
+  libfmt-dev nlohmann-json3-dev librandom123-dev libtbb-dev libgtest-dev libbenchmark-dev
+  python3 python3-numpy librsvg2-bin
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  echo "setup: all packages present"
+fi

@@ -1,0 +1,28 @@
+#include "cli/progress.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace curdle::cli {
+
+Progress::Progress(std::string what)
+    : what_(std::move(what)), start_(std::chrono::steady_clock::now()),
+      terminal_(::isatty(STDERR_FILENO) == 1) {}
+
+Progress::~Progress() {
+  if (shown_) std::fprintf(stderr, "\r%s: done.          \n", what_.c_str());
+}
+
+void Progress::update(double fraction) {
+  if (!terminal_) return;
+  if (!shown_ && std::chrono::steady_clock::now() - start_ < std::chrono::seconds(1)) return;
+  const int percent = static_cast<int>(fraction * 100);
+  if (percent == last_percent_) return;
+  last_percent_ = percent;
+  shown_ = true;
+  std::fprintf(stderr, "\r%s: %3d%%", what_.c_str(), percent);
+  std::fflush(stderr);
+}
+
+}  // namespace curdle::cli

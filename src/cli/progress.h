@@ -1,0 +1,23 @@
+// Progress on a terminal for work that takes more than a second; silent in pipes and logs.
+#pragma once
+
+#include <chrono>
+#include <string>
+
+namespace curdle::cli {
+
+class Progress {
+ public:
+  explicit Progress(std::string what);
+  ~Progress();
+  void update(double fraction);
+
+ private:
+  std::string what_;
+  std::chrono::steady_clock::time_point start_;
+  bool terminal_ = false;
+  bool shown_ = false;
+  int last_percent_ = -1;
+};
+
+}  // namespace curdle::cli

@@ -1,0 +1,45 @@
+// What `generate` and `report` share: reading the recipe file, applying the command line's
+// seed, window, overrides and limits, and running the engine.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "curdle/curdling.h"
+#include "curdle/report.h"
+#include "recipe/recipe.h"
+
+namespace curdle::cli {
+
+struct CommonOptions {
+  std::string recipe_path;
+  std::optional<uint64_t> seed;
+  std::vector<std::string> sets;
+  std::string window;
+  int threads = 0;  // 0: all cores
+  std::string max_memory;
+};
+
+void add_common_options(CLI::App& command, CommonOptions& options);
+
+struct Session {
+  Recipe recipe;
+  uint64_t seed = 0;
+  Box view;
+  GenerateOptions generate;
+};
+
+// Reads and checks everything the command line names; throws InputError on bad input.
+Session open_session(const CommonOptions& options);
+
+// Runs the engine with progress on a terminal, honouring --threads.
+CurdField run_engine(const Session& session, int threads);
+
+// "8G", "512M", "1.5GiB" or a number of bytes.
+uint64_t parse_bytes(const std::string& text, const std::string& option);
+uint64_t default_memory_limit();
+
+}  // namespace curdle::cli

@@ -1,0 +1,55 @@
+// Curds as data: per curd and stage, one bit per cell of the root grid (see cell_index.h).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "curdle/bitset.h"
+#include "curdle/box.h"
+#include "curdle/cell_index.h"
+#include "curdle/lattice.h"
+#include "curdle/probability.h"
+
+namespace curdle {
+
+struct Rgb {
+  uint8_t r = 0, g = 0, b = 0;
+  bool operator==(const Rgb&) const = default;
+};
+
+struct CurdSpec {
+  std::string name;
+  std::vector<Probability> probabilities;  // one per stage
+  std::optional<Rgb> colour;
+};
+
+// Everything the engine needs besides the seed: the recipe without its file.
+struct Design {
+  std::string name;
+  Lattice lattice;
+  std::vector<CurdSpec> curds;
+  Box field;  // in finest cells, origin at the lattice origin
+};
+
+struct Curd {
+  std::vector<Bitset> stages;  // stages[0] marks the roots, stages[K] the finest survivors
+};
+
+// The generated curds of one design and seed, over the roots that meet `generated`.
+struct CurdField {
+  CellIndex index;
+  Box generated;  // cells outside it were never visited and read as dead
+  std::vector<Curd> curds;
+
+  const Bitset& finest(size_t curd) const { return curds[curd].stages.back(); }
+  // The cell's value: bit i set when curd i survived there.
+  uint32_t value_at(const Coord& cell) const {
+    const uint64_t i = index.finest_index(cell);
+    uint32_t v = 0;
+    for (size_t c = 0; c < curds.size(); ++c) v |= uint32_t{finest(c).test(i)} << c;
+    return v;
+  }
+};
+
+}  // namespace curdle

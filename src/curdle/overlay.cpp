@@ -1,0 +1,118 @@
+#include "curdle/overlay.h"
+
+#include <bit>
+
+#include "curdle/theory.h"
+
+namespace curdle {
+
+std::vector<uint64_t> value_counts(const CurdField& field) {
+  const size_t n = field.curds.size();
+  std::vector<uint64_t> counts(size_t{1} << n, 0);
+  if (n == 0) return counts;
+  const size_t words = field.finest(0).words.size();
+  std::vector<const uint64_t*> curd(n);
+  for (size_t i = 0; i < n; ++i) curd[i] = field.finest(i).words.data();
+  uint64_t occupied = 0;
+  for (size_t w = 0; w < words; ++w) {
+    uint64_t any = 0;
+    for (size_t i = 0; i < n; ++i) any |= curd[i][w];
+    if (!any) continue;
+    occupied += std::popcount(any);
+    if (n <= 4) {
+      // Word-parallel: the cells of value v are those where each curd matches its bit of v.
+      for (uint32_t v = 1; v < counts.size(); ++v) {
+        uint64_t m = any;
+        for (size_t i = 0; i < n; ++i) m &= (v >> i & 1) ? curd[i][w] : ~curd[i][w];
+        counts[v] += std::popcount(m);
+      }
+    } else {
+      for (uint64_t m = any; m; m &= m - 1) {
+        const unsigned bit = std::countr_zero(m);
+        uint32_t v = 0;
+        for (size_t i = 0; i < n; ++i) v |= static_cast<uint32_t>(curd[i][w] >> bit & 1) << i;
+        ++counts[v];
+      }
+    }
+  }
+  counts[0] = field.generated.cells() - occupied;
+  return counts;
+}
+
+CurdField restrict_to(const CurdField& field, const Box& view) {
+  CurdField out = field;
+  out.generated = view;
+  const Lattice& l = field.index.lattice();
+  for (Curd& curd : out.curds) {
+    for (int k = 0; k <= l.stages; ++k) {
+      Bitset& bits = curd.stages[k];
+      const int64_t width = static_cast<int64_t>(l.side_in_cells(k));
+      for_each_set(field.curds[&curd - out.curds.data()].stages[k], 0, bits.size, [&](uint64_t i) {
+        const Coord c = field.index.decode(k, i);
+        for (int d = 0; d < l.dimension; ++d) {
+          const int64_t start = c[d] * width;
+          if (start >= view.origin[d] + view.size[d] || start + width <= view.origin[d]) {
+            bits.words[i >> 6] &= ~(uint64_t{1} << (i & 63));
+            return;
+          }
+        }
+      });
+    }
+  }
+  return out;
+}
+
+std::string value_label(uint32_t value, const std::vector<CurdSpec>& curds) {
+  if (value == 0) return "empty";
+  std::string label;
+  for (size_t i = 0; i < curds.size(); ++i) {
+    if (!(value >> i & 1)) continue;
+    if (!label.empty()) label += "+";
+    label += curds[i].name;
+  }
+  return label;
+}
+
+void scan_rows(const CurdField& field, const Box& view,
+               const std::function<void(int64_t, int64_t, std::span<const uint16_t>)>& row) {
+  const CellIndex& index = field.index;
+  const Lattice& l = index.lattice();
+  const int64_t side = static_cast<int64_t>(l.root_side());
+  // Per-axis offsets, so that the inner loop is a sum of table entries.
+  std::array<std::vector<uint64_t>, 3> offset;
+  std::array<std::vector<int64_t>, 3> root;
+  for (int d = 0; d < 3; ++d) {
+    offset[d].resize(view.size[d]);
+    root[d].resize(view.size[d]);
+    for (int64_t i = 0; i < view.size[d]; ++i) {
+      const int64_t c = view.origin[d] + i;
+      const int64_t r = d < l.dimension ? (c >= 0 ? c / side : -((-c + side - 1) / side)) : 0;
+      root[d][i] = r;
+      offset[d][i] = d < l.dimension ? index.axis_offset(d, static_cast<uint64_t>(c - r * side)) : 0;
+    }
+  }
+  std::vector<uint16_t> values(view.size[0]);
+  for (int64_t z = 0; z < view.size[2]; ++z)
+    for (int64_t y = 0; y < view.size[1]; ++y) {
+      for (int64_t x = 0; x < view.size[0]; ++x) {
+        const uint64_t i = index.root_base({root[0][x], root[1][y], root[2][z]}) + offset[0][x] +
+                           offset[1][y] + offset[2][z];
+        uint16_t v = 0;
+        for (size_t c = 0; c < field.curds.size(); ++c)
+          v |= static_cast<uint16_t>(field.finest(c).test(i)) << c;
+        values[x] = v;
+      }
+      row(view.origin[1] + y, view.origin[2] + z, values);
+    }
+}
+
+std::vector<uint16_t> values_in(const CurdField& field, const Box& view) {
+  std::vector<uint16_t> values;
+  values.reserve(view.cells());
+  scan_rows(field, view, [&](int64_t, int64_t, std::span<const uint16_t> r) {
+    values.insert(values.end(), r.begin(), r.end());
+  });
+  return values;
+}
+
+}  // namespace curdle

@@ -1,0 +1,19 @@
+// Colours of the overlay's values for previews: each curd has a colour, and a cell where
+// several curds survive takes their mean (the paper's a + b = c: red and blue give purple).
+#pragma once
+
+#include <vector>
+
+#include "curdle/curd.h"
+
+namespace curdle {
+
+// The curd's own colour, or one from a default set of distinct, print-safe colours.
+Rgb curd_colour(const std::vector<CurdSpec>& curds, size_t curd);
+
+// One colour per value (2^n entries); value 0, where no curd survived, is a light paving grey.
+std::vector<Rgb> value_colours(const std::vector<CurdSpec>& curds);
+
+inline constexpr Rgb kEmptyColour{236, 232, 222};
+
+}  // namespace curdle

@@ -1,0 +1,91 @@
+#include "curdle/report.h"
+
+#include <cmath>
+
+#include "curdle/overlay.h"
+#include "curdle/theory.h"
+
+namespace curdle {
+namespace {
+
+std::optional<double> finite(double x) {
+  if (std::isfinite(x)) return x;
+  return std::nullopt;
+}
+
+}  // namespace
+
+Report make_report(const Design& design, uint64_t seed, const CurdField& generated,
+                   const Box& view) {
+  const Lattice& l = design.lattice;
+  // Quota mode generates the whole field; count only what the view shows.
+  const bool restrict = !(generated.generated == view);
+  const CurdField restricted = restrict ? restrict_to(generated, view) : CurdField{};
+  const CurdField& field = restrict ? restricted : generated;
+
+  Report report;
+  report.recipe = design.name;
+  report.seed = seed;
+  report.lattice = l;
+  report.field = design.field;
+  report.view = view;
+  report.cells = view.cells();
+  const bool quota = l.mode == Mode::quota;
+  report.sd_is_approximate = quota && !(view == design.field);
+  const double log_b = std::log(static_cast<double>(l.base));
+
+  std::vector<Bitset> scratch;
+  for (size_t c = 0; c < design.curds.size(); ++c) {
+    const CurdSpec& spec = design.curds[c];
+    const Curd& curd = field.curds[c];
+    CurdReport cr;
+    cr.name = spec.name;
+    cr.box_counts = box_counts(curd, l.children(), scratch);
+    cr.roots = curd.stages[0].count();
+    cr.root_box_count = cr.box_counts[0];
+    uint64_t previous = cr.roots;
+    for (int k = 1; k <= l.stages; ++k) {
+      StageRow row;
+      row.stage = k;
+      row.probability = spec.probabilities[k - 1];
+      row.cells = cells_meeting(l, k, view);
+      row.survivors = curd.stages[k].count();
+      row.expected = expected_survivors(l, spec.probabilities, k, view);
+      row.expected_sd = quota && !report.sd_is_approximate
+                            ? 0.0
+                            : survivors_sd(l, spec.probabilities, k, view);
+      row.box_count = cr.box_counts[k];
+      if (row.survivors > 0 && previous > 0)
+        row.local_dimension = std::log(static_cast<double>(row.survivors) / previous) / log_b;
+      if (row.survivors > 0)
+        row.mean_dimension = std::log(static_cast<double>(row.survivors)) / (k * log_b);
+      row.theory_dimension = finite(theory_dimension(l, row.probability.value()));
+      previous = row.survivors;
+      cr.stages.push_back(row);
+    }
+    cr.fit = fit_box_dimension(cr.box_counts, l.base);
+    cr.final_probability = survival_probability(spec.probabilities, l.stages);
+    cr.theory_dimension =
+        finite(theory_dimension(l, std::pow(cr.final_probability, 1.0 / l.stages)));
+    report.curds.push_back(std::move(cr));
+  }
+
+  const std::vector<uint64_t> counts = value_counts(field);
+  const double cells = static_cast<double>(cells_meeting(l, l.stages, view));
+  for (uint32_t v = 0; v < counts.size(); ++v) {
+    ValueRow row;
+    row.value = v;
+    row.label = value_label(v, design.curds);
+    row.count = counts[v];
+    double p = 1;
+    for (size_t c = 0; c < design.curds.size(); ++c) {
+      const double P = report.curds[c].final_probability;
+      p *= (v >> c & 1) ? P : 1 - P;
+    }
+    row.expected = cells * p;
+    report.values.push_back(std::move(row));
+  }
+  return report;
+}
+
+}  // namespace curdle

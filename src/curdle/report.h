@@ -1,0 +1,61 @@
+// The per-stage report: what curdling gave beside what theory expects, per curd and stage,
+// and the counts of the overlay's values. Plain data; exporters format it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "curdle/boxcount.h"
+#include "curdle/curd.h"
+
+namespace curdle {
+
+struct StageRow {
+  int stage = 0;
+  Probability probability;
+  uint64_t cells = 0;      // stage-k cells meeting the view
+  uint64_t survivors = 0;  // N_k
+  double expected = 0;     // C_k * p_1 ... p_k
+  double expected_sd = 0;
+  uint64_t box_count = 0;  // stage-k cells keeping a final survivor
+  std::optional<double> local_dimension;  // log(N_k / N_(k-1)) / log b
+  std::optional<double> mean_dimension;   // log N_k / (k log b), biased low
+  std::optional<double> theory_dimension; // E + log p_k / log b
+};
+
+struct CurdReport {
+  std::string name;
+  uint64_t roots = 0;            // stage-0 cells meeting the view
+  uint64_t root_box_count = 0;   // of them, those keeping a final survivor
+  std::vector<StageRow> stages;  // k = 1..K
+  std::vector<uint64_t> box_counts;  // level 0..K
+  std::optional<LineFit> fit;
+  std::optional<double> theory_dimension;  // E + log(P_K^(1/K)) / log b
+  double final_probability = 0;            // P_K
+};
+
+struct ValueRow {
+  uint32_t value = 0;
+  std::string label;
+  uint64_t count = 0;
+  double expected = 0;
+};
+
+struct Report {
+  std::string recipe;
+  uint64_t seed = 0;
+  Lattice lattice;
+  Box field;
+  Box view;
+  uint64_t cells = 0;
+  bool sd_is_approximate = false;  // quota mode seen through a window
+  std::vector<CurdReport> curds;
+  std::vector<ValueRow> values;
+};
+
+// Builds the report of `field` (from curdle()) seen through `view`.
+Report make_report(const Design& design, uint64_t seed, const CurdField& field, const Box& view);
+
+}  // namespace curdle

@@ -1,0 +1,36 @@
+// Recipes: the TOML files in patterns/, read into a Design. Parses text, never files:
+// the caller reads the file and names its source for error messages.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "curdle/curd.h"
+
+namespace curdle {
+
+struct Recipe {
+  Design design;
+  std::string description;
+  uint64_t seed = 1;
+  std::optional<Box> window;  // [field] window
+};
+
+// Parses a recipe. `overrides` are "dotted.key=VALUE" (VALUE in TOML syntax, or a bare
+// string), applied before validation. Throws InputError naming file, line, key and what
+// is allowed.
+Recipe parse_recipe(std::string_view text, const std::string& source,
+                    const std::vector<std::string>& overrides = {});
+
+// "X,Y,W,H" (2-D), "X,W" (1-D) or "X,Y,Z,W,H,D" (3-D), checked to lie inside the field.
+Box parse_window(const std::string& text, const Design& design);
+
+// Largest sizes the engine accepts.
+inline constexpr int kMaxCurds = 16;
+inline constexpr int kMaxBase = 64;
+inline constexpr int kMaxPathBits = 62;  // E * K * log2(b): a cell's path within its root
+
+}  // namespace curdle

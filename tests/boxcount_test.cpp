@@ -1,0 +1,45 @@
+#include "curdle/boxcount.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "curdle/curdling.h"
+#include "test_support.h"
+
+namespace curdle {
+using test::design;
+
+// The definition, by coordinates: stage-j cells holding at least one final survivor.
+TEST(BoxCount, CountsAreTheStageCellsWithSurvivingDescendants) {
+  for (const Design& d : {design(4, 2, {{"3/4", "1/2", "1/3"}}), design(3, 3, {{"2/3", "1/2", "1/2"}}),
+                          design(2, 1, {{"3/4", "3/4", "3/4", "3/4", "3/4"}})}) {
+    for (uint64_t seed = 0; seed < 10; ++seed) {
+      const CurdField f = curdle(d, seed, d.field);
+      const auto counts = box_counts(f.curds[0], d.lattice.children());
+      const int K = d.lattice.stages;
+      for (int j = 0; j <= K; ++j) {
+        std::set<Coord> boxes;
+        const int64_t shrink = static_cast<int64_t>(d.lattice.side_in_cells(j));
+        for_each_set(f.finest(0), 0, f.finest(0).size, [&](uint64_t i) {
+          Coord c = f.index.decode(K, i);
+          for (auto& x : c) x /= shrink;
+          boxes.insert(c);
+        });
+        EXPECT_EQ(counts[j], boxes.size()) << "level " << j;
+      }
+    }
+  }
+}
+
+TEST(BoxCount, FitOfAnExactPowerLaw) {
+  const std::vector<uint64_t> counts{1, 3, 9, 27, 81};  // N_j = 3^j at scale 2^-j
+  const auto fit = fit_box_dimension(counts, 2);
+  ASSERT_TRUE(fit);
+  EXPECT_NEAR(fit->slope, std::log2(3.0), 1e-12);
+  EXPECT_NEAR(fit->r2, 1.0, 1e-12);
+  EXPECT_FALSE(fit_box_dimension({1, 0, 0}, 2));
+}
+
+}  // namespace curdle

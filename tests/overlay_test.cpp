@@ -1,0 +1,54 @@
+#include "curdle/overlay.h"
+
+#include <gtest/gtest.h>
+
+#include "curdle/curdling.h"
+#include "test_support.h"
+
+namespace curdle {
+using test::design;
+
+TEST(Overlay, ValueCountsAgreeWithCellByCellValues) {
+  for (size_t n : {1u, 3u, 6u}) {
+    std::vector<std::vector<std::string>> curds(n, {"3/4", "1/2", "2/3"});
+    Design d = design(4, 2, curds);
+    d.field = Box{{0, 0, 0}, {70, 45, 1}};
+    const CurdField f = curdle(d, 21, d.field);
+    const auto counts = value_counts(f);
+    std::vector<uint64_t> direct(counts.size(), 0);
+    for (uint16_t v : values_in(f, d.field)) ++direct[v];
+    EXPECT_EQ(counts, direct) << n << " curds";
+    uint64_t total = 0;
+    for (auto c : counts) total += c;
+    EXPECT_EQ(total, 70u * 45u);
+  }
+}
+
+TEST(Overlay, ValueIsTheSumOfCurdBits) {
+  const Design d = design(4, 2, {{"1/2", "1/2"}, {"1/2", "1/2"}});
+  const CurdField f = curdle(d, 2, d.field);
+  const auto values = values_in(f, d.field);
+  size_t i = 0;
+  for (int64_t y = 0; y < 16; ++y)
+    for (int64_t x = 0; x < 16; ++x, ++i) {
+      const uint64_t bit = f.index.finest_index({x, y, 0});
+      EXPECT_EQ(values[i], f.finest(0).test(bit) + 2 * f.finest(1).test(bit));
+    }
+}
+
+TEST(Overlay, Labels) {
+  const Design d = design(4, 2, {{"1/2"}, {"1/2"}, {"1/2"}});
+  EXPECT_EQ(value_label(0, d.curds), "empty");
+  EXPECT_EQ(value_label(5, d.curds), "c0+c2");
+}
+
+TEST(Overlay, RestrictingToAViewKeepsOnlyItsCells) {
+  Design d = design(4, 2, {{"3/4", "3/4"}}, Mode::quota);
+  const CurdField f = curdle(d, 4, d.field);
+  const Box view{{3, 5, 0}, {7, 6, 1}};
+  const CurdField r = restrict_to(f, view);
+  EXPECT_EQ(values_in(r, view), values_in(f, view));
+  EXPECT_EQ(value_counts(r)[0] + value_counts(r)[1], 42u);
+}
+
+}  // namespace curdle

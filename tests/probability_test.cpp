@@ -1,0 +1,45 @@
+#include "curdle/probability.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace curdle {
+
+TEST(Probability, ParsesFractionsAndDecimalsExactly) {
+  auto p = Probability::parse("3/4");
+  ASSERT_TRUE(p);
+  EXPECT_DOUBLE_EQ(p->value(), 0.75);
+  EXPECT_EQ(p->threshold(), uint64_t{3} << 62);
+  auto q = Probability::parse("0.7");
+  ASSERT_TRUE(q);
+  EXPECT_EQ(q->numerator(), 7u);
+  EXPECT_EQ(q->denominator(), 10u);
+  EXPECT_TRUE(Probability::parse("1")->certain());
+  EXPECT_EQ(Probability::parse("0")->threshold(), 0u);
+  EXPECT_EQ(Probability::parse(" 2/3 ")->text(), "2/3");
+}
+
+TEST(Probability, RejectsImpossibleValues) {
+  for (const char* bad : {"", "4/3", "1/0", "-0.5", "1.5", "abc", "1/2/3", "0.5.5", "2", "."})
+    EXPECT_FALSE(Probability::parse(bad)) << bad;
+  EXPECT_FALSE(Probability::from_double(-0.1));
+  EXPECT_FALSE(Probability::from_double(1.01));
+  EXPECT_FALSE(Probability::from_double(std::nan("")));
+}
+
+TEST(Probability, FromDoubleKeepsTheTypedDecimal) {
+  auto p = Probability::from_double(0.7);
+  ASSERT_TRUE(p);
+  EXPECT_TRUE(p->is_rational());
+  EXPECT_EQ(p->denominator(), 10u);
+}
+
+TEST(Probability, WholeMultiplesAndRounding) {
+  EXPECT_TRUE(Probability::parse("3/4")->times_is_whole(16));
+  EXPECT_FALSE(Probability::parse("2/3")->times_is_whole(16));
+  EXPECT_EQ(Probability::parse("2/3")->round_times(16), 11u);  // 10.67
+  EXPECT_EQ(Probability::parse("1/2")->round_times(9), 5u);    // 4.5 rounds up
+}
+
+}  // namespace curdle

@@ -1,0 +1,109 @@
+#include "recipe/recipe.h"
+
+#include <gtest/gtest.h>
+
+#include "curdle/error.h"
+
+namespace curdle {
+namespace {
+
+const char* kGood = R"(name = "t"
+seed = 9
+[lattice]
+base = 4
+dimension = 2
+mode = "canonical"
+[field]
+cells = [67, 67]
+[[curds]]
+name = "red"
+probabilities = ["3/4", "2/3"]
+colour = "#c0392b"
+[[curds]]
+name = "blue"
+probabilities = [0.75, "0.5"]
+)";
+
+std::string error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
+  try {
+    parse_recipe(text, "r.toml", sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST(Recipe, ReadsEveryKey) {
+  const Recipe r = parse_recipe(kGood, "r.toml");
+  EXPECT_EQ(r.design.name, "t");
+  EXPECT_EQ(r.seed, 9u);
+  EXPECT_EQ(r.design.lattice.base, 4);
+  EXPECT_EQ(r.design.lattice.stages, 2);
+  EXPECT_EQ(r.design.field.size[0], 67);
+  ASSERT_EQ(r.design.curds.size(), 2u);
+  EXPECT_EQ(r.design.curds[1].probabilities[0].text(), "0.75");
+  EXPECT_EQ((r.design.curds[0].colour), (Rgb{0xc0, 0x39, 0x2b}));
+}
+
+TEST(Recipe, OverridesByDottedPath) {
+  const Recipe r = parse_recipe(kGood, "r.toml",
+                                {"lattice.mode=exact", "curds.0.probabilities=[\"1/2\",\"1/4\"]",
+                                 "curds.1.probabilities.1=1/4", "field.cells=[16,8]", "name=other"});
+  EXPECT_EQ(r.design.lattice.mode, Mode::exact);
+  EXPECT_EQ(r.design.curds[0].probabilities[1].text(), "1/4");
+  EXPECT_EQ(r.design.curds[1].probabilities[1].text(), "1/4");
+  EXPECT_EQ(r.design.field.size[1], 8);
+  EXPECT_EQ(r.design.name, "other");
+}
+
+TEST(Recipe, ErrorsNameTheLineTheKeyAndWhatIsAllowed) {
+  std::string e = error_of(std::string(kGood) + "colour = 3\n");
+  EXPECT_NE(e.find("r.toml:16:10"), std::string::npos) << e;
+  EXPECT_NE(e.find("curds.1.colour"), std::string::npos) << e;
+  EXPECT_NE(e.find("#rrggbb"), std::string::npos) << e;
+
+  e = error_of(R"([lattice]
+base = 4
+dimenson = 2
+[[curds]]
+probabilities = ["1/2"]
+)");
+  EXPECT_NE(e.find("r.toml:3:1"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean 'dimension'"), std::string::npos) << e;
+
+  e = error_of(R"([lattice]
+base = 4
+dimension = 2
+[[curds]]
+probabilities = ["4/3"]
+)");
+  EXPECT_NE(e.find("curds.0.probabilities.0"), std::string::npos) << e;
+  EXPECT_NE(e.find("from 0 to 1"), std::string::npos) << e;
+}
+
+TEST(Recipe, ExactModeNeedsWholeCounts) {
+  const std::string e = error_of(kGood, {"lattice.mode=exact"});
+  EXPECT_NE(e.find("curds.0.probabilities.1"), std::string::npos) << e;
+  EXPECT_NE(e.find("not a whole number"), std::string::npos) << e;
+}
+
+TEST(Recipe, OverrideErrorsNameTheOverride) {
+  const std::string e = error_of(kGood, {"lattice.base=99"});
+  EXPECT_NE(e.find("--set lattice.base"), std::string::npos) << e;
+  EXPECT_NE(e.find("from 2 to 64"), std::string::npos) << e;
+  EXPECT_NE(error_of(kGood, {"curds.5.name=x"}).find("out of range"), std::string::npos);
+}
+
+TEST(Recipe, Windows) {
+  const Recipe r = parse_recipe(kGood, "r.toml");
+  const Box w = parse_window("3,4,10,20", r.design);
+  EXPECT_EQ(w.origin[0], 3);
+  EXPECT_EQ(w.size[1], 20);
+  EXPECT_THROW(parse_window("60,0,10,10", r.design), InputError);
+  EXPECT_THROW(parse_window("1,2,3", r.design), InputError);
+  EXPECT_THROW(parse_window("a,b,c,d", r.design), InputError);
+}
+
+}  // namespace curdle

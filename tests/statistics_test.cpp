@@ -1,0 +1,142 @@
+// Curdling against theory over many fixed seeds. Bounds are 4 standard errors (mean) or
+// 4 estimated standard errors of the sample variance, so a pass is the same on every run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "curdle/boxcount.h"
+#include "curdle/curdling.h"
+#include "curdle/overlay.h"
+#include "curdle/theory.h"
+#include "test_support.h"
+
+namespace curdle {
+using test::design;
+using test::repeat;
+
+namespace {
+
+struct Moments {
+  double mean = 0, variance = 0, se_mean = 0, se_variance = 0;
+};
+
+Moments moments(const std::vector<double>& x) {
+  const double n = static_cast<double>(x.size());
+  Moments m;
+  m.mean = std::accumulate(x.begin(), x.end(), 0.0) / n;
+  double m2 = 0, m4 = 0;
+  for (double v : x) {
+    const double d = v - m.mean;
+    m2 += d * d, m4 += d * d * d * d;
+  }
+  m2 /= n, m4 /= n;
+  m.variance = m2 * n / (n - 1);
+  m.se_mean = std::sqrt(m.variance / n);
+  m.se_variance = std::sqrt(std::max(0.0, m4 - m2 * m2) / n);
+  return m;
+}
+
+// Survivors of the last stage of curd 0 over seeds 0..n-1, seen through `view`.
+std::vector<double> final_counts(const Design& d, const Box& view, int seeds) {
+  std::vector<double> counts;
+  CurdField f;
+  for (int seed = 0; seed < seeds; ++seed) {
+    curdle_into(d, static_cast<uint64_t>(seed), view, f);
+    counts.push_back(static_cast<double>(f.finest(0).count()));
+  }
+  return counts;
+}
+
+void expect_matches_theory(const Design& d, const Box& view, int seeds) {
+  const Moments m = moments(final_counts(d, view, seeds));
+  const auto& p = d.curds[0].probabilities;
+  const int K = d.lattice.stages;
+  const double mean = expected_survivors(d.lattice, p, K, view);
+  const double sd = survivors_sd(d.lattice, p, K, view);
+  EXPECT_NEAR(m.mean, mean, 4 * sd / std::sqrt(seeds)) << "mean";
+  EXPECT_NEAR(m.variance, sd * sd, 4 * m.se_variance) << "variance";
+}
+
+}  // namespace
+
+TEST(Statistics, CanonicalConstantProbabilityMatchesGaltonWatson) {
+  expect_matches_theory(design(2, 2, repeat("7/10", 8)), design(2, 2, repeat("7/10", 8)).field, 4000);
+}
+
+TEST(Statistics, CanonicalStagewiseProbabilitiesMatchTheory) {
+  const Design d = design(4, 2, {{"3/4", "2/3", "1/3"}});  // the paper's fig. 6
+  expect_matches_theory(d, d.field, 4000);
+  const Design r = design(4, 2, {{"1/3", "2/3", "3/4"}});
+  expect_matches_theory(r, r.field, 4000);
+}
+
+TEST(Statistics, AWindowAcrossRootsMatchesTheory) {
+  Design d = design(4, 2, {{"3/4", "2/3", "1/2"}});
+  d.field = Box{{0, 0, 0}, {128, 128, 1}};
+  expect_matches_theory(d, Box{{40, 50, 0}, {45, 30, 1}}, 3000);
+}
+
+TEST(Statistics, ExactModeInAWindowMatchesTheory) {
+  Design d = design(4, 2, {{"3/4", "1/2", "1/4"}}, Mode::exact);
+  expect_matches_theory(d, Box{{5, 9, 0}, {37, 21, 1}}, 3000);
+}
+
+TEST(Statistics, OneAndThreeDimensionalMeansMatchTheory) {
+  const Design line = design(3, 1, repeat("4/5", 7));
+  expect_matches_theory(line, line.field, 3000);
+  const Design cube = design(2, 3, repeat("3/5", 5));
+  expect_matches_theory(cube, cube.field, 3000);
+}
+
+TEST(Statistics, ValueFrequenciesMatchTheProducts) {
+  const Design d = design(4, 2, {{"3/4", "2/3"}, {"1/2", "1/2"}, {"3/4", "1/3"}});
+  const int seeds = 3000;
+  std::vector<std::vector<double>> counts(8);
+  CurdField f;
+  for (int seed = 0; seed < seeds; ++seed) {
+    curdle_into(d, static_cast<uint64_t>(seed), d.field, f);
+    const auto c = value_counts(f);
+    for (size_t v = 0; v < 8; ++v) counts[v].push_back(static_cast<double>(c[v]));
+  }
+  const double P[3] = {0.5, 0.25, 0.25};
+  for (uint32_t v = 0; v < 8; ++v) {
+    double p = 1;
+    for (int i = 0; i < 3; ++i) p *= (v >> i & 1) ? P[i] : 1 - P[i];
+    const Moments m = moments(counts[v]);
+    EXPECT_NEAR(m.mean, 256 * p, 4 * m.se_mean + 1e-9) << "value " << v;
+  }
+}
+
+namespace {
+
+// Mean fitted box dimension over seeds whose curd survived to the last stage.
+double mean_fitted_dimension(const Design& d, int seeds) {
+  CurdField f;
+  std::vector<Bitset> scratch;
+  double sum = 0;
+  int n = 0;
+  for (int seed = 0; seed < seeds; ++seed) {
+    curdle_into(d, static_cast<uint64_t>(seed), d.field, f);
+    const auto fit = fit_box_dimension(box_counts(f.curds[0], d.lattice.children(), scratch),
+                                       d.lattice.base);
+    if (!fit || f.finest(0).count() == 0) continue;
+    sum += fit->slope;
+    ++n;
+  }
+  EXPECT_GT(n, seeds / 2);
+  return sum / n;
+}
+
+}  // namespace
+
+TEST(Statistics, FittedBoxDimensionConvergesToTheory) {
+  const Design plane = design(2, 2, repeat("7/10", 12));
+  EXPECT_NEAR(mean_fitted_dimension(plane, 400), 2 + std::log2(0.7), 0.03);
+  const Design line = design(2, 1, repeat("17/20", 16));
+  EXPECT_NEAR(mean_fitted_dimension(line, 400), 1 + std::log2(0.85), 0.03);
+  const Design cube = design(2, 3, repeat("7/10", 7));
+  EXPECT_NEAR(mean_fitted_dimension(cube, 200), 3 + std::log2(0.7), 0.03);
+}
+
+}  // namespace curdle

@@ -1,0 +1,36 @@
+// Small helpers shared by the tests: designs written inline.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "curdle/curd.h"
+#include "recipe/recipe.h"
+
+namespace curdle::test {
+
+inline Design design(int base, int dimension, const std::vector<std::vector<std::string>>& curds,
+                     Mode mode = Mode::canonical) {
+  Design d;
+  d.name = "test";
+  d.lattice.base = base;
+  d.lattice.dimension = dimension;
+  d.lattice.stages = static_cast<int>(curds.at(0).size());
+  d.lattice.mode = mode;
+  for (size_t i = 0; i < curds.size(); ++i) {
+    CurdSpec c;
+    c.name = "c" + std::to_string(i);
+    for (const auto& p : curds[i]) c.probabilities.push_back(*Probability::parse(p));
+    d.curds.push_back(c);
+  }
+  const int64_t side = static_cast<int64_t>(d.lattice.root_side());
+  for (int k = 0; k < dimension; ++k) d.field.size[k] = side;
+  return d;
+}
+
+// One curd with the same probability at each of n stages.
+inline std::vector<std::vector<std::string>> repeat(const std::string& p, int n) {
+  return {std::vector<std::string>(n, p)};
+}
+
+}  // namespace curdle::test
