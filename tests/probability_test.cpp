@@ -43,3 +43,34 @@ TEST(Probability, WholeMultiplesAndRounding) {
 }
 
 }  // namespace curdle
+
+// The batched generator must give Random123's Philox4x32-10 bit for bit, on any CPU path.
+#include <Random123/philox.h>
+
+#include <random>
+
+#include "curdle/philox_batch.h"
+
+namespace curdle {
+
+TEST(PhiloxBatch, MatchesRandom123BitForBit) {
+  std::mt19937 rng(7);
+  for (size_t n : {1u, 7u, 8u, 9u, 64u, 1000u}) {
+    std::vector<uint32_t> w[4];
+    for (auto& v : w) {
+      v.resize(n);
+      for (auto& x : v) x = rng();
+    }
+    const uint32_t k0 = rng(), k1 = rng();
+    std::vector<uint32_t> in[4] = {w[0], w[1], w[2], w[3]};
+    philox_in_place(w[0].data(), w[1].data(), w[2].data(), w[3].data(), n, k0, k1);
+    const r123::Philox4x32 philox;
+    for (size_t i = 0; i < n; ++i) {
+      const auto r = philox(r123::Philox4x32::ctr_type{{in[0][i], in[1][i], in[2][i], in[3][i]}},
+                            r123::Philox4x32::key_type{{k0, k1}});
+      for (int j = 0; j < 4; ++j) ASSERT_EQ(w[j][i], r[j]) << "counter " << i << " word " << j;
+    }
+  }
+}
+
+}  // namespace curdle

@@ -1,6 +1,10 @@
 #include "curdle/boxcount.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include <cmath>
+#include <functional>
 
 namespace curdle {
 
@@ -13,16 +17,37 @@ std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children,
   const Bitset* below = &curd.stages[K];
   for (int j = K - 1; j >= 0; --j) {
     Bitset& alive = scratch[j & 1];
-    alive.assign_zero(curd.stages[j].size);
-    uint64_t n = 0;
-    // Only survivors of stage j can have surviving descendants.
-    for_each_set(curd.stages[j], 0, curd.stages[j].size, [&](uint64_t i) {
-      if (below->any_in(i * children, (i + 1) * children)) {
-        alive.set(i);
-        ++n;
-      }
-    });
-    counts[j] = n;
+    const Bitset& stage = curd.stages[j];
+    alive.assign_zero(stage.size);
+    // Only survivors of stage j can have surviving descendants. Ranges of whole words, so
+    // that tasks write disjoint words.
+    // When b^E divides 64 a cell's children are a field of one word: test it directly.
+    const bool in_one_word = 64 % children == 0;
+    const uint64_t field = children >= 64 ? ~uint64_t{0} : (uint64_t{1} << children) - 1;
+    auto mark = [&](uint64_t begin, uint64_t end) {
+      uint64_t n = 0;
+      for_each_set(stage, begin, end, [&](uint64_t i) {
+        const uint64_t first = i * children;
+        const bool any = in_one_word ? ((below->words[first >> 6] >> (first & 63)) & field) != 0
+                                     : below->any_in(first, first + children);
+        if (any) {
+          alive.set(i);
+          ++n;
+        }
+      });
+      return n;
+    };
+    constexpr uint64_t kBitsPerTask = 64 * 1024;
+    if (stage.size <= kBitsPerTask) {
+      counts[j] = mark(0, stage.size);
+    } else {
+      counts[j] = tbb::parallel_reduce(
+          tbb::blocked_range<uint64_t>(0, (stage.size + kBitsPerTask - 1) / kBitsPerTask), uint64_t{0},
+          [&](const tbb::blocked_range<uint64_t>& r, uint64_t n) {
+            return n + mark(r.begin() * kBitsPerTask, std::min(stage.size, r.end() * kBitsPerTask));
+          },
+          std::plus<>());
+    }
     below = &alive;
   }
   return counts;

@@ -57,6 +57,14 @@ CellIndex::CellIndex(const Lattice& lattice, const Box& covered) : lattice_(latt
     lo_[d].assign(1, 0);
     hi_[d].assign(1, 0);
   }
+  child_digits_.assign(lattice.children(), {0, 0, 0});
+  for (uint64_t t = 0; t < child_digits_.size(); ++t) {
+    uint64_t rest = t;
+    for (int d = 0; d < lattice.dimension; ++d) {
+      child_digits_[t][d] = static_cast<uint8_t>(rest % lattice.base);
+      rest /= lattice.base;
+    }
+  }
 }
 
 Box CellIndex::covered_cells() const {

@@ -44,6 +44,9 @@ class CellIndex {
     return hi_[axis][in_root / lo_span_] + lo_[axis][in_root % lo_span_];
   }
 
+  // The digit of child t of a cell along each axis (t = sum_d digit_d b^d).
+  const std::vector<std::array<uint8_t, 3>>& child_digits() const { return child_digits_; }
+
   // Absolute coordinates, in units of stage-k cells, of the stage-k cell with this bit index.
   Coord decode(int stage, uint64_t index) const;
 
@@ -51,7 +54,8 @@ class CellIndex {
   Lattice lattice_;
   Coord root_origin_{0, 0, 0};
   Coord root_count_{1, 1, 1};
-  uint64_t roots_ = 1;
+  uint64_t roots_ = 0;
+  std::vector<std::array<uint8_t, 3>> child_digits_;
   // axis_offset tables, split into the low and high stages so each stays ~sqrt(b^K) long.
   std::array<std::vector<uint64_t>, 3> lo_, hi_;
   uint64_t lo_span_ = 1;  // b^(low stages)

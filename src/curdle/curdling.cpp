@@ -2,6 +2,10 @@
 
 #include <tbb/parallel_for.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -12,6 +16,7 @@
 #include <vector>
 
 #include "curdle/error.h"
+#include "curdle/philox_batch.h"
 #include "curdle/random_stream.h"
 #include "curdle/theory.h"
 
@@ -36,12 +41,12 @@ struct StageWork {
   const CellIndex& index;
   const Box& box;
   bool prune;  // false when the box covers all the roots: every child is inside
+  Mode mode;
   const RandomStream& rng;
   uint32_t curd;
   int stage;
   const Probability& p;
   uint64_t children;  // b^E
-  const std::vector<std::array<uint8_t, 3>>& child_digits;
 };
 
 // Which children of a parent meet the box: one bit per child digit along each axis.
@@ -54,12 +59,12 @@ struct ChildFilter {
   }
 };
 
-ChildFilter filter_children(const StageWork& w, uint64_t parent_index) {
+ChildFilter filter_children_slow(const StageWork& w, uint64_t parent_index) {
   ChildFilter f;
-  if (!w.prune) return f;
   const Lattice& l = w.index.lattice();
   const Coord parent = w.index.decode(w.stage - 1, parent_index);
   const int64_t s = static_cast<int64_t>(l.side_in_cells(w.stage));
+  const uint64_t every = l.base == 64 ? ~uint64_t{0} : (uint64_t{1} << l.base) - 1;
   for (int d = 0; d < l.dimension; ++d) {
     uint64_t mask = 0;
     const int64_t lo = w.box.origin[d], hi = w.box.origin[d] + w.box.size[d];
@@ -68,47 +73,160 @@ ChildFilter filter_children(const StageWork& w, uint64_t parent_index) {
       if (start < hi && start + s > lo) mask |= uint64_t{1} << delta;
     }
     f.axis[d] = mask;
-    if (mask != (l.base == 64 ? ~uint64_t{0} : (uint64_t{1} << l.base) - 1)) f.all = false;
+    if (mask != every) f.all = false;
   }
   return f;
 }
 
+inline ChildFilter filter_children(const StageWork& w, uint64_t parent_index) {
+  return w.prune ? filter_children_slow(w, parent_index) : ChildFilter{};
+}
+
+uint64_t low_bits(unsigned count) { return count >= 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1; }
+
 uint64_t allowed_bits(const StageWork& w, const ChildFilter& f, uint64_t first, unsigned count) {
-  if (f.all) return count == 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1;
+  if (f.all) return low_bits(count);
+  const auto& digits = w.index.child_digits();
   uint64_t bits = 0;
-  for (unsigned i = 0; i < count; ++i)
-    bits |= uint64_t{f.allows(w.child_digits[first + i])} << i;
+  for (unsigned i = 0; i < count; ++i) bits |= uint64_t{f.allows(digits[first + i])} << i;
   return bits;
 }
 
-// Survival of 16 children (16 * block ...) of one parent, canonical mode. Exactly
-// P = threshold / 2^64 per child: compare one byte, and on a tie the next 56 bits.
-uint32_t survival_block(const StageWork& w, uint64_t path, uint32_t root, uint32_t block,
-                        unsigned count) {
-  const uint64_t threshold = w.p.threshold();
-  if (w.p.certain()) return count == 32 ? ~0u : (1u << count) - 1;
-  if (threshold == 0) return 0;
-  const auto r = w.rng.draw(path, root, w.curd, w.stage, DrawKind::survival, block);
-  const uint32_t top = static_cast<uint32_t>(threshold >> 56);
-  uint32_t below = 0, tie = 0;
-  for (unsigned word = 0; word < 4; ++word) {
-    const uint32_t x = r[word];
+// 16 survival bytes of one draw against the threshold's top byte: which are below, which tie.
+void compare_bytes(const RandomStream::Block& r, uint32_t top, uint32_t& below, uint32_t& tie) {
+#if defined(__SSE2__)
+  const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(r.data()));
+  const __m128i flip = _mm_set1_epi8(static_cast<char>(0x80));
+  const __m128i t = _mm_set1_epi8(static_cast<char>(top ^ 0x80));
+  below = static_cast<uint32_t>(_mm_movemask_epi8(_mm_cmplt_epi8(_mm_xor_si128(v, flip), t)));
+  tie = static_cast<uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_set1_epi8(static_cast<char>(top)))));
+#else
+  below = tie = 0;
+  for (unsigned word = 0; word < 4; ++word)
     for (unsigned q = 0; q < 4; ++q) {
-      const uint32_t u = (x >> (8 * q)) & 0xff;
+      const uint32_t u = (r[word] >> (8 * q)) & 0xff;
       below |= static_cast<uint32_t>(u < top) << (4 * word + q);
       tie |= static_cast<uint32_t>(u == top) << (4 * word + q);
     }
-  }
-  const uint32_t keep = count >= 16 ? 0xffffu : (1u << count) - 1;
-  tie &= keep;
-  while (tie) {
-    const unsigned bit = std::countr_zero(tie);
-    const auto t = w.rng.draw(path, root, w.curd, w.stage, DrawKind::tie_break, block * 16 + bit);
-    if ((RandomStream::high_word(t) >> 8) < (threshold & kLow56)) below |= 1u << bit;
-    tie &= tie - 1;
-  }
-  return below & keep;
+#endif
 }
+
+// Canonical survival for a batch of parents, keyed by the children's paths (random_stream.h,
+// kind 0). The draws of a whole batch are made in one tight loop, so that the generator's
+// latency overlaps between parents; neighbouring parents share a draw when b^E < 16.
+class SurvivalBatch {
+ public:
+  static constexpr size_t kParents = 64;
+
+  SurvivalBatch(const StageWork& w, Bitset& children)
+      : w_(w), children_(children), threshold_(w.p.threshold()),
+        top_(static_cast<uint32_t>(threshold_ >> 56)), buffers_(thread_buffers()) {}
+  ~SurvivalBatch() { flush(); }
+
+  void add(uint64_t index, uint64_t path, uint32_t root) {
+    parents_[count_++] = Parent{index, path, root, 0};
+    if (count_ == kParents) flush();
+  }
+
+  void flush() {
+    if (count_ == 0) return;
+    const uint64_t B = w_.children;
+    auto& blocks_ = buffers_.blocks;
+    blocks_.clear();
+    for (size_t p = 0; p < count_; ++p) {
+      Parent& parent = parents_[p];
+      const uint64_t first = parent.path * B >> 4, last = (parent.path * B + B - 1) >> 4;
+      for (uint64_t b = first; b <= last; ++b) {
+        const bool shared = !blocks_.empty() && blocks_.back().block == b && blocks_.back().root == parent.root;
+        if (b == first) parent.first_block = blocks_.size() - (shared ? 1 : 0);
+        if (!shared) blocks_.push_back(Block{b, parent.root, 0, 0});
+      }
+    }
+    draw_all();
+    for (Block& b : blocks_)
+      for (uint32_t ties = b.tie; ties; ties &= ties - 1) resolve(b, std::countr_zero(ties));
+    for (size_t p = 0; p < count_; ++p) write_children(parents_[p]);
+    count_ = 0;
+  }
+
+ private:
+  struct Parent {
+    uint64_t index, path;
+    uint32_t root;
+    size_t first_block;
+  };
+  struct Block {
+    uint64_t block;
+    uint32_t root;
+    uint32_t below, tie;
+  };
+
+  // All the batch's draws at once (philox_batch.h), then their bytes against the threshold.
+  void draw_all() {
+    auto& blocks_ = buffers_.blocks;
+    auto &w0_ = buffers_.w0, &w1_ = buffers_.w1, &w2_ = buffers_.w2, &w3_ = buffers_.w3;
+    const size_t n = blocks_.size();
+    for (auto* w : {&w0_, &w1_, &w2_, &w3_}) w->resize(n);
+    const uint32_t tag = RandomStream::tag(w_.curd, w_.stage, DrawKind::survival, 0);
+    for (size_t i = 0; i < n; ++i) {
+      w0_[i] = static_cast<uint32_t>(blocks_[i].block);
+      w1_[i] = static_cast<uint32_t>(blocks_[i].block >> 32);
+      w2_[i] = blocks_[i].root;
+      w3_[i] = tag;
+    }
+    philox_in_place(w0_.data(), w1_.data(), w2_.data(), w3_.data(), n, w_.rng.key(0), w_.rng.key(1));
+    for (size_t i = 0; i < n; ++i)
+      compare_bytes(RandomStream::Block{{w0_[i], w1_[i], w2_[i], w3_[i]}}, top_, blocks_[i].below,
+                    blocks_[i].tie);
+  }
+
+  // A tie on the top byte: the next 56 bits decide (kind 1).
+  void resolve(Block& b, unsigned bit) {
+    const auto t = w_.rng.draw(b.block << 4 | bit, b.root, w_.curd, w_.stage, DrawKind::tie_break, 0);
+    if ((RandomStream::high_word(t) >> 8) < (threshold_ & kLow56)) b.below |= 1u << bit;
+  }
+
+  void write_children(const Parent& parent) {
+    const auto& blocks_ = buffers_.blocks;
+    const uint64_t B = w_.children;
+    const ChildFilter filter = filter_children(w_, parent.index);
+    size_t block = parent.first_block;
+    uint64_t child = parent.path * B;
+    for (uint64_t c = 0; c < B; c += 64) {
+      const unsigned count = static_cast<unsigned>(std::min<uint64_t>(64, B - c));
+      uint64_t bits = 0;
+      for (unsigned done = 0; done < count;) {
+        const unsigned offset = child & 15;
+        const unsigned n = std::min(count - done, 16 - offset);
+        const uint32_t keep = static_cast<uint32_t>(low_bits(n)) << offset;
+        bits |= static_cast<uint64_t>((blocks_[block].below & keep) >> offset) << done;
+        done += n;
+        child += n;
+        if ((child & 15) == 0) ++block;
+      }
+      if (bits) bits &= allowed_bits(w_, filter, c, count);
+      if (bits) children_.or_bits(parent.index * B + c, bits, count);
+    }
+  }
+
+  const StageWork& w_;
+  Bitset& children_;
+  uint64_t threshold_;
+  uint32_t top_;
+  // Per-thread scratch, kept between stages and seeds so that small curds allocate nothing.
+  struct Buffers {
+    std::vector<Block> blocks;
+    std::vector<uint32_t> w0, w1, w2, w3;
+  };
+  static Buffers& thread_buffers() {
+    thread_local Buffers buffers;
+    return buffers;
+  }
+
+  std::array<Parent, kParents> parents_;
+  size_t count_ = 0;
+  Buffers& buffers_;
+};
 
 // Exact mode: the parent keeps the m = p * b^E children with the smallest keys.
 void exact_children(const StageWork& w, uint64_t path, uint32_t root, uint64_t keep,
@@ -147,30 +265,34 @@ void for_each_parent(const StageWork& w, const Bitset& parents, uint64_t begin, 
 
 void canonical_or_exact_stage(const StageWork& w, const Bitset& parents, Bitset& children) {
   const uint64_t B = w.children;
-  const uint64_t exact_keep = w.index.lattice().mode == Mode::exact ? w.p.round_times(B) : 0;
-  const bool exact = w.index.lattice().mode == Mode::exact;
   auto run = [&](uint64_t begin, uint64_t end) {
-    std::vector<std::pair<uint64_t, uint32_t>> keys;
-    std::vector<uint64_t> chosen;
-    for_each_parent(w, parents, begin, end, [&](uint64_t i, uint64_t path, uint32_t code) {
-      const ChildFilter filter = filter_children(w, i);
-      const uint64_t first_child = i * B;
-      if (exact) {
-        exact_children(w, path, code, exact_keep, keys, chosen);
+    if (w.mode == Mode::exact) {
+      const uint64_t keep = w.p.round_times(B);
+      std::vector<std::pair<uint64_t, uint32_t>> keys;
+      std::vector<uint64_t> chosen;
+      for_each_parent(w, parents, begin, end, [&](uint64_t i, uint64_t path, uint32_t code) {
+        const ChildFilter filter = filter_children(w, i);
+        exact_children(w, path, code, keep, keys, chosen);
         for (uint64_t c = 0; c < B; c += 64) {
           const unsigned count = static_cast<unsigned>(std::min<uint64_t>(64, B - c));
-          const uint64_t bits = chosen[c / 64] & allowed_bits(w, filter, c, count);
-          if (bits) children.or_bits(first_child + c, bits, count);
+          uint64_t bits = chosen[c / 64];
+          if (bits) bits &= allowed_bits(w, filter, c, count);
+          if (bits) children.or_bits(i * B + c, bits, count);
         }
-        return;
-      }
-      for (uint64_t c = 0; c < B; c += 16) {
-        const unsigned count = static_cast<unsigned>(std::min<uint64_t>(16, B - c));
-        uint64_t bits = survival_block(w, path, code, static_cast<uint32_t>(c / 16), count);
-        if (bits) bits &= allowed_bits(w, filter, c, count);
-        if (bits) children.or_bits(first_child + c, bits, count);
-      }
-    });
+      });
+    } else if (w.p.certain()) {
+      for_each_parent(w, parents, begin, end, [&](uint64_t i, uint64_t, uint32_t) {
+        const ChildFilter filter = filter_children(w, i);
+        for (uint64_t c = 0; c < B; c += 64) {
+          const unsigned count = static_cast<unsigned>(std::min<uint64_t>(64, B - c));
+          children.or_bits(i * B + c, allowed_bits(w, filter, c, count), count);
+        }
+      });
+    } else if (w.p.threshold() != 0) {
+      SurvivalBatch batch(w, children);
+      for_each_parent(w, parents, begin, end,
+                      [&](uint64_t i, uint64_t path, uint32_t code) { batch.add(i, path, code); });
+    }
   };
   const uint64_t n = parents.size;
   if (n <= kParentsPerTask) {
@@ -193,7 +315,7 @@ void quota_stage(const StageWork& w, uint64_t target, const Bitset& parents, Bit
     for_each_parent(w, parents, 0, parents.size, [&](uint64_t i, uint64_t path, uint32_t code) {
       const ChildFilter filter = filter_children(w, i);
       for (uint64_t c = 0; c < B; ++c) {
-        if (!filter.all && !filter.allows(w.child_digits[c])) continue;
+        if (!filter.all && !filter.allows(w.index.child_digits()[c])) continue;
         const auto r = w.rng.draw(path * B + c, code, w.curd, w.stage, DrawKind::quota_key, 0);
         f(RandomStream::high_word(r), i * B + c);
       }
@@ -222,18 +344,6 @@ void quota_stage(const StageWork& w, uint64_t target, const Bitset& parents, Bit
     if ((key >> 48) < bucket || ((key >> 48) == bucket && std::pair{key, bit} <= cut))
       children.set(bit);
   });
-}
-
-std::vector<std::array<uint8_t, 3>> child_digits(const Lattice& l) {
-  std::vector<std::array<uint8_t, 3>> digits(l.children(), {0, 0, 0});
-  for (uint64_t t = 0; t < digits.size(); ++t) {
-    uint64_t rest = t;
-    for (int d = 0; d < l.dimension; ++d) {
-      digits[t][d] = static_cast<uint8_t>(rest % l.base);
-      rest /= l.base;
-    }
-  }
-  return digits;
 }
 
 }  // namespace
@@ -290,12 +400,16 @@ void curdle_into(const Design& design, uint64_t seed, const Box& view, CurdField
                        "; use a smaller field, window or fewer stages" +
                        (options.memory_limit_hint.empty() ? "" : ", or " + options.memory_limit_hint));
   }
-  out.index = CellIndex(lattice, box);
+  // The index tables depend only on the lattice and the box: keep them across seeds.
+  const Lattice& had = out.index.lattice();
+  if (!(had.base == lattice.base && had.dimension == lattice.dimension &&
+        had.stages == lattice.stages && out.generated == box && out.index.roots() > 0 &&
+        !out.curds.empty()))
+    out.index = CellIndex(lattice, box);
   out.generated = box;
   out.curds.resize(design.curds.size());
 
   const RandomStream rng(seed);
-  const auto digits = child_digits(lattice);
   const bool prune = !(box == out.index.covered_cells());
   const double total_work = static_cast<double>(design.curds.size() * lattice.stages);
   double done = 0;
@@ -306,8 +420,8 @@ void curdle_into(const Design& design, uint64_t seed, const Box& view, CurdField
     for (uint64_t r = 0; r < out.index.roots(); ++r) curd.stages[0].set(r);
     for (int k = 1; k <= lattice.stages; ++k) {
       curd.stages[k].assign_zero(out.index.roots() * lattice.cells_per_root(k));
-      const StageWork work{out.index, box, prune, rng, static_cast<uint32_t>(c), k,
-                           design.curds[c].probabilities[k - 1], lattice.children(), digits};
+      const StageWork work{out.index, box, prune, lattice.mode, rng, static_cast<uint32_t>(c), k,
+                           design.curds[c].probabilities[k - 1], lattice.children()};
       if (lattice.mode == Mode::quota)
         quota_stage(work, quota_target(design.curds[c].probabilities, k,
                                        cells_meeting(lattice, k, box)),

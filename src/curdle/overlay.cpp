@@ -1,5 +1,9 @@
 #include "curdle/overlay.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
 #include <bit>
 
 #include "curdle/theory.h"
@@ -8,34 +12,47 @@ namespace curdle {
 
 std::vector<uint64_t> value_counts(const CurdField& field) {
   const size_t n = field.curds.size();
-  std::vector<uint64_t> counts(size_t{1} << n, 0);
-  if (n == 0) return counts;
+  const size_t values = size_t{1} << n;
+  if (n == 0) return std::vector<uint64_t>(1, field.generated.cells());
   const size_t words = field.finest(0).words.size();
   std::vector<const uint64_t*> curd(n);
   for (size_t i = 0; i < n; ++i) curd[i] = field.finest(i).words.data();
-  uint64_t occupied = 0;
-  for (size_t w = 0; w < words; ++w) {
-    uint64_t any = 0;
-    for (size_t i = 0; i < n; ++i) any |= curd[i][w];
-    if (!any) continue;
-    occupied += std::popcount(any);
-    if (n <= 4) {
-      // Word-parallel: the cells of value v are those where each curd matches its bit of v.
-      for (uint32_t v = 1; v < counts.size(); ++v) {
-        uint64_t m = any;
-        for (size_t i = 0; i < n; ++i) m &= (v >> i & 1) ? curd[i][w] : ~curd[i][w];
-        counts[v] += std::popcount(m);
-      }
-    } else {
-      for (uint64_t m = any; m; m &= m - 1) {
-        const unsigned bit = std::countr_zero(m);
-        uint32_t v = 0;
-        for (size_t i = 0; i < n; ++i) v |= static_cast<uint32_t>(curd[i][w] >> bit & 1) << i;
-        ++counts[v];
+  // counts[0] holds the cells where any curd survived until the end.
+  auto count_range = [&](size_t begin, size_t end, std::vector<uint64_t>& counts) {
+    for (size_t w = begin; w < end; ++w) {
+      uint64_t any = 0;
+      for (size_t i = 0; i < n; ++i) any |= curd[i][w];
+      if (!any) continue;
+      counts[0] += std::popcount(any);
+      if (n <= 4) {
+        // Word-parallel: the cells of value v are those where each curd matches its bit of v.
+        for (uint32_t v = 1; v < values; ++v) {
+          uint64_t m = any;
+          for (size_t i = 0; i < n; ++i) m &= (v >> i & 1) ? curd[i][w] : ~curd[i][w];
+          counts[v] += std::popcount(m);
+        }
+      } else {
+        for (uint64_t m = any; m; m &= m - 1) {
+          const unsigned bit = std::countr_zero(m);
+          uint32_t v = 0;
+          for (size_t i = 0; i < n; ++i) v |= static_cast<uint32_t>(curd[i][w] >> bit & 1) << i;
+          ++counts[v];
+        }
       }
     }
+  };
+  std::vector<uint64_t> counts(values, 0);
+  if (words < (1u << 16)) {
+    count_range(0, words, counts);
+  } else {
+    tbb::combinable<std::vector<uint64_t>> partial([values] { return std::vector<uint64_t>(values, 0); });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, words, 1 << 14),
+                      [&](const tbb::blocked_range<size_t>& r) { count_range(r.begin(), r.end(), partial.local()); });
+    partial.combine_each([&](const std::vector<uint64_t>& p) {
+      for (size_t v = 0; v < values; ++v) counts[v] += p[v];
+    });
   }
-  counts[0] = field.generated.cells() - occupied;
+  counts[0] = field.generated.cells() - counts[0];
   return counts;
 }
 

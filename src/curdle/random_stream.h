@@ -8,16 +8,18 @@
 //   tag     = curd << 28 | stage << 22 | kind << 20 | block      (curd < 16, stage < 64)
 //   root code: E=1: rx;  E=2: rx | ry << 16;  E=3: rx | ry << 10 | rz << 20.
 // Kinds:
-//   0 survival bytes: `path` is the parent's; block j gives the bytes of children 16j..16j+15,
-//     child 16j + 4w + q taking byte q (least significant first) of output word w.
-//     A child survives when its byte is below the top byte of the threshold, dies when above,
-//     and on a tie draws kind 1.
-//   1 tie break: `path` is the parent's, block = the child's number; the 56 bits
-//     (w0 << 32 | w1) >> 8 are compared with the low 56 bits of the threshold. Together with
-//     kind 0 this is exactly P(survive) = threshold / 2^64.
+//   0 survival bytes: keyed by the children's own paths, 16 to a draw, so that siblings of
+//     neighbouring parents share one draw when b^E < 16: child path c reads byte c % 16 of
+//     the draw with path c / 16, block 0, byte 4w + q being byte q (least significant first)
+//     of output word w. The child survives when its byte is below the top byte of the
+//     threshold, dies when above, and on a tie draws kind 1.
+//   1 tie break: `path` is the child's path, block 0; the 56 bits (w0 << 32 | w1) >> 8 are
+//     compared with the low 56 bits of the threshold. With kind 0 this makes
+//     P(survive) = threshold / 2^64 exactly.
 //   2 exact-mode keys: `path` is the parent's; block j gives keys of children 2j (w0 << 32 | w1)
 //     and 2j + 1 (w2 << 32 | w3); the parent keeps the children with the smallest keys.
 //   3 quota keys: `path` is the child's own, block 0, key w0 << 32 | w1.
+// A path is the cell's position within its root at its stage (see cell_index.h).
 #pragma once
 
 #include <Random123/philox.h>
@@ -35,9 +37,14 @@ class RandomStream {
   explicit RandomStream(uint64_t seed)
       : key_{{static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32)}} {}
 
+  static uint32_t tag(uint32_t curd, uint32_t stage, DrawKind kind, uint32_t block) {
+    return curd << 28 | stage << 22 | static_cast<uint32_t>(kind) << 20 | block;
+  }
+  uint32_t key(int word) const { return key_[word]; }
+
   Block draw(uint64_t path, uint32_t root_code, uint32_t curd, uint32_t stage, DrawKind kind,
              uint32_t block) const {
-    const uint32_t tag = curd << 28 | stage << 22 | static_cast<uint32_t>(kind) << 20 | block;
+    const uint32_t tag = RandomStream::tag(curd, stage, kind, block);
     const Block counter{{static_cast<uint32_t>(path), static_cast<uint32_t>(path >> 32),
                          root_code, tag}};
     return philox_(counter, key_);
