@@ -12,8 +12,11 @@ namespace curdle {
 namespace fs = std::filesystem;
 
 StagedFile::StagedFile(fs::path target) : target_(std::move(target)) {
-  temporary_ = target_.parent_path() /
-               ("." + target_.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  std::string name = ".";  // hidden, beside the target so that the rename stays on one disk
+  name += target_.filename().string();
+  name += ".tmp-";
+  name += std::to_string(::getpid());
+  temporary_ = target_.parent_path() / name;
 }
 
 StagedFile::~StagedFile() {
@@ -23,6 +26,12 @@ StagedFile::~StagedFile() {
   }
 }
 
+void StagedFile::check_replaceable() const {
+  std::error_code ec;
+  if (fs::is_directory(target_, ec))
+    throw InputError("cannot write " + target_.string() + ": a directory of that name is in the way");
+}
+
 void StagedFile::commit() {
   std::error_code ec;
   fs::rename(temporary_, target_, ec);
@@ -30,16 +39,17 @@ void StagedFile::commit() {
   committed_ = true;
 }
 
+void StagedFile::write(const std::function<void(std::ostream&)>& write) {
+  std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError("cannot write " + target_.string() + ": " + std::strerror(errno));
+  write(out);
+  out.flush();
+  if (!out) throw InputError("cannot write " + target_.string() + ": " + std::strerror(errno));
+}
+
 void write_file(const fs::path& target, const std::function<void(std::ostream&)>& write) {
   StagedFile staged(target);
-  {
-    std::ofstream out(staged.temporary(), std::ios::binary | std::ios::trunc);
-    if (!out)
-      throw InputError("cannot write " + target.string() + ": " + std::strerror(errno));
-    write(out);
-    out.flush();
-    if (!out) throw InputError("cannot write " + target.string() + ": " + std::strerror(errno));
-  }
+  staged.write(write);
   staged.commit();
 }
 

@@ -18,6 +18,11 @@ class StagedFile {
 
   const std::filesystem::path& temporary() const { return temporary_; }
   const std::filesystem::path& target() const { return target_; }
+  // Writes the temporary file through a stream; InputError naming the target on failure.
+  void write(const std::function<void(std::ostream&)>& write);
+  // Throws InputError when the target could not be replaced (it is a directory), so that a
+  // set of files can be checked before any of them is renamed into place.
+  void check_replaceable() const;
   void commit();  // renames the temporary file onto the target
 
  private:

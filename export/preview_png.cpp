@@ -8,7 +8,6 @@
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
-#include "export/atomic_file.h"
 
 namespace curdle {
 namespace {
@@ -18,31 +17,56 @@ constexpr int64_t kMaxPanelPixels = 4096;
 constexpr int kGap = 6;
 constexpr Rgb kBackground{255, 255, 255};
 
+// Where panels and cells go in the image.
+struct SheetLayout {
+  int64_t panel_w, panel_h, panels, columns, rows;
+  int64_t per_pixel;  // cells per pixel when averaging down
+  int64_t scale;      // pixels per cell when scaling up
+  int64_t pw, ph, strip;
+  int width, height;
+};
+
+SheetLayout lay_out(const Design& design, const Box& view) {
+  const int E = design.lattice.dimension;
+  SheetLayout s{};
+  // Panels: E=2 one, E=3 one per z, E=1 lines of the strip.
+  s.panel_w = view.size[0];
+  s.panel_h = E == 1 ? 1 : view.size[1];
+  s.panels = E == 3 ? view.size[2] : 1;
+  if (E == 1 && s.panel_w > kTargetPixels) {
+    s.panel_w = kTargetPixels * std::max<int64_t>(1, (view.size[0] + kTargetPixels * 256 - 1) /
+                                                         (kTargetPixels * 256));
+    s.panels = (view.size[0] + s.panel_w - 1) / s.panel_w;
+  }
+  s.columns = E == 3 ? static_cast<int64_t>(std::ceil(std::sqrt(double(s.panels)))) : 1;
+  s.rows = (s.panels + s.columns - 1) / s.columns;
+  // Cells per pixel (down) or pixels per cell (up), so that the whole sheet stays readable.
+  const int64_t longest = std::max(s.panel_w * s.columns, E == 1 ? s.panel_w : s.panel_h * s.rows);
+  s.per_pixel = std::max<int64_t>(1, (longest + kMaxPanelPixels - 1) / kMaxPanelPixels);
+  s.scale = s.per_pixel > 1 ? 1 : std::clamp<int64_t>(kTargetPixels / longest, 1, 32);
+  s.pw = (s.panel_w + s.per_pixel - 1) / s.per_pixel * s.scale;
+  s.strip = E == 1 ? std::max<int64_t>(s.scale, 48) : 0;
+  s.ph = E == 1 ? s.strip : (s.panel_h + s.per_pixel - 1) / s.per_pixel * s.scale;
+  s.width = static_cast<int>(s.columns * s.pw + (s.columns - 1) * kGap);
+  s.height = static_cast<int>(s.rows * s.ph + (s.rows - 1) * kGap);
+  return s;
+}
+
 }  // namespace
+
+uint64_t preview_memory(const Design& design, const Box& view) {
+  const SheetLayout s = lay_out(design, view);
+  return static_cast<uint64_t>(s.width) * s.height * (4 * sizeof(uint32_t) + 3);
+}
 
 PreviewImage render_preview(const Design& design, const CurdField& field, const Box& view) {
   const int E = design.lattice.dimension;
-  // Panels: E=2 one, E=3 one per z, E=1 lines of the strip.
-  int64_t panel_w = view.size[0], panel_h = E == 1 ? 1 : view.size[1];
-  int64_t panels = E == 3 ? view.size[2] : 1;
-  if (E == 1 && panel_w > kTargetPixels) {
-    panel_w = kTargetPixels * std::max<int64_t>(1, (view.size[0] + kTargetPixels * 256 - 1) /
-                                                       (kTargetPixels * 256));
-    panels = (view.size[0] + panel_w - 1) / panel_w;
-  }
-  const int64_t columns = E == 3 ? static_cast<int64_t>(std::ceil(std::sqrt(double(panels)))) : 1;
-  const int64_t rows = (panels + columns - 1) / columns;
-  // Cells per pixel (down) or pixels per cell (up), so that the whole sheet stays readable.
-  const int64_t longest = std::max(panel_w * columns, E == 1 ? panel_w : panel_h * rows);
-  const int64_t per_pixel = std::max<int64_t>(1, (longest + kMaxPanelPixels - 1) / kMaxPanelPixels);
-  const int64_t scale = per_pixel > 1 ? 1 : std::clamp<int64_t>(kTargetPixels / longest, 1, 32);
-  const int64_t pw = (panel_w + per_pixel - 1) / per_pixel * scale;
-  const int64_t strip = E == 1 ? std::max<int64_t>(scale, 48) : 0;
-  const int64_t ph = E == 1 ? strip : (panel_h + per_pixel - 1) / per_pixel * scale;
-
+  const SheetLayout sheet = lay_out(design, view);
+  const int64_t panel_w = sheet.panel_w, columns = sheet.columns, per_pixel = sheet.per_pixel,
+                scale = sheet.scale, pw = sheet.pw, ph = sheet.ph, strip = sheet.strip;
   PreviewImage image;
-  image.width = static_cast<int>(columns * pw + (columns - 1) * kGap);
-  image.height = static_cast<int>(rows * ph + (rows - 1) * kGap);
+  image.width = sheet.width;
+  image.height = sheet.height;
   const size_t pixels = static_cast<size_t>(image.width) * image.height;
   std::vector<uint32_t> sum(pixels * 4, 0);  // r, g, b, cells
 
@@ -81,15 +105,13 @@ PreviewImage render_preview(const Design& design, const CurdField& field, const 
   return image;
 }
 
-void write_png(const std::filesystem::path& target, const PreviewImage& image) {
-  StagedFile staged(target);
+void write_png(const std::filesystem::path& path, const PreviewImage& image) {
   auto out = OIIO::ImageOutput::create("png");
   if (!out) throw std::runtime_error("OpenImageIO has no PNG writer: " + OIIO::geterror());
   const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  if (!out->open(staged.temporary().string(), spec) ||
+  if (!out->open(path.string(), spec) ||
       !out->write_image(OIIO::TypeDesc::UINT8, image.rgb.data()) || !out->close())
-    throw InputError("cannot write " + target.string() + ": " + out->geterror());
-  staged.commit();
+    throw InputError("cannot write " + path.string() + ": " + out->geterror());
 }
 
 }  // namespace curdle

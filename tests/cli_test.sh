@@ -1,1 +1,127 @@
-exit 0
+#!/usr/bin/env bash
+# End-to-end tests of the `curdle` program: every pattern generates, bad input exits 2 with a
+# message naming what is wrong and leaves no output, threads do not change a byte, and the
+# golden outputs still come out. Usage: CURDLE=path/to/curdle cli_test.sh SOURCE_DIR
+set -u
+src=${1:?source dir}
+curdle=${CURDLE:?path to curdle}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+# Runs curdle, expecting exit code $1 and stderr containing $2; the rest are arguments.
+expect() {
+  local code=$1 pattern=$2
+  shift 2
+  "$curdle" "$@" >"$work/stdout" 2>"$work/stderr"
+  local got=$?
+  if [ "$got" -ne "$code" ]; then
+    fail "curdle $* exited $got, expected $code: $(head -c 400 "$work/stderr")"
+  elif ! grep -qF -- "$pattern" "$work/stderr" "$work/stdout"; then
+    fail "curdle $*: output lacks '$pattern': $(head -c 400 "$work/stderr")"
+  else
+    pass
+  fi
+}
+
+# No file (not even a hidden temporary) may be left in a directory after a failed run.
+expect_empty() {
+  if [ -n "$(ls -A "$1" 2>/dev/null)" ]; then fail "$2 left files: $(ls -A "$1")"; else pass; fi
+}
+
+# 1. Every pattern loads and generates all outputs.
+while IFS= read -r recipe; do
+  out="$work/patterns/$(basename "$recipe" .toml)"
+  expect 0 "outputs in" generate "$recipe" --out "$out"
+  for f in report.json cells.csv preview.png; do
+    [ -s "$out/$f" ] && pass || fail "$recipe: $f missing"
+  done
+done < <(find "$src/patterns" -name '*.toml' | sort)
+
+# 2. Every bad recipe exits 2, names the file and what is allowed, and writes nothing.
+for recipe in "$src"/tests/bad_recipes/*.toml; do
+  want=$(sed -n 's/^# expect: //p' "$recipe")
+  out="$work/bad/$(basename "$recipe" .toml)"
+  expect 2 "$want" generate "$recipe" --out "$out"
+  grep -qF "$(basename "$recipe")" "$work/stderr" && pass || fail "$recipe: message does not name the file"
+  expect_empty "$out" "$recipe"
+done
+
+# 3. Bad command lines exit 2 with a message and no output.
+fig3="$src/patterns/paper/fig3-two-curds.toml"
+o="$work/badcli"
+expect 2 "cannot read the recipe" generate "$work/missing.toml" --out "$o"
+expect 2 "X,Y,W,H" generate "$fig3" --window 1,2,3 --out "$o"
+expect 2 "inside the field" generate "$fig3" --window 10,10,8,8 --out "$o"
+expect 2 "--set lattice.base" generate "$fig3" --set lattice.base=1 --out "$o"
+expect 2 "did you mean" generate "$fig3" --set lattice.mdoe=exact --out "$o"
+expect 2 "not a whole number" generate "$fig3" --set lattice.mode=exact --out "$o"
+expect 2 "unknown output" generate "$fig3" --outputs report.json,pictures --out "$o"
+expect 2 "memory limit" generate "$fig3" --set 'field.cells=[3200,3200]' --max-memory 1M --out "$o"
+expect 2 "memory limit" generate "$fig3" --set 'field.cells=[3200,3200]' --max-memory 2M --outputs report.json --out "$o"
+expect 2 "not a size" generate "$fig3" --max-memory lots --out "$o"
+expect 2 "threads" generate "$fig3" --threads 0 --out "$o"
+expect 2 "seed" generate "$fig3" --seed minus-one --out "$o"
+expect_empty "$o" "bad command lines"
+expect 2 "cannot create the output directory" generate "$fig3" --out /proc/curdle-cannot-write
+touch "$work/a-file"
+expect 2 "cannot create the output directory" generate "$fig3" --out "$work/a-file"
+# A target that cannot be replaced: nothing is renamed into place, no temporary is left.
+mkdir -p "$work/blocked/cells.csv"
+expect 2 "cannot write" generate "$fig3" --out "$work/blocked"
+[ "$(ls -A "$work/blocked")" = "cells.csv" ] && pass || fail "blocked run left: $(ls -A "$work/blocked" | tr '\n' ' ')"
+
+# 4. Overrides and windows.
+expect 0 "outputs in" generate "$fig3" --set lattice.mode=exact \
+  --set 'curds.0.probabilities=["3/4","1/2"]' --set 'curds.1.probabilities=["1/2","1/2"]' --out "$work/set"
+grep -q '"mode": "exact"' "$work/set/report.json" && pass || fail "--set lattice.mode not applied"
+expect 0 "outputs in" generate "$fig3" --window 4,2,8,10 --out "$work/win"
+[ "$(wc -l < "$work/win/cells.csv")" -eq 81 ] && pass || fail "window cells.csv should have 80 rows"
+# The window's rows are the same as the whole curd's rows for those cells.
+awk -F, 'NR > 1 && $1 >= 4 && $1 < 12 && $2 >= 2 && $2 < 12' "$work/patterns/fig3-two-curds/cells.csv" \
+  | sort > "$work/whole-part.csv"
+tail -n +2 "$work/win/cells.csv" | sort > "$work/win-part.csv"
+cmp -s "$work/whole-part.csv" "$work/win-part.csv" && pass || fail "window differs from the whole curd"
+
+# 5. One and two threads give byte-identical outputs (2^22 cells, split between threads).
+big="$work/big.toml"
+cat > "$big" <<'TOML'
+name = "threads"
+[lattice]
+base = 2
+dimension = 2
+[[curds]]
+name = "a"
+probabilities = ["0.7", "0.7", "0.7", "0.7", "0.7", "0.7", "0.7", "0.7", "0.7", "0.7", "0.7"]
+[[curds]]
+name = "b"
+probabilities = ["3/4", "3/4", "3/4", "3/4", "3/4", "3/4", "3/4", "3/4", "3/4", "3/4", "3/4"]
+TOML
+expect 0 "outputs in" generate "$big" --threads 1 --out "$work/t1" --outputs report.json,cells.csv,preview.png
+expect 0 "outputs in" generate "$big" --threads 2 --out "$work/t2" --outputs report.json,cells.csv,preview.png
+for f in report.json cells.csv preview.png; do
+  cmp -s "$work/t1/$f" "$work/t2/$f" && pass || fail "$f differs between 1 and 2 threads"
+done
+
+# 6. Golden outputs lock the random stream layout.
+expect 0 "outputs in" generate "$fig3" --seed 3 --out "$work/golden" --outputs cells.csv
+cmp -s "$work/golden/cells.csv" "$src/tests/golden/fig3-seed3-cells.csv" && pass \
+  || fail "fig3 seed 3 cells.csv differs from tests/golden (the stream layout changed?)"
+expect 0 "outputs in" generate "$src/patterns/paper/fig7-three-stages.toml" --seed 7 --out "$work/golden7" --outputs cells.csv
+cmp -s "$work/golden7/cells.csv" "$src/tests/golden/fig7-three-stages-seed7-cells.csv" && pass \
+  || fail "fig7 seed 7 cells.csv differs from tests/golden"
+
+# 7. The report command, and cells.csv skipped by default above 10 million cells.
+expect 0 "box dimension: fit" report "$fig3" --seed 3
+grep -q "survivors" "$work/stdout" && pass || fail "report table lacks its header"
+expect 0 "outputs in" generate "$fig3" --set 'field.cells=[3200,3200]' --out "$work/huge" --outputs report.json,preview.png,cells.csv
+[ -f "$work/huge/cells.csv" ] && pass || fail "named cells.csv should be written even when large"
+expect 0 "cells.csv skipped" generate "$fig3" --set 'field.cells=[3200,3200]' --out "$work/huge2"
+[ ! -f "$work/huge2/cells.csv" ] && pass || fail "cells.csv should be skipped above 10 million cells"
+# Progress goes to a terminal only: not into this pipe.
+grep -q "%" "$work/stderr" && fail "progress printed into a pipe" || pass
+
+echo "cli: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

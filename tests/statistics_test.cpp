@@ -71,6 +71,14 @@ TEST(Statistics, CanonicalStagewiseProbabilitiesMatchTheory) {
   expect_matches_theory(r, r.field, 4000);
 }
 
+TEST(Statistics, ChildCountsThatAreNotMultiplesOf16MatchTheory) {
+  // b^E = 9 and 25: one draw serves several parents, or a parent spans draws.
+  const Design nine = design(3, 2, repeat("7/10", 4));
+  expect_matches_theory(nine, nine.field, 3000);
+  const Design twenty_five = design(5, 2, {{"3/5", "1/2", "2/5"}});
+  expect_matches_theory(twenty_five, twenty_five.field, 3000);
+}
+
 TEST(Statistics, AWindowAcrossRootsMatchesTheory) {
   Design d = design(4, 2, {{"3/4", "2/3", "1/2"}});
   d.field = Box{{0, 0, 0}, {128, 128, 1}};

@@ -6,9 +6,11 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <set>
 
 #include "cli/session.h"
+#include "curdle/curdling.h"
 #include "curdle/error.h"
 #include "curdle/report.h"
 #include "export/atomic_file.h"
@@ -57,26 +59,38 @@ int generate(const CommonOptions& common, const std::string& out_dir,
   const fs::path dir = out_dir.empty()
                            ? fs::path("curdle-out") / fs::path(common.recipe_path).stem()
                            : fs::path(out_dir);
+  if (outputs.count("preview.png")) {
+    const uint64_t need = estimate_memory(s.recipe.design, generation_box(s.recipe.design, s.view)) +
+                          preview_memory(s.recipe.design, s.view);
+    if (need > s.generate.max_memory_bytes)
+      throw InputError(SourceLocation{common.recipe_path, 0, 0, ""},
+                       "the curds and the preview need about " + std::to_string(need >> 20) +
+                           " MiB, above the memory limit of " +
+                           std::to_string(s.generate.max_memory_bytes >> 20) +
+                           " MiB; use a smaller field or window, or raise the limit with --max-memory");
+  }
   make_output_dir(dir);
 
   const CurdField field = run_engine(s, common.threads);
   const Report report = make_report(s.recipe.design, s.seed, field, s.view);
 
-  std::vector<fs::path> written;
-  if (outputs.count("report.json")) {
-    write_file(dir / "report.json",
-               [&](std::ostream& o) { o << report_to_json(report).dump(2) << "\n"; });
-    written.push_back(dir / "report.json");
-  }
-  if (outputs.count("cells.csv")) {
-    write_file(dir / "cells.csv",
-               [&](std::ostream& o) { write_cells_csv(o, s.recipe.design, field, s.view); });
-    written.push_back(dir / "cells.csv");
-  }
-  if (outputs.count("preview.png")) {
-    write_png(dir / "preview.png", render_preview(s.recipe.design, field, s.view));
-    written.push_back(dir / "preview.png");
-  }
+  // Everything is written under temporary names first and renamed only when all succeeded,
+  // so a failed run leaves no new or half-written output.
+  std::vector<std::unique_ptr<StagedFile>> staged;
+  auto stage = [&](const std::string& name) -> StagedFile& {
+    staged.push_back(std::make_unique<StagedFile>(dir / name));
+    return *staged.back();
+  };
+  if (outputs.count("report.json"))
+    stage("report.json").write([&](std::ostream& o) { o << report_to_json(report).dump(2) << "\n"; });
+  if (outputs.count("cells.csv"))
+    stage("cells.csv").write(
+        [&](std::ostream& o) { write_cells_csv(o, s.recipe.design, field, s.view); });
+  if (outputs.count("preview.png"))
+    write_png(stage("preview.png").temporary(), render_preview(s.recipe.design, field, s.view));
+  for (auto& f : staged) f->check_replaceable();
+  for (auto& f : staged) f->commit();
+
   std::printf("%s, seed %llu: %llu cells\n", s.recipe.design.name.c_str(),
               static_cast<unsigned long long>(s.seed),
               static_cast<unsigned long long>(report.cells));
@@ -87,7 +101,7 @@ int generate(const CommonOptions& common, const std::string& out_dir,
                 c.fit ? std::to_string(c.fit->slope).substr(0, 5).c_str() : "-",
                 c.theory_dimension ? std::to_string(*c.theory_dimension).substr(0, 5).c_str() : "-");
   std::printf("outputs in %s:\n", fs::absolute(dir).lexically_normal().c_str());
-  for (const auto& p : written) std::printf("  %s\n", p.filename().c_str());
+  for (const auto& f : staged) std::printf("  %s\n", f->target().filename().c_str());
   return 0;
 }
 

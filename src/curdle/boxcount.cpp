@@ -3,14 +3,96 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include <array>
+#include <bit>
 #include <cmath>
 #include <functional>
 
 namespace curdle {
 
+namespace {
+
+// Aligned groups of g bits (g a power of two, 1..64) of x with a set bit: fold each group onto
+// its first bit, then count the first bits (`starts`).
+inline unsigned nonzero_groups(uint64_t x, uint64_t g, uint64_t starts) {
+  for (uint64_t s = 1; s < g; s <<= 1) x |= x >> s;
+  return static_cast<unsigned>(std::popcount(x & starts));
+}
+
+inline uint64_t group_starts(uint64_t g) {
+  return g == 64 ? 1 : g == 1 ? ~uint64_t{0} : ~uint64_t{0} / ((uint64_t{1} << g) - 1);
+}
+
+// When b^E is a power of two the descendants of a stage-j cell are an aligned group of
+// (b^E)^(K-j) final bits, so the box count at level j is the number of non-zero groups of
+// that size. Groups up to a word are counted by folding each word; larger ones by recursing
+// on the map of non-zero words (one bit per word), 64 times smaller each time.
+struct GroupLevel {
+  uint64_t group;  // in bits of the array being read
+  uint64_t* count;
+};
+
+void count_groups(const uint64_t* words, size_t n, GroupLevel* levels, size_t count) {
+  size_t in_word = 0;
+  while (in_word < count && levels[in_word].group <= 64) ++in_word;
+  const bool beyond = in_word < count;
+  const size_t map_words = (n + 63) / 64;
+  std::array<uint64_t, 64> small_map;
+  std::vector<uint64_t> large_map;
+  uint64_t* map = small_map.data();
+  if (beyond) {
+    if (map_words > small_map.size()) {
+      large_map.assign(map_words, 0);
+      map = large_map.data();
+    } else {
+      std::fill_n(map, map_words, 0);
+    }
+  }
+  std::array<uint64_t, 64> starts;
+  for (size_t i = 0; i < in_word; ++i) starts[i] = group_starts(levels[i].group);
+  std::array<uint64_t, 64> sums{};
+  auto pass = [&](size_t begin, size_t end, std::array<uint64_t, 64>& acc) {
+    for (size_t w = begin; w < end; ++w) {
+      const uint64_t x = words[w];
+      if (!x) continue;
+      for (size_t i = 0; i < in_word; ++i) acc[i] += nonzero_groups(x, levels[i].group, starts[i]);
+      if (beyond) map[w >> 6] |= uint64_t{1} << (w & 63);
+    }
+  };
+  constexpr size_t kWordsPerTask = 64 * 256;  // whole words of the map per task
+  if (n <= kWordsPerTask) {
+    pass(0, n, sums);
+  } else {
+    sums = tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, (n + kWordsPerTask - 1) / kWordsPerTask), sums,
+        [&](const tbb::blocked_range<size_t>& r, std::array<uint64_t, 64> acc) {
+          pass(r.begin() * kWordsPerTask, std::min(n, r.end() * kWordsPerTask), acc);
+          return acc;
+        },
+        [](std::array<uint64_t, 64> a, const std::array<uint64_t, 64>& b) {
+          for (size_t i = 0; i < a.size(); ++i) a[i] += b[i];
+          return a;
+        });
+  }
+  for (size_t i = 0; i < in_word; ++i) *levels[i].count = sums[i];
+  if (!beyond) return;
+  for (size_t i = in_word; i < count; ++i) levels[i].group /= 64;
+  count_groups(map, map_words, levels + in_word, count - in_word);
+}
+
+}  // namespace
+
 std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children,
                                  std::vector<Bitset>& scratch) {
   const int K = static_cast<int>(curd.stages.size()) - 1;
+  if (std::has_single_bit(children)) {
+    std::vector<uint64_t> counts(K + 1, 0);
+    std::array<GroupLevel, 64> levels;
+    uint64_t group = 1;
+    for (int j = K; j >= 0; --j, group *= children) levels[K - j] = GroupLevel{group, &counts[j]};
+    count_groups(curd.stages[K].words.data(), curd.stages[K].words.size(), levels.data(), K + 1);
+    return counts;
+  }
   std::vector<uint64_t> counts(K + 1, 0);
   counts[K] = curd.stages[K].count();
   scratch.resize(2);

@@ -111,6 +111,39 @@ void compare_bytes(const RandomStream::Block& r, uint32_t top, uint32_t& below, 
 #endif
 }
 
+// compare_bytes for draws held as four word arrays (philox_batch.h), four at a time: an SSE
+// 4 x 4 transpose puts each draw's 16 bytes in one register without a trip through memory.
+void compare_lanes(const uint32_t* w0, const uint32_t* w1, const uint32_t* w2, const uint32_t* w3,
+                   size_t lanes, uint32_t top, uint16_t* below, uint16_t* tie) {
+  size_t i = 0;
+#if defined(__SSE2__)
+  const __m128i flip = _mm_set1_epi8(static_cast<char>(0x80));
+  const __m128i t = _mm_set1_epi8(static_cast<char>(top ^ 0x80));
+  const __m128i eq = _mm_set1_epi8(static_cast<char>(top));
+  for (; i + 4 <= lanes; i += 4) {
+    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w0 + i));
+    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w1 + i));
+    const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w2 + i));
+    const __m128i d = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w3 + i));
+    const __m128i ab_lo = _mm_unpacklo_epi32(a, b), ab_hi = _mm_unpackhi_epi32(a, b);
+    const __m128i cd_lo = _mm_unpacklo_epi32(c, d), cd_hi = _mm_unpackhi_epi32(c, d);
+    const __m128i draw[4] = {_mm_unpacklo_epi64(ab_lo, cd_lo), _mm_unpackhi_epi64(ab_lo, cd_lo),
+                             _mm_unpacklo_epi64(ab_hi, cd_hi), _mm_unpackhi_epi64(ab_hi, cd_hi)};
+    for (int k = 0; k < 4; ++k) {
+      below[i + k] = static_cast<uint16_t>(
+          _mm_movemask_epi8(_mm_cmplt_epi8(_mm_xor_si128(draw[k], flip), t)));
+      tie[i + k] = static_cast<uint16_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(draw[k], eq)));
+    }
+  }
+#endif
+  for (; i < lanes; ++i) {
+    uint32_t b = 0, e = 0;
+    compare_bytes(RandomStream::Block{{w0[i], w1[i], w2[i], w3[i]}}, top, b, e);
+    below[i] = static_cast<uint16_t>(b);
+    tie[i] = static_cast<uint16_t>(e);
+  }
+}
+
 // Canonical survival for a batch of parents, keyed by the children's paths (random_stream.h,
 // kind 0). The draws of a whole batch are made in one tight loop, so that the generator's
 // latency overlaps between parents; neighbouring parents share a draw when b^E < 16.
@@ -120,7 +153,16 @@ class SurvivalBatch {
 
   SurvivalBatch(const StageWork& w, Bitset& children)
       : w_(w), children_(children), threshold_(w.p.threshold()),
-        top_(static_cast<uint32_t>(threshold_ >> 56)), buffers_(thread_buffers()) {}
+        top_(static_cast<uint32_t>(threshold_ >> 56)), buffers_(thread_buffers()) {
+    // At most b^E/16 + 1 draws a parent, in whole vectors of eight.
+    const size_t most = (kParents * (w.children / 16 + 2) + 7) / 8 * 8;
+    if (buffers_.blocks.size() < most) {
+      buffers_.blocks.resize(most);
+      for (auto* v : {&buffers_.w0, &buffers_.w1, &buffers_.w2, &buffers_.w3}) v->resize(most);
+      buffers_.below.resize(most);
+      buffers_.tie.resize(most);
+    }
+  }
   ~SurvivalBatch() { flush(); }
 
   void add(uint64_t index, uint64_t path, uint32_t root) {
@@ -131,20 +173,26 @@ class SurvivalBatch {
   void flush() {
     if (count_ == 0) return;
     const uint64_t B = w_.children;
-    auto& blocks_ = buffers_.blocks;
-    blocks_.clear();
-    for (size_t p = 0; p < count_; ++p) {
-      Parent& parent = parents_[p];
-      const uint64_t first = parent.path * B >> 4, last = (parent.path * B + B - 1) >> 4;
-      for (uint64_t b = first; b <= last; ++b) {
-        const bool shared = !blocks_.empty() && blocks_.back().block == b && blocks_.back().root == parent.root;
-        if (b == first) parent.first_block = blocks_.size() - (shared ? 1 : 0);
-        if (!shared) blocks_.push_back(Block{b, parent.root, 0, 0});
+    if (B % 16 == 0) {
+      flush_whole_draws();
+      return;
+    }
+    Block* blocks = buffers_.blocks.data();
+    size_t n = 0;
+    {
+      for (size_t p = 0; p < count_; ++p) {
+        Parent& parent = parents_[p];
+        const uint64_t first = parent.path * B >> 4, last = (parent.path * B + B - 1) >> 4;
+        for (uint64_t b = first; b <= last; ++b) {
+          const bool shared = n > 0 && blocks[n - 1].block == b && blocks[n - 1].root == parent.root;
+          if (b == first) parent.first_block = n - (shared ? 1 : 0);
+          if (!shared) blocks[n++] = Block{b, parent.root, 0, 0};
+        }
       }
     }
-    draw_all();
-    for (Block& b : blocks_)
-      for (uint32_t ties = b.tie; ties; ties &= ties - 1) resolve(b, std::countr_zero(ties));
+    draw_all(n);
+    for (size_t i = 0; i < n; ++i)
+      for (uint32_t ties = blocks[i].tie; ties; ties &= ties - 1) resolve(blocks[i], std::countr_zero(ties));
     for (size_t p = 0; p < count_; ++p) write_children(parents_[p]);
     count_ = 0;
   }
@@ -161,23 +209,72 @@ class SurvivalBatch {
     uint32_t below, tie;
   };
 
-  // All the batch's draws at once (philox_batch.h), then their bytes against the threshold.
-  void draw_all() {
-    auto& blocks_ = buffers_.blocks;
-    auto &w0_ = buffers_.w0, &w1_ = buffers_.w1, &w2_ = buffers_.w2, &w3_ = buffers_.w3;
-    const size_t n = blocks_.size();
-    for (auto* w : {&w0_, &w1_, &w2_, &w3_}) w->resize(n);
+  // b^E a multiple of 16: each parent owns b^E/16 whole draws, so counters go straight into
+  // the generator's arrays and each parent's bits come straight out of its draws.
+  void flush_whole_draws() {
+    Buffers& b = buffers_;
+    const uint64_t B = w_.children, per_parent = B >> 4;
     const uint32_t tag = RandomStream::tag(w_.curd, w_.stage, DrawKind::survival, 0);
-    for (size_t i = 0; i < n; ++i) {
-      w0_[i] = static_cast<uint32_t>(blocks_[i].block);
-      w1_[i] = static_cast<uint32_t>(blocks_[i].block >> 32);
-      w2_[i] = blocks_[i].root;
-      w3_[i] = tag;
+    size_t n = 0;
+    for (size_t p = 0; p < count_; ++p) {
+      const Parent& parent = parents_[p];
+      for (uint64_t block = parent.path * per_parent; block < (parent.path + 1) * per_parent; ++block) {
+        b.w0[n] = static_cast<uint32_t>(block);
+        b.w1[n] = static_cast<uint32_t>(block >> 32);
+        b.w2[n] = parent.root;
+        b.w3[n++] = tag;
+      }
     }
-    philox_in_place(w0_.data(), w1_.data(), w2_.data(), w3_.data(), n, w_.rng.key(0), w_.rng.key(1));
-    for (size_t i = 0; i < n; ++i)
-      compare_bytes(RandomStream::Block{{w0_[i], w1_[i], w2_[i], w3_[i]}}, top_, blocks_[i].below,
-                    blocks_[i].tie);
+    const size_t lanes = (n + 7) / 8 * 8;  // whole vectors; the padding draws are discarded
+    for (size_t i = n; i < lanes; ++i) b.w0[i] = b.w1[i] = b.w2[i] = b.w3[i] = 0;
+    philox_in_place(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, w_.rng.key(0),
+                    w_.rng.key(1));
+    compare_lanes(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, top_, b.below.data(),
+                  b.tie.data());
+    size_t i = 0;
+    for (size_t p = 0; p < count_; ++p) {
+      const Parent& parent = parents_[p];
+      const ChildFilter filter = filter_children(w_, parent.index);
+      for (uint64_t c = 0; c < B; c += 64) {
+        const unsigned count = static_cast<unsigned>(std::min<uint64_t>(64, B - c));
+        uint64_t bits = 0;
+        for (unsigned done = 0; done < count; done += 16, ++i) {
+          uint32_t below = b.below[i];
+          if (b.tie[i]) {  // rare: 1 in 16 draws
+            Block block{(parent.path * B + c + done) >> 4, parent.root, below, b.tie[i]};
+            for (uint32_t ties = block.tie; ties; ties &= ties - 1) resolve(block, std::countr_zero(ties));
+            below = block.below;
+          }
+          bits |= static_cast<uint64_t>(below) << done;
+        }
+        if (bits && !filter.all) bits &= allowed_bits(w_, filter, c, count);
+        if (bits) children_.or_bits(parent.index * B + c, bits, count);
+      }
+    }
+    count_ = 0;
+  }
+
+  // The first n draws of the batch at once (philox_batch.h), then their bytes against the
+  // threshold.
+  void draw_all(size_t n) {
+    Buffers& b = buffers_;
+    const size_t lanes = (n + 7) / 8 * 8;  // whole vectors; the padding draws are discarded
+    const uint32_t tag = RandomStream::tag(w_.curd, w_.stage, DrawKind::survival, 0);
+    for (size_t i = 0; i < lanes; ++i) {
+      const Block& block = b.blocks[std::min(i, n - 1)];
+      b.w0[i] = static_cast<uint32_t>(block.block);
+      b.w1[i] = static_cast<uint32_t>(block.block >> 32);
+      b.w2[i] = block.root;
+      b.w3[i] = tag;
+    }
+    philox_in_place(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, w_.rng.key(0),
+                    w_.rng.key(1));
+    compare_lanes(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, top_, b.below.data(),
+                  b.tie.data());
+    for (size_t i = 0; i < n; ++i) {
+      b.blocks[i].below = b.below[i];
+      b.blocks[i].tie = b.tie[i];
+    }
   }
 
   // A tie on the top byte: the next 56 bits decide (kind 1).
@@ -187,7 +284,7 @@ class SurvivalBatch {
   }
 
   void write_children(const Parent& parent) {
-    const auto& blocks_ = buffers_.blocks;
+    const Block* blocks_ = buffers_.blocks.data();
     const uint64_t B = w_.children;
     const ChildFilter filter = filter_children(w_, parent.index);
     size_t block = parent.first_block;
@@ -217,6 +314,7 @@ class SurvivalBatch {
   struct Buffers {
     std::vector<Block> blocks;
     std::vector<uint32_t> w0, w1, w2, w3;
+    std::vector<uint16_t> below, tie;
   };
   static Buffers& thread_buffers() {
     thread_local Buffers buffers;
