@@ -29,7 +29,8 @@ StagedFile::~StagedFile() {
 void StagedFile::check_replaceable() const {
   std::error_code ec;
   if (fs::is_directory(target_, ec))
-    throw InputError("cannot write " + target_.string() + ": a directory of that name is in the way");
+    throw InputError("cannot write " + target_.string() +
+                     ": a directory of that name is in the way");
 }
 
 void StagedFile::commit() {

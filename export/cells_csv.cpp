@@ -8,7 +8,7 @@
 namespace curdle {
 
 void write_cells_csv(std::ostream& out, const Design& design, const CurdField& field,
-                     const Box& view) {
+                     const Box& view, const std::function<void(double)>& progress) {
   const int E = design.lattice.dimension;
   static const char* axes[] = {"x", "y", "z"};
   std::string header;
@@ -25,21 +25,24 @@ void write_cells_csv(std::ostream& out, const Design& design, const CurdField& f
     buffer.append(num, p);
   };
   const size_t n = design.curds.size();
-  scan_rows(field, view, [&](int64_t y, int64_t z, std::span<const uint16_t> row) {
-    for (size_t i = 0; i < row.size(); ++i) {
-      put(view.origin[0] + static_cast<int64_t>(i));
-      if (E >= 2) buffer += ',', put(y);
-      if (E >= 3) buffer += ',', put(z);
-      buffer += ',';
-      put(row[i]);
-      for (size_t c = 0; c < n; ++c) buffer += (row[i] >> c & 1) ? ",1" : ",0";
-      buffer += "\r\n";
-    }
-    if (buffer.size() > (1 << 20) - 4096) {
-      out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-      buffer.clear();
-    }
-  });
+  scan_rows(
+      field, view,
+      [&](int64_t y, int64_t z, std::span<const uint16_t> row) {
+        for (size_t i = 0; i < row.size(); ++i) {
+          put(view.origin[0] + static_cast<int64_t>(i));
+          if (E >= 2) buffer += ',', put(y);
+          if (E >= 3) buffer += ',', put(z);
+          buffer += ',';
+          put(row[i]);
+          for (size_t c = 0; c < n; ++c) buffer += (row[i] >> c & 1) ? ",1" : ",0";
+          buffer += "\r\n";
+        }
+        if (buffer.size() > (1 << 20) - 4096) {
+          out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+          buffer.clear();
+        }
+      },
+      progress);
   out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
 }
 

@@ -3,6 +3,7 @@
 // coordinates in cells from the lattice origin. Streamed row by row.
 #pragma once
 
+#include <functional>
 #include <ostream>
 
 #include "curdle/curd.h"
@@ -10,6 +11,6 @@
 namespace curdle {
 
 void write_cells_csv(std::ostream& out, const Design& design, const CurdField& field,
-                     const Box& view);
+                     const Box& view, const std::function<void(double)>& progress = {});
 
 }  // namespace curdle

@@ -59,7 +59,8 @@ uint64_t preview_memory(const Design& design, const Box& view) {
   return static_cast<uint64_t>(s.width) * s.height * (4 * sizeof(uint32_t) + 3);
 }
 
-PreviewImage render_preview(const Design& design, const CurdField& field, const Box& view) {
+PreviewImage render_preview(const Design& design, const CurdField& field, const Box& view,
+                            const std::function<void(double)>& progress) {
   const int E = design.lattice.dimension;
   const SheetLayout sheet = lay_out(design, view);
   const int64_t panel_w = sheet.panel_w, columns = sheet.columns, per_pixel = sheet.per_pixel,
@@ -75,24 +76,27 @@ PreviewImage render_preview(const Design& design, const CurdField& field, const 
     uint32_t* s = &sum[(static_cast<size_t>(py) * image.width + px) * 4];
     s[0] += c.r, s[1] += c.g, s[2] += c.b, s[3] += 1;
   };
-  scan_rows(field, view, [&](int64_t y, int64_t z, std::span<const uint16_t> row) {
-    for (size_t i = 0; i < row.size(); ++i) {
-      int64_t u = static_cast<int64_t>(i), v = y - view.origin[1], panel = z - view.origin[2];
-      if (E == 1) panel = u / panel_w, u %= panel_w, v = 0;
-      const int64_t ox = (panel % columns) * (pw + kGap), oy = (panel / columns) * (ph + kGap);
-      const Rgb& c = colours[row[i]];
-      if (E == 1) {
-        const int64_t x0 = ox + u / per_pixel * scale;
-        for (int64_t dx = 0; dx < scale; ++dx)
-          for (int64_t dy = 0; dy < strip; ++dy) add(x0 + dx, oy + dy, c);
-        continue;
-      }
-      const int64_t x0 = ox + u / per_pixel * scale;
-      const int64_t y0 = oy + (ph - scale) - v / per_pixel * scale;  // y up
-      for (int64_t dy = 0; dy < scale; ++dy)
-        for (int64_t dx = 0; dx < scale; ++dx) add(x0 + dx, y0 + dy, c);
-    }
-  });
+  scan_rows(
+      field, view,
+      [&](int64_t y, int64_t z, std::span<const uint16_t> row) {
+        for (size_t i = 0; i < row.size(); ++i) {
+          int64_t u = static_cast<int64_t>(i), v = y - view.origin[1], panel = z - view.origin[2];
+          if (E == 1) panel = u / panel_w, u %= panel_w, v = 0;
+          const int64_t ox = (panel % columns) * (pw + kGap), oy = (panel / columns) * (ph + kGap);
+          const Rgb& c = colours[row[i]];
+          if (E == 1) {
+            const int64_t x0 = ox + u / per_pixel * scale;
+            for (int64_t dx = 0; dx < scale; ++dx)
+              for (int64_t dy = 0; dy < strip; ++dy) add(x0 + dx, oy + dy, c);
+            continue;
+          }
+          const int64_t x0 = ox + u / per_pixel * scale;
+          const int64_t y0 = oy + (ph - scale) - v / per_pixel * scale;  // y up
+          for (int64_t dy = 0; dy < scale; ++dy)
+            for (int64_t dx = 0; dx < scale; ++dx) add(x0 + dx, y0 + dy, c);
+        }
+      },
+      progress);
   image.rgb.resize(pixels * 3);
   for (size_t p = 0; p < pixels; ++p) {
     const uint32_t* s = &sum[p * 4];

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 
 #include "curdle/curd.h"
 
@@ -17,7 +18,8 @@ struct PreviewImage {
 // Bytes render_preview needs for `view` (its accumulators and the image).
 uint64_t preview_memory(const Design& design, const Box& view);
 
-PreviewImage render_preview(const Design& design, const CurdField& field, const Box& view);
+PreviewImage render_preview(const Design& design, const CurdField& field, const Box& view,
+                            const std::function<void(double)>& progress = {});
 
 // Writes a PNG through OpenImageIO to exactly `path` (stage it with StagedFile).
 void write_png(const std::filesystem::path& path, const PreviewImage& image);

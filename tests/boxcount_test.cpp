@@ -13,8 +13,9 @@ using test::design;
 
 // The definition, by coordinates: stage-j cells holding at least one final survivor.
 TEST(BoxCount, CountsAreTheStageCellsWithSurvivingDescendants) {
-  for (const Design& d : {design(4, 2, {{"3/4", "1/2", "1/3"}}), design(3, 3, {{"2/3", "1/2", "1/2"}}),
-                          design(2, 1, {{"3/4", "3/4", "3/4", "3/4", "3/4"}})}) {
+  for (const Design& d :
+       {design(4, 2, {{"3/4", "1/2", "1/3"}}), design(3, 3, {{"2/3", "1/2", "1/2"}}),
+        design(2, 1, {{"3/4", "3/4", "3/4", "3/4", "3/4"}})}) {
     for (uint64_t seed = 0; seed < 10; ++seed) {
       const CurdField f = curdle(d, seed, d.field);
       const auto counts = box_counts(f.curds[0], d.lattice.children());

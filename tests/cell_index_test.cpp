@@ -35,8 +35,8 @@ TEST_P(CellIndexTest, ChildrenAreConsecutiveBits) {
   const CellIndex index(l, Box{{0, 0, 0}, {static_cast<int64_t>(l.root_side()) * 2, 1, 1}});
   const uint64_t B = l.children();
   for (int k = 1; k <= K; ++k)
-    for (uint64_t parent = 0; parent < std::min<uint64_t>(50, index.roots() * l.cells_per_root(k - 1));
-         ++parent) {
+    for (uint64_t parent = 0;
+         parent < std::min<uint64_t>(50, index.roots() * l.cells_per_root(k - 1)); ++parent) {
       const Coord p = index.decode(k - 1, parent);
       for (uint64_t t = 0; t < B; ++t) {
         const Coord c = index.decode(k, parent * B + t);
@@ -46,8 +46,10 @@ TEST_P(CellIndexTest, ChildrenAreConsecutiveBits) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Lattices, CellIndexTest,
-                         ::testing::Values(IndexCase{2, 1, 5}, IndexCase{3, 1, 4}, IndexCase{2, 2, 5},
-                                           IndexCase{4, 2, 3}, IndexCase{3, 2, 3}, IndexCase{8, 2, 2},
-                                           IndexCase{2, 3, 4}, IndexCase{4, 3, 2}, IndexCase{5, 3, 2}));
+                         ::testing::Values(IndexCase{2, 1, 5}, IndexCase{3, 1, 4},
+                                           IndexCase{2, 2, 5}, IndexCase{4, 2, 3},
+                                           IndexCase{3, 2, 3}, IndexCase{8, 2, 2},
+                                           IndexCase{2, 3, 4}, IndexCase{4, 3, 2},
+                                           IndexCase{5, 3, 2}));
 
 }  // namespace curdle

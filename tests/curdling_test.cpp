@@ -61,7 +61,8 @@ TEST(Curdling, ACroppedFieldShowsTheSameCellsAsTheRootsItCrops) {
   Design roots = d;
   roots.field = window(0, 0, 128, 128);
   d.field = window(0, 0, 67, 67);
-  EXPECT_EQ(values_in(curdle(d, 9, d.field), d.field), values_in(curdle(roots, 9, roots.field), d.field));
+  EXPECT_EQ(values_in(curdle(d, 9, d.field), d.field),
+            values_in(curdle(roots, 9, roots.field), d.field));
 }
 
 TEST(Curdling, ThreadCountDoesNotChangeAnyBit) {

@@ -26,7 +26,8 @@ using test::design;
 namespace {
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("curdle-test-" + name + "-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("curdle-test-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -62,16 +63,18 @@ TEST(ReportJson, HasTheDocumentedShapeAndAddsUp) {
   ASSERT_EQ(j["curds"].size(), 2u);
   const auto& stage = j["curds"][0]["stages"][0];
   EXPECT_EQ(j["curds"][0]["name"], "red");
-  for (const char* key : {"stage", "probability", "survivors", "expected", "expected_sd", "box_count",
-                          "local_dimension", "theory_dimension"})
+  for (const char* key : {"stage", "probability", "survivors", "expected", "expected_sd",
+                          "box_count", "local_dimension", "theory_dimension"})
     EXPECT_TRUE(stage.contains(key)) << key;
   EXPECT_DOUBLE_EQ(stage["probability"].get<double>(), 0.75);
   EXPECT_DOUBLE_EQ(stage["expected"].get<double>(), 12.0);
   EXPECT_NEAR(stage["expected_sd"].get<double>(), 1.732, 1e-3);
-  EXPECT_NEAR(j["curds"][0]["box_dimension"]["theory"].get<double>(), 2 + std::log(0.5) / std::log(4) / 2, 1e-4);
+  EXPECT_NEAR(j["curds"][0]["box_dimension"]["theory"].get<double>(),
+              2 + std::log(0.5) / std::log(4) / 2, 1e-4);
   uint64_t total = 0;
   double expected = 0;
-  for (const auto& v : j["values"]) total += v["count"].get<uint64_t>(), expected += v["expected"].get<double>();
+  for (const auto& v : j["values"])
+    total += v["count"].get<uint64_t>(), expected += v["expected"].get<double>();
   EXPECT_EQ(total, 256u);
   EXPECT_NEAR(expected, 256.0, 1e-6);
   EXPECT_EQ(j["values"].size(), 4u);
@@ -91,9 +94,9 @@ TEST(CellsCsv, OneRowPerCellWithBitsThatMakeTheValue) {
     const auto rows = parse_csv(out.str());
     ASSERT_EQ(rows.size(), d.field.cells() + 1);
     const std::vector<std::string> header =
-        E == 1 ? std::vector<std::string>{"x", "value", "a", "b"}
-               : E == 2 ? std::vector<std::string>{"x", "y", "value", "a", "b"}
-                        : std::vector<std::string>{"x", "y", "z", "value", "a", "b"};
+        E == 1   ? std::vector<std::string>{"x", "value", "a", "b"}
+        : E == 2 ? std::vector<std::string>{"x", "y", "value", "a", "b"}
+                 : std::vector<std::string>{"x", "y", "z", "value", "a", "b"};
     EXPECT_EQ(rows[0], header);
     const auto counts = value_counts(f);
     std::vector<uint64_t> seen(4, 0);
@@ -120,20 +123,23 @@ TEST(Preview, ShowsEachCellInItsValueColourWithYUp) {
   for (int64_t y : {0, 5, 15})
     for (int64_t x : {0, 7, 15}) {
       const Rgb c = colours[f.value_at({x, y, 0})];
-      const size_t px = static_cast<size_t>(x * 32 + 16), py = static_cast<size_t>((15 - y) * 32 + 16);
+      const size_t px = static_cast<size_t>(x * 32 + 16),
+                   py = static_cast<size_t>((15 - y) * 32 + 16);
       const uint8_t* p = &img.rgb[(py * img.width + px) * 3];
       EXPECT_EQ(Rgb({p[0], p[1], p[2]}), c) << x << "," << y;
     }
 }
 
 TEST(Preview, StripsAndSheetsAndLargeFields) {
-  const Design line = design(2, 1, std::vector<std::vector<std::string>>{std::vector<std::string>(12, "3/4")});
+  const Design line =
+      design(2, 1, std::vector<std::vector<std::string>>{std::vector<std::string>(12, "3/4")});
   const PreviewImage strip = render_preview(line, curdle(line, 1, line.field), line.field);
   EXPECT_GT(strip.width, strip.height);
   const Design cube = design(4, 3, {{"3/4", "3/4"}});
   const PreviewImage sheet = render_preview(cube, curdle(cube, 1, cube.field), cube.field);
   EXPECT_EQ(sheet.width, sheet.height);  // 16 slices in a 4 x 4 sheet
-  const Design big = design(2, 2, std::vector<std::vector<std::string>>{std::vector<std::string>(13, "3/4")});
+  const Design big =
+      design(2, 2, std::vector<std::vector<std::string>>{std::vector<std::string>(13, "3/4")});
   const PreviewImage down = render_preview(big, curdle(big, 1, big.field), big.field);
   EXPECT_LE(down.width, 4096);  // 8192 cells averaged two to a pixel
   EXPECT_EQ(preview_memory(big, big.field), uint64_t(down.width) * down.height * 19);
@@ -156,10 +162,11 @@ TEST(Preview, WritesAPngThatReadsBack) {
 
 TEST(AtomicFile, AFailedWriteLeavesNothing) {
   const fs::path dir = temp_dir("atomic");
-  EXPECT_THROW(write_file(dir / "x.txt", [](std::ostream& o) {
-                 o << "half";
-                 throw InputError("stopped halfway");
-               }),
+  EXPECT_THROW(write_file(dir / "x.txt",
+                          [](std::ostream& o) {
+                            o << "half";
+                            throw InputError("stopped halfway");
+                          }),
                InputError);
   EXPECT_TRUE(fs::is_empty(dir));
   write_file(dir / "x.txt", [](std::ostream& o) { o << "whole"; });

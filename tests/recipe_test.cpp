@@ -48,9 +48,10 @@ TEST(Recipe, ReadsEveryKey) {
 }
 
 TEST(Recipe, OverridesByDottedPath) {
-  const Recipe r = parse_recipe(kGood, "r.toml",
-                                {"lattice.mode=exact", "curds.0.probabilities=[\"1/2\",\"1/4\"]",
-                                 "curds.1.probabilities.1=1/4", "field.cells=[16,8]", "name=other"});
+  const Recipe r =
+      parse_recipe(kGood, "r.toml",
+                   {"lattice.mode=exact", "curds.0.probabilities=[\"1/2\",\"1/4\"]",
+                    "curds.1.probabilities.1=1/4", "field.cells=[16,8]", "name=other"});
   EXPECT_EQ(r.design.lattice.mode, Mode::exact);
   EXPECT_EQ(r.design.curds[0].probabilities[1].text(), "1/4");
   EXPECT_EQ(r.design.curds[1].probabilities[1].text(), "1/4");

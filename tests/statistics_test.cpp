@@ -61,7 +61,8 @@ void expect_matches_theory(const Design& d, const Box& view, int seeds) {
 }  // namespace
 
 TEST(Statistics, CanonicalConstantProbabilityMatchesGaltonWatson) {
-  expect_matches_theory(design(2, 2, repeat("7/10", 8)), design(2, 2, repeat("7/10", 8)).field, 4000);
+  expect_matches_theory(design(2, 2, repeat("7/10", 8)), design(2, 2, repeat("7/10", 8)).field,
+                        4000);
 }
 
 TEST(Statistics, CanonicalStagewiseProbabilitiesMatchTheory) {
@@ -126,8 +127,8 @@ double mean_fitted_dimension(const Design& d, int seeds) {
   int n = 0;
   for (int seed = 0; seed < seeds; ++seed) {
     curdle_into(d, static_cast<uint64_t>(seed), d.field, f);
-    const auto fit = fit_box_dimension(box_counts(f.curds[0], d.lattice.children(), scratch),
-                                       d.lattice.base);
+    const auto fit =
+        fit_box_dimension(box_counts(f.curds[0], d.lattice.children(), scratch), d.lattice.base);
     if (!fit || f.finest(0).count() == 0) continue;
     sum += fit->slope;
     ++n;

@@ -19,7 +19,8 @@ inline Design design(int base, int dimension, const std::vector<std::vector<std:
   d.lattice.mode = mode;
   for (size_t i = 0; i < curds.size(); ++i) {
     CurdSpec c;
-    c.name = "c" + std::to_string(i);
+    c.name = "c";  // appended, not concatenated: GCC 12 warns falsely on "c" + string
+    c.name += std::to_string(i);
     for (const auto& p : curds[i]) c.probabilities.push_back(*Probability::parse(p));
     d.curds.push_back(c);
   }

@@ -33,7 +33,7 @@ TEST(Theory, CellsMeetingACroppedBox) {
   const Box field{{0, 0, 0}, {67, 67, 1}};
   EXPECT_EQ(cells_meeting(l, 3, field), 67u * 67u);
   EXPECT_EQ(cells_meeting(l, 2, field), 17u * 17u);  // 4-cell squares: 16 whole + 1 cut
-  EXPECT_EQ(cells_meeting(l, 1, field), 25u);  // 16-cell squares: 4 whole + 1 cut
+  EXPECT_EQ(cells_meeting(l, 1, field), 25u);        // 16-cell squares: 4 whole + 1 cut
   EXPECT_EQ(cells_meeting(l, 0, field), 4u);
 }
 

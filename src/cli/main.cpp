@@ -1,7 +1,6 @@
 // curdle: random curds for façades, paving, perforated panels and parks.
 // Exceptions become exit codes here and only here: 2 for bad input, 1 for internal failure.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -9,6 +8,7 @@
 #include <memory>
 #include <set>
 
+#include "cli/progress.h"
 #include "cli/session.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
@@ -60,14 +60,16 @@ int generate(const CommonOptions& common, const std::string& out_dir,
                            ? fs::path("curdle-out") / fs::path(common.recipe_path).stem()
                            : fs::path(out_dir);
   if (outputs.count("preview.png")) {
-    const uint64_t need = estimate_memory(s.recipe.design, generation_box(s.recipe.design, s.view)) +
-                          preview_memory(s.recipe.design, s.view);
+    const uint64_t need =
+        estimate_memory(s.recipe.design, generation_box(s.recipe.design, s.view)) +
+        preview_memory(s.recipe.design, s.view);
     if (need > s.generate.max_memory_bytes)
-      throw InputError(SourceLocation{common.recipe_path, 0, 0, ""},
-                       "the curds and the preview need about " + std::to_string(need >> 20) +
-                           " MiB, above the memory limit of " +
-                           std::to_string(s.generate.max_memory_bytes >> 20) +
-                           " MiB; use a smaller field or window, or raise the limit with --max-memory");
+      throw InputError(
+          SourceLocation{common.recipe_path, 0, 0, ""},
+          "the curds and the preview need about " + std::to_string(need >> 20) +
+              " MiB, above the memory limit of " +
+              std::to_string(s.generate.max_memory_bytes >> 20) +
+              " MiB; use a smaller field or window, or raise the limit with --max-memory");
   }
   make_output_dir(dir);
 
@@ -82,12 +84,21 @@ int generate(const CommonOptions& common, const std::string& out_dir,
     return *staged.back();
   };
   if (outputs.count("report.json"))
-    stage("report.json").write([&](std::ostream& o) { o << report_to_json(report).dump(2) << "\n"; });
-  if (outputs.count("cells.csv"))
-    stage("cells.csv").write(
-        [&](std::ostream& o) { write_cells_csv(o, s.recipe.design, field, s.view); });
-  if (outputs.count("preview.png"))
-    write_png(stage("preview.png").temporary(), render_preview(s.recipe.design, field, s.view));
+    stage("report.json").write([&](std::ostream& o) {
+      o << report_to_json(report).dump(2) << "\n";
+    });
+  if (outputs.count("cells.csv")) {
+    Progress progress("writing cells.csv");
+    stage("cells.csv").write([&](std::ostream& o) {
+      write_cells_csv(o, s.recipe.design, field, s.view, [&](double f) { progress.update(f); });
+    });
+  }
+  if (outputs.count("preview.png")) {
+    Progress progress("drawing preview.png");
+    write_png(
+        stage("preview.png").temporary(),
+        render_preview(s.recipe.design, field, s.view, [&](double f) { progress.update(f); }));
+  }
   for (auto& f : staged) f->check_replaceable();
   for (auto& f : staged) f->commit();
 
@@ -95,11 +106,11 @@ int generate(const CommonOptions& common, const std::string& out_dir,
               static_cast<unsigned long long>(s.seed),
               static_cast<unsigned long long>(report.cells));
   for (const CurdReport& c : report.curds)
-    std::printf("  curd %-12s %llu survivors (expected %.1f), box dimension %s (theory %s)\n",
-                c.name.c_str(), static_cast<unsigned long long>(c.stages.back().survivors),
-                c.stages.back().expected,
-                c.fit ? std::to_string(c.fit->slope).substr(0, 5).c_str() : "-",
-                c.theory_dimension ? std::to_string(*c.theory_dimension).substr(0, 5).c_str() : "-");
+    std::printf(
+        "  curd %-12s %llu survivors (expected %.1f), box dimension %s (theory %s)\n",
+        c.name.c_str(), static_cast<unsigned long long>(c.stages.back().survivors),
+        c.stages.back().expected, c.fit ? std::to_string(c.fit->slope).substr(0, 5).c_str() : "-",
+        c.theory_dimension ? std::to_string(*c.theory_dimension).substr(0, 5).c_str() : "-");
   std::printf("outputs in %s:\n", fs::absolute(dir).lexically_normal().c_str());
   for (const auto& f : staged) std::printf("  %s\n", f->target().filename().c_str());
   return 0;
@@ -114,8 +125,9 @@ int report(const CommonOptions& common) {
 }
 
 int run(int argc, char** argv) {
-  CLI::App app{"curdle: random curds (Mandelbrot curdling, overlaid after Cirovic 2014) "
-               "for facade, paving, perforation and park layouts"};
+  CLI::App app{
+      "curdle: random curds (Mandelbrot curdling, overlaid after Cirovic 2014) "
+      "for facade, paving, perforation and park layouts"};
   app.require_subcommand(1);
 
   CommonOptions gen_options, report_options;

@@ -7,7 +7,8 @@
 namespace curdle::cli {
 
 Progress::Progress(std::string what)
-    : what_(std::move(what)), start_(std::chrono::steady_clock::now()),
+    : what_(std::move(what)),
+      start_(std::chrono::steady_clock::now()),
       terminal_(::isatty(STDERR_FILENO) == 1) {}
 
 Progress::~Progress() {

@@ -15,16 +15,20 @@
 namespace curdle::cli {
 
 void add_common_options(CLI::App& c, CommonOptions& o) {
-  c.add_option("recipe", o.recipe_path, "Recipe file (TOML), e.g. patterns/paper/fig3-two-curds.toml")
+  c.add_option("recipe", o.recipe_path,
+               "Recipe file (TOML), e.g. patterns/paper/fig3-two-curds.toml")
       ->required();
   c.add_option("--seed", o.seed, "Random seed (default: the recipe's `seed`, else 1)");
-  c.add_option("--set", o.sets, "Override a recipe key: --set lattice.mode=exact, "
-                                 "--set curds.0.probabilities='[\"1/2\",\"1/2\"]'");
-  c.add_option("--window", o.window, "Segment of the field in cells: X,Y,W,H (1-D X,W; 3-D X,Y,Z,W,H,D)");
+  c.add_option("--set", o.sets,
+               "Override a recipe key: --set lattice.mode=exact, "
+               "--set curds.0.probabilities='[\"1/2\",\"1/2\"]'");
+  c.add_option("--window", o.window,
+               "Segment of the field in cells: X,Y,W,H (1-D X,W; 3-D X,Y,Z,W,H,D)");
   c.add_option("--threads", o.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
-  c.add_option("--max-memory", o.max_memory, "Refuse work above this much memory, e.g. 8G "
-                                              "(default: half the physical memory)");
+  c.add_option("--max-memory", o.max_memory,
+               "Refuse work above this much memory, e.g. 8G "
+               "(default: half the physical memory)");
 }
 
 uint64_t default_memory_limit() {
@@ -44,14 +48,20 @@ uint64_t parse_bytes(const std::string& text, const std::string& option) {
   std::string unit = text.substr(used);
   for (auto& ch : unit) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   double scale = 0;
-  if (unit.empty() || unit == "B") scale = 1;
-  else if (unit == "K" || unit == "KB" || unit == "KIB") scale = 1024.0;
-  else if (unit == "M" || unit == "MB" || unit == "MIB") scale = 1024.0 * 1024;
-  else if (unit == "G" || unit == "GB" || unit == "GIB") scale = 1024.0 * 1024 * 1024;
-  else if (unit == "T" || unit == "TB" || unit == "TIB") scale = 1024.0 * 1024 * 1024 * 1024;
+  if (unit.empty() || unit == "B")
+    scale = 1;
+  else if (unit == "K" || unit == "KB" || unit == "KIB")
+    scale = 1024.0;
+  else if (unit == "M" || unit == "MB" || unit == "MIB")
+    scale = 1024.0 * 1024;
+  else if (unit == "G" || unit == "GB" || unit == "GIB")
+    scale = 1024.0 * 1024 * 1024;
+  else if (unit == "T" || unit == "TB" || unit == "TIB")
+    scale = 1024.0 * 1024 * 1024 * 1024;
   if (used == 0 || scale == 0 || !(value > 0) || !std::isfinite(value))
-    throw InputError(SourceLocation{option, 0, 0, ""},
-                     "'" + text + "' is not a size; write a positive number with K, M, G or T, e.g. 8G");
+    throw InputError(
+        SourceLocation{option, 0, 0, ""},
+        "'" + text + "' is not a size; write a positive number with K, M, G or T, e.g. 8G");
   return static_cast<uint64_t>(value * scale);
 }
 

@@ -22,7 +22,9 @@ Words::Words(const Words& other) {
 }
 
 Words::Words(Words&& other) noexcept
-    : data_(other.data_), size_(other.size_), capacity_(other.capacity_),
+    : data_(other.data_),
+      size_(other.size_),
+      capacity_(other.capacity_),
       mapped_bytes_(other.mapped_bytes_) {
   other.data_ = nullptr;
   other.size_ = other.capacity_ = other.mapped_bytes_ = 0;
@@ -88,7 +90,9 @@ uint64_t Bitset::count() const {
   if (words.size() < (1u << 16)) return count_range(0, words.size());
   return tbb::parallel_reduce(
       tbb::blocked_range<size_t>(0, words.size(), 1 << 14), uint64_t{0},
-      [&](const tbb::blocked_range<size_t>& r, uint64_t n) { return n + count_range(r.begin(), r.end()); },
+      [&](const tbb::blocked_range<size_t>& r, uint64_t n) {
+        return n + count_range(r.begin(), r.end());
+      },
       std::plus<>());
 }
 

@@ -27,7 +27,9 @@ class Words {
   uint64_t operator[](size_t i) const { return data_[i]; }
   const uint64_t* begin() const { return data_; }
   const uint64_t* end() const { return data_ + size_; }
-  bool operator==(const Words& other) const { return std::equal(begin(), end(), other.begin(), other.end()); }
+  bool operator==(const Words& other) const {
+    return std::equal(begin(), end(), other.begin(), other.end());
+  }
 
  private:
   void release();

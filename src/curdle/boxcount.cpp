@@ -124,7 +124,8 @@ std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children,
       counts[j] = mark(0, stage.size);
     } else {
       counts[j] = tbb::parallel_reduce(
-          tbb::blocked_range<uint64_t>(0, (stage.size + kBitsPerTask - 1) / kBitsPerTask), uint64_t{0},
+          tbb::blocked_range<uint64_t>(0, (stage.size + kBitsPerTask - 1) / kBitsPerTask),
+          uint64_t{0},
           [&](const tbb::blocked_range<uint64_t>& r, uint64_t n) {
             return n + mark(r.begin() * kBitsPerTask, std::min(stage.size, r.end() * kBitsPerTask));
           },

@@ -17,7 +17,8 @@ uint64_t axis_path(const Lattice& l, int axis, uint64_t c, int first, int last) 
   for (int stage = l.stages; stage >= 1; --stage) {  // least significant digit first
     const uint64_t digit = c % b;
     c /= b;
-    if (stage >= first && stage <= last) sum += digit * axis_weight * l.cells_per_root(l.stages - stage);
+    if (stage >= first && stage <= last)
+      sum += digit * axis_weight * l.cells_per_root(l.stages - stage);
   }
   (void)B;
   return sum;
@@ -89,8 +90,10 @@ Coord CellIndex::root_coords(uint64_t local) const {
 uint32_t CellIndex::root_code(uint64_t local) const {
   const Coord r = root_coords(local);
   switch (lattice_.dimension) {
-    case 1: return static_cast<uint32_t>(r[0]);
-    case 2: return static_cast<uint32_t>(r[0]) | static_cast<uint32_t>(r[1]) << 16;
+    case 1:
+      return static_cast<uint32_t>(r[0]);
+    case 2:
+      return static_cast<uint32_t>(r[0]) | static_cast<uint32_t>(r[1]) << 16;
     default:
       return static_cast<uint32_t>(r[0]) | static_cast<uint32_t>(r[1]) << 10 |
              static_cast<uint32_t>(r[2]) << 20;

@@ -82,7 +82,9 @@ inline ChildFilter filter_children(const StageWork& w, uint64_t parent_index) {
   return w.prune ? filter_children_slow(w, parent_index) : ChildFilter{};
 }
 
-uint64_t low_bits(unsigned count) { return count >= 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1; }
+uint64_t low_bits(unsigned count) {
+  return count >= 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1;
+}
 
 uint64_t allowed_bits(const StageWork& w, const ChildFilter& f, uint64_t first, unsigned count) {
   if (f.all) return low_bits(count);
@@ -99,7 +101,8 @@ void compare_bytes(const RandomStream::Block& r, uint32_t top, uint32_t& below, 
   const __m128i flip = _mm_set1_epi8(static_cast<char>(0x80));
   const __m128i t = _mm_set1_epi8(static_cast<char>(top ^ 0x80));
   below = static_cast<uint32_t>(_mm_movemask_epi8(_mm_cmplt_epi8(_mm_xor_si128(v, flip), t)));
-  tie = static_cast<uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_set1_epi8(static_cast<char>(top)))));
+  tie = static_cast<uint32_t>(
+      _mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_set1_epi8(static_cast<char>(top)))));
 #else
   below = tie = 0;
   for (unsigned word = 0; word < 4; ++word)
@@ -130,8 +133,8 @@ void compare_lanes(const uint32_t* w0, const uint32_t* w1, const uint32_t* w2, c
     const __m128i draw[4] = {_mm_unpacklo_epi64(ab_lo, cd_lo), _mm_unpackhi_epi64(ab_lo, cd_lo),
                              _mm_unpacklo_epi64(ab_hi, cd_hi), _mm_unpackhi_epi64(ab_hi, cd_hi)};
     for (int k = 0; k < 4; ++k) {
-      below[i + k] = static_cast<uint16_t>(
-          _mm_movemask_epi8(_mm_cmplt_epi8(_mm_xor_si128(draw[k], flip), t)));
+      below[i + k] =
+          static_cast<uint16_t>(_mm_movemask_epi8(_mm_cmplt_epi8(_mm_xor_si128(draw[k], flip), t)));
       tie[i + k] = static_cast<uint16_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(draw[k], eq)));
     }
   }
@@ -152,8 +155,11 @@ class SurvivalBatch {
   static constexpr size_t kParents = 64;
 
   SurvivalBatch(const StageWork& w, Bitset& children)
-      : w_(w), children_(children), threshold_(w.p.threshold()),
-        top_(static_cast<uint32_t>(threshold_ >> 56)), buffers_(thread_buffers()) {
+      : w_(w),
+        children_(children),
+        threshold_(w.p.threshold()),
+        top_(static_cast<uint32_t>(threshold_ >> 56)),
+        buffers_(thread_buffers()) {
     // At most b^E/16 + 1 draws a parent, in whole vectors of eight.
     const size_t most = (kParents * (w.children / 16 + 2) + 7) / 8 * 8;
     if (buffers_.blocks.size() < most) {
@@ -184,7 +190,8 @@ class SurvivalBatch {
         Parent& parent = parents_[p];
         const uint64_t first = parent.path * B >> 4, last = (parent.path * B + B - 1) >> 4;
         for (uint64_t b = first; b <= last; ++b) {
-          const bool shared = n > 0 && blocks[n - 1].block == b && blocks[n - 1].root == parent.root;
+          const bool shared =
+              n > 0 && blocks[n - 1].block == b && blocks[n - 1].root == parent.root;
           if (b == first) parent.first_block = n - (shared ? 1 : 0);
           if (!shared) blocks[n++] = Block{b, parent.root, 0, 0};
         }
@@ -192,7 +199,8 @@ class SurvivalBatch {
     }
     draw_all(n);
     for (size_t i = 0; i < n; ++i)
-      for (uint32_t ties = blocks[i].tie; ties; ties &= ties - 1) resolve(blocks[i], std::countr_zero(ties));
+      for (uint32_t ties = blocks[i].tie; ties; ties &= ties - 1)
+        resolve(blocks[i], std::countr_zero(ties));
     for (size_t p = 0; p < count_; ++p) write_children(parents_[p]);
     count_ = 0;
   }
@@ -218,7 +226,8 @@ class SurvivalBatch {
     size_t n = 0;
     for (size_t p = 0; p < count_; ++p) {
       const Parent& parent = parents_[p];
-      for (uint64_t block = parent.path * per_parent; block < (parent.path + 1) * per_parent; ++block) {
+      for (uint64_t block = parent.path * per_parent; block < (parent.path + 1) * per_parent;
+           ++block) {
         b.w0[n] = static_cast<uint32_t>(block);
         b.w1[n] = static_cast<uint32_t>(block >> 32);
         b.w2[n] = parent.root;
@@ -242,7 +251,8 @@ class SurvivalBatch {
           uint32_t below = b.below[i];
           if (b.tie[i]) {  // rare: 1 in 16 draws
             Block block{(parent.path * B + c + done) >> 4, parent.root, below, b.tie[i]};
-            for (uint32_t ties = block.tie; ties; ties &= ties - 1) resolve(block, std::countr_zero(ties));
+            for (uint32_t ties = block.tie; ties; ties &= ties - 1)
+              resolve(block, std::countr_zero(ties));
             below = block.below;
           }
           bits |= static_cast<uint64_t>(below) << done;
@@ -279,7 +289,8 @@ class SurvivalBatch {
 
   // A tie on the top byte: the next 56 bits decide (kind 1).
   void resolve(Block& b, unsigned bit) {
-    const auto t = w_.rng.draw(b.block << 4 | bit, b.root, w_.curd, w_.stage, DrawKind::tie_break, 0);
+    const auto t =
+        w_.rng.draw(b.block << 4 | bit, b.root, w_.curd, w_.stage, DrawKind::tie_break, 0);
     if ((RandomStream::high_word(t) >> 8) < (threshold_ & kLow56)) b.below |= 1u << bit;
   }
 
@@ -332,15 +343,17 @@ void exact_children(const StageWork& w, uint64_t path, uint32_t root, uint64_t k
   const uint64_t n = w.children;
   keys.resize(n);
   for (uint64_t j = 0; 2 * j < n; ++j) {
-    const auto r = w.rng.draw(path, root, w.curd, w.stage, DrawKind::exact_key,
-                              static_cast<uint32_t>(j));
+    const auto r =
+        w.rng.draw(path, root, w.curd, w.stage, DrawKind::exact_key, static_cast<uint32_t>(j));
     keys[2 * j] = {RandomStream::high_word(r), static_cast<uint32_t>(2 * j)};
-    if (2 * j + 1 < n) keys[2 * j + 1] = {RandomStream::low_word(r), static_cast<uint32_t>(2 * j + 1)};
+    if (2 * j + 1 < n)
+      keys[2 * j + 1] = {RandomStream::low_word(r), static_cast<uint32_t>(2 * j + 1)};
   }
   out.assign((n + 63) / 64, 0);
   if (keep == 0) return;
   if (keep < n) std::nth_element(keys.begin(), keys.begin() + (keep - 1), keys.end());
-  for (uint64_t i = 0; i < keep; ++i) out[keys[i].second >> 6] |= uint64_t{1} << (keys[i].second & 63);
+  for (uint64_t i = 0; i < keep; ++i)
+    out[keys[i].second >> 6] |= uint64_t{1} << (keys[i].second & 63);
 }
 
 // Visits every set parent bit in [begin, end) of stage k-1 with its root and path.
@@ -457,12 +470,14 @@ uint64_t quota_target(const std::vector<Probability>& p, int stage, uint64_t cel
     }
     num *= p[i].numerator();
     den *= p[i].denominator();
-    const unsigned __int128 g = std::gcd(static_cast<uint64_t>(num % den), static_cast<uint64_t>(den));
+    const unsigned __int128 g =
+        std::gcd(static_cast<uint64_t>(num % den), static_cast<uint64_t>(den));
     if (g > 1) num /= g, den /= g;
     if (num >> 100 || den >> 62) exact = false;
   }
   if (exact) return static_cast<uint64_t>((2 * num + den) / (2 * den));
-  return static_cast<uint64_t>(std::floor(static_cast<double>(cells) * survival_probability(p, stage) + 0.5));
+  return static_cast<uint64_t>(
+      std::floor(static_cast<double>(cells) * survival_probability(p, stage) + 0.5));
 }
 
 Box generation_box(const Design& design, const Box& view) {
@@ -491,12 +506,12 @@ void curdle_into(const Design& design, uint64_t seed, const Box& view, CurdField
   if (options.max_memory_bytes != 0) {
     const uint64_t need = estimate_memory(design, box);
     if (need > options.max_memory_bytes)
-      throw InputError("generating " + std::to_string(box.cells()) + " cells x " +
-                       std::to_string(design.curds.size()) + " curds needs about " +
-                       human_bytes(need) + ", above the memory limit of " +
-                       human_bytes(options.max_memory_bytes) +
-                       "; use a smaller field, window or fewer stages" +
-                       (options.memory_limit_hint.empty() ? "" : ", or " + options.memory_limit_hint));
+      throw InputError(
+          "generating " + std::to_string(box.cells()) + " cells x " +
+          std::to_string(design.curds.size()) + " curds needs about " + human_bytes(need) +
+          ", above the memory limit of " + human_bytes(options.max_memory_bytes) +
+          "; use a smaller field, window or fewer stages" +
+          (options.memory_limit_hint.empty() ? "" : ", or " + options.memory_limit_hint));
   }
   // The index tables depend only on the lattice and the box: keep them across seeds.
   const Lattice& had = out.index.lattice();
@@ -518,11 +533,18 @@ void curdle_into(const Design& design, uint64_t seed, const Box& view, CurdField
     for (uint64_t r = 0; r < out.index.roots(); ++r) curd.stages[0].set(r);
     for (int k = 1; k <= lattice.stages; ++k) {
       curd.stages[k].assign_zero(out.index.roots() * lattice.cells_per_root(k));
-      const StageWork work{out.index, box, prune, lattice.mode, rng, static_cast<uint32_t>(c), k,
-                           design.curds[c].probabilities[k - 1], lattice.children()};
+      const StageWork work{out.index,
+                           box,
+                           prune,
+                           lattice.mode,
+                           rng,
+                           static_cast<uint32_t>(c),
+                           k,
+                           design.curds[c].probabilities[k - 1],
+                           lattice.children()};
       if (lattice.mode == Mode::quota)
-        quota_stage(work, quota_target(design.curds[c].probabilities, k,
-                                       cells_meeting(lattice, k, box)),
+        quota_stage(work,
+                    quota_target(design.curds[c].probabilities, k, cells_meeting(lattice, k, box)),
                     curd.stages[k - 1], curd.stages[k]);
       else
         canonical_or_exact_stage(work, curd.stages[k - 1], curd.stages[k]);

@@ -16,9 +16,9 @@
 namespace curdle {
 
 struct GenerateOptions {
-  uint64_t max_memory_bytes = 0;          // 0: no limit
-  std::string memory_limit_hint;           // how the user raises the limit, for the message
-  std::function<void(double)> progress;    // fraction of the work done, from 0 to 1
+  uint64_t max_memory_bytes = 0;         // 0: no limit
+  std::string memory_limit_hint;         // how the user raises the limit, for the message
+  std::function<void(double)> progress;  // fraction of the work done, from 0 to 1
 };
 
 // The box the engine generates to show `view`: the view itself, except in quota mode, where

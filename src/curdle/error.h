@@ -12,7 +12,7 @@ struct SourceLocation {
   std::string file;  // recipe path, or "--set", or "command line"
   int line = 0;      // 1-based; 0 when unknown
   int column = 0;
-  std::string key;   // dotted key path, e.g. "curds.0.probabilities"
+  std::string key;  // dotted key path, e.g. "curds.0.probabilities"
 };
 
 class InputError : public std::runtime_error {

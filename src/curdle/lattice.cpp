@@ -11,9 +11,12 @@ uint64_t power(uint64_t b, int e) {
 
 std::string_view to_string(Mode mode) {
   switch (mode) {
-    case Mode::canonical: return "canonical";
-    case Mode::exact: return "exact";
-    case Mode::quota: return "quota";
+    case Mode::canonical:
+      return "canonical";
+    case Mode::exact:
+      return "exact";
+    case Mode::quota:
+      return "quota";
   }
   return "?";
 }

@@ -22,8 +22,8 @@ struct Lattice {
   int stages = 2;
   Mode mode = Mode::canonical;
 
-  uint64_t children() const;            // b^E subcells per cell
-  uint64_t root_side() const;           // b^K finest cells a side of one root cell
+  uint64_t children() const;                 // b^E subcells per cell
+  uint64_t root_side() const;                // b^K finest cells a side of one root cell
   uint64_t cells_per_root(int stage) const;  // b^(E k)
   uint64_t side_in_cells(int stage) const;   // side of a stage-k cell in finest cells: b^(K-k)
 };

@@ -45,9 +45,12 @@ std::vector<uint64_t> value_counts(const CurdField& field) {
   if (words < (1u << 16)) {
     count_range(0, words, counts);
   } else {
-    tbb::combinable<std::vector<uint64_t>> partial([values] { return std::vector<uint64_t>(values, 0); });
+    tbb::combinable<std::vector<uint64_t>> partial(
+        [values] { return std::vector<uint64_t>(values, 0); });
     tbb::parallel_for(tbb::blocked_range<size_t>(0, words, 1 << 14),
-                      [&](const tbb::blocked_range<size_t>& r) { count_range(r.begin(), r.end(), partial.local()); });
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        count_range(r.begin(), r.end(), partial.local());
+                      });
     partial.combine_each([&](const std::vector<uint64_t>& p) {
       for (size_t v = 0; v < values; ++v) counts[v] += p[v];
     });
@@ -91,7 +94,8 @@ std::string value_label(uint32_t value, const std::vector<CurdSpec>& curds) {
 }
 
 void scan_rows(const CurdField& field, const Box& view,
-               const std::function<void(int64_t, int64_t, std::span<const uint16_t>)>& row) {
+               const std::function<void(int64_t, int64_t, std::span<const uint16_t>)>& row,
+               const std::function<void(double)>& progress) {
   const CellIndex& index = field.index;
   const Lattice& l = index.lattice();
   const int64_t side = static_cast<int64_t>(l.root_side());
@@ -105,7 +109,8 @@ void scan_rows(const CurdField& field, const Box& view,
       const int64_t c = view.origin[d] + i;
       const int64_t r = d < l.dimension ? (c >= 0 ? c / side : -((-c + side - 1) / side)) : 0;
       root[d][i] = r;
-      offset[d][i] = d < l.dimension ? index.axis_offset(d, static_cast<uint64_t>(c - r * side)) : 0;
+      offset[d][i] =
+          d < l.dimension ? index.axis_offset(d, static_cast<uint64_t>(c - r * side)) : 0;
     }
   }
   std::vector<uint16_t> values(view.size[0]);
@@ -120,6 +125,8 @@ void scan_rows(const CurdField& field, const Box& view,
         values[x] = v;
       }
       row(view.origin[1] + y, view.origin[2] + z, values);
+      if (progress && (y & 255) == 0)
+        progress(static_cast<double>(z * view.size[1] + y) / (view.size[1] * view.size[2]));
     }
 }
 

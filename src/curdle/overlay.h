@@ -23,8 +23,10 @@ std::string value_label(uint32_t value, const std::vector<CurdSpec>& curds);
 
 // Calls row(y, z, values) for each row of `view` along x, rows in y then z order, values of
 // the cells from x = view.origin[0] on. Streams: memory is one row.
+// `progress`, when given, hears the fraction of rows done now and then.
 void scan_rows(const CurdField& field, const Box& view,
-               const std::function<void(int64_t y, int64_t z, std::span<const uint16_t>)>& row);
+               const std::function<void(int64_t y, int64_t z, std::span<const uint16_t>)>& row,
+               const std::function<void(double)>& progress = {});
 
 // Values of the cells of `view`, row-major (x fastest, then y, then z).
 std::vector<uint16_t> values_in(const CurdField& field, const Box& view);

@@ -26,8 +26,8 @@ std::vector<Rgb> value_colours(const std::vector<CurdSpec>& curds) {
       const Rgb col = curd_colour(curds, c);
       r += col.r, g += col.g, b += col.b, ++n;
     }
-    colours[v] = Rgb{static_cast<uint8_t>(r / n), static_cast<uint8_t>(g / n),
-                     static_cast<uint8_t>(b / n)};
+    colours[v] =
+        Rgb{static_cast<uint8_t>(r / n), static_cast<uint8_t>(g / n), static_cast<uint8_t>(b / n)};
   }
   return colours;
 }

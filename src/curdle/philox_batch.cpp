@@ -9,8 +9,8 @@
 namespace curdle {
 namespace {
 
-void philox_scalar(uint32_t* w0, uint32_t* w1, uint32_t* w2, uint32_t* w3, size_t n,
-                   uint32_t key0, uint32_t key1) {
+void philox_scalar(uint32_t* w0, uint32_t* w1, uint32_t* w2, uint32_t* w3, size_t n, uint32_t key0,
+                   uint32_t key1) {
   const r123::Philox4x32 philox;
   const r123::Philox4x32::key_type key{{key0, key1}};
   for (size_t i = 0; i < n; ++i) {
@@ -22,7 +22,8 @@ void philox_scalar(uint32_t* w0, uint32_t* w1, uint32_t* w2, uint32_t* w3, size_
 #if defined(__x86_64__)
 // The multipliers and Weyl constants are Philox4x32's (Random123 philox.h).
 // High and low 32 bits of the eight 32 x 32-bit products a * m.
-__attribute__((target("avx2"))) inline void mulhilo8(__m256i a, __m256i m, __m256i& hi, __m256i& lo) {
+__attribute__((target("avx2"))) inline void mulhilo8(__m256i a, __m256i m, __m256i& hi,
+                                                     __m256i& lo) {
   const __m256i even = _mm256_mul_epu32(a, m);
   const __m256i odd = _mm256_mul_epu32(_mm256_srli_epi64(a, 32), m);
   hi = _mm256_blend_epi32(_mm256_srli_epi64(even, 32), odd, 0xAA);

@@ -11,5 +11,4 @@ namespace curdle {
 void philox_in_place(uint32_t* w0, uint32_t* w1, uint32_t* w2, uint32_t* w3, size_t n,
                      uint32_t key0, uint32_t key1);
 
-
 }  // namespace curdle

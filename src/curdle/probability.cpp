@@ -29,8 +29,9 @@ Probability Probability::fraction(uint64_t numerator, uint64_t denominator) {
   p.numerator_ = numerator / g;
   p.denominator_ = denominator / g;
   p.value_ = static_cast<double>(p.numerator_) / static_cast<double>(p.denominator_);
-  p.text_ = p.denominator_ == 1 ? std::to_string(p.numerator_)
-                                : std::to_string(p.numerator_) + "/" + std::to_string(p.denominator_);
+  p.text_ = p.denominator_ == 1
+                ? std::to_string(p.numerator_)
+                : std::to_string(p.numerator_) + "/" + std::to_string(p.denominator_);
   p.set_threshold();
   return p;
 }

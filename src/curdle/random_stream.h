@@ -45,8 +45,8 @@ class RandomStream {
   Block draw(uint64_t path, uint32_t root_code, uint32_t curd, uint32_t stage, DrawKind kind,
              uint32_t block) const {
     const uint32_t tag = RandomStream::tag(curd, stage, kind, block);
-    const Block counter{{static_cast<uint32_t>(path), static_cast<uint32_t>(path >> 32),
-                         root_code, tag}};
+    const Block counter{
+        {static_cast<uint32_t>(path), static_cast<uint32_t>(path >> 32), root_code, tag}};
     return philox_(counter, key_);
   }
 

@@ -51,9 +51,8 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
       row.cells = cells_meeting(l, k, view);
       row.survivors = curd.stages[k].count();
       row.expected = expected_survivors(l, spec.probabilities, k, view);
-      row.expected_sd = quota && !report.sd_is_approximate
-                            ? 0.0
-                            : survivors_sd(l, spec.probabilities, k, view);
+      row.expected_sd =
+          quota && !report.sd_is_approximate ? 0.0 : survivors_sd(l, spec.probabilities, k, view);
       row.box_count = cr.box_counts[k];
       if (row.survivors > 0 && previous > 0)
         row.local_dimension = std::log(static_cast<double>(row.survivors) / previous) / log_b;

@@ -19,17 +19,17 @@ struct StageRow {
   uint64_t survivors = 0;  // N_k
   double expected = 0;     // C_k * p_1 ... p_k
   double expected_sd = 0;
-  uint64_t box_count = 0;  // stage-k cells keeping a final survivor
-  std::optional<double> local_dimension;  // log(N_k / N_(k-1)) / log b
-  std::optional<double> mean_dimension;   // log N_k / (k log b), biased low
-  std::optional<double> theory_dimension; // E + log p_k / log b
+  uint64_t box_count = 0;                  // stage-k cells keeping a final survivor
+  std::optional<double> local_dimension;   // log(N_k / N_(k-1)) / log b
+  std::optional<double> mean_dimension;    // log N_k / (k log b), biased low
+  std::optional<double> theory_dimension;  // E + log p_k / log b
 };
 
 struct CurdReport {
   std::string name;
-  uint64_t roots = 0;            // stage-0 cells meeting the view
-  uint64_t root_box_count = 0;   // of them, those keeping a final survivor
-  std::vector<StageRow> stages;  // k = 1..K
+  uint64_t roots = 0;                // stage-0 cells meeting the view
+  uint64_t root_box_count = 0;       // of them, those keeping a final survivor
+  std::vector<StageRow> stages;      // k = 1..K
   std::vector<uint64_t> box_counts;  // level 0..K
   std::optional<LineFit> fit;
   std::optional<double> theory_dimension;  // E + log(P_K^(1/K)) / log b

@@ -25,7 +25,8 @@ double axis_sum_of_squares(const Lattice& l, int k, int j, int64_t o, int64_t s)
 
 double sum_of_squares(const Lattice& l, int k, int j, const Box& box) {
   double t = 1;
-  for (int d = 0; d < l.dimension; ++d) t *= axis_sum_of_squares(l, k, j, box.origin[d], box.size[d]);
+  for (int d = 0; d < l.dimension; ++d)
+    t *= axis_sum_of_squares(l, k, j, box.origin[d], box.size[d]);
   return t;
 }
 

@@ -105,8 +105,9 @@ int64_t read_int(TableReader& r, const std::string& key, int64_t fallback, int64
                  bool required = false) {
   const toml::node* n = r.get(key);
   if (!n) {
-    if (required) r.fail(key, "is required: a whole number from " + std::to_string(lo) + " to " +
-                                  std::to_string(hi));
+    if (required)
+      r.fail(key, "is required: a whole number from " + std::to_string(lo) + " to " +
+                      std::to_string(hi));
     return fallback;
   }
   const auto v = n->value<int64_t>();
@@ -162,10 +163,14 @@ Lattice read_lattice(TableReader& top) {
   l.stages = static_cast<int>(read_int(r, "stages", 0, 1, 63));
   const auto mode =
       read_string(r, "mode", "\"canonical\", \"exact\" or \"quota\"").value_or("canonical");
-  if (mode == "canonical") l.mode = Mode::canonical;
-  else if (mode == "exact") l.mode = Mode::exact;
-  else if (mode == "quota") l.mode = Mode::quota;
-  else r.fail("mode", "must be \"canonical\", \"exact\" or \"quota\", not \"" + mode + "\"");
+  if (mode == "canonical")
+    l.mode = Mode::canonical;
+  else if (mode == "exact")
+    l.mode = Mode::exact;
+  else if (mode == "quota")
+    l.mode = Mode::quota;
+  else
+    r.fail("mode", "must be \"canonical\", \"exact\" or \"quota\", not \"" + mode + "\"");
   return l;
 }
 
@@ -184,7 +189,8 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
   int stages = 0;
   for (size_t i = 0; i < arr->size(); ++i) {
     const std::string path = "curds." + std::to_string(i);
-    TableReader r(*arr->get(i)->as_table(), path, top.source(), {"name", "probabilities", "colour"});
+    TableReader r(*arr->get(i)->as_table(), path, top.source(),
+                  {"name", "probabilities", "colour"});
     CurdSpec curd;
     curd.name = read_string(r, "name").value_or("curd" + std::to_string(i));
     if (curd.name.empty() || curd.name.find_first_of(",\"\n\r+") != std::string::npos)
@@ -192,7 +198,8 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
     if (!names.insert(curd.name).second)
       r.fail("name", "'" + curd.name + "' is used by another curd; names must differ");
     const toml::node* pn = r.get("probabilities");
-    if (!pn) r.fail("probabilities", "is required: one probability per stage, e.g. [\"3/4\", \"2/3\"]");
+    if (!pn)
+      r.fail("probabilities", "is required: one probability per stage, e.g. [\"3/4\", \"2/3\"]");
     const toml::array* ps = pn->as_array();
     if (!ps || ps->empty())
       r.fail("probabilities", "must be a non-empty array, one per stage, e.g. [\"3/4\", \"2/3\"]");
@@ -204,7 +211,8 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
     if (stages == 0) stages = K;
     if (K != stages)
       r.fail("probabilities", "has " + std::to_string(K) + " stages but curd 0 has " +
-                                  std::to_string(stages) + "; all curds share the lattice's stages");
+                                  std::to_string(stages) +
+                                  "; all curds share the lattice's stages");
     if (auto c = read_string(r, "colour", "a colour written \"#rrggbb\"")) {
       curd.colour = parse_colour(*c);
       if (!curd.colour) r.fail("colour", "must be a colour written \"#rrggbb\", e.g. \"#c0392b\"");
@@ -213,7 +221,8 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
   }
   if (stated_stages != 0 && stated_stages != stages)
     top.fail("curds", "the curds have " + std::to_string(stages) +
-                          " probabilities each but lattice.stages is " + std::to_string(stated_stages));
+                          " probabilities each but lattice.stages is " +
+                          std::to_string(stated_stages));
   lattice.stages = stages;
   return curds;
 }
@@ -222,7 +231,8 @@ void check_size(TableReader& top, const Lattice& l) {
   const double path_bits = l.dimension * l.stages * std::log2(static_cast<double>(l.base));
   if (path_bits > kMaxPathBits + 1e-9)
     top.fail("curds", "b^(E K) = " + std::to_string(l.base) + "^(" + std::to_string(l.dimension) +
-                          "*" + std::to_string(l.stages) + ") cells per root is too many; at most 2^" +
+                          "*" + std::to_string(l.stages) +
+                          ") cells per root is too many; at most 2^" +
                           std::to_string(kMaxPathBits) + " (fewer stages or a smaller base)");
 }
 
@@ -253,7 +263,8 @@ Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {
   if (!t) return field;
   TableReader r(*t, "field", top.source(), {"cells", "window"});
   const int64_t max_roots = l.dimension == 1 ? (int64_t{1} << 32) : l.dimension == 2 ? 65536 : 1024;
-  auto read_numbers = [&](const std::string& key, size_t count) -> std::optional<std::vector<int64_t>> {
+  auto read_numbers = [&](const std::string& key,
+                          size_t count) -> std::optional<std::vector<int64_t>> {
     const toml::node* n = r.get(key);
     if (!n) return std::nullopt;
     const toml::array* a = n->as_array();
@@ -282,7 +293,8 @@ Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {
       box.size[d] = (*w)[l.dimension + d];
     }
     if (!field.contains(box) || box.cells() == 0)
-      r.fail("window", "must lie inside the field (origin >= 0, size >= 1, origin + size <= field)");
+      r.fail("window",
+             "must lie inside the field (origin >= 0, size >= 1, origin + size <= field)");
     window = box;
   }
   return field;
@@ -333,7 +345,8 @@ void apply_override(toml::table& doc, const std::string& assignment) {
                              std::to_string(a->size()) + " entries (from 0)");
       at = a->get(idx);
     } else {
-      throw InputError(SourceLocation{"--set", 0, 0, key}, "'" + part + "' is not a table or array");
+      throw InputError(SourceLocation{"--set", 0, 0, key},
+                       "'" + part + "' is not a table or array");
     }
   }
   const std::string& last = parts.back();
@@ -398,9 +411,9 @@ Box parse_window(const std::string& text, const Design& design) {
     start = comma + 1;
   }
   if (static_cast<int>(v.size()) != 2 * E)
-    throw InputError(SourceLocation{"--window", 0, 0, ""},
-                     "a " + std::to_string(E) + "-D lattice takes a window " + form + ", not '" +
-                         text + "'");
+    throw InputError(
+        SourceLocation{"--window", 0, 0, ""},
+        "a " + std::to_string(E) + "-D lattice takes a window " + form + ", not '" + text + "'");
   Box box;
   for (int d = 0; d < E; ++d) {
     box.origin[d] = v[d];

@@ -67,7 +67,8 @@ void BM_SeedSearch_64x64(benchmark::State& state) {
         if (score < b.first) b = {score, seed};
       }
     });
-    benchmark::DoNotOptimize(best.combine([](auto a, auto b) { return a.first <= b.first ? a : b; }));
+    benchmark::DoNotOptimize(
+        best.combine([](auto a, auto b) { return a.first <= b.first ? a : b; }));
   }
   state.counters["seeds_per_s"] =
       benchmark::Counter(static_cast<double>(seeds), benchmark::Counter::kIsIterationInvariantRate);
