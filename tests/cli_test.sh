@@ -64,6 +64,10 @@ expect 2 "memory limit" generate "$fig3" --set 'field.cells=[3200,3200]' --max-m
 expect 2 "not a size" generate "$fig3" --max-memory lots --out "$o"
 expect 2 "threads" generate "$fig3" --threads 0 --out "$o"
 expect 2 "seed" generate "$fig3" --seed minus-one --out "$o"
+expect 2 "not a seed" generate "$fig3" --seed -1 --out "$o"
+expect 2 "not a seed" generate "$fig3" --seed 18446744073709551616 --out "$o"
+expect 2 "unknown command" frobnicate "$fig3"
+expect 2 "A subcommand is required"
 expect_empty "$o" "bad command lines"
 expect 2 "cannot create the output directory" generate "$fig3" --out /proc/curdle-cannot-write
 touch "$work/a-file"

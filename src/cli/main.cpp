@@ -141,6 +141,12 @@ int run(int argc, char** argv) {
   CLI::App* rep = app.add_subcommand("report", "Print the per-stage report of a recipe");
   add_common_options(*rep, report_options);
 
+  if (argc >= 2 && argv[1][0] != '-' && std::string(argv[1]) != "generate" &&
+      std::string(argv[1]) != "report") {
+    std::fprintf(stderr, "curdle: error: unknown command '%s'; the commands are generate and report "
+                 "(curdle --help)\n", argv[1]);
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -18,7 +19,7 @@ void add_common_options(CLI::App& c, CommonOptions& o) {
   c.add_option("recipe", o.recipe_path,
                "Recipe file (TOML), e.g. patterns/paper/fig3-two-curds.toml")
       ->required();
-  c.add_option("--seed", o.seed, "Random seed (default: the recipe's `seed`, else 1)");
+  c.add_option("--seed", o.seed, "Random seed, 0 to 2^64-1 (default: the recipe's `seed`, else 1)");
   c.add_option("--set", o.sets,
                "Override a recipe key: --set lattice.mode=exact, "
                "--set curds.0.probabilities='[\"1/2\",\"1/2\"]'");
@@ -74,7 +75,14 @@ Session open_session(const CommonOptions& o) {
   text << in.rdbuf();
   Session s;
   s.recipe = parse_recipe(text.str(), o.recipe_path, o.sets);
-  s.seed = o.seed.value_or(s.recipe.seed);
+  s.seed = s.recipe.seed;
+  if (!o.seed.empty()) {
+    auto [end, ec] = std::from_chars(o.seed.data(), o.seed.data() + o.seed.size(), s.seed);
+    if (ec != std::errc() || end != o.seed.data() + o.seed.size())
+      throw InputError(SourceLocation{"--seed", 0, 0, ""},
+                       "'" + o.seed + "' is not a seed; a seed is a whole number from 0 to " +
+                           std::to_string(UINT64_MAX));
+  }
   s.view = s.recipe.design.field;
   if (s.recipe.window) s.view = *s.recipe.window;
   if (!o.window.empty()) s.view = parse_window(o.window, s.recipe.design);

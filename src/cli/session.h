@@ -15,7 +15,7 @@ namespace curdle::cli {
 
 struct CommonOptions {
   std::string recipe_path;
-  std::optional<uint64_t> seed;
+  std::string seed;  // checked by open_session: a whole number from 0 to 2^64 - 1
   std::vector<std::string> sets;
   std::string window;
   int threads = 0;  // 0: all cores

@@ -86,7 +86,10 @@ class TableReader {
         if (d < best_d) best_d = d, best = candidate;
       }
       std::string msg = "unknown key '" + key + "'";
-      if (best_d <= std::max<size_t>(2, key.size() / 3)) msg += "; did you mean '" + best + "'?";
+      if (best_d <= std::max<size_t>(2, key.size() / 3))
+        msg += "; did you mean '" + best + "'?";
+      else
+        msg += ".";
       msg += " Allowed here: " + join(known_) + ".";
       throw InputError(locate(source_, v.source(), key_path(key)), msg);
     }
