@@ -7,6 +7,9 @@
 
 namespace curdle {
 
+// Division rounding towards minus infinity: which root or stage cell a coordinate falls in.
+inline int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
 struct Box {
   std::array<int64_t, 3> origin{0, 0, 0};
   std::array<int64_t, 3> size{1, 1, 1};

@@ -5,12 +5,10 @@
 namespace curdle {
 namespace {
 
-int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-
 // Path contribution of an in-root coordinate along one axis, for the digits of stages
 // [first, last] (1-based, stage 1 most significant).
 uint64_t axis_path(const Lattice& l, int axis, uint64_t c, int first, int last) {
-  const uint64_t b = l.base, B = l.children();
+  const uint64_t b = l.base;
   uint64_t axis_weight = 1;
   for (int d = 0; d < axis; ++d) axis_weight *= b;
   uint64_t sum = 0;
@@ -20,7 +18,6 @@ uint64_t axis_path(const Lattice& l, int axis, uint64_t c, int first, int last) 
     if (stage >= first && stage <= last)
       sum += digit * axis_weight * l.cells_per_root(l.stages - stage);
   }
-  (void)B;
   return sum;
 }
 

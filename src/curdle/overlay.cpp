@@ -107,7 +107,7 @@ void scan_rows(const CurdField& field, const Box& view,
     root[d].resize(view.size[d]);
     for (int64_t i = 0; i < view.size[d]; ++i) {
       const int64_t c = view.origin[d] + i;
-      const int64_t r = d < l.dimension ? (c >= 0 ? c / side : -((-c + side - 1) / side)) : 0;
+      const int64_t r = d < l.dimension ? floor_div(c, side) : 0;
       root[d][i] = r;
       offset[d][i] =
           d < l.dimension ? index.axis_offset(d, static_cast<uint64_t>(c - r * side)) : 0;

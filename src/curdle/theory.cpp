@@ -5,8 +5,6 @@
 namespace curdle {
 namespace {
 
-int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-
 // Along one axis: the stage-k columns meeting [o, o + s), grouped by their stage-j ancestor;
 // returns the sum over ancestors of (columns under it)^2.
 double axis_sum_of_squares(const Lattice& l, int k, int j, int64_t o, int64_t s) {
