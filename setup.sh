@@ -6,8 +6,8 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libcgal-dev libopenimageio-dev libtinygltf-dev libtomlplusplus-dev libcli11-dev
-  libfmt-dev nlohmann-json3-dev librandom123-dev libtbb-dev libgtest-dev libbenchmark-dev
-  python3 python3-numpy librsvg2-bin
+  libfmt-dev nlohmann-json3-dev libexpat1-dev librandom123-dev libtbb-dev libgtest-dev libbenchmark-dev
+  python3 python3-numpy librsvg2-bin libxml2-utils
 )
 
 missing=()

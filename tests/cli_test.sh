@@ -38,6 +38,11 @@ while IFS= read -r recipe; do
   for f in report.json cells.csv preview.png; do
     [ -s "$out/$f" ] && pass || fail "$recipe: $f missing"
   done
+  # Recipes with a [layout] also draw it; the SVG parses in a real XML parser.
+  if grep -q '^\[layout\]' "$recipe"; then
+    [ -s "$out/layout.png" ] && pass || fail "$recipe: layout.png missing"
+    xmllint --noout --huge "$out/layout.svg" && pass || fail "$recipe: layout.svg does not parse"
+  fi
 done < <(find "$src/patterns" -name '*.toml' | sort)
 
 # 2. Every bad recipe exits 2, names the file and what is allowed, and writes nothing.
@@ -59,6 +64,7 @@ expect 2 "--set lattice.base" generate "$fig3" --set lattice.base=1 --out "$o"
 expect 2 "did you mean" generate "$fig3" --set lattice.mdoe=exact --out "$o"
 expect 2 "not a whole number" generate "$fig3" --set lattice.mode=exact --out "$o"
 expect 2 "unknown output" generate "$fig3" --outputs report.json,pictures --out "$o"
+expect 2 "needs a [layout] section" generate "$src/patterns/paper/fig6-decreasing.toml" --outputs layout.svg --out "$o"
 expect 2 "memory limit" generate "$fig3" --set 'field.cells=[3200,3200]' --max-memory 1M --out "$o"
 expect 2 "memory limit" generate "$fig3" --set 'field.cells=[3200,3200]' --max-memory 2M --outputs report.json --out "$o"
 expect 2 "not a size" generate "$fig3" --max-memory lots --out "$o"

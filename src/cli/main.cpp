@@ -15,9 +15,13 @@
 #include "curdle/report.h"
 #include "export/atomic_file.h"
 #include "export/cells_csv.h"
+#include "export/layout_png.h"
+#include "export/mask_image.h"
 #include "export/preview_png.h"
 #include "export/report_json.h"
 #include "export/report_table.h"
+#include "export/svg.h"
+#include "layout/builder.h"
 
 namespace fs = std::filesystem;
 
@@ -25,7 +29,8 @@ namespace curdle::cli {
 namespace {
 
 constexpr uint64_t kCellsCsvDefaultLimit = 10'000'000;
-const std::vector<std::string> kOutputs = {"report.json", "cells.csv", "preview.png"};
+const std::vector<std::string> kOutputs = {"report.json", "cells.csv", "preview.png", "layout.svg",
+                                           "layout.png"};
 
 std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
   std::set<std::string> chosen;
@@ -35,7 +40,9 @@ std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
         if (o.rfind(n + ".", 0) == 0) n = o;
     if (std::find(kOutputs.begin(), kOutputs.end(), n) == kOutputs.end())
       throw InputError(SourceLocation{"--outputs", 0, 0, ""},
-                       "unknown output '" + n + "'; allowed: report.json, cells.csv, preview.png");
+                       "unknown output '" + n +
+                           "'; allowed: report.json, cells.csv, preview.png, and with a [layout] "
+                           "section layout.svg, layout.png");
     chosen.insert(n);
   }
   return chosen;
@@ -43,10 +50,23 @@ std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
 
 int generate(const CommonOptions& common, const std::string& out_dir,
              const std::vector<std::string>& outputs_named) {
-  const Session s = open_session(common);
+  Session s = open_session(common);
   std::set<std::string> outputs = outputs_named.empty()
                                       ? std::set<std::string>(kOutputs.begin(), kOutputs.end())
                                       : parse_outputs(outputs_named);
+  const bool has_layout = s.recipe.layout.has_value();
+  if (!has_layout) {
+    for (const char* name : {"layout.svg", "layout.png"})
+      if (outputs.erase(name) && !outputs_named.empty())
+        throw InputError(SourceLocation{common.recipe_path, 0, 0, "layout"},
+                         std::string(name) + " needs a [layout] section in the recipe (see patterns/README.md)");
+  } else if (!s.recipe.layout->mask.empty()) {
+    LayoutSpec& spec = *s.recipe.layout;
+    const fs::path mask = fs::path(common.recipe_path).parent_path() / spec.mask;
+    for (const Rect& r : read_mask_openings(mask, (*spec.size)[0], (*spec.size)[1],
+                                             SourceLocation{common.recipe_path, 0, 0, "layout.mask"}))
+      spec.openings.push_back(r);
+  }
   const bool csv_named = outputs_named.size() && outputs.count("cells.csv");
   if (outputs.count("cells.csv") && !csv_named && s.view.cells() > kCellsCsvDefaultLimit) {
     outputs.erase("cells.csv");
@@ -98,6 +118,24 @@ int generate(const CommonOptions& common, const std::string& out_dir,
     write_png(
         stage("preview.png").temporary(),
         render_preview(s.recipe.design, field, s.view, [&](double f) { progress.update(f); }));
+  }
+  if (has_layout && (outputs.count("layout.svg") || outputs.count("layout.png"))) {
+    const LayoutSpec& spec = *s.recipe.layout;
+    const Layout layout = make_layout(s.recipe.design, field, s.view, spec);
+    if (outputs.count("layout.svg"))
+      stage("layout.svg").write([&](std::ostream& o) {
+        write_layout_svg(o, layout, s.recipe.design,
+                         TitleBlock{s.recipe.design.name, s.recipe.description, s.seed}, spec);
+      });
+    if (outputs.count("layout.png"))
+      write_png_at(stage("layout.png").temporary(), render_layout(layout, spec), spec.dpi);
+    uint64_t cut = 0;
+    for (const Element& e : layout.elements) cut += e.cut;
+    std::printf("layout: %zu %ss (%llu cut, %llu over openings), %.0f x %.0f mm; layout.png at 1:%g, %g dpi\n",
+                layout.elements.size(), layout.element_type.c_str(),
+                static_cast<unsigned long long>(cut), static_cast<unsigned long long>(layout.omitted),
+                layout.width, layout.height, drawing_scale(layout, spec), spec.dpi);
+    for (const std::string& note : layout.notes) std::printf("  note: %s\n", note.c_str());
   }
   for (auto& f : staged) f->check_replaceable();
   for (auto& f : staged) f->commit();

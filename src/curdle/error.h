@@ -24,11 +24,25 @@ class InputError : public std::runtime_error {
   const SourceLocation& where() const { return where_; }
 
  private:
+  // Built by appending: GCC 12 warns falsely (-Wrestrict) on chains of string concatenation.
   static std::string format(const SourceLocation& w, const std::string& what) {
     std::string s = w.file;
-    if (w.line > 0) s += ":" + std::to_string(w.line) + ":" + std::to_string(w.column);
-    if (!w.key.empty()) s += (s.empty() ? "" : ": ") + std::string("key '") + w.key + "'";
-    return s.empty() ? what : s + ": " + what;
+    if (w.line > 0) {
+      s += ':';
+      s += std::to_string(w.line);
+      s += ':';
+      s += std::to_string(w.column);
+    }
+    if (!w.key.empty()) {
+      if (!s.empty()) s += ": ";
+      s += "key '";
+      s += w.key;
+      s += '\'';
+    }
+    if (s.empty()) return what;
+    s += ": ";
+    s += what;
+    return s;
   }
   SourceLocation where_;
 };

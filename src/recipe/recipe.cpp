@@ -8,6 +8,7 @@
 #include <set>
 
 #include "curdle/error.h"
+#include "layout/builder.h"
 
 namespace curdle {
 namespace {
@@ -295,12 +296,182 @@ Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {
       box.origin[d] = (*w)[d];
       box.size[d] = (*w)[l.dimension + d];
     }
-    if (!field.contains(box) || box.cells() == 0)
-      r.fail("window",
-             "must lie inside the field (origin >= 0, size >= 1, origin + size <= field)");
-    window = box;
+    if (box.cells() == 0 || box.origin[0] < 0 || box.origin[1] < 0 || box.origin[2] < 0)
+      r.fail("window", "must have origin >= 0 and sizes >= 1");
+    window = box;  // checked against the field once the layout has sized it
   }
   return field;
+}
+
+double read_mm(TableReader& r, const std::string& key, double fallback, double lo, bool required = false) {
+  const toml::node* n = r.get(key);
+  if (!n) {
+    if (required) r.fail(key, "is required: a length in millimetres");
+    return fallback;
+  }
+  const auto v = n->value<double>();
+  if (!v || !std::isfinite(*v) || *v < lo || *v > 1e7)
+    r.fail(key, "must be a length in millimetres from " + std::to_string(static_cast<int>(lo)) +
+                    " to 10 km");
+  return *v;
+}
+
+std::optional<std::array<double, 2>> read_mm_pair(TableReader& r, const std::string& key,
+                                                   bool required = false) {
+  const toml::node* n = r.get(key);
+  if (!n) {
+    if (required) r.fail(key, "is required: [width, height] in millimetres");
+    return std::nullopt;
+  }
+  const toml::array* a = n->as_array();
+  std::array<double, 2> v{};
+  if (!a || a->size() != 2) r.fail(key, "must be [width, height] in millimetres");
+  for (size_t i = 0; i < 2; ++i) {
+    const auto x = a->get(i)->value<double>();
+    if (!x || !std::isfinite(*x) || *x <= 0 || *x > 1e7)
+      r.fail(key, "must be [width, height] in millimetres, each above 0 and up to 10 km");
+    v[i] = *x;
+  }
+  return v;
+}
+
+bool read_bool(TableReader& r, const std::string& key, bool fallback) {
+  const toml::node* n = r.get(key);
+  if (!n) return fallback;
+  if (!n->is_boolean()) r.fail(key, "must be true or false");
+  return *n->value<bool>();
+}
+
+std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool field_given) {
+  const toml::table* t = read_table(top, "layout");
+  if (!t) return std::nullopt;
+  LayoutSpec spec;
+  std::string kind = "tile";
+  if (const toml::node* k = t->get("kind")) {
+    if (!k->is_string())
+      top.fail_node(*k, "layout.kind", "must be \"tile\", \"paving\" or \"facade\"");
+    kind = *k->value<std::string>();
+  }
+  std::vector<std::string> keys{"kind", "combine", "joint", "origin", "colours", "joint_colour",
+                                "stage_grid", "highlight", "scale", "dpi"};
+  std::string module_key, size_key;
+  if (kind == "tile") {
+    spec.kind = LayoutKind::tile;
+    module_key = "tile", size_key = "size";
+  } else if (kind == "paving") {
+    spec.kind = LayoutKind::paving;
+    module_key = "tile", size_key = "floor";
+  } else if (kind == "facade" || kind == "façade") {
+    spec.kind = LayoutKind::facade;
+    module_key = "panel", size_key = "wall";
+    keys.insert(keys.end(), {"openings", "mask"});
+  } else {
+    top.fail_node(*t->get("kind"), "layout.kind",
+                  "unknown element kind \"" + kind + "\"; allowed: \"tile\", \"paving\", \"facade\"");
+  }
+  keys.push_back(module_key);
+  keys.push_back(size_key);
+  TableReader r(*t, "layout", top.source(), keys);
+  if (design.lattice.dimension != 2)
+    r.fail("kind", "a " + kind + " layout needs a 2-D lattice; this one is " +
+                       std::to_string(design.lattice.dimension) + "-D");
+
+  const auto combine = read_string(r, "combine", "\"mix\" or \"keep\"").value_or("mix");
+  if (combine == "mix") spec.combine = Combine::mix;
+  else if (combine == "keep") spec.combine = Combine::keep;
+  else r.fail("combine", "must be \"mix\" (a + b = c) or \"keep\" (a + b = ab), not \"" + combine + "\"");
+
+  const auto module = read_mm_pair(r, module_key);
+  if (module) spec.module_w = (*module)[0], spec.module_h = (*module)[1];
+  spec.joint = read_mm(r, "joint", 0, 0);
+  if (spec.joint >= std::min(spec.module_w, spec.module_h))
+    r.fail("joint", "must be narrower than the " + module_key + " (" +
+                        std::to_string(static_cast<int>(std::min(spec.module_w, spec.module_h))) + " mm)");
+  spec.size = read_mm_pair(r, size_key, spec.kind != LayoutKind::tile);
+
+  const auto origin = read_string(r, "origin", "a corner").value_or("bottom-left");
+  if (origin == "bottom-left") spec.origin = Corner::bottom_left;
+  else if (origin == "bottom-right") spec.origin = Corner::bottom_right;
+  else if (origin == "top-left") spec.origin = Corner::top_left;
+  else if (origin == "top-right") spec.origin = Corner::top_right;
+  else r.fail("origin", "must be \"bottom-left\", \"bottom-right\", \"top-left\" or \"top-right\"");
+
+  const size_t values = size_t{1} << design.curds.size();
+  if (const toml::node* n = r.get("colours")) {
+    const toml::array* a = n->as_array();
+    if (!a) r.fail("colours", "must be an array of colours \"#rrggbb\", one per value");
+    if (a->size() < values)
+      r.fail("colours", "gives " + std::to_string(a->size()) + " colours for " +
+                            std::to_string(values) + " values (2^" +
+                            std::to_string(design.curds.size()) + " curds); give one per value, value 0 first");
+    if (a->size() > values)
+      r.fail("colours", "gives " + std::to_string(a->size()) + " colours but there are only " +
+                            std::to_string(values) + " values");
+    for (size_t v = 0; v < a->size(); ++v) {
+      const auto text = a->get(v)->value<std::string>();
+      const auto colour = text ? parse_colour(*text) : std::nullopt;
+      if (!colour) r.fail_node(*a->get(v), "layout.colours." + std::to_string(v), "must be a colour written \"#rrggbb\"");
+      spec.value_colours.push_back(colour);
+    }
+  }
+  if (auto c = read_string(r, "joint_colour", "a colour written \"#rrggbb\"")) {
+    const auto colour = parse_colour(*c);
+    if (!colour) r.fail("joint_colour", "must be a colour written \"#rrggbb\"");
+    spec.joint_colour = *colour;
+  }
+  spec.stage_grid = read_bool(r, "stage_grid", false);
+  if (const toml::node* n = r.get("highlight")) {
+    const toml::array* a = n->as_array();
+    std::array<int64_t, 4> v{};
+    bool ok = a && a->size() == 4;
+    for (size_t i = 0; ok && i < 4; ++i) {
+      const auto x = a->get(i)->value<int64_t>();
+      ok = a->get(i)->is_integer() && x && *x >= (i < 2 ? 0 : 1);
+      if (ok) v[i] = *x;
+    }
+    if (!ok) r.fail("highlight", "must be [x, y, width, height] in cells, a window to outline");
+    spec.highlight = Box{{v[0], v[1], 0}, {v[2], v[3], 1}};
+  }
+  spec.scale = read_mm(r, "scale", 0, 1);
+  spec.dpi = read_mm(r, "dpi", 150, 10);
+  if (spec.dpi > 1200) r.fail("dpi", "must be from 10 to 1200");
+
+  if (spec.kind == LayoutKind::facade) {
+    if (const toml::node* n = r.get("openings")) {
+      const toml::array* a = n->as_array();
+      if (!a) r.fail("openings", "must be an array of [x, y, width, height] in millimetres");
+      for (size_t i = 0; i < a->size(); ++i) {
+        const toml::array* o = a->get(i)->as_array();
+        const std::string path = "layout.openings." + std::to_string(i);
+        std::array<double, 4> v{};
+        bool ok = o && o->size() == 4;
+        for (size_t k = 0; ok && k < 4; ++k) {
+          const auto x = o->get(k)->value<double>();
+          ok = x && std::isfinite(*x) && (k < 2 ? *x >= 0 : *x > 0);
+          if (ok) v[k] = *x;
+        }
+        if (!ok) r.fail_node(*a->get(i), path, "must be [x, y, width, height] in millimetres from the wall's bottom-left corner, sizes above 0");
+        const Rect rect{v[0], v[1], v[2], v[3]};
+        if (rect.right() > (*spec.size)[0] + 1e-6 || rect.top() > (*spec.size)[1] + 1e-6)
+          r.fail_node(*a->get(i), path, "lies outside the wall of " +
+                                            std::to_string(static_cast<int>((*spec.size)[0])) + " x " +
+                                            std::to_string(static_cast<int>((*spec.size)[1])) + " mm");
+        spec.openings.push_back(rect);
+      }
+    }
+    spec.mask = read_string(r, "mask", "the path of an image").value_or("");
+  }
+
+  if (spec.size) {
+    const auto cells = elements_to_cover(spec);
+    if (field_given && (design.field.size[0] != cells[0] || design.field.size[1] != cells[1]))
+      r.fail(size_key, "needs " + std::to_string(cells[0]) + " x " + std::to_string(cells[1]) +
+                           " elements but field.cells is " + std::to_string(design.field.size[0]) +
+                           " x " + std::to_string(design.field.size[1]) + "; leave field.cells out or make them agree");
+    design.field.size[0] = cells[0];
+    design.field.size[1] = cells[1];
+  }
+  return spec;
 }
 
 // Applies "a.b.0.c=VALUE" to the document.
@@ -384,7 +555,7 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
     where.overridden.push_back(o.substr(0, o.find('=')));
   }
 
-  TableReader top(doc, "", where, {"name", "description", "seed", "lattice", "field", "curds"});
+  TableReader top(doc, "", where, {"name", "description", "seed", "lattice", "field", "curds", "layout"});
   Recipe recipe;
   recipe.design.name = read_string(top, "name").value_or("untitled");
   recipe.description = read_string(top, "description").value_or("");
@@ -395,6 +566,15 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
   check_exact(top, lattice, recipe.design.curds);
   recipe.design.lattice = lattice;
   recipe.design.field = read_field(top, lattice, recipe.window);
+  const toml::table* field_table = doc.get("field") ? doc.get("field")->as_table() : nullptr;
+  recipe.layout = read_layout(top, recipe.design, field_table && field_table->get("cells"));
+  if (recipe.window && !recipe.design.field.contains(*recipe.window)) {
+    std::string size;
+    for (int d = 0; d < lattice.dimension; ++d)
+      size += (d ? " x " : "") + std::to_string(recipe.design.field.size[d]);
+    top.fail_node(*field_table->get("window"), "field.window",
+                  "must lie inside the field of " + size + " cells (origin + size <= field)");
+  }
   return recipe;
 }
 

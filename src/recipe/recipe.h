@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "curdle/curd.h"
+#include "layout/layout.h"
 
 namespace curdle {
 
@@ -17,6 +18,7 @@ struct Recipe {
   std::string description;
   uint64_t seed = 1;
   std::optional<Box> window;  // [field] window
+  std::optional<LayoutSpec> layout;  // [layout]; its mask path is relative to the recipe
 };
 
 // Parses a recipe. `overrides` are "dotted.key=VALUE" (VALUE in TOML syntax, or a bare

@@ -1,0 +1,114 @@
+#include "export/layout_png.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "curdle/error.h"
+
+namespace curdle {
+namespace {
+
+constexpr double kSheetMm = 400;
+constexpr int64_t kMaxPixels = 16000;  // a side; beyond this the scale is raised
+
+struct Canvas {
+  int width, height;
+  double px_per_mm;
+  double layout_height;
+  std::vector<float> rgb;
+
+  // Paints an axis-aligned rectangle (mm, y up) weighting each pixel by the share it covers.
+  void fill(const Rect& r, const Rgb& c) {
+    const double x0 = r.x * px_per_mm, x1 = r.right() * px_per_mm;
+    const double y0 = (layout_height - r.top()) * px_per_mm, y1 = (layout_height - r.y) * px_per_mm;
+    const int ix0 = std::max(0, static_cast<int>(std::floor(x0)));
+    const int ix1 = std::min(width - 1, static_cast<int>(std::ceil(x1)) - 1);
+    const int iy0 = std::max(0, static_cast<int>(std::floor(y0)));
+    const int iy1 = std::min(height - 1, static_cast<int>(std::ceil(y1)) - 1);
+    for (int y = iy0; y <= iy1; ++y) {
+      const double cy = std::min<double>(y + 1, y1) - std::max<double>(y, y0);
+      for (int x = ix0; x <= ix1; ++x) {
+        const double a = cy * (std::min<double>(x + 1, x1) - std::max<double>(x, x0));
+        if (a <= 0) continue;
+        float* p = &rgb[(static_cast<size_t>(y) * width + x) * 3];
+        p[0] += static_cast<float>(a * (c.r - p[0]));
+        p[1] += static_cast<float>(a * (c.g - p[1]));
+        p[2] += static_cast<float>(a * (c.b - p[2]));
+      }
+    }
+  }
+};
+
+}  // namespace
+
+double drawing_scale(const Layout& layout, const LayoutSpec& spec) {
+  if (spec.scale > 0) return spec.scale;
+  const double longest = std::max(layout.width, layout.height);
+  for (double decade = 1;; decade *= 10)
+    for (double step : {1.0, 2.0, 2.5, 5.0})
+      if (longest / (step * decade) <= kSheetMm) return step * decade;
+}
+
+uint64_t layout_png_memory(const Layout& layout, const LayoutSpec& spec) {
+  const double ppm = spec.dpi / 25.4 / drawing_scale(layout, spec);
+  return static_cast<uint64_t>(std::ceil(layout.width * ppm) * std::ceil(layout.height * ppm) * 15);
+}
+
+PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec) {
+  Canvas canvas;
+  canvas.px_per_mm = spec.dpi / 25.4 / drawing_scale(layout, spec);
+  canvas.layout_height = layout.height;
+  canvas.width = std::max(1, static_cast<int>(std::ceil(layout.width * canvas.px_per_mm)));
+  canvas.height = std::max(1, static_cast<int>(std::ceil(layout.height * canvas.px_per_mm)));
+  if (canvas.width > kMaxPixels || canvas.height > kMaxPixels)
+    throw InputError("layout.png would be " + std::to_string(canvas.width) + " x " +
+                     std::to_string(canvas.height) + " pixels, above " +
+                     std::to_string(kMaxPixels) + " a side; use a larger layout.scale or lower layout.dpi");
+  const Rgb background = layout.joint > 0 ? layout.joint_colour : Rgb{255, 255, 255};
+  canvas.rgb.assign(static_cast<size_t>(canvas.width) * canvas.height * 3, 0.f);
+  for (size_t i = 0; i < canvas.rgb.size(); i += 3)
+    canvas.rgb[i] = background.r, canvas.rgb[i + 1] = background.g, canvas.rgb[i + 2] = background.b;
+  for (const Rect& o : layout.openings) canvas.fill(o, Rgb{223, 234, 242});
+  const bool from_right = layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
+  for (const Element& e : layout.elements) {
+    const LegendEntry& entry = layout.legend[e.value];
+    if (layout.combine == Combine::mix) {
+      for (const Rect& r : e.shape) canvas.fill(r, entry.colour);
+      continue;
+    }
+    // keep: each curd present keeps its own stripe of the element, in the same order from the
+    // element's start as in the SVG.
+    const double part = e.nominal.w / static_cast<double>(entry.parts.size());
+    for (size_t i = 0; i < entry.parts.size(); ++i) {
+      const double x = from_right ? e.nominal.right() - (i + 1) * part : e.nominal.x + i * part;
+      const Rect stripe{x, e.nominal.y, part, e.nominal.h};
+      for (const Rect& r : e.shape) {
+        const double x0 = std::max(r.x, stripe.x), x1 = std::min(r.right(), stripe.right());
+        if (x1 > x0) canvas.fill(Rect{x0, r.y, x1 - x0, r.h}, entry.parts[i]);
+      }
+    }
+  }
+  PreviewImage image;
+  image.width = canvas.width;
+  image.height = canvas.height;
+  image.rgb.resize(canvas.rgb.size());
+  for (size_t i = 0; i < canvas.rgb.size(); ++i)
+    image.rgb[i] = static_cast<uint8_t>(std::clamp(std::lround(canvas.rgb[i]), 0L, 255L));
+  return image;
+}
+
+void write_png_at(const std::filesystem::path& path, const PreviewImage& image, double dpi) {
+  auto out = OIIO::ImageOutput::create("png");
+  if (!out) throw std::runtime_error("OpenImageIO has no PNG writer: " + OIIO::geterror());
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("XResolution", static_cast<float>(dpi));
+  spec.attribute("YResolution", static_cast<float>(dpi));
+  spec.attribute("ResolutionUnit", "inch");
+  if (!out->open(path.string(), spec) ||
+      !out->write_image(OIIO::TypeDesc::UINT8, image.rgb.data()) || !out->close())
+    throw InputError("cannot write " + path.string() + ": " + out->geterror());
+}
+
+}  // namespace curdle

@@ -1,0 +1,23 @@
+// layout.png: the layout drawn at a scale (1 : N) and a resolution (DPI), written through
+// OpenImageIO with its resolution recorded, so it prints at size. Edges are antialiased by the
+// exact share of each pixel they cover.
+#pragma once
+
+#include <filesystem>
+
+#include "export/preview_png.h"
+#include "layout/layout.h"
+
+namespace curdle {
+
+// 1 : scale; the spec's, or the smallest of 1, 2, 5, 10, 20, 25, 50, 100, ... that fits the
+// layout's long side in 400 mm (an A3 sheet).
+double drawing_scale(const Layout& layout, const LayoutSpec& spec);
+
+PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec);
+uint64_t layout_png_memory(const Layout& layout, const LayoutSpec& spec);
+
+// Writes `image` as PNG to exactly `path`, recording `dpi`.
+void write_png_at(const std::filesystem::path& path, const PreviewImage& image, double dpi);
+
+}  // namespace curdle

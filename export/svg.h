@@ -1,0 +1,39 @@
+// layout.svg: the layout in true units (width and height in mm, a viewBox in mm), for print,
+// Inkscape and Illustrator.
+//
+// One group per value (`<g id="value-3" class="value" data-label="red+blue">`). Elements of a
+// value that touch are merged into rectangles so that a 1000 x 1000 layout stays small: a
+// merged rectangle lists its elements as `data-elements="P-R003-C004:P-R005-C010"` (rows 3 to 5,
+// columns 4 to 10), and its fill spans the joints inside it, which the joint lines are drawn
+// over. Cut elements are drawn one by one with their element ID as `id`. Then come the joints,
+// the openings, the optional stage grid and window, a legend with counts and a title block.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "curdle/curd.h"
+#include "layout/layout.h"
+
+namespace curdle {
+
+// What the title block says about where the layout came from.
+struct TitleBlock {
+  std::string recipe;
+  std::string description;
+  uint64_t seed = 0;
+};
+
+void write_layout_svg(std::ostream& out, const Layout& layout, const Design& design,
+                      const TitleBlock& title, const LayoutSpec& spec);
+
+// Rectangles of equal value merged from a grid (rows x columns, -1: not merged), as
+// {row0, column0, row1, column1, value}, inclusive. Greedy: runs along rows, then runs that
+// repeat in the next rows.
+struct GridRect {
+  int64_t row0, column0, row1, column1;
+  int value;
+};
+std::vector<GridRect> merge_runs(const std::vector<int>& grid, int64_t rows, int64_t columns);
+
+}  // namespace curdle

@@ -1,0 +1,196 @@
+#include "layout/builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "curdle/error.h"
+#include "curdle/overlay.h"
+#include "curdle/palette.h"
+
+namespace curdle {
+namespace {
+
+constexpr double kEps = 1e-6;
+
+const char* prefix(LayoutKind kind) {
+  switch (kind) {
+    case LayoutKind::tile: return "T";
+    case LayoutKind::paving: return "P";
+    case LayoutKind::facade: return "F";
+  }
+  return "E";
+}
+
+const char* element_type(LayoutKind kind) {
+  switch (kind) {
+    case LayoutKind::tile: return "tile";
+    case LayoutKind::paving: return "paving tile";
+    case LayoutKind::facade: return "panel";
+  }
+  return "element";
+}
+
+Rect clip(const Rect& r, double width, double height) {
+  const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
+  const double x1 = std::min(width, r.right()), y1 = std::min(height, r.top());
+  return Rect{x0, y0, std::max(0.0, x1 - x0), std::max(0.0, y1 - y0)};
+}
+
+std::string element_id(LayoutKind kind, int64_t row, int64_t column, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%s-R%0*lld-C%0*lld", prefix(kind), digits,
+                static_cast<long long>(row), digits, static_cast<long long>(column));
+  return buf;
+}
+
+}  // namespace
+
+std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec) {
+  const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
+  // Element i starts at i * pitch: every element that starts inside the floor is laid.
+  return {static_cast<int64_t>(std::ceil(spec.size->at(0) / pitch_w - 1e-9)),
+          static_cast<int64_t>(std::ceil(spec.size->at(1) / pitch_h - 1e-9))};
+}
+
+Layout make_layout(const Design& design, const CurdField& field, const Box& view,
+                   const LayoutSpec& spec) {
+  if (design.lattice.dimension != 2)
+    throw InputError("a tile, paving or façade layout needs a 2-D lattice, not " +
+                     std::to_string(design.lattice.dimension) + "-D");
+  Layout layout;
+  layout.kind = spec.kind;
+  layout.combine = spec.combine;
+  layout.element_type = element_type(spec.kind);
+  layout.joint = spec.joint;
+  layout.joint_colour = spec.joint_colour;
+  layout.origin = spec.origin;
+  layout.view = view;
+  layout.columns = view.size[0];
+  layout.rows = view.size[1];
+  layout.module_w = spec.module_w;
+  layout.module_h = spec.module_h;
+  const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
+  if (spec.size) {
+    layout.width = (*spec.size)[0];
+    layout.height = (*spec.size)[1];
+  } else {
+    layout.width = layout.columns * pitch_w - spec.joint;
+    layout.height = layout.rows * pitch_h - spec.joint;
+  }
+  for (const Rect& o : spec.openings) {
+    const Rect c = clip(o, layout.width, layout.height);
+    if (c.area() > 0) layout.openings.push_back(c);
+  }
+
+  const bool from_right = spec.origin == Corner::bottom_right || spec.origin == Corner::top_right;
+  const bool from_top = spec.origin == Corner::top_left || spec.origin == Corner::top_right;
+  const int digits = static_cast<int>(std::to_string(std::max(layout.columns, layout.rows)).size());
+  const std::vector<uint16_t> values = values_in(field, view);
+  uint64_t slivers = 0;
+  layout.elements.reserve(values.size());
+  // Laying order: rows from the origin corner, and along each row away from it.
+  for (int64_t row = 0; row < layout.rows; ++row) {
+    for (int64_t column = 0; column < layout.columns; ++column) {
+      const int64_t i = from_right ? layout.columns - 1 - column : column;
+      const int64_t j = from_top ? layout.rows - 1 - row : row;
+      const double along = column * pitch_w, up = row * pitch_h;
+      Element e;
+      e.row = row;
+      e.column = column;
+      e.cell_x = view.origin[0] + i;
+      e.cell_y = view.origin[1] + j;
+      e.value = values[static_cast<size_t>(j * layout.columns + i)];
+      e.nominal = Rect{from_right ? layout.width - along - spec.module_w : along,
+                       from_top ? layout.height - up - spec.module_h : up, spec.module_w,
+                       spec.module_h};
+      const Rect laid = clip(e.nominal, layout.width, layout.height);
+      e.shape = subtract(laid, layout.openings);
+      if (e.shape.empty() || e.area() < kEps) {
+        ++layout.omitted;  // wholly over an opening, or outside the floor
+        continue;
+      }
+      e.cut = e.area() < e.nominal.area() - kEps;
+      if (laid.w < spec.module_w / 4 - kEps || laid.h < spec.module_h / 4 - kEps) ++slivers;
+      e.id = element_id(spec.kind, row, column, digits);
+      layout.elements.push_back(std::move(e));
+    }
+  }
+  if (slivers)
+    layout.notes.push_back(std::to_string(slivers) + " edge pieces are narrower than a quarter " +
+                           layout.element_type + "; consider another origin corner or size");
+
+  const std::vector<Rgb> blend = value_colours(design.curds);
+  layout.legend.resize(blend.size());
+  for (uint32_t v = 0; v < blend.size(); ++v) {
+    LegendEntry& entry = layout.legend[v];
+    entry.value = v;
+    entry.label = value_label(v, design.curds);
+    entry.colour = v < spec.value_colours.size() && spec.value_colours[v] ? *spec.value_colours[v]
+                                                                          : blend[v];
+    if (spec.combine == Combine::keep) {
+      for (size_t c = 0; c < design.curds.size(); ++c)
+        if (v >> c & 1) entry.parts.push_back(curd_colour(design.curds, c));
+      if (entry.parts.empty()) entry.parts.push_back(entry.colour);
+    }
+  }
+  for (const Element& e : layout.elements) ++layout.legend[e.value].count;
+  return layout;
+}
+
+namespace {
+
+// The edge before module `index` counted along an axis from the low side, in mm.
+double edge(int64_t index, int64_t count, double module, double joint, double extent, bool from_high) {
+  const double pitch = module + joint;
+  if (index <= 0) return from_high ? extent - (count * pitch - joint) : 0.0;
+  if (index >= count) return extent;
+  const int64_t from_anchor = from_high ? count - index : index;  // modules between anchor and edge
+  const double at = from_anchor * pitch - joint / 2;
+  return std::clamp(from_high ? extent - at : at, 0.0, extent);
+}
+
+}  // namespace
+
+double Layout::cell_edge_x(int64_t cell_x) const {
+  const bool from_right = origin == Corner::bottom_right || origin == Corner::top_right;
+  return std::max(0.0, edge(cell_x - view.origin[0], columns, module_w, joint, width, from_right));
+}
+
+double Layout::cell_edge_y(int64_t cell_y) const {
+  const bool from_top = origin == Corner::top_left || origin == Corner::top_right;
+  return std::max(0.0, edge(cell_y - view.origin[1], rows, module_h, joint, height, from_top));
+}
+
+double joint_area(const Layout& layout) {
+  if (layout.joint <= 0) return 0;
+  const bool from_right = layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
+  const bool from_top = layout.origin == Corner::top_left || layout.origin == Corner::top_right;
+  // Joints follow each module, counted from the origin corner.
+  std::vector<Rect> vertical, horizontal;
+  for (int64_t c = 0; c + 1 < layout.columns; ++c) {
+    const double along = c * (layout.module_w + layout.joint) + layout.module_w;
+    vertical.push_back(Rect{from_right ? layout.width - along - layout.joint : along, 0, layout.joint,
+                            layout.height});
+  }
+  for (int64_t r = 0; r + 1 < layout.rows; ++r) {
+    const double up = r * (layout.module_h + layout.joint) + layout.module_h;
+    horizontal.push_back(Rect{0, from_top ? layout.height - up - layout.joint : up, layout.width,
+                              layout.joint});
+  }
+  auto laid = [&](const Rect& r) {
+    double area = 0;
+    const Rect c = clip(r, layout.width, layout.height);
+    if (c.area() > 0)
+      for (const Rect& piece : subtract(c, layout.openings)) area += piece.area();
+    return area;
+  };
+  double area = 0;
+  for (const Rect& v : vertical) area += laid(v);
+  for (const Rect& h : horizontal) area += laid(h);
+  for (const Rect& v : vertical)  // crossings were counted twice
+    for (const Rect& h : horizontal) area -= laid(Rect{v.x, h.y, layout.joint, layout.joint});
+  return area;
+}
+
+}  // namespace curdle

@@ -1,0 +1,24 @@
+// Building a layout from generated curds: one element per cell of the view, placed on a grid
+// of modules and joints from the origin corner, cut at the edges of the floor or wall and
+// around openings.
+#pragma once
+
+#include <array>
+
+#include "curdle/curd.h"
+#include "layout/layout.h"
+
+namespace curdle {
+
+// Elements along x and y that cover the spec's floor or wall: those that start inside it.
+std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec);
+
+// The layout of `view` (a 2-D box of cells). Throws InputError for specs that cannot be laid.
+Layout make_layout(const Design& design, const CurdField& field, const Box& view,
+                   const LayoutSpec& spec);
+
+// Area of the joints actually laid: the joint strips inside the floor or wall, less openings.
+// Computed from the grid alone, so that elements + joints + openings = floor is a real check.
+double joint_area(const Layout& layout);
+
+}  // namespace curdle

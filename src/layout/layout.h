@@ -1,0 +1,97 @@
+// Layouts: the overlay's values turned into physical elements in millimetres — tiles,
+// paving, façade panels — the way Cirovic (2014) maps curds onto architecture (figs. 1, 3, 7).
+// Plain data: exporters draw it (SVG, PNG) and schedule it.
+//
+// Coordinates are millimetres from the layout's origin, x to the right and y up.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "curdle/curd.h"
+
+namespace curdle {
+
+struct Rect {
+  double x = 0, y = 0, w = 0, h = 0;
+  double area() const { return w * h; }
+  double right() const { return x + w; }
+  double top() const { return y + h; }
+  bool operator==(const Rect&) const = default;
+};
+
+// Rectangles that overlap by more than a rounding error.
+bool overlaps(const Rect& a, const Rect& b);
+// a minus the union of `holes`, as disjoint rectangles (all edges are axis-aligned).
+std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes);
+
+enum class LayoutKind { tile, paving, facade };
+enum class Combine {
+  mix,   // a + b = c: a cell where curds overlap takes a new value, its own colour
+  keep,  // a + b = ab: every curd that survived in the cell stays visible, side by side
+};
+enum class Corner { bottom_left, bottom_right, top_left, top_right };
+
+// The recipe's [layout] section.
+struct LayoutSpec {
+  LayoutKind kind = LayoutKind::tile;
+  Combine combine = Combine::mix;
+  double module_w = 300, module_h = 300;  // element size (tile, panel) in mm
+  double joint = 0;                       // joint between elements, mm
+  std::optional<std::array<double, 2>> size;  // floor or wall, mm; default: the field's cells
+  Corner origin = Corner::bottom_left;    // where cell (0, 0) and the laying order start
+  std::vector<std::optional<Rgb>> value_colours;  // per value, overriding the blend (mix)
+  Rgb joint_colour{150, 150, 150};
+  std::vector<Rect> openings;  // façade: windows and doors, mm from the wall's origin
+  std::string mask;            // façade: image whose dark pixels are openings (read by the CLI)
+  bool stage_grid = false;     // draw lines at each stage's cell boundaries
+  std::optional<Box> highlight;  // a window of cells to outline on the drawing
+  double scale = 0;            // layout.png drawing scale 1 : scale; 0 picks one
+  double dpi = 150;
+};
+
+struct Element {
+  std::string id;      // stable and readable: prefix, row and column in laying order
+  uint32_t value = 0;  // the overlay value of its cell
+  int64_t row = 0, column = 0;   // laying order from the origin corner
+  int64_t cell_x = 0, cell_y = 0;  // the field cell it stands for
+  Rect nominal;                  // where the whole element would be
+  std::vector<Rect> shape;       // what is laid: one rect, or the pieces of a cut element
+  bool cut = false;              // smaller than nominal (edge or opening)
+  double area() const;
+};
+
+struct LegendEntry {
+  uint32_t value = 0;
+  std::string label;
+  Rgb colour;
+  std::vector<Rgb> parts;  // keep mode: the colours shown side by side
+  uint64_t count = 0;      // elements of this value
+};
+
+struct Layout {
+  LayoutKind kind = LayoutKind::tile;
+  Combine combine = Combine::mix;
+  std::string element_type;  // "tile", "paving tile", "panel"
+  double width = 0, height = 0;  // mm
+  double joint = 0;
+  Rgb joint_colour;
+  Corner origin = Corner::bottom_left;
+  int64_t columns = 0, rows = 0;  // elements along x and y
+  double module_w = 0, module_h = 0;
+  std::vector<Element> elements;
+  std::vector<Rect> openings;
+  std::vector<LegendEntry> legend;  // one per value
+  uint64_t omitted = 0;             // cells wholly inside openings: no element
+  std::vector<std::string> notes;   // what a builder should know (cut slivers, ...)
+  Box view;                         // the cells laid, in field coordinates
+
+  // Where the edge between field cells x - 1 and x (or y - 1 and y) lies, in mm: the middle
+  // of the joint, or the layout's edge.
+  double cell_edge_x(int64_t cell_x) const;
+  double cell_edge_y(int64_t cell_y) const;
+};
+
+}  // namespace curdle

@@ -1,0 +1,289 @@
+// Layouts: geometry adds up, counts match the overlay, the SVG parses in a real XML parser
+// (expat) and says what the layout holds, mix and keep colour as described.
+#include <expat.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "curdle/curdling.h"
+#include "curdle/overlay.h"
+#include "curdle/palette.h"
+#include "export/layout_png.h"
+#include "export/svg.h"
+#include "layout/builder.h"
+#include "test_support.h"
+
+namespace curdle {
+using test::design;
+
+namespace {
+
+double intersection(const Rect& a, const Rect& b) {
+  const double w = std::min(a.right(), b.right()) - std::max(a.x, b.x);
+  const double h = std::min(a.top(), b.top()) - std::max(a.y, b.y);
+  return w > 0 && h > 0 ? w * h : 0;
+}
+
+struct SvgSummary {
+  std::map<int, uint64_t> counts;  // value -> elements, from data-count
+  std::set<std::string> ids;
+  std::set<std::string> classes;
+  std::string width, height, view_box;
+  int patterns = 0, pattern_parts = 0;
+  std::map<int, std::string> fills;
+};
+
+SvgSummary parse_svg(const std::string& text) {
+  SvgSummary s;
+  struct State {
+    SvgSummary* s;
+    int value = -1;
+    int depth = 0, value_depth = -1;
+  } state{&s};
+  XML_Parser p = XML_ParserCreate("UTF-8");
+  XML_SetUserData(p, &state);
+  XML_SetElementHandler(
+      p,
+      [](void* data, const XML_Char* name, const XML_Char** attrs) {
+        auto* st = static_cast<State*>(data);
+        ++st->depth;
+        std::map<std::string, std::string> a;
+        for (int i = 0; attrs[i]; i += 2) a[attrs[i]] = attrs[i + 1];
+        const std::string tag = name;
+        if (tag == "svg") st->s->width = a["width"], st->s->height = a["height"], st->s->view_box = a["viewBox"];
+        if (a.count("id")) {
+          EXPECT_TRUE(st->s->ids.insert(a["id"]).second) << "duplicate id " << a["id"];
+        }
+        if (a.count("class")) st->s->classes.insert(a["class"]);
+        if (tag == "pattern") ++st->s->patterns;
+        if (tag == "rect" && st->depth == 4 && st->s->patterns > 0 && st->value < 0) ++st->s->pattern_parts;
+        if (tag == "g" && a["class"] == "value") {
+          st->value = std::stoi(a["data-value"]);
+          st->value_depth = st->depth;
+          st->s->fills[st->value] = a["fill"];
+        } else if (st->value >= 0 && a.count("data-count")) {
+          st->s->counts[st->value] += std::stoull(a["data-count"]);
+        }
+      },
+      [](void* data, const XML_Char*) {
+        auto* st = static_cast<State*>(data);
+        if (st->depth == st->value_depth) st->value = -1, st->value_depth = -1;
+        --st->depth;
+      });
+  EXPECT_EQ(XML_Parse(p, text.data(), static_cast<int>(text.size()), 1), XML_STATUS_OK)
+      << XML_ErrorString(XML_GetErrorCode(p)) << " at line " << XML_GetCurrentLineNumber(p);
+  XML_ParserFree(p);
+  return s;
+}
+
+std::string svg_of(const Layout& layout, const Design& d, const LayoutSpec& spec) {
+  std::ostringstream out;
+  write_layout_svg(out, layout, d, TitleBlock{"test", "a <test> & more", 1}, spec);
+  return out.str();
+}
+
+}  // namespace
+
+TEST(Geometry, SubtractKeepsExactlyWhatNoHoleCovers) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 100);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Rect a{u(rng), u(rng), 1 + u(rng), 1 + u(rng)};
+    // Disjoint holes: cells of a coarse grid, so their areas simply add.
+    std::vector<Rect> holes;
+    std::set<std::pair<int, int>> used;
+    for (int i = 0; i < 4; ++i) {
+      const int gx = static_cast<int>(u(rng) / 25), gy = static_cast<int>(u(rng) / 25);
+      if (used.insert({gx, gy}).second)
+        holes.push_back(Rect{gx * 50.0, gy * 50.0, 10 + u(rng) / 4, 10 + u(rng) / 4});
+    }
+    const auto pieces = subtract(a, holes);
+    double kept = 0, covered = 0;
+    for (const Rect& p : pieces) {
+      kept += p.area();
+      EXPECT_NEAR(intersection(p, a), p.area(), 1e-9);
+      for (const Rect& h : holes) EXPECT_NEAR(intersection(p, h), 0, 1e-9);
+    }
+    for (size_t i = 0; i < pieces.size(); ++i)
+      for (size_t j = i + 1; j < pieces.size(); ++j) EXPECT_NEAR(intersection(pieces[i], pieces[j]), 0, 1e-9);
+    for (const Rect& h : holes) covered += intersection(a, h);
+    EXPECT_NEAR(kept + covered, a.area(), 1e-6);
+  }
+}
+
+TEST(Geometry, MergedRunsCoverEveryCellOnce) {
+  std::mt19937 rng(5);
+  const int64_t rows = 37, cols = 53;
+  std::vector<int> grid(rows * cols);
+  for (auto& v : grid) v = static_cast<int>(rng() % 4) - 1;  // -1: not merged
+  std::vector<int> seen(grid.size(), 0);
+  for (const GridRect& g : merge_runs(grid, rows, cols))
+    for (int64_t r = g.row0; r <= g.row1; ++r)
+      for (int64_t c = g.column0; c <= g.column1; ++c) {
+        EXPECT_EQ(grid[r * cols + c], g.value);
+        ++seen[r * cols + c];
+      }
+  for (size_t i = 0; i < grid.size(); ++i) EXPECT_EQ(seen[i], grid[i] >= 0 ? 1 : 0);
+}
+
+TEST(Layout, CountsPerValueMatchTheOverlay) {
+  const Design d = design(4, 2, {{"3/4", "2/3"}, {"1/2", "1/2"}});
+  const CurdField f = curdle(d, 4, d.field);
+  LayoutSpec spec;
+  spec.joint = 5;
+  const Layout layout = make_layout(d, f, d.field, spec);
+  ASSERT_EQ(layout.elements.size(), 256u);
+  const auto counts = value_counts(f);
+  for (uint32_t v = 0; v < 4; ++v) EXPECT_EQ(layout.legend[v].count, counts[v]);
+  SvgSummary svg = parse_svg(svg_of(layout, d, spec));
+  for (uint32_t v = 0; v < 4; ++v) EXPECT_EQ(svg.counts[v], counts[v]) << "value " << v;
+  EXPECT_EQ(svg.width, "5200mm");  // 16 x 305 - 5 = 4875, and a margin of 4875 / 30 each side
+  EXPECT_EQ(svg.view_box.rfind("0 0 5200 ", 0), 0u);
+  EXPECT_TRUE(svg.ids.count("legend") && svg.ids.count("title-block") && svg.ids.count("joints"));
+}
+
+TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
+  const Design d = design(4, 2, {{"3/4", "1/2", "2/3"}});
+  for (Corner corner : {Corner::bottom_left, Corner::bottom_right, Corner::top_left, Corner::top_right}) {
+    for (LayoutKind kind : {LayoutKind::paving, LayoutKind::facade}) {
+      LayoutSpec spec;
+      spec.kind = kind;
+      spec.origin = corner;
+      spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
+      spec.size = std::array<double, 2>{18000, 15600};
+      if (kind == LayoutKind::facade)
+        spec.openings = {{1200, 0, 7200, 2700}, {1500, 3900, 1200, 1500}, {16200, 12900, 1200, 1500},
+                         {17500, 14000, 500, 1600}};
+      Design sized = d;
+      const auto cells = elements_to_cover(spec);
+      sized.field.size = {cells[0], cells[1], 1};
+      const CurdField f = curdle(sized, 9, sized.field);
+      const Layout layout = make_layout(sized, f, sized.field, spec);
+      double elements = 0, openings = 0;
+      for (const Element& e : layout.elements) {
+        elements += e.area();
+        for (const Rect& r : e.shape) {
+          EXPECT_NEAR(intersection(r, e.nominal), r.area(), 1e-6) << e.id;  // inside its module
+          EXPECT_NEAR(intersection(r, Rect{0, 0, 18000, 15600}), r.area(), 1e-6) << e.id;
+          for (const Rect& o : layout.openings) EXPECT_NEAR(intersection(r, o), 0, 1e-6) << e.id;
+        }
+        EXPECT_EQ(e.cut, e.area() < 600 * 300 - 1e-6);
+      }
+      for (const Rect& o : layout.openings) openings += o.area();
+      EXPECT_NEAR(elements + joint_area(layout) + openings, 18000.0 * 15600.0, 1e-3)
+          << static_cast<int>(corner) << " " << static_cast<int>(kind);
+      EXPECT_EQ(layout.elements.size() + layout.omitted, static_cast<size_t>(cells[0] * cells[1]));
+      // The element IDs follow the laying order from the origin corner: row 0, column 0 sits there.
+      const Element& first = layout.elements.front();
+      EXPECT_EQ(first.row, 0);
+      const bool right = corner == Corner::bottom_right || corner == Corner::top_right;
+      const bool top = corner == Corner::top_left || corner == Corner::top_right;
+      if (first.column == 0) {
+        EXPECT_NEAR(right ? 18000 - first.nominal.right() : first.nominal.x, 0, 1e-6);
+        EXPECT_NEAR(top ? 15600 - first.nominal.top() : first.nominal.y, 0, 1e-6);
+      }
+      SvgSummary svg = parse_svg(svg_of(layout, sized, spec));
+      uint64_t drawn = 0;
+      for (auto& [v, n] : svg.counts) drawn += n;
+      EXPECT_EQ(drawn, layout.elements.size());
+    }
+  }
+}
+
+TEST(Layout, MixBlendsOrTakesTheGivenColoursAndKeepShowsEachCurd) {
+  Design d = design(4, 2, {{"3/4", "3/4"}, {"3/4", "3/4"}});
+  d.curds[0].colour = Rgb{200, 0, 0};
+  d.curds[1].colour = Rgb{0, 0, 200};
+  const CurdField f = curdle(d, 2, d.field);
+  LayoutSpec mix;
+  mix.module_w = mix.module_h = 100;
+  const Layout mixed = make_layout(d, f, d.field, mix);
+  EXPECT_EQ(mixed.legend[3].colour, (Rgb{100, 0, 100}));  // red and blue give purple
+  mix.value_colours = {Rgb{1, 1, 1}, std::nullopt, Rgb{3, 3, 3}, Rgb{4, 4, 4}};
+  const Layout given = make_layout(d, f, d.field, mix);
+  EXPECT_EQ(given.legend[3].colour, (Rgb{4, 4, 4}));
+  EXPECT_EQ(given.legend[1].colour, (Rgb{200, 0, 0}));
+  EXPECT_EQ(parse_svg(svg_of(given, d, mix)).fills[3], "#040404");
+
+  LayoutSpec keep = mix;
+  keep.combine = Combine::keep;
+  keep.value_colours.clear();
+  const Layout kept = make_layout(d, f, d.field, keep);
+  ASSERT_EQ(kept.legend[3].parts.size(), 2u);
+  EXPECT_EQ(kept.legend[3].parts[0], (Rgb{200, 0, 0}));
+  EXPECT_EQ(kept.legend[3].parts[1], (Rgb{0, 0, 200}));
+  SvgSummary svg = parse_svg(svg_of(kept, d, keep));
+  EXPECT_EQ(svg.patterns, 4);
+  EXPECT_EQ(svg.fills[3], "url(#parts-3)");
+  // The PNG shows both curds in a cell of value 3: red on the left, blue on the right.
+  keep.scale = 1, keep.dpi = 25.4;  // one pixel per millimetre
+  const PreviewImage png = render_layout(kept, keep);
+  for (const Element& e : kept.elements) {
+    if (e.value != 3) continue;
+    auto at = [&](double x, double y) {
+      const size_t px = static_cast<size_t>(x), py = static_cast<size_t>(kept.height - y);
+      const uint8_t* p = &png.rgb[(py * png.width + px) * 3];
+      return Rgb{p[0], p[1], p[2]};
+    };
+    EXPECT_EQ(at(e.nominal.x + 20, e.nominal.y + 50), (Rgb{200, 0, 0}));
+    EXPECT_EQ(at(e.nominal.x + 80, e.nominal.y + 50), (Rgb{0, 0, 200}));
+    break;
+  }
+}
+
+TEST(Layout, PngColoursEachElementAndRecordsItsScale) {
+  const Design d = design(4, 2, {{"3/4", "2/3"}});
+  const CurdField f = curdle(d, 8, d.field);
+  LayoutSpec spec;
+  spec.joint = 20;
+  const Layout layout = make_layout(d, f, d.field, spec);
+  EXPECT_EQ(drawing_scale(layout, spec), 20);  // 5.1 m fits an A3 sheet at 1:20
+  spec.scale = 10, spec.dpi = 254;             // 1 px = 1 mm / (254 / 25.4 / 10) = 1 mm
+  const PreviewImage png = render_layout(layout, spec);
+  EXPECT_EQ(png.width, static_cast<int>(std::ceil(layout.width)));
+  for (const Element& e : layout.elements) {
+    const size_t px = static_cast<size_t>(e.nominal.x + 150), py = static_cast<size_t>(layout.height - e.nominal.y - 150);
+    const uint8_t* p = &png.rgb[(py * png.width + px) * 3];
+    EXPECT_EQ((Rgb{p[0], p[1], p[2]}), layout.legend[e.value].colour) << e.id;
+  }
+}
+
+TEST(Layout, OverlaysDrawTheStageGridInTheJointsAndTheWindow) {
+  const Design d = design(4, 2, {{"3/4", "2/3"}});
+  const CurdField f = curdle(d, 8, d.field);
+  LayoutSpec spec;
+  spec.joint = 10;
+  spec.stage_grid = true;
+  spec.highlight = Box{{4, 4, 0}, {8, 4, 1}};
+  const Layout layout = make_layout(d, f, d.field, spec);
+  // The stage-1 boundary between cells 3 and 4 runs in the middle of their joint.
+  EXPECT_NEAR(layout.cell_edge_x(4), 4 * 310 - 5, 1e-9);
+  EXPECT_NEAR(layout.cell_edge_x(0), 0, 1e-9);
+  EXPECT_NEAR(layout.cell_edge_x(16), layout.width, 1e-9);
+  const std::string svg = svg_of(layout, d, spec);
+  const SvgSummary s = parse_svg(svg);
+  EXPECT_TRUE(s.ids.count("stage-grid"));
+  EXPECT_TRUE(s.ids.count("window"));
+  EXPECT_NE(svg.find("data-cells=\"4,4,8,4\""), std::string::npos);
+  EXPECT_TRUE(s.classes.count("stage-0") && s.classes.count("stage-1"));
+}
+
+TEST(Layout, ALargePavingStaysSmallAsSvg) {
+  Design d = design(2, 2, {std::vector<std::string>(10, "0.9")});
+  d.field.size = {1000, 1000, 1};
+  const CurdField f = curdle(d, 1, d.field);
+  LayoutSpec spec;
+  spec.kind = LayoutKind::paving;
+  spec.joint = 3;
+  const Layout layout = make_layout(d, f, d.field, spec);
+  const std::string svg = svg_of(layout, d, spec);
+  EXPECT_LT(svg.size(), 60u << 20) << "1,000,000 tiles";
+  SvgSummary s = parse_svg(svg);
+  EXPECT_EQ(s.counts[0] + s.counts[1], 1000000u);
+}
+
+}  // namespace curdle
