@@ -39,6 +39,52 @@ struct Canvas {
       }
     }
   }
+
+  // Paints a shape given by an inside test over its bounding box (mm), 4 x 4 samples a pixel.
+  template <class Inside>
+  void fill_shape(double x0, double y0, double x1, double y1, const Rgb& c, Inside inside) {
+    const int ix0 = std::max(0, static_cast<int>(std::floor(x0 * px_per_mm)));
+    const int ix1 = std::min(width - 1, static_cast<int>(std::ceil(x1 * px_per_mm)));
+    const int iy0 = std::max(0, static_cast<int>(std::floor((layout_height - y1) * px_per_mm)));
+    const int iy1 = std::min(height - 1, static_cast<int>(std::ceil((layout_height - y0) * px_per_mm)));
+    for (int y = iy0; y <= iy1; ++y)
+      for (int x = ix0; x <= ix1; ++x) {
+        int hits = 0;
+        for (int sy = 0; sy < 4; ++sy)
+          for (int sx = 0; sx < 4; ++sx)
+            hits += inside((x + (sx + 0.5) / 4) / px_per_mm, layout_height - (y + (sy + 0.5) / 4) / px_per_mm);
+        if (!hits) continue;
+        const double a = hits / 16.0;
+        float* p = &rgb[(static_cast<size_t>(y) * width + x) * 3];
+        p[0] += static_cast<float>(a * (c.r - p[0]));
+        p[1] += static_cast<float>(a * (c.g - p[1]));
+        p[2] += static_cast<float>(a * (c.b - p[2]));
+      }
+  }
+
+  void fill(const Circle& c, const Rgb& colour) {
+    const double r = c.d / 2;
+    fill_shape(c.cx - r, c.cy - r, c.cx + r, c.cy + r, colour, [&](double x, double y) {
+      return (x - c.cx) * (x - c.cx) + (y - c.cy) * (y - c.cy) <= r * r;
+    });
+  }
+
+  // Even-odd over all rings, so islands stay material.
+  void fill(const Outline& o, const Rgb& colour) {
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const Ring& ring : o.rings)
+      for (const auto& v : ring)
+        x0 = std::min(x0, v[0]), x1 = std::max(x1, v[0]), y0 = std::min(y0, v[1]), y1 = std::max(y1, v[1]);
+    fill_shape(x0, y0, x1, y1, colour, [&](double x, double y) {
+      bool in = false;
+      for (const Ring& ring : o.rings)
+        for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+          if ((ring[i][1] > y) != (ring[j][1] > y) &&
+              x < (ring[j][0] - ring[i][0]) * (y - ring[i][1]) / (ring[j][1] - ring[i][1]) + ring[i][0])
+            in = !in;
+      return in;
+    });
+  }
 };
 
 }  // namespace
@@ -66,7 +112,9 @@ PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec) {
     throw InputError("layout.png would be " + std::to_string(canvas.width) + " x " +
                      std::to_string(canvas.height) + " pixels, above " +
                      std::to_string(kMaxPixels) + " a side; use a larger layout.scale or lower layout.dpi");
-  const Rgb background = layout.joint > 0 ? layout.joint_colour : Rgb{255, 255, 255};
+  const bool sheet = layout.kind == LayoutKind::perforation;
+  const Rgb background = sheet ? Rgb{201, 205, 210}
+                               : layout.joint > 0 ? layout.joint_colour : Rgb{255, 255, 255};
   canvas.rgb.assign(static_cast<size_t>(canvas.width) * canvas.height * 3, 0.f);
   for (size_t i = 0; i < canvas.rgb.size(); i += 3)
     canvas.rgb[i] = background.r, canvas.rgb[i + 1] = background.g, canvas.rgb[i + 2] = background.b;
@@ -74,6 +122,14 @@ PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec) {
   const bool from_right = layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
   for (const Element& e : layout.elements) {
     const LegendEntry& entry = layout.legend[e.value];
+    if (e.circle) {
+      canvas.fill(*e.circle, entry.colour);
+      continue;
+    }
+    if (e.outline) {
+      canvas.fill(*e.outline, entry.colour);
+      continue;
+    }
     if (layout.combine == Combine::mix) {
       for (const Rect& r : e.shape) canvas.fill(r, entry.colour);
       continue;

@@ -103,10 +103,6 @@ int generate(const CommonOptions& common, const std::string& out_dir,
     staged.push_back(std::make_unique<StagedFile>(dir / name));
     return *staged.back();
   };
-  if (outputs.count("report.json"))
-    stage("report.json").write([&](std::ostream& o) {
-      o << report_to_json(report).dump(2) << "\n";
-    });
   if (outputs.count("cells.csv")) {
     Progress progress("writing cells.csv");
     stage("cells.csv").write([&](std::ostream& o) {
@@ -119,7 +115,8 @@ int generate(const CommonOptions& common, const std::string& out_dir,
         stage("preview.png").temporary(),
         render_preview(s.recipe.design, field, s.view, [&](double f) { progress.update(f); }));
   }
-  if (has_layout && (outputs.count("layout.svg") || outputs.count("layout.png"))) {
+  nlohmann::ordered_json layout_summary;  // what report.json says of the layout
+  if (has_layout) {
     const LayoutSpec& spec = *s.recipe.layout;
     const Layout layout = make_layout(s.recipe.design, field, s.view, spec);
     if (outputs.count("layout.svg"))
@@ -131,12 +128,32 @@ int generate(const CommonOptions& common, const std::string& out_dir,
       write_png_at(stage("layout.png").temporary(), render_layout(layout, spec), spec.dpi);
     uint64_t cut = 0;
     for (const Element& e : layout.elements) cut += e.cut;
-    std::printf("layout: %zu %ss (%llu cut, %llu over openings), %.0f x %.0f mm; layout.png at 1:%g, %g dpi\n",
-                layout.elements.size(), layout.element_type.c_str(),
-                static_cast<unsigned long long>(cut), static_cast<unsigned long long>(layout.omitted),
-                layout.width, layout.height, drawing_scale(layout, spec), spec.dpi);
+    std::printf(
+        "layout: %zu %ss (%llu cut, %llu over openings), %.0f x %.0f mm; layout.png at 1:%g, %g dpi\n",
+        layout.elements.size(), layout.element_type.c_str(), static_cast<unsigned long long>(cut),
+        static_cast<unsigned long long>(layout.omitted), layout.width, layout.height,
+        drawing_scale(layout, spec), spec.dpi);
     for (const std::string& note : layout.notes) std::printf("  note: %s\n", note.c_str());
+    for (size_t i = 0; i < layout.violations.size() && i < 20; ++i)
+      std::printf("  rule: %s\n", layout.violations[i].c_str());
+    if (layout.violations.size() > 20)
+      std::printf("  rule: ... %zu more in report.json\n", layout.violations.size() - 20);
+    layout_summary = {{"element_type", layout.element_type},
+                      {"width_mm", layout.width},
+                      {"height_mm", layout.height},
+                      {"elements", layout.elements.size()},
+                      {"cut", cut},
+                      {"omitted_over_openings", layout.omitted},
+                      {"open_area", layout.open_area},
+                      {"notes", layout.notes},
+                      {"rule_violations", layout.violations}};
   }
+  if (outputs.count("report.json"))
+    stage("report.json").write([&](std::ostream& o) {
+      auto j = report_to_json(report);
+      if (!layout_summary.is_null()) j["layout"] = layout_summary;
+      o << j.dump(2) << "\n";
+    });
   for (auto& f : staged) f->check_replaceable();
   for (auto& f : staged) f->commit();
 

@@ -7,6 +7,7 @@
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
+#include "layout/perforation.h"
 
 namespace curdle {
 namespace {
@@ -18,6 +19,7 @@ const char* prefix(LayoutKind kind) {
     case LayoutKind::tile: return "T";
     case LayoutKind::paving: return "P";
     case LayoutKind::facade: return "F";
+    case LayoutKind::perforation: return "C";  // cells; their openings become "H-..."
   }
   return "E";
 }
@@ -27,6 +29,7 @@ const char* element_type(LayoutKind kind) {
     case LayoutKind::tile: return "tile";
     case LayoutKind::paving: return "paving tile";
     case LayoutKind::facade: return "panel";
+    case LayoutKind::perforation: return "cell";
   }
   return "element";
 }
@@ -135,6 +138,7 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
     }
   }
   for (const Element& e : layout.elements) ++layout.legend[e.value].count;
+  if (spec.kind == LayoutKind::perforation) perforate(layout, design, spec);
   return layout;
 }
 

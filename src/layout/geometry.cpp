@@ -54,6 +54,8 @@ std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes) {
 }
 
 double Element::area() const {
+  if (circle) return circle->area();
+  if (outline) return outline->area;
   double a = 0;
   for (const Rect& r : shape) a += r.area();
   return a;

@@ -27,7 +27,31 @@ bool overlaps(const Rect& a, const Rect& b);
 // a minus the union of `holes`, as disjoint rectangles (all edges are axis-aligned).
 std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes);
 
-enum class LayoutKind { tile, paving, facade };
+enum class LayoutKind { tile, paving, facade, perforation };
+
+struct Circle {
+  double cx = 0, cy = 0, d = 0;
+  double area() const { return 3.14159265358979323846 * d * d / 4; }
+};
+using Ring = std::vector<std::array<double, 2>>;  // closed implicitly; outer rings counter-clockwise
+
+// An opening's outline: outer rings and the islands inside them, with its exact-arithmetic area.
+struct Outline {
+  std::vector<Ring> rings;
+  double area = 0;
+};
+
+// Perforation: the opening each curd makes in its cells.
+struct HoleSpec {
+  double diameter = 0;
+  double offset_x = 0, offset_y = 0;  // from the cell centre, mm
+};
+
+enum class HoleFix {
+  none,  // report violations of the fabrication rules, change nothing
+  drop,  // drop holes that break a rule: too small, too near the edge, or the smaller of two
+         // holes too close together
+};
 enum class Combine {
   mix,   // a + b = c: a cell where curds overlap takes a new value, its own colour
   keep,  // a + b = ab: every curd that survived in the cell stays visible, side by side
@@ -48,6 +72,14 @@ struct LayoutSpec {
   std::string mask;            // façade: image whose dark pixels are openings (read by the CLI)
   bool stage_grid = false;     // draw lines at each stage's cell boundaries
   std::optional<Box> highlight;  // a window of cells to outline on the drawing
+  // Perforation.
+  std::vector<HoleSpec> holes;  // one per curd
+  double thickness = 0;         // sheet thickness, mm
+  double min_diameter = 0;      // smallest hole the tool cuts
+  double min_bridge = 0;        // least material between two holes
+  double edge_margin = 0;       // least material between a hole and the sheet edge
+  HoleFix fix = HoleFix::none;
+  double chord_tolerance = 0.05;  // how far polygonised circles may stray, mm
   double scale = 0;            // layout.png drawing scale 1 : scale; 0 picks one
   double dpi = 150;
 };
@@ -60,6 +92,8 @@ struct Element {
   Rect nominal;                  // where the whole element would be
   std::vector<Rect> shape;       // what is laid: one rect, or the pieces of a cut element
   bool cut = false;              // smaller than nominal (edge or opening)
+  std::optional<Circle> circle;  // a round opening (perforation)
+  std::optional<Outline> outline;  // merged openings cut as their union (perforation, keep)
   double area() const;
 };
 
@@ -68,7 +102,7 @@ struct LegendEntry {
   std::string label;
   Rgb colour;
   std::vector<Rgb> parts;  // keep mode: the colours shown side by side
-  uint64_t count = 0;      // elements of this value
+  uint64_t count = 0;      // elements of this value (perforation: cells with holes)
 };
 
 struct Layout {
@@ -85,6 +119,9 @@ struct Layout {
   std::vector<Rect> openings;
   std::vector<LegendEntry> legend;  // one per value
   uint64_t omitted = 0;             // cells wholly inside openings: no element
+  // Perforation: the sheet's open-area share, and what the fabrication rules found or changed.
+  double open_area = 0;
+  std::vector<std::string> violations;
   std::vector<std::string> notes;   // what a builder should know (cut slivers, ...)
   Box view;                         // the cells laid, in field coordinates
 

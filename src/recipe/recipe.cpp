@@ -342,6 +342,50 @@ bool read_bool(TableReader& r, const std::string& key, bool fallback) {
   return *n->value<bool>();
 }
 
+void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
+  spec.thickness = read_mm(r, "thickness", 0, 0, true);
+  if (spec.thickness <= 0) r.fail("thickness", "must be above 0 mm");
+  spec.min_diameter = read_mm(r, "min_diameter", 0, 0);
+  spec.min_bridge = read_mm(r, "min_bridge", 0, 0);
+  spec.edge_margin = read_mm(r, "edge_margin", 0, 0);
+  spec.chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
+  if (spec.chord_tolerance <= 0) r.fail("chord_tolerance", "must be above 0 mm, e.g. 0.05");
+  const auto fix = read_string(r, "fix", "\"none\" or \"drop\"").value_or("none");
+  if (fix == "none") spec.fix = HoleFix::none;
+  else if (fix == "drop") spec.fix = HoleFix::drop;
+  else r.fail("fix", "must be \"none\" (report only) or \"drop\" (drop the openings that break a rule)");
+  const toml::node* n = r.get("holes");
+  if (!n) r.fail("holes", "is required: one {diameter, offset} per curd, e.g. [{diameter = 20, offset = [-10, 0]}]");
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != design.curds.size())
+    r.fail("holes", "must give one {diameter, offset} per curd: " + std::to_string(design.curds.size()) +
+                        " curds, " + std::to_string(a ? a->size() : 0) + " holes");
+  for (size_t i = 0; i < a->size(); ++i) {
+    const std::string path = "layout.holes." + std::to_string(i);
+    const toml::table* h = a->get(i)->as_table();
+    if (!h) r.fail_node(*a->get(i), path, "must be a table {diameter = 20, offset = [0, 0]}");
+    TableReader hr(*h, path, r.source(), {"diameter", "offset"});
+    HoleSpec hole;
+    hole.diameter = read_mm(hr, "diameter", 0, 0, true);
+    if (hole.diameter <= 0) hr.fail("diameter", "must be above 0 mm");
+    if (const auto off = hr.get("offset")) {
+      const toml::array* o = off->as_array();
+      const auto x = o && o->size() == 2 ? o->get(0)->value<double>() : std::nullopt;
+      const auto y = o && o->size() == 2 ? o->get(1)->value<double>() : std::nullopt;
+      if (!x || !y) hr.fail("offset", "must be [x, y] in millimetres from the cell centre");
+      hole.offset_x = *x, hole.offset_y = *y;
+    }
+    if (std::fabs(hole.offset_x) + hole.diameter / 2 > spec.module_w / 2 + 1e-9 ||
+        std::fabs(hole.offset_y) + hole.diameter / 2 > spec.module_h / 2 + 1e-9)
+      r.fail_node(*a->get(i), path,
+                  "a hole of " + std::to_string(hole.diameter) + " mm at that offset does not fit in its " +
+                      std::to_string(static_cast<int>(spec.module_w)) + " x " +
+                      std::to_string(static_cast<int>(spec.module_h)) +
+                      " mm cell; holes must lie inside their cells (smaller, or nearer the centre)");
+    spec.holes.push_back(hole);
+  }
+}
+
 std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool field_given) {
   const toml::table* t = read_table(top, "layout");
   if (!t) return std::nullopt;
@@ -365,9 +409,16 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     spec.kind = LayoutKind::facade;
     module_key = "panel", size_key = "wall";
     keys.insert(keys.end(), {"openings", "mask"});
+  } else if (kind == "perforation") {
+    spec.kind = LayoutKind::perforation;
+    module_key = "cell", size_key = "sheet";
+    keys.insert(keys.end(), {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin",
+                             "fix", "chord_tolerance"});
+    keys.erase(std::find(keys.begin(), keys.end(), "joint"));
   } else {
     top.fail_node(*t->get("kind"), "layout.kind",
-                  "unknown element kind \"" + kind + "\"; allowed: \"tile\", \"paving\", \"facade\"");
+                  "unknown element kind \"" + kind +
+                      "\"; allowed: \"tile\", \"paving\", \"facade\", \"perforation\"");
   }
   keys.push_back(module_key);
   keys.push_back(size_key);
@@ -383,7 +434,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
 
   const auto module = read_mm_pair(r, module_key);
   if (module) spec.module_w = (*module)[0], spec.module_h = (*module)[1];
-  spec.joint = read_mm(r, "joint", 0, 0);
+  spec.joint = spec.kind == LayoutKind::perforation ? 0 : read_mm(r, "joint", 0, 0);
   if (spec.joint >= std::min(spec.module_w, spec.module_h))
     r.fail("joint", "must be narrower than the " + module_key + " (" +
                         std::to_string(static_cast<int>(std::min(spec.module_w, spec.module_h))) + " mm)");
@@ -461,6 +512,8 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     }
     spec.mask = read_string(r, "mask", "the path of an image").value_or("");
   }
+
+  if (spec.kind == LayoutKind::perforation) read_perforation(r, design, spec);
 
   if (spec.size) {
     const auto cells = elements_to_cover(spec);

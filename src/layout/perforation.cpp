@@ -1,0 +1,151 @@
+#include "layout/perforation.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include "layout/union.h"
+
+namespace curdle {
+namespace {
+
+struct Hole {
+  Element element;
+  std::vector<Circle> parts;  // the circles it is made of: exact gaps for the rules
+  bool dropped = false;
+};
+
+double edge_gap(const Hole& h, double width, double height) {
+  double gap = 1e300;
+  for (const Circle& c : h.parts) {
+    const double r = c.d / 2;
+    gap = std::min({gap, c.cx - r, width - c.cx - r, c.cy - r, height - c.cy - r});
+  }
+  return gap;
+}
+
+// Groups of circles that overlap, directly or through others.
+std::vector<std::vector<Circle>> overlapping_groups(const std::vector<Circle>& circles) {
+  std::vector<size_t> group(circles.size());
+  std::iota(group.begin(), group.end(), 0);
+  auto find = [&](size_t i) {
+    while (group[i] != i) i = group[i] = group[group[i]];
+    return i;
+  };
+  for (size_t i = 0; i < circles.size(); ++i)
+    for (size_t j = i + 1; j < circles.size(); ++j)
+      if (bridge({circles[i]}, {circles[j]}) < 0) group[find(i)] = find(j);
+  std::map<size_t, std::vector<Circle>> by_root;
+  for (size_t i = 0; i < circles.size(); ++i) by_root[find(i)].push_back(circles[i]);
+  std::vector<std::vector<Circle>> out;
+  for (auto& [root, members] : by_root) out.push_back(std::move(members));
+  return out;
+}
+
+}  // namespace
+
+double bridge(const std::vector<Circle>& a, const std::vector<Circle>& b) {
+  double gap = 1e300;
+  for (const Circle& p : a)
+    for (const Circle& q : b)
+      gap = std::min(gap, std::hypot(p.cx - q.cx, p.cy - q.cy) - (p.d + q.d) / 2);
+  return gap;
+}
+
+void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
+  std::vector<Element> cells = std::move(layout.elements);
+  layout.elements.clear();
+  layout.element_type = "opening";
+  std::vector<Hole> holes;
+  for (const Element& cell : cells) {
+    if (cell.value == 0) continue;
+    const double cx = cell.nominal.x + cell.nominal.w / 2, cy = cell.nominal.y + cell.nominal.h / 2;
+    std::vector<Circle> circles;
+    for (size_t c = 0; c < design.curds.size(); ++c)
+      if (cell.value >> c & 1)
+        circles.push_back(Circle{cx + spec.holes[c].offset_x, cy + spec.holes[c].offset_y,
+                                 spec.holes[c].diameter});
+    int index = 0;
+    for (const std::vector<Circle>& group : overlapping_groups(circles)) {
+      Hole h;
+      h.element = cell;
+      h.element.shape.clear();
+      h.element.cut = false;
+      h.element.id = fmt::format("H{}-{}", cell.id.substr(1), ++index);
+      if (group.size() == 1) {
+        h.element.circle = group[0];
+        h.parts = group;
+      } else if (spec.combine == Combine::mix) {
+        // One opening of the summed area at the group's centre of area (a + b = c).
+        double area = 0, mx = 0, my = 0;
+        for (const Circle& c : group) area += c.area(), mx += c.area() * c.cx, my += c.area() * c.cy;
+        const Circle merged{mx / area, my / area, 2 * std::sqrt(area / 3.14159265358979323846)};
+        h.element.circle = merged;
+        h.parts = {merged};
+      } else {
+        h.element.outline = union_of_circles(group, spec.chord_tolerance).front();
+        h.parts = group;
+      }
+      holes.push_back(std::move(h));
+    }
+  }
+
+  // Fabrication rules, in laying order so that reports and fixes are reproducible.
+  const bool fix = spec.fix == HoleFix::drop;
+  auto drop = [&](Hole& h, const std::string& why) {
+    layout.violations.push_back(h.element.id + ": " + why + (fix ? "; dropped" : ""));
+    if (fix) h.dropped = true;
+  };
+  for (Hole& h : holes) {
+    if (h.element.circle && h.element.circle->d < spec.min_diameter - 1e-9)
+      drop(h, fmt::format("diameter {:.2f} mm is below the minimum {:.2f} mm", h.element.circle->d,
+                          spec.min_diameter));
+    else if (const double gap = edge_gap(h, layout.width, layout.height); gap < spec.edge_margin - 1e-9)
+      drop(h, fmt::format("{:.2f} mm from the sheet edge, below the margin {:.2f} mm", gap,
+                          spec.edge_margin));
+  }
+  std::map<std::pair<int64_t, int64_t>, std::vector<size_t>> by_cell;
+  for (size_t i = 0; i < holes.size(); ++i)
+    by_cell[{holes[i].element.row, holes[i].element.column}].push_back(i);
+  for (size_t i = 0; i < holes.size(); ++i) {
+    if (holes[i].dropped) continue;
+    for (int64_t dr = -1; dr <= 1 && !holes[i].dropped; ++dr)
+      for (int64_t dc = -1; dc <= 1 && !holes[i].dropped; ++dc) {
+        auto it = by_cell.find({holes[i].element.row + dr, holes[i].element.column + dc});
+        if (it == by_cell.end()) continue;
+        for (size_t j : it->second) {
+          if (j <= i || holes[j].dropped) continue;
+          const double gap = bridge(holes[i].parts, holes[j].parts);
+          if (gap >= spec.min_bridge - 1e-9) continue;
+          // The smaller opening goes (the later one on a tie), so the larger keeps its place.
+          Hole& loser = holes[i].element.area() < holes[j].element.area() ? holes[i] : holes[j];
+          const Hole& other = &loser == &holes[i] ? holes[j] : holes[i];
+          drop(loser, fmt::format("bridge {:.2f} mm to {} is below {:.2f} mm", gap, other.element.id,
+                                  spec.min_bridge));
+          if (holes[i].dropped) break;
+        }
+      }
+  }
+
+  double open = 0;
+  for (Hole& h : holes) {
+    if (h.dropped) continue;
+    open += h.element.area();
+    layout.elements.push_back(std::move(h.element));
+  }
+  layout.open_area = open / (layout.width * layout.height);
+  // The legend keeps counting cells of each value (as the report does); value 0 is bare sheet.
+  layout.legend[0].colour = Rgb{201, 205, 210};
+  layout.legend[0].label = "sheet";
+  if (!layout.violations.empty())
+    layout.notes.push_back(fmt::format("{} openings break the fabrication rules{}",
+                                       layout.violations.size(),
+                                       fix ? " and were dropped" : " (see the report)"));
+  layout.notes.push_back(fmt::format("open area {:.2f} % of the sheet; sheet {} mm thick",
+                                     100 * layout.open_area, spec.thickness));
+}
+
+}  // namespace curdle

@@ -1,0 +1,62 @@
+#include "layout/union.h"
+
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_set_2.h>
+
+#include <cmath>
+#include <list>
+
+namespace curdle {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Polygon = CGAL::Polygon_2<Kernel>;
+using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
+
+Ring ring_of(const Polygon& p) {
+  Ring r;
+  for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v)
+    r.push_back({CGAL::to_double(v->x()), CGAL::to_double(v->y())});
+  return r;
+}
+
+}  // namespace
+
+Ring polygonise(const Circle& c, double tolerance) {
+  const double r = c.d / 2;
+  const double step = tolerance >= r ? 3.14159265358979323846 / 3 : 2 * std::acos(1 - tolerance / r);
+  const int n = std::max(8, static_cast<int>(std::ceil(2 * 3.14159265358979323846 / step)));
+  Ring ring;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.14159265358979323846 * i / n;
+    ring.push_back({c.cx + r * std::cos(a), c.cy + r * std::sin(a)});
+  }
+  return ring;
+}
+
+std::vector<Outline> union_of_circles(const std::vector<Circle>& circles, double tolerance) {
+  CGAL::Polygon_set_2<Kernel> set;
+  for (const Circle& c : circles) {
+    Polygon p;
+    for (const auto& v : polygonise(c, tolerance)) p.push_back(Kernel::Point_2(v[0], v[1]));
+    set.join(p);
+  }
+  std::list<PolygonWithHoles> parts;
+  set.polygons_with_holes(std::back_inserter(parts));
+  std::vector<Outline> out;
+  for (const PolygonWithHoles& part : parts) {
+    Outline o;
+    o.rings.push_back(ring_of(part.outer_boundary()));
+    Kernel::FT area = part.outer_boundary().area();
+    for (auto h = part.holes_begin(); h != part.holes_end(); ++h) {
+      o.rings.push_back(ring_of(*h));
+      area += h->area();  // islands run clockwise: their area is negative
+    }
+    o.area = CGAL::to_double(area);
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
+}  // namespace curdle
