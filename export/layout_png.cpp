@@ -122,6 +122,11 @@ PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec) {
   const bool from_right = layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
   for (const Element& e : layout.elements) {
     const LegendEntry& entry = layout.legend[e.value];
+    if (!e.type.empty()) {  // park: each element in its own colour
+      if (e.circle) canvas.fill(*e.circle, e.colour);
+      for (const Rect& r : e.shape) canvas.fill(r, e.colour);
+      continue;
+    }
     if (e.circle) {
       canvas.fill(*e.circle, entry.colour);
       continue;

@@ -41,6 +41,7 @@ const char* kind_name(LayoutKind kind) {
     case LayoutKind::paving: return "paving";
     case LayoutKind::facade: return "facade";
     case LayoutKind::perforation: return "perforation";
+    case LayoutKind::park: return "park";
   }
   return "layout";
 }
@@ -125,6 +126,68 @@ void draw_openings(std::ostream& out, const Layout& layout, const Sheet& s) {
         out << fmt::format("<path id=\"{}\" class=\"opening merged\" fill-rule=\"evenodd\" d=\"{}\"/>\n",
                            e->id, d);
       }
+    }
+    out << "</g>\n";
+  }
+}
+
+// Park: one group per element type, surfaces first (whole-cell ones merged), objects on top.
+void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double unit) {
+  std::vector<std::string> types;
+  std::map<std::string, std::vector<const Element*>> by_type;
+  for (const Element& e : layout.elements) {
+    if (!by_type.count(e.type)) types.push_back(e.type);
+    by_type[e.type].push_back(&e);
+  }
+  std::stable_sort(types.begin(), types.end(), [&](const std::string& a, const std::string& b) {
+    return !by_type[a].front()->circle && by_type[a].front()->shape.size() == 1 &&
+           by_type[a].front()->shape[0].w >= by_type[a].front()->nominal.w - 1e-6 &&
+           !(by_type[b].front()->shape.size() == 1 && by_type[b].front()->shape[0].w >= by_type[b].front()->nominal.w - 1e-6);
+  });
+  for (const std::string& type : types) {
+    const auto& list = by_type[type];
+    std::string id = type;
+    for (char& c : id)
+      if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
+    out << fmt::format("<g id=\"type-{}\" class=\"element-type\" data-type=\"{}\" data-count=\"{}\" "
+                       "fill=\"{}\">\n",
+                       id, escape(type), list.size(), hex(list.front()->colour));
+    // Whole-cell surfaces of this type merge into rectangles; the rest are drawn one by one.
+    std::vector<int> grid(static_cast<size_t>(layout.rows * layout.columns), -1);
+    std::vector<const Element*> at(grid.size(), nullptr);
+    for (const Element* e : list) {
+      const bool whole = !e->circle && e->shape.size() == 1 && !e->cut &&
+                         std::fabs(e->shape[0].w - e->nominal.w) < 1e-6 &&
+                         std::fabs(e->shape[0].h - e->nominal.h) < 1e-6;
+      if (whole) {
+        const size_t i = static_cast<size_t>(e->row * layout.columns + e->column);
+        grid[i] = 0;
+        at[i] = e;
+        continue;
+      }
+      if (e->circle) {
+        out << fmt::format("<circle id=\"{}\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill-opacity=\"0.85\" "
+                           "stroke=\"#1d3b26\" stroke-width=\"{}\"/>\n",
+                           e->id, mm(s.x(e->circle->cx)), mm(s.y(e->circle->cy)), mm(e->circle->d / 2),
+                           mm(unit * 0.04));
+        continue;
+      }
+      std::string d;
+      for (const Rect& r : e->shape) d += rect_path(s, r);
+      out << fmt::format("<path id=\"{}\" d=\"{}\"{}/>\n", e->id, d,
+                         e->shape.size() == 1 && e->shape[0].w < e->nominal.w - 1e-6 && e->shape[0].h < e->nominal.h - 1e-6
+                             ? fmt::format(" stroke=\"#3a2a1a\" stroke-width=\"{}\"", mm(unit * 0.04))
+                             : "");
+    }
+    for (const GridRect& g : merge_runs(grid, layout.rows, layout.columns)) {
+      const Element& a = *at[static_cast<size_t>(g.row0 * layout.columns + g.column0)];
+      const Element& b = *at[static_cast<size_t>(g.row1 * layout.columns + g.column1)];
+      const double x0 = std::min(a.nominal.x, b.nominal.x), x1 = std::max(a.nominal.right(), b.nominal.right());
+      const double y0 = std::min(a.nominal.y, b.nominal.y), y1 = std::max(a.nominal.top(), b.nominal.top());
+      const uint64_t count = static_cast<uint64_t>((g.row1 - g.row0 + 1) * (g.column1 - g.column0 + 1));
+      out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" data-elements=\"{}{}\" data-count=\"{}\"/>\n",
+                         mm(s.x(x0)), mm(s.y(y0, y1 - y0)), mm(x1 - x0), mm(y1 - y0), a.id,
+                         count > 1 ? ":" + b.id : std::string(), count);
     }
     out << "</g>\n";
   }
@@ -260,7 +323,9 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Desi
         "{} {}: {} {}{}</text></g>\n",
         e.value, mm(margin), mm(y), mm(unit * 2), mm(unit * 1.2), fill, mm(unit * 0.05),
         mm(margin + unit * 2.6), mm(y + unit), e.value, escape(e.label), e.count,
-        layout.kind == LayoutKind::perforation ? "cell" : escape(layout.element_type),
+        layout.kind == LayoutKind::perforation || layout.kind == LayoutKind::park
+            ? "cell"
+            : escape(layout.element_type),
         e.count == 1 ? "" : "s");
   }
   out << "</g>\n";
@@ -281,6 +346,10 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Desi
       layout.kind == LayoutKind::perforation
           ? fmt::format("{} x {} mm sheet: {} x {} cells of {} x {} mm", mm(W), mm(H), layout.columns,
                         layout.rows, mm(layout.module_w), mm(layout.module_h))
+      : layout.kind == LayoutKind::park
+          ? fmt::format("{} x {} mm: {} x {} cells of {} x {} mm, {} elements", mm(W), mm(H),
+                        layout.columns, layout.rows, mm(layout.module_w), mm(layout.module_h),
+                        layout.elements.size())
           : fmt::format("{} x {} mm: {} {}s of {} x {} mm, joint {} mm ({} cut)", mm(W), mm(H),
                         layout.elements.size(), layout.element_type, mm(layout.module_w),
                         mm(layout.module_h), mm(layout.joint), cut_count),
@@ -292,7 +361,7 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Desi
   size_t longest = 0;
   for (const std::string& l : all) longest = std::max(longest, l.size());
   const double box_w = W + margin - (tx - unit * 0.6);
-  const double font = std::min(unit * 0.8, box_w / (0.55 * static_cast<double>(longest) + 1));
+  const double font = std::min(unit * 0.8, box_w / (0.62 * static_cast<double>(longest) + 1));
   out << fmt::format("<g id=\"title-block\" font-size=\"{}\" fill=\"#222\">\n", mm(font));
   out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
                      "stroke=\"#222\" stroke-width=\"{}\"/>\n",
@@ -364,6 +433,8 @@ void write_layout_svg(std::ostream& out, const Layout& layout, const Design& des
 
   if (layout.kind == LayoutKind::perforation) {
     draw_openings(out, layout, s);
+  } else if (layout.kind == LayoutKind::park) {
+    draw_park(out, layout, s, unit);
   } else {
     draw_modules(out, layout, s, unit);
   }

@@ -7,6 +7,7 @@
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
+#include "layout/park.h"
 #include "layout/perforation.h"
 
 namespace curdle {
@@ -20,6 +21,7 @@ const char* prefix(LayoutKind kind) {
     case LayoutKind::paving: return "P";
     case LayoutKind::facade: return "F";
     case LayoutKind::perforation: return "C";  // cells; their openings become "H-..."
+    case LayoutKind::park: return "C";         // cells; their elements become "K-..."
   }
   return "E";
 }
@@ -30,6 +32,7 @@ const char* element_type(LayoutKind kind) {
     case LayoutKind::paving: return "paving tile";
     case LayoutKind::facade: return "panel";
     case LayoutKind::perforation: return "cell";
+    case LayoutKind::park: return "cell";
   }
   return "element";
 }
@@ -139,6 +142,7 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
   }
   for (const Element& e : layout.elements) ++layout.legend[e.value].count;
   if (spec.kind == LayoutKind::perforation) perforate(layout, design, spec);
+  if (spec.kind == LayoutKind::park) plant(layout, design, spec);
   return layout;
 }
 

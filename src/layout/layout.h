@@ -27,7 +27,7 @@ bool overlaps(const Rect& a, const Rect& b);
 // a minus the union of `holes`, as disjoint rectangles (all edges are axis-aligned).
 std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes);
 
-enum class LayoutKind { tile, paving, facade, perforation };
+enum class LayoutKind { tile, paving, facade, perforation, park };
 
 struct Circle {
   double cx = 0, cy = 0, d = 0;
@@ -45,6 +45,15 @@ struct Outline {
 struct HoleSpec {
   double diameter = 0;
   double offset_x = 0, offset_y = 0;  // from the cell centre, mm
+};
+
+// Park: what each curd places in its cells (Cirovic 2014, fig. 5).
+struct ParkElement {
+  std::string type;      // "tree", "bench", "grey paving", ...
+  bool surface = false;  // fills its share of the cell (paving), or stands in it (object)
+  bool round = false;    // objects: a circle of diameter size[0] (a canopy), or a rectangle
+  double w = 0, h = 0;   // objects: footprint, mm
+  Rgb colour;
 };
 
 enum class HoleFix {
@@ -80,6 +89,10 @@ struct LayoutSpec {
   double edge_margin = 0;       // least material between a hole and the sheet edge
   HoleFix fix = HoleFix::none;
   double chord_tolerance = 0.05;  // how far polygonised circles may stray, mm
+  // Park.
+  std::vector<ParkElement> park;  // one per curd
+  ParkElement ground{"white paving", true, false, 0, 0, Rgb{242, 240, 234}};  // cells with no surface
+  double clearance = 0;           // between objects, and from objects to the cell's edge
   double scale = 0;            // layout.png drawing scale 1 : scale; 0 picks one
   double dpi = 150;
 };
@@ -94,6 +107,8 @@ struct Element {
   bool cut = false;              // smaller than nominal (edge or opening)
   std::optional<Circle> circle;  // a round opening (perforation)
   std::optional<Outline> outline;  // merged openings cut as their union (perforation, keep)
+  std::string type;                // park: the element type; empty for modules
+  Rgb colour;                      // park: the element's own colour
   double area() const;
 };
 
