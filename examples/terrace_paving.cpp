@@ -13,7 +13,8 @@ int main() {
   design.lattice = {4, 2, 3, curdle::Mode::canonical};
   curdle::CurdSpec dark;
   dark.name = "dark";
-  for (const char* p : {"3/4", "1/2", "1/2"}) dark.probabilities.push_back(*curdle::Probability::parse(p));
+  for (const char* p : {"3/4", "1/2", "1/2"})
+    dark.probabilities.push_back(*curdle::Probability::parse(p));
   design.curds.push_back(dark);
 
   curdle::LayoutSpec spec;
@@ -31,8 +32,8 @@ int main() {
 
   size_t cut = 0;
   for (const auto& e : layout.elements) cut += e.cut;
-  std::printf("terrace: %zu slabs, %zu cut, %llu dark, joints %.2f m2\n", layout.elements.size(), cut,
-              static_cast<unsigned long long>(layout.legend[1].count),
+  std::printf("terrace: %zu slabs, %zu cut, %llu dark, joints %.2f m2\n", layout.elements.size(),
+              cut, static_cast<unsigned long long>(layout.legend[1].count),
               curdle::joint_area(layout) / 1e6);
   return svg ? 0 : 1;
 }

@@ -46,13 +46,15 @@ struct Canvas {
     const int ix0 = std::max(0, static_cast<int>(std::floor(x0 * px_per_mm)));
     const int ix1 = std::min(width - 1, static_cast<int>(std::ceil(x1 * px_per_mm)));
     const int iy0 = std::max(0, static_cast<int>(std::floor((layout_height - y1) * px_per_mm)));
-    const int iy1 = std::min(height - 1, static_cast<int>(std::ceil((layout_height - y0) * px_per_mm)));
+    const int iy1 =
+        std::min(height - 1, static_cast<int>(std::ceil((layout_height - y0) * px_per_mm)));
     for (int y = iy0; y <= iy1; ++y)
       for (int x = ix0; x <= ix1; ++x) {
         int hits = 0;
         for (int sy = 0; sy < 4; ++sy)
           for (int sx = 0; sx < 4; ++sx)
-            hits += inside((x + (sx + 0.5) / 4) / px_per_mm, layout_height - (y + (sy + 0.5) / 4) / px_per_mm);
+            hits += inside((x + (sx + 0.5) / 4) / px_per_mm,
+                           layout_height - (y + (sy + 0.5) / 4) / px_per_mm);
         if (!hits) continue;
         const double a = hits / 16.0;
         float* p = &rgb[(static_cast<size_t>(y) * width + x) * 3];
@@ -74,13 +76,15 @@ struct Canvas {
     double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
     for (const Ring& ring : o.rings)
       for (const auto& v : ring)
-        x0 = std::min(x0, v[0]), x1 = std::max(x1, v[0]), y0 = std::min(y0, v[1]), y1 = std::max(y1, v[1]);
+        x0 = std::min(x0, v[0]), x1 = std::max(x1, v[0]), y0 = std::min(y0, v[1]),
+        y1 = std::max(y1, v[1]);
     fill_shape(x0, y0, x1, y1, colour, [&](double x, double y) {
       bool in = false;
       for (const Ring& ring : o.rings)
         for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
           if ((ring[i][1] > y) != (ring[j][1] > y) &&
-              x < (ring[j][0] - ring[i][0]) * (y - ring[i][1]) / (ring[j][1] - ring[i][1]) + ring[i][0])
+              x < (ring[j][0] - ring[i][0]) * (y - ring[i][1]) / (ring[j][1] - ring[i][1]) +
+                      ring[i][0])
             in = !in;
       return in;
     });
@@ -111,16 +115,22 @@ PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec) {
   if (canvas.width > kMaxPixels || canvas.height > kMaxPixels)
     throw InputError("layout.png would be " + std::to_string(canvas.width) + " x " +
                      std::to_string(canvas.height) + " pixels, above " +
-                     std::to_string(kMaxPixels) + " a side; use a larger layout.scale or lower layout.dpi");
+                     std::to_string(kMaxPixels) +
+                     " a side; use a larger layout.scale or lower layout.dpi");
   const bool sheet = layout.kind == LayoutKind::perforation;
-  const Rgb background = sheet ? Rgb{201, 205, 210}
-                               : layout.joint > 0 ? layout.joint_colour : Rgb{255, 255, 255};
+  const Rgb background = sheet              ? Rgb{201, 205, 210}
+                         : layout.joint > 0 ? layout.joint_colour
+                                            : Rgb{255, 255, 255};
   canvas.rgb.assign(static_cast<size_t>(canvas.width) * canvas.height * 3, 0.f);
   for (size_t i = 0; i < canvas.rgb.size(); i += 3)
-    canvas.rgb[i] = background.r, canvas.rgb[i + 1] = background.g, canvas.rgb[i + 2] = background.b;
+    canvas.rgb[i] = background.r, canvas.rgb[i + 1] = background.g,
+    canvas.rgb[i + 2] = background.b;
   for (const Rect& o : layout.openings) canvas.fill(o, Rgb{223, 234, 242});
-  const bool from_right = layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
+  for (const auto& [rect, value] : layout.views) canvas.fill(rect, layout.legend[value].colour);
+  const bool from_right =
+      layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
   for (const Element& e : layout.elements) {
+    if (!layout.views.empty()) break;  // blocks are drawn as their views
     const LegendEntry& entry = layout.legend[e.value];
     if (!e.type.empty()) {  // park: each element in its own colour
       if (e.circle) canvas.fill(*e.circle, e.colour);

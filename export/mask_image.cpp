@@ -11,15 +11,14 @@ std::vector<Rect> read_mask_openings(const std::filesystem::path& image, double 
                                      double wall_height, const SourceLocation& where) {
   auto in = OIIO::ImageInput::open(image.string());
   if (!in)
-    throw InputError(where,
-                     "cannot read the mask image " + image.string() + ": " + OIIO::geterror() +
-                         " (any image OpenImageIO reads: PNG, TIFF, JPEG, ...)");
+    throw InputError(where, "cannot read the mask image " + image.string() + ": " +
+                                OIIO::geterror() +
+                                " (any image OpenImageIO reads: PNG, TIFF, JPEG, ...)");
   const OIIO::ImageSpec& spec = in->spec();
   const int w = spec.width, h = spec.height, channels = spec.nchannels;
   std::vector<float> pixels(static_cast<size_t>(w) * h * channels);
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-    throw InputError(where,
-                     "cannot read the mask image " + image.string() + ": " + in->geterror());
+    throw InputError(where, "cannot read the mask image " + image.string() + ": " + in->geterror());
   // Dark pixels (luminance < 1/2) are openings; rows of them are merged into rectangles.
   std::vector<int> grid(static_cast<size_t>(w) * h, -1);
   for (int y = 0; y < h; ++y)

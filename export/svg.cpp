@@ -17,11 +17,20 @@ std::string escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -37,11 +46,20 @@ std::string mm(double v) {
 
 const char* kind_name(LayoutKind kind) {
   switch (kind) {
-    case LayoutKind::tile: return "tile";
-    case LayoutKind::paving: return "paving";
-    case LayoutKind::facade: return "facade";
-    case LayoutKind::perforation: return "perforation";
-    case LayoutKind::park: return "park";
+    case LayoutKind::tile:
+      return "tile";
+    case LayoutKind::paving:
+      return "paving";
+    case LayoutKind::facade:
+      return "facade";
+    case LayoutKind::perforation:
+      return "perforation";
+    case LayoutKind::park:
+      return "park";
+    case LayoutKind::rhythm:
+      return "rhythm";
+    case LayoutKind::blocks:
+      return "blocks";
   }
   return "layout";
 }
@@ -54,16 +72,22 @@ struct Sheet {
 };
 
 std::string sheet_line(const Layout& layout, const LayoutSpec& spec) {
-  if (layout.kind != LayoutKind::perforation) return "origin " + std::string(
-      layout.origin == Corner::bottom_left ? "bottom-left" : layout.origin == Corner::bottom_right
-          ? "bottom-right" : layout.origin == Corner::top_left ? "top-left" : "top-right") + "; element IDs count rows and columns from it";
+  if (layout.kind != LayoutKind::perforation)
+    return "origin " +
+           std::string(layout.origin == Corner::bottom_left    ? "bottom-left"
+                       : layout.origin == Corner::bottom_right ? "bottom-right"
+                       : layout.origin == Corner::top_left     ? "top-left"
+                                                               : "top-right") +
+           "; element IDs count rows and columns from it";
   return fmt::format("sheet {} mm thick, {} openings, open area {:.2f} %, {} rule violations{}",
                      mm(spec.thickness), layout.elements.size(), 100 * layout.open_area,
-                     layout.violations.size(), spec.fix == HoleFix::drop && !layout.violations.empty() ? " (dropped)" : "");
+                     layout.violations.size(),
+                     spec.fix == HoleFix::drop && !layout.violations.empty() ? " (dropped)" : "");
 }
 
 std::string rect_path(const Sheet& s, const Rect& r) {
-  return fmt::format("M{} {}h{}v{}h{}z", mm(s.x(r.x)), mm(s.y(r.y, r.h)), mm(r.w), mm(r.h), mm(-r.w));
+  return fmt::format("M{} {}h{}v{}h{}z", mm(s.x(r.x)), mm(s.y(r.y, r.h)), mm(r.w), mm(r.h),
+                     mm(-r.w));
 }
 
 }  // namespace
@@ -112,10 +136,15 @@ void draw_openings(std::ostream& out, const Layout& layout, const Sheet& s) {
         entry.value, entry.value, escape(entry.label), entry.count, hex(entry.colour));
     for (const Element* e : by_value[entry.value]) {
       if (e->circle) {
-        out << fmt::format("<circle id=\"{}\" class=\"opening\" cx=\"{}\" cy=\"{}\" r=\"{}\" "
-                           "data-diameter=\"{}\"/>\n",
-                           e->id, mm(s.x(e->circle->cx)), mm(s.y(e->circle->cy)), mm(e->circle->d / 2),
-                           mm(e->circle->d));
+        out << fmt::format(
+            "<circle id=\"{}\" class=\"opening\" cx=\"{}\" cy=\"{}\" r=\"{}\" "
+            "data-diameter=\"{}\"/>\n",
+            e->id, mm(s.x(e->circle->cx)), mm(s.y(e->circle->cy)), mm(e->circle->d / 2),
+            mm(e->circle->d));
+      } else if (!e->shape.empty()) {
+        std::string d;
+        for (const Rect& r : e->shape) d += rect_path(s, r);
+        out << fmt::format("<path id=\"{}\" d=\"{}\" data-count=\"1\"/>\n", e->id, d);
       } else if (e->outline) {
         std::string d;
         for (const Ring& ring : e->outline->rings) {
@@ -123,12 +152,34 @@ void draw_openings(std::ostream& out, const Layout& layout, const Sheet& s) {
             d += fmt::format("{}{} {}", i ? "L" : "M", mm(s.x(ring[i][0])), mm(s.y(ring[i][1])));
           d += "z";
         }
-        out << fmt::format("<path id=\"{}\" class=\"opening merged\" fill-rule=\"evenodd\" d=\"{}\"/>\n",
-                           e->id, d);
+        out << fmt::format(
+            "<path id=\"{}\" class=\"opening merged\" fill-rule=\"evenodd\" d=\"{}\"/>\n", e->id,
+            d);
       }
     }
     out << "</g>\n";
   }
+}
+
+// Blocks: the plan and the elevation, one group per value, with their captions.
+void draw_views(std::ostream& out, const Layout& layout, const Sheet& s, double unit) {
+  std::vector<std::vector<const Rect*>> by_value(layout.legend.size());
+  for (const auto& [rect, value] : layout.views) by_value[value].push_back(&rect);
+  for (const LegendEntry& entry : layout.legend) {
+    out << fmt::format(
+        "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" data-count=\"{}\" "
+        "fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\">\n",
+        entry.value, entry.value, escape(entry.label), entry.value ? entry.count : 0,
+        hex(entry.colour), mm(unit * 0.03));
+    std::string d;
+    for (const Rect* r : by_value[entry.value]) d += rect_path(s, *r);
+    if (!d.empty()) out << "<path d=\"" << d << "\"/>\n";
+    out << "</g>\n";
+  }
+  for (const auto& [text, area] : layout.captions)
+    out << fmt::format(
+        "<text class=\"caption\" x=\"{}\" y=\"{}\" font-size=\"{}\" fill=\"#222\">{}</text>\n",
+        mm(s.x(area.x)), mm(s.y(area.top()) - unit * 0.4), mm(unit * 0.8), escape(text));
 }
 
 // Park: one group per element type, surfaces first (whole-cell ones merged), objects on top.
@@ -142,16 +193,18 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
   std::stable_sort(types.begin(), types.end(), [&](const std::string& a, const std::string& b) {
     return !by_type[a].front()->circle && by_type[a].front()->shape.size() == 1 &&
            by_type[a].front()->shape[0].w >= by_type[a].front()->nominal.w - 1e-6 &&
-           !(by_type[b].front()->shape.size() == 1 && by_type[b].front()->shape[0].w >= by_type[b].front()->nominal.w - 1e-6);
+           !(by_type[b].front()->shape.size() == 1 &&
+             by_type[b].front()->shape[0].w >= by_type[b].front()->nominal.w - 1e-6);
   });
   for (const std::string& type : types) {
     const auto& list = by_type[type];
     std::string id = type;
     for (char& c : id)
       if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
-    out << fmt::format("<g id=\"type-{}\" class=\"element-type\" data-type=\"{}\" data-count=\"{}\" "
-                       "fill=\"{}\">\n",
-                       id, escape(type), list.size(), hex(list.front()->colour));
+    out << fmt::format(
+        "<g id=\"type-{}\" class=\"element-type\" data-type=\"{}\" data-count=\"{}\" "
+        "fill=\"{}\">\n",
+        id, escape(type), list.size(), hex(list.front()->colour));
     // Whole-cell surfaces of this type merge into rectangles; the rest are drawn one by one.
     std::vector<int> grid(static_cast<size_t>(layout.rows * layout.columns), -1);
     std::vector<const Element*> at(grid.size(), nullptr);
@@ -166,28 +219,36 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
         continue;
       }
       if (e->circle) {
-        out << fmt::format("<circle id=\"{}\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill-opacity=\"0.85\" "
-                           "stroke=\"#1d3b26\" stroke-width=\"{}\"/>\n",
-                           e->id, mm(s.x(e->circle->cx)), mm(s.y(e->circle->cy)), mm(e->circle->d / 2),
-                           mm(unit * 0.04));
+        out << fmt::format(
+            "<circle id=\"{}\" cx=\"{}\" cy=\"{}\" r=\"{}\" fill-opacity=\"0.85\" "
+            "stroke=\"#1d3b26\" stroke-width=\"{}\"/>\n",
+            e->id, mm(s.x(e->circle->cx)), mm(s.y(e->circle->cy)), mm(e->circle->d / 2),
+            mm(unit * 0.04));
         continue;
       }
       std::string d;
       for (const Rect& r : e->shape) d += rect_path(s, r);
-      out << fmt::format("<path id=\"{}\" d=\"{}\"{}/>\n", e->id, d,
-                         e->shape.size() == 1 && e->shape[0].w < e->nominal.w - 1e-6 && e->shape[0].h < e->nominal.h - 1e-6
-                             ? fmt::format(" stroke=\"#3a2a1a\" stroke-width=\"{}\"", mm(unit * 0.04))
-                             : "");
+      out << fmt::format(
+          "<path id=\"{}\" d=\"{}\"{}/>\n", e->id, d,
+          e->shape.size() == 1 && e->shape[0].w < e->nominal.w - 1e-6 &&
+                  e->shape[0].h < e->nominal.h - 1e-6
+              ? fmt::format(" stroke=\"#3a2a1a\" stroke-width=\"{}\"", mm(unit * 0.04))
+              : "");
     }
     for (const GridRect& g : merge_runs(grid, layout.rows, layout.columns)) {
       const Element& a = *at[static_cast<size_t>(g.row0 * layout.columns + g.column0)];
       const Element& b = *at[static_cast<size_t>(g.row1 * layout.columns + g.column1)];
-      const double x0 = std::min(a.nominal.x, b.nominal.x), x1 = std::max(a.nominal.right(), b.nominal.right());
-      const double y0 = std::min(a.nominal.y, b.nominal.y), y1 = std::max(a.nominal.top(), b.nominal.top());
-      const uint64_t count = static_cast<uint64_t>((g.row1 - g.row0 + 1) * (g.column1 - g.column0 + 1));
-      out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" data-elements=\"{}{}\" data-count=\"{}\"/>\n",
-                         mm(s.x(x0)), mm(s.y(y0, y1 - y0)), mm(x1 - x0), mm(y1 - y0), a.id,
-                         count > 1 ? ":" + b.id : std::string(), count);
+      const double x0 = std::min(a.nominal.x, b.nominal.x),
+                   x1 = std::max(a.nominal.right(), b.nominal.right());
+      const double y0 = std::min(a.nominal.y, b.nominal.y),
+                   y1 = std::max(a.nominal.top(), b.nominal.top());
+      const uint64_t count =
+          static_cast<uint64_t>((g.row1 - g.row0 + 1) * (g.column1 - g.column0 + 1));
+      out << fmt::format(
+          "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" data-elements=\"{}{}\" "
+          "data-count=\"{}\"/>\n",
+          mm(s.x(x0)), mm(s.y(y0, y1 - y0)), mm(x1 - x0), mm(y1 - y0), a.id,
+          count > 1 ? ":" + b.id : std::string(), count);
     }
     out << "</g>\n";
   }
@@ -222,9 +283,12 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
       const GridRect& g = merged[next];
       const Element& a = *at[static_cast<size_t>(g.row0 * layout.columns + g.column0)];
       const Element& b = *at[static_cast<size_t>(g.row1 * layout.columns + g.column1)];
-      const double x0 = std::min(a.nominal.x, b.nominal.x), x1 = std::max(a.nominal.right(), b.nominal.right());
-      const double y0 = std::min(a.nominal.y, b.nominal.y), y1 = std::max(a.nominal.top(), b.nominal.top());
-      const uint64_t count = static_cast<uint64_t>((g.row1 - g.row0 + 1) * (g.column1 - g.column0 + 1));
+      const double x0 = std::min(a.nominal.x, b.nominal.x),
+                   x1 = std::max(a.nominal.right(), b.nominal.right());
+      const double y0 = std::min(a.nominal.y, b.nominal.y),
+                   y1 = std::max(a.nominal.top(), b.nominal.top());
+      const uint64_t count =
+          static_cast<uint64_t>((g.row1 - g.row0 + 1) * (g.column1 - g.column0 + 1));
       out << fmt::format(
           "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" data-elements=\"{}{}\" "
           "data-count=\"{}\"/>\n",
@@ -255,9 +319,10 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
                          hex(layout.joint_colour), d);
   }
   if (!layout.openings.empty()) {
-    out << fmt::format("<g id=\"openings\" class=\"opening\" fill=\"#dfeaf2\" stroke=\"#44515c\" "
-                       "stroke-width=\"{}\">\n",
-                       mm(unit * 0.08));
+    out << fmt::format(
+        "<g id=\"openings\" class=\"opening\" fill=\"#dfeaf2\" stroke=\"#44515c\" "
+        "stroke-width=\"{}\">\n",
+        mm(unit * 0.08));
     for (size_t i = 0; i < layout.openings.size(); ++i) {
       const Rect& o = layout.openings[i];
       out << fmt::format("<rect id=\"opening-{}\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n",
@@ -280,31 +345,36 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Desi
       const int64_t step = static_cast<int64_t>(l.side_in_cells(k));
       std::string d;
       const Box& v = layout.view;
-      for (int64_t x = (v.origin[0] + step - 1) / step * step; x <= v.origin[0] + v.size[0]; x += step) {
+      for (int64_t x = (v.origin[0] + step - 1) / step * step; x <= v.origin[0] + v.size[0];
+           x += step) {
         const double px = layout.cell_edge_x(x);
         d += fmt::format("M{} {}V{}", mm(s.x(px)), mm(s.y(0)), mm(s.y(H)));
       }
-      for (int64_t y = (v.origin[1] + step - 1) / step * step; y <= v.origin[1] + v.size[1]; y += step) {
+      for (int64_t y = (v.origin[1] + step - 1) / step * step; y <= v.origin[1] + v.size[1];
+           y += step) {
         const double py = layout.cell_edge_y(y);
         d += fmt::format("M{} {}H{}", mm(s.x(0)), mm(s.y(py)), mm(s.x(W)));
       }
-      out << fmt::format("<path class=\"stage-{}\" data-stage=\"{}\" stroke-width=\"{}\" "
-                         "stroke-opacity=\"0.8\" d=\"{}\"/>\n",
-                         k, k, mm(unit * 0.25 / (k + 1)), d);
+      out << fmt::format(
+          "<path class=\"stage-{}\" data-stage=\"{}\" stroke-width=\"{}\" "
+          "stroke-opacity=\"0.8\" d=\"{}\"/>\n",
+          k, k, mm(unit * 0.25 / (k + 1)), d);
     }
     out << "</g>\n";
   }
   if (spec.highlight) {
     const Box& w = *spec.highlight;
-    const double x0 = layout.cell_edge_x(w.origin[0]), x1 = layout.cell_edge_x(w.origin[0] + w.size[0]);
-    const double y0 = layout.cell_edge_y(w.origin[1]), y1 = layout.cell_edge_y(w.origin[1] + w.size[1]);
+    const double x0 = layout.cell_edge_x(w.origin[0]),
+                 x1 = layout.cell_edge_x(w.origin[0] + w.size[0]);
+    const double y0 = layout.cell_edge_y(w.origin[1]),
+                 y1 = layout.cell_edge_y(w.origin[1] + w.size[1]);
     out << fmt::format(
         "<rect id=\"window\" class=\"overlay\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" "
         "fill=\"none\" stroke=\"#1864ab\" stroke-width=\"{}\" stroke-dasharray=\"{} {}\" "
         "data-cells=\"{},{},{},{}\"/>\n",
-        mm(s.x(std::min(x0, x1))), mm(s.y(std::min(y0, y1), std::fabs(y1 - y0))), mm(std::fabs(x1 - x0)),
-        mm(std::fabs(y1 - y0)), mm(unit * 0.3), mm(unit), mm(unit * 0.5), w.origin[0], w.origin[1],
-        w.size[0], w.size[1]);
+        mm(s.x(std::min(x0, x1))), mm(s.y(std::min(y0, y1), std::fabs(y1 - y0))),
+        mm(std::fabs(x1 - x0)), mm(std::fabs(y1 - y0)), mm(unit * 0.3), mm(unit), mm(unit * 0.5),
+        w.origin[0], w.origin[1], w.size[0], w.size[1]);
   }
 
   // Legend and title block, under the drawing.
@@ -323,9 +393,10 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Desi
         "{} {}: {} {}{}</text></g>\n",
         e.value, mm(margin), mm(y), mm(unit * 2), mm(unit * 1.2), fill, mm(unit * 0.05),
         mm(margin + unit * 2.6), mm(y + unit), e.value, escape(e.label), e.count,
-        layout.kind == LayoutKind::perforation || layout.kind == LayoutKind::park
-            ? "cell"
-            : escape(layout.element_type),
+        layout.kind == LayoutKind::perforation || layout.kind == LayoutKind::park ? "cell"
+        : layout.kind == LayoutKind::rhythm                                       ? "bay"
+        : layout.kind == LayoutKind::blocks                                       ? "voxel"
+                                            : escape(layout.element_type),
         e.count == 1 ? "" : "s");
   }
   out << "</g>\n";
@@ -344,8 +415,16 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Desi
                   design.lattice.dimension, design.lattice.stages, to_string(design.lattice.mode)),
       "probabilities: " + probabilities,
       layout.kind == LayoutKind::perforation
-          ? fmt::format("{} x {} mm sheet: {} x {} cells of {} x {} mm", mm(W), mm(H), layout.columns,
-                        layout.rows, mm(layout.module_w), mm(layout.module_h))
+          ? fmt::format("{} x {} mm sheet: {} x {} cells of {} x {} mm", mm(W), mm(H),
+                        layout.columns, layout.rows, mm(layout.module_w), mm(layout.module_h))
+      : layout.kind == LayoutKind::rhythm
+          ? fmt::format("{} x {} mm: {} bays of {} mm, {} fins", mm(W), mm(H), layout.columns,
+                        mm(layout.module_w), layout.elements.size())
+      : layout.kind == LayoutKind::blocks
+          ? fmt::format("{} x {} x {} voxels of {} x {} x {} mm (w x d x h), {} blocks",
+                        layout.view.size[0], layout.view.size[1], layout.view.size[2],
+                        mm(layout.module_w), mm(layout.module_h), mm(spec.voxel_h),
+                        layout.elements.size())
       : layout.kind == LayoutKind::park
           ? fmt::format("{} x {} mm: {} x {} cells of {} x {} mm, {} elements", mm(W), mm(H),
                         layout.columns, layout.rows, mm(layout.module_w), mm(layout.module_h),
@@ -363,13 +442,15 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Desi
   const double box_w = W + margin - (tx - unit * 0.6);
   const double font = std::min(unit * 0.8, box_w / (0.62 * static_cast<double>(longest) + 1));
   out << fmt::format("<g id=\"title-block\" font-size=\"{}\" fill=\"#222\">\n", mm(font));
-  out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
-                     "stroke=\"#222\" stroke-width=\"{}\"/>\n",
-                     mm(tx - unit * 0.6), mm(top - unit * 0.2), mm(box_w),
-                     mm(font * 1.5 * all.size() + unit * 0.8), mm(unit * 0.05));
+  out << fmt::format(
+      "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
+      "stroke=\"#222\" stroke-width=\"{}\"/>\n",
+      mm(tx - unit * 0.6), mm(top - unit * 0.2), mm(box_w),
+      mm(font * 1.5 * all.size() + unit * 0.8), mm(unit * 0.05));
   for (size_t i = 0; i < all.size(); ++i)
-    out << fmt::format("<text{} x=\"{}\" y=\"{}\"{}>{}</text>\n", i >= lines.size() ? " class=\"note\"" : "",
-                       mm(tx), mm(top + unit * 0.4 + font * (1 + 1.5 * i)),
+    out << fmt::format("<text{} x=\"{}\" y=\"{}\"{}>{}</text>\n",
+                       i >= lines.size() ? " class=\"note\"" : "", mm(tx),
+                       mm(top + unit * 0.4 + font * (1 + 1.5 * i)),
                        i == 0 ? " font-weight=\"bold\"" : "", escape(all[i]));
   out << "</g>\n</svg>\n";
 }
@@ -402,7 +483,8 @@ void write_layout_svg(std::ostream& out, const Layout& layout, const Design& des
   if (striped) {
     out << "<defs>\n";
     const double pw = layout.module_w + layout.joint, ph = layout.module_h + layout.joint;
-    const bool from_right = layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
+    const bool from_right =
+        layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
     const bool from_top = layout.origin == Corner::top_left || layout.origin == Corner::top_right;
     const double ox = s.x(from_right ? W + layout.joint : 0);
     const double oy = s.y(from_top ? H + layout.joint : 0);
@@ -424,15 +506,19 @@ void write_layout_svg(std::ostream& out, const Layout& layout, const Design& des
   out << fmt::format("<g id=\"layout\" class=\"{}\" data-element-type=\"{}\">\n",
                      kind_name(layout.kind), escape(layout.element_type));
   const bool sheet = layout.kind == LayoutKind::perforation;
-  out << fmt::format("<rect id=\"background\" class=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" "
-                     "height=\"{}\" fill=\"{}\"{}/>\n",
-                     sheet ? "sheet" : "joint", mm(s.x(0)), mm(s.y(0, H)), mm(W), mm(H),
-                     sheet ? std::string("#c9cdd2")
-                           : layout.joint > 0 ? hex(layout.joint_colour) : std::string("#ffffff"),
-                     sheet ? fmt::format(" stroke=\"#222\" stroke-width=\"{}\"", mm(unit * 0.05)) : "");
+  out << fmt::format(
+      "<rect id=\"background\" class=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" "
+      "height=\"{}\" fill=\"{}\"{}/>\n",
+      sheet ? "sheet" : "joint", mm(s.x(0)), mm(s.y(0, H)), mm(W), mm(H),
+      sheet              ? std::string("#c9cdd2")
+      : layout.joint > 0 ? hex(layout.joint_colour)
+                         : std::string("#ffffff"),
+      sheet ? fmt::format(" stroke=\"#222\" stroke-width=\"{}\"", mm(unit * 0.05)) : "");
 
-  if (layout.kind == LayoutKind::perforation) {
+  if (layout.kind == LayoutKind::perforation || layout.kind == LayoutKind::rhythm) {
     draw_openings(out, layout, s);
+  } else if (layout.kind == LayoutKind::blocks) {
+    draw_views(out, layout, s, unit);
   } else if (layout.kind == LayoutKind::park) {
     draw_park(out, layout, s, unit);
   } else {

@@ -55,13 +55,15 @@ SvgSummary parse_svg(const std::string& text) {
         std::map<std::string, std::string> a;
         for (int i = 0; attrs[i]; i += 2) a[attrs[i]] = attrs[i + 1];
         const std::string tag = name;
-        if (tag == "svg") st->s->width = a["width"], st->s->height = a["height"], st->s->view_box = a["viewBox"];
+        if (tag == "svg")
+          st->s->width = a["width"], st->s->height = a["height"], st->s->view_box = a["viewBox"];
         if (a.count("id")) {
           EXPECT_TRUE(st->s->ids.insert(a["id"]).second) << "duplicate id " << a["id"];
         }
         if (a.count("class")) st->s->classes.insert(a["class"]);
         if (tag == "pattern") ++st->s->patterns;
-        if (tag == "rect" && st->depth == 4 && st->s->patterns > 0 && st->value < 0) ++st->s->pattern_parts;
+        if (tag == "rect" && st->depth == 4 && st->s->patterns > 0 && st->value < 0)
+          ++st->s->pattern_parts;
         if (tag == "g" && a["class"] == "value") {
           st->value = std::stoi(a["data-value"]);
           st->value_depth = st->depth;
@@ -110,7 +112,8 @@ TEST(Geometry, SubtractKeepsExactlyWhatNoHoleCovers) {
       for (const Rect& h : holes) EXPECT_NEAR(intersection(p, h), 0, 1e-9);
     }
     for (size_t i = 0; i < pieces.size(); ++i)
-      for (size_t j = i + 1; j < pieces.size(); ++j) EXPECT_NEAR(intersection(pieces[i], pieces[j]), 0, 1e-9);
+      for (size_t j = i + 1; j < pieces.size(); ++j)
+        EXPECT_NEAR(intersection(pieces[i], pieces[j]), 0, 1e-9);
     for (const Rect& h : holes) covered += intersection(a, h);
     EXPECT_NEAR(kept + covered, a.area(), 1e-6);
   }
@@ -149,7 +152,8 @@ TEST(Layout, CountsPerValueMatchTheOverlay) {
 
 TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
   const Design d = design(4, 2, {{"3/4", "1/2", "2/3"}});
-  for (Corner corner : {Corner::bottom_left, Corner::bottom_right, Corner::top_left, Corner::top_right}) {
+  for (Corner corner :
+       {Corner::bottom_left, Corner::bottom_right, Corner::top_left, Corner::top_right}) {
     for (LayoutKind kind : {LayoutKind::paving, LayoutKind::facade}) {
       LayoutSpec spec;
       spec.kind = kind;
@@ -157,7 +161,9 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
       spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
       spec.size = std::array<double, 2>{18000, 15600};
       if (kind == LayoutKind::facade)
-        spec.openings = {{1200, 0, 7200, 2700}, {1500, 3900, 1200, 1500}, {16200, 12900, 1200, 1500},
+        spec.openings = {{1200, 0, 7200, 2700},
+                         {1500, 3900, 1200, 1500},
+                         {16200, 12900, 1200, 1500},
                          {17500, 14000, 500, 1600}};
       Design sized = d;
       const auto cells = elements_to_cover(spec);
@@ -247,7 +253,8 @@ TEST(Layout, PngColoursEachElementAndRecordsItsScale) {
   const PreviewImage png = render_layout(layout, spec);
   EXPECT_EQ(png.width, static_cast<int>(std::ceil(layout.width)));
   for (const Element& e : layout.elements) {
-    const size_t px = static_cast<size_t>(e.nominal.x + 150), py = static_cast<size_t>(layout.height - e.nominal.y - 150);
+    const size_t px = static_cast<size_t>(e.nominal.x + 150),
+                 py = static_cast<size_t>(layout.height - e.nominal.y - 150);
     const uint8_t* p = &png.rgb[(py * png.width + px) * 3];
     EXPECT_EQ((Rgb{p[0], p[1], p[2]}), layout.legend[e.value].colour) << e.id;
   }
@@ -323,7 +330,9 @@ std::vector<Circle> circles_of(const Element& e, const LayoutSpec& spec) {
   std::vector<Circle> parts;
   const double cx = e.nominal.x + e.nominal.w / 2, cy = e.nominal.y + e.nominal.h / 2;
   for (size_t c = 0; c < spec.holes.size(); ++c)
-    if (e.value >> c & 1) parts.push_back({cx + spec.holes[c].offset_x, cy + spec.holes[c].offset_y, spec.holes[c].diameter});
+    if (e.value >> c & 1)
+      parts.push_back(
+          {cx + spec.holes[c].offset_x, cy + spec.holes[c].offset_y, spec.holes[c].diameter});
   return parts;
 }
 
@@ -343,7 +352,8 @@ TEST(Perforation, DroppingLeavesNoHoleTooCloseOrTooNearTheEdge) {
           EXPECT_LE(c.cy + c.d / 2, 640 - 5 + 1e-9);
         }
         for (size_t j = i + 1; j < holes.size(); ++j)  // across cells too: every pair
-          EXPECT_GE(bridge(a, circles_of(holes[j], s.spec)), 8 - 1e-9) << holes[i].id << " " << holes[j].id;
+          EXPECT_GE(bridge(a, circles_of(holes[j], s.spec)), 8 - 1e-9)
+              << holes[i].id << " " << holes[j].id;
       }
       // Merged openings (mix) grow past their cell's spacing: an 8 mm bridge cannot hold
       // everywhere. Kept unions stay within 15 mm of the centre, 10 mm from any neighbour.
@@ -391,7 +401,8 @@ TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
     double open = 0;
     for (size_t p = 0; p < png.rgb.size(); p += 3) {
       // Antialiased edges count by how far they are from the metal towards the hole colour.
-      const double d = std::abs(png.rgb[p] - metal.r) + std::abs(png.rgb[p + 1] - metal.g) + std::abs(png.rgb[p + 2] - metal.b);
+      const double d = std::abs(png.rgb[p] - metal.r) + std::abs(png.rgb[p + 1] - metal.g) +
+                       std::abs(png.rgb[p + 2] - metal.b);
       open += d > 0 ? 1 : 0;
     }
     const double pixels = static_cast<double>(png.width) * png.height;
@@ -428,32 +439,95 @@ TEST(Park, ElementsShareCellsWithoutOverlapAndSurfacesCoverTheArea) {
     EXPECT_NEAR(surfaces, layout.width * layout.height, 1e-3);  // surfaces tile the whole park
     const auto counts = value_counts(f);
     uint64_t trees = 0, benches = 0;
-    for (uint32_t v = 0; v < 8; ++v) trees += (v & 1) ? counts[v] : 0, benches += (v & 2) ? counts[v] : 0;
+    for (uint32_t v = 0; v < 8; ++v)
+      trees += (v & 1) ? counts[v] : 0, benches += (v & 2) ? counts[v] : 0;
     EXPECT_EQ(per_type["tree"], trees);
     EXPECT_EQ(per_type["bench"], benches);
     for (const auto& [cell, list] : cells) {
       std::vector<Rect> boxes;  // objects' footprints, to check clearances
       for (const Element* e : list) {
         if (e->type != "tree" && e->type != "bench") continue;
-        const Rect box = e->circle ? Rect{e->circle->cx - e->circle->d / 2, e->circle->cy - e->circle->d / 2,
-                                          e->circle->d, e->circle->d}
-                                   : e->shape[0];
+        const Rect box = e->circle
+                             ? Rect{e->circle->cx - e->circle->d / 2,
+                                    e->circle->cy - e->circle->d / 2, e->circle->d, e->circle->d}
+                             : e->shape[0];
         const Rect& n = e->nominal;  // at least the clearance inside the cell
         EXPECT_GE(box.x - n.x, 300 - 1e-9);
         EXPECT_GE(n.right() - box.right(), 300 - 1e-9);
         EXPECT_GE(box.y - n.y, 300 - 1e-9);
         EXPECT_GE(n.top() - box.top(), 300 - 1e-9);
         for (const Rect& other : boxes) {  // and the clearance apart
-          const double gap = std::max({other.x - box.right(), box.x - other.right(), other.y - box.top(),
-                                       box.y - other.top()});
+          const double gap = std::max({other.x - box.right(), box.x - other.right(),
+                                       other.y - box.top(), box.y - other.top()});
           EXPECT_GE(gap, 300 - 1e-9) << e->id;
         }
         boxes.push_back(box);
       }
     }
     SvgSummary svg = parse_svg(svg_of(layout, d, spec));
-    EXPECT_TRUE(svg.ids.count("type-tree") && svg.ids.count("type-bench") && svg.ids.count("type-grey-paving"));
+    EXPECT_TRUE(svg.ids.count("type-tree") && svg.ids.count("type-bench") &&
+                svg.ids.count("type-grey-paving"));
   }
+}
+
+}  // namespace curdle
+
+#include "layout/rhythm.h"
+
+namespace curdle {
+
+TEST(Rhythm, FinWidthsFollowTheValuesCentredInTheirBays) {
+  const Design d = test::design(4, 1, {{"3/4", "3/4", "2/3"}, {"1/2", "3/4", "3/4"}});
+  LayoutSpec spec;
+  spec.kind = LayoutKind::rhythm;
+  spec.module_w = 600, spec.module_h = 4200;
+  spec.widths = {0, 100, 180, 300};
+  const CurdField f = curdle(d, 64, d.field);
+  const Layout layout = make_layout(d, f, d.field, spec);
+  const auto counts = value_counts(f);
+  EXPECT_EQ(layout.elements.size(), 64 - counts[0]);
+  for (uint32_t v = 0; v < 4; ++v) EXPECT_EQ(layout.legend[v].count, counts[v]);
+  for (const Element& e : layout.elements) {
+    EXPECT_EQ(e.value, f.value_at({e.cell_x, 0, 0}));
+    EXPECT_NEAR(e.shape[0].w, spec.widths[e.value], 1e-9);
+    EXPECT_NEAR(e.shape[0].x + e.shape[0].w / 2, e.cell_x * 600 + 300, 1e-9);
+    EXPECT_NEAR(e.shape[0].h, 4200, 1e-9);
+  }
+  SvgSummary svg = parse_svg(svg_of(layout, d, spec));
+  for (uint32_t v = 0; v < 4; ++v)
+    EXPECT_EQ(svg.counts[v], v ? counts[v] : 0u) << "fins of value " << v;
+}
+
+TEST(Blocks, PlanAndElevationShowTheFirstBlockSeen) {
+  const Design d = test::design(2, 3, {{"7/8", "3/4", "3/4"}, {"3/4", "1/2", "3/4"}});
+  LayoutSpec spec;
+  spec.kind = LayoutKind::blocks;
+  spec.module_w = spec.module_h = 6000, spec.voxel_h = 3000;
+  const CurdField f = curdle(d, 3, d.field);
+  const Layout layout = make_layout(d, f, d.field, spec);
+  const auto counts = value_counts(f);
+  EXPECT_EQ(layout.elements.size(), 512 - counts[0]);
+  std::map<std::pair<double, double>, uint32_t> shown;
+  for (const auto& [rect, value] : layout.views) shown[{rect.x, rect.y}] = value;
+  for (int64_t x = 0; x < 8; ++x) {
+    for (int64_t y = 0; y < 8; ++y) {  // plan: the top-most block
+      uint32_t top = 0;
+      for (int64_t z = 0; z < 8; ++z)
+        if (const uint32_t v = f.value_at({x, y, z})) top = v;
+      const auto it = shown.find({x * 6000.0, y * 6000.0});
+      EXPECT_EQ(it == shown.end() ? 0u : it->second, top) << x << "," << y;
+    }
+    for (int64_t z = 0; z < 8; ++z) {  // elevation: the first block from the front
+      uint32_t first = 0;
+      for (int64_t y = 7; y >= 0; --y)
+        if (const uint32_t v = f.value_at({x, y, z})) first = v;
+      const auto it = shown.find({48000 + 12000 + x * 6000.0, z * 3000.0});
+      EXPECT_EQ(it == shown.end() ? 0u : it->second, first) << x << "," << z;
+    }
+  }
+  SvgSummary svg = parse_svg(svg_of(layout, d, spec));
+  for (uint32_t v = 1; v < 4; ++v)
+    EXPECT_EQ(svg.counts[v], 0u);  // views are drawings, not elements
 }
 
 }  // namespace curdle

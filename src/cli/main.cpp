@@ -58,13 +58,15 @@ int generate(const CommonOptions& common, const std::string& out_dir,
   if (!has_layout) {
     for (const char* name : {"layout.svg", "layout.png"})
       if (outputs.erase(name) && !outputs_named.empty())
-        throw InputError(SourceLocation{common.recipe_path, 0, 0, "layout"},
-                         std::string(name) + " needs a [layout] section in the recipe (see patterns/README.md)");
+        throw InputError(
+            SourceLocation{common.recipe_path, 0, 0, "layout"},
+            std::string(name) + " needs a [layout] section in the recipe (see patterns/README.md)");
   } else if (!s.recipe.layout->mask.empty()) {
     LayoutSpec& spec = *s.recipe.layout;
     const fs::path mask = fs::path(common.recipe_path).parent_path() / spec.mask;
-    for (const Rect& r : read_mask_openings(mask, (*spec.size)[0], (*spec.size)[1],
-                                             SourceLocation{common.recipe_path, 0, 0, "layout.mask"}))
+    for (const Rect& r :
+         read_mask_openings(mask, (*spec.size)[0], (*spec.size)[1],
+                            SourceLocation{common.recipe_path, 0, 0, "layout.mask"}))
       spec.openings.push_back(r);
   }
   const bool csv_named = outputs_named.size() && outputs.count("cells.csv");
@@ -129,7 +131,8 @@ int generate(const CommonOptions& common, const std::string& out_dir,
     uint64_t cut = 0;
     for (const Element& e : layout.elements) cut += e.cut;
     std::printf(
-        "layout: %zu %ss (%llu cut, %llu over openings), %.0f x %.0f mm; layout.png at 1:%g, %g dpi\n",
+        "layout: %zu %ss (%llu cut, %llu over openings), %.0f x %.0f mm; layout.png at 1:%g, %g "
+        "dpi\n",
         layout.elements.size(), layout.element_type.c_str(), static_cast<unsigned long long>(cut),
         static_cast<unsigned long long>(layout.omitted), layout.width, layout.height,
         drawing_scale(layout, spec), spec.dpi);
@@ -198,8 +201,10 @@ int run(int argc, char** argv) {
 
   if (argc >= 2 && argv[1][0] != '-' && std::string(argv[1]) != "generate" &&
       std::string(argv[1]) != "report") {
-    std::fprintf(stderr, "curdle: error: unknown command '%s'; the commands are generate and report "
-                 "(curdle --help)\n", argv[1]);
+    std::fprintf(stderr,
+                 "curdle: error: unknown command '%s'; the commands are generate and report "
+                 "(curdle --help)\n",
+                 argv[1]);
     return 2;
   }
   try {

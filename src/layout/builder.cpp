@@ -9,6 +9,7 @@
 #include "curdle/palette.h"
 #include "layout/park.h"
 #include "layout/perforation.h"
+#include "layout/rhythm.h"
 
 namespace curdle {
 namespace {
@@ -17,22 +18,40 @@ constexpr double kEps = 1e-6;
 
 const char* prefix(LayoutKind kind) {
   switch (kind) {
-    case LayoutKind::tile: return "T";
-    case LayoutKind::paving: return "P";
-    case LayoutKind::facade: return "F";
-    case LayoutKind::perforation: return "C";  // cells; their openings become "H-..."
-    case LayoutKind::park: return "C";         // cells; their elements become "K-..."
+    case LayoutKind::tile:
+      return "T";
+    case LayoutKind::paving:
+      return "P";
+    case LayoutKind::facade:
+      return "F";
+    case LayoutKind::perforation:
+      return "C";  // cells; their openings become "H-..."
+    case LayoutKind::park:
+      return "C";  // cells; their elements become "K-..."
+    case LayoutKind::rhythm:
+      return "B";  // bays; their elements become "R-..."
+    case LayoutKind::blocks:
+      return "V";
   }
   return "E";
 }
 
 const char* element_type(LayoutKind kind) {
   switch (kind) {
-    case LayoutKind::tile: return "tile";
-    case LayoutKind::paving: return "paving tile";
-    case LayoutKind::facade: return "panel";
-    case LayoutKind::perforation: return "cell";
-    case LayoutKind::park: return "cell";
+    case LayoutKind::tile:
+      return "tile";
+    case LayoutKind::paving:
+      return "paving tile";
+    case LayoutKind::facade:
+      return "panel";
+    case LayoutKind::perforation:
+      return "cell";
+    case LayoutKind::park:
+      return "cell";
+    case LayoutKind::rhythm:
+      return "bay";
+    case LayoutKind::blocks:
+      return "block";
   }
   return "element";
 }
@@ -61,8 +80,10 @@ std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec) {
 
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec) {
-  if (design.lattice.dimension != 2)
-    throw InputError("a tile, paving or façade layout needs a 2-D lattice, not " +
+  if (spec.kind == LayoutKind::blocks) return stack_blocks(design, field, view, spec);
+  const int dimension = spec.kind == LayoutKind::rhythm ? 1 : 2;
+  if (design.lattice.dimension != dimension)
+    throw InputError("this layout needs a " + std::to_string(dimension) + "-D lattice, not " +
                      std::to_string(design.lattice.dimension) + "-D");
   Layout layout;
   layout.kind = spec.kind;
@@ -107,9 +128,9 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
       e.cell_x = view.origin[0] + i;
       e.cell_y = view.origin[1] + j;
       e.value = values[static_cast<size_t>(j * layout.columns + i)];
-      e.nominal = Rect{from_right ? layout.width - along - spec.module_w : along,
-                       from_top ? layout.height - up - spec.module_h : up, spec.module_w,
-                       spec.module_h};
+      e.nominal =
+          Rect{from_right ? layout.width - along - spec.module_w : along,
+               from_top ? layout.height - up - spec.module_h : up, spec.module_w, spec.module_h};
       const Rect laid = clip(e.nominal, layout.width, layout.height);
       e.shape = subtract(laid, layout.openings);
       if (e.shape.empty() || e.area() < kEps) {
@@ -132,8 +153,8 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
     LegendEntry& entry = layout.legend[v];
     entry.value = v;
     entry.label = value_label(v, design.curds);
-    entry.colour = v < spec.value_colours.size() && spec.value_colours[v] ? *spec.value_colours[v]
-                                                                          : blend[v];
+    entry.colour =
+        v < spec.value_colours.size() && spec.value_colours[v] ? *spec.value_colours[v] : blend[v];
     if (spec.combine == Combine::keep) {
       for (size_t c = 0; c < design.curds.size(); ++c)
         if (v >> c & 1) entry.parts.push_back(curd_colour(design.curds, c));
@@ -143,13 +164,15 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
   for (const Element& e : layout.elements) ++layout.legend[e.value].count;
   if (spec.kind == LayoutKind::perforation) perforate(layout, design, spec);
   if (spec.kind == LayoutKind::park) plant(layout, design, spec);
+  if (spec.kind == LayoutKind::rhythm) set_rhythm(layout, spec);
   return layout;
 }
 
 namespace {
 
 // The edge before module `index` counted along an axis from the low side, in mm.
-double edge(int64_t index, int64_t count, double module, double joint, double extent, bool from_high) {
+double edge(int64_t index, int64_t count, double module, double joint, double extent,
+            bool from_high) {
   const double pitch = module + joint;
   if (index <= 0) return from_high ? extent - (count * pitch - joint) : 0.0;
   if (index >= count) return extent;
@@ -172,19 +195,20 @@ double Layout::cell_edge_y(int64_t cell_y) const {
 
 double joint_area(const Layout& layout) {
   if (layout.joint <= 0) return 0;
-  const bool from_right = layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
+  const bool from_right =
+      layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
   const bool from_top = layout.origin == Corner::top_left || layout.origin == Corner::top_right;
   // Joints follow each module, counted from the origin corner.
   std::vector<Rect> vertical, horizontal;
   for (int64_t c = 0; c + 1 < layout.columns; ++c) {
     const double along = c * (layout.module_w + layout.joint) + layout.module_w;
-    vertical.push_back(Rect{from_right ? layout.width - along - layout.joint : along, 0, layout.joint,
-                            layout.height});
+    vertical.push_back(Rect{from_right ? layout.width - along - layout.joint : along, 0,
+                            layout.joint, layout.height});
   }
   for (int64_t r = 0; r + 1 < layout.rows; ++r) {
     const double up = r * (layout.module_h + layout.joint) + layout.module_h;
-    horizontal.push_back(Rect{0, from_top ? layout.height - up - layout.joint : up, layout.width,
-                              layout.joint});
+    horizontal.push_back(
+        Rect{0, from_top ? layout.height - up - layout.joint : up, layout.width, layout.joint});
   }
   auto laid = [&](const Rect& r) {
     double area = 0;

@@ -27,13 +27,14 @@ bool overlaps(const Rect& a, const Rect& b);
 // a minus the union of `holes`, as disjoint rectangles (all edges are axis-aligned).
 std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes);
 
-enum class LayoutKind { tile, paving, facade, perforation, park };
+enum class LayoutKind { tile, paving, facade, perforation, park, rhythm, blocks };
 
 struct Circle {
   double cx = 0, cy = 0, d = 0;
   double area() const { return 3.14159265358979323846 * d * d / 4; }
 };
-using Ring = std::vector<std::array<double, 2>>;  // closed implicitly; outer rings counter-clockwise
+using Ring =
+    std::vector<std::array<double, 2>>;  // closed implicitly; outer rings counter-clockwise
 
 // An opening's outline: outer rings and the islands inside them, with its exact-arithmetic area.
 struct Outline {
@@ -71,15 +72,15 @@ enum class Corner { bottom_left, bottom_right, top_left, top_right };
 struct LayoutSpec {
   LayoutKind kind = LayoutKind::tile;
   Combine combine = Combine::mix;
-  double module_w = 300, module_h = 300;  // element size (tile, panel) in mm
-  double joint = 0;                       // joint between elements, mm
-  std::optional<std::array<double, 2>> size;  // floor or wall, mm; default: the field's cells
-  Corner origin = Corner::bottom_left;    // where cell (0, 0) and the laying order start
+  double module_w = 300, module_h = 300;          // element size (tile, panel) in mm
+  double joint = 0;                               // joint between elements, mm
+  std::optional<std::array<double, 2>> size;      // floor or wall, mm; default: the field's cells
+  Corner origin = Corner::bottom_left;            // where cell (0, 0) and the laying order start
   std::vector<std::optional<Rgb>> value_colours;  // per value, overriding the blend (mix)
   Rgb joint_colour{150, 150, 150};
-  std::vector<Rect> openings;  // façade: windows and doors, mm from the wall's origin
-  std::string mask;            // façade: image whose dark pixels are openings (read by the CLI)
-  bool stage_grid = false;     // draw lines at each stage's cell boundaries
+  std::vector<Rect> openings;    // façade: windows and doors, mm from the wall's origin
+  std::string mask;              // façade: image whose dark pixels are openings (read by the CLI)
+  bool stage_grid = false;       // draw lines at each stage's cell boundaries
   std::optional<Box> highlight;  // a window of cells to outline on the drawing
   // Perforation.
   std::vector<HoleSpec> holes;  // one per curd
@@ -91,21 +92,27 @@ struct LayoutSpec {
   double chord_tolerance = 0.05;  // how far polygonised circles may stray, mm
   // Park.
   std::vector<ParkElement> park;  // one per curd
-  ParkElement ground{"white paving", true, false, 0, 0, Rgb{242, 240, 234}};  // cells with no surface
-  double clearance = 0;           // between objects, and from objects to the cell's edge
-  double scale = 0;            // layout.png drawing scale 1 : scale; 0 picks one
+  ParkElement ground{"white paving",    true, false, 0, 0,
+                     Rgb{242, 240, 234}};  // cells with no surface
+  double clearance = 0;                    // between objects, and from objects to the cell's edge
+  // Rhythm (E = 1): a line of bays, each holding an element whose width follows the value.
+  std::vector<double> widths;  // per value, mm; 0: no element
+  // Blocks (E = 3): voxels of module_w x module_h (plan) x voxel_h (storey).
+  double voxel_h = 3000;
+  double scale = 0;  // layout.png drawing scale 1 : scale; 0 picks one
   double dpi = 150;
 };
 
 struct Element {
-  std::string id;      // stable and readable: prefix, row and column in laying order
-  uint32_t value = 0;  // the overlay value of its cell
-  int64_t row = 0, column = 0;   // laying order from the origin corner
+  std::string id;                  // stable and readable: prefix, row and column in laying order
+  uint32_t value = 0;              // the overlay value of its cell
+  int64_t row = 0, column = 0;     // laying order from the origin corner
   int64_t cell_x = 0, cell_y = 0;  // the field cell it stands for
-  Rect nominal;                  // where the whole element would be
-  std::vector<Rect> shape;       // what is laid: one rect, or the pieces of a cut element
-  bool cut = false;              // smaller than nominal (edge or opening)
-  std::optional<Circle> circle;  // a round opening (perforation)
+  int64_t cell_z = 0;              // blocks: the voxel's level
+  Rect nominal;                    // where the whole element would be
+  std::vector<Rect> shape;         // what is laid: one rect, or the pieces of a cut element
+  bool cut = false;                // smaller than nominal (edge or opening)
+  std::optional<Circle> circle;    // a round opening (perforation)
   std::optional<Outline> outline;  // merged openings cut as their union (perforation, keep)
   std::string type;                // park: the element type; empty for modules
   Rgb colour;                      // park: the element's own colour
@@ -123,7 +130,7 @@ struct LegendEntry {
 struct Layout {
   LayoutKind kind = LayoutKind::tile;
   Combine combine = Combine::mix;
-  std::string element_type;  // "tile", "paving tile", "panel"
+  std::string element_type;      // "tile", "paving tile", "panel"
   double width = 0, height = 0;  // mm
   double joint = 0;
   Rgb joint_colour;
@@ -137,8 +144,12 @@ struct Layout {
   // Perforation: the sheet's open-area share, and what the fabrication rules found or changed.
   double open_area = 0;
   std::vector<std::string> violations;
-  std::vector<std::string> notes;   // what a builder should know (cut slivers, ...)
-  Box view;                         // the cells laid, in field coordinates
+  std::vector<std::string> notes;  // what a builder should know (cut slivers, ...)
+  Box view;                        // the cells laid, in field coordinates
+  // Blocks: the drawing is a plan and an elevation of the voxels, side by side; each shape
+  // with the value it shows. Captions say which view is which.
+  std::vector<std::pair<Rect, uint32_t>> views;
+  std::vector<std::pair<std::string, Rect>> captions;
 
   // Where the edge between field cells x - 1 and x (or y - 1 and y) lies, in mm: the middle
   // of the joint, or the layout's edge.

@@ -7,7 +7,8 @@ namespace curdle {
 std::vector<Rect> object_slots(const Rect& cell, size_t count, double clearance) {
   std::vector<Rect> slots;
   if (count == 0) return slots;
-  const Rect inner{cell.x + clearance, cell.y + clearance, cell.w - 2 * clearance, cell.h - 2 * clearance};
+  const Rect inner{cell.x + clearance, cell.y + clearance, cell.w - 2 * clearance,
+                   cell.h - 2 * clearance};
   const double n = static_cast<double>(count);
   for (size_t i = 0; i < count; ++i) {
     if (inner.w >= inner.h) {

@@ -81,7 +81,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
       } else if (spec.combine == Combine::mix) {
         // One opening of the summed area at the group's centre of area (a + b = c).
         double area = 0, mx = 0, my = 0;
-        for (const Circle& c : group) area += c.area(), mx += c.area() * c.cx, my += c.area() * c.cy;
+        for (const Circle& c : group)
+          area += c.area(), mx += c.area() * c.cx, my += c.area() * c.cy;
         const Circle merged{mx / area, my / area, 2 * std::sqrt(area / 3.14159265358979323846)};
         h.element.circle = merged;
         h.parts = {merged};
@@ -103,7 +104,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
     if (h.element.circle && h.element.circle->d < spec.min_diameter - 1e-9)
       drop(h, fmt::format("diameter {:.2f} mm is below the minimum {:.2f} mm", h.element.circle->d,
                           spec.min_diameter));
-    else if (const double gap = edge_gap(h, layout.width, layout.height); gap < spec.edge_margin - 1e-9)
+    else if (const double gap = edge_gap(h, layout.width, layout.height);
+             gap < spec.edge_margin - 1e-9)
       drop(h, fmt::format("{:.2f} mm from the sheet edge, below the margin {:.2f} mm", gap,
                           spec.edge_margin));
   }
@@ -123,8 +125,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
           // The smaller opening goes (the later one on a tie), so the larger keeps its place.
           Hole& loser = holes[i].element.area() < holes[j].element.area() ? holes[i] : holes[j];
           const Hole& other = &loser == &holes[i] ? holes[j] : holes[i];
-          drop(loser, fmt::format("bridge {:.2f} mm to {} is below {:.2f} mm", gap, other.element.id,
-                                  spec.min_bridge));
+          drop(loser, fmt::format("bridge {:.2f} mm to {} is below {:.2f} mm", gap,
+                                  other.element.id, spec.min_bridge));
           if (holes[i].dropped) break;
         }
       }

@@ -25,7 +25,8 @@ Ring ring_of(const Polygon& p) {
 
 Ring polygonise(const Circle& c, double tolerance) {
   const double r = c.d / 2;
-  const double step = tolerance >= r ? 3.14159265358979323846 / 3 : 2 * std::acos(1 - tolerance / r);
+  const double step =
+      tolerance >= r ? 3.14159265358979323846 / 3 : 2 * std::acos(1 - tolerance / r);
   const int n = std::max(8, static_cast<int>(std::ceil(2 * 3.14159265358979323846 / step)));
   Ring ring;
   for (int i = 0; i < n; ++i) {

@@ -304,7 +304,8 @@ Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {
   return field;
 }
 
-double read_mm(TableReader& r, const std::string& key, double fallback, double lo, bool required = false) {
+double read_mm(TableReader& r, const std::string& key, double fallback, double lo,
+               bool required = false) {
   const toml::node* n = r.get(key);
   if (!n) {
     if (required) r.fail(key, "is required: a length in millimetres");
@@ -318,7 +319,7 @@ double read_mm(TableReader& r, const std::string& key, double fallback, double l
 }
 
 std::optional<std::array<double, 2>> read_mm_pair(TableReader& r, const std::string& key,
-                                                   bool required = false) {
+                                                  bool required = false) {
   const toml::node* n = r.get(key);
   if (!n) {
     if (required) r.fail(key, "is required: [width, height] in millimetres");
@@ -352,15 +353,23 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   spec.chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
   if (spec.chord_tolerance <= 0) r.fail("chord_tolerance", "must be above 0 mm, e.g. 0.05");
   const auto fix = read_string(r, "fix", "\"none\" or \"drop\"").value_or("none");
-  if (fix == "none") spec.fix = HoleFix::none;
-  else if (fix == "drop") spec.fix = HoleFix::drop;
-  else r.fail("fix", "must be \"none\" (report only) or \"drop\" (drop the openings that break a rule)");
+  if (fix == "none")
+    spec.fix = HoleFix::none;
+  else if (fix == "drop")
+    spec.fix = HoleFix::drop;
+  else
+    r.fail("fix",
+           "must be \"none\" (report only) or \"drop\" (drop the openings that break a rule)");
   const toml::node* n = r.get("holes");
-  if (!n) r.fail("holes", "is required: one {diameter, offset} per curd, e.g. [{diameter = 20, offset = [-10, 0]}]");
+  if (!n)
+    r.fail(
+        "holes",
+        "is required: one {diameter, offset} per curd, e.g. [{diameter = 20, offset = [-10, 0]}]");
   const toml::array* a = n->as_array();
   if (!a || a->size() != design.curds.size())
-    r.fail("holes", "must give one {diameter, offset} per curd: " + std::to_string(design.curds.size()) +
-                        " curds, " + std::to_string(a ? a->size() : 0) + " holes");
+    r.fail("holes",
+           "must give one {diameter, offset} per curd: " + std::to_string(design.curds.size()) +
+               " curds, " + std::to_string(a ? a->size() : 0) + " holes");
   for (size_t i = 0; i < a->size(); ++i) {
     const std::string path = "layout.holes." + std::to_string(i);
     const toml::table* h = a->get(i)->as_table();
@@ -378,22 +387,94 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
     }
     if (std::fabs(hole.offset_x) + hole.diameter / 2 > spec.module_w / 2 + 1e-9 ||
         std::fabs(hole.offset_y) + hole.diameter / 2 > spec.module_h / 2 + 1e-9)
-      r.fail_node(*a->get(i), path,
-                  "a hole of " + std::to_string(hole.diameter) + " mm at that offset does not fit in its " +
-                      std::to_string(static_cast<int>(spec.module_w)) + " x " +
-                      std::to_string(static_cast<int>(spec.module_h)) +
-                      " mm cell; holes must lie inside their cells (smaller, or nearer the centre)");
+      r.fail_node(
+          *a->get(i), path,
+          "a hole of " + std::to_string(hole.diameter) + " mm at that offset does not fit in its " +
+              std::to_string(static_cast<int>(spec.module_w)) + " x " +
+              std::to_string(static_cast<int>(spec.module_h)) +
+              " mm cell; holes must lie inside their cells (smaller, or nearer the centre)");
     spec.holes.push_back(hole);
   }
+}
+
+std::optional<LayoutSpec> read_line_or_stack(TableReader& r, Design& design, LayoutSpec spec,
+                                             bool field_given) {
+  const size_t values = size_t{1} << design.curds.size();
+  if (const toml::node* n = r.get("colours")) {
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != values)
+      r.fail("colours",
+             "must give one colour \"#rrggbb\" per value: " + std::to_string(values) + " values");
+    for (size_t v = 0; v < a->size(); ++v) {
+      const auto text = a->get(v)->value<std::string>();
+      const auto colour = text ? parse_colour(*text) : std::nullopt;
+      if (!colour)
+        r.fail_node(*a->get(v), "layout.colours." + std::to_string(v),
+                    "must be a colour written \"#rrggbb\"");
+      spec.value_colours.push_back(colour);
+    }
+  }
+  spec.scale = read_mm(r, "scale", 0, 1);
+  spec.dpi = read_mm(r, "dpi", 150, 10);
+  if (spec.kind == LayoutKind::blocks) {
+    const toml::node* n = r.get("voxel");
+    const toml::array* a = n ? n->as_array() : nullptr;
+    std::array<double, 3> v{3000, 3000, 3000};
+    if (n) {
+      bool ok = a && a->size() == 3;
+      for (size_t i = 0; ok && i < 3; ++i) {
+        const auto x = a->get(i)->value<double>();
+        ok = x && *x > 0 && *x <= 1e6;
+        if (ok) v[i] = *x;
+      }
+      if (!ok) r.fail("voxel", "must be [width, depth, height] in millimetres, each above 0");
+    }
+    spec.module_w = v[0], spec.module_h = v[1], spec.voxel_h = v[2];
+    return spec;
+  }
+  spec.module_w = read_mm(r, "bay", 600, 1);
+  spec.module_h = read_mm(r, "height", 3000, 1);
+  const auto origin =
+      read_string(r, "origin", "\"bottom-left\" or \"bottom-right\"").value_or("bottom-left");
+  if (origin != "bottom-left" && origin != "bottom-right")
+    r.fail("origin", "must be \"bottom-left\" or \"bottom-right\" for a line");
+  spec.origin = origin == "bottom-left" ? Corner::bottom_left : Corner::bottom_right;
+  const toml::node* n = r.get("widths");
+  const toml::array* a = n ? n->as_array() : nullptr;
+  if (!a || a->size() != values)
+    r.fail("widths", "must give one element width in mm per value (" + std::to_string(values) +
+                         "), value 0 first; 0 leaves a bay empty");
+  for (size_t v = 0; v < a->size(); ++v) {
+    const auto x = a->get(v)->value<double>();
+    if (!x || *x < 0 || *x > spec.module_w)
+      r.fail_node(*a->get(v), "layout.widths." + std::to_string(v),
+                  "must be a width from 0 to the bay (" +
+                      std::to_string(static_cast<int>(spec.module_w)) + " mm)");
+    spec.widths.push_back(*x);
+  }
+  if (r.get("length")) {
+    const double length = read_mm(r, "length", 0, 1);
+    spec.size = std::array<double, 2>{length, spec.module_h};
+    const int64_t bays = static_cast<int64_t>(std::ceil(length / spec.module_w - 1e-9));
+    if (field_given && design.field.size[0] != bays)
+      r.fail("length", "needs " + std::to_string(bays) + " bays but field.cells is " +
+                           std::to_string(design.field.size[0]) +
+                           "; leave field.cells out or make them agree");
+    design.field.size[0] = bays;
+  }
+  return spec;
 }
 
 ParkElement read_park_element(TableReader& r, const std::string& path, bool ground) {
   ParkElement e;
   e.type = read_string(r, "type", "a name such as \"tree\"").value_or(ground ? "white paving" : "");
-  if (e.type.empty()) r.fail("type", "is required: what the curd places, e.g. \"tree\", \"bench\", \"grey paving\"");
-  const std::string form = ground ? "surface" : read_string(r, "form", "\"surface\" or \"object\"").value_or("object");
+  if (e.type.empty())
+    r.fail("type", "is required: what the curd places, e.g. \"tree\", \"bench\", \"grey paving\"");
+  const std::string form =
+      ground ? "surface" : read_string(r, "form", "\"surface\" or \"object\"").value_or("object");
   if (form != "surface" && form != "object")
-    r.fail("form", "must be \"surface\" (fills the cell, like paving) or \"object\" (stands in it)");
+    r.fail("form",
+           "must be \"surface\" (fills the cell, like paving) or \"object\" (stands in it)");
   e.surface = form == "surface";
   if (auto c = read_string(r, "colour", "a colour written \"#rrggbb\"")) {
     const auto colour = parse_colour(*c);
@@ -404,7 +485,8 @@ ParkElement read_park_element(TableReader& r, const std::string& path, bool grou
   }
   if (!e.surface) {
     const auto shape = read_string(r, "shape", "\"circle\" or \"rectangle\"").value_or("circle");
-    if (shape != "circle" && shape != "rectangle") r.fail("shape", "must be \"circle\" or \"rectangle\"");
+    if (shape != "circle" && shape != "rectangle")
+      r.fail("shape", "must be \"circle\" or \"rectangle\"");
     e.round = shape == "circle";
     const auto size = read_mm_pair(r, "size", true);
     e.w = (*size)[0], e.h = e.round ? (*size)[0] : (*size)[1];
@@ -416,7 +498,8 @@ ParkElement read_park_element(TableReader& r, const std::string& path, bool grou
 void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
   spec.clearance = read_mm(r, "clearance", 0, 0);
   if (const toml::node* g = r.get("ground")) {
-    if (!g->as_table()) r.fail("ground", "must be a table {type = \"white paving\", colour = \"#f2f0ea\"}");
+    if (!g->as_table())
+      r.fail("ground", "must be a table {type = \"white paving\", colour = \"#f2f0ea\"}");
     TableReader gr(*g->as_table(), "layout.ground", r.source(), {"type", "colour"});
     spec.ground = read_park_element(gr, "layout.ground", true);
   }
@@ -424,12 +507,15 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
   const toml::array* a = n ? n->as_array() : nullptr;
   if (!a || a->size() != design.curds.size())
     r.fail("elements", "must give one element per curd (" + std::to_string(design.curds.size()) +
-                           "), e.g. {type = \"tree\", form = \"object\", shape = \"circle\", size = [2400, 2400]}");
+                           "), e.g. {type = \"tree\", form = \"object\", shape = \"circle\", size "
+                           "= [2400, 2400]}");
   size_t objects = 0;
   for (size_t i = 0; i < a->size(); ++i) {
     const std::string path = "layout.elements." + std::to_string(i);
-    if (!a->get(i)->as_table()) r.fail_node(*a->get(i), path, "must be a table {type = ..., form = ...}");
-    TableReader er(*a->get(i)->as_table(), path, r.source(), {"type", "form", "shape", "size", "colour"});
+    if (!a->get(i)->as_table())
+      r.fail_node(*a->get(i), path, "must be a table {type = ..., form = ...}");
+    TableReader er(*a->get(i)->as_table(), path, r.source(),
+                   {"type", "form", "shape", "size", "colour"});
     spec.park.push_back(read_park_element(er, path, false));
     objects += !spec.park.back().surface;
   }
@@ -446,7 +532,8 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
                       std::to_string(objects) + " objects share a " +
                       std::to_string(static_cast<int>(spec.module_w)) + " x " +
                       std::to_string(static_cast<int>(spec.module_h)) + " mm cell with " +
-                      std::to_string(static_cast<int>(spec.clearance)) + " mm clearance (each gets " +
+                      std::to_string(static_cast<int>(spec.clearance)) +
+                      " mm clearance (each gets " +
                       std::to_string(static_cast<int>(std::max(0.0, slots[0].w))) + " x " +
                       std::to_string(static_cast<int>(std::max(0.0, slots[0].h))) +
                       " mm); use smaller elements, a larger cell or less clearance");
@@ -463,8 +550,8 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
       top.fail_node(*k, "layout.kind", "must be \"tile\", \"paving\" or \"facade\"");
     kind = *k->value<std::string>();
   }
-  std::vector<std::string> keys{"kind", "combine", "joint", "origin", "colours", "joint_colour",
-                                "stage_grid", "highlight", "scale", "dpi"};
+  std::vector<std::string> keys{"kind",         "combine",    "joint",     "origin", "colours",
+                                "joint_colour", "stage_grid", "highlight", "scale",  "dpi"};
   std::string module_key, size_key;
   if (kind == "tile") {
     spec.kind = LayoutKind::tile;
@@ -482,6 +569,13 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     keys.insert(keys.end(), {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin",
                              "fix", "chord_tolerance"});
     keys.erase(std::find(keys.begin(), keys.end(), "joint"));
+  } else if (kind == "rhythm") {
+    spec.kind = LayoutKind::rhythm;
+    keys = {"kind",    "bay",    "height",    "length", "widths",
+            "colours", "origin", "highlight", "scale",  "dpi"};
+  } else if (kind == "blocks") {
+    spec.kind = LayoutKind::blocks;
+    keys = {"kind", "voxel", "colours", "scale", "dpi"};
   } else if (kind == "park") {
     spec.kind = LayoutKind::park;
     module_key = "cell", size_key = "area";
@@ -490,35 +584,52 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   } else {
     top.fail_node(*t->get("kind"), "layout.kind",
                   "unknown element kind \"" + kind +
-                      "\"; allowed: \"tile\", \"paving\", \"facade\", \"perforation\", \"park\"");
+                      "\"; allowed: \"tile\", \"paving\", \"facade\", \"perforation\", \"park\", "
+                      "\"rhythm\", \"blocks\"");
   }
-  keys.push_back(module_key);
-  keys.push_back(size_key);
+  if (!module_key.empty()) keys.push_back(module_key);
+  if (!size_key.empty()) keys.push_back(size_key);
   TableReader r(*t, "layout", top.source(), keys);
-  if (design.lattice.dimension != 2)
-    r.fail("kind", "a " + kind + " layout needs a 2-D lattice; this one is " +
-                       std::to_string(design.lattice.dimension) + "-D");
+  const int dimension = spec.kind == LayoutKind::rhythm   ? 1
+                        : spec.kind == LayoutKind::blocks ? 3
+                                                          : 2;
+  if (design.lattice.dimension != dimension)
+    r.fail("kind", "a " + kind + " layout needs a " + std::to_string(dimension) +
+                       "-D lattice; this one is " + std::to_string(design.lattice.dimension) +
+                       "-D");
+  if (spec.kind == LayoutKind::rhythm || spec.kind == LayoutKind::blocks)
+    return read_line_or_stack(r, design, spec, field_given);
 
   const auto combine = read_string(r, "combine", "\"mix\" or \"keep\"").value_or("mix");
-  if (combine == "mix") spec.combine = Combine::mix;
-  else if (combine == "keep") spec.combine = Combine::keep;
-  else r.fail("combine", "must be \"mix\" (a + b = c) or \"keep\" (a + b = ab), not \"" + combine + "\"");
+  if (combine == "mix")
+    spec.combine = Combine::mix;
+  else if (combine == "keep")
+    spec.combine = Combine::keep;
+  else
+    r.fail("combine",
+           "must be \"mix\" (a + b = c) or \"keep\" (a + b = ab), not \"" + combine + "\"");
 
   const auto module = read_mm_pair(r, module_key);
   if (module) spec.module_w = (*module)[0], spec.module_h = (*module)[1];
   spec.joint = spec.kind == LayoutKind::perforation ? 0 : read_mm(r, "joint", 0, 0);
   if (spec.joint >= std::min(spec.module_w, spec.module_h))
     r.fail("joint", "must be narrower than the " + module_key + " (" +
-                        std::to_string(static_cast<int>(std::min(spec.module_w, spec.module_h))) + " mm)");
-  spec.size = read_mm_pair(r, size_key,
-                           spec.kind != LayoutKind::tile && spec.kind != LayoutKind::park);
+                        std::to_string(static_cast<int>(std::min(spec.module_w, spec.module_h))) +
+                        " mm)");
+  spec.size =
+      read_mm_pair(r, size_key, spec.kind != LayoutKind::tile && spec.kind != LayoutKind::park);
 
   const auto origin = read_string(r, "origin", "a corner").value_or("bottom-left");
-  if (origin == "bottom-left") spec.origin = Corner::bottom_left;
-  else if (origin == "bottom-right") spec.origin = Corner::bottom_right;
-  else if (origin == "top-left") spec.origin = Corner::top_left;
-  else if (origin == "top-right") spec.origin = Corner::top_right;
-  else r.fail("origin", "must be \"bottom-left\", \"bottom-right\", \"top-left\" or \"top-right\"");
+  if (origin == "bottom-left")
+    spec.origin = Corner::bottom_left;
+  else if (origin == "bottom-right")
+    spec.origin = Corner::bottom_right;
+  else if (origin == "top-left")
+    spec.origin = Corner::top_left;
+  else if (origin == "top-right")
+    spec.origin = Corner::top_right;
+  else
+    r.fail("origin", "must be \"bottom-left\", \"bottom-right\", \"top-left\" or \"top-right\"");
 
   const size_t values = size_t{1} << design.curds.size();
   if (const toml::node* n = r.get("colours")) {
@@ -527,14 +638,17 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     if (a->size() < values)
       r.fail("colours", "gives " + std::to_string(a->size()) + " colours for " +
                             std::to_string(values) + " values (2^" +
-                            std::to_string(design.curds.size()) + " curds); give one per value, value 0 first");
+                            std::to_string(design.curds.size()) +
+                            " curds); give one per value, value 0 first");
     if (a->size() > values)
       r.fail("colours", "gives " + std::to_string(a->size()) + " colours but there are only " +
                             std::to_string(values) + " values");
     for (size_t v = 0; v < a->size(); ++v) {
       const auto text = a->get(v)->value<std::string>();
       const auto colour = text ? parse_colour(*text) : std::nullopt;
-      if (!colour) r.fail_node(*a->get(v), "layout.colours." + std::to_string(v), "must be a colour written \"#rrggbb\"");
+      if (!colour)
+        r.fail_node(*a->get(v), "layout.colours." + std::to_string(v),
+                    "must be a colour written \"#rrggbb\"");
       spec.value_colours.push_back(colour);
     }
   }
@@ -574,12 +688,16 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
           ok = x && std::isfinite(*x) && (k < 2 ? *x >= 0 : *x > 0);
           if (ok) v[k] = *x;
         }
-        if (!ok) r.fail_node(*a->get(i), path, "must be [x, y, width, height] in millimetres from the wall's bottom-left corner, sizes above 0");
+        if (!ok)
+          r.fail_node(*a->get(i), path,
+                      "must be [x, y, width, height] in millimetres from the wall's bottom-left "
+                      "corner, sizes above 0");
         const Rect rect{v[0], v[1], v[2], v[3]};
         if (rect.right() > (*spec.size)[0] + 1e-6 || rect.top() > (*spec.size)[1] + 1e-6)
-          r.fail_node(*a->get(i), path, "lies outside the wall of " +
-                                            std::to_string(static_cast<int>((*spec.size)[0])) + " x " +
-                                            std::to_string(static_cast<int>((*spec.size)[1])) + " mm");
+          r.fail_node(*a->get(i), path,
+                      "lies outside the wall of " +
+                          std::to_string(static_cast<int>((*spec.size)[0])) + " x " +
+                          std::to_string(static_cast<int>((*spec.size)[1])) + " mm");
         spec.openings.push_back(rect);
       }
     }
@@ -594,7 +712,8 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     if (field_given && (design.field.size[0] != cells[0] || design.field.size[1] != cells[1]))
       r.fail(size_key, "needs " + std::to_string(cells[0]) + " x " + std::to_string(cells[1]) +
                            " elements but field.cells is " + std::to_string(design.field.size[0]) +
-                           " x " + std::to_string(design.field.size[1]) + "; leave field.cells out or make them agree");
+                           " x " + std::to_string(design.field.size[1]) +
+                           "; leave field.cells out or make them agree");
     design.field.size[0] = cells[0];
     design.field.size[1] = cells[1];
   }
@@ -682,7 +801,8 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
     where.overridden.push_back(o.substr(0, o.find('=')));
   }
 
-  TableReader top(doc, "", where, {"name", "description", "seed", "lattice", "field", "curds", "layout"});
+  TableReader top(doc, "", where,
+                  {"name", "description", "seed", "lattice", "field", "curds", "layout"});
   Recipe recipe;
   recipe.design.name = read_string(top, "name").value_or("untitled");
   recipe.description = read_string(top, "description").value_or("");
