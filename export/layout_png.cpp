@@ -101,9 +101,16 @@ double drawing_scale(const Layout& layout, const LayoutSpec& spec) {
       if (longest / (step * decade) <= kSheetMm) return step * decade;
 }
 
-uint64_t layout_png_memory(const Layout& layout, const LayoutSpec& spec) {
-  const double ppm = spec.dpi / 25.4 / drawing_scale(layout, spec);
-  return static_cast<uint64_t>(std::ceil(layout.width * ppm) * std::ceil(layout.height * ppm) * 15);
+uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view) {
+  Layout outline;  // only the extent matters for the scale
+  outline.width = spec.size ? (*spec.size)[0] : view.size[0] * (spec.module_w + spec.joint);
+  outline.height = spec.size ? (*spec.size)[1] : view.size[1] * (spec.module_h + spec.joint);
+  if (spec.kind == LayoutKind::blocks) {
+    outline.width = 2 * view.size[0] * spec.module_w + 2 * std::max(spec.module_w, spec.module_h);
+    outline.height = std::max(view.size[1] * spec.module_h, view.size[2] * spec.voxel_h);
+  }
+  const double ppm = spec.dpi / 25.4 / drawing_scale(outline, spec);
+  return static_cast<uint64_t>(std::ceil(outline.width * ppm) * std::ceil(outline.height * ppm));
 }
 
 PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec) {

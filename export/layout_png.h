@@ -15,7 +15,9 @@ namespace curdle {
 double drawing_scale(const Layout& layout, const LayoutSpec& spec);
 
 PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec);
-uint64_t layout_png_memory(const Layout& layout, const LayoutSpec& spec);
+
+// Pixels of layout.png for the layout `spec` makes of `view`, known before it is built.
+uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view);
 
 // Writes `image` as PNG to exactly `path`, recording `dpi`.
 void write_png_at(const std::filesystem::path& path, const PreviewImage& image, double dpi);

@@ -68,6 +68,7 @@ expect 2 "needs a [layout] section" generate "$src/patterns/paper/fig6-decreasin
 expect 2 "memory limit" generate "$fig3" --set 'field.cells=[3200,3200]' --max-memory 1M --out "$o"
 expect 2 "memory limit" generate "$fig3" --set 'field.cells=[3200,3200]' --max-memory 2M --outputs report.json --out "$o"
 expect 2 "not a size" generate "$fig3" --max-memory lots --out "$o"
+expect 2 "memory limit" generate "$src/patterns/paper/fig7-paving-20m.toml" --set 'layout.floor=[300000,300000]' --max-memory 200M --out "$o"
 expect 2 "threads" generate "$fig3" --threads 0 --out "$o"
 expect 2 "seed" generate "$fig3" --seed minus-one --out "$o"
 expect 2 "not a seed" generate "$fig3" --seed -1 --out "$o"

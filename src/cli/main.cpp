@@ -81,14 +81,19 @@ int generate(const CommonOptions& common, const std::string& out_dir,
   const fs::path dir = out_dir.empty()
                            ? fs::path("curdle-out") / fs::path(common.recipe_path).stem()
                            : fs::path(out_dir);
-  if (outputs.count("preview.png")) {
-    const uint64_t need =
-        estimate_memory(s.recipe.design, generation_box(s.recipe.design, s.view)) +
-        preview_memory(s.recipe.design, s.view);
+  {
+    // Everything this run will hold at once, checked before anything is allocated.
+    uint64_t need = estimate_memory(s.recipe.design, generation_box(s.recipe.design, s.view));
+    if (outputs.count("preview.png")) need += preview_memory(s.recipe.design, s.view);
+    if (has_layout) {
+      // An element with its ID and shape is about 256 bytes; the drawing is 15 bytes a pixel.
+      need += s.view.cells() * 256;
+      if (outputs.count("layout.png")) need += layout_png_pixels(*s.recipe.layout, s.view) * 15;
+    }
     if (need > s.generate.max_memory_bytes)
       throw InputError(
           SourceLocation{common.recipe_path, 0, 0, ""},
-          "the curds and the preview need about " + std::to_string(need >> 20) +
+          "the curds and their outputs need about " + std::to_string(need >> 20) +
               " MiB, above the memory limit of " +
               std::to_string(s.generate.max_memory_bytes >> 20) +
               " MiB; use a smaller field or window, or raise the limit with --max-memory");
