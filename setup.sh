@@ -7,8 +7,10 @@ packages=(
   cmake g++ make pkg-config
   libcgal-dev libopenimageio-dev libtinygltf-dev libtomlplusplus-dev libcli11-dev
   libfmt-dev nlohmann-json3-dev libexpat1-dev librandom123-dev libtbb-dev libgtest-dev libbenchmark-dev
-  python3 python3-numpy librsvg2-bin libxml2-utils
+  python3 python3-numpy librsvg2-bin libxml2-utils chromium
 )
+# Node.js and npm for the glTF validator and the browser checks, when the machine has none.
+command -v node > /dev/null || packages+=(nodejs npm)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -23,4 +25,11 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 else
   echo "setup: all packages present"
+fi
+
+# The npm packages of the glTF and browser checks, as locked in tests/js/package-lock.json.
+js="$(cd "$(dirname "$0")" && pwd)/tests/js"
+if ! cmp -s "$js/package-lock.json" "$js/node_modules/.installed-lock.json" 2>/dev/null; then
+  echo "setup: installing npm packages in tests/js"
+  (cd "$js" && npm ci --no-audit --no-fund --loglevel=error && cp package-lock.json node_modules/.installed-lock.json)
 fi

@@ -2,6 +2,7 @@
 // Exceptions become exit codes here and only here: 2 for bad input, 1 for internal failure.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <fstream>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include "curdle/report.h"
 #include "export/atomic_file.h"
 #include "export/cells_csv.h"
+#include "export/gltf.h"
 #include "export/layout_png.h"
 #include "export/mask_image.h"
 #include "export/preview_png.h"
@@ -29,8 +31,9 @@ namespace curdle::cli {
 namespace {
 
 constexpr uint64_t kCellsCsvDefaultLimit = 10'000'000;
-const std::vector<std::string> kOutputs = {"report.json", "cells.csv", "preview.png", "layout.svg",
-                                           "layout.png"};
+const std::vector<std::string> kOutputs = {"report.json", "cells.csv",  "preview.png",
+                                           "layout.svg",  "layout.png", "layout.glb",
+                                           "layout.gltf"};
 
 std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
   std::set<std::string> chosen;
@@ -42,7 +45,7 @@ std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
       throw InputError(SourceLocation{"--outputs", 0, 0, ""},
                        "unknown output '" + n +
                            "'; allowed: report.json, cells.csv, preview.png, and with a [layout] "
-                           "section layout.svg, layout.png");
+                           "section layout.svg, layout.png, layout.glb, layout.gltf (with layout.bin)");
     chosen.insert(n);
   }
   return chosen;
@@ -54,9 +57,10 @@ int generate(const CommonOptions& common, const std::string& out_dir,
   std::set<std::string> outputs = outputs_named.empty()
                                       ? std::set<std::string>(kOutputs.begin(), kOutputs.end())
                                       : parse_outputs(outputs_named);
+  if (outputs_named.empty()) outputs.erase("layout.gltf");  // .glb by default; .gltf on request
   const bool has_layout = s.recipe.layout.has_value();
   if (!has_layout) {
-    for (const char* name : {"layout.svg", "layout.png"})
+    for (const char* name : {"layout.svg", "layout.png", "layout.glb", "layout.gltf"})
       if (outputs.erase(name) && !outputs_named.empty())
         throw InputError(
             SourceLocation{common.recipe_path, 0, 0, "layout"},
@@ -89,6 +93,8 @@ int generate(const CommonOptions& common, const std::string& out_dir,
       // An element with its ID and shape is about 256 bytes; the drawing is 15 bytes a pixel.
       need += s.view.cells() * 256;
       if (outputs.count("layout.png")) need += layout_png_pixels(*s.recipe.layout, s.view) * 15;
+      // glTF: the model, its buffer and the written copy, about 700 bytes an element.
+      if (outputs.count("layout.glb") || outputs.count("layout.gltf")) need += s.view.cells() * 700;
     }
     if (need > s.generate.max_memory_bytes)
       throw InputError(
@@ -133,6 +139,19 @@ int generate(const CommonOptions& common, const std::string& out_dir,
       });
     if (outputs.count("layout.png"))
       write_png_at(stage("layout.png").temporary(), render_layout(layout, spec), spec.dpi);
+    const TitleBlock title{s.recipe.design.name, s.recipe.description, s.seed};
+    if (outputs.count("layout.glb"))
+      stage("layout.glb").write(
+          [&](std::ostream& o) { write_glb(o, layout, s.recipe.design, title, spec); });
+    if (outputs.count("layout.gltf")) {
+      StagedFile& bin = stage("layout.bin");
+      std::ofstream bin_out(bin.temporary(), std::ios::binary | std::ios::trunc);
+      stage("layout.gltf").write([&](std::ostream& o) {
+        write_gltf(o, bin_out, "layout.bin", layout, s.recipe.design, title, spec);
+      });
+      bin_out.flush();
+      if (!bin_out) throw InputError("cannot write " + bin.target().string());
+    }
     uint64_t cut = 0;
     for (const Element& e : layout.elements) cut += e.cut;
     std::printf(

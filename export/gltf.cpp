@@ -1,0 +1,453 @@
+#include "export/gltf.h"
+
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <sstream>
+
+#include "curdle/error.h"
+#include "layout/triangulation.h"
+#include "layout/union.h"
+
+namespace curdle {
+namespace {
+
+using Vec3 = std::array<float, 3>;
+constexpr size_t kInstancesAbove = 20000;
+
+// Thickness of what is laid, in mm: what a viewer needs to read the layout as built.
+double thickness_of(const Layout& l, const LayoutSpec& spec) {
+  switch (l.kind) {
+    case LayoutKind::paving: return 30;
+    case LayoutKind::tile: return 10;
+    case LayoutKind::facade: return 20;
+    case LayoutKind::rhythm: return 300;  // fins stand out of the wall
+    case LayoutKind::perforation: return spec.thickness;
+    case LayoutKind::park: return 30;
+    case LayoutKind::blocks: return spec.voxel_h;
+  }
+  return 10;
+}
+
+bool upright(const Layout& l) { return l.kind == LayoutKind::facade || l.kind == LayoutKind::rhythm; }
+
+// Layout millimetres (x, y in the plane; up out of it) to glTF metres.
+Vec3 to_gltf(const Layout& l, double x, double y, double up) {
+  if (upright(l)) return {float(x / 1000), float(y / 1000), float(up / 1000)};
+  return {float(x / 1000), float(up / 1000), float(-y / 1000)};
+}
+
+std::string fmt_value_name(const LegendEntry& e) {
+  return "value " + std::to_string(e.value) + " " + e.label;
+}
+
+double srgb_to_linear(uint8_t c) {
+  const double v = c / 255.0;
+  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+// A glTF model under construction: one buffer, appended to.
+class ModelBuilder {
+ public:
+  tinygltf::Model model;
+
+  ModelBuilder() {
+    model.asset.version = "2.0";
+    model.asset.generator = "curdle";
+    model.buffers.emplace_back();
+    model.scenes.emplace_back();
+    model.defaultScene = 0;
+  }
+
+  int add_view(const void* data, size_t bytes, int target) {
+    auto& buffer = model.buffers[0].data;
+    while (buffer.size() % 4) buffer.push_back(0);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = buffer.size();
+    view.byteLength = bytes;
+    if (target) view.target = target;
+    const auto* p = static_cast<const uint8_t*>(data);
+    buffer.insert(buffer.end(), p, p + bytes);
+    model.bufferViews.push_back(view);
+    return static_cast<int>(model.bufferViews.size() - 1);
+  }
+
+  int add_vec3(const std::vector<Vec3>& v, bool bounds, int target = TINYGLTF_TARGET_ARRAY_BUFFER) {
+    tinygltf::Accessor a;
+    a.bufferView = add_view(v.data(), v.size() * sizeof(Vec3), target);
+    a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+    a.count = v.size();
+    a.type = TINYGLTF_TYPE_VEC3;
+    if (bounds) {
+      a.minValues = {1e30, 1e30, 1e30};
+      a.maxValues = {-1e30, -1e30, -1e30};
+      for (const Vec3& p : v)
+        for (int i = 0; i < 3; ++i)
+          a.minValues[i] = std::min<double>(a.minValues[i], p[i]), a.maxValues[i] = std::max<double>(a.maxValues[i], p[i]);
+    }
+    model.accessors.push_back(a);
+    return static_cast<int>(model.accessors.size() - 1);
+  }
+
+  int add_indices(const std::vector<uint32_t>& idx) {
+    tinygltf::Accessor a;
+    a.bufferView = add_view(idx.data(), idx.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    a.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    a.count = idx.size();
+    a.type = TINYGLTF_TYPE_SCALAR;
+    model.accessors.push_back(a);
+    return static_cast<int>(model.accessors.size() - 1);
+  }
+
+  int add_material(const std::string& name, const Rgb& c, double metallic, double roughness) {
+    tinygltf::Material m;
+    m.name = name;
+    m.pbrMetallicRoughness.baseColorFactor = {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b), 1.0};
+    m.pbrMetallicRoughness.metallicFactor = metallic;
+    m.pbrMetallicRoughness.roughnessFactor = roughness;
+    model.materials.push_back(m);
+    return static_cast<int>(model.materials.size() - 1);
+  }
+
+  // A triangle mesh; `positions` with their `normals`, triangles as index triples.
+  tinygltf::Primitive primitive(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                                const std::vector<uint32_t>& indices, int material) {
+    tinygltf::Primitive p;
+    p.attributes["POSITION"] = add_vec3(positions, true);
+    p.attributes["NORMAL"] = add_vec3(normals, false);
+    p.indices = add_indices(indices);
+    p.material = material;
+    p.mode = TINYGLTF_MODE_TRIANGLES;
+    return p;
+  }
+
+  int add_mesh(const std::string& name, std::vector<tinygltf::Primitive> primitives) {
+    tinygltf::Mesh m;
+    m.name = name;
+    m.primitives = std::move(primitives);
+    model.meshes.push_back(m);
+    return static_cast<int>(model.meshes.size() - 1);
+  }
+
+  int add_node(tinygltf::Node node) {
+    model.nodes.push_back(std::move(node));
+    return static_cast<int>(model.nodes.size() - 1);
+  }
+};
+
+// Appends an axis-aligned box (glTF metres, min corner and size) with outward normals.
+void add_box(std::vector<Vec3>& pos, std::vector<Vec3>& nrm, std::vector<uint32_t>& idx, Vec3 lo, Vec3 size) {
+  static const int faces[6][4][3] = {
+      {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}, {{0, 0, 1}, {0, 1, 1}, {0, 1, 0}, {0, 0, 0}},
+      {{0, 1, 0}, {0, 1, 1}, {1, 1, 1}, {1, 1, 0}}, {{0, 0, 1}, {0, 0, 0}, {1, 0, 0}, {1, 0, 1}},
+      {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}, {{1, 0, 0}, {0, 0, 0}, {0, 1, 0}, {1, 1, 0}}};
+  static const Vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (int f = 0; f < 6; ++f) {
+    const uint32_t base = static_cast<uint32_t>(pos.size());
+    for (int v = 0; v < 4; ++v) {
+      pos.push_back({lo[0] + size[0] * faces[f][v][0], lo[1] + size[1] * faces[f][v][1], lo[2] + size[2] * faces[f][v][2]});
+      nrm.push_back(normals[f]);
+    }
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) idx.push_back(base + i);
+  }
+}
+
+// A box in layout millimetres: the rect in the plane, `base` to `base + t` out of it.
+std::pair<Vec3, Vec3> box_of(const Layout& l, const Rect& r, double base, double t) {
+  const Vec3 a = to_gltf(l, r.x, r.y, base), b = to_gltf(l, r.right(), r.top(), base + t);
+  return {Vec3{std::min(a[0], b[0]), std::min(a[1], b[1]), std::min(a[2], b[2])},
+          Vec3{std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]), std::fabs(b[2] - a[2])}};
+}
+
+tinygltf::Value element_extras(const Element& e, const Design& design) {
+  tinygltf::Value::Object o;
+  o["value"] = tinygltf::Value(static_cast<int>(e.value));
+  tinygltf::Value::Array bits, names;
+  for (size_t c = 0; c < design.curds.size(); ++c) {
+    bits.push_back(tinygltf::Value(static_cast<int>(e.value >> c & 1)));
+    if (e.value >> c & 1) names.push_back(tinygltf::Value(design.curds[c].name));
+  }
+  o["curd_bits"] = tinygltf::Value(bits);
+  o["curds"] = tinygltf::Value(names);
+  o["row"] = tinygltf::Value(static_cast<int>(e.row));
+  o["column"] = tinygltf::Value(static_cast<int>(e.column));
+  if (e.cut) o["cut"] = tinygltf::Value(true);
+  if (!e.type.empty()) o["type"] = tinygltf::Value(e.type);
+  return tinygltf::Value(o);
+}
+
+tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlock& title,
+                      const LayoutSpec& spec) {
+  ModelBuilder b;
+  std::vector<int>& roots = b.model.scenes[0].nodes;
+  const double t = thickness_of(layout, spec);
+  const bool sheet = layout.kind == LayoutKind::perforation;
+  const double metallic = sheet || layout.kind == LayoutKind::rhythm ? 0.9 : 0.0;
+  std::vector<int> material(layout.legend.size());
+  for (const LegendEntry& e : layout.legend)
+    material[e.value] = b.add_material(fmt_value_name(e), e.colour, metallic, sheet ? 0.4 : 0.8);
+
+  // Unit boxes, one mesh per material, placed by each node's translation and scale.
+  std::map<int, int> box_mesh;
+  auto unit_box = [&](int mat) {
+    auto it = box_mesh.find(mat);
+    if (it != box_mesh.end()) return it->second;
+    std::vector<Vec3> p, n;
+    std::vector<uint32_t> i;
+    add_box(p, n, i, {-0.5f, -0.5f, -0.5f}, {1, 1, 1});
+    return box_mesh[mat] = b.add_mesh("box " + b.model.materials[mat].name, {b.primitive(p, n, i, mat)});
+  };
+  auto box_node = [&](const Rect& r, double base, double height, int mat) {
+    const auto [lo, size] = box_of(layout, r, base, height);
+    tinygltf::Node n;
+    n.mesh = unit_box(mat);
+    n.translation = {lo[0] + size[0] / 2.0, lo[1] + size[1] / 2.0, lo[2] + size[2] / 2.0};
+    n.scale = {size[0], size[1], size[2]};
+    return n;
+  };
+  auto named = [&](const Element& e, tinygltf::Node n) {
+    n.name = e.id;
+    n.extras = element_extras(e, design);
+    return b.add_node(std::move(n));
+  };
+
+  if (layout.kind == LayoutKind::paving || layout.kind == LayoutKind::tile) {
+    // The bed the tiles lie in shows in the joints.
+    const int bed = b.add_material("joint", layout.joint > 0 ? layout.joint_colour : Rgb{200, 200, 200}, 0, 1);
+    tinygltf::Node n = box_node(Rect{0, 0, layout.width, layout.height}, -5, t * 0.8 + 5, bed);
+    n.name = "bed";
+    roots.push_back(b.add_node(std::move(n)));
+  }
+
+  if (sheet) {
+    // The sheet: one solid whose openings are its holes, triangulated with CGAL.
+    std::vector<Ring> rings{{{0, 0}, {layout.width, 0}, {layout.width, layout.height}, {0, layout.height}}};
+    for (const Element& e : layout.elements) {
+      if (e.circle) rings.push_back(polygonise(*e.circle, spec.chord_tolerance));
+      if (e.outline) rings.insert(rings.end(), e.outline->rings.begin(), e.outline->rings.end());
+    }
+    std::vector<Vec3> p, n;
+    std::vector<uint32_t> idx;
+    for (const auto& tri : triangulate(rings)) {
+      for (int face = 0; face < 2; ++face) {  // top, then bottom facing down
+        const uint32_t base = static_cast<uint32_t>(p.size());
+        for (int k = 0; k < 3; ++k) {
+          const auto& v = tri[face ? 2 - k : k];
+          p.push_back(to_gltf(layout, v[0], v[1], face ? 0 : t));
+          n.push_back(face ? Vec3{0, -1, 0} : Vec3{0, 1, 0});
+        }
+        idx.insert(idx.end(), {base, base + 1, base + 2});
+      }
+    }
+    // Walls along every ring: the sheet's edge and the openings' sides.
+    for (size_t r = 0; r < rings.size(); ++r) {
+      const Ring& ring = rings[r];
+      double area = 0;
+      for (size_t i = 0; i < ring.size(); ++i)
+        area += ring[i][0] * ring[(i + 1) % ring.size()][1] - ring[(i + 1) % ring.size()][0] * ring[i][1];
+      const bool outer = r == 0;
+      const bool ccw = area > 0;
+      for (size_t i = 0; i < ring.size(); ++i) {
+        auto a = ring[i], c = ring[(i + 1) % ring.size()];
+        if (ccw != outer) std::swap(a, c);  // material on the left of each wall's edge
+        const double dx = c[0] - a[0], dy = c[1] - a[1], len = std::hypot(dx, dy);
+        if (len == 0) continue;
+        const Vec3 normal = to_gltf(layout, dy / len * 1000, -dx / len * 1000, 0);
+        const uint32_t base = static_cast<uint32_t>(p.size());
+        for (const auto& [x, y, up] : {std::array<double, 3>{a[0], a[1], 0}, {c[0], c[1], 0}, {c[0], c[1], t}, {a[0], a[1], t}}) {
+          p.push_back(to_gltf(layout, x, y, up));
+          n.push_back(normal);
+        }
+        idx.insert(idx.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+      }
+    }
+    const int metal = b.add_material("aluminium sheet", Rgb{201, 205, 210}, 0.9, 0.4);
+    tinygltf::Node node;
+    node.name = "sheet";
+    node.mesh = b.add_mesh("sheet", {b.primitive(p, n, idx, metal)});
+    roots.push_back(b.add_node(std::move(node)));
+    for (const Element& e : layout.elements) {  // each opening, named, at its centre
+      tinygltf::Node h;
+      const double cx = e.circle ? e.circle->cx : e.nominal.x + e.nominal.w / 2;
+      const double cy = e.circle ? e.circle->cy : e.nominal.y + e.nominal.h / 2;
+      const Vec3 c = to_gltf(layout, cx, cy, t / 2);
+      h.translation = {c[0], c[1], c[2]};
+      roots.push_back(named(e, std::move(h)));
+    }
+  } else if (layout.kind == LayoutKind::blocks) {
+    // Voxels merged per value; a face between two blocks is inside and left out.
+    std::map<std::array<int64_t, 3>, uint32_t> solid;
+    for (const Element& e : layout.elements) solid[{e.cell_x, e.cell_y, e.cell_z}] = e.value;
+    std::map<uint32_t, std::array<std::vector<Vec3>, 2>> geo;
+    std::map<uint32_t, std::vector<uint32_t>> idx;
+    const double w = spec.module_w, d = spec.module_h, h = spec.voxel_h;
+    static const int dirs[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const auto& [cell, value] : solid) {
+      auto& [p, n] = geo[value];
+      auto& ix = idx[value];
+      std::vector<Vec3> bp, bn;
+      std::vector<uint32_t> bi;
+      const double x = (cell[0] - layout.view.origin[0]) * w, y = (cell[1] - layout.view.origin[1]) * d,
+                   z = (cell[2] - layout.view.origin[2]) * h;
+      const auto [lo, size] = box_of(layout, Rect{x, y, w, d}, z, h);
+      add_box(bp, bn, bi, lo, size);
+      // add_box's faces are +X, -X, +Y(up), -Y, +Z, -Z in glTF: map to lattice neighbours.
+      const int lattice_dir[6] = {0, 1, 4, 5, 3, 2};  // glTF +Z is lattice -y
+      for (int f = 0; f < 6; ++f) {
+        const int* dv = dirs[lattice_dir[f]];
+        if (solid.count({cell[0] + dv[0], cell[1] + dv[1], cell[2] + dv[2]})) continue;
+        const uint32_t base = static_cast<uint32_t>(p.size());
+        for (int v = 0; v < 4; ++v) p.push_back(bp[f * 4 + v]), n.push_back(bn[f * 4 + v]);
+        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) ix.push_back(base + i);
+      }
+    }
+    for (auto& [value, pn] : geo) {
+      if (idx[value].empty()) continue;
+      tinygltf::Node node;
+      node.name = "blocks value " + std::to_string(value);
+      node.mesh = b.add_mesh(node.name, {b.primitive(pn[0], pn[1], idx[value], material[value])});
+      roots.push_back(b.add_node(std::move(node)));
+    }
+    for (const Element& e : layout.elements) {
+      tinygltf::Node v;
+      const Vec3 c = to_gltf(layout, (e.cell_x - layout.view.origin[0] + 0.5) * w,
+                             (e.cell_y - layout.view.origin[1] + 0.5) * d, (e.cell_z - layout.view.origin[2] + 0.5) * h);
+      v.translation = {c[0], c[1], c[2]};
+      roots.push_back(named(e, std::move(v)));
+    }
+  } else if (layout.kind == LayoutKind::park) {
+    // One mesh per element type, shared by every element of the type.
+    std::map<std::string, int> type_mesh;
+    for (const Element& e : layout.elements) {
+      if (type_mesh.count(e.type)) continue;
+      const int mat = b.add_material(e.type, e.colour, 0, 0.9);
+      std::vector<Vec3> p, n;
+      std::vector<uint32_t> i;
+      if (e.circle) {  // a tree: trunk and canopy, the canopy's diameter that of the element
+        const float r = static_cast<float>(e.circle->d / 2000);
+        add_box(p, n, i, {-0.1f, 0, -0.1f}, {0.2f, 2.2f, 0.2f});
+        const int trunk = b.add_material(e.type + " trunk", Rgb{92, 64, 44}, 0, 0.9);
+        std::vector<Vec3> cp, cn;
+        std::vector<uint32_t> ci;
+        const int rings = 8, segments = 12;
+        for (int a = 0; a <= rings; ++a)
+          for (int s2 = 0; s2 <= segments; ++s2) {
+            const double th = 3.14159265358979 * a / rings, ph = 2 * 3.14159265358979 * s2 / segments;
+            const Vec3 dir{float(std::sin(th) * std::cos(ph)), float(std::cos(th)), float(std::sin(th) * std::sin(ph))};
+            cp.push_back({dir[0] * r, 2.2f + r + dir[1] * r, dir[2] * r});
+            cn.push_back(dir);
+          }
+        for (int a = 0; a < rings; ++a)
+          for (int s2 = 0; s2 < segments; ++s2) {
+            const uint32_t q = a * (segments + 1) + s2, q2 = q + segments + 1;
+            ci.insert(ci.end(), {q, q + 1, q2, q + 1, q2 + 1, q2});
+          }
+        type_mesh[e.type] = b.add_mesh(e.type, {b.primitive(p, n, i, trunk), b.primitive(cp, cn, ci, mat)});
+      } else {
+        type_mesh[e.type] = unit_box(mat);
+      }
+    }
+    for (const Element& e : layout.elements) {
+      tinygltf::Node n;
+      if (e.circle) {
+        const Vec3 c = to_gltf(layout, e.circle->cx, e.circle->cy, t);
+        n.mesh = type_mesh[e.type];
+        n.translation = {c[0], c[1], c[2]};
+      } else {
+        const bool surface = e.shape.size() == 1 && e.shape[0].w >= e.nominal.w / 8 &&
+                             std::fabs(e.shape[0].h - e.nominal.h) < 1e-6;
+        n = box_node(e.shape[0], surface ? 0 : t, surface ? t : 450, b.model.meshes[type_mesh[e.type]].primitives[0].material);
+      }
+      roots.push_back(named(e, std::move(n)));
+    }
+  } else {
+    // Tiles, paving, panels, fins: boxes. Many uncut ones become instances.
+    const bool instanced = layout.elements.size() > kInstancesAbove;
+    std::map<uint32_t, std::pair<std::vector<Vec3>, std::vector<Vec3>>> instances;
+    std::map<uint32_t, tinygltf::Value::Array> instance_ids;
+    for (const Element& e : layout.elements) {
+      if (instanced && !e.cut && e.shape.size() == 1) {
+        const auto [lo, size] = box_of(layout, e.shape[0], 0, t);
+        instances[e.value].first.push_back({lo[0] + size[0] / 2, lo[1] + size[1] / 2, lo[2] + size[2] / 2});
+        instances[e.value].second.push_back(size);
+        instance_ids[e.value].push_back(tinygltf::Value(e.id));
+        continue;
+      }
+      if (e.shape.size() == 1) {
+        roots.push_back(named(e, box_node(e.shape[0], 0, t, material[e.value])));
+        continue;
+      }
+      tinygltf::Node parent;  // a cut element in pieces: the pieces are its children
+      for (const Rect& r : e.shape) parent.children.push_back(b.add_node(box_node(r, 0, t, material[e.value])));
+      roots.push_back(named(e, std::move(parent)));
+    }
+    for (auto& [value, tr] : instances) {
+      tinygltf::Node n;
+      n.name = "instances value " + std::to_string(value);
+      n.mesh = unit_box(material[value]);
+      tinygltf::Value::Object attributes;
+      attributes["TRANSLATION"] = tinygltf::Value(b.add_vec3(tr.first, false, 0));
+      attributes["SCALE"] = tinygltf::Value(b.add_vec3(tr.second, false, 0));
+      tinygltf::Value::Object ext;
+      ext["attributes"] = tinygltf::Value(attributes);
+      n.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(ext);
+      tinygltf::Value::Object extras;
+      extras["value"] = tinygltf::Value(static_cast<int>(value));
+      extras["element_ids"] = tinygltf::Value(instance_ids[value]);
+      n.extras = tinygltf::Value(extras);
+      roots.push_back(b.add_node(std::move(n)));
+    }
+    if (!instances.empty()) {
+      b.model.extensionsUsed.push_back("EXT_mesh_gpu_instancing");
+      b.model.extensionsRequired.push_back("EXT_mesh_gpu_instancing");
+    }
+  }
+
+  tinygltf::Value::Object scene;
+  scene["recipe"] = tinygltf::Value(title.recipe);
+  scene["seed"] = tinygltf::Value(std::to_string(title.seed));
+  tinygltf::Value::Object lattice;
+  lattice["base"] = tinygltf::Value(design.lattice.base);
+  lattice["dimension"] = tinygltf::Value(design.lattice.dimension);
+  lattice["stages"] = tinygltf::Value(design.lattice.stages);
+  lattice["mode"] = tinygltf::Value(std::string(to_string(design.lattice.mode)));
+  scene["lattice"] = tinygltf::Value(lattice);
+  scene["units"] = tinygltf::Value(std::string("metres, +Y up"));
+  b.model.scenes[0].name = title.recipe;
+  b.model.scenes[0].extras = tinygltf::Value(scene);
+  // Materials no element uses would be reported by validators: drop them from the legend's list.
+  return b.model;
+}
+
+}  // namespace
+
+void write_glb(std::ostream& out, const Layout& layout, const Design& design, const TitleBlock& title,
+               const LayoutSpec& spec) {
+  tinygltf::Model model = build(layout, design, title, spec);
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToStream(&model, out, false, true))
+    throw std::runtime_error("tinygltf could not write the binary glTF");
+}
+
+void write_gltf(std::ostream& json, std::ostream& bin, const std::string& bin_name,
+                const Layout& layout, const Design& design, const TitleBlock& title,
+                const LayoutSpec& spec) {
+  const tinygltf::Model model = build(layout, design, title, spec);
+  const auto& data = model.buffers[0].data;
+  bin.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
+  // tinygltf's stream writer embeds buffers; point the buffer at the .bin file instead.
+  std::ostringstream embedded;
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToStream(&model, embedded, false, false))
+    throw std::runtime_error("tinygltf could not write the glTF");
+  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(embedded.str());
+  doc["buffers"][0] = {{"byteLength", data.size()}, {"uri", bin_name}};
+  json << doc.dump(1) << "\n";
+}
+
+}  // namespace curdle

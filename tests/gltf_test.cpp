@@ -1,0 +1,199 @@
+// glTF export read back with tinygltf: what the file holds matches the layout, names and all.
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include <cmath>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "curdle/curdling.h"
+#include "export/gltf.h"
+#include "export/svg.h"
+#include "layout/builder.h"
+#include "test_support.h"
+
+namespace curdle {
+namespace {
+
+tinygltf::Model read_back(const Layout& layout, const Design& d, const LayoutSpec& spec) {
+  std::ostringstream out;
+  write_glb(out, layout, d, TitleBlock{"test", "", 5}, spec);
+  const std::string bytes = out.str();
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  EXPECT_TRUE(loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                          static_cast<unsigned>(bytes.size())))
+      << err;
+  EXPECT_TRUE(warn.empty()) << warn;
+  return model;
+}
+
+struct Totals {
+  uint64_t triangles = 0;
+  std::array<double, 3> lo{1e30, 1e30, 1e30}, hi{-1e30, -1e30, -1e30};
+  std::set<std::string> names;
+};
+
+// Walks the scene applying each node's translation and scale (the exporter uses no rotation).
+void walk(const tinygltf::Model& m, int index, std::array<double, 3> offset, std::array<double, 3> scale, Totals& t) {
+  const tinygltf::Node& n = m.nodes[index];
+  if (!n.name.empty()) t.names.insert(n.name);
+  std::array<double, 3> o = offset, s = scale;
+  for (int i = 0; i < 3; ++i) {
+    if (n.translation.size() == 3) o[i] += s[i] * n.translation[i];
+    if (n.scale.size() == 3) s[i] *= n.scale[i];
+  }
+  if (n.mesh >= 0)
+    for (const auto& p : m.meshes[n.mesh].primitives) {
+      t.triangles += m.accessors[p.indices].count / 3;
+      const auto& pos = m.accessors[p.attributes.at("POSITION")];
+      for (int i = 0; i < 3; ++i) {
+        const double a = o[i] + s[i] * pos.minValues[i], b = o[i] + s[i] * pos.maxValues[i];
+        t.lo[i] = std::min({t.lo[i], a, b});
+        t.hi[i] = std::max({t.hi[i], a, b});
+      }
+    }
+  for (int c : n.children) walk(m, c, o, s, t);
+}
+
+Totals totals(const tinygltf::Model& m) {
+  Totals t;
+  for (int root : m.scenes[0].nodes) walk(m, root, {0, 0, 0}, {1, 1, 1}, t);
+  return t;
+}
+
+}  // namespace
+
+TEST(Gltf, PavingReadsBackWithItsElementsMaterialsAndExtent) {
+  Design d = test::design(4, 2, {{"3/4", "2/3", "1/2"}});
+  LayoutSpec spec;
+  spec.kind = LayoutKind::paving;
+  spec.module_w = spec.module_h = 300, spec.joint = 5;
+  spec.size = std::array<double, 2>{6000, 4500};
+  const auto cells = elements_to_cover(spec);
+  d.field.size = {cells[0], cells[1], 1};
+  const Layout layout = make_layout(d, curdle(d, 2, d.field), d.field, spec);
+  const tinygltf::Model m = read_back(layout, d, spec);
+  const Totals t = totals(m);
+  std::set<std::string> ids;
+  for (const Element& e : layout.elements) ids.insert(e.id);
+  std::set<std::string> element_names;
+  for (const auto& n : t.names)
+    if (ids.count(n)) element_names.insert(n);
+  EXPECT_EQ(element_names, ids);                          // every element is a named node
+  EXPECT_EQ(t.triangles, (layout.elements.size() + 1) * 12);  // boxes, and the bed
+  EXPECT_EQ(m.materials.size(), layout.legend.size() + 1);    // a value each, and the joints
+  EXPECT_NEAR(t.lo[0], 0, 1e-6);                              // metres, the floor on XZ
+  EXPECT_NEAR(t.hi[0], 6.0, 1e-6);
+  EXPECT_NEAR(t.lo[2], -4.5, 1e-6);
+  EXPECT_NEAR(t.hi[2], 0, 1e-6);
+  EXPECT_NEAR(t.hi[1], 0.030, 1e-6);  // 30 mm tiles, +Y up
+  const auto& extras = m.scenes[0].extras;
+  EXPECT_EQ(extras.Get("recipe").Get<std::string>(), "test");
+  EXPECT_EQ(extras.Get("lattice").Get("base").Get<int>(), 4);
+  // The same IDs name the SVG's elements: cut ones by id, the rest in merged ranges.
+  std::ostringstream svg;
+  write_layout_svg(svg, layout, d, TitleBlock{"test", "", 5}, spec);
+  const std::string text = svg.str();
+  std::set<std::string> svg_ids;
+  const std::regex named("(id|data-elements)=\"(P-R[0-9]+-C[0-9]+)(:P-R([0-9]+)-C([0-9]+))?\"");
+  for (std::sregex_iterator it(text.begin(), text.end(), named), end; it != end; ++it) {
+    const std::string first = (*it)[2];
+    if (!(*it)[3].matched) {
+      svg_ids.insert(first);
+      continue;
+    }
+    const int r0 = std::stoi(first.substr(3, first.find("-C") - 3)), c0 = std::stoi(first.substr(first.find("-C") + 2));
+    const int r1 = std::stoi((*it)[4]), c1 = std::stoi((*it)[5]);
+    for (const Element& e : layout.elements)
+      if (e.row >= r0 && e.row <= r1 && e.column >= c0 && e.column <= c1) svg_ids.insert(e.id);
+  }
+  EXPECT_EQ(svg_ids, ids);
+}
+
+TEST(Gltf, FacadeStandsUpWithItsOpeningsLeftOpen) {
+  Design d = test::design(4, 2, {{"3/4", "2/3"}});
+  LayoutSpec spec;
+  spec.kind = LayoutKind::facade;
+  spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
+  spec.size = std::array<double, 2>{6000, 3000};
+  spec.openings = {{1000, 0, 1200, 2100}};
+  const auto cells = elements_to_cover(spec);
+  d.field.size = {cells[0], cells[1], 1};
+  const Layout layout = make_layout(d, curdle(d, 2, d.field), d.field, spec);
+  const Totals t = totals(read_back(layout, d, spec));
+  uint64_t pieces = 0;
+  for (const Element& e : layout.elements) pieces += e.shape.size();
+  EXPECT_EQ(t.triangles, pieces * 12);
+  EXPECT_NEAR(t.hi[1], 3.0, 1e-6);  // the wall's height along +Y
+  EXPECT_NEAR(t.hi[2], 0.020, 1e-6);
+}
+
+TEST(Gltf, PerforatedSheetIsASolidWithItsOpenings) {
+  Design d = test::design(4, 2, {{"1/2", "1/2"}, {"1/2", "1/2"}});
+  LayoutSpec spec;
+  spec.kind = LayoutKind::perforation;
+  spec.combine = Combine::keep;
+  spec.module_w = spec.module_h = 40;
+  spec.size = std::array<double, 2>{640, 640};
+  spec.thickness = 3;
+  spec.holes = {{16, -6, 0}, {16, 6, 0}};
+  spec.chord_tolerance = 0.1;
+  const Layout layout = make_layout(d, curdle(d, 3, d.field), d.field, spec);
+  const tinygltf::Model m = read_back(layout, d, spec);
+  const Totals t = totals(m);
+  EXPECT_NEAR(t.hi[0], 0.64, 1e-6);
+  EXPECT_NEAR(t.hi[1], 0.003, 1e-6);
+  EXPECT_NEAR(t.lo[2], -0.64, 1e-6);
+  size_t openings = 0;
+  for (const Element& e : layout.elements) openings += t.names.count(e.id);
+  EXPECT_EQ(openings, layout.elements.size());
+  // The top face's area is the sheet less its openings: sum the triangles facing +Y.
+  const auto& prim = m.meshes[0].primitives[0];
+  const auto& pos = m.accessors[prim.attributes.at("POSITION")];
+  const auto& view = m.bufferViews[pos.bufferView];
+  const float* p = reinterpret_cast<const float*>(m.buffers[0].data.data() + view.byteOffset);
+  const auto& ia = m.accessors[prim.indices];
+  const auto& iv = m.bufferViews[ia.bufferView];
+  const uint32_t* idx = reinterpret_cast<const uint32_t*>(m.buffers[0].data.data() + iv.byteOffset);
+  double top = 0;
+  for (size_t i = 0; i < ia.count; i += 3) {
+    const float* a = p + 3 * idx[i];
+    const float* b = p + 3 * idx[i + 1];
+    const float* c = p + 3 * idx[i + 2];
+    if (a[1] < 0.0029 || b[1] < 0.0029 || c[1] < 0.0029) continue;
+    top += 0.5 * std::fabs((b[0] - a[0]) * (c[2] - a[2]) - (c[0] - a[0]) * (b[2] - a[2]));
+  }
+  // Polygons inscribed in the circles make openings a little smaller: the sheet keeps more
+  // material than the exact circles leave, by at most perimeter x chord tolerance.
+  double open = 0, slack = 0;
+  for (const Element& e : layout.elements) {
+    open += e.area();
+    slack += 3.14159265358979 * 16 * spec.chord_tolerance * (e.circle ? 1 : 2);
+  }
+  EXPECT_GE(top * 1e6, 640.0 * 640.0 - open - 1e-3);
+  EXPECT_LE(top * 1e6, 640.0 * 640.0 - open + slack);
+}
+
+TEST(Gltf, BlocksLeaveOutTheFacesBetweenNeighbours) {
+  const Design d = test::design(2, 3, {{"7/8", "3/4", "3/4"}});
+  LayoutSpec spec;
+  spec.kind = LayoutKind::blocks;
+  spec.module_w = spec.module_h = 6000, spec.voxel_h = 3000;
+  const CurdField f = curdle(d, 3, d.field);
+  const Layout layout = make_layout(d, f, d.field, spec);
+  std::set<std::array<int64_t, 3>> solid;
+  for (const Element& e : layout.elements) solid.insert({e.cell_x, e.cell_y, e.cell_z});
+  uint64_t exposed = 0;
+  for (const auto& c : solid)
+    for (const auto& dv : {std::array<int, 3>{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}})
+      exposed += !solid.count({c[0] + dv[0], c[1] + dv[1], c[2] + dv[2]});
+  const Totals t = totals(read_back(layout, d, spec));
+  EXPECT_EQ(t.triangles, exposed * 2);
+  EXPECT_NEAR(t.hi[1], 24.0, 1e-6);  // eight storeys of 3 m
+}
+
+}  // namespace curdle

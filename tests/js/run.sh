@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Generates every pattern's layout.glb (and one .gltf + .bin), validates them all with the
+# Khronos glTF-Validator, and opens them in three.js in headless Chromium.
+# Usage: CURDLE=path/to/curdle run.sh SOURCE_DIR SCREENSHOT_DIR
+set -euo pipefail
+src=${1:?source dir}
+shots=${2:?screenshot dir}
+curdle=${CURDLE:?path to curdle}
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+models=()
+while IFS= read -r recipe; do
+  grep -q '^\[layout\]' "$recipe" || continue
+  out="$work/$(basename "$recipe" .toml)"
+  "$curdle" generate "$recipe" --out "$out" --outputs layout.glb > /dev/null
+  models+=("$out/layout.glb")
+done < <(find "$src/patterns" -name '*.toml' | sort)
+"$curdle" generate "$src/patterns/paper/fig3-two-curds.toml" --out "$work/as-gltf" --outputs layout.gltf > /dev/null
+cd "$here"
+node validate.mjs "${models[@]}" "$work/as-gltf/layout.gltf"
+node render.mjs "$shots" "${models[@]}"
+echo "gltf: ${#models[@]} models valid and rendered; screenshots in $shots"
