@@ -1,12 +1,12 @@
 #include "export/gltf.h"
 
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "curdle/error.h"
@@ -22,18 +22,27 @@ constexpr size_t kInstancesAbove = 20000;
 // Thickness of what is laid, in mm: what a viewer needs to read the layout as built.
 double thickness_of(const Layout& l, const LayoutSpec& spec) {
   switch (l.kind) {
-    case LayoutKind::paving: return 30;
-    case LayoutKind::tile: return 10;
-    case LayoutKind::facade: return 20;
-    case LayoutKind::rhythm: return 300;  // fins stand out of the wall
-    case LayoutKind::perforation: return spec.thickness;
-    case LayoutKind::park: return 30;
-    case LayoutKind::blocks: return spec.voxel_h;
+    case LayoutKind::paving:
+      return 30;
+    case LayoutKind::tile:
+      return 10;
+    case LayoutKind::facade:
+      return 20;
+    case LayoutKind::rhythm:
+      return 300;  // fins stand out of the wall
+    case LayoutKind::perforation:
+      return spec.thickness;
+    case LayoutKind::park:
+      return 30;
+    case LayoutKind::blocks:
+      return spec.voxel_h;
   }
   return 10;
 }
 
-bool upright(const Layout& l) { return l.kind == LayoutKind::facade || l.kind == LayoutKind::rhythm; }
+bool upright(const Layout& l) {
+  return l.kind == LayoutKind::facade || l.kind == LayoutKind::rhythm;
+}
 
 // Layout millimetres (x, y in the plane; up out of it) to glTF metres.
 Vec3 to_gltf(const Layout& l, double x, double y, double up) {
@@ -88,7 +97,8 @@ class ModelBuilder {
       a.maxValues = {-1e30, -1e30, -1e30};
       for (const Vec3& p : v)
         for (int i = 0; i < 3; ++i)
-          a.minValues[i] = std::min<double>(a.minValues[i], p[i]), a.maxValues[i] = std::max<double>(a.maxValues[i], p[i]);
+          a.minValues[i] = std::min<double>(a.minValues[i], p[i]),
+          a.maxValues[i] = std::max<double>(a.maxValues[i], p[i]);
     }
     model.accessors.push_back(a);
     return static_cast<int>(model.accessors.size() - 1);
@@ -107,7 +117,8 @@ class ModelBuilder {
   int add_material(const std::string& name, const Rgb& c, double metallic, double roughness) {
     tinygltf::Material m;
     m.name = name;
-    m.pbrMetallicRoughness.baseColorFactor = {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b), 1.0};
+    m.pbrMetallicRoughness.baseColorFactor = {srgb_to_linear(c.r), srgb_to_linear(c.g),
+                                              srgb_to_linear(c.b), 1.0};
     m.pbrMetallicRoughness.metallicFactor = metallic;
     m.pbrMetallicRoughness.roughnessFactor = roughness;
     model.materials.push_back(m);
@@ -115,7 +126,8 @@ class ModelBuilder {
   }
 
   // A triangle mesh; `positions` with their `normals`, triangles as index triples.
-  tinygltf::Primitive primitive(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+  tinygltf::Primitive primitive(const std::vector<Vec3>& positions,
+                                const std::vector<Vec3>& normals,
                                 const std::vector<uint32_t>& indices, int material) {
     tinygltf::Primitive p;
     p.attributes["POSITION"] = add_vec3(positions, true);
@@ -141,16 +153,19 @@ class ModelBuilder {
 };
 
 // Appends an axis-aligned box (glTF metres, min corner and size) with outward normals.
-void add_box(std::vector<Vec3>& pos, std::vector<Vec3>& nrm, std::vector<uint32_t>& idx, Vec3 lo, Vec3 size) {
+void add_box(std::vector<Vec3>& pos, std::vector<Vec3>& nrm, std::vector<uint32_t>& idx, Vec3 lo,
+             Vec3 size) {
   static const int faces[6][4][3] = {
       {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}, {{0, 0, 1}, {0, 1, 1}, {0, 1, 0}, {0, 0, 0}},
       {{0, 1, 0}, {0, 1, 1}, {1, 1, 1}, {1, 1, 0}}, {{0, 0, 1}, {0, 0, 0}, {1, 0, 0}, {1, 0, 1}},
       {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}, {{1, 0, 0}, {0, 0, 0}, {0, 1, 0}, {1, 1, 0}}};
-  static const Vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  static const Vec3 normals[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                  {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   for (int f = 0; f < 6; ++f) {
     const uint32_t base = static_cast<uint32_t>(pos.size());
     for (int v = 0; v < 4; ++v) {
-      pos.push_back({lo[0] + size[0] * faces[f][v][0], lo[1] + size[1] * faces[f][v][1], lo[2] + size[2] * faces[f][v][2]});
+      pos.push_back({lo[0] + size[0] * faces[f][v][0], lo[1] + size[1] * faces[f][v][1],
+                     lo[2] + size[2] * faces[f][v][2]});
       nrm.push_back(normals[f]);
     }
     for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) idx.push_back(base + i);
@@ -200,7 +215,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
     std::vector<Vec3> p, n;
     std::vector<uint32_t> i;
     add_box(p, n, i, {-0.5f, -0.5f, -0.5f}, {1, 1, 1});
-    return box_mesh[mat] = b.add_mesh("box " + b.model.materials[mat].name, {b.primitive(p, n, i, mat)});
+    return box_mesh[mat] =
+               b.add_mesh("box " + b.model.materials[mat].name, {b.primitive(p, n, i, mat)});
   };
   auto box_node = [&](const Rect& r, double base, double height, int mat) {
     const auto [lo, size] = box_of(layout, r, base, height);
@@ -218,7 +234,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
 
   if (layout.kind == LayoutKind::paving || layout.kind == LayoutKind::tile) {
     // The bed the tiles lie in shows in the joints.
-    const int bed = b.add_material("joint", layout.joint > 0 ? layout.joint_colour : Rgb{200, 200, 200}, 0, 1);
+    const int bed =
+        b.add_material("joint", layout.joint > 0 ? layout.joint_colour : Rgb{200, 200, 200}, 0, 1);
     tinygltf::Node n = box_node(Rect{0, 0, layout.width, layout.height}, -5, t * 0.8 + 5, bed);
     n.name = "bed";
     roots.push_back(b.add_node(std::move(n)));
@@ -226,7 +243,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
 
   if (sheet) {
     // The sheet: one solid whose openings are its holes, triangulated with CGAL.
-    std::vector<Ring> rings{{{0, 0}, {layout.width, 0}, {layout.width, layout.height}, {0, layout.height}}};
+    std::vector<Ring> rings{
+        {{0, 0}, {layout.width, 0}, {layout.width, layout.height}, {0, layout.height}}};
     for (const Element& e : layout.elements) {
       if (e.circle) rings.push_back(polygonise(*e.circle, spec.chord_tolerance));
       if (e.outline) rings.insert(rings.end(), e.outline->rings.begin(), e.outline->rings.end());
@@ -249,7 +267,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
       const Ring& ring = rings[r];
       double area = 0;
       for (size_t i = 0; i < ring.size(); ++i)
-        area += ring[i][0] * ring[(i + 1) % ring.size()][1] - ring[(i + 1) % ring.size()][0] * ring[i][1];
+        area += ring[i][0] * ring[(i + 1) % ring.size()][1] -
+                ring[(i + 1) % ring.size()][0] * ring[i][1];
       const bool outer = r == 0;
       const bool ccw = area > 0;
       for (size_t i = 0; i < ring.size(); ++i) {
@@ -259,7 +278,10 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
         if (len == 0) continue;
         const Vec3 normal = to_gltf(layout, dy / len * 1000, -dx / len * 1000, 0);
         const uint32_t base = static_cast<uint32_t>(p.size());
-        for (const auto& [x, y, up] : {std::array<double, 3>{a[0], a[1], 0}, {c[0], c[1], 0}, {c[0], c[1], t}, {a[0], a[1], t}}) {
+        for (const auto& [x, y, up] : {std::array<double, 3>{a[0], a[1], 0},
+                                       {c[0], c[1], 0},
+                                       {c[0], c[1], t},
+                                       {a[0], a[1], t}}) {
           p.push_back(to_gltf(layout, x, y, up));
           n.push_back(normal);
         }
@@ -286,13 +308,15 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
     std::map<uint32_t, std::array<std::vector<Vec3>, 2>> geo;
     std::map<uint32_t, std::vector<uint32_t>> idx;
     const double w = spec.module_w, d = spec.module_h, h = spec.voxel_h;
-    static const int dirs[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const int dirs[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     for (const auto& [cell, value] : solid) {
       auto& [p, n] = geo[value];
       auto& ix = idx[value];
       std::vector<Vec3> bp, bn;
       std::vector<uint32_t> bi;
-      const double x = (cell[0] - layout.view.origin[0]) * w, y = (cell[1] - layout.view.origin[1]) * d,
+      const double x = (cell[0] - layout.view.origin[0]) * w,
+                   y = (cell[1] - layout.view.origin[1]) * d,
                    z = (cell[2] - layout.view.origin[2]) * h;
       const auto [lo, size] = box_of(layout, Rect{x, y, w, d}, z, h);
       add_box(bp, bn, bi, lo, size);
@@ -316,7 +340,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
     for (const Element& e : layout.elements) {
       tinygltf::Node v;
       const Vec3 c = to_gltf(layout, (e.cell_x - layout.view.origin[0] + 0.5) * w,
-                             (e.cell_y - layout.view.origin[1] + 0.5) * d, (e.cell_z - layout.view.origin[2] + 0.5) * h);
+                             (e.cell_y - layout.view.origin[1] + 0.5) * d,
+                             (e.cell_z - layout.view.origin[2] + 0.5) * h);
       v.translation = {c[0], c[1], c[2]};
       roots.push_back(named(e, std::move(v)));
     }
@@ -337,8 +362,10 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
         const int rings = 8, segments = 12;
         for (int a = 0; a <= rings; ++a)
           for (int s2 = 0; s2 <= segments; ++s2) {
-            const double th = 3.14159265358979 * a / rings, ph = 2 * 3.14159265358979 * s2 / segments;
-            const Vec3 dir{float(std::sin(th) * std::cos(ph)), float(std::cos(th)), float(std::sin(th) * std::sin(ph))};
+            const double th = 3.14159265358979 * a / rings,
+                         ph = 2 * 3.14159265358979 * s2 / segments;
+            const Vec3 dir{float(std::sin(th) * std::cos(ph)), float(std::cos(th)),
+                           float(std::sin(th) * std::sin(ph))};
             cp.push_back({dir[0] * r, 2.2f + r + dir[1] * r, dir[2] * r});
             cn.push_back(dir);
           }
@@ -347,7 +374,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
             const uint32_t q = a * (segments + 1) + s2, q2 = q + segments + 1;
             ci.insert(ci.end(), {q, q + 1, q2, q + 1, q2 + 1, q2});
           }
-        type_mesh[e.type] = b.add_mesh(e.type, {b.primitive(p, n, i, trunk), b.primitive(cp, cn, ci, mat)});
+        type_mesh[e.type] =
+            b.add_mesh(e.type, {b.primitive(p, n, i, trunk), b.primitive(cp, cn, ci, mat)});
       } else {
         type_mesh[e.type] = unit_box(mat);
       }
@@ -361,7 +389,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
       } else {
         const bool surface = e.shape.size() == 1 && e.shape[0].w >= e.nominal.w / 8 &&
                              std::fabs(e.shape[0].h - e.nominal.h) < 1e-6;
-        n = box_node(e.shape[0], surface ? 0 : t, surface ? t : 450, b.model.meshes[type_mesh[e.type]].primitives[0].material);
+        n = box_node(e.shape[0], surface ? 0 : t, surface ? t : 450,
+                     b.model.meshes[type_mesh[e.type]].primitives[0].material);
       }
       roots.push_back(named(e, std::move(n)));
     }
@@ -373,7 +402,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
     for (const Element& e : layout.elements) {
       if (instanced && !e.cut && e.shape.size() == 1) {
         const auto [lo, size] = box_of(layout, e.shape[0], 0, t);
-        instances[e.value].first.push_back({lo[0] + size[0] / 2, lo[1] + size[1] / 2, lo[2] + size[2] / 2});
+        instances[e.value].first.push_back(
+            {lo[0] + size[0] / 2, lo[1] + size[1] / 2, lo[2] + size[2] / 2});
         instances[e.value].second.push_back(size);
         instance_ids[e.value].push_back(tinygltf::Value(e.id));
         continue;
@@ -383,7 +413,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
         continue;
       }
       tinygltf::Node parent;  // a cut element in pieces: the pieces are its children
-      for (const Rect& r : e.shape) parent.children.push_back(b.add_node(box_node(r, 0, t, material[e.value])));
+      for (const Rect& r : e.shape)
+        parent.children.push_back(b.add_node(box_node(r, 0, t, material[e.value])));
       roots.push_back(named(e, std::move(parent)));
     }
     for (auto& [value, tr] : instances) {
@@ -426,8 +457,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
 
 }  // namespace
 
-void write_glb(std::ostream& out, const Layout& layout, const Design& design, const TitleBlock& title,
-               const LayoutSpec& spec) {
+void write_glb(std::ostream& out, const Layout& layout, const Design& design,
+               const TitleBlock& title, const LayoutSpec& spec) {
   tinygltf::Model model = build(layout, design, title, spec);
   tinygltf::TinyGLTF writer;
   if (!writer.WriteGltfSceneToStream(&model, out, false, true))

@@ -85,6 +85,23 @@ std::string sheet_line(const Layout& layout, const LayoutSpec& spec) {
                      spec.fix == HoleFix::drop && !layout.violations.empty() ? " (dropped)" : "");
 }
 
+// A rectangle of merged elements, from the first to the last of the run (see svg.h).
+void write_merged(std::ostream& out, const Sheet& s, const Layout& layout,
+                  const std::vector<const Element*>& at, const GridRect& g) {
+  const Element& a = *at[static_cast<size_t>(g.row0 * layout.columns + g.column0)];
+  const Element& b = *at[static_cast<size_t>(g.row1 * layout.columns + g.column1)];
+  const double x0 = std::min(a.nominal.x, b.nominal.x),
+               x1 = std::max(a.nominal.right(), b.nominal.right());
+  const double y0 = std::min(a.nominal.y, b.nominal.y),
+               y1 = std::max(a.nominal.top(), b.nominal.top());
+  const uint64_t count = static_cast<uint64_t>((g.row1 - g.row0 + 1) * (g.column1 - g.column0 + 1));
+  out << fmt::format(
+      "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" data-elements=\"{}{}\" "
+      "data-count=\"{}\"/>\n",
+      mm(s.x(x0)), mm(s.y(y0, y1 - y0)), mm(x1 - x0), mm(y1 - y0), a.id,
+      count > 1 ? ":" + b.id : std::string(), count);
+}
+
 std::string rect_path(const Sheet& s, const Rect& r) {
   return fmt::format("M{} {}h{}v{}h{}z", mm(s.x(r.x)), mm(s.y(r.y, r.h)), mm(r.w), mm(r.h),
                      mm(-r.w));
@@ -236,19 +253,7 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
               : "");
     }
     for (const GridRect& g : merge_runs(grid, layout.rows, layout.columns)) {
-      const Element& a = *at[static_cast<size_t>(g.row0 * layout.columns + g.column0)];
-      const Element& b = *at[static_cast<size_t>(g.row1 * layout.columns + g.column1)];
-      const double x0 = std::min(a.nominal.x, b.nominal.x),
-                   x1 = std::max(a.nominal.right(), b.nominal.right());
-      const double y0 = std::min(a.nominal.y, b.nominal.y),
-                   y1 = std::max(a.nominal.top(), b.nominal.top());
-      const uint64_t count =
-          static_cast<uint64_t>((g.row1 - g.row0 + 1) * (g.column1 - g.column0 + 1));
-      out << fmt::format(
-          "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" data-elements=\"{}{}\" "
-          "data-count=\"{}\"/>\n",
-          mm(s.x(x0)), mm(s.y(y0, y1 - y0)), mm(x1 - x0), mm(y1 - y0), a.id,
-          count > 1 ? ":" + b.id : std::string(), count);
+      write_merged(out, s, layout, at, g);
     }
     out << "</g>\n";
   }
@@ -281,19 +286,7 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
         entry.value, entry.value, escape(entry.label), entry.count, fill);
     for (; next < merged.size() && merged[next].value == static_cast<int>(entry.value); ++next) {
       const GridRect& g = merged[next];
-      const Element& a = *at[static_cast<size_t>(g.row0 * layout.columns + g.column0)];
-      const Element& b = *at[static_cast<size_t>(g.row1 * layout.columns + g.column1)];
-      const double x0 = std::min(a.nominal.x, b.nominal.x),
-                   x1 = std::max(a.nominal.right(), b.nominal.right());
-      const double y0 = std::min(a.nominal.y, b.nominal.y),
-                   y1 = std::max(a.nominal.top(), b.nominal.top());
-      const uint64_t count =
-          static_cast<uint64_t>((g.row1 - g.row0 + 1) * (g.column1 - g.column0 + 1));
-      out << fmt::format(
-          "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" data-elements=\"{}{}\" "
-          "data-count=\"{}\"/>\n",
-          mm(s.x(x0)), mm(s.y(y0, y1 - y0)), mm(x1 - x0), mm(y1 - y0), a.id,
-          count > 1 ? ":" + b.id : std::string(), count);
+      write_merged(out, s, layout, at, g);
     }
     for (const Element* e : cut[entry.value]) {
       std::string d;

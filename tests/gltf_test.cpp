@@ -1,4 +1,6 @@
 // glTF export read back with tinygltf: what the file holds matches the layout, names and all.
+#include "export/gltf.h"
+
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
@@ -9,7 +11,6 @@
 #include <sstream>
 
 #include "curdle/curdling.h"
-#include "export/gltf.h"
 #include "export/svg.h"
 #include "layout/builder.h"
 #include "test_support.h"
@@ -24,7 +25,8 @@ tinygltf::Model read_back(const Layout& layout, const Design& d, const LayoutSpe
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   std::string err, warn;
-  EXPECT_TRUE(loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+  EXPECT_TRUE(loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                          reinterpret_cast<const unsigned char*>(bytes.data()),
                                           static_cast<unsigned>(bytes.size())))
       << err;
   EXPECT_TRUE(warn.empty()) << warn;
@@ -38,7 +40,8 @@ struct Totals {
 };
 
 // Walks the scene applying each node's translation and scale (the exporter uses no rotation).
-void walk(const tinygltf::Model& m, int index, std::array<double, 3> offset, std::array<double, 3> scale, Totals& t) {
+void walk(const tinygltf::Model& m, int index, std::array<double, 3> offset,
+          std::array<double, 3> scale, Totals& t) {
   const tinygltf::Node& n = m.nodes[index];
   if (!n.name.empty()) t.names.insert(n.name);
   std::array<double, 3> o = offset, s = scale;
@@ -83,7 +86,7 @@ TEST(Gltf, PavingReadsBackWithItsElementsMaterialsAndExtent) {
   std::set<std::string> element_names;
   for (const auto& n : t.names)
     if (ids.count(n)) element_names.insert(n);
-  EXPECT_EQ(element_names, ids);                          // every element is a named node
+  EXPECT_EQ(element_names, ids);                              // every element is a named node
   EXPECT_EQ(t.triangles, (layout.elements.size() + 1) * 12);  // boxes, and the bed
   EXPECT_EQ(m.materials.size(), layout.legend.size() + 1);    // a value each, and the joints
   EXPECT_NEAR(t.lo[0], 0, 1e-6);                              // metres, the floor on XZ
@@ -106,7 +109,8 @@ TEST(Gltf, PavingReadsBackWithItsElementsMaterialsAndExtent) {
       svg_ids.insert(first);
       continue;
     }
-    const int r0 = std::stoi(first.substr(3, first.find("-C") - 3)), c0 = std::stoi(first.substr(first.find("-C") + 2));
+    const int r0 = std::stoi(first.substr(3, first.find("-C") - 3)),
+              c0 = std::stoi(first.substr(first.find("-C") + 2));
     const int r1 = std::stoi((*it)[4]), c1 = std::stoi((*it)[5]);
     for (const Element& e : layout.elements)
       if (e.row >= r0 && e.row <= r1 && e.column >= c0 && e.column <= c1) svg_ids.insert(e.id);
@@ -189,7 +193,8 @@ TEST(Gltf, BlocksLeaveOutTheFacesBetweenNeighbours) {
   for (const Element& e : layout.elements) solid.insert({e.cell_x, e.cell_y, e.cell_z});
   uint64_t exposed = 0;
   for (const auto& c : solid)
-    for (const auto& dv : {std::array<int, 3>{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}})
+    for (const auto& dv :
+         {std::array<int, 3>{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}})
       exposed += !solid.count({c[0] + dv[0], c[1] + dv[1], c[2] + dv[2]});
   const Totals t = totals(read_back(layout, d, spec));
   EXPECT_EQ(t.triangles, exposed * 2);

@@ -2,9 +2,9 @@
 // Exceptions become exit codes here and only here: 2 for bad input, 1 for internal failure.
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <fstream>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <set>
@@ -31,9 +31,8 @@ namespace curdle::cli {
 namespace {
 
 constexpr uint64_t kCellsCsvDefaultLimit = 10'000'000;
-const std::vector<std::string> kOutputs = {"report.json", "cells.csv",  "preview.png",
-                                           "layout.svg",  "layout.png", "layout.glb",
-                                           "layout.gltf"};
+const std::vector<std::string> kOutputs = {"report.json", "cells.csv",  "preview.png", "layout.svg",
+                                           "layout.png",  "layout.glb", "layout.gltf"};
 
 std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
   std::set<std::string> chosen;
@@ -42,10 +41,11 @@ std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
       for (const auto& o : kOutputs)
         if (o.rfind(n + ".", 0) == 0) n = o;
     if (std::find(kOutputs.begin(), kOutputs.end(), n) == kOutputs.end())
-      throw InputError(SourceLocation{"--outputs", 0, 0, ""},
-                       "unknown output '" + n +
-                           "'; allowed: report.json, cells.csv, preview.png, and with a [layout] "
-                           "section layout.svg, layout.png, layout.glb, layout.gltf (with layout.bin)");
+      throw InputError(
+          SourceLocation{"--outputs", 0, 0, ""},
+          "unknown output '" + n +
+              "'; allowed: report.json, cells.csv, preview.png, and with a [layout] "
+              "section layout.svg, layout.png, layout.glb, layout.gltf (with layout.bin)");
     chosen.insert(n);
   }
   return chosen;
@@ -141,8 +141,9 @@ int generate(const CommonOptions& common, const std::string& out_dir,
       write_png_at(stage("layout.png").temporary(), render_layout(layout, spec), spec.dpi);
     const TitleBlock title{s.recipe.design.name, s.recipe.description, s.seed};
     if (outputs.count("layout.glb"))
-      stage("layout.glb").write(
-          [&](std::ostream& o) { write_glb(o, layout, s.recipe.design, title, spec); });
+      stage("layout.glb").write([&](std::ostream& o) {
+        write_glb(o, layout, s.recipe.design, title, spec);
+      });
     if (outputs.count("layout.gltf")) {
       StagedFile& bin = stage("layout.bin");
       std::ofstream bin_out(bin.temporary(), std::ios::binary | std::ios::trunc);

@@ -78,6 +78,24 @@ std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec) {
           static_cast<int64_t>(std::ceil(spec.size->at(1) / pitch_h - 1e-9))};
 }
 
+std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spec) {
+  const std::vector<Rgb> blend = value_colours(design.curds);
+  std::vector<LegendEntry> legend(blend.size());
+  for (uint32_t v = 0; v < blend.size(); ++v) {
+    LegendEntry& entry = legend[v];
+    entry.value = v;
+    entry.label = value_label(v, design.curds);
+    entry.colour =
+        v < spec.value_colours.size() && spec.value_colours[v] ? *spec.value_colours[v] : blend[v];
+    if (spec.combine == Combine::keep) {
+      for (size_t c = 0; c < design.curds.size(); ++c)
+        if (v >> c & 1) entry.parts.push_back(curd_colour(design.curds, c));
+      if (entry.parts.empty()) entry.parts.push_back(entry.colour);
+    }
+  }
+  return legend;
+}
+
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec) {
   if (spec.kind == LayoutKind::blocks) return stack_blocks(design, field, view, spec);
@@ -147,20 +165,7 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
     layout.notes.push_back(std::to_string(slivers) + " edge pieces are narrower than a quarter " +
                            layout.element_type + "; consider another origin corner or size");
 
-  const std::vector<Rgb> blend = value_colours(design.curds);
-  layout.legend.resize(blend.size());
-  for (uint32_t v = 0; v < blend.size(); ++v) {
-    LegendEntry& entry = layout.legend[v];
-    entry.value = v;
-    entry.label = value_label(v, design.curds);
-    entry.colour =
-        v < spec.value_colours.size() && spec.value_colours[v] ? *spec.value_colours[v] : blend[v];
-    if (spec.combine == Combine::keep) {
-      for (size_t c = 0; c < design.curds.size(); ++c)
-        if (v >> c & 1) entry.parts.push_back(curd_colour(design.curds, c));
-      if (entry.parts.empty()) entry.parts.push_back(entry.colour);
-    }
-  }
+  layout.legend = make_legend(design, spec);
   for (const Element& e : layout.elements) ++layout.legend[e.value].count;
   if (spec.kind == LayoutKind::perforation) perforate(layout, design, spec);
   if (spec.kind == LayoutKind::park) plant(layout, design, spec);

@@ -13,6 +13,10 @@ namespace curdle {
 // Elements along x and y that cover the spec's floor or wall: those that start inside it.
 std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec);
 
+// One legend entry per value: label, colour (the spec's, or the blend of the curds'), and in
+// keep mode the colours shown side by side. Counts are left at zero.
+std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spec);
+
 // The layout of `view` (a 2-D box of cells). Throws InputError for specs that cannot be laid.
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec);

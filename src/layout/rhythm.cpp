@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "curdle/overlay.h"
-#include "curdle/palette.h"
+#include "layout/builder.h"
 
 namespace curdle {
 
@@ -80,18 +80,10 @@ Layout stack_blocks(const Design& design, const CurdField& field, const Box& vie
   layout.captions = {{"plan (top-most block of each column)", Rect{0, 0, plan_w, plan_h}},
                      {"elevation (from the front, y = 0)", Rect{plan_w + gap, 0, plan_w, elev_h}}};
 
-  const std::vector<Rgb> blend = value_colours(design.curds);
-  layout.legend.resize(blend.size());
-  for (uint32_t v = 0; v < blend.size(); ++v) {
-    LegendEntry& entry = layout.legend[v];
-    entry.value = v;
-    entry.label = value_label(v, design.curds);
-    entry.colour =
-        v < spec.value_colours.size() && spec.value_colours[v] ? *spec.value_colours[v] : blend[v];
-  }
+  layout.legend = make_legend(design, spec);
   const std::vector<uint64_t> counts =
       value_counts(field.generated == view ? field : restrict_to(field, view));
-  for (uint32_t v = 0; v < blend.size(); ++v) layout.legend[v].count = counts[v];
+  for (uint32_t v = 0; v < counts.size(); ++v) layout.legend[v].count = counts[v];
   return layout;
 }
 

@@ -397,14 +397,20 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
 }
 
-std::optional<LayoutSpec> read_line_or_stack(TableReader& r, Design& design, LayoutSpec spec,
-                                             bool field_given) {
+// layout.colours: exactly one "#rrggbb" per value, value 0 first.
+void read_value_colours(TableReader& r, const Design& design, LayoutSpec& spec) {
   const size_t values = size_t{1} << design.curds.size();
   if (const toml::node* n = r.get("colours")) {
     const toml::array* a = n->as_array();
-    if (!a || a->size() != values)
-      r.fail("colours",
-             "must give one colour \"#rrggbb\" per value: " + std::to_string(values) + " values");
+    if (!a) r.fail("colours", "must be an array of colours \"#rrggbb\", one per value");
+    if (a->size() < values)
+      r.fail("colours", "gives " + std::to_string(a->size()) + " colours for " +
+                            std::to_string(values) + " values (2^" +
+                            std::to_string(design.curds.size()) +
+                            " curds); give one per value, value 0 first");
+    if (a->size() > values)
+      r.fail("colours", "gives " + std::to_string(a->size()) + " colours but there are only " +
+                            std::to_string(values) + " values");
     for (size_t v = 0; v < a->size(); ++v) {
       const auto text = a->get(v)->value<std::string>();
       const auto colour = text ? parse_colour(*text) : std::nullopt;
@@ -414,6 +420,12 @@ std::optional<LayoutSpec> read_line_or_stack(TableReader& r, Design& design, Lay
       spec.value_colours.push_back(colour);
     }
   }
+}
+
+std::optional<LayoutSpec> read_line_or_stack(TableReader& r, Design& design, LayoutSpec spec,
+                                             bool field_given) {
+  const size_t values = size_t{1} << design.curds.size();
+  read_value_colours(r, design, spec);
   spec.scale = read_mm(r, "scale", 0, 1);
   spec.dpi = read_mm(r, "dpi", 150, 10);
   if (spec.kind == LayoutKind::blocks) {
@@ -631,27 +643,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   else
     r.fail("origin", "must be \"bottom-left\", \"bottom-right\", \"top-left\" or \"top-right\"");
 
-  const size_t values = size_t{1} << design.curds.size();
-  if (const toml::node* n = r.get("colours")) {
-    const toml::array* a = n->as_array();
-    if (!a) r.fail("colours", "must be an array of colours \"#rrggbb\", one per value");
-    if (a->size() < values)
-      r.fail("colours", "gives " + std::to_string(a->size()) + " colours for " +
-                            std::to_string(values) + " values (2^" +
-                            std::to_string(design.curds.size()) +
-                            " curds); give one per value, value 0 first");
-    if (a->size() > values)
-      r.fail("colours", "gives " + std::to_string(a->size()) + " colours but there are only " +
-                            std::to_string(values) + " values");
-    for (size_t v = 0; v < a->size(); ++v) {
-      const auto text = a->get(v)->value<std::string>();
-      const auto colour = text ? parse_colour(*text) : std::nullopt;
-      if (!colour)
-        r.fail_node(*a->get(v), "layout.colours." + std::to_string(v),
-                    "must be a colour written \"#rrggbb\"");
-      spec.value_colours.push_back(colour);
-    }
-  }
+  read_value_colours(r, design, spec);
   if (auto c = read_string(r, "joint_colour", "a colour written \"#rrggbb\"")) {
     const auto colour = parse_colour(*c);
     if (!colour) r.fail("joint_colour", "must be a colour written \"#rrggbb\"");
