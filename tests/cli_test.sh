@@ -84,6 +84,10 @@ mkdir -p "$work/blocked/cells.csv"
 expect 2 "cannot write" generate "$fig3" --out "$work/blocked"
 [ "$(ls -A "$work/blocked")" = "cells.csv" ] && pass || fail "blocked run left: $(ls -A "$work/blocked" | tr '\n' ' ')"
 
+# A window of a layout with a fixed floor is refused, not drawn out of place.
+expect 2 "a window cannot be laid out" generate "$src/patterns/paper/fig7-paving-20m.toml" --window 10,10,20,20 --out "$work/win-floor"
+[ ! -e "$work/win-floor/layout.svg" ] && pass || fail "a refused window left layout.svg"
+
 # 4. Overrides and windows.
 expect 0 "outputs in" generate "$fig3" --set lattice.mode=exact \
   --set 'curds.0.probabilities=["3/4","1/2"]' --set 'curds.1.probabilities=["1/2","1/2"]' --out "$work/set"

@@ -98,6 +98,12 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
 
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec) {
+  // A fixed floor, wall, sheet or line is laid from its own origin; a window of it would land
+  // out of place and be cut at the wrong edges, so it is refused rather than drawn wrong.
+  if (spec.size && !(view == design.field))
+    throw InputError(
+        "a window cannot be laid out on a layout of fixed size (layout.floor, wall, sheet, area "
+        "or length): leave out the window, or leave out the size and give field.cells instead");
   if (spec.kind == LayoutKind::blocks) return stack_blocks(design, field, view, spec);
   const int dimension = spec.kind == LayoutKind::rhythm ? 1 : 2;
   if (design.lattice.dimension != dimension)
