@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "curdle/error.h"
+#include "export/svg.h"
 
 namespace curdle {
 namespace {
@@ -127,7 +128,7 @@ PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec) {
   const bool sheet = layout.kind == LayoutKind::perforation;
   const Rgb background = sheet              ? Rgb{201, 205, 210}
                          : layout.joint > 0 ? layout.joint_colour
-                                            : Rgb{255, 255, 255};
+                                            : seamless_background(layout);
   canvas.rgb.assign(static_cast<size_t>(canvas.width) * canvas.height * 3, 0.f);
   for (size_t i = 0; i < canvas.rgb.size(); i += 3)
     canvas.rgb[i] = background.r, canvas.rgb[i + 1] = background.g,

@@ -450,6 +450,18 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Desi
 
 }  // namespace
 
+Rgb seamless_background(const Layout& layout) {
+  // With no joints, adjacent shapes meet edge to edge and antialiasing can let the background
+  // through the seam: the most common value's colour hides it. Lines and blocks stay on white.
+  if (layout.combine != Combine::mix || layout.kind == LayoutKind::rhythm ||
+      layout.kind == LayoutKind::blocks || layout.kind == LayoutKind::park)
+    return Rgb{255, 255, 255};
+  const LegendEntry* most = nullptr;
+  for (const LegendEntry& e : layout.legend)
+    if (!most || e.count > most->count) most = &e;
+  return most ? most->colour : Rgb{255, 255, 255};
+}
+
 void write_layout_svg(std::ostream& out, const Layout& layout, const Design& design,
                       const TitleBlock& title, const LayoutSpec& spec) {
   const double W = layout.width, H = layout.height;
@@ -505,7 +517,7 @@ void write_layout_svg(std::ostream& out, const Layout& layout, const Design& des
       sheet ? "sheet" : "joint", mm(s.x(0)), mm(s.y(0, H)), mm(W), mm(H),
       sheet              ? std::string("#c9cdd2")
       : layout.joint > 0 ? hex(layout.joint_colour)
-                         : std::string("#ffffff"),
+                         : hex(seamless_background(layout)),
       sheet ? fmt::format(" stroke=\"#222\" stroke-width=\"{}\"", mm(unit * 0.05)) : "");
 
   if (layout.kind == LayoutKind::perforation || layout.kind == LayoutKind::rhythm) {

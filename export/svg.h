@@ -24,6 +24,9 @@ struct TitleBlock {
   uint64_t seed = 0;
 };
 
+// The background that hides seams between jointless elements: the most common value's colour.
+Rgb seamless_background(const Layout& layout);
+
 void write_layout_svg(std::ostream& out, const Layout& layout, const Design& design,
                       const TitleBlock& title, const LayoutSpec& spec);
 
