@@ -40,7 +40,9 @@ while IFS= read -r recipe; do
   done
   # Recipes with a [layout] also draw it; the SVG parses in a real XML parser.
   if grep -q '^\[layout\]' "$recipe"; then
-    [ -s "$out/layout.png" ] && pass || fail "$recipe: layout.png missing"
+    for f in layout.png layout.glb schedule.csv quantities.csv; do
+      [ -s "$out/$f" ] && pass || fail "$recipe: $f missing"
+    done
     xmllint --noout --huge "$out/layout.svg" && pass || fail "$recipe: layout.svg does not parse"
   fi
 done < <(find "$src/patterns" -name '*.toml' | sort)

@@ -22,6 +22,7 @@
 #include "export/preview_png.h"
 #include "export/report_json.h"
 #include "export/report_table.h"
+#include "export/schedule.h"
 #include "export/svg.h"
 #include "layout/builder.h"
 
@@ -31,8 +32,9 @@ namespace curdle::cli {
 namespace {
 
 constexpr uint64_t kCellsCsvDefaultLimit = 10'000'000;
-const std::vector<std::string> kOutputs = {"report.json", "cells.csv",  "preview.png", "layout.svg",
-                                           "layout.png",  "layout.glb", "layout.gltf"};
+const std::vector<std::string> kOutputs = {"report.json", "cells.csv",    "preview.png",
+                                           "layout.svg",  "layout.png",   "layout.glb",
+                                           "layout.gltf", "schedule.csv", "quantities.csv"};
 
 std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
   std::set<std::string> chosen;
@@ -45,7 +47,8 @@ std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
           SourceLocation{"--outputs", 0, 0, ""},
           "unknown output '" + n +
               "'; allowed: report.json, cells.csv, preview.png, and with a [layout] "
-              "section layout.svg, layout.png, layout.glb, layout.gltf (with layout.bin)");
+              "section layout.svg, layout.png, layout.glb, layout.gltf (with layout.bin), "
+              "schedule.csv, quantities.csv");
     chosen.insert(n);
   }
   return chosen;
@@ -60,7 +63,8 @@ int generate(const CommonOptions& common, const std::string& out_dir,
   if (outputs_named.empty()) outputs.erase("layout.gltf");  // .glb by default; .gltf on request
   const bool has_layout = s.recipe.layout.has_value();
   if (!has_layout) {
-    for (const char* name : {"layout.svg", "layout.png", "layout.glb", "layout.gltf"})
+    for (const char* name : {"layout.svg", "layout.png", "layout.glb", "layout.gltf",
+                             "schedule.csv", "quantities.csv"})
       if (outputs.erase(name) && !outputs_named.empty())
         throw InputError(
             SourceLocation{common.recipe_path, 0, 0, "layout"},
@@ -140,6 +144,14 @@ int generate(const CommonOptions& common, const std::string& out_dir,
     if (outputs.count("layout.png"))
       write_png_at(stage("layout.png").temporary(), render_layout(layout, spec), spec.dpi);
     const TitleBlock title{s.recipe.design.name, s.recipe.description, s.seed};
+    if (outputs.count("schedule.csv"))
+      stage("schedule.csv").write([&](std::ostream& o) {
+        write_schedule_csv(o, layout, s.recipe.design, spec);
+      });
+    if (outputs.count("quantities.csv"))
+      stage("quantities.csv").write([&](std::ostream& o) {
+        write_quantities_csv(o, layout, spec);
+      });
     if (outputs.count("layout.glb"))
       stage("layout.glb").write([&](std::ostream& o) {
         write_glb(o, layout, s.recipe.design, title, spec);

@@ -99,6 +99,12 @@ struct LayoutSpec {
   std::vector<double> widths;  // per value, mm; 0: no element
   // Blocks (E = 3): voxels of module_w x module_h (plan) x voxel_h (storey).
   double voxel_h = 3000;
+  // Ordering: spare share added to each quantity, elements per pack, and lots in laying order
+  // (a number of elements, e.g. a pallet, or a number of rows, e.g. a floor; 0: one lot).
+  double spare = 0;
+  int64_t pack = 1;
+  int64_t lot_size = 0;
+  int64_t lot_rows = 0;
   double scale = 0;  // layout.png drawing scale 1 : scale; 0 picks one
   double dpi = 150;
 };

@@ -397,6 +397,21 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
 }
 
+// Ordering: the spare share, pack size and lots of the schedules.
+void read_ordering(TableReader& r, LayoutSpec& spec) {
+  if (const toml::node* n = r.get("spare")) {
+    const auto v = n->value<double>();
+    if (!v || !std::isfinite(*v) || *v < 0 || *v > 10)
+      r.fail("spare", "must be a share from 0 to 10, e.g. 0.05 for 5 % spare; not negative");
+    spec.spare = *v;
+  }
+  spec.pack = read_int(r, "pack", 1, 1, 1000000);
+  spec.lot_size = read_int(r, "lot_size", 0, 0, INT64_MAX);
+  spec.lot_rows = read_int(r, "lot_rows", 0, 0, INT64_MAX);
+  if (spec.lot_size && spec.lot_rows)
+    r.fail("lot_rows", "give lots either by size (lot_size) or by rows (lot_rows), not both");
+}
+
 // layout.colours: exactly one "#rrggbb" per value, value 0 first.
 void read_value_colours(TableReader& r, const Design& design, LayoutSpec& spec) {
   const size_t values = size_t{1} << design.curds.size();
@@ -562,8 +577,9 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
       top.fail_node(*k, "layout.kind", "must be \"tile\", \"paving\" or \"facade\"");
     kind = *k->value<std::string>();
   }
-  std::vector<std::string> keys{"kind",         "combine",    "joint",     "origin", "colours",
-                                "joint_colour", "stage_grid", "highlight", "scale",  "dpi"};
+  std::vector<std::string> keys{"kind",         "combine",    "joint",     "origin",  "colours",
+                                "joint_colour", "stage_grid", "highlight", "scale",   "dpi",
+                                "spare",        "pack",       "lot_size",  "lot_rows"};
   std::string module_key, size_key;
   if (kind == "tile") {
     spec.kind = LayoutKind::tile;
@@ -583,11 +599,11 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     keys.erase(std::find(keys.begin(), keys.end(), "joint"));
   } else if (kind == "rhythm") {
     spec.kind = LayoutKind::rhythm;
-    keys = {"kind",    "bay",    "height",    "length", "widths",
-            "colours", "origin", "highlight", "scale",  "dpi"};
+    keys = {"kind",      "bay",   "height", "length", "widths", "colours",  "origin",
+            "highlight", "scale", "dpi",    "spare",  "pack",   "lot_size", "lot_rows"};
   } else if (kind == "blocks") {
     spec.kind = LayoutKind::blocks;
-    keys = {"kind", "voxel", "colours", "scale", "dpi"};
+    keys = {"kind", "voxel", "colours", "scale", "dpi", "spare", "pack", "lot_size", "lot_rows"};
   } else if (kind == "park") {
     spec.kind = LayoutKind::park;
     module_key = "cell", size_key = "area";
@@ -602,6 +618,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   if (!module_key.empty()) keys.push_back(module_key);
   if (!size_key.empty()) keys.push_back(size_key);
   TableReader r(*t, "layout", top.source(), keys);
+  read_ordering(r, spec);
   const int dimension = spec.kind == LayoutKind::rhythm   ? 1
                         : spec.kind == LayoutKind::blocks ? 3
                                                           : 2;

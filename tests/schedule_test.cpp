@@ -1,0 +1,107 @@
+// Schedules: strict CSV, quantities add up to the schedule, counts per value match the report.
+#include "export/schedule.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "curdle/curdling.h"
+#include "curdle/overlay.h"
+#include "layout/builder.h"
+#include "test_support.h"
+
+namespace curdle {
+namespace {
+
+// RFC 4180 rows: CRLF line ends, quoted fields may hold commas; every row as wide as the header.
+std::vector<std::vector<std::string>> strict_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows(1);
+  std::string cell;
+  bool quoted = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"')
+        cell += '"', ++i;
+      else if (c == '"')
+        quoted = false;
+      else
+        cell += c;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      rows.back().push_back(cell), cell.clear();
+    } else if (c == '\r') {
+      EXPECT_EQ(text[i + 1], '\n') << "CR without LF";
+      rows.back().push_back(cell), cell.clear();
+      rows.emplace_back();
+      ++i;
+    } else {
+      EXPECT_NE(c, '\n') << "bare LF";
+      cell += c;
+    }
+  }
+  EXPECT_TRUE(rows.back().empty() && cell.empty()) << "the last row must end in CRLF";
+  rows.pop_back();
+  for (size_t r = 1; r < rows.size(); ++r)
+    EXPECT_EQ(rows[r].size(), rows[0].size()) << "ragged row " << r;
+  return rows;
+}
+
+}  // namespace
+
+TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
+  Design d = test::design(4, 2, {{"3/4", "1/2", "1/2"}, {"1/2", "1/2", "1/2"}});
+  d.curds[0].name = "grey, light";  // a comma, to be quoted
+  LayoutSpec spec;
+  spec.kind = LayoutKind::paving;
+  spec.module_w = spec.module_h = 400, spec.joint = 5;
+  spec.size = std::array<double, 2>{12000, 8100};  // cut edge tiles
+  spec.value_colours = {Rgb{200, 200, 200}, Rgb{100, 100, 100}, Rgb{40, 40, 40}, Rgb{40, 40, 40}};
+  spec.spare = 0.05, spec.pack = 20, spec.lot_rows = 5;
+  const auto cells = elements_to_cover(spec);
+  d.field.size = {cells[0], cells[1], 1};
+  const CurdField f = curdle(d, 4, d.field);
+  const Layout layout = make_layout(d, f, d.field, spec);
+
+  std::ostringstream schedule, quantities;
+  write_schedule_csv(schedule, layout, d, spec);
+  write_quantities_csv(quantities, layout, spec);
+  const auto rows = strict_csv(schedule.str());
+  ASSERT_EQ(rows.size(), layout.elements.size() + 1);
+  EXPECT_EQ(rows[0][10], "grey, light");
+  std::map<int, uint64_t> per_value;
+  int64_t cut = 0, last_lot = 0;
+  double area = 0;
+  for (size_t r = 1; r < rows.size(); ++r) {
+    ++per_value[std::stoi(rows[r][9])];
+    cut += rows[r][15] == "1";
+    const int64_t lot = std::stoll(rows[r][1]);
+    EXPECT_EQ(lot, std::stoll(rows[r][2]) / 5 + 1);  // five rows a lot
+    EXPECT_GE(lot, last_lot);                        // lots follow the laying order
+    last_lot = lot;
+  }
+  for (const Element& e : layout.elements) area += e.area();
+  const auto counts = value_counts(f);
+  for (int v = 0; v < 4; ++v) EXPECT_EQ(per_value[v], counts[v]) << "value " << v;
+  EXPECT_GT(cut, 0);
+
+  const auto q = strict_csv(quantities.str());
+  ASSERT_EQ(q.size(), 4u);  // three colours: values 2 and 3 share one
+  uint64_t ordered = 0;
+  double ordered_area = 0;
+  for (size_t r = 1; r < q.size(); ++r) {
+    const uint64_t count = std::stoull(q[r][4]);
+    ordered += count;
+    ordered_area += std::stod(q[r][5]);
+    const uint64_t with_spare = std::stoull(q[r][7]);
+    EXPECT_EQ(with_spare, static_cast<uint64_t>(std::ceil(count * 1.05 - 1e-9)));
+    EXPECT_EQ(std::stoull(q[r][9]), (with_spare + 19) / 20);
+  }
+  EXPECT_EQ(ordered, layout.elements.size());
+  EXPECT_NEAR(ordered_area, area / 1e6, 1e-3);
+}
+
+}  // namespace curdle
