@@ -65,9 +65,12 @@ void write_schedule_csv(std::ostream& out, const Layout& layout, const Design& d
     }
     const double z =
         layout.kind == LayoutKind::blocks ? (e.cell_z - layout.view.origin[2]) * spec.voxel_h : 0;
-    fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{},{},{}", e.id,
-                   lot_of(e, i, spec), e.row, e.column, mm(e.nominal.x), mm(e.nominal.y), mm(z),
-                   mm(e.nominal.w), mm(e.nominal.h), e.value);
+    // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in.
+    const std::string lot = e.sheet >= 0 ? layout.sheets[static_cast<size_t>(e.sheet)].id
+                                         : std::to_string(lot_of(e, i, spec));
+    fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{},{},{}", e.id, lot, e.row,
+                   e.column, mm(e.nominal.x), mm(e.nominal.y), mm(z), mm(e.nominal.w),
+                   mm(e.nominal.h), e.value);
     for (size_t c = 0; c < design.curds.size(); ++c) buffer += (e.value >> c & 1) ? ",1" : ",0";
     fmt::format_to(std::back_inserter(buffer), ",{},{},{},{}", field(type_of(layout, e)),
                    hex(colour_of(layout, e)),

@@ -44,6 +44,10 @@ while IFS= read -r recipe; do
       [ -s "$out/$f" ] && pass || fail "$recipe: $f missing"
     done
     xmllint --noout --huge "$out/layout.svg" && pass || fail "$recipe: layout.svg does not parse"
+    if grep -q '^sheet_size' "$recipe"; then  # cutting files for every sheet
+      [ -n "$(ls "$out"/sheets/*.dxf 2>/dev/null)" ] && pass || fail "$recipe: no sheets/*.dxf"
+      for f in "$out"/sheets/*.svg; do xmllint --noout "$f" && pass || fail "$f does not parse"; done
+    fi
   fi
 done < <(find "$src/patterns" -name '*.toml' | sort)
 

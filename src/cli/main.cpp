@@ -16,6 +16,7 @@
 #include "curdle/report.h"
 #include "export/atomic_file.h"
 #include "export/cells_csv.h"
+#include "export/cutting.h"
 #include "export/gltf.h"
 #include "export/layout_png.h"
 #include "export/mask_image.h"
@@ -32,9 +33,9 @@ namespace curdle::cli {
 namespace {
 
 constexpr uint64_t kCellsCsvDefaultLimit = 10'000'000;
-const std::vector<std::string> kOutputs = {"report.json", "cells.csv",    "preview.png",
-                                           "layout.svg",  "layout.png",   "layout.glb",
-                                           "layout.gltf", "schedule.csv", "quantities.csv"};
+const std::vector<std::string> kOutputs = {
+    "report.json", "cells.csv",   "preview.png",  "layout.svg",     "layout.png",
+    "layout.glb",  "layout.gltf", "schedule.csv", "quantities.csv", "sheets"};
 
 std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
   std::set<std::string> chosen;
@@ -64,7 +65,7 @@ int generate(const CommonOptions& common, const std::string& out_dir,
   const bool has_layout = s.recipe.layout.has_value();
   if (!has_layout) {
     for (const char* name : {"layout.svg", "layout.png", "layout.glb", "layout.gltf",
-                             "schedule.csv", "quantities.csv"})
+                             "schedule.csv", "quantities.csv", "sheets"})
       if (outputs.erase(name) && !outputs_named.empty())
         throw InputError(
             SourceLocation{common.recipe_path, 0, 0, "layout"},
@@ -148,6 +149,17 @@ int generate(const CommonOptions& common, const std::string& out_dir,
       stage("schedule.csv").write([&](std::ostream& o) {
         write_schedule_csv(o, layout, s.recipe.design, spec);
       });
+    if (!layout.sheets.empty() && outputs.count("sheets")) {
+      make_output_dir(dir / "sheets");
+      for (size_t i = 0; i < layout.sheets.size(); ++i) {
+        const std::string id = layout.sheets[i].id;
+        write_sheet_dxf(stage("sheets/" + id + ".dxf").temporary(), layout, static_cast<int>(i));
+        stage("sheets/" + id + ".svg").write([&](std::ostream& o) {
+          write_sheet_svg(o, layout, static_cast<int>(i));
+        });
+      }
+      std::printf("sheets: %zu, each as DXF and SVG in sheets/\n", layout.sheets.size());
+    }
     if (outputs.count("quantities.csv"))
       stage("quantities.csv").write([&](std::ostream& o) {
         write_quantities_csv(o, layout, spec);

@@ -89,7 +89,8 @@ struct LayoutSpec {
   double min_bridge = 0;        // least material between two holes
   double edge_margin = 0;       // least material between a hole and the sheet edge
   HoleFix fix = HoleFix::none;
-  double chord_tolerance = 0.05;  // how far polygonised circles may stray, mm
+  double chord_tolerance = 0.05;                    // how far polygonised circles may stray, mm
+  std::optional<std::array<double, 2>> sheet_size;  // fabrication sheets at most this size
   // Park.
   std::vector<ParkElement> park;  // one per curd
   ParkElement ground{"white paving",    true, false, 0, 0,
@@ -121,6 +122,7 @@ struct Element {
   std::optional<Circle> circle;    // a round opening (perforation)
   std::optional<Outline> outline;  // merged openings cut as their union (perforation, keep)
   std::string type;                // park: the element type; empty for modules
+  int sheet = -1;                  // perforation: the fabrication sheet it is cut in
   Rgb colour;                      // park: the element's own colour
   double area() const;
 };
@@ -150,6 +152,12 @@ struct Layout {
   // Perforation: the sheet's open-area share, and what the fabrication rules found or changed.
   double open_area = 0;
   std::vector<std::string> violations;
+  // Perforation: the fabrication sheets the surface is cut into, row by row from the origin.
+  struct FabricationSheet {
+    std::string id;  // S-R1-C2: row and column of sheets
+    Rect area;
+  };
+  std::vector<FabricationSheet> sheets;
   std::vector<std::string> notes;  // what a builder should know (cut slivers, ...)
   Box view;                        // the cells laid, in field coordinates
   // Blocks: the drawing is a plan and an elevation of the voxels, side by side; each shape

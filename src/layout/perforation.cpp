@@ -132,6 +132,42 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
       }
   }
 
+  // Fabrication sheets: every opening keeps the edge margin inside its own sheet, so one that
+  // crosses a seam or comes within the margin of it is dropped (the stated rule), and reported.
+  if (spec.sheet_size) {
+    const double sw = (*spec.sheet_size)[0], sh = (*spec.sheet_size)[1];
+    const int nx = static_cast<int>(std::ceil(layout.width / sw - 1e-9));
+    const int ny = static_cast<int>(std::ceil(layout.height / sh - 1e-9));
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        layout.sheets.push_back({fmt::format("S-R{}-C{}", j + 1, i + 1),
+                                 Rect{i * sw, j * sh, std::min(sw, layout.width - i * sw),
+                                      std::min(sh, layout.height - j * sh)}});
+    for (Hole& h : holes) {
+      if (h.dropped) continue;
+      const Circle& first = h.parts.front();
+      const int i = std::clamp(static_cast<int>(first.cx / sw), 0, nx - 1);
+      const int j = std::clamp(static_cast<int>(first.cy / sh), 0, ny - 1);
+      const int index = j * nx + i;
+      const Rect& a = layout.sheets[index].area;
+      double gap = 1e300;
+      for (const Circle& c : h.parts) {
+        const double r = c.d / 2;
+        gap = std::min(
+            {gap, c.cx - r - a.x, a.right() - c.cx - r, c.cy - r - a.y, a.top() - c.cy - r});
+      }
+      if (gap < spec.edge_margin - 1e-9) {
+        layout.violations.push_back(
+            fmt::format("{}: {:.2f} mm from the edge of sheet {}, below the "
+                        "margin {:.2f} mm; dropped (openings never cross a seam)",
+                        h.element.id, gap, layout.sheets[index].id, spec.edge_margin));
+        h.dropped = true;
+      } else {
+        h.element.sheet = index;
+      }
+    }
+  }
+
   double open = 0;
   for (Hole& h : holes) {
     if (h.dropped) continue;

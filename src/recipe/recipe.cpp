@@ -395,6 +395,18 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
               " mm cell; holes must lie inside their cells (smaller, or nearer the centre)");
     spec.holes.push_back(hole);
   }
+  spec.sheet_size = read_mm_pair(r, "sheet_size");
+  if (spec.sheet_size) {
+    double largest = 0;
+    for (const HoleSpec& h : spec.holes) largest = std::max(largest, h.diameter);
+    if ((*spec.sheet_size)[0] < largest + 2 * spec.edge_margin ||
+        (*spec.sheet_size)[1] < largest + 2 * spec.edge_margin)
+      r.fail("sheet_size", "a sheet must hold the largest opening (" +
+                               std::to_string(static_cast<int>(largest)) +
+                               " mm) within its margins (2 x " +
+                               std::to_string(static_cast<int>(spec.edge_margin)) +
+                               " mm); give a larger sheet_size");
+  }
 }
 
 // Ordering: the spare share, pack size and lots of the schedules.
@@ -595,7 +607,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     spec.kind = LayoutKind::perforation;
     module_key = "cell", size_key = "sheet";
     keys.insert(keys.end(), {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin",
-                             "fix", "chord_tolerance"});
+                             "fix", "chord_tolerance", "sheet_size"});
     keys.erase(std::find(keys.begin(), keys.end(), "joint"));
   } else if (kind == "rhythm") {
     spec.kind = LayoutKind::rhythm;

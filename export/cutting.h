@@ -1,0 +1,19 @@
+// Cutting files for each fabrication sheet of a perforated surface:
+//   DXF (AutoCAD R12 ASCII, through dxflib): the sheet outline, the openings as circles on one
+//     layer per diameter (HOLE_D16.0), merged openings as closed polylines (OPENING_OUTLINE),
+//     each opening's element ID as text on layer ID (not cut), and the sheet ID on layer TEXT;
+//     millimetres from the sheet's bottom-left corner;
+//   SVG for laser cutters: the same, in true millimetres, hairline strokes, no fill.
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+
+#include "layout/layout.h"
+
+namespace curdle {
+
+void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, int sheet);
+void write_sheet_svg(std::ostream& out, const Layout& layout, int sheet);
+
+}  // namespace curdle

@@ -1,0 +1,103 @@
+// Fabrication sheets: openings keep their margins within each sheet and their bridges across
+// seams, and each sheet's DXF, read back with dxflib's reader, holds exactly its openings.
+#include "export/cutting.h"
+
+#include <dxflib/dl_creationadapter.h>
+#include <dxflib/dl_dxf.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "curdle/curdling.h"
+#include "layout/builder.h"
+#include "layout/perforation.h"
+#include "test_support.h"
+
+namespace curdle {
+namespace {
+
+struct DxfContents : DL_CreationAdapter {
+  std::vector<std::tuple<std::string, double, double, double>> circles;  // layer, x, y, r
+  int polylines = 0;
+  std::string text;
+  std::set<std::string> ids;
+  void addCircle(const DL_CircleData& c) override {
+    circles.emplace_back(attributes.getLayer(), c.cx, c.cy, c.radius);
+  }
+  void addPolyline(const DL_PolylineData&) override { ++polylines; }
+  void addText(const DL_TextData& t) override {
+    if (attributes.getLayer() == "ID")
+      ids.insert(t.text);
+    else
+      text = t.text;
+  }
+};
+
+}  // namespace
+
+TEST(Cutting, SheetsKeepMarginsAndBridgesAndTheirDxfHoldsTheirOpenings) {
+  const Design d = test::design(
+      2, 2,
+      {{"0.9", "0.9", "0.8", "0.8", "0.8", "0.7"}, {"0.8", "0.7", "0.8", "0.7", "0.7", "0.8"}});
+  LayoutSpec spec;
+  spec.kind = LayoutKind::perforation;
+  spec.combine = Combine::mix;
+  spec.module_w = spec.module_h = 50;
+  spec.size = std::array<double, 2>{3200, 3200};
+  spec.thickness = 3;
+  spec.holes = {{12, -8, 8}, {20, 4, -4}};
+  spec.min_bridge = 4;
+  spec.edge_margin = 20;
+  spec.fix = HoleFix::drop;
+  spec.sheet_size = std::array<double, 2>{1250, 2500};
+  const Layout layout = make_layout(d, curdle(d, 9, d.field), d.field, spec);
+  ASSERT_EQ(layout.sheets.size(), 6u);  // 3 x 2 sheets, the last column and row narrower
+  std::map<int, std::vector<const Element*>> by_sheet;
+  for (const Element& e : layout.elements) {
+    ASSERT_GE(e.sheet, 0) << e.id;
+    const Rect& a = layout.sheets[static_cast<size_t>(e.sheet)].area;
+    const Circle& c = *e.circle;
+    EXPECT_GE(c.cx - c.d / 2 - a.x, 20 - 1e-9) << e.id;
+    EXPECT_GE(a.right() - c.cx - c.d / 2, 20 - 1e-9) << e.id;
+    EXPECT_GE(c.cy - c.d / 2 - a.y, 20 - 1e-9) << e.id;
+    EXPECT_GE(a.top() - c.cy - c.d / 2, 20 - 1e-9) << e.id;
+    by_sheet[e.sheet].push_back(&e);
+  }
+  for (size_t i = 0; i < layout.elements.size(); ++i)  // every pair, across seams too
+    for (size_t j = i + 1; j < layout.elements.size(); ++j)
+      EXPECT_GE(bridge({*layout.elements[i].circle}, {*layout.elements[j].circle}), 4 - 1e-9);
+
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("curdle-dxf-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (size_t s = 0; s < layout.sheets.size(); ++s) {
+    const auto path = dir / (layout.sheets[s].id + ".dxf");
+    write_sheet_dxf(path, layout, static_cast<int>(s));
+    DxfContents read;
+    DL_Dxf dxf;
+    ASSERT_TRUE(dxf.in(path.string(), &read)) << path;
+    EXPECT_EQ(read.text, layout.sheets[s].id);
+    EXPECT_EQ(read.polylines, 1);  // the sheet's outline
+    std::set<std::string> expected_ids;
+    for (const Element* e : by_sheet[static_cast<int>(s)]) expected_ids.insert(e->id);
+    EXPECT_EQ(read.ids, expected_ids);  // the same IDs as the schedule, SVG and glTF
+    ASSERT_EQ(read.circles.size(), by_sheet[static_cast<int>(s)].size());
+    const Rect& a = layout.sheets[s].area;
+    for (size_t k = 0; k < read.circles.size(); ++k) {
+      const Circle& c = *by_sheet[static_cast<int>(s)][k]->circle;
+      const auto& [layer, x, y, r] = read.circles[k];
+      EXPECT_NEAR(x, c.cx - a.x, 1e-6);
+      EXPECT_NEAR(y, c.cy - a.y, 1e-6);
+      EXPECT_NEAR(2 * r, c.d, 1e-6);
+      char expected[32];
+      std::snprintf(expected, sizeof expected, "HOLE_D%.1f", c.d);  // one layer per diameter
+      EXPECT_EQ(layer, expected);
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace curdle
