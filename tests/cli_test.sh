@@ -40,7 +40,7 @@ while IFS= read -r recipe; do
   done
   # Recipes with a [layout] also draw it; the SVG parses in a real XML parser.
   if grep -q '^\[layout\]' "$recipe"; then
-    for f in layout.png layout.glb schedule.csv quantities.csv; do
+    for f in layout.png layout.glb schedule.csv quantities.csv install.svg; do
       [ -s "$out/$f" ] && pass || fail "$recipe: $f missing"
     done
     xmllint --noout --huge "$out/layout.svg" && pass || fail "$recipe: layout.svg does not parse"

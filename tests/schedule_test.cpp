@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "curdle/curdling.h"
@@ -102,6 +103,38 @@ TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
   }
   EXPECT_EQ(ordered, layout.elements.size());
   EXPECT_NEAR(ordered_area, area / 1e6, 1e-3);
+}
+
+}  // namespace curdle
+
+#include <regex>
+
+#include "export/install.h"
+
+namespace curdle {
+
+TEST(Install, TheMapNamesEveryElementAndWhereLayingStarts) {
+  Design d = test::design(4, 2, {{"3/4", "1/2"}});
+  LayoutSpec spec;
+  spec.kind = LayoutKind::facade;
+  spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
+  spec.size = std::array<double, 2>{6000, 3000};
+  spec.origin = Corner::top_right;
+  spec.openings = {{1000, 0, 1200, 2100}};
+  const auto cells = elements_to_cover(spec);
+  d.field.size = {cells[0], cells[1], 1};
+  const Layout layout = make_layout(d, curdle(d, 6, d.field), d.field, spec);
+  std::ostringstream out;
+  write_install_svg(out, layout, TitleBlock{"t", "", 6});
+  const std::string svg = out.str();
+  std::set<std::string> labelled, ids;
+  const std::regex label("<g id=\"(F-R[0-9]+-C[0-9]+)\" class=\"element\"");
+  for (std::sregex_iterator it(svg.begin(), svg.end(), label), end; it != end; ++it)
+    labelled.insert((*it)[1]);
+  for (const Element& e : layout.elements) ids.insert(e.id);
+  EXPECT_EQ(labelled, ids);
+  EXPECT_NE(svg.find("id=\"laying-order\""), std::string::npos);
+  EXPECT_NE(svg.find(">row 0<"), std::string::npos);
 }
 
 }  // namespace curdle

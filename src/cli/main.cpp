@@ -18,6 +18,7 @@
 #include "export/cells_csv.h"
 #include "export/cutting.h"
 #include "export/gltf.h"
+#include "export/install.h"
 #include "export/layout_png.h"
 #include "export/mask_image.h"
 #include "export/preview_png.h"
@@ -34,8 +35,8 @@ namespace {
 
 constexpr uint64_t kCellsCsvDefaultLimit = 10'000'000;
 const std::vector<std::string> kOutputs = {
-    "report.json", "cells.csv",   "preview.png",  "layout.svg",     "layout.png",
-    "layout.glb",  "layout.gltf", "schedule.csv", "quantities.csv", "sheets"};
+    "report.json", "cells.csv",    "preview.png",    "layout.svg",  "layout.png", "layout.glb",
+    "layout.gltf", "schedule.csv", "quantities.csv", "install.svg", "sheets"};
 
 std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
   std::set<std::string> chosen;
@@ -65,7 +66,7 @@ int generate(const CommonOptions& common, const std::string& out_dir,
   const bool has_layout = s.recipe.layout.has_value();
   if (!has_layout) {
     for (const char* name : {"layout.svg", "layout.png", "layout.glb", "layout.gltf",
-                             "schedule.csv", "quantities.csv", "sheets"})
+                             "schedule.csv", "quantities.csv", "install.svg", "sheets"})
       if (outputs.erase(name) && !outputs_named.empty())
         throw InputError(
             SourceLocation{common.recipe_path, 0, 0, "layout"},
@@ -160,6 +161,8 @@ int generate(const CommonOptions& common, const std::string& out_dir,
       }
       std::printf("sheets: %zu, each as DXF and SVG in sheets/\n", layout.sheets.size());
     }
+    if (outputs.count("install.svg"))
+      stage("install.svg").write([&](std::ostream& o) { write_install_svg(o, layout, title); });
     if (outputs.count("quantities.csv"))
       stage("quantities.csv").write([&](std::ostream& o) {
         write_quantities_csv(o, layout, spec);

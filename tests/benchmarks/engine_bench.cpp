@@ -5,10 +5,14 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 
 #include "curdle/boxcount.h"
 #include "curdle/curdling.h"
 #include "curdle/report.h"
+#include "export/schedule.h"
+#include "layout/builder.h"
 #include "recipe/recipe.h"
 
 namespace {
@@ -74,6 +78,29 @@ void BM_SeedSearch_64x64(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(seeds), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_SeedSearch_64x64)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Fabrication schedules of a 1000 x 1000-tile paving: schedule.csv and quantities.csv written
+// to a file, streamed (the layout is built once, outside the timing).
+void BM_Schedule_1M_elements(benchmark::State& state) {
+  curdle::Design d = make(2, 2, std::vector<std::string>(10, "0.9"));
+  d.field.size = {1000, 1000, 1};
+  curdle::LayoutSpec spec;
+  spec.kind = curdle::LayoutKind::paving;
+  spec.module_w = spec.module_h = 297, spec.joint = 3;
+  spec.spare = 0.05, spec.pack = 20, spec.lot_size = 5000;
+  const curdle::Layout layout =
+      curdle::make_layout(d, curdle::curdle(d, 1, d.field), d.field, spec);
+  const std::string path = "/tmp/curdle-bench-schedule.csv";
+  for (auto _ : state) {
+    std::ofstream schedule(path, std::ios::binary), quantities(path + ".q", std::ios::binary);
+    curdle::write_schedule_csv(schedule, layout, d, spec);
+    curdle::write_quantities_csv(quantities, layout, spec);
+  }
+  state.counters["elements"] = static_cast<double>(layout.elements.size());
+  std::remove(path.c_str());
+  std::remove((path + ".q").c_str());
+}
+BENCHMARK(BM_Schedule_1M_elements)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 
 }  // namespace
 
