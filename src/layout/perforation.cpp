@@ -156,11 +156,13 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         gap = std::min(
             {gap, c.cx - r - a.x, a.right() - c.cx - r, c.cy - r - a.y, a.top() - c.cy - r});
       }
-      if (gap < spec.edge_margin - 1e-9) {
+      // A seam keeps the edge margin on each side, and never less than a bridge.
+      const double clear = std::max(spec.edge_margin, spec.min_bridge);
+      if (gap < clear - 1e-9) {
         layout.violations.push_back(
-            fmt::format("{}: {:.2f} mm from the edge of sheet {}, below the "
-                        "margin {:.2f} mm; dropped (openings never cross a seam)",
-                        h.element.id, gap, layout.sheets[index].id, spec.edge_margin));
+            fmt::format("{}: {:.2f} mm from the edge of sheet {}, below {:.2f} mm; dropped "
+                        "(openings never cross a seam)",
+                        h.element.id, gap, layout.sheets[index].id, clear));
         h.dropped = true;
       } else {
         h.element.sheet = index;
