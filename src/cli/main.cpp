@@ -246,7 +246,10 @@ int run(int argc, char** argv) {
   CLI::App* gen = app.add_subcommand("generate", "Curdle a recipe and write its outputs");
   add_common_options(*gen, gen_options);
   gen->add_option("--out", out_dir, "Output directory (default: curdle-out/<recipe name>)");
-  gen->add_option("--outputs", outputs, "Which outputs: report.json, cells.csv, preview.png")
+  gen->add_option("--outputs", outputs,
+                  "Which outputs: report.json, cells.csv, preview.png; with a [layout] also "
+                  "layout.svg, layout.png, layout.glb, layout.gltf, schedule.csv, quantities.csv, "
+                  "install.svg, sheets (default: all but layout.gltf)")
       ->delimiter(',');
   CLI::App* rep = app.add_subcommand("report", "Print the per-stage report of a recipe");
   add_common_options(*rep, report_options);
