@@ -451,7 +451,6 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
   scene["units"] = tinygltf::Value(std::string("metres, +Y up"));
   b.model.scenes[0].name = title.recipe;
   b.model.scenes[0].extras = tinygltf::Value(scene);
-  // Materials no element uses would be reported by validators: drop them from the legend's list.
   return b.model;
 }
 

@@ -185,16 +185,13 @@ class SurvivalBatch {
     }
     Block* blocks = buffers_.blocks.data();
     size_t n = 0;
-    {
-      for (size_t p = 0; p < count_; ++p) {
-        Parent& parent = parents_[p];
-        const uint64_t first = parent.path * B >> 4, last = (parent.path * B + B - 1) >> 4;
-        for (uint64_t b = first; b <= last; ++b) {
-          const bool shared =
-              n > 0 && blocks[n - 1].block == b && blocks[n - 1].root == parent.root;
-          if (b == first) parent.first_block = n - (shared ? 1 : 0);
-          if (!shared) blocks[n++] = Block{b, parent.root, 0, 0};
-        }
+    for (size_t p = 0; p < count_; ++p) {
+      Parent& parent = parents_[p];
+      const uint64_t first = parent.path * B >> 4, last = (parent.path * B + B - 1) >> 4;
+      for (uint64_t b = first; b <= last; ++b) {
+        const bool shared = n > 0 && blocks[n - 1].block == b && blocks[n - 1].root == parent.root;
+        if (b == first) parent.first_block = n - (shared ? 1 : 0);
+        if (!shared) blocks[n++] = Block{b, parent.root, 0, 0};
       }
     }
     draw_all(n);
@@ -295,7 +292,7 @@ class SurvivalBatch {
   }
 
   void write_children(const Parent& parent) {
-    const Block* blocks_ = buffers_.blocks.data();
+    const Block* blocks = buffers_.blocks.data();
     const uint64_t B = w_.children;
     const ChildFilter filter = filter_children(w_, parent.index);
     size_t block = parent.first_block;
@@ -307,7 +304,7 @@ class SurvivalBatch {
         const unsigned offset = child & 15;
         const unsigned n = std::min(count - done, 16 - offset);
         const uint32_t keep = static_cast<uint32_t>(low_bits(n)) << offset;
-        bits |= static_cast<uint64_t>((blocks_[block].below & keep) >> offset) << done;
+        bits |= static_cast<uint64_t>((blocks[block].below & keep) >> offset) << done;
         done += n;
         child += n;
         if ((child & 15) == 0) ++block;

@@ -504,7 +504,7 @@ std::optional<LayoutSpec> read_line_or_stack(TableReader& r, Design& design, Lay
   return spec;
 }
 
-ParkElement read_park_element(TableReader& r, const std::string& path, bool ground) {
+ParkElement read_park_element(TableReader& r, bool ground) {
   ParkElement e;
   e.type = read_string(r, "type", "a name such as \"tree\"").value_or(ground ? "white paving" : "");
   if (e.type.empty())
@@ -530,7 +530,6 @@ ParkElement read_park_element(TableReader& r, const std::string& path, bool grou
     const auto size = read_mm_pair(r, "size", true);
     e.w = (*size)[0], e.h = e.round ? (*size)[0] : (*size)[1];
   }
-  (void)path;
   return e;
 }
 
@@ -540,7 +539,7 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
     if (!g->as_table())
       r.fail("ground", "must be a table {type = \"white paving\", colour = \"#f2f0ea\"}");
     TableReader gr(*g->as_table(), "layout.ground", r.source(), {"type", "colour"});
-    spec.ground = read_park_element(gr, "layout.ground", true);
+    spec.ground = read_park_element(gr, true);
   }
   const toml::node* n = r.get("elements");
   const toml::array* a = n ? n->as_array() : nullptr;
@@ -555,7 +554,7 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
       r.fail_node(*a->get(i), path, "must be a table {type = ..., form = ...}");
     TableReader er(*a->get(i)->as_table(), path, r.source(),
                    {"type", "form", "shape", "size", "colour"});
-    spec.park.push_back(read_park_element(er, path, false));
+    spec.park.push_back(read_park_element(er, false));
     objects += !spec.park.back().surface;
   }
   // Every object must fit in its slot when all the objects share one cell.
