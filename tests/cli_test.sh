@@ -90,9 +90,17 @@ mkdir -p "$work/blocked/cells.csv"
 expect 2 "cannot write" generate "$fig3" --out "$work/blocked"
 [ "$(ls -A "$work/blocked")" = "cells.csv" ] && pass || fail "blocked run left: $(ls -A "$work/blocked" | tr '\n' ' ')"
 
-# A window of a layout with a fixed floor is refused, not drawn out of place.
-expect 2 "a window cannot be laid out" generate "$src/patterns/paper/fig7-paving-20m.toml" --window 10,10,20,20 --out "$work/win-floor"
+# A fixed floor is laid from a segment of exactly its own size, never from a part of it.
+fig7="$src/patterns/paper/fig7-paving-20m.toml"
+expect 2 "takes exactly 67 x 67 cells" generate "$fig7" --window 10,10,20,20 --out "$work/win-floor"
 [ ! -e "$work/win-floor/layout.svg" ] && pass || fail "a refused window left layout.svg"
+expect 2 "make it at least that large" generate "$fig7" --set 'field.cells=[60,80]' --out "$work/win-floor"
+# A segment of a larger curd: the one at the origin is the floor itself, cell for cell.
+expect 0 "outputs in" generate "$fig7" --outputs schedule.csv --out "$work/floor-plain"
+expect 0 "outputs in" generate "$fig7" --set 'field.cells=[256,256]' --outputs schedule.csv --out "$work/floor-seg0"
+cmp -s "$work/floor-plain/schedule.csv" "$work/floor-seg0/schedule.csv" && pass || fail "the segment at the origin differs from the floor"
+expect 0 "4489 tiles" generate "$fig7" --set 'field.cells=[256,256]' --window 100,40,67,67 --out "$work/floor-seg"
+grep -q '^P-R00-C00,1,0,0,0.0,0.0,' "$work/floor-seg/schedule.csv" && pass || fail "a segment's floor does not start at its own origin"
 
 # 4. Overrides and windows.
 expect 0 "outputs in" generate "$fig3" --set lattice.mode=exact \

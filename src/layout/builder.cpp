@@ -98,12 +98,18 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
 
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec) {
-  // A fixed floor, wall, sheet or line is laid from its own origin; a window of it would land
-  // out of place and be cut at the wrong edges, so it is refused rather than drawn wrong.
-  if (spec.size && !(view == design.field))
-    throw InputError(
-        "a window cannot be laid out on a layout of fixed size (layout.floor, wall, sheet, area "
-        "or length): leave out the window, or leave out the size and give field.cells instead");
+  // A fixed floor, wall, sheet or line is laid from the view's corner: the view is the segment
+  // of the curd that becomes the floor, so it must have the floor's number of elements.
+  if (spec.size) {
+    const auto need = elements_to_cover(spec);
+    if (view.size[0] != need[0] || view.size[1] != need[1])
+      throw InputError("this layout's floor, wall, sheet or line takes exactly " +
+                       std::to_string(need[0]) + " x " + std::to_string(need[1]) +
+                       " cells, but the window is " + std::to_string(view.size[0]) + " x " +
+                       std::to_string(view.size[1]) +
+                       ": give a window of that size (a segment of a larger field.cells), or "
+                       "leave out the layout's size and give field.cells instead");
+  }
   if (spec.kind == LayoutKind::blocks) return stack_blocks(design, field, view, spec);
   const int dimension = spec.kind == LayoutKind::rhythm ? 1 : 2;
   if (design.lattice.dimension != dimension)

@@ -17,7 +17,9 @@ std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec);
 // keep mode the colours shown side by side. Counts are left at zero.
 std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spec);
 
-// The layout of `view` (a 2-D box of cells). Throws InputError for specs that cannot be laid.
+// The layout of `view` (a 2-D box of cells). A fixed floor, wall, sheet or line is laid from
+// the view's corner, so its view (a segment of a larger curd) must be exactly
+// elements_to_cover cells. Throws InputError for specs that cannot be laid.
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec);
 

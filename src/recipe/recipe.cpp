@@ -495,11 +495,12 @@ std::optional<LayoutSpec> read_line_or_stack(TableReader& r, Design& design, Lay
     const double length = read_mm(r, "length", 0, 1);
     spec.size = std::array<double, 2>{length, spec.module_h};
     const int64_t bays = static_cast<int64_t>(std::ceil(length / spec.module_w - 1e-9));
-    if (field_given && design.field.size[0] != bays)
+    // A larger field is a curd from which a segment of `bays` becomes the line.
+    if (field_given && design.field.size[0] < bays)
       r.fail("length", "needs " + std::to_string(bays) + " bays but field.cells is " +
                            std::to_string(design.field.size[0]) +
-                           "; leave field.cells out or make them agree");
-    design.field.size[0] = bays;
+                           "; leave field.cells out, or make it at least that large");
+    if (!field_given) design.field.size[0] = bays;
   }
   return spec;
 }
@@ -729,13 +730,16 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
 
   if (spec.size) {
     const auto cells = elements_to_cover(spec);
-    if (field_given && (design.field.size[0] != cells[0] || design.field.size[1] != cells[1]))
+    // A larger field is a curd from which a segment of `cells` becomes the floor or wall.
+    if (field_given && (design.field.size[0] < cells[0] || design.field.size[1] < cells[1]))
       r.fail(size_key, "needs " + std::to_string(cells[0]) + " x " + std::to_string(cells[1]) +
                            " elements but field.cells is " + std::to_string(design.field.size[0]) +
                            " x " + std::to_string(design.field.size[1]) +
-                           "; leave field.cells out or make them agree");
-    design.field.size[0] = cells[0];
-    design.field.size[1] = cells[1];
+                           "; leave field.cells out, or make it at least that large");
+    if (!field_given) {
+      design.field.size[0] = cells[0];
+      design.field.size[1] = cells[1];
+    }
   }
   return spec;
 }
@@ -835,12 +839,28 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
   recipe.design.field = read_field(top, lattice, recipe.window);
   const toml::table* field_table = doc.get("field") ? doc.get("field")->as_table() : nullptr;
   recipe.layout = read_layout(top, recipe.design, field_table && field_table->get("cells"));
+  if (recipe.layout && recipe.layout->size && !recipe.window) {
+    // The floor is laid from a segment of its own size; by default the one at the origin.
+    const auto need = elements_to_cover(*recipe.layout);
+    if (need[0] != recipe.design.field.size[0] || need[1] != recipe.design.field.size[1]) {
+      Box segment;
+      segment.size = {need[0], need[1], 1};
+      recipe.window = segment;
+    }
+  }
   if (recipe.window && !recipe.design.field.contains(*recipe.window)) {
     std::string size;
     for (int d = 0; d < lattice.dimension; ++d)
       size += (d ? " x " : "") + std::to_string(recipe.design.field.size[d]);
     top.fail_node(*field_table->get("window"), "field.window",
                   "must lie inside the field of " + size + " cells (origin + size <= field)");
+  }
+  if (recipe.window && recipe.layout && recipe.layout->size) {
+    const auto need = elements_to_cover(*recipe.layout);
+    if (recipe.window->size[0] != need[0] || recipe.window->size[1] != need[1])
+      top.fail_node(*field_table->get("window"), "field.window",
+                    "must be " + std::to_string(need[0]) + " x " + std::to_string(need[1]) +
+                        " cells, the elements of the layout's floor, wall, sheet or line");
   }
   return recipe;
 }
