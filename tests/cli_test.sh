@@ -99,7 +99,7 @@ expect 2 "make it at least that large" generate "$fig7" --set 'field.cells=[60,8
 expect 0 "outputs in" generate "$fig7" --outputs schedule.csv --out "$work/floor-plain"
 expect 0 "outputs in" generate "$fig7" --set 'field.cells=[256,256]' --outputs schedule.csv --out "$work/floor-seg0"
 cmp -s "$work/floor-plain/schedule.csv" "$work/floor-seg0/schedule.csv" && pass || fail "the segment at the origin differs from the floor"
-expect 0 "4489 tiles" generate "$fig7" --set 'field.cells=[256,256]' --window 100,40,67,67 --out "$work/floor-seg"
+expect 0 "layout: 4489 paving tiles" generate "$fig7" --set 'field.cells=[256,256]' --window 100,40,67,67 --out "$work/floor-seg"
 grep -q '^P-R00-C00,1,0,0,0.0,0.0,' "$work/floor-seg/schedule.csv" && pass || fail "a segment's floor does not start at its own origin"
 
 # 4. Overrides and windows.
@@ -151,6 +151,27 @@ expect 0 "cells.csv skipped" generate "$fig3" --set 'field.cells=[3200,3200]' --
 [ ! -f "$work/huge2/cells.csv" ] && pass || fail "cells.csv should be skipped above 10 million cells"
 # Progress goes to a terminal only: not into this pipe.
 grep -q "%" "$work/stderr" && fail "progress printed into a pipe" || pass
+
+# 8. Search: ranked seeds and segments, their previews and search.csv; the command printed for
+# the best one reproduces its segment, whose report gives the measured ratio.
+expect 0 "rank" search "$fig7" --set 'field.cells=[256,256]' --seeds 1..40 --top 3 \
+  --target ratio:dark=0.111 --target 'cluster:dark<=6' --target 'empty=0,0,10,10' --out "$work/search"
+[ "$(ls "$work/search" | grep -c '^rank-0[1-3]-seed-.*\.png$')" = 3 ] && pass || fail "search previews: $(ls "$work/search")"
+[ "$(grep -c . "$work/search/search.csv")" = 4 ] && pass || fail "search.csv should have a header and 3 rows"
+best=$(grep '^best: ' "$work/stdout" | sed 's/^best: curdle //')
+case "$best" in *"--window "*",67,67"*) pass ;; *) fail "the best hit is not a 67 x 67 segment: $best" ;; esac
+eval "\"\$curdle\" $best --out \"\$work/search-best\" --outputs report.json,schedule.csv" >/dev/null 2>&1 \
+  && pass || fail "the printed command did not run: $best"
+ratio=$(python3 -c "import csv;print(list(csv.DictReader(open('$work/search/search.csv')))[0]['ratio:dark=0.111'])")
+dark=$(python3 -c "import json;r=json.load(open('$work/search-best/report.json'));print([v['count'] for v in r['values'] if v['label']=='dark'][0])")
+python3 -c "import sys; sys.exit(abs($dark/4489 - $ratio) > 1e-5)" && pass || fail "search measured $ratio, the report of its segment $dark / 4489"
+expect 0 "the whole field" search "$fig3" --seeds 0..500 --no-previews --out "$work/search-whole"
+[ "$(ls "$work/search-whole")" = "search.csv" ] && pass || fail "--no-previews still wrote: $(ls "$work/search-whole")"
+expect 2 "no value 'nope'" search "$fig7" --seeds 1..5 --target ratio:nope=0.1 --out "$work/search-bad"
+expect 2 "not a range of seeds" search "$fig7" --seeds 9..1 --out "$work/search-bad"
+expect 2 "must fit in the view" search "$fig7" --seeds 1..5 --window 100,100 --out "$work/search-bad"
+expect 2 "inside the segment" search "$fig7" --seeds 1..5 --target 'empty=60,60,10,10' --out "$work/search-bad"
+[ ! -e "$work/search-bad" ] && pass || fail "a refused search left $work/search-bad"
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -66,15 +66,24 @@ uint64_t parse_bytes(const std::string& text, const std::string& option) {
   return static_cast<uint64_t>(value * scale);
 }
 
-Session open_session(const CommonOptions& o) {
-  std::ifstream in(o.recipe_path, std::ios::binary);
+std::string read_recipe_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
   if (!in)
-    throw InputError(SourceLocation{o.recipe_path, 0, 0, ""},
+    throw InputError(SourceLocation{path, 0, 0, ""},
                      std::string("cannot read the recipe: ") + std::strerror(errno));
   std::stringstream text;
   text << in.rdbuf();
+  return text.str();
+}
+
+Session open_session(const CommonOptions& o) {
+  return make_session(read_recipe_file(o.recipe_path), o);
+}
+
+Session make_session(const std::string& recipe_text, const CommonOptions& o) {
   Session s;
-  s.recipe = parse_recipe(text.str(), o.recipe_path, o.sets);
+  s.recipe_path = o.recipe_path;
+  s.recipe = parse_recipe(recipe_text, o.recipe_path, o.sets);
   s.seed = s.recipe.seed;
   if (!o.seed.empty()) {
     auto [end, ec] = std::from_chars(o.seed.data(), o.seed.data() + o.seed.size(), s.seed);
@@ -90,6 +99,42 @@ Session open_session(const CommonOptions& o) {
       o.max_memory.empty() ? default_memory_limit() : parse_bytes(o.max_memory, "--max-memory");
   s.generate.memory_limit_hint = "raise the limit with --max-memory";
   return s;
+}
+
+std::string window_text(const Box& w, int dimension) {
+  std::string text;
+  for (int d = 0; d < dimension; ++d) text += std::to_string(w.origin[d]) + ",";
+  for (int d = 0; d < dimension; ++d) text += std::to_string(w.size[d]) + (d + 1 < dimension ? "," : "");
+  return text;
+}
+
+namespace {
+std::string shell_quote(const std::string& word) {
+  const bool plain = !word.empty() && word.find_first_not_of(
+                                          "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                          "0123456789_-./,=:+@%") == std::string::npos;
+  if (plain) return word;
+  std::string quoted = "'";
+  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+}  // namespace
+
+std::string generate_command(const std::string& recipe_path, const std::vector<std::string>& sets,
+                             uint64_t seed, const std::optional<Box>& window, int dimension) {
+  std::string command = "curdle generate ";
+  command += shell_quote(recipe_path);
+  for (const std::string& set : sets) {
+    command += " --set ";
+    command += shell_quote(set);
+  }
+  command += " --seed ";
+  command += std::to_string(seed);
+  if (window) {
+    command += " --window ";
+    command += window_text(*window, dimension);
+  }
+  return command;
 }
 
 CurdField run_engine(const Session& s, int threads) {

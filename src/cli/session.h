@@ -25,6 +25,7 @@ struct CommonOptions {
 void add_common_options(CLI::App& command, CommonOptions& options);
 
 struct Session {
+  std::string recipe_path;  // for messages, and the mask image beside the recipe
   Recipe recipe;
   uint64_t seed = 0;
   Box view;
@@ -33,9 +34,21 @@ struct Session {
 
 // Reads and checks everything the command line names; throws InputError on bad input.
 Session open_session(const CommonOptions& options);
+// The same for a recipe already read (`options.recipe_path` names it).
+Session make_session(const std::string& recipe_text, const CommonOptions& options);
+
+// The recipe file's text; throws InputError when it cannot be read.
+std::string read_recipe_file(const std::string& path);
 
 // Runs the engine with progress on a terminal, honouring --threads.
 CurdField run_engine(const Session& session, int threads);
+
+// "X,Y,W,H" (1-D "X,W"; 3-D "X,Y,Z,W,H,D"), as --window takes it.
+std::string window_text(const Box& window, int dimension);
+
+// The `curdle generate` command line that reproduces a run exactly, quoted for a POSIX shell.
+std::string generate_command(const std::string& recipe_path, const std::vector<std::string>& sets,
+                             uint64_t seed, const std::optional<Box>& window, int dimension);
 
 // "8G", "512M", "1.5GiB" or a number of bytes.
 uint64_t parse_bytes(const std::string& text, const std::string& option);

@@ -1,0 +1,24 @@
+// `curdle generate` without the command line: a session's outputs written into a directory,
+// all or nothing. The page's downloads come from here too, so they are the CLI's files.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli/session.h"
+
+namespace curdle::cli {
+
+// The outputs `generate` knows, in the order it lists them.
+const std::vector<std::string>& output_names();
+
+// Writes the outputs named (none: all but layout.gltf) into `dir`, staged and renamed together
+// once all succeeded. Prints a summary to `log` (nullptr: silent). Returns the files written.
+// Throws InputError for bad input, before anything is written.
+std::vector<std::filesystem::path> write_outputs(Session& session, const std::filesystem::path& dir,
+                                                 const std::vector<std::string>& outputs_named,
+                                                 int threads, FILE* log);
+
+}  // namespace curdle::cli

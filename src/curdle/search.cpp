@@ -1,0 +1,375 @@
+#include "curdle/search.h"
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+#include "curdle/boxcount.h"
+#include "curdle/curdling.h"
+#include "curdle/error.h"
+#include "curdle/overlay.h"
+#include "curdle/segment_measures.h"
+#include "curdle/theory.h"
+
+namespace curdle {
+
+const char* const kTargetSyntax =
+    "MEASURE:SUBJECT=GOAL (or <= or >=), MEASURE one of count, ratio, dimension, cluster, run, "
+    "lacunarity, SUBJECT a value (its number or label, e.g. dark+light) or for dimension a "
+    "curd; or empty[:CURD]=X,Y,W,H, a zone of cells from the segment's corner that must hold "
+    "no survivor";
+
+namespace {
+
+const SourceLocation kWhere{"--target", 0, 0, ""};
+
+[[noreturn]] void fail(const std::string& text, const std::string& why) {
+  std::string message = "'";
+  message += text;
+  message += "': ";
+  message += why;
+  throw InputError(kWhere, message);
+}
+
+int parse_value(const std::string& text, const std::string& name, const Design& d) {
+  const int values = 1 << d.curds.size();
+  if (name.empty()) {
+    if (d.curds.size() == 1) return 1;
+    fail(text, "name the value, e.g. ratio:" + value_label(1, d.curds) + "=0.1");
+  }
+  int v = -1;
+  auto [p, ec] = std::from_chars(name.data(), name.data() + name.size(), v);
+  if (ec == std::errc() && p == name.data() + name.size() && v >= 0 && v < values) return v;
+  std::string labels;
+  for (int u = 0; u < values; ++u) {
+    if (value_label(static_cast<uint32_t>(u), d.curds) == name) return u;
+    labels += (u ? ", " : "") + value_label(static_cast<uint32_t>(u), d.curds);
+  }
+  fail(text, "no value '" + name + "'; the values are 0 to " + std::to_string(values - 1) +
+                 " or their labels: " + labels);
+}
+
+int parse_curd(const std::string& text, const std::string& name, const Design& d) {
+  if (name.empty()) {
+    if (d.curds.size() == 1) return 0;
+    fail(text, "name the curd, e.g. dimension:" + d.curds[0].name + "=1.5");
+  }
+  std::string names;
+  for (size_t c = 0; c < d.curds.size(); ++c) {
+    if (d.curds[c].name == name || std::to_string(c) == name) return static_cast<int>(c);
+    names += (c ? ", " : "") + d.curds[c].name;
+  }
+  fail(text, "no curd '" + name + "'; the curds are " + names);
+}
+
+double parse_number(const std::string& text, const std::string& number) {
+  double x = 0;
+  auto [p, ec] = std::from_chars(number.data(), number.data() + number.size(), x);
+  if (ec != std::errc() || p != number.data() + number.size() || !std::isfinite(x) || x < 0)
+    fail(text, "the goal '" + number + "' is not a number from 0 up");
+  return x;
+}
+
+bool before(const SearchHit& a, const SearchHit& b) {
+  if (a.score != b.score) return a.score < b.score;
+  if (a.seed != b.seed) return a.seed < b.seed;
+  if (a.segment.origin[1] != b.segment.origin[1]) return a.segment.origin[1] < b.segment.origin[1];
+  return a.segment.origin[0] < b.segment.origin[0];
+}
+
+void keep_best(std::vector<SearchHit>& best, SearchHit hit, size_t top) {
+  if (best.size() == top && !before(hit, best.back())) return;
+  best.insert(std::upper_bound(best.begin(), best.end(), hit, before), std::move(hit));
+  if (best.size() > top) best.pop_back();
+}
+
+// Corners of the segments along one axis: every `stride` from 0, and the last one flush with
+// the far edge so that no part of the view is left out.
+std::vector<int64_t> corners(int64_t view, int64_t size, int64_t stride) {
+  std::vector<int64_t> c;
+  for (int64_t x = 0; x + size <= view; x += stride) c.push_back(x);
+  if (c.empty() || c.back() != view - size) c.push_back(view - size);
+  return c;
+}
+
+// Per thread: the curds of one seed and the measures over its view.
+struct Scorer {
+  CurdField field;
+  SegmentMeasures measures;
+  std::vector<Bitset> scratch;
+};
+
+bool needs_grid(const SearchSpec& spec) {
+  if (spec.window) return true;
+  for (const Target& t : spec.targets)
+    if (t.measure != Measure::count && t.measure != Measure::ratio &&
+        t.measure != Measure::dimension)
+      return true;
+  return false;
+}
+
+// The whole generated view, read off the bitsets without a grid of values.
+SearchHit score_bitsets(const Design& d, const SearchSpec& spec, Scorer& s, uint64_t seed) {
+  SearchHit hit;
+  hit.seed = seed;
+  hit.segment = s.field.generated;
+  const size_t n = d.curds.size(), values = size_t{1} << n;
+  std::vector<uint64_t> counts(values, 0);
+  bool counted = false;
+  for (const Target& t : spec.targets) {
+    double x = std::numeric_limits<double>::quiet_NaN();
+    if (t.measure == Measure::dimension) {
+      const auto fit = fit_box_dimension(
+          box_counts(s.field.curds[static_cast<size_t>(t.subject)], d.lattice.children(), s.scratch),
+          d.lattice.base);
+      if (fit) x = fit->slope;
+    } else {
+      if (!counted) {
+        const size_t words = s.field.finest(0).words.size();
+        for (size_t w = 0; w < words; ++w)
+          for (size_t v = 1; v < values; ++v) {
+            uint64_t m = ~uint64_t{0};
+            for (size_t c = 0; c < n; ++c)
+              m &= (v >> c & 1) ? s.field.finest(c).words[w] : ~s.field.finest(c).words[w];
+            counts[v] += static_cast<uint64_t>(std::popcount(m));
+          }
+        uint64_t occupied = 0;
+        for (size_t v = 1; v < values; ++v) occupied += counts[v];
+        counts[0] = hit.segment.cells() - occupied;
+        counted = true;
+      }
+      x = static_cast<double>(counts[static_cast<size_t>(t.subject)]);
+      if (t.measure == Measure::ratio) x /= static_cast<double>(hit.segment.cells());
+    }
+    hit.measured.push_back(x);
+    hit.score += shortfall(t, x);
+  }
+  return hit;
+}
+
+}  // namespace
+
+Target parse_target(const std::string& text, const Design& d) {
+  Target t;
+  t.text = text;
+  size_t op = text.find_first_of("<>=");
+  if (op == std::string::npos) fail(text, std::string("not a target; write ") + kTargetSyntax);
+  std::string head = text.substr(0, op), goal;
+  if (text[op] == '=') {
+    goal = text.substr(op + 1);
+  } else {
+    if (op + 1 >= text.size() || text[op + 1] != '=')
+      fail(text, "write <= or >=, or = for a goal to meet as closely as possible");
+    t.compare = text[op] == '<' ? Compare::at_most : Compare::at_least;
+    goal = text.substr(op + 2);
+  }
+  const size_t colon = head.find(':');
+  const std::string kind = head.substr(0, colon);
+  const std::string subject = colon == std::string::npos ? "" : head.substr(colon + 1);
+  static const std::pair<const char*, Measure> kinds[] = {
+      {"count", Measure::count},     {"ratio", Measure::ratio},
+      {"dimension", Measure::dimension}, {"cluster", Measure::cluster},
+      {"run", Measure::run},         {"lacunarity", Measure::lacunarity},
+      {"empty", Measure::empty}};
+  const auto k = std::find_if(std::begin(kinds), std::end(kinds),
+                              [&](const auto& p) { return kind == p.first; });
+  if (k == std::end(kinds))
+    fail(text, "unknown measure '" + kind +
+                   "'; the measures are count, ratio, dimension, cluster, run, lacunarity, empty");
+  t.measure = k->second;
+  if (t.measure == Measure::empty) {
+    if (t.compare != Compare::equal) fail(text, "an empty zone is written empty[:CURD]=X,Y,W,H");
+    t.subject = subject.empty() ? -1 : parse_curd(text, subject, d);
+    std::array<int64_t, 4> v{};
+    size_t start = 0;
+    for (int i = 0; i < 4; ++i) {
+      const size_t end = i < 3 ? goal.find(',', start) : goal.size();
+      if (end == std::string::npos) fail(text, "the zone must be X,Y,W,H in cells");
+      auto [p, ec] = std::from_chars(goal.data() + start, goal.data() + end, v[static_cast<size_t>(i)]);
+      if (ec != std::errc() || p != goal.data() + end || v[static_cast<size_t>(i)] < (i < 2 ? 0 : 1))
+        fail(text, "the zone must be X,Y,W,H in whole cells, sizes at least 1");
+      start = end + 1;
+    }
+    t.zone.origin = {v[0], v[1], 0};
+    t.zone.size = {v[2], v[3], 1};
+    return t;
+  }
+  t.subject = t.measure == Measure::dimension ? parse_curd(text, subject, d)
+                                              : parse_value(text, subject, d);
+  t.goal = parse_number(text, goal);
+  if (t.measure == Measure::ratio && t.goal > 1) fail(text, "a ratio is from 0 to 1");
+  return t;
+}
+
+std::vector<Target> default_targets(const Design& d) {
+  std::vector<Target> targets;
+  const size_t n = d.curds.size();
+  const int K = d.lattice.stages;
+  std::vector<double> final_p(n);
+  for (size_t c = 0; c < n; ++c) final_p[c] = survival_probability(d.curds[c].probabilities, K);
+  for (uint32_t v = 0; v < (uint32_t{1} << n); ++v) {
+    Target t;
+    t.measure = Measure::ratio;
+    t.subject = static_cast<int>(v);
+    t.goal = 1;
+    for (size_t c = 0; c < n; ++c) t.goal *= (v >> c & 1) ? final_p[c] : 1 - final_p[c];
+    t.text = "ratio:" + value_label(v, d.curds) + "=" + std::to_string(t.goal);
+    targets.push_back(t);
+  }
+  for (size_t c = 0; c < n; ++c) {
+    if (final_p[c] <= 0) continue;
+    Target t;
+    t.measure = Measure::dimension;
+    t.subject = static_cast<int>(c);
+    // E + log P_K / (K log b): the dimension of a constant p with the same final share.
+    t.goal = d.lattice.dimension + std::log(final_p[c]) / (K * std::log(d.lattice.base));
+    t.text = "dimension:" + d.curds[c].name + "=" + std::to_string(t.goal);
+    targets.push_back(t);
+  }
+  return targets;
+}
+
+double shortfall(const Target& t, double x) {
+  if (t.measure == Measure::empty) return 100 * x / static_cast<double>(t.zone.cells());
+  if (std::isnan(x)) return 1;
+  double miss = t.compare == Compare::equal   ? std::fabs(x - t.goal)
+                : t.compare == Compare::at_most ? std::max(0.0, x - t.goal)
+                                                : std::max(0.0, t.goal - x);
+  const bool relative = t.measure != Measure::ratio && t.measure != Measure::dimension;
+  return relative ? miss / std::max(t.goal, 1.0) : miss;
+}
+
+double measure(const Target& t, SegmentMeasures& m, const Design& d, const Box& segment,
+               int64_t lacunarity_box) {
+  const auto value = static_cast<uint32_t>(t.subject);
+  switch (t.measure) {
+    case Measure::count: return static_cast<double>(m.value_count(value, segment));
+    case Measure::ratio:
+      return static_cast<double>(m.value_count(value, segment)) /
+             static_cast<double>(segment.cells());
+    case Measure::dimension: {
+      const auto fit = fit_box_dimension(m.box_counts(static_cast<size_t>(t.subject), segment),
+                                         d.lattice.base);
+      return fit ? fit->slope : std::numeric_limits<double>::quiet_NaN();
+    }
+    case Measure::cluster: return static_cast<double>(m.largest_cluster(value, segment));
+    case Measure::run: return static_cast<double>(m.longest_run(value, segment));
+    case Measure::lacunarity: {
+      const auto l = m.lacunarity(value, segment, lacunarity_box);
+      return l ? *l : std::numeric_limits<double>::quiet_NaN();
+    }
+    case Measure::empty: {
+      Box zone = t.zone;
+      zone.origin[0] += segment.origin[0];
+      zone.origin[1] += segment.origin[1];
+      return t.subject < 0
+                 ? static_cast<double>(zone.cells() - m.value_count(0, zone))
+                 : static_cast<double>(m.curd_count(static_cast<size_t>(t.subject), zone));
+    }
+  }
+  return 0;
+}
+
+void check_search(const Design& d, const Box& view, const SearchSpec& spec) {
+  const SourceLocation where{"search", 0, 0, ""};
+  if (d.lattice.dimension > 2)
+    throw InputError(where, "search works on 1-D and 2-D lattices; this one is 3-D");
+  if (spec.top < 1 || spec.top > 1000)
+    throw InputError(SourceLocation{"--top", 0, 0, ""}, "must be from 1 to 1000");
+  if (spec.stride < 0) throw InputError(SourceLocation{"--stride", 0, 0, ""}, "must be 1 or more");
+  if (spec.lacunarity_box < 0)
+    throw InputError(SourceLocation{"--lacunarity-box", 0, 0, ""}, "must be 1 or more cells");
+  std::array<int64_t, 2> size{view.size[0], d.lattice.dimension == 2 ? view.size[1] : 1};
+  if (spec.window) {
+    const auto& w = *spec.window;
+    if (w[0] < 1 || w[1] < 1 || w[0] > size[0] || w[1] > size[1])
+      throw InputError(SourceLocation{"--window", 0, 0, ""},
+                       "a segment of " + std::to_string(w[0]) + " x " + std::to_string(w[1]) +
+                           " cells must fit in the view of " + std::to_string(size[0]) + " x " +
+                           std::to_string(size[1]) + " cells");
+    size = w;
+  }
+  for (const Target& t : spec.targets)
+    if (t.measure == Measure::empty &&
+        (t.zone.origin[0] + t.zone.size[0] > size[0] || t.zone.origin[1] + t.zone.size[1] > size[1]))
+      throw InputError(SourceLocation{"--target", 0, 0, ""},
+                       "'" + t.text + "': the zone must lie inside the segment of " +
+                           std::to_string(size[0]) + " x " + std::to_string(size[1]) + " cells");
+}
+
+std::vector<SearchHit> search_seeds(const Design& d, const Box& view, const SearchSpec& spec_in,
+                                    uint64_t first, uint64_t last,
+                                    const std::function<void(double)>& progress,
+                                    const std::atomic<bool>* cancel) {
+  check_search(d, view, spec_in);
+  SearchSpec spec = spec_in;
+  if (spec.targets.empty()) spec.targets = default_targets(d);
+  if (spec.lacunarity_box == 0) spec.lacunarity_box = d.lattice.base;
+  const bool grid = needs_grid(spec);
+  const bool one_row = d.lattice.dimension == 1;
+  std::vector<Box> segments;
+  if (spec.window) {
+    const auto [w, h] = *spec.window;
+    const int64_t stride = spec.stride ? spec.stride : std::max<int64_t>(1, std::min(w, h) / 8);
+    for (int64_t y : corners(one_row ? 1 : view.size[1], h, stride))
+      for (int64_t x : corners(view.size[0], w, stride)) {
+        Box s = view;
+        s.origin[0] += x, s.size[0] = w;
+        if (!one_row) s.origin[1] += y, s.size[1] = h;
+        segments.push_back(s);
+      }
+  } else {
+    segments.push_back(view);
+  }
+
+  const size_t top = static_cast<size_t>(spec.top);
+  tbb::combinable<std::vector<SearchHit>> best;
+  tbb::combinable<Scorer> scorers;
+  const uint64_t total = last - first + 1;
+  const uint64_t batch = grid ? 64 : 16384;
+  for (uint64_t start = 0; start < total; start += batch) {
+    if (cancel && cancel->load()) break;
+    const uint64_t end = std::min(total, start + batch);
+    tbb::parallel_for(tbb::blocked_range<uint64_t>(start, end, grid ? 1 : 256), [&](auto range) {
+      Scorer& s = scorers.local();
+      std::vector<SearchHit>& mine = best.local();
+      for (uint64_t i = range.begin(); i < range.end(); ++i) {
+        const uint64_t seed = first + i;
+        curdle_into(d, seed, view, s.field);
+        if (!grid && s.field.generated == view) {
+          keep_best(mine, score_bitsets(d, spec, s, seed), top);
+          continue;
+        }
+        s.measures.reset(d, view, values_in(s.field, view));
+        SearchHit best_here;
+        bool any = false;
+        for (const Box& segment : segments) {
+          SearchHit hit;
+          hit.seed = seed;
+          hit.segment = segment;
+          for (const Target& t : spec.targets) {
+            const double x = measure(t, s.measures, d, segment, spec.lacunarity_box);
+            hit.measured.push_back(x);
+            hit.score += shortfall(t, x);
+            if (t.measure == Measure::empty && x > 0) hit.meets_empty_zones = false;
+          }
+          if (!any || before(hit, best_here)) best_here = std::move(hit), any = true;
+        }
+        keep_best(mine, std::move(best_here), top);
+      }
+    });
+    if (progress) progress(static_cast<double>(end) / static_cast<double>(total));
+  }
+  std::vector<SearchHit> all;
+  best.combine_each([&](const std::vector<SearchHit>& part) {
+    for (const SearchHit& h : part) keep_best(all, h, top);
+  });
+  return all;
+}
+
+}  // namespace curdle

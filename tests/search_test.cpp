@@ -1,0 +1,224 @@
+// Segment measures against brute force and the report, target parsing, and seed search:
+// reproducible, independent of threads, and the same through either scoring path.
+#include "curdle/search.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+
+#include "curdle/boxcount.h"
+#include "curdle/curdling.h"
+#include "curdle/error.h"
+#include "curdle/overlay.h"
+#include "curdle/report.h"
+#include "curdle/segment_measures.h"
+#include "test_support.h"
+
+namespace curdle {
+namespace {
+
+Design two_curds_128() {
+  Design d = test::design(2, 2, {{"0.8", "0.8", "0.7", "0.7", "0.7", "0.7", "0.7"},
+                                 {"0.9", "0.6", "0.8", "0.7", "0.8", "0.7", "0.8"}});
+  d.field.size = {200, 150, 1};  // two by two roots, cropped
+  return d;
+}
+
+Box box(int64_t x, int64_t y, int64_t w, int64_t h) {
+  Box b;
+  b.origin = {x, y, 0};
+  b.size = {w, h, 1};
+  return b;
+}
+
+TEST(SegmentMeasures, CountsAndBoxCountsMatchTheReportOfTheWindow) {
+  const Design d = two_curds_128();
+  const CurdField field = curdle(d, 5, d.field);
+  SegmentMeasures m;
+  m.reset(d, d.field, values_in(field, d.field));
+  for (const Box& w : {box(0, 0, 200, 150), box(37, 11, 67, 67), box(120, 100, 80, 50),
+                       box(127, 127, 3, 2)}) {
+    const Report r = make_report(d, 5, field, w);
+    for (uint32_t v = 0; v < 4; ++v) EXPECT_EQ(m.value_count(v, w), r.values[v].count);
+    for (size_t c = 0; c < 2; ++c) {
+      EXPECT_EQ(m.curd_count(c, w), r.curds[c].stages.back().survivors);
+      EXPECT_EQ(m.box_counts(c, w), r.curds[c].box_counts) << "curd " << c;
+    }
+  }
+}
+
+TEST(SegmentMeasures, ClustersRunsAndLacunarityAgreeWithBruteForce) {
+  Design d = test::design(2, 2, {test::repeat("0.5", 5)[0], test::repeat("0.5", 5)[0]});
+  d.field.size = {32, 32, 1};
+  std::mt19937 rng(3);
+  std::vector<uint16_t> grid(32 * 32);
+  for (auto& v : grid) v = rng() % 3 == 0;
+  SegmentMeasures m;
+  m.reset(d, d.field, grid);
+  const Box s = box(3, 5, 20, 17);
+  auto at = [&](int64_t x, int64_t y) { return grid[static_cast<size_t>(y * 32 + x)]; };
+  // Largest cluster by repeated flood fill with a plain recursive walk.
+  std::vector<int> label(32 * 32, 0);
+  std::function<int(int64_t, int64_t, int)> fill = [&](int64_t x, int64_t y, int id) -> int {
+    if (x < 3 || x >= 23 || y < 5 || y >= 22 || at(x, y) != 1 || label[y * 32 + x]) return 0;
+    label[y * 32 + x] = id;
+    return 1 + fill(x + 1, y, id) + fill(x - 1, y, id) + fill(x, y + 1, id) + fill(x, y - 1, id);
+  };
+  uint64_t largest = 0, longest = 0;
+  int id = 0;
+  for (int64_t y = 5; y < 22; ++y)
+    for (int64_t x = 3; x < 23; ++x) largest = std::max<uint64_t>(largest, fill(x, y, ++id));
+  for (int64_t y = 5; y < 22; ++y)
+    for (int64_t x = 3; x < 23; ++x) {
+      uint64_t h = 0, v = 0;
+      while (x + h < 23 && at(x + h, y) == 1) ++h;
+      while (y + v < 22 && at(x, y + v) == 1) ++v;
+      longest = std::max({longest, h, v});
+    }
+  EXPECT_EQ(m.largest_cluster(1, s), largest);
+  EXPECT_EQ(m.longest_run(1, s), longest);
+  double s1 = 0, s2 = 0, n = 0;
+  for (int64_t y = 5; y + 4 <= 22; ++y)
+    for (int64_t x = 3; x + 4 <= 23; ++x) {
+      double mass = 0;
+      for (int64_t j = 0; j < 4; ++j)
+        for (int64_t i = 0; i < 4; ++i) mass += at(x + i, y + j) == 1;
+      s1 += mass, s2 += mass * mass, n += 1;
+    }
+  EXPECT_NEAR(*m.lacunarity(1, s, 4), (s2 / n) / ((s1 / n) * (s1 / n)), 1e-12);
+  EXPECT_FALSE(m.lacunarity(2, s, 4));  // no cell has value 2
+}
+
+TEST(SearchTargets, ParseNamesAndComparisons) {
+  const Design d = two_curds_128();
+  const Target r = parse_target("ratio:c0+c1=0.25", d);
+  EXPECT_EQ(r.measure, Measure::ratio);
+  EXPECT_EQ(r.subject, 3);
+  EXPECT_EQ(r.compare, Compare::equal);
+  EXPECT_DOUBLE_EQ(r.goal, 0.25);
+  const Target c = parse_target("cluster:c1<=12", d);
+  EXPECT_EQ(c.compare, Compare::at_most);
+  EXPECT_EQ(c.subject, 2);
+  EXPECT_EQ(parse_target("dimension:c1>=1.5", d).subject, 1);
+  EXPECT_EQ(parse_target("count:0=100", d).subject, 0);
+  const Target e = parse_target("empty:c0=1,2,3,4", d);
+  EXPECT_EQ(e.subject, 0);
+  EXPECT_EQ(e.zone, box(1, 2, 3, 4));
+  EXPECT_EQ(parse_target("empty=0,0,5,5", d).subject, -1);
+  for (const char* bad : {"ratio:c0=1.5", "ratio=0.1", "ratio:nope=0.1", "size:c0=3",
+                          "dimension:c9=1", "empty=1,2,3", "empty=0,0,0,4", "cluster:c0<4",
+                          "ratio:c0=-1", "ratio:c0=x", "count:4=1"}) {
+    EXPECT_THROW(parse_target(bad, d), InputError) << bad;
+  }
+  try {
+    parse_target("ratio:nope=0.1", d);
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("empty, c0, c1, c0+c1"), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(SearchTargets, ShortfallIsZeroWhenMet) {
+  const Design d = two_curds_128();
+  EXPECT_DOUBLE_EQ(shortfall(parse_target("cluster:c0<=10", d), 8), 0);
+  EXPECT_DOUBLE_EQ(shortfall(parse_target("cluster:c0<=10", d), 15), 0.5);
+  EXPECT_DOUBLE_EQ(shortfall(parse_target("run:c0>=4", d), 3), 0.25);
+  EXPECT_DOUBLE_EQ(shortfall(parse_target("ratio:c0=0.2", d), 0.25), 0.05);
+  EXPECT_DOUBLE_EQ(shortfall(parse_target("empty=0,0,10,10", d), 1), 1);  // 100 x 1 / 100
+}
+
+TEST(SeedSearch, ThreadCountAndBatchingDoNotChangeTheResult) {
+  const Design d = two_curds_128();
+  SearchSpec spec;
+  spec.targets = {parse_target("ratio:c0+c1=0.1", d), parse_target("cluster:c0+c1<=20", d),
+                  parse_target("empty=0,0,6,6", d)};
+  spec.window = std::array<int64_t, 2>{40, 30};
+  spec.top = 7;
+  std::vector<SearchHit> one, many;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = search_seeds(d, d.field, spec, 100, 260);
+  }
+  many = search_seeds(d, d.field, spec, 100, 260);
+  ASSERT_EQ(one.size(), 7u);
+  for (size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].seed, many[i].seed);
+    EXPECT_EQ(one[i].segment, many[i].segment);
+    EXPECT_EQ(one[i].score, many[i].score);
+    if (i) {
+      EXPECT_LE(one[i - 1].score, one[i].score);
+    }
+  }
+}
+
+TEST(SeedSearch, TheBestHitIsWhatTheReportOfItsSegmentSays) {
+  const Design d = two_curds_128();
+  SearchSpec spec;
+  spec.targets = {parse_target("ratio:c0=0.2", d), parse_target("dimension:c1=1.6", d)};
+  spec.window = std::array<int64_t, 2>{64, 48};
+  spec.stride = 16;
+  spec.top = 3;
+  const auto hits = search_seeds(d, d.field, spec, 1, 40);
+  ASSERT_EQ(hits.size(), 3u);
+  for (const SearchHit& h : hits) {
+    const CurdField f = curdle(d, h.seed, h.segment);
+    const Report r = make_report(d, h.seed, f, h.segment);
+    EXPECT_DOUBLE_EQ(h.measured[0], static_cast<double>(r.values[1].count) / (64 * 48));
+    EXPECT_DOUBLE_EQ(h.measured[1], r.curds[1].fit->slope);
+    EXPECT_EQ(h.segment.origin[0] % 16 == 0 || h.segment.origin[0] == 200 - 64, true);
+  }
+  // Exhaustive scoring of one seed finds nothing better than the search's best for it.
+  SearchSpec all = spec;
+  all.stride = 1;
+  const auto exhaustive = search_seeds(d, d.field, all, hits[0].seed, hits[0].seed);
+  EXPECT_LE(exhaustive[0].score, hits[0].score);
+}
+
+TEST(SeedSearch, BitsetAndGridScoringAgree) {
+  // The whole field with ratios and dimensions is scored from bitsets; a segment the size of
+  // the field goes through the grid. Both must give the same numbers.
+  Design d = test::design(4, 2, {{"2/3", "1/2", "1/3"}});
+  SearchSpec fast;
+  fast.targets = {parse_target("ratio:c0=0.111", d), parse_target("dimension:c0=1.5", d),
+                  parse_target("count:0=3600", d)};
+  fast.top = 20;
+  SearchSpec grid = fast;
+  grid.window = std::array<int64_t, 2>{64, 64};
+  const auto a = search_seeds(d, d.field, fast, 0, 500);
+  const auto b = search_seeds(d, d.field, grid, 0, 500);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].seed, b[i].seed);
+    EXPECT_NEAR(a[i].score, b[i].score, 1e-12);
+  }
+}
+
+TEST(SeedSearch, RefusesWhatCannotBeSearched) {
+  const Design d = two_curds_128();
+  SearchSpec spec;
+  spec.window = std::array<int64_t, 2>{201, 10};
+  EXPECT_THROW(check_search(d, d.field, spec), InputError);
+  spec.window = std::array<int64_t, 2>{20, 10};
+  spec.targets = {parse_target("empty=15,0,6,6", d)};
+  EXPECT_THROW(check_search(d, d.field, spec), InputError);
+  spec.targets.clear();
+  spec.top = 0;
+  EXPECT_THROW(check_search(d, d.field, spec), InputError);
+  Design cube = test::design(2, 3, test::repeat("0.5", 3));
+  EXPECT_THROW(check_search(cube, cube.field, SearchSpec{}), InputError);
+}
+
+TEST(SeedSearch, DefaultTargetsAreTheExpectedSharesAndDimensions) {
+  const Design d = test::design(4, 2, {{"2/3", "1/2", "1/3"}});
+  const auto t = default_targets(d);
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_NEAR(t[1].goal, 1.0 / 9, 1e-12);
+  EXPECT_NEAR(t[0].goal, 8.0 / 9, 1e-12);
+  EXPECT_NEAR(t[2].goal, 2 + std::log(1.0 / 9) / (3 * std::log(4.0)), 1e-12);
+}
+
+}  // namespace
+}  // namespace curdle
