@@ -84,16 +84,22 @@ void count_groups(const uint64_t* words, size_t n, GroupLevel* levels, size_t co
 
 std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children,
                                  std::vector<Bitset>& scratch) {
+  std::vector<uint64_t> counts;
+  box_counts_into(curd, children, scratch, counts);
+  return counts;
+}
+
+void box_counts_into(const Curd& curd, uint64_t children, std::vector<Bitset>& scratch,
+                     std::vector<uint64_t>& counts) {
   const int K = static_cast<int>(curd.stages.size()) - 1;
+  counts.assign(static_cast<size_t>(K) + 1, 0);
   if (std::has_single_bit(children)) {
-    std::vector<uint64_t> counts(K + 1, 0);
     std::array<GroupLevel, 64> levels;
     uint64_t group = 1;
     for (int j = K; j >= 0; --j, group *= children) levels[K - j] = GroupLevel{group, &counts[j]};
     count_groups(curd.stages[K].words.data(), curd.stages[K].words.size(), levels.data(), K + 1);
-    return counts;
+    return;
   }
-  std::vector<uint64_t> counts(K + 1, 0);
   counts[K] = curd.stages[K].count();
   scratch.resize(2);
   const Bitset* below = &curd.stages[K];
@@ -133,7 +139,6 @@ std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children,
     }
     below = &alive;
   }
-  return counts;
 }
 
 std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children) {

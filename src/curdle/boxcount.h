@@ -17,6 +17,9 @@ namespace curdle {
 // `scratch` keeps its allocations between calls.
 std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children, std::vector<Bitset>& scratch);
 std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children);
+// The same into `counts`, reusing its allocation (searches over many seeds).
+void box_counts_into(const Curd& curd, uint64_t children, std::vector<Bitset>& scratch,
+                     std::vector<uint64_t>& counts);
 
 struct LineFit {
   double slope = 0;

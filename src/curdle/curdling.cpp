@@ -286,6 +286,8 @@ class SurvivalBatch {
 
   // A tie on the top byte: the next 56 bits decide (kind 1).
   void resolve(Block& b, unsigned bit) {
+    // A threshold with no bits below its top byte (p = 1/2, 1/4, ...): a tie is never below.
+    if ((threshold_ & kLow56) == 0) return;
     const auto t =
         w_.rng.draw(b.block << 4 | bit, b.root, w_.curd, w_.stage, DrawKind::tie_break, 0);
     if ((RandomStream::high_word(t) >> 8) < (threshold_ & kLow56)) b.below |= 1u << bit;

@@ -102,6 +102,8 @@ struct Scorer {
   CurdField field;
   SegmentMeasures measures;
   std::vector<Bitset> scratch;
+  std::vector<uint64_t> counts, box_counts;
+  std::vector<double> measured;
 };
 
 bool needs_grid(const SearchSpec& spec) {
@@ -113,20 +115,21 @@ bool needs_grid(const SearchSpec& spec) {
   return false;
 }
 
-// The whole generated view, read off the bitsets without a grid of values.
-SearchHit score_bitsets(const Design& d, const SearchSpec& spec, Scorer& s, uint64_t seed) {
-  SearchHit hit;
-  hit.seed = seed;
-  hit.segment = s.field.generated;
+// The whole generated view, read off the bitsets without a grid of values. Writes the
+// measures into s.measured and returns the score; allocates nothing once warm.
+double score_bitsets(const Design& d, const SearchSpec& spec, Scorer& s) {
   const size_t n = d.curds.size(), values = size_t{1} << n;
-  std::vector<uint64_t> counts(values, 0);
+  const double cells = static_cast<double>(s.field.generated.cells());
+  s.counts.assign(values, 0);
+  s.measured.clear();
   bool counted = false;
+  double score = 0;
   for (const Target& t : spec.targets) {
     double x = std::numeric_limits<double>::quiet_NaN();
     if (t.measure == Measure::dimension) {
-      const auto fit = fit_box_dimension(
-          box_counts(s.field.curds[static_cast<size_t>(t.subject)], d.lattice.children(), s.scratch),
-          d.lattice.base);
+      box_counts_into(s.field.curds[static_cast<size_t>(t.subject)], d.lattice.children(),
+                      s.scratch, s.box_counts);
+      const auto fit = fit_box_dimension(s.box_counts, d.lattice.base);
       if (fit) x = fit->slope;
     } else {
       if (!counted) {
@@ -136,20 +139,20 @@ SearchHit score_bitsets(const Design& d, const SearchSpec& spec, Scorer& s, uint
             uint64_t m = ~uint64_t{0};
             for (size_t c = 0; c < n; ++c)
               m &= (v >> c & 1) ? s.field.finest(c).words[w] : ~s.field.finest(c).words[w];
-            counts[v] += static_cast<uint64_t>(std::popcount(m));
+            s.counts[v] += static_cast<uint64_t>(std::popcount(m));
           }
         uint64_t occupied = 0;
-        for (size_t v = 1; v < values; ++v) occupied += counts[v];
-        counts[0] = hit.segment.cells() - occupied;
+        for (size_t v = 1; v < values; ++v) occupied += s.counts[v];
+        s.counts[0] = s.field.generated.cells() - occupied;
         counted = true;
       }
-      x = static_cast<double>(counts[static_cast<size_t>(t.subject)]);
-      if (t.measure == Measure::ratio) x /= static_cast<double>(hit.segment.cells());
+      x = static_cast<double>(s.counts[static_cast<size_t>(t.subject)]);
+      if (t.measure == Measure::ratio) x /= cells;
     }
-    hit.measured.push_back(x);
-    hit.score += shortfall(t, x);
+    s.measured.push_back(x);
+    score += shortfall(t, x);
   }
-  return hit;
+  return score;
 }
 
 }  // namespace
@@ -331,7 +334,7 @@ std::vector<SearchHit> search_seeds(const Design& d, const Box& view, const Sear
   tbb::combinable<std::vector<SearchHit>> best;
   tbb::combinable<Scorer> scorers;
   const uint64_t total = last - first + 1;
-  const uint64_t batch = grid ? 64 : 16384;
+  const uint64_t batch = grid ? 64 : 65536;
   for (uint64_t start = 0; start < total; start += batch) {
     if (cancel && cancel->load()) break;
     const uint64_t end = std::min(total, start + batch);
@@ -342,7 +345,15 @@ std::vector<SearchHit> search_seeds(const Design& d, const Box& view, const Sear
         const uint64_t seed = first + i;
         curdle_into(d, seed, view, s.field);
         if (!grid && s.field.generated == view) {
-          keep_best(mine, score_bitsets(d, spec, s, seed), top);
+          SearchHit hit;
+          hit.seed = seed;
+          hit.segment = view;
+          hit.score = score_bitsets(d, spec, s);
+          // Most seeds lose to the worst kept: skip building their hit.
+          if (mine.size() < top || before(hit, mine.back())) {
+            hit.measured = s.measured;
+            keep_best(mine, std::move(hit), top);
+          }
           continue;
         }
         s.measures.reset(d, view, values_in(s.field, view));

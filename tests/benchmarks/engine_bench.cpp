@@ -11,6 +11,7 @@
 #include "curdle/boxcount.h"
 #include "curdle/curdling.h"
 #include "curdle/report.h"
+#include "curdle/search.h"
 #include "export/schedule.h"
 #include "layout/builder.h"
 #include "recipe/recipe.h"
@@ -52,27 +53,18 @@ void BM_Cube_b4_K5_p08(benchmark::State& state) {
 BENCHMARK(BM_Cube_b4_K5_p08)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
 // Seed search as the peer does it: 64 x 64 curds (b = 4; 2/3, 1/2, 1/3), each scored by
-// |survivor ratio - target| + |box dimension - target|; seeds are spread over the threads.
+// |survivor ratio - target| + |box dimension - target|, through search_seeds, which is what
+// `curdle search` runs.
 void BM_SeedSearch_64x64(benchmark::State& state) {
   const curdle::Design d = make(4, 2, {"2/3", "1/2", "1/3"});
+  curdle::SearchSpec spec;
+  spec.targets = {curdle::parse_target("ratio:curd=0.111", d),
+                  curdle::parse_target("dimension:curd=1.5", d)};
+  spec.top = 1;
   const uint64_t seeds = static_cast<uint64_t>(state.range(0));
   for (auto _ : state) {
-    tbb::combinable<std::pair<double, uint64_t>> best([] { return std::pair{1e300, uint64_t{0}}; });
-    tbb::parallel_for(tbb::blocked_range<uint64_t>(0, seeds, 256), [&](auto range) {
-      curdle::CurdField f;
-      std::vector<curdle::Bitset> scratch;
-      auto& b = best.local();
-      for (uint64_t seed = range.begin(); seed < range.end(); ++seed) {
-        curdle::curdle_into(d, seed, d.field, f);
-        const auto counts = curdle::box_counts(f.curds[0], 16, scratch);
-        const auto fit = curdle::fit_box_dimension(counts, 4);
-        const double ratio = static_cast<double>(counts.back()) / 4096.0;
-        const double score = std::fabs(ratio - 0.111) + std::fabs((fit ? fit->slope : 0) - 1.5);
-        if (score < b.first) b = {score, seed};
-      }
-    });
-    benchmark::DoNotOptimize(
-        best.combine([](auto a, auto b) { return a.first <= b.first ? a : b; }));
+    const auto best = curdle::search_seeds(d, d.field, spec, 0, seeds - 1);
+    benchmark::DoNotOptimize(best.data());
   }
   state.counters["seeds_per_s"] =
       benchmark::Counter(static_cast<double>(seeds), benchmark::Counter::kIsIterationInvariantRate);
