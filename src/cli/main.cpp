@@ -7,6 +7,7 @@
 
 #include "cli/generate.h"
 #include "cli/search_command.h"
+#include "cli/serve_command.h"
 #include "cli/session.h"
 #include "curdle/error.h"
 #include "curdle/report.h"
@@ -59,12 +60,17 @@ int run(int argc, char** argv) {
       "search", "Rank seeds, and segments of each seed's curd, by how well they meet targets");
   add_search_options(*find, search_options);
 
+  ServeOptions serve_options;
+  CLI::App* serve = app.add_subcommand(
+      "serve", "Serve the interactive page on a local address: edit, select segments, export");
+  add_serve_options(*serve, serve_options);
+
   const std::string command = argc >= 2 ? argv[1] : "";
   if (argc >= 2 && argv[1][0] != '-' && command != "generate" && command != "report" &&
-      command != "search") {
+      command != "search" && command != "serve") {
     std::fprintf(stderr,
-                 "curdle: error: unknown command '%s'; the commands are generate, report and "
-                 "search (curdle --help)\n",
+                 "curdle: error: unknown command '%s'; the commands are generate, report, "
+                 "search and serve (curdle --help)\n",
                  argv[1]);
     return 2;
   }
@@ -80,6 +86,7 @@ int run(int argc, char** argv) {
   }
   if (gen->parsed()) return generate(gen_options, out_dir, outputs);
   if (find->parsed()) return run_search(search_options);
+  if (serve->parsed()) return run_serve(serve_options);
   return report(report_options);
 }
 

@@ -36,6 +36,22 @@ const char* prefix(LayoutKind kind) {
   return "E";
 }
 
+
+Rect clip(const Rect& r, double width, double height) {
+  const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
+  const double x1 = std::min(width, r.right()), y1 = std::min(height, r.top());
+  return Rect{x0, y0, std::max(0.0, x1 - x0), std::max(0.0, y1 - y0)};
+}
+
+std::string element_id(LayoutKind kind, int64_t row, int64_t column, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%s-R%0*lld-C%0*lld", prefix(kind), digits,
+                static_cast<long long>(row), digits, static_cast<long long>(column));
+  return buf;
+}
+
+}  // namespace
+
 const char* element_type(LayoutKind kind) {
   switch (kind) {
     case LayoutKind::tile:
@@ -55,21 +71,6 @@ const char* element_type(LayoutKind kind) {
   }
   return "element";
 }
-
-Rect clip(const Rect& r, double width, double height) {
-  const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
-  const double x1 = std::min(width, r.right()), y1 = std::min(height, r.top());
-  return Rect{x0, y0, std::max(0.0, x1 - x0), std::max(0.0, y1 - y0)};
-}
-
-std::string element_id(LayoutKind kind, int64_t row, int64_t column, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%s-R%0*lld-C%0*lld", prefix(kind), digits,
-                static_cast<long long>(row), digits, static_cast<long long>(column));
-  return buf;
-}
-
-}  // namespace
 
 std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec) {
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;

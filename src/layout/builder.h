@@ -10,6 +10,9 @@
 
 namespace curdle {
 
+// What one element of a layout of this kind is called: "paving tile", "panel", "bay".
+const char* element_type(LayoutKind kind);
+
 // Elements along x and y that cover the spec's floor or wall: those that start inside it.
 std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec);
 

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <set>
+#include <sstream>
 
 #include "curdle/error.h"
 #include "layout/builder.h"
@@ -863,6 +864,22 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
                         " cells, the elements of the layout's floor, wall, sheet or line");
   }
   return recipe;
+}
+
+std::string recipe_text_with(std::string_view text, const std::string& source,
+                             const std::vector<std::string>& overrides) {
+  toml::table doc;
+  try {
+    doc = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(SourceLocation{source, static_cast<int>(e.source().begin.line),
+                                    static_cast<int>(e.source().begin.column), ""},
+                     "not valid TOML: " + std::string(e.description()));
+  }
+  for (const auto& o : overrides) apply_override(doc, o);
+  std::ostringstream out;
+  out << doc << "\n";
+  return out.str();
 }
 
 Box parse_window(const std::string& text, const Design& design) {

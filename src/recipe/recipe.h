@@ -27,6 +27,11 @@ struct Recipe {
 Recipe parse_recipe(std::string_view text, const std::string& source,
                     const std::vector<std::string>& overrides = {});
 
+// The recipe's TOML with `overrides` applied (comments are not kept): what reproduces a run
+// without --set. Throws InputError as parse_recipe does.
+std::string recipe_text_with(std::string_view text, const std::string& source,
+                             const std::vector<std::string>& overrides);
+
 // "X,Y,W,H" (2-D), "X,W" (1-D) or "X,Y,Z,W,H,D" (3-D), checked to lie inside the field.
 Box parse_window(const std::string& text, const Design& design);
 

@@ -1,0 +1,102 @@
+#include "cli/serve_command.h"
+
+#include <pthread.h>
+#include <signal.h>
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "cli/session.h"
+#include "curdle/error.h"
+#include "server/server.h"
+
+namespace fs = std::filesystem;
+
+namespace curdle::cli {
+
+namespace {
+constexpr const char* kDefaultPattern = "paper/fig8-segment-of-large-curd.toml";
+}
+
+void add_serve_options(CLI::App& c, ServeOptions& o) {
+  c.add_option("recipe", o.recipe_path,
+               std::string("Recipe file (TOML) (default: the pattern ") + kDefaultPattern +
+                   " installed with curdle)");
+  c.add_option("--port", o.port, "Port to listen on (default 8080; 0: any free port)")
+      ->check(CLI::Range(0, 65535));
+  c.add_option("--host", o.host,
+               "Address to listen on (default 127.0.0.1, this machine only; give another "
+               "explicitly to share the page on a network)");
+  c.add_option("--web-root", o.web_root, "Directory of the page's files (default: installed)");
+  c.add_option("--workers", o.workers,
+               "Generate, export and search requests run at once (default 2)")
+      ->check(CLI::Range(1, 64));
+  c.add_option("--max-cells", o.max_cells,
+               "Most cells one request may generate (default 4194304, 2048 x 2048)")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 32));
+  c.add_option("--max-memory", o.max_memory,
+               "Memory one request may use, e.g. 2G (default: a quarter of physical memory)");
+}
+
+int run_serve(const ServeOptions& o) {
+  const fs::path exe = fs::read_symlink("/proc/self/exe");
+  const fs::path web_root = o.web_root.empty() ? server::find_web_root(exe) : fs::path(o.web_root);
+  std::string recipe_path = o.recipe_path;
+  if (recipe_path.empty()) {
+    recipe_path = (web_root / ".." / "patterns" / kDefaultPattern).lexically_normal().string();
+    if (!fs::is_regular_file(recipe_path))
+      throw InputError("no recipe given, and the default pattern is not installed at " +
+                       recipe_path + "; name a recipe: curdle serve patterns/...toml");
+  }
+  server::ServerConfig config;
+  config.web_root = web_root;
+  config.workers = o.workers;
+  config.api.recipe_path = recipe_path;
+  config.api.recipe_text = read_recipe_file(recipe_path);
+  config.api.limits.max_cells = o.max_cells;
+  if (!o.max_memory.empty()) config.api.limits.max_memory = parse_bytes(o.max_memory, "--max-memory");
+  // The recipe must be good before the page is offered.
+  CommonOptions check;
+  check.recipe_path = recipe_path;
+  make_session(config.api.recipe_text, check);
+
+  // Ctrl-C and SIGTERM are taken by one thread, which stops the server; every other thread
+  // (including httplib's and TBB's) inherits the blocked mask.
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+
+  server::Server server(config);
+  const int port = server.bind(o.host, o.port);
+  const std::string host = o.host.find(':') != std::string::npos ? "[" + o.host + "]" : o.host;
+  std::printf("curdle: serving %s\n  open http://%s:%d/ (Ctrl-C stops)\n", recipe_path.c_str(),
+              host.c_str(), port);
+  std::fflush(stdout);
+
+  std::atomic<bool> done{false};
+  std::thread waiter([&] {
+    int received = 0;
+    sigwait(&signals, &received);
+    if (done) return;
+    std::printf("\ncurdle: stopping (%s)\n", received == SIGINT ? "Ctrl-C" : "SIGTERM");
+    std::fflush(stdout);
+    server.stop();
+  });
+  const bool served = server.listen();
+  // listen() also returns on failure: wake the waiter so that it can be joined.
+  done = true;
+  pthread_kill(waiter.native_handle(), SIGTERM);
+  waiter.join();
+  if (!served) {
+    std::fprintf(stderr, "curdle: error: the server stopped unexpectedly\n");
+    return 1;
+  }
+  std::printf("curdle: stopped\n");
+  return 0;
+}
+
+}  // namespace curdle::cli

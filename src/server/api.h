@@ -1,0 +1,50 @@
+// The JSON API of `curdle serve`, without HTTP: each endpoint is a function from query
+// parameters to a response, so the benchmark and the tests can call it directly. Runs go
+// through the same session and output code as the command line, so a download is the file
+// `curdle generate` writes for the same recipe, seed and window.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <map>
+#include <string>
+
+namespace curdle::server {
+
+using Params = std::multimap<std::string, std::string>;
+
+struct ApiLimits {
+  uint64_t max_cells = uint64_t{1} << 22;         // cells generated for one request (2048^2)
+  uint64_t max_layout_cells = uint64_t{1} << 20;  // cells laid out for a layout download
+  uint64_t max_search_cells = uint64_t{1} << 28;  // seeds x field cells for one search
+  uint64_t max_memory = 0;                        // bytes a request may use; 0: a default
+};
+
+struct ApiContext {
+  std::string recipe_path;  // as given to `serve`; named in commands
+  std::string recipe_text;  // read once at start
+  ApiLimits limits;
+  const std::atomic<bool>* stopping = nullptr;  // set on shutdown: long searches end early
+};
+
+struct ApiResponse {
+  int status = 200;
+  std::string content_type = "application/json";
+  std::string body;
+  std::string filename;  // set for downloads
+};
+
+// GET /api/recipe: the recipe as the page needs it (lattice, curds, field, layout, legend).
+ApiResponse api_recipe(const ApiContext& context);
+// GET /api/generate: seed, window, cells=0|1 and recipe keys (lattice.base=3, or
+// set=lattice.base=3): report, legend, values of the cells, command and recipe text.
+ApiResponse api_generate(const ApiContext& context, const Params& params);
+// GET /api/export: as generate, plus file=NAME; the file `curdle generate` writes.
+ApiResponse api_export(const ApiContext& context, const Params& params);
+// GET /api/search: seeds=A..B, window=W,H, target (repeatable), top, stride, recipe keys.
+ApiResponse api_search(const ApiContext& context, const Params& params);
+
+// {"error": message} with an HTTP status.
+ApiResponse api_error(int status, const std::string& message);
+
+}  // namespace curdle::server

@@ -1,0 +1,128 @@
+#include "server/server.h"
+
+#include <httplib.h>
+
+#include <chrono>
+#include <semaphore>
+
+#include "curdle/error.h"
+
+namespace curdle::server {
+
+struct Server::Impl {
+  ServerConfig config;
+  httplib::Server http;
+  std::atomic<bool> stopping{false};
+  std::counting_semaphore<64> slots;
+
+  explicit Impl(ServerConfig c)
+      : config(std::move(c)), slots(std::clamp(config.workers, 1, 64)) {
+    config.api.stopping = &stopping;
+  }
+
+  void reply(httplib::Response& res, const ApiResponse& r) {
+    res.status = r.status;
+    res.set_header("Cache-Control", "no-store");
+    if (!r.filename.empty())
+      res.set_header("Content-Disposition", "attachment; filename=\"" + r.filename + "\"");
+    res.set_content(r.body, r.content_type.c_str());
+  }
+
+  // Runs a heavy endpoint when a slot is free; 503 when none frees up within a minute.
+  template <class F>
+  void heavy(httplib::Response& res, F&& endpoint) {
+    if (!slots.try_acquire_for(std::chrono::seconds(60))) {
+      reply(res, api_error(503, "the server is busy; try again"));
+      return;
+    }
+    struct Release {
+      std::counting_semaphore<64>& s;
+      ~Release() { s.release(); }
+    } release{slots};
+    reply(res, endpoint());
+  }
+
+  void routes() {
+    http.set_payload_max_length(config.max_body_bytes);
+    http.Get("/api/recipe", [this](const httplib::Request&, httplib::Response& res) {
+      reply(res, api_recipe(config.api));
+    });
+    http.Get("/api/generate", [this](const httplib::Request& req, httplib::Response& res) {
+      heavy(res, [&] { return api_generate(config.api, req.params); });
+    });
+    http.Get("/api/export", [this](const httplib::Request& req, httplib::Response& res) {
+      heavy(res, [&] { return api_export(config.api, req.params); });
+    });
+    http.Get("/api/search", [this](const httplib::Request& req, httplib::Response& res) {
+      heavy(res, [&] { return api_search(config.api, req.params); });
+    });
+    // Anything else under /api/ is a JSON 404 (or 405 for another method), never a page.
+    auto not_found = [this](const httplib::Request& req, httplib::Response& res) {
+      const bool get = req.method == "GET";
+      reply(res, api_error(get ? 404 : 405,
+                           get ? "no such endpoint " + req.path +
+                                     "; the API has /api/recipe, /api/generate, /api/export "
+                                     "and /api/search"
+                               : "the API takes GET requests only"));
+    };
+    http.Get(R"(/api/.*)", not_found);
+    http.Post(R"(/api/.*)", not_found);
+    http.Put(R"(/api/.*)", not_found);
+    http.Delete(R"(/api/.*)", not_found);
+    http.set_mount_point("/", config.web_root.string());
+    http.set_exception_handler(
+        [this](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
+          reply(res, api_error(500, "internal error"));
+        });
+    http.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+      // Errors httplib raises itself (413 too large, 414 URI too long, 404 file): JSON for the
+      // API, plain text for files.
+      if (!res.body.empty()) return;
+      const std::string message = res.status == 413   ? "the request is too large"
+                                  : res.status == 414 ? "the request's address is too long"
+                                  : res.status == 404 ? "not found: " + req.path
+                                                      : "request failed";
+      if (req.path.rfind("/api/", 0) == 0)
+        res.set_content(api_error(res.status, message).body, "application/json");
+      else
+        res.set_content(message + "\n", "text/plain");
+    });
+  }
+};
+
+Server::Server(ServerConfig config) : impl_(std::make_unique<Impl>(std::move(config))) {
+  if (!std::filesystem::is_regular_file(impl_->config.web_root / "index.html"))
+    throw InputError("the page's files are not in " + impl_->config.web_root.string() +
+                     " (index.html missing); give --web-root");
+  impl_->routes();
+}
+
+Server::~Server() { stop(); }
+
+int Server::bind(const std::string& host, int port) {
+  const int bound = port == 0 ? impl_->http.bind_to_any_port(host)
+                              : (impl_->http.bind_to_port(host, port) ? port : -1);
+  if (bound <= 0)
+    throw InputError(SourceLocation{"--port", 0, 0, ""},
+                     "cannot listen on " + host + ":" + std::to_string(port) +
+                         " (in use, or not an address of this machine); choose another "
+                         "--port, or 0 for any free port");
+  return bound;
+}
+
+bool Server::listen() { return impl_->http.listen_after_bind(); }
+
+void Server::stop() {
+  impl_->stopping = true;
+  impl_->http.stop();
+}
+
+std::filesystem::path find_web_root(const std::filesystem::path& executable) {
+  const auto dir = executable.parent_path();
+  for (const auto& candidate : {dir / "share/curdle/web", dir / "../share/curdle/web"})
+    if (std::filesystem::is_regular_file(candidate / "index.html"))
+      return std::filesystem::weakly_canonical(candidate);
+  return dir / "share/curdle/web";
+}
+
+}  // namespace curdle::server

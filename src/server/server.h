@@ -1,0 +1,42 @@
+// `curdle serve`: the page's files and the JSON API (api.h) over HTTP on one address.
+// Heavy requests run at most `workers` at a time; the rest wait their turn.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "server/api.h"
+
+namespace curdle::server {
+
+struct ServerConfig {
+  ApiContext api;
+  std::filesystem::path web_root;  // index.html, app.js, style.css
+  int workers = 2;                 // generate, export and search requests at once
+  size_t max_body_bytes = 64 * 1024;
+};
+
+class Server {
+ public:
+  explicit Server(ServerConfig config);
+  ~Server();
+
+  // Binds to host:port (port 0: any free port) and returns the port; throws InputError when
+  // the address cannot be used.
+  int bind(const std::string& host, int port);
+  // Serves until stop(); returns false when it failed to serve.
+  bool listen();
+  // Safe from any thread; in-flight searches end early.
+  void stop();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Where the page's files are: beside the program (build tree) or in ../share (installed).
+std::filesystem::path find_web_root(const std::filesystem::path& executable);
+
+}  // namespace curdle::server

@@ -1,0 +1,145 @@
+// The interactive page in headless Chromium, as a designer uses it: load it, change a
+// probability, drag a segment, download the segment's files, and check that they are the files
+// `curdle generate` writes for the command the page shows. Bad input must show the server's
+// message. Screenshots go to SCREENSHOT_DIR for a person to look at.
+// Usage: node page.mjs CURDLE SCREENSHOT_DIR
+import { spawn, execFileSync } from 'node:child_process';
+import { mkdir, mkdtemp, readFile, rm } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+
+const [curdle, shots] = process.argv.slice(2);
+await mkdir(shots, { recursive: true });
+const work = await mkdtemp(path.join(tmpdir(), 'curdle-page-'));
+let failures = 0;
+const check = (ok, what) => {
+  console.log(`${ok ? 'ok' : 'FAIL'}: ${what}`);
+  if (!ok) failures++;
+};
+
+// The server, on any free port of the loopback address.
+const server = spawn(curdle, ['serve', '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
+const url = await new Promise((resolve, reject) => {
+  let text = '';
+  server.stdout.on('data', (d) => {
+    text += d;
+    const m = /open (http:\/\/127\.0\.0\.1:\d+\/)/.exec(text);
+    if (m) resolve(m[1]);
+  });
+  server.on('exit', (code) => reject(new Error(`curdle serve exited ${code}: ${text}`)));
+  setTimeout(() => reject(new Error(`curdle serve printed no address: ${text}`)), 20000);
+});
+
+const browser = await chromium.launch({
+  executablePath: '/usr/bin/chromium',
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
+});
+try {
+  const page = await browser.newPage({ viewport: { width: 1500, height: 1000 }, acceptDownloads: true });
+  const pageErrors = [];
+  page.on('pageerror', (e) => pageErrors.push(e.message));
+  await page.goto(url);
+  await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+  await page.screenshot({ path: path.join(shots, '1-loaded.png') });
+  check(await page.locator('#values-table tr').count() === 3, 'the values table has a header and two values');
+  check((await page.textContent('#segment-text')).includes('0,0,67,67'), 'the floor segment is preselected');
+
+  // A probability through its text field: the request carries the override, the report moves.
+  const before = await page.textContent('#values-table');
+  const generated = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+  await page.fill('input[aria-label="Curd 0 stage 1 probability"]', '3/4');
+  await page.press('input[aria-label="Curd 0 stage 1 probability"]', 'Enter');
+  const response = await generated;
+  check(decodeURIComponent(response.url()).includes('curds.0.probabilities=["3/4","1/2","1/3"]'),
+        'the changed probability is sent as a recipe override');
+  await page.waitForFunction((old) => document.querySelector('#values-table').textContent !== old, before);
+  const slider = page.locator('input[aria-label="Curd 0 stage 1 probability slider"]');
+  check(Math.abs(Number(await slider.inputValue()) - 0.75) < 1e-9, 'the slider follows the fraction');
+  check((await page.textContent('#status')).includes('server'), 'the status shows the server time');
+
+  // A free drag, snapped to cells.
+  await page.check('input[name=fix][value=free]');
+  const box = await page.locator('#curd').boundingBox();
+  const at = (x, y) => [box.x + (x + 0.5) * box.width / 256, box.y + (255 - y + 0.5) * box.height / 256];
+  await page.mouse.move(...at(20, 30));
+  await page.mouse.down();
+  await page.mouse.move(...at(40, 50), { steps: 5 });
+  await page.mouse.move(...at(59, 70), { steps: 5 });
+  await page.mouse.up();
+  await page.waitForFunction(() => document.querySelector('#segment-text').textContent.includes('20,30,40,41'));
+  check(true, 'a free drag selects cells 20,30 to 59,70 (40 x 41)');
+  await page.waitForSelector('#values-table th.seg');
+  check(true, 'the segment\'s counts are shown beside the whole field\'s');
+
+  // A segment fixed to the floor's 67 x 67 cells, placed by a drag.
+  await page.check('input[name=fix][value=floor]');
+  await page.mouse.move(...at(120, 90));
+  await page.mouse.down();
+  await page.mouse.move(...at(140, 110), { steps: 5 });
+  await page.mouse.up();
+  await page.waitForFunction(() => / 107,77,67,67 /.test(' ' + document.querySelector('#segment-text').textContent.split(' ')[1] + ' '));
+  check(true, 'a fixed segment of 67 x 67 cells follows the drag (107,77,67,67)');
+  await page.waitForFunction(() => document.querySelector('#command').textContent.includes('--window 107,77,67,67'));
+  await page.waitForFunction(() => document.querySelector('#export-what').textContent.includes('107,77,67,67'));
+  await page.screenshot({ path: path.join(shots, '2-segment.png'), fullPage: true });
+
+  // Downloads, and the same files from the command line with the command the page shows.
+  const names = ['layout.svg', 'layout.glb', 'schedule.csv', 'quantities.csv', 'report.json', 'recipe.toml'];
+  const downloads = path.join(work, 'page');
+  await mkdir(downloads);
+  for (const name of names) {
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click(`#exports a[download="${name}"]`)]);
+    check(download.suggestedFilename() === name, `download ${name} is named ${download.suggestedFilename()}`);
+    await download.saveAs(path.join(downloads, name));
+  }
+  const command = (await page.textContent('#command')).trim();
+  check(command.startsWith('curdle generate ') && command.includes(" --set 'curds.0.probabilities=[\"3/4\",\"1/2\",\"1/3\"]'") &&
+        command.includes('--seed 8') && command.endsWith('--window 107,77,67,67'), `the command reproduces the run: ${command}`);
+  const cli = path.join(work, 'cli');
+  execFileSync('bash', ['-c', `${JSON.stringify(curdle)} ${command.slice('curdle '.length)} --out ${cli} > /dev/null`]);
+  for (const name of names.filter((n) => n !== 'recipe.toml')) {
+    const [a, b] = await Promise.all([readFile(path.join(downloads, name)), readFile(path.join(cli, name))]);
+    check(a.equals(b), `${name} from the page equals the CLI's (${a.length} bytes)`);
+  }
+  // The recipe download reproduces the segment with no options at all.
+  const fromRecipe = path.join(work, 'from-recipe');
+  execFileSync(curdle, ['generate', path.join(downloads, 'recipe.toml'), '--out', fromRecipe, '--outputs', 'schedule.csv,report.json']);
+  const [s1, s2] = await Promise.all([readFile(path.join(downloads, 'schedule.csv')), readFile(path.join(fromRecipe, 'schedule.csv'))]);
+  check(s1.equals(s2), 'recipe.toml alone reproduces the segment\'s schedule.csv');
+
+  // Bad input: the page's own check, and the server's message shown as it is.
+  await page.fill('input[aria-label="Curd 0 stage 2 probability"]', '1.5');
+  await page.press('input[aria-label="Curd 0 stage 2 probability"]', 'Enter');
+  await page.waitForSelector('#error:not([hidden])');
+  check((await page.textContent('#error')).includes('not a probability'), 'an impossible probability is refused on the page');
+  await page.fill('#base', '1');
+  await page.dispatchEvent('#base', 'change');
+  await page.waitForFunction(() => document.querySelector('#error').textContent.includes('lattice.base'));
+  check((await page.textContent('#error')).includes('from 2 to 64'), 'the server\'s 400 message is shown: ' + await page.textContent('#error'));
+  await page.screenshot({ path: path.join(shots, '3-error.png') });
+  await page.click('#reset');
+  await page.waitForFunction(() => document.querySelector('#error').hidden);
+
+  // Search from the page: the best hit is loaded when its row is clicked.
+  await page.fill('#search-seeds', '1..120');
+  await page.fill('#search-targets', 'ratio:dark=0.111\ncluster:dark<=8');
+  await page.click('#search-run');
+  await page.waitForSelector('#search-results tr.hit', { timeout: 60000 });
+  const first = page.locator('#search-results tr.hit').first();
+  const seed = await first.getAttribute('data-seed');
+  const win = await first.getAttribute('data-window');
+  await first.click();
+  await page.waitForFunction((w) => document.querySelector('#command').textContent.includes(`--window ${w}`), win);
+  check((await page.inputValue('#seed')) === seed, `clicking the best hit loads seed ${seed} and segment ${win}`);
+  await page.screenshot({ path: path.join(shots, '4-search.png'), fullPage: true });
+  check(pageErrors.length === 0, `no script errors on the page ${pageErrors.join('; ')}`);
+} finally {
+  await browser.close();
+  server.kill('SIGINT');
+  const code = await new Promise((resolve) => server.on('exit', (c) => resolve(c)));
+  check(code === 0, `curdle serve stops cleanly on Ctrl-C (exit ${code})`);
+  await rm(work, { recursive: true, force: true });
+}
+console.log(`page: ${failures ? failures + ' failed' : 'all passed'}; screenshots in ${shots}`);
+process.exit(failures ? 1 : 0);

@@ -1,0 +1,688 @@
+// The curdle page: edits a recipe as overrides (the same --set the command line takes), draws
+// the curd from /api/generate, selects segments snapped to cells, shows the segment's report
+// beside the whole field's, and links the downloads /api/export makes.
+"use strict";
+
+const $ = (id) => document.getElementById(id);
+
+const state = {
+  recipe: null,      // /api/recipe, as loaded: the base every override is measured against
+  seed: 1,
+  base: 2, dimension: 2, stages: 1, mode: "canonical",
+  field: [1, 1],
+  curds: [],         // {name, colour, probabilities: [text]}
+  valueColours: [],  // layout.colours, when the recipe has them
+  whole: null,       // the last /api/generate of the whole field
+  segment: null,     // [x, y, w, h] in cells, or null for the whole field
+  segmentReport: null,
+};
+
+// ---- overrides: what differs from the recipe, as KEY=VALUE in TOML ----
+
+const tomlString = (s) => JSON.stringify(String(s));
+const tomlArray = (items) => "[" + items.join(",") + "]";
+
+function overrides() {
+  const r = state.recipe;
+  const sets = [];
+  if (state.base !== r.lattice.base) sets.push(`lattice.base=${state.base}`);
+  if (state.dimension !== r.lattice.dimension) sets.push(`lattice.dimension=${state.dimension}`);
+  if (state.mode !== r.lattice.mode) sets.push(`lattice.mode=${tomlString(state.mode)}`);
+  const reshaped = state.curds.length !== r.curds.length || state.stages !== r.lattice.stages ||
+    state.curds.some((c, i) => c.name !== r.curds[i].name);
+  if (reshaped) {
+    if (state.stages !== r.lattice.stages && /\bstages\s*=/.test(r.recipe_toml))
+      sets.push(`lattice.stages=${state.stages}`);
+    const curds = state.curds.map((c) =>
+      `{name=${tomlString(c.name)},colour=${tomlString(c.colour)},probabilities=` +
+      tomlArray(c.probabilities.map(tomlString)) + "}");
+    sets.push(`curds=${tomlArray(curds)}`);
+  } else {
+    state.curds.forEach((c, i) => {
+      const was = r.curds[i];
+      if (c.probabilities.join() !== was.probabilities.join())
+        sets.push(`curds.${i}.probabilities=${tomlArray(c.probabilities.map(tomlString))}`);
+      if (c.colour !== was.colour) sets.push(`curds.${i}.colour=${tomlString(c.colour)}`);
+    });
+  }
+  const fieldNow = state.field.slice(0, state.dimension);
+  const fieldWas = r.field.slice(0, state.dimension);
+  if (state.dimension !== r.lattice.dimension || fieldNow.join() !== fieldWas.join()) {
+    if (state.dimension === r.lattice.dimension || state.fieldTouched)
+      sets.push(`field.cells=${tomlArray(fieldNow)}`);
+  }
+  if (state.valueColours.length && state.valueColours.join() !== originalValueColours().join())
+    sets.push(`layout.colours=${tomlArray(state.valueColours.map(tomlString))}`);
+  return sets;
+}
+
+function originalValueColours() {
+  return state.recipe.layout && state.recipe.layout.has_value_colours
+    ? state.recipe.legend.map((e) => e.colour) : [];
+}
+
+function query(extra) {
+  const p = new URLSearchParams();
+  for (const s of overrides()) p.append("set", s);
+  p.append("seed", String(state.seed));
+  for (const [k, v] of Object.entries(extra || {})) {
+    if (Array.isArray(v)) v.forEach((x) => p.append(k, x)); else if (v !== undefined && v !== null) p.append(k, v);
+  }
+  return p.toString();
+}
+
+function windowText() {
+  if (!state.segment) return null;
+  const [x, y, w, h] = state.segment;
+  return state.dimension === 1 ? `${x},${w}` : `${x},${y},${w},${h}`;
+}
+
+// ---- requests ----
+
+let generation = 0;
+let wholeController = null;
+
+async function getJson(url, signal) {
+  const response = await fetch(url, { signal });
+  let body;
+  try { body = await response.json(); } catch { body = { error: `the server answered ${response.status}` }; }
+  if (!response.ok) throw new Error(body.error || `request failed (${response.status})`);
+  return body;
+}
+
+function showError(message) {
+  const e = $("error");
+  e.textContent = message;
+  e.hidden = !message;
+}
+
+async function regenerate() {
+  const mine = ++generation;
+  if (wholeController) wholeController.abort();
+  wholeController = new AbortController();
+  const started = performance.now();
+  $("status").textContent = "generating…";
+  try {
+    const whole = await getJson("/api/generate?" + query({ cells: "1" }), wholeController.signal);
+    if (mine !== generation) return;
+    state.whole = whole;
+    showError("");
+    fitSegmentToField();
+    draw();
+    await refreshSegment();
+    const total = performance.now() - started;
+    $("status").textContent =
+      `${whole.report.cells.toLocaleString()} cells · server ${whole.server_ms.toFixed(1)} ms · page ${total.toFixed(0)} ms`;
+  } catch (err) {
+    if (err.name === "AbortError") return;
+    showError(err.message);
+    $("status").textContent = "";
+  }
+}
+
+let segmentController = null;
+async function refreshSegment() {
+  if (segmentController) segmentController.abort();
+  segmentController = new AbortController();
+  state.segmentReport = null;
+  if (state.segment) {
+    try {
+      state.segmentReport = await getJson("/api/generate?" + query({ cells: "0", window: windowText() }),
+                                          segmentController.signal);
+      showError("");
+    } catch (err) {
+      if (err.name === "AbortError") return;
+      showError(err.message);
+    }
+  }
+  renderReport();
+  renderExports();
+}
+
+// ---- controls ----
+
+function readRecipeIntoState(r) {
+  state.seed = r.seed;
+  state.base = r.lattice.base;
+  state.dimension = r.lattice.dimension;
+  state.stages = r.lattice.stages;
+  state.mode = r.lattice.mode;
+  state.field = [r.field[0], r.field[1] || 1];
+  state.fieldTouched = false;
+  state.curds = r.curds.map((c) => ({ name: c.name, colour: c.colour, probabilities: c.probabilities.slice() }));
+  state.valueColours = originalValueColours();
+  state.segment = r.default_window && r.lattice.dimension === 2 ? r.default_window.slice() : null;
+  const floor = r.layout && r.layout.segment_cells;
+  $("fix-floor-label").hidden = !floor;
+  setFix(floor ? "floor" : "free");
+}
+
+function syncControls() {
+  $("seed").value = String(state.seed);
+  $("base").value = state.base;
+  $("dimension").value = String(state.dimension);
+  $("stages").value = state.stages;
+  $("mode").value = state.mode;
+  $("field-w").value = state.field[0];
+  $("field-h").value = state.field[1];
+  $("field-h").disabled = state.dimension === 1;
+  $("curd-count").value = state.curds.length;
+  renderCurdControls();
+  renderPalette();
+}
+
+function parseProbability(text) {
+  const t = text.trim();
+  const m = /^(\d+)\s*\/\s*(\d+)$/.exec(t);
+  const v = m ? Number(m[1]) / Number(m[2]) : Number(t);
+  return t !== "" && Number.isFinite(v) && v >= 0 && v <= 1 ? v : null;
+}
+
+function renderCurdControls() {
+  const box = $("curds");
+  box.textContent = "";
+  state.curds.forEach((curd, c) => {
+    const div = document.createElement("div");
+    div.className = "curd";
+    const head = document.createElement("div");
+    head.className = "curd-head";
+    const colour = document.createElement("input");
+    colour.type = "color";
+    colour.value = curd.colour;
+    colour.title = "Curd colour";
+    colour.setAttribute("aria-label", `Colour of curd ${c}`);
+    colour.addEventListener("input", () => { curd.colour = colour.value; schedule(); });
+    const name = document.createElement("input");
+    name.type = "text";
+    name.value = curd.name;
+    name.setAttribute("aria-label", `Name of curd ${c}`);
+    name.addEventListener("change", () => { curd.name = name.value.trim() || `curd${c}`; schedule(); });
+    head.append(colour, name);
+    div.append(head);
+    curd.probabilities.forEach((p, k) => {
+      const row = document.createElement("div");
+      row.className = "stage";
+      const label = document.createElement("span");
+      label.textContent = `p${k + 1}`;
+      const slider = document.createElement("input");
+      slider.type = "range";
+      slider.min = "0"; slider.max = "1"; slider.step = "0.001";
+      slider.value = String(parseProbability(p) ?? 0.5);
+      slider.setAttribute("aria-label", `Curd ${c} stage ${k + 1} probability slider`);
+      slider.dataset.curd = c; slider.dataset.stage = k;
+      const text = document.createElement("input");
+      text.type = "text";
+      text.value = p;
+      text.setAttribute("aria-label", `Curd ${c} stage ${k + 1} probability`);
+      text.dataset.curd = c; text.dataset.stage = k;
+      slider.addEventListener("input", () => {
+        curd.probabilities[k] = String(Number(slider.value));
+        text.value = curd.probabilities[k];
+        schedule();
+      });
+      text.addEventListener("change", () => {
+        const v = parseProbability(text.value);
+        if (v === null) {
+          showError(`Curd ${curd.name}, stage ${k + 1}: '${text.value}' is not a probability; write a fraction such as 2/3 or a decimal from 0 to 1`);
+          text.value = curd.probabilities[k];
+          return;
+        }
+        curd.probabilities[k] = text.value.trim();
+        slider.value = String(v);
+        schedule();
+      });
+      row.append(label, slider, text);
+      div.append(row);
+    });
+    box.append(div);
+  });
+}
+
+function renderPalette() {
+  const box = $("palette");
+  box.textContent = "";
+  const legend = (state.whole || state.recipe).legend;
+  if (!state.valueColours.length) {
+    const note = document.createElement("div");
+    note.className = "note";
+    note.textContent = "Values take the blend of their curds' colours; set the curd colours above.";
+    box.append(note);
+    return;
+  }
+  state.valueColours.forEach((colour, v) => {
+    const row = document.createElement("label");
+    row.className = "swatch-row";
+    const input = document.createElement("input");
+    input.type = "color";
+    input.value = colour;
+    input.addEventListener("input", () => { state.valueColours[v] = input.value; schedule(); });
+    row.append(input, document.createTextNode(legend[v] ? legend[v].label : `value ${v}`));
+    box.append(row);
+  });
+}
+
+function resizeCurds() {
+  const count = Math.max(1, Math.min(4, Number($("curd-count").value) || 1));
+  const stages = Math.max(1, Math.min(16, Number($("stages").value) || 1));
+  state.stages = stages;
+  const defaults = ["#3b3b3b", "#c0392b", "#2471a3", "#229954"];
+  while (state.curds.length < count) {
+    const i = state.curds.length;
+    state.curds.push({ name: `curd${i}`, colour: defaults[i % 4], probabilities: Array(stages).fill("1/2") });
+  }
+  state.curds.length = count;
+  for (const c of state.curds) {
+    while (c.probabilities.length < stages) c.probabilities.push(c.probabilities[c.probabilities.length - 1] || "1/2");
+    c.probabilities.length = stages;
+  }
+  if (state.valueColours.length && state.valueColours.length !== 1 << count) state.valueColours = [];
+  renderCurdControls();
+  renderPalette();
+}
+
+let timer = null;
+function schedule() {
+  clearTimeout(timer);
+  timer = setTimeout(regenerate, 40);
+}
+
+// ---- drawing ----
+
+function decodeValues(b64, bytes) {
+  const raw = atob(b64);
+  const n = raw.length / bytes;
+  const out = new Uint16Array(n);
+  for (let i = 0; i < n; ++i)
+    out[i] = bytes === 1 ? raw.charCodeAt(i) : raw.charCodeAt(2 * i) | raw.charCodeAt(2 * i + 1) << 8;
+  return out;
+}
+
+function hexToRgb(h) {
+  const n = parseInt(h.slice(1), 16);
+  return [n >> 16 & 255, n >> 8 & 255, n & 255];
+}
+
+function fieldSize() {
+  const v = state.whole.view;
+  return state.whole.lattice.dimension === 1 ? [v[1], 1] : [v[2], v[3]];
+}
+
+function draw() {
+  const canvas = $("curd");
+  const whole = state.whole;
+  if (!whole.values) {
+    canvas.width = canvas.height = 1;
+    showError("The page draws 1-D and 2-D lattices; for 3-D, use the report here and curdle generate.");
+    return;
+  }
+  const [w, h] = fieldSize();
+  const values = decodeValues(whole.values, whole.value_bytes);
+  const colours = whole.legend.map((e) => hexToRgb(e.colour));
+  canvas.width = w;
+  canvas.height = h;
+  const ctx = canvas.getContext("2d");
+  const image = ctx.createImageData(w, h);
+  // Cell y grows upwards, as in the layouts; the canvas's rows grow downwards.
+  for (let y = 0; y < h; ++y)
+    for (let x = 0; x < w; ++x) {
+      const c = colours[values[y * w + x]] || [255, 0, 255];
+      const o = ((h - 1 - y) * w + x) * 4;
+      image.data[o] = c[0]; image.data[o + 1] = c[1]; image.data[o + 2] = c[2]; image.data[o + 3] = 255;
+    }
+  ctx.putImageData(image, 0, 0);
+  const room = Math.min($("view").clientWidth - 4, window.innerHeight - 220);
+  const scale = Math.max(1, Math.floor(Math.max(room, 200) / Math.max(w, h))) || 1;
+  const cssScale = Math.max(w, h) * scale > room ? room / Math.max(w, h) : scale;
+  canvas.style.width = `${w * cssScale}px`;
+  canvas.style.height = `${Math.max(h * cssScale, h === 1 ? 40 : 0)}px`;
+  placeSelection();
+}
+
+function placeSelection() {
+  const box = $("selection");
+  if (!state.segment || !state.whole) { box.hidden = true; return; }
+  const [w, h] = fieldSize();
+  const canvas = $("curd");
+  const sx = canvas.clientWidth / w, sy = canvas.clientHeight / h;
+  const [x, y, sw, sh] = state.segment;
+  box.hidden = false;
+  box.style.left = `${x * sx}px`;
+  box.style.width = `${sw * sx}px`;
+  box.style.top = `${(h - y - sh) * sy}px`;
+  box.style.height = `${sh * sy}px`;
+  const layout = state.whole.layout;
+  let size = "";
+  if (layout && layout.size_mm && layout.segment_cells[0] === sw && layout.segment_cells[1] === sh)
+    size = ` · the floor, ${layout.size_mm[0] / 1000} × ${layout.size_mm[1] / 1000} m`;
+  else if (layout)
+    size = ` · ${(sw * layout.cell_mm[0] / 1000).toFixed(2)} × ${(sh * layout.cell_mm[1] / 1000).toFixed(2)} m`;
+  $("segment-text").textContent = `Segment ${windowText()} (x, y, width, height in cells)${size}`;
+}
+
+// ---- selection ----
+
+function fixMode() { return document.querySelector("input[name=fix]:checked").value; }
+function setFix(mode) {
+  document.querySelector(`input[name=fix][value=${mode}]`).checked = true;
+  const floor = state.recipe.layout && state.recipe.layout.segment_cells;
+  if (mode === "floor" && floor) { $("fix-w").value = floor[0]; $("fix-h").value = floor[1]; }
+  $("fix-w").disabled = $("fix-h").disabled = mode === "free" || mode === "floor";
+}
+
+// The fixed size in cells, or null when the selection is free.
+function fixedCells() {
+  const mode = fixMode();
+  const layout = state.whole && state.whole.layout;
+  if (mode === "free") return null;
+  if (mode === "floor" && layout && layout.segment_cells) return layout.segment_cells.slice();
+  const w = Number($("fix-w").value), h = Number($("fix-h").value);
+  if (!(w > 0) || !(h > 0)) return null;
+  if (mode === "metres") {
+    if (!layout) { showError("This recipe has no layout, so sizes in metres have no meaning; give cells."); return null; }
+    return [Math.max(1, Math.round(w * 1000 / layout.cell_mm[0])), Math.max(1, Math.round(h * 1000 / layout.cell_mm[1]))];
+  }
+  return [Math.max(1, Math.round(w)), Math.max(1, Math.round(h))];
+}
+
+function cellAt(event) {
+  const canvas = $("curd");
+  const rect = canvas.getBoundingClientRect();
+  const [w, h] = fieldSize();
+  const x = Math.floor((event.clientX - rect.left) / rect.width * w);
+  const y = h - 1 - Math.floor((event.clientY - rect.top) / rect.height * h);
+  return [Math.max(0, Math.min(w - 1, x)), Math.max(0, Math.min(h - 1, y))];
+}
+
+function segmentFrom(a, b) {
+  const [w, h] = fieldSize();
+  const fixed = fixedCells();
+  if (fixed) {
+    const sw = Math.min(fixed[0], w), sh = Math.min(fixed[1], h);
+    // The fixed segment is centred on the pointer, kept inside the field.
+    const x = Math.max(0, Math.min(w - sw, b[0] - Math.floor(sw / 2)));
+    const y = Math.max(0, Math.min(h - sh, b[1] - Math.floor(sh / 2)));
+    return [x, y, sw, sh];
+  }
+  const x0 = Math.min(a[0], b[0]), x1 = Math.max(a[0], b[0]);
+  const y0 = Math.min(a[1], b[1]), y1 = Math.max(a[1], b[1]);
+  return [x0, y0, x1 - x0 + 1, y1 - y0 + 1];
+}
+
+function fitSegmentToField() {
+  if (!state.segment || !state.whole || !state.whole.values) return;
+  const [w, h] = fieldSize();
+  let [x, y, sw, sh] = state.segment;
+  sw = Math.min(sw, w); sh = Math.min(sh, h);
+  x = Math.max(0, Math.min(w - sw, x)); y = Math.max(0, Math.min(h - sh, y));
+  state.segment = [x, y, sw, sh];
+}
+
+let dragFrom = null;
+function wireCanvas() {
+  const canvas = $("curd");
+  canvas.addEventListener("pointerdown", (e) => {
+    if (!state.whole || !state.whole.values) return;
+    canvas.setPointerCapture(e.pointerId);
+    dragFrom = cellAt(e);
+    state.segment = segmentFrom(dragFrom, dragFrom);
+    placeSelection();
+  });
+  canvas.addEventListener("pointermove", (e) => {
+    if (!state.whole || !state.whole.values) return;
+    const cell = cellAt(e);
+    const v = decodeValueAt(cell);
+    $("hover").textContent = `cell ${cell[0]}, ${cell[1]}: ${v === null ? "" : state.whole.legend[v].label}`;
+    if (!dragFrom) return;
+    state.segment = segmentFrom(dragFrom, cell);
+    placeSelection();
+  });
+  const end = (e) => {
+    if (!dragFrom) return;
+    state.segment = segmentFrom(dragFrom, cellAt(e));
+    dragFrom = null;
+    placeSelection();
+    refreshSegment();
+  };
+  canvas.addEventListener("pointerup", end);
+  canvas.addEventListener("pointercancel", () => { dragFrom = null; });
+}
+
+let decodedCache = { key: null, values: null };
+function decodeValueAt([x, y]) {
+  const whole = state.whole;
+  if (decodedCache.key !== whole.values) decodedCache = { key: whole.values, values: decodeValues(whole.values, whole.value_bytes) };
+  const [w] = fieldSize();
+  const v = decodedCache.values[y * w + x];
+  return v === undefined ? null : v;
+}
+
+// ---- report ----
+
+const fmt = (x, digits = 4) => (x === null || x === undefined || Number.isNaN(x)) ? "–" : Number(x).toFixed(digits);
+
+function renderReport() {
+  const whole = state.whole;
+  if (!whole) return;
+  const seg = state.segmentReport;
+  const legend = whole.legend;
+  const cells = whole.report.cells, segCells = seg ? seg.report.cells : 0;
+  const head = ["Value", "Whole", "ratio", "expected"].concat(seg ? ["Segment", "ratio", "÷ exp."] : []);
+  let html = "<tr>" + head.map((h, i) => `<th class="${i >= 4 ? "seg" : ""}">${h}</th>`).join("") + "</tr>";
+  whole.report.values.forEach((v, i) => {
+    const expectedRatio = v.expected / cells;
+    html += `<tr><td><span class="chip" style="background:${legend[i] ? legend[i].colour : "#fff"}"></span>${escapeHtml(v.label)}</td>` +
+      `<td>${v.count}</td><td>${fmt(v.count / cells)}</td><td>${fmt(expectedRatio)}</td>`;
+    if (seg) {
+      const s = seg.report.values[i];
+      const ratio = s.count / segCells;
+      html += `<td class="seg">${s.count}</td><td class="seg">${fmt(ratio)}</td>` +
+        `<td class="seg">${expectedRatio > 0 ? fmt(ratio / expectedRatio, 2) : "–"}</td>`;
+    }
+    html += "</tr>";
+  });
+  $("values-table").innerHTML = html;
+
+  let dims = "<tr><th>Curd</th><th>theory</th><th>whole</th><th>R²</th>" + (seg ? '<th class="seg">segment</th><th class="seg">R²</th>' : "") + "</tr>";
+  whole.report.curds.forEach((c, i) => {
+    const s = seg ? seg.report.curds[i] : null;
+    dims += `<tr><td>${escapeHtml(c.name)}</td><td>${fmt(c.box_dimension.theory, 3)}</td><td>${fmt(c.box_dimension.fit, 3)}</td><td>${fmt(c.box_dimension.r2, 3)}</td>` +
+      (s ? `<td class="seg">${fmt(s.box_dimension.fit, 3)}</td><td class="seg">${fmt(s.box_dimension.r2, 3)}</td>` : "") + "</tr>";
+  });
+  $("dimension-table").innerHTML = dims;
+
+  const stages = $("stages-tables");
+  stages.textContent = "";
+  whole.report.curds.forEach((c, i) => {
+    const t = document.createElement("table");
+    const s = seg ? seg.report.curds[i] : null;
+    let rows = `<tr><th>${escapeHtml(c.name)}: stage</th><th>p</th><th>N</th><th>expected ± sd</th><th>boxes</th><th>local D</th>` +
+      (s ? '<th class="seg">segment N</th><th class="seg">expected</th>' : "") + "</tr>";
+    c.stages.forEach((k, j) => {
+      rows += `<tr><td>${k.stage}</td><td>${escapeHtml(k.probability_text)}</td><td>${k.survivors}</td>` +
+        `<td>${fmt(k.expected, 1)} ± ${fmt(k.expected_sd, 1)}</td><td>${k.box_count}</td><td>${fmt(k.local_dimension, 3)}</td>` +
+        (s ? `<td class="seg">${s.stages[j].survivors}</td><td class="seg">${fmt(s.stages[j].expected, 1)}</td>` : "") + "</tr>";
+    });
+    t.innerHTML = rows;
+    stages.append(t);
+  });
+  const shown = seg || whole;
+  $("command").textContent = shown.command;
+}
+
+function escapeHtml(s) {
+  return String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" }[c]));
+}
+
+const kDownloads = ["layout.svg", "layout.png", "layout.glb", "schedule.csv", "quantities.csv",
+                    "install.svg", "report.json", "cells.csv", "preview.png", "recipe.toml"];
+
+function renderExports() {
+  const box = $("exports");
+  box.textContent = "";
+  const hasLayout = !!(state.whole && state.whole.layout);
+  const win = windowText();
+  $("export-what").textContent = win ? `segment ${win}` : "whole field";
+  for (const name of kDownloads) {
+    if (!hasLayout && /^(layout|schedule|quantities|install)/.test(name)) continue;
+    const a = document.createElement("a");
+    a.href = "/api/export?" + query({ file: name, window: win || undefined });
+    a.download = name;
+    a.textContent = name;
+    box.append(a);
+  }
+  updateRecipeText();
+  updateLayoutPreview(hasLayout, win);
+}
+
+let recipeController = null;
+async function updateRecipeText() {
+  if (recipeController) recipeController.abort();
+  recipeController = new AbortController();
+  try {
+    const response = await fetch("/api/export?" + query({ file: "recipe.toml", window: windowText() || undefined }),
+                                 { signal: recipeController.signal });
+    if (response.ok) $("recipe-toml").textContent = await response.text();
+  } catch (err) { /* a newer request took over */ }
+}
+
+function updateLayoutPreview(hasLayout, win) {
+  const figure = $("layout-figure");
+  const cells = state.segment ? state.segment[2] * state.segment[3] : (state.whole ? state.whole.report.cells : 0);
+  if (!hasLayout || cells > 40000) { figure.hidden = true; return; }
+  figure.hidden = false;
+  $("layout-preview").src = "/api/export?" + query({ file: "layout.png", window: win || undefined });
+}
+
+// ---- search ----
+
+async function runSearch(event) {
+  event.preventDefault();
+  const targets = $("search-targets").value.split("\n").map((t) => t.trim()).filter(Boolean);
+  const fixed = fixedCells();
+  const size = fixed || (state.segment ? state.segment.slice(2) : null);
+  const extra = { seeds: $("search-seeds").value.trim(), top: $("search-top").value, target: targets };
+  if (size) extra.segment = state.dimension === 1 ? `${size[0]}` : `${size[0]},${size[1]}`;
+  const params = new URLSearchParams(query(extra));
+  params.delete("seed");
+  $("search-run").disabled = true;
+  $("search-results").innerHTML = "<tr><td>searching…</td></tr>";
+  try {
+    const result = await getJson("/api/search?" + params.toString());
+    showError("");
+    let html = "<tr><th>#</th><th>seed</th><th>segment</th><th>score</th>" +
+      result.targets.map((t) => `<th title="${escapeHtml(t)}">${escapeHtml(t.split(/[<>=]/)[0])}</th>`).join("") + "</tr>";
+    for (const hit of result.hits) {
+      html += `<tr class="hit" data-seed="${hit.seed}" data-window="${hit.window}"><td>${hit.rank}</td><td>${hit.seed}</td>` +
+        `<td>${hit.window}</td><td>${fmt(hit.score)}</td>` +
+        Object.values(hit.measured).map((x) => `<td>${fmt(x, 3)}</td>`).join("") + "</tr>";
+    }
+    $("search-results").innerHTML = html;
+    $("status").textContent = `searched ${result.seeds[1] - result.seeds[0] + 1} seeds in ${result.server_ms.toFixed(0)} ms`;
+  } catch (err) {
+    showError(err.message);
+    $("search-results").innerHTML = "";
+  } finally {
+    $("search-run").disabled = false;
+  }
+}
+
+function pickHit(event) {
+  const row = event.target.closest("tr.hit");
+  if (!row) return;
+  state.seed = row.dataset.seed;
+  const w = row.dataset.window.split(",").map(Number);
+  state.segment = state.dimension === 1 ? [w[0], 0, w[1], 1] : w;
+  $("seed").value = state.seed;
+  regenerate();
+}
+
+// ---- start ----
+
+function wireControls() {
+  $("seed").addEventListener("change", () => {
+    const t = $("seed").value.trim();
+    if (!/^\d+$/.test(t)) { showError(`'${t}' is not a seed; a seed is a whole number from 0 to 18446744073709551615`); return; }
+    state.seed = t;
+    schedule();
+  });
+  const step = (d) => {
+    const next = BigInt(state.seed) + BigInt(d);
+    if (next < 0n) return;
+    state.seed = next.toString();
+    $("seed").value = state.seed;
+    schedule();
+  };
+  $("seed-prev").addEventListener("click", () => step(-1));
+  $("seed-next").addEventListener("click", () => step(1));
+  $("reroll").addEventListener("click", () => {
+    const words = crypto.getRandomValues(new Uint32Array(2));
+    state.seed = (BigInt(words[0]) << 32n | BigInt(words[1])).toString();
+    $("seed").value = state.seed;
+    schedule();
+  });
+  $("base").addEventListener("change", () => { state.base = Number($("base").value); schedule(); });
+  $("dimension").addEventListener("change", () => {
+    state.dimension = Number($("dimension").value);
+    state.fieldTouched = true;
+    state.segment = null;
+    $("field-h").disabled = state.dimension === 1;
+    schedule();
+  });
+  $("mode").addEventListener("change", () => { state.mode = $("mode").value; schedule(); });
+  $("stages").addEventListener("change", () => { resizeCurds(); schedule(); });
+  $("curd-count").addEventListener("change", () => { resizeCurds(); schedule(); });
+  for (const id of ["field-w", "field-h"])
+    $(id).addEventListener("change", () => {
+      state.field = [Number($("field-w").value), Number($("field-h").value)];
+      state.fieldTouched = true;
+      schedule();
+    });
+  document.querySelectorAll("input[name=fix]").forEach((r) => r.addEventListener("change", () => {
+    setFix(fixMode());
+    applyFixedSize();
+  }));
+  for (const id of ["fix-w", "fix-h"]) $(id).addEventListener("change", applyFixedSize);
+  $("clear-selection").addEventListener("click", () => {
+    state.segment = null;
+    setFix("free");
+    placeSelection();
+    $("segment-text").textContent = "";
+    refreshSegment();
+  });
+  $("reset").addEventListener("click", () => { readRecipeIntoState(state.recipe); syncControls(); regenerate(); });
+  $("copy-command").addEventListener("click", () => navigator.clipboard && navigator.clipboard.writeText($("command").textContent));
+  $("search-form").addEventListener("submit", runSearch);
+  $("search-results").addEventListener("click", pickHit);
+  window.addEventListener("resize", () => state.whole && draw());
+  wireCanvas();
+}
+
+// A fixed size resizes the current selection in place (or places one at the origin).
+function applyFixedSize() {
+  const fixed = fixedCells();
+  if (!fixed || !state.whole) return;
+  const [x, y] = state.segment || [0, 0];
+  state.segment = [x, y, fixed[0], fixed[1]];
+  fitSegmentToField();
+  placeSelection();
+  refreshSegment();
+}
+
+async function start() {
+  wireControls();
+  try {
+    state.recipe = await getJson("/api/recipe");
+  } catch (err) {
+    showError(err.message);
+    return;
+  }
+  $("recipe-name").textContent = state.recipe.name;
+  $("recipe-description").textContent = state.recipe.description;
+  document.title = `curdle · ${state.recipe.name}`;
+  readRecipeIntoState(state.recipe);
+  syncControls();
+  await regenerate();
+  document.body.dataset.ready = "1";
+}
+
+start();
