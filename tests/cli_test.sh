@@ -173,5 +173,23 @@ expect 2 "must fit in the view" search "$fig7" --seeds 1..5 --window 100,100 --o
 expect 2 "inside the segment" search "$fig7" --seeds 1..5 --target 'empty=60,60,10,10' --out "$work/search-bad"
 [ ! -e "$work/search-bad" ] && pass || fail "a refused search left $work/search-bad"
 
+# 9. Serve: bad recipes, a busy port and missing page files exit 2; SIGINT stops it cleanly.
+expect 2 "cannot read the recipe" serve "$work/no-such-recipe.toml" --port 0
+expect 2 "index.html missing" serve "$fig3" --port 0 --web-root "$work"
+"$curdle" serve "$fig3" --port 0 > "$work/serve.out" 2>&1 &
+serve_pid=$!
+for _ in $(seq 50); do grep -q "open http" "$work/serve.out" && break; sleep 0.1; done
+port=$(sed -n 's/.*127\.0\.0\.1:\([0-9]*\).*/\1/p' "$work/serve.out")
+[ -n "$port" ] && pass || fail "serve printed no address: $(cat "$work/serve.out")"
+expect 2 "cannot listen on 127.0.0.1:$port" serve "$fig3" --port "$port"
+kill -INT "$serve_pid"
+for _ in $(seq 50); do kill -0 "$serve_pid" 2>/dev/null || break; sleep 0.1; done
+if kill -0 "$serve_pid" 2>/dev/null; then
+  fail "serve did not stop on SIGINT"; kill -KILL "$serve_pid"
+else
+  wait "$serve_pid" && pass || fail "serve exited $? on SIGINT"
+fi
+grep -q "curdle: stopped" "$work/serve.out" && pass || fail "serve did not say it stopped"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

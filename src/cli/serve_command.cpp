@@ -4,6 +4,7 @@
 #include <signal.h>
 
 #include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <thread>
@@ -64,6 +65,10 @@ int run_serve(const ServeOptions& o) {
 
   // Ctrl-C and SIGTERM are taken by one thread, which stops the server; every other thread
   // (including httplib's and TBB's) inherits the blocked mask.
+  // A shell starts background jobs with SIGINT ignored, and an ignored signal never reaches
+  // sigwait: restore the defaults first, so that `kill -INT` stops the server there too.
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
   sigset_t signals;
   sigemptyset(&signals);
   sigaddset(&signals, SIGINT);

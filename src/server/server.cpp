@@ -9,6 +9,27 @@
 
 namespace curdle::server {
 
+Params query_params(const std::string& target) {
+  Params params;
+  const size_t q = target.find('?');
+  if (q == std::string::npos) return params;
+  const std::string query = target.substr(q + 1);
+  for (size_t start = 0; start <= query.size();) {
+    size_t end = query.find('&', start);
+    if (end == std::string::npos) end = query.size();
+    const std::string pair = query.substr(start, end - start);
+    if (!pair.empty()) {
+      const size_t eq = pair.find('=');
+      const std::string key = pair.substr(0, eq);
+      const std::string value = eq == std::string::npos ? "" : pair.substr(eq + 1);
+      params.emplace(httplib::detail::decode_url(key, true),
+                     httplib::detail::decode_url(value, true));
+    }
+    start = end + 1;
+  }
+  return params;
+}
+
 struct Server::Impl {
   ServerConfig config;
   httplib::Server http;
@@ -44,17 +65,23 @@ struct Server::Impl {
 
   void routes() {
     http.set_payload_max_length(config.max_body_bytes);
+    // SO_REUSEADDR only: httplib's default SO_REUSEPORT would let a second server take the
+    // same port silently, each answering half the requests.
+    http.set_socket_options([](socket_t sock) {
+      int yes = 1;
+      setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    });
     http.Get("/api/recipe", [this](const httplib::Request&, httplib::Response& res) {
       reply(res, api_recipe(config.api));
     });
     http.Get("/api/generate", [this](const httplib::Request& req, httplib::Response& res) {
-      heavy(res, [&] { return api_generate(config.api, req.params); });
+      heavy(res, [&] { return api_generate(config.api, query_params(req.target)); });
     });
     http.Get("/api/export", [this](const httplib::Request& req, httplib::Response& res) {
-      heavy(res, [&] { return api_export(config.api, req.params); });
+      heavy(res, [&] { return api_export(config.api, query_params(req.target)); });
     });
     http.Get("/api/search", [this](const httplib::Request& req, httplib::Response& res) {
-      heavy(res, [&] { return api_search(config.api, req.params); });
+      heavy(res, [&] { return api_search(config.api, query_params(req.target)); });
     });
     // Anything else under /api/ is a JSON 404 (or 405 for another method), never a page.
     auto not_found = [this](const httplib::Request& req, httplib::Response& res) {

@@ -36,6 +36,10 @@ class Server {
   std::unique_ptr<Impl> impl_;
 };
 
+// The query of a request target ("/api/generate?a=1&b=c=d"), percent-decoded; a value keeps
+// every '=' after the first, so targets such as target=ratio:dark=0.1 need no escaping.
+Params query_params(const std::string& target);
+
 // Where the page's files are: beside the program (build tree) or in ../share (installed).
 std::filesystem::path find_web_root(const std::filesystem::path& executable);
 

@@ -1,0 +1,295 @@
+// The page's JSON API over HTTP, against a server on a free loopback port: answers, downloads
+// equal to the CLI's files, every kind of bad request as a 4xx JSON error, concurrent requests,
+// and a clean stop.
+#include "server/server.h"
+
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "cli/generate.h"
+#include "cli/session.h"
+#include "curdle/curdling.h"
+#include "curdle/error.h"
+#include "curdle/overlay.h"
+#include "curdle/search.h"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace curdle::server {
+namespace {
+
+const std::string kRecipe =
+    std::string(CURDLE_SOURCE_DIR) + "/patterns/paper/fig8-segment-of-large-curd.toml";
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<uint8_t> unbase64(const std::string& text) {
+  std::vector<uint8_t> out;
+  uint32_t buffer = 0;
+  int bits = 0;
+  for (char c : text) {
+    int v = c >= 'A' && c <= 'Z'   ? c - 'A'
+            : c >= 'a' && c <= 'z' ? c - 'a' + 26
+            : c >= '0' && c <= '9' ? c - '0' + 52
+            : c == '+'             ? 62
+            : c == '/'             ? 63
+                                   : -1;
+    if (v < 0) continue;
+    buffer = buffer << 6 | static_cast<uint32_t>(v);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out.push_back(static_cast<uint8_t>(buffer >> bits));
+    }
+  }
+  return out;
+}
+
+class ServerTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    ServerConfig config;
+    config.web_root = fs::path(CURDLE_SOURCE_DIR) / "web";
+    config.api.recipe_path = kRecipe;
+    config.api.recipe_text = slurp(kRecipe);
+    config.api.limits.max_cells = 1 << 20;
+    server_ = new Server(config);
+    port_ = server_->bind("127.0.0.1", 0);
+    thread_ = new std::thread([] { server_->listen(); });
+  }
+  static void TearDownTestSuite() {
+    server_->stop();
+    thread_->join();
+    delete thread_;
+    delete server_;
+  }
+
+  httplib::Result get(const std::string& path) {
+    httplib::Client client("127.0.0.1", port_);
+    client.set_read_timeout(120, 0);
+    return client.Get(path.c_str());
+  }
+  json get_json(const std::string& path, int status) {
+    auto r = get(path);
+    EXPECT_TRUE(r) << path;
+    if (!r) return {};
+    EXPECT_EQ(r->status, status) << path << ": " << r->body;
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json") << path;
+    return json::parse(r->body);
+  }
+  // The CLI's file for the same recipe, seed, overrides and window.
+  std::string cli_file(const std::string& name, const std::string& seed, const std::string& window,
+                       const std::vector<std::string>& sets = {}) {
+    cli::CommonOptions o;
+    o.recipe_path = kRecipe;
+    o.seed = seed;
+    o.window = window;
+    o.sets = sets;
+    cli::Session s = cli::open_session(o);
+    const fs::path dir = fs::temp_directory_path() / ("curdle-server-test-" + name);
+    fs::remove_all(dir);
+    cli::write_outputs(s, dir, {name}, 0, nullptr);
+    std::string bytes = slurp(dir / name);
+    fs::remove_all(dir);
+    return bytes;
+  }
+
+  static Server* server_;
+  static std::thread* thread_;
+  static int port_;
+};
+Server* ServerTest::server_ = nullptr;
+std::thread* ServerTest::thread_ = nullptr;
+int ServerTest::port_ = 0;
+
+TEST_F(ServerTest, RecipeDescribesTheDesignAndTheFloor) {
+  const json j = get_json("/api/recipe", 200);
+  EXPECT_EQ(j["name"], "fig8-segment-of-large-curd");
+  EXPECT_EQ(j["field"], json({256, 256}));
+  EXPECT_EQ(j["layout"]["segment_cells"], json({67, 67}));
+  EXPECT_EQ(j["default_window"], json({0, 0, 67, 67}));
+  EXPECT_EQ(j["curds"][0]["probabilities"], json({"2/3", "1/2", "1/3"}));
+  EXPECT_EQ(j["legend"].size(), 2u);
+}
+
+TEST_F(ServerTest, GenerateGivesTheEnginesCellsAndReport) {
+  const json j = get_json("/api/generate?seed=42&curds.0.probabilities=%5B%223%2F4%22,%221%2F2%22,%221%2F3%22%5D", 200);
+  EXPECT_EQ(j["seed"], 42);
+  EXPECT_EQ(j["report"]["cells"], 65536);
+  const auto bytes = unbase64(j["values"]);
+  ASSERT_EQ(bytes.size(), 65536u);
+  cli::CommonOptions o;
+  o.recipe_path = kRecipe;
+  o.seed = "42";
+  o.sets = {"curds.0.probabilities=[\"3/4\",\"1/2\",\"1/3\"]"};
+  const cli::Session s = cli::open_session(o);
+  const auto& d = s.recipe.design;
+  const auto values = values_in(curdle::curdle(d, 42, d.field), d.field);
+  EXPECT_TRUE(std::equal(values.begin(), values.end(), bytes.begin()));
+  EXPECT_EQ(j["command"],
+            "curdle generate " + kRecipe +
+                " --set 'curds.0.probabilities=[\"3/4\",\"1/2\",\"1/3\"]' --seed 42");
+  // A window: that segment's report, no cells when cells=0.
+  const json w = get_json("/api/generate?seed=42&window=10,20,67,67&cells=0", 200);
+  EXPECT_EQ(w["report"]["cells"], 4489);
+  EXPECT_FALSE(w.contains("values"));
+  EXPECT_EQ(w["command"], "curdle generate " + kRecipe + " --seed 42 --window 10,20,67,67");
+}
+
+TEST_F(ServerTest, DownloadsAreTheFilesTheCommandLineWrites) {
+  for (const std::string name : {"layout.svg", "layout.glb", "schedule.csv", "quantities.csv",
+                                 "report.json", "install.svg", "layout.png", "cells.csv"}) {
+    auto r = get("/api/export?seed=5&window=100,30,67,67&lattice.mode=quota&file=" + name);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << name << ": " << r->body;
+    EXPECT_EQ(r->get_header_value("Content-Disposition"), "attachment; filename=\"" + name + "\"");
+    EXPECT_EQ(r->body, cli_file(name, "5", "100,30,67,67", {"lattice.mode=quota"})) << name;
+  }
+  // recipe.toml carries every change, the seed and the window: it needs no options.
+  auto r = get("/api/export?seed=5&window=100,30,67,67&lattice.mode=quota&file=recipe.toml");
+  ASSERT_TRUE(r);
+  const fs::path saved = fs::temp_directory_path() / "curdle-server-test-recipe.toml";
+  std::ofstream(saved, std::ios::binary) << r->body;
+  cli::CommonOptions o;
+  o.recipe_path = saved.string();
+  cli::Session s = cli::open_session(o);
+  EXPECT_EQ(s.seed, 5u);
+  EXPECT_EQ(s.view.origin[0], 100);
+  EXPECT_EQ(s.recipe.design.lattice.mode, Mode::quota);
+  const fs::path dir = fs::temp_directory_path() / "curdle-server-test-from-recipe";
+  fs::remove_all(dir);
+  cli::write_outputs(s, dir, {"schedule.csv"}, 0, nullptr);
+  EXPECT_EQ(slurp(dir / "schedule.csv"), cli_file("schedule.csv", "5", "100,30,67,67", {"lattice.mode=quota"}));
+  fs::remove_all(dir);
+  fs::remove(saved);
+}
+
+TEST_F(ServerTest, BadRequestsAreJsonErrorsThatSayWhatIsAllowed) {
+  struct Case {
+    std::string path;
+    int status;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {"/api/generate?seed=abc", 400, "is not a seed"},
+      {"/api/generate?seed=-1", 400, "is not a seed"},
+      {"/api/generate?colour=red", 400, "unknown parameter"},
+      {"/api/generate?lattice.base=1", 400, "from 2 to 64"},
+      {"/api/generate?curds.0.probabilities=%5B%221.5%22,%221%22,%221%22%5D", 400, "curds.0.probabilities"},
+      {"/api/generate?window=250,250,67,67", 400, "inside the field"},
+      {"/api/generate?cells=2", 400, "must be 0 or 1"},
+      {"/api/generate?set=lattice.base", 400, "KEY=VALUE"},
+      {"/api/generate?field.cells=%5B2048,2048%5D", 413, "the server allows 1048576"},
+      {"/api/export?file=secrets.txt", 400, "allowed: cells.csv"},
+      {"/api/export?file=layout.svg&window=1,1,20,20", 400, "takes exactly 67 x 67 cells"},
+      {"/api/search?seeds=5..1", 400, "not a range of seeds"},
+      {"/api/search?seeds=1..100000000", 413, "more than the server searches"},
+      {"/api/search?target=size:dark=3", 400, "unknown measure"},
+      {"/api/search?seeds=1..3&target=ratio:dark=2", 400, "a ratio is from 0 to 1"},
+      {"/api/search?segment=300,300", 400, "must fit in the view"},
+      {"/api/search?window=1,1,67,67", 400, "segment=W,H"},
+      {"/api/nothing", 404, "no such endpoint"},
+  };
+  for (const Case& c : cases) {
+    const json j = get_json(c.path, c.status);
+    ASSERT_TRUE(j.contains("error")) << c.path;
+    EXPECT_NE(j["error"].get<std::string>().find(c.says), std::string::npos)
+        << c.path << ": " << j["error"];
+  }
+  httplib::Client client("127.0.0.1", port_);
+  auto post = client.Post("/api/generate", "{}", "application/json");
+  ASSERT_TRUE(post);
+  EXPECT_EQ(post->status, 405);
+  EXPECT_NE(post->body.find("GET requests only"), std::string::npos);
+  // An address longer than the server reads, and a body larger than it accepts.
+  auto longer = get("/api/generate?seed=1&lattice.description=" + std::string(9000, 'a'));
+  ASSERT_TRUE(longer);
+  EXPECT_EQ(longer->status, 414);
+  auto big = client.Post("/api/generate", std::string(100000, 'x'), "text/plain");
+  ASSERT_TRUE(big);
+  EXPECT_EQ(big->status, 413);
+}
+
+TEST_F(ServerTest, ConcurrentRequestsGiveEachTheirOwnAnswer) {
+  std::vector<std::thread> clients;
+  std::vector<std::string> reports(12);
+  for (int i = 0; i < 12; ++i)
+    clients.emplace_back([&, i] {
+      httplib::Client client("127.0.0.1", port_);
+      client.set_read_timeout(120, 0);
+      auto r = client.Get(("/api/generate?seed=" + std::to_string(100 + i % 3)).c_str());
+      if (r && r->status == 200) {
+        json j = json::parse(r->body);
+        reports[i] = j["report"].dump() + j["values"].get<std::string>();
+      }
+    });
+  for (auto& t : clients) t.join();
+  for (int i = 0; i < 12; ++i) {
+    ASSERT_FALSE(reports[i].empty()) << i;
+    EXPECT_EQ(reports[i], reports[i % 3]) << i;
+  }
+  EXPECT_NE(reports[0], reports[1]);
+}
+
+TEST_F(ServerTest, SearchRanksAsTheLibraryDoes) {
+  const json j = get_json(
+      "/api/search?seeds=1..40&segment=67,67&stride=16&top=4&target=ratio:dark%3D0.111&target=cluster:dark%3C%3D8",
+      200);
+  ASSERT_EQ(j["hits"].size(), 4u);
+  cli::CommonOptions o;
+  o.recipe_path = kRecipe;
+  const cli::Session s = cli::open_session(o);
+  const Design& d = s.recipe.design;
+  SearchSpec spec;
+  spec.targets = {parse_target("ratio:dark=0.111", d), parse_target("cluster:dark<=8", d)};
+  spec.window = std::array<int64_t, 2>{67, 67};
+  spec.stride = 16;
+  spec.top = 4;
+  const auto hits = search_seeds(d, d.field, spec, 1, 40);
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(j["hits"][i]["seed"], hits[i].seed);
+    EXPECT_EQ(j["hits"][i]["window"], cli::window_text(hits[i].segment, 2));
+    EXPECT_DOUBLE_EQ(j["hits"][i]["score"].get<double>(), hits[i].score);
+  }
+}
+
+TEST_F(ServerTest, ThePageIsServedFromItsFiles) {
+  auto r = get("/");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("<script src=\"app.js\">"), std::string::npos);
+  auto js = get("/app.js");
+  ASSERT_TRUE(js);
+  EXPECT_EQ(js->status, 200);
+  auto missing = get("/no-such-file.js");
+  ASSERT_TRUE(missing);
+  EXPECT_EQ(missing->status, 404);
+}
+
+TEST(ServerSetup, RefusesAMissingPageOrABusyPort) {
+  ServerConfig config;
+  config.api.recipe_path = kRecipe;
+  config.api.recipe_text = slurp(kRecipe);
+  config.web_root = "/nonexistent";
+  EXPECT_THROW(Server{config}, InputError);
+  config.web_root = fs::path(CURDLE_SOURCE_DIR) / "web";
+  Server first(config), second(config);
+  const int port = first.bind("127.0.0.1", 0);
+  EXPECT_THROW(second.bind("127.0.0.1", port), InputError);
+  EXPECT_THROW(second.bind("203.0.113.9", 8080), InputError);  // not this machine's address
+}
+
+}  // namespace
+}  // namespace curdle::server
