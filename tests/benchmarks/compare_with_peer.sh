@@ -40,6 +40,10 @@ for name, peer, mine, target, unit in rows:
 s_peer = search["seeds_per_s"]; s_ours = ours["BM_SeedSearch_64x64"]["seeds_per_s"]
 r = s_ours / s_peer
 print(f"{'seed search 64x64, seeds per second':40} {s_peer:12.0f} {s_ours:12.0f} {r:8.0f}x {100:>7}x {'ok' if r >= 100 else 'BELOW'}")
+serve = ms(ours["BM_Serve_Generate_256x256"])
+print(f"{'page: regenerate 256x256 (server time)':40} {'':>12} {serve:10.2f}ms {'':>9} {'< 50 ms':>8} {'ok' if serve < 50 else 'ABOVE'}")
+print(f"{'page: segment report 67x67':40} {'':>12} {ms(ours['BM_Serve_Segment_67x67']):10.2f}ms")
+print(f"{'(layout.svg of 256x256 tiles, not used to redraw)':40} {'':>12} {ms(ours['BM_Serve_LayoutSvg_256x256']):10.1f}ms")
 print(f"\npeak memory: peer cube {int(os.environ['PEER_RSS'])/1024:.0f} MiB; "
       f"curdle benchmark process {int(os.environ['OUR_RSS'])/1024:.0f} MiB")
 PY

@@ -15,6 +15,7 @@
 #include "export/schedule.h"
 #include "layout/builder.h"
 #include "recipe/recipe.h"
+#include "server/api.h"
 
 namespace {
 
@@ -93,6 +94,57 @@ void BM_Schedule_1M_elements(benchmark::State& state) {
   std::remove((path + ".q").c_str());
 }
 BENCHMARK(BM_Schedule_1M_elements)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
+
+// The page's regenerate: /api/generate of a 256 x 256 field (the fig. 8 pattern), with the
+// cells for the canvas and the full report, as the server answers it, a new seed each time.
+void BM_Serve_Generate_256x256(benchmark::State& state) {
+  curdle::server::ApiContext context;
+  context.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/paper/fig8-segment-of-large-curd.toml";
+  std::ifstream in(context.recipe_path);
+  context.recipe_text.assign(std::istreambuf_iterator<char>(in), {});
+  uint64_t seed = 0;
+  size_t bytes = 0;
+  for (auto _ : state) {
+    const auto r = curdle::server::api_generate(context, {{"seed", std::to_string(++seed)}});
+    if (r.status != 200) state.SkipWithError(r.body.c_str());
+    bytes = r.body.size();
+  }
+  state.counters["response_bytes"] = static_cast<double>(bytes);
+}
+BENCHMARK(BM_Serve_Generate_256x256)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The segment's own report as the page asks for it after a drag (67 x 67 cells, no cells).
+void BM_Serve_Segment_67x67(benchmark::State& state) {
+  curdle::server::ApiContext context;
+  context.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/paper/fig8-segment-of-large-curd.toml";
+  std::ifstream in(context.recipe_path);
+  context.recipe_text.assign(std::istreambuf_iterator<char>(in), {});
+  for (auto _ : state) {
+    const auto r = curdle::server::api_generate(
+        context, {{"seed", "8"}, {"window", "100,40,67,67"}, {"cells", "0"}});
+    if (r.status != 200) state.SkipWithError(r.body.c_str());
+  }
+}
+BENCHMARK(BM_Serve_Segment_67x67)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Redrawing from the CLI's own drawing instead of the canvas: the whole 256 x 256 field of the
+// two-curd tile pattern (fig. 3) laid out and written as layout.svg, 65,536 tiles.
+void BM_Serve_LayoutSvg_256x256(benchmark::State& state) {
+  curdle::server::ApiContext context;
+  context.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/paper/fig3-two-curds.toml";
+  std::ifstream in(context.recipe_path);
+  context.recipe_text.assign(std::istreambuf_iterator<char>(in), {});
+  uint64_t seed = 0;
+  size_t bytes = 0;
+  for (auto _ : state) {
+    const auto r = curdle::server::api_export(
+        context, {{"seed", std::to_string(++seed)}, {"field.cells", "[256,256]"}, {"file", "layout.svg"}});
+    if (r.status != 200) state.SkipWithError(r.body.c_str());
+    bytes = r.body.size();
+  }
+  state.counters["svg_bytes"] = static_cast<double>(bytes);
+}
+BENCHMARK(BM_Serve_LayoutSvg_256x256)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
