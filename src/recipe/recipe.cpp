@@ -808,18 +808,21 @@ void apply_override(toml::table& doc, const std::string& assignment) {
   }
 }
 
-}  // namespace
-
-Recipe parse_recipe(std::string_view text, const std::string& source,
-                    const std::vector<std::string>& overrides) {
-  toml::table doc;
+toml::table parse_toml(std::string_view text, const std::string& source) {
   try {
-    doc = toml::parse(text, source);
+    return toml::parse(text, source);
   } catch (const toml::parse_error& e) {
     throw InputError(SourceLocation{source, static_cast<int>(e.source().begin.line),
                                     static_cast<int>(e.source().begin.column), ""},
                      "not valid TOML: " + std::string(e.description()));
   }
+}
+
+}  // namespace
+
+Recipe parse_recipe(std::string_view text, const std::string& source,
+                    const std::vector<std::string>& overrides) {
+  toml::table doc = parse_toml(text, source);
   Source where{source, {}};
   for (const auto& o : overrides) {
     apply_override(doc, o);
@@ -868,14 +871,7 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
 
 std::string recipe_text_with(std::string_view text, const std::string& source,
                              const std::vector<std::string>& overrides) {
-  toml::table doc;
-  try {
-    doc = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw InputError(SourceLocation{source, static_cast<int>(e.source().begin.line),
-                                    static_cast<int>(e.source().begin.column), ""},
-                     "not valid TOML: " + std::string(e.description()));
-  }
+  toml::table doc = parse_toml(text, source);
   for (const auto& o : overrides) apply_override(doc, o);
   std::ostringstream out;
   out << doc << "\n";

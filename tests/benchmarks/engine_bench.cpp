@@ -95,13 +95,19 @@ void BM_Schedule_1M_elements(benchmark::State& state) {
 }
 BENCHMARK(BM_Schedule_1M_elements)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 
+// The API as `curdle serve` runs it for a pattern of patterns/paper.
+curdle::server::ApiContext api_context(const std::string& pattern) {
+  curdle::server::ApiContext context;
+  context.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/paper/" + pattern + ".toml";
+  std::ifstream in(context.recipe_path);
+  context.recipe_text.assign(std::istreambuf_iterator<char>(in), {});
+  return context;
+}
+
 // The page's regenerate: /api/generate of a 256 x 256 field (the fig. 8 pattern), with the
 // cells for the canvas and the full report, as the server answers it, a new seed each time.
 void BM_Serve_Generate_256x256(benchmark::State& state) {
-  curdle::server::ApiContext context;
-  context.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/paper/fig8-segment-of-large-curd.toml";
-  std::ifstream in(context.recipe_path);
-  context.recipe_text.assign(std::istreambuf_iterator<char>(in), {});
+  const curdle::server::ApiContext context = api_context("fig8-segment-of-large-curd");
   uint64_t seed = 0;
   size_t bytes = 0;
   for (auto _ : state) {
@@ -115,10 +121,7 @@ BENCHMARK(BM_Serve_Generate_256x256)->Unit(benchmark::kMillisecond)->UseRealTime
 
 // The segment's own report as the page asks for it after a drag (67 x 67 cells, no cells).
 void BM_Serve_Segment_67x67(benchmark::State& state) {
-  curdle::server::ApiContext context;
-  context.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/paper/fig8-segment-of-large-curd.toml";
-  std::ifstream in(context.recipe_path);
-  context.recipe_text.assign(std::istreambuf_iterator<char>(in), {});
+  const curdle::server::ApiContext context = api_context("fig8-segment-of-large-curd");
   for (auto _ : state) {
     const auto r = curdle::server::api_generate(
         context, {{"seed", "8"}, {"window", "100,40,67,67"}, {"cells", "0"}});
@@ -130,10 +133,7 @@ BENCHMARK(BM_Serve_Segment_67x67)->Unit(benchmark::kMillisecond)->UseRealTime();
 // Redrawing from the CLI's own drawing instead of the canvas: the whole 256 x 256 field of the
 // two-curd tile pattern (fig. 3) laid out and written as layout.svg, 65,536 tiles.
 void BM_Serve_LayoutSvg_256x256(benchmark::State& state) {
-  curdle::server::ApiContext context;
-  context.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/paper/fig3-two-curds.toml";
-  std::ifstream in(context.recipe_path);
-  context.recipe_text.assign(std::istreambuf_iterator<char>(in), {});
+  const curdle::server::ApiContext context = api_context("fig3-two-curds");
   uint64_t seed = 0;
   size_t bytes = 0;
   for (auto _ : state) {
