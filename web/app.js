@@ -147,7 +147,8 @@ function readRecipeIntoState(r) {
   state.dimension = r.lattice.dimension;
   state.stages = r.lattice.stages;
   state.mode = r.lattice.mode;
-  state.field = [r.field[0], r.field[1] || 1];
+  state.field = r.field.slice();
+  while (state.field.length < 3) state.field.push(1);
   state.fieldTouched = false;
   state.curds = r.curds.map((c) => ({ name: c.name, colour: c.colour, probabilities: c.probabilities.slice() }));
   state.valueColours = originalValueColours();
@@ -275,9 +276,21 @@ function resizeCurds() {
     while (c.probabilities.length < stages) c.probabilities.push(c.probabilities[c.probabilities.length - 1] || "1/2");
     c.probabilities.length = stages;
   }
-  if (state.valueColours.length && state.valueColours.length !== 1 << count) state.valueColours = [];
+  // A recipe with a colour per value needs one for every value: new values take the mean of
+  // their curds' colours, as the previews do.
+  if (state.valueColours.length && state.valueColours.length !== 1 << count) {
+    const old = state.valueColours;
+    state.valueColours = Array.from({ length: 1 << count }, (_, v) =>
+      v < old.length ? old[v] : blend(state.curds.filter((c, i) => v >> i & 1).map((c) => c.colour)));
+  }
   renderCurdControls();
   renderPalette();
+}
+
+function blend(colours) {
+  const rgb = colours.map(hexToRgb);
+  const mean = [0, 1, 2].map((k) => Math.round(rgb.reduce((sum, c) => sum + c[k], 0) / rgb.length));
+  return "#" + mean.map((x) => x.toString(16).padStart(2, "0")).join("");
 }
 
 let timer = null;
@@ -633,7 +646,8 @@ function wireControls() {
   $("curd-count").addEventListener("change", () => { resizeCurds(); schedule(); });
   for (const id of ["field-w", "field-h"])
     $(id).addEventListener("change", () => {
-      state.field = [Number($("field-w").value), Number($("field-h").value)];
+      state.field[0] = Number($("field-w").value);
+      state.field[1] = Number($("field-h").value);
       state.fieldTouched = true;
       schedule();
     });
