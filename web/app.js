@@ -534,7 +534,9 @@ function renderExports() {
   box.textContent = "";
   const hasLayout = !!(state.whole && state.whole.layout);
   const win = windowText();
-  $("export-what").textContent = win ? `segment ${win}` : "whole field";
+  const own = state.whole && state.whole.default_window;
+  $("export-what").textContent = win ? `segment ${win}`
+    : own ? `the recipe's segment ${own.join(",")}` : "whole field";
   for (const name of kDownloads) {
     if (!hasLayout && /^(layout|schedule|quantities|install)/.test(name)) continue;
     const a = document.createElement("a");
@@ -543,9 +545,15 @@ function renderExports() {
     a.textContent = name;
     box.append(a);
   }
-  updateRecipeText();
-  updateLayoutPreview(hasLayout, win);
+  // The recipe text and the drawn layout cost more than a regenerate: they wait until the
+  // controls rest, so that a moving slider never queues them ahead of the curd.
+  clearTimeout(slowTimer);
+  slowTimer = setTimeout(() => {
+    updateRecipeText();
+    updateLayoutPreview(hasLayout, win);
+  }, 300);
 }
+let slowTimer = null;
 
 let recipeController = null;
 async function updateRecipeText() {

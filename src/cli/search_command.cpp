@@ -31,14 +31,16 @@ void add_search_options(CLI::App& c, SearchOptions& o) {
   c.add_option("--target", o.targets,
                std::string("A target, repeatable: ") + kTargetSyntax +
                    " (default: every value at its expected share, every curd at its expected "
-                   "dimension)");
+                   "dimension)")
+      ->allow_extra_args(false);
   c.add_option("--top", o.top, "How many seeds to keep (default 10)");
   c.add_option("--lacunarity-box", o.lacunarity_box,
                "Side in cells of the gliding box for lacunarity (default: the base b)");
   c.add_option("--out", o.out_dir,
                "Where search.csv and the previews go (default: curdle-out/<recipe name>-search)");
   c.add_flag("!--no-previews", o.previews, "Write search.csv only, no preview images");
-  c.add_option("--set", o.sets, "Override a recipe key, as for generate");
+  c.add_option("--set", o.sets, "Override a recipe key, as for generate")
+      ->allow_extra_args(false);
   c.add_option("--threads", o.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   c.add_option("--max-memory", o.max_memory, "Refuse work above this much memory, e.g. 8G");

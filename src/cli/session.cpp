@@ -22,7 +22,8 @@ void add_common_options(CLI::App& c, CommonOptions& o) {
   c.add_option("--seed", o.seed, "Random seed, 0 to 2^64-1 (default: the recipe's `seed`, else 1)");
   c.add_option("--set", o.sets,
                "Override a recipe key: --set lattice.mode=exact, "
-               "--set curds.0.probabilities='[\"1/2\",\"1/2\"]'");
+               "--set curds.0.probabilities='[\"1/2\",\"1/2\"]'")
+      ->allow_extra_args(false);  // one value each time, so the recipe may follow
   c.add_option("--window", o.window,
                "Segment of the field in cells: X,Y,W,H (1-D X,W; 3-D X,Y,Z,W,H,D)");
   c.add_option("--threads", o.threads, "Worker threads (default: all cores)")

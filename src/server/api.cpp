@@ -75,7 +75,7 @@ RunRequest read_run(const Params& params, const std::set<std::string>& own_names
         throw InputError(SourceLocation{"set", 0, 0, ""},
                          "'" + value + "' is not KEY=VALUE, e.g. set=lattice.base=3");
       r.sets.push_back(value);
-    } else if (key.find('.') != std::string::npos || key == "seed_recipe") {
+    } else if (key.find('.') != std::string::npos) {
       r.sets.push_back(key + "=" + value);
     } else if (key == "seed") {
       r.seed = value;
