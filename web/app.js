@@ -85,7 +85,12 @@ let wholeController = null;
 async function getJson(url, signal) {
   const response = await fetch(url, { signal });
   let body;
-  try { body = await response.json(); } catch { body = { error: `the server answered ${response.status}` }; }
+  try {
+    body = await response.json();
+  } catch (err) {
+    if (err.name === "AbortError") throw err;  // a newer request took over mid-body
+    body = { error: `the server answered ${response.status} with no JSON` };
+  }
   if (!response.ok) throw new Error(body.error || `request failed (${response.status})`);
   return body;
 }
@@ -571,7 +576,19 @@ function updateLayoutPreview(hasLayout, win) {
   const cells = state.segment ? state.segment[2] * state.segment[3] : (state.whole ? state.whole.report.cells : 0);
   if (!hasLayout || cells > 40000) { figure.hidden = true; return; }
   figure.hidden = false;
-  $("layout-preview").src = "/api/export?" + query({ file: "layout.png", window: win || undefined });
+  const img = $("layout-preview");
+  const src = "/api/export?" + query({ file: "layout.png", window: win || undefined });
+  if (img.getAttribute("src") === src) return;
+  // Until the new drawing arrives, the old one is dimmed and the caption says so.
+  img.classList.add("stale");
+  $("layout-caption").textContent = "Drawing the layout…";
+  img.onload = () => {
+    img.classList.remove("stale");
+    $("layout-caption").textContent = `The layout of ${win ? "segment " + win : "the field"}, as layout.png`;
+    img.dataset.shown = src;
+  };
+  img.onerror = () => { $("layout-caption").textContent = "The layout could not be drawn."; };
+  img.src = src;
 }
 
 // ---- search ----

@@ -38,7 +38,7 @@ const browser = await chromium.launch({
 try {
   const page = await browser.newPage({ viewport: { width: 1500, height: 1000 }, acceptDownloads: true });
   const pageErrors = [];
-  page.on('pageerror', (e) => pageErrors.push(e.message));
+  page.on('pageerror', (e) => pageErrors.push(e.stack || e.message));
   await page.goto(url);
   await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
   await page.screenshot({ path: path.join(shots, '1-loaded.png') });
@@ -57,6 +57,23 @@ try {
   const slider = page.locator('input[aria-label="Curd 0 stage 1 probability slider"]');
   check(Math.abs(Number(await slider.inputValue()) - 0.75) < 1e-9, 'the slider follows the fraction');
   check((await page.textContent('#status')).includes('server'), 'the status shows the server time');
+
+  // A slider sends its decimal.
+  const slid = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+  await page.locator('input[aria-label="Curd 0 stage 2 probability slider"]').fill('0.6');
+  check(decodeURIComponent((await slid).url()).includes('curds.0.probabilities=["3/4","0.6","1/3"]'),
+        'a slider move sends the new probability');
+  check((await page.inputValue('input[aria-label="Curd 0 stage 2 probability"]')) === '0.6', 'the fraction field follows the slider');
+  await page.fill('input[aria-label="Curd 0 stage 2 probability"]', '1/2');
+  await page.press('input[aria-label="Curd 0 stage 2 probability"]', 'Enter');
+
+  // A segment fixed in metres: 3 x 2.4 m of 300 mm tiles is 10 x 8 cells.
+  await page.check('input[name=fix][value=metres]');
+  await page.fill('#fix-w', '3');
+  await page.fill('#fix-h', '2.4');
+  await page.dispatchEvent('#fix-h', 'change');
+  await page.waitForFunction(() => / 0,0,10,8 /.test(' ' + document.querySelector('#segment-text').textContent.split(' ')[1] + ' '));
+  check((await page.textContent('#segment-text')).includes('3.00 × 2.40 m'), 'a segment fixed in metres is 10 x 8 cells, 3 x 2.4 m');
 
   // A free drag, snapped to cells.
   await page.check('input[name=fix][value=free]');
@@ -82,6 +99,13 @@ try {
   check(true, 'a fixed segment of 67 x 67 cells follows the drag (107,77,67,67)');
   await page.waitForFunction(() => document.querySelector('#command').textContent.includes('--window 107,77,67,67'));
   await page.waitForFunction(() => document.querySelector('#export-what').textContent.includes('107,77,67,67'));
+  // The layout drawing follows once the controls rest; wait for the one of this segment.
+  const layoutShown = (win) => page.waitForFunction((w) => {
+    const img = document.querySelector('#layout-preview');
+    return img.dataset.shown === img.getAttribute('src') && img.dataset.shown.includes(encodeURIComponent(w));
+  }, win, { timeout: 30000 });
+  await layoutShown('107,77,67,67');
+  check((await page.textContent('#layout-caption')).includes('segment 107,77,67,67'), 'the segment\'s layout.png is drawn below the curd');
   await page.screenshot({ path: path.join(shots, '2-segment.png'), fullPage: true });
 
   // Downloads, and the same files from the command line with the command the page shows.
@@ -132,6 +156,7 @@ try {
   await first.click();
   await page.waitForFunction((w) => document.querySelector('#command').textContent.includes(`--window ${w}`), win);
   check((await page.inputValue('#seed')) === seed, `clicking the best hit loads seed ${seed} and segment ${win}`);
+  await layoutShown(win);
   await page.screenshot({ path: path.join(shots, '4-search.png'), fullPage: true });
   check(pageErrors.length === 0, `no script errors on the page ${pageErrors.join('; ')}`);
 } finally {
