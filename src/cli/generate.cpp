@@ -60,8 +60,6 @@ std::set<std::string> parse_outputs(const std::vector<std::string>& names) {
 
 }  // namespace
 
-const std::vector<std::string>& output_names() { return kOutputs; }
-
 std::vector<fs::path> write_outputs(Session& s, const fs::path& dir,
                                     const std::vector<std::string>& outputs_named, int threads,
                                     FILE* log) {
@@ -115,7 +113,7 @@ std::vector<fs::path> write_outputs(Session& s, const fs::path& dir,
   }
   make_output_dir(dir);
 
-  const CurdField field = run_engine(s, threads);
+  const CurdField field = run_engine(s, threads, log != nullptr);
   const Report report = make_report(s.recipe.design, s.seed, field, s.view);
 
   // Everything is written under temporary names first and renamed only when all succeeded,
@@ -126,13 +124,13 @@ std::vector<fs::path> write_outputs(Session& s, const fs::path& dir,
     return *staged.back();
   };
   if (outputs.count("cells.csv")) {
-    Progress progress("writing cells.csv");
+    Progress progress("writing cells.csv", log != nullptr);
     stage("cells.csv").write([&](std::ostream& o) {
       write_cells_csv(o, s.recipe.design, field, s.view, [&](double f) { progress.update(f); });
     });
   }
   if (outputs.count("preview.png")) {
-    Progress progress("drawing preview.png");
+    Progress progress("drawing preview.png", log != nullptr);
     write_png(
         stage("preview.png").temporary(),
         render_preview(s.recipe.design, field, s.view, [&](double f) { progress.update(f); }));

@@ -11,11 +11,9 @@
 
 namespace curdle::cli {
 
-// The outputs `generate` knows, in the order it lists them.
-const std::vector<std::string>& output_names();
-
 // Writes the outputs named (none: all but layout.gltf) into `dir`, staged and renamed together
-// once all succeeded. Prints a summary to `log` (nullptr: silent). Returns the files written.
+// once all succeeded. Prints a summary to `log` and progress to a terminal (nullptr: silent,
+// as the server runs it). Returns the files written.
 // Throws InputError for bad input, before anything is written.
 std::vector<std::filesystem::path> write_outputs(Session& session, const std::filesystem::path& dir,
                                                  const std::vector<std::string>& outputs_named,

@@ -6,10 +6,10 @@
 
 namespace curdle::cli {
 
-Progress::Progress(std::string what)
+Progress::Progress(std::string what, bool enabled)
     : what_(std::move(what)),
       start_(std::chrono::steady_clock::now()),
-      terminal_(::isatty(STDERR_FILENO) == 1) {}
+      terminal_(enabled && ::isatty(STDERR_FILENO) == 1) {}
 
 Progress::~Progress() {
   if (shown_) std::fprintf(stderr, "\r%s: done.          \n", what_.c_str());

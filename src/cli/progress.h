@@ -8,7 +8,8 @@ namespace curdle::cli {
 
 class Progress {
  public:
-  explicit Progress(std::string what);
+  // `enabled` false: never shows anything (work done for the server, say).
+  explicit Progress(std::string what, bool enabled = true);
   ~Progress();
   void update(double fraction);
 

@@ -158,8 +158,11 @@ int run_search(const SearchOptions& o) {
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
   const uint64_t threads = o.threads > 0 ? static_cast<uint64_t>(o.threads)
                                          : static_cast<uint64_t>(tbb::info::default_concurrency());
-  const uint64_t per_thread = estimate_memory(d, generation_box(d, d.field)) +
-                              d.field.cells() * (2 + 4 * ((uint64_t{1} << d.curds.size()) + 2));
+  // The grid is 2 bytes a cell; each target reads one prefix-sum table of 4 bytes a cell.
+  const uint64_t tables =
+      (spec.targets.empty() ? default_targets(d).size() : spec.targets.size()) + 1;
+  const uint64_t per_thread =
+      estimate_memory(d, generation_box(d, d.field)) + d.field.cells() * (2 + 4 * tables);
   if (per_thread * threads > s.generate.max_memory_bytes)
     throw InputError(SourceLocation{o.recipe_path, 0, 0, ""},
                      "a search over this field needs about " +

@@ -138,10 +138,10 @@ std::string generate_command(const std::string& recipe_path, const std::vector<s
   return command;
 }
 
-CurdField run_engine(const Session& s, int threads) {
+CurdField run_engine(const Session& s, int threads, bool show_progress) {
   std::optional<tbb::global_control> limit;
   if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
-  Progress progress("curdling");
+  Progress progress("curdling", show_progress);
   GenerateOptions options = s.generate;
   options.progress = [&](double f) { progress.update(f); };
   return curdle(s.recipe.design, s.seed, s.view, options);

@@ -40,8 +40,8 @@ Session make_session(const std::string& recipe_text, const CommonOptions& option
 // The recipe file's text; throws InputError when it cannot be read.
 std::string read_recipe_file(const std::string& path);
 
-// Runs the engine with progress on a terminal, honouring --threads.
-CurdField run_engine(const Session& session, int threads);
+// Runs the engine, honouring --threads, with progress on a terminal when `show_progress`.
+CurdField run_engine(const Session& session, int threads, bool show_progress = true);
 
 // "X,Y,W,H" (1-D "X,W"; 3-D "X,Y,Z,W,H,D"), as --window takes it.
 std::string window_text(const Box& window, int dimension);

@@ -310,6 +310,9 @@ std::vector<SearchHit> search_seeds(const Design& d, const Box& view, const Sear
                                     const std::function<void(double)>& progress,
                                     const std::atomic<bool>* cancel) {
   check_search(d, view, spec_in);
+  if (last < first || last - first == UINT64_MAX)
+    throw InputError(SourceLocation{"--seeds", 0, 0, ""},
+                     "a range of seeds runs from its first to its last, and holds fewer than 2^64");
   SearchSpec spec = spec_in;
   if (spec.targets.empty()) spec.targets = default_targets(d);
   if (spec.lacunarity_box == 0) spec.lacunarity_box = d.lattice.base;

@@ -67,7 +67,8 @@ struct RunRequest {
 };
 
 RunRequest read_run(const Params& params, const std::set<std::string>& own_names) {
-  if (params.size() > 256) throw InputError("too many parameters (" + std::to_string(params.size()) + "); at most 256");
+  if (params.size() > 256)
+    throw TooLarge("too many parameters (" + std::to_string(params.size()) + "); at most 256");
   RunRequest r;
   for (const auto& [key, value] : params) {
     if (key == "set") {
@@ -115,15 +116,13 @@ cli::Session session_for(const ApiContext& c, const RunRequest& r) {
   return s;
 }
 
-void check_cells(const ApiContext& c, const Design& d, const Box& view, uint64_t limit,
-                 const char* what) {
+void check_cells(const Design& d, const Box& view, uint64_t limit, const char* what) {
   const uint64_t cells = generation_box(d, view).cells();
   if (cells > limit)
     throw TooLarge(std::string(what) + " " + std::to_string(cells) + " cells; the server allows " +
                    std::to_string(limit) +
                    ": choose a smaller field.cells or window, or start it with a larger "
                    "--max-cells");
-  (void)c;
 }
 
 ordered_json box_json(const Box& b, int dimension) {
@@ -267,7 +266,7 @@ ApiResponse api_generate(const ApiContext& c, const Params& params) {
     const int E = d.lattice.dimension;
     // The page sees the whole field unless it asks for a window.
     const Box view = r.window.empty() ? d.field : s.view;
-    check_cells(c, d, view, c.limits.max_cells, "this request would generate");
+    check_cells(d, view, c.limits.max_cells, "this request would generate");
     const CurdField field = curdle(d, s.seed, view, s.generate);
     const Report report = make_report(d, s.seed, field, view);
     ordered_json j = describe(s);
@@ -308,7 +307,7 @@ ApiResponse api_export(const ApiContext& c, const Params& params) {
     const Design& d = s.recipe.design;
     const bool layout_file = name != "report.json" && name != "cells.csv" &&
                              name != "preview.png" && name != "recipe.toml";
-    check_cells(c, d, s.view, layout_file ? c.limits.max_layout_cells : c.limits.max_cells,
+    check_cells(d, s.view, layout_file ? c.limits.max_layout_cells : c.limits.max_cells,
                 layout_file ? "this layout would have" : "this request would generate");
     ApiResponse out;
     out.filename = name;
@@ -360,12 +359,13 @@ ApiResponse api_search(const ApiContext& c, const Params& params) {
     const std::vector<std::string> targets =
         targets_it == r.own.end() ? std::vector<std::string>{} : targets_it->second;
     const SearchSpec spec = cli::make_search_spec(s, targets, own(r, "segment"), stride, top, 0);
-    check_cells(c, d, d.field, c.limits.max_cells, "each seed would generate");
-    const uint64_t seeds = last - first + 1;
-    if (seeds > c.limits.max_search_cells / std::max<uint64_t>(1, d.field.cells()))
-      throw TooLarge(std::to_string(seeds) + " seeds of " + std::to_string(d.field.cells()) +
-                     " cells are more than the server searches at once (" +
-                     std::to_string(c.limits.max_search_cells / std::max<uint64_t>(1, d.field.cells())) +
+    check_cells(d, d.field, c.limits.max_cells, "each seed would generate");
+    // Counted as last - first, which cannot overflow, against the most seeds of this field.
+    const uint64_t most = c.limits.max_search_cells / std::max<uint64_t>(1, d.field.cells());
+    if (last - first >= most)
+      throw TooLarge("seeds " + std::to_string(first) + " to " + std::to_string(last) + " of " +
+                     std::to_string(d.field.cells()) +
+                     " cells are more than the server searches at once (" + std::to_string(most) +
                      " seeds of this field); search fewer seeds, or run curdle search");
     const auto hits = search_seeds(d, d.field, spec, first, last, {}, c.stopping);
     ordered_json j = cli::search_hits_json(s, r.sets, spec, hits);
