@@ -375,6 +375,7 @@ function placeSelection() {
   else if (layout)
     size = ` · ${(sw * layout.cell_mm[0] / 1000).toFixed(2)} × ${(sh * layout.cell_mm[1] / 1000).toFixed(2)} m`;
   $("segment-text").textContent = `Segment ${windowText()} (x, y, width, height in cells)${size}`;
+  if (document.activeElement !== $("window-text")) $("window-text").value = windowText();
 }
 
 // ---- selection ----
@@ -681,11 +682,13 @@ function wireControls() {
     applyFixedSize();
   }));
   for (const id of ["fix-w", "fix-h"]) $(id).addEventListener("change", applyFixedSize);
+  $("window-text").addEventListener("change", typedWindow);
   $("clear-selection").addEventListener("click", () => {
     state.segment = null;
     setFix("free");
     placeSelection();
     $("segment-text").textContent = "";
+    $("window-text").value = "";
     refreshSegment();
   });
   $("reset").addEventListener("click", () => { readRecipeIntoState(state.recipe); syncControls(); regenerate(); });
@@ -694,6 +697,26 @@ function wireControls() {
   $("search-results").addEventListener("click", pickHit);
   window.addEventListener("resize", () => state.whole && draw());
   wireCanvas();
+}
+
+// A window typed as X,Y,W,H (X,W on a line): checked against the field here, so that the
+// message names the field's size.
+function typedWindow() {
+  const text = $("window-text").value.trim();
+  const numbers = text.split(",").map((t) => Number(t.trim()));
+  const [w, h] = fieldSize();
+  const oneD = state.dimension === 1;
+  const box = oneD ? [numbers[0], 0, numbers[1], 1] : numbers;
+  const whole = numbers.every((n) => Number.isInteger(n)) && numbers.length === (oneD ? 2 : 4);
+  if (!whole || box[0] < 0 || box[1] < 0 || box[2] < 1 || box[3] < 1 || box[0] + box[2] > w || box[1] + box[3] > h) {
+    showError(`Window '${text}': write ${oneD ? "X,W" : "X,Y,W,H"} in whole cells, inside the field of ${w} × ${h} cells`);
+    return;
+  }
+  showError("");
+  state.segment = box;
+  setFix("free");
+  placeSelection();
+  refreshSegment();
 }
 
 // A fixed size resizes the current selection in place (or places one at the origin).

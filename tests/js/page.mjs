@@ -75,6 +75,17 @@ try {
   await page.waitForFunction(() => / 0,0,10,8 /.test(' ' + document.querySelector('#segment-text').textContent.split(' ')[1] + ' '));
   check((await page.textContent('#segment-text')).includes('3.00 × 2.40 m'), 'a segment fixed in metres is 10 x 8 cells, 3 x 2.4 m');
 
+  // A window typed in, and one outside the field refused with the field's size.
+  await page.fill('#window-text', '5,6,30,20');
+  const typed = page.waitForResponse((r) => r.url().includes('window=5%2C6%2C30%2C20') && r.url().includes('cells=0'));
+  await page.dispatchEvent('#window-text', 'change');
+  await typed;
+  await page.waitForFunction(() => document.querySelector('#export-what').textContent.includes('5,6,30,20'));
+  check(true, 'a typed window selects that segment');
+  await page.fill('#window-text', '250,0,30,20');
+  await page.dispatchEvent('#window-text', 'change');
+  check((await page.textContent('#error')).includes('inside the field of 256 × 256 cells'), 'a window outside the field is refused');
+
   // A free drag, snapped to cells.
   await page.check('input[name=fix][value=free]');
   const box = await page.locator('#curd').boundingBox();
