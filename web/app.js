@@ -514,8 +514,10 @@ function renderReport() {
   whole.report.curds.forEach((c, i) => {
     const t = document.createElement("table");
     const s = seg ? seg.report.curds[i] : null;
-    let rows = `<tr><th>${escapeHtml(c.name)}: stage</th><th>p</th><th>N</th><th>expected ± sd</th><th>boxes</th><th>local D</th>` +
-      (s ? '<th class="seg">segment N</th><th class="seg">expected</th>' : "") + "</tr>";
+    let rows = `<caption>${escapeHtml(c.name)}</caption><tr><th title="stage">k</th><th>p</th><th>N</th>` +
+      `<th title="expected survivors ± standard deviation">expected</th><th title="boxes with a survivor">boxes</th>` +
+      `<th title="local box dimension">D</th>` +
+      (s ? '<th class="seg" title="survivors in the segment">seg. N</th><th class="seg" title="expected in the segment">expected</th>' : "") + "</tr>";
     c.stages.forEach((k, j) => {
       rows += `<tr><td>${k.stage}</td><td>${escapeHtml(k.probability_text)}</td><td>${k.survivors}</td>` +
         `<td>${fmt(k.expected, 1)} ± ${fmt(k.expected_sd, 1)}</td><td>${k.box_count}</td><td>${fmt(k.local_dimension, 3)}</td>` +
