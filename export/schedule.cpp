@@ -5,22 +5,11 @@
 #include <cmath>
 #include <map>
 
+#include "curdle/palette.h"
+#include "export/csv_field.h"
+
 namespace curdle {
 namespace {
-
-std::string hex(const Rgb& c) { return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b); }
-
-// RFC 4180: quote a field that holds a comma, a quote or a line break.
-std::string field(const std::string& s) {
-  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) {
-    if (c == '"') q += '"';
-    q += c;
-  }
-  q += '"';
-  return q;
-}
 
 std::string mm(double v) { return fmt::format("{:.1f}", v); }
 
@@ -45,7 +34,7 @@ void write_schedule_csv(std::ostream& out, const Layout& layout, const Design& d
   std::string header = "element_id,lot,row,column,x_mm,y_mm,z_mm,width_mm,height_mm,value";
   for (const CurdSpec& c : design.curds) {
     header += ',';
-    header += field(c.name);
+    header += csv_field(c.name);
   }
   header +=
       ",element_type,colour,material,cut,cut_width_mm,cut_height_mm,opening_x_mm,"
@@ -72,9 +61,9 @@ void write_schedule_csv(std::ostream& out, const Layout& layout, const Design& d
                    e.column, mm(e.nominal.x), mm(e.nominal.y), mm(z), mm(e.nominal.w),
                    mm(e.nominal.h), e.value);
     for (size_t c = 0; c < design.curds.size(); ++c) buffer += (e.value >> c & 1) ? ",1" : ",0";
-    fmt::format_to(std::back_inserter(buffer), ",{},{},{},{}", field(type_of(layout, e)),
-                   hex(colour_of(layout, e)),
-                   field(e.type.empty() ? layout.legend[e.value].label : e.type), e.cut ? 1 : 0);
+    fmt::format_to(std::back_inserter(buffer), ",{},{},{},{}", csv_field(type_of(layout, e)),
+                   hex_colour(colour_of(layout, e)),
+                   csv_field(e.type.empty() ? layout.legend[e.value].label : e.type), e.cut ? 1 : 0);
     if (e.cut)
       fmt::format_to(std::back_inserter(buffer), ",{},{}", mm(x1 - x0), mm(y1 - y0));
     else
@@ -104,7 +93,7 @@ void write_quantities_csv(std::ostream& out, const Layout& layout, const LayoutS
   };
   std::map<std::pair<std::string, std::string>, Line> lines;
   for (const Element& e : layout.elements) {
-    Line& l = lines[{type_of(layout, e), hex(colour_of(layout, e))}];
+    Line& l = lines[{type_of(layout, e), hex_colour(colour_of(layout, e))}];
     ++l.count;
     l.area += e.area();
     l.values[e.value] = e.type.empty() ? layout.legend[e.value].label : e.type;
@@ -120,8 +109,8 @@ void write_quantities_csv(std::ostream& out, const Layout& layout, const LayoutS
     }
     const auto with_spare = static_cast<uint64_t>(std::ceil(l.count * (1 + spec.spare) - 1e-9));
     const auto packs = (with_spare + spec.pack - 1) / spec.pack;
-    out << fmt::format("{},{},{},{},{},{:.4f},{},{},{},{}\r\n", field(key.first), key.second,
-                       values, field(labels), l.count, l.area / 1e6, spec.spare, with_spare,
+    out << fmt::format("{},{},{},{},{},{:.4f},{},{},{},{}\r\n", csv_field(key.first), key.second,
+                       values, csv_field(labels), l.count, l.area / 1e6, spec.spare, with_spare,
                        spec.pack, packs);
   }
 }

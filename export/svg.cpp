@@ -11,7 +11,6 @@
 namespace curdle {
 namespace {
 
-std::string hex(const Rgb& c) { return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b); }
 
 std::string escape(const std::string& s) {
   std::string out;
@@ -150,7 +149,7 @@ void draw_openings(std::ostream& out, const Layout& layout, const Sheet& s) {
     out << fmt::format(
         "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" data-count=\"{}\" "
         "fill=\"{}\">\n",
-        entry.value, entry.value, escape(entry.label), entry.count, hex(entry.colour));
+        entry.value, entry.value, escape(entry.label), entry.count, hex_colour(entry.colour));
     for (const Element* e : by_value[entry.value]) {
       if (e->circle) {
         out << fmt::format(
@@ -187,7 +186,7 @@ void draw_views(std::ostream& out, const Layout& layout, const Sheet& s, double 
         "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" data-count=\"{}\" "
         "fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\">\n",
         entry.value, entry.value, escape(entry.label), entry.value ? entry.count : 0,
-        hex(entry.colour), mm(unit * 0.03));
+        hex_colour(entry.colour), mm(unit * 0.03));
     std::string d;
     for (const Rect* r : by_value[entry.value]) d += rect_path(s, *r);
     if (!d.empty()) out << "<path d=\"" << d << "\"/>\n";
@@ -221,7 +220,7 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
     out << fmt::format(
         "<g id=\"type-{}\" class=\"element-type\" data-type=\"{}\" data-count=\"{}\" "
         "fill=\"{}\">\n",
-        id, escape(type), list.size(), hex(list.front()->colour));
+        id, escape(type), list.size(), hex_colour(list.front()->colour));
     // Whole-cell surfaces of this type merge into rectangles; the rest are drawn one by one.
     std::vector<int> grid(static_cast<size_t>(layout.rows * layout.columns), -1);
     std::vector<const Element*> at(grid.size(), nullptr);
@@ -279,7 +278,7 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
   for (const LegendEntry& entry : layout.legend) {
     const std::string fill = layout.combine == Combine::keep
                                  ? fmt::format("url(#parts-{})", entry.value)
-                                 : hex(entry.colour);
+                                 : hex_colour(entry.colour);
     out << fmt::format(
         "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" data-count=\"{}\" "
         "fill=\"{}\">\n",
@@ -309,7 +308,7 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
     }
     if (!d.empty())
       out << fmt::format("<path id=\"joints\" class=\"joint\" fill=\"{}\" d=\"{}\"/>\n",
-                         hex(layout.joint_colour), d);
+                         hex_colour(layout.joint_colour), d);
   }
   if (!layout.openings.empty()) {
     out << fmt::format(
@@ -379,7 +378,7 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Desi
     if (shown == 16) break;
     const double y = top + unit * 1.6 * static_cast<double>(shown++);
     const bool striped = layout.combine == Combine::keep && layout.kind != LayoutKind::perforation;
-    const std::string fill = striped ? fmt::format("url(#parts-{})", e.value) : hex(e.colour);
+    const std::string fill = striped ? fmt::format("url(#parts-{})", e.value) : hex_colour(e.colour);
     out << fmt::format(
         "<g class=\"legend-entry\" data-value=\"{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" "
         "height=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\">"
@@ -502,7 +501,7 @@ void write_layout_svg(std::ostream& out, const Layout& layout, const Design& des
       for (size_t i = 0; i < e.parts.size(); ++i)
         out << fmt::format("<rect x=\"{}\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
                            mm(from_right ? layout.joint + i * part : i * part), mm(part), mm(ph),
-                           hex(e.parts[i]));
+                           hex_colour(e.parts[i]));
       out << "</pattern>\n";
     }
     out << "</defs>\n";
@@ -516,8 +515,8 @@ void write_layout_svg(std::ostream& out, const Layout& layout, const Design& des
       "height=\"{}\" fill=\"{}\"{}/>\n",
       sheet ? "sheet" : "joint", mm(s.x(0)), mm(s.y(0, H)), mm(W), mm(H),
       sheet              ? std::string("#c9cdd2")
-      : layout.joint > 0 ? hex(layout.joint_colour)
-                         : hex(seamless_background(layout)),
+      : layout.joint > 0 ? hex_colour(layout.joint_colour)
+                         : hex_colour(seamless_background(layout)),
       sheet ? fmt::format(" stroke=\"#222\" stroke-width=\"{}\"", mm(unit * 0.05)) : "");
 
   if (layout.kind == LayoutKind::perforation || layout.kind == LayoutKind::rhythm) {

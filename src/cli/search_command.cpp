@@ -13,6 +13,7 @@
 #include "curdle/curdling.h"
 #include "curdle/error.h"
 #include "export/atomic_file.h"
+#include "export/csv_field.h"
 #include "export/preview_png.h"
 
 namespace fs = std::filesystem;
@@ -129,17 +130,6 @@ nlohmann::ordered_json search_hits_json(const Session& s, const std::vector<std:
   }
   return j;
 }
-
-namespace {
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
-}  // namespace
 
 int run_search(const SearchOptions& o) {
   CommonOptions common;

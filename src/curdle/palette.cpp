@@ -1,6 +1,7 @@
 #include "curdle/palette.h"
 
 #include <array>
+#include <cstdio>
 
 namespace curdle {
 
@@ -30,6 +31,16 @@ std::vector<Rgb> value_colours(const std::vector<CurdSpec>& curds) {
         Rgb{static_cast<uint8_t>(r / n), static_cast<uint8_t>(g / n), static_cast<uint8_t>(b / n)};
   }
   return colours;
+}
+
+}  // namespace curdle
+
+namespace curdle {
+
+std::string hex_colour(const Rgb& c) {
+  char text[8];
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", c.r, c.g, c.b);
+  return text;
 }
 
 }  // namespace curdle

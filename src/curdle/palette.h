@@ -2,6 +2,7 @@
 // several curds survive takes their mean (the paper's a + b = c: red and blue give purple).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "curdle/curd.h"
@@ -13,6 +14,9 @@ Rgb curd_colour(const std::vector<CurdSpec>& curds, size_t curd);
 
 // One colour per value (2^n entries); value 0, where no curd survived, is a light paving grey.
 std::vector<Rgb> value_colours(const std::vector<CurdSpec>& curds);
+
+// "#rrggbb", as recipes, SVG and CSV write colours.
+std::string hex_colour(const Rgb& colour);
 
 inline constexpr Rgb kEmptyColour{236, 232, 222};
 

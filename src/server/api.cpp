@@ -53,12 +53,6 @@ std::string base64(const uint8_t* data, size_t size) {
   return out;
 }
 
-std::string hex(const Rgb& c) {
-  char s[8];
-  std::snprintf(s, sizeof s, "#%02x%02x%02x", c.r, c.g, c.b);
-  return s;
-}
-
 // The parameters of a run: recipe keys become overrides, as --set does.
 struct RunRequest {
   std::vector<std::string> sets;
@@ -143,15 +137,13 @@ ordered_json describe(const cli::Session& s) {
   j["lattice"] = {{"base", d.lattice.base},
                   {"dimension", E},
                   {"stages", d.lattice.stages},
-                  {"mode", d.lattice.mode == Mode::canonical ? "canonical"
-                           : d.lattice.mode == Mode::exact   ? "exact"
-                                                             : "quota"}};
+                  {"mode", std::string(to_string(d.lattice.mode))}};
   j["curds"] = ordered_json::array();
   for (size_t c = 0; c < d.curds.size(); ++c) {
     ordered_json p = ordered_json::array();
     for (const Probability& q : d.curds[c].probabilities) p.push_back(q.text());
     j["curds"].push_back(
-        {{"name", d.curds[c].name}, {"probabilities", p}, {"colour", hex(curd_colour(d.curds, c))}});
+        {{"name", d.curds[c].name}, {"probabilities", p}, {"colour", hex_colour(curd_colour(d.curds, c))}});
   }
   ordered_json field = ordered_json::array();
   for (int k = 0; k < E; ++k) field.push_back(d.field.size[k]);
@@ -162,7 +154,7 @@ ordered_json describe(const cli::Session& s) {
     const LayoutSpec& spec = *s.recipe.layout;
     const auto entries = make_legend(d, spec);
     for (const LegendEntry& e : entries)
-      legend.push_back({{"value", e.value}, {"label", e.label}, {"colour", hex(e.colour)}});
+      legend.push_back({{"value", e.value}, {"label", e.label}, {"colour", hex_colour(e.colour)}});
     const bool line = spec.kind == LayoutKind::rhythm;
     j["layout"] = {{"element", element_type(spec.kind)},
                    {"cell_mm", {spec.module_w + spec.joint, line ? spec.module_h : spec.module_h + spec.joint}},
@@ -175,7 +167,7 @@ ordered_json describe(const cli::Session& s) {
   } else {
     const auto colours = value_colours(d.curds);
     for (uint32_t v = 0; v < colours.size(); ++v)
-      legend.push_back({{"value", v}, {"label", value_label(v, d.curds)}, {"colour", hex(colours[v])}});
+      legend.push_back({{"value", v}, {"label", value_label(v, d.curds)}, {"colour", hex_colour(colours[v])}});
     j["layout"] = nullptr;
   }
   j["legend"] = legend;
