@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "curdle/curd.h"
-#include "export/svg.h"
+#include "export/title_block.h"
 #include "layout/layout.h"
 
 namespace curdle {

@@ -5,7 +5,7 @@
 
 #include <ostream>
 
-#include "export/svg.h"
+#include "export/title_block.h"
 #include "layout/layout.h"
 
 namespace curdle {

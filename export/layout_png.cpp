@@ -1,6 +1,5 @@
 #include "export/layout_png.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -178,16 +177,5 @@ PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec) {
   return image;
 }
 
-void write_png_at(const std::filesystem::path& path, const PreviewImage& image, double dpi) {
-  auto out = OIIO::ImageOutput::create("png");
-  if (!out) throw std::runtime_error("OpenImageIO has no PNG writer: " + OIIO::geterror());
-  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  spec.attribute("XResolution", static_cast<float>(dpi));
-  spec.attribute("YResolution", static_cast<float>(dpi));
-  spec.attribute("ResolutionUnit", "inch");
-  if (!out->open(path.string(), spec) ||
-      !out->write_image(OIIO::TypeDesc::UINT8, image.rgb.data()) || !out->close())
-    throw InputError("cannot write " + path.string() + ": " + out->geterror());
-}
 
 }  // namespace curdle

@@ -19,7 +19,4 @@ PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec);
 // Pixels of layout.png for the layout `spec` makes of `view`, known before it is built.
 uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view);
 
-// Writes `image` as PNG to exactly `path`, recording `dpi`.
-void write_png_at(const std::filesystem::path& path, const PreviewImage& image, double dpi);
-
 }  // namespace curdle

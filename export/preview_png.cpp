@@ -1,6 +1,5 @@
 #include "export/preview_png.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -109,13 +108,5 @@ PreviewImage render_preview(const Design& design, const CurdField& field, const 
   return image;
 }
 
-void write_png(const std::filesystem::path& path, const PreviewImage& image) {
-  auto out = OIIO::ImageOutput::create("png");
-  if (!out) throw std::runtime_error("OpenImageIO has no PNG writer: " + OIIO::geterror());
-  const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  if (!out->open(path.string(), spec) ||
-      !out->write_image(OIIO::TypeDesc::UINT8, image.rgb.data()) || !out->close())
-    throw InputError("cannot write " + path.string() + ": " + out->geterror());
-}
 
 }  // namespace curdle

@@ -7,21 +7,15 @@
 #include <functional>
 
 #include "curdle/curd.h"
+#include "export/image.h"
 
 namespace curdle {
 
-struct PreviewImage {
-  int width = 0, height = 0;
-  std::vector<uint8_t> rgb;  // row-major, top row first
-};
 
 // Bytes render_preview needs for `view` (its accumulators and the image).
 uint64_t preview_memory(const Design& design, const Box& view);
 
 PreviewImage render_preview(const Design& design, const CurdField& field, const Box& view,
                             const std::function<void(double)>& progress = {});
-
-// Writes a PNG through OpenImageIO to exactly `path` (stage it with StagedFile).
-void write_png(const std::filesystem::path& path, const PreviewImage& image);
 
 }  // namespace curdle

@@ -80,4 +80,24 @@ json report_to_json(const Report& r) {
   return j;
 }
 
+uint64_t cut_elements(const Layout& layout) {
+  uint64_t cut = 0;
+  for (const Element& e : layout.elements) cut += e.cut;
+  return cut;
+}
+
+json report_to_json(const Report& report, const Layout& layout) {
+  json j = report_to_json(report);
+  j["layout"] = {{"element_type", layout.element_type},
+                 {"width_mm", layout.width},
+                 {"height_mm", layout.height},
+                 {"elements", layout.elements.size()},
+                 {"cut", cut_elements(layout)},
+                 {"omitted_over_openings", layout.omitted},
+                 {"open_area", layout.open_area},
+                 {"notes", layout.notes},
+                 {"rule_violations", layout.violations}};
+  return j;
+}
+
 }  // namespace curdle

@@ -13,30 +13,16 @@
 #include <string>
 
 #include "curdle/curd.h"
+#include "export/title_block.h"
 #include "layout/layout.h"
+#include "layout/merge_runs.h"
 
 namespace curdle {
-
-// What the title block says about where the layout came from.
-struct TitleBlock {
-  std::string recipe;
-  std::string description;
-  uint64_t seed = 0;
-};
 
 // The background that hides seams between jointless elements: the most common value's colour.
 Rgb seamless_background(const Layout& layout);
 
 void write_layout_svg(std::ostream& out, const Layout& layout, const Design& design,
                       const TitleBlock& title, const LayoutSpec& spec);
-
-// Rectangles of equal value merged from a grid (rows x columns, -1: not merged), as
-// {row0, column0, row1, column1, value}, inclusive. Greedy: runs along rows, then runs that
-// repeat in the next rows.
-struct GridRect {
-  int64_t row0, column0, row1, column1;
-  int value;
-};
-std::vector<GridRect> merge_runs(const std::vector<int>& grid, int64_t rows, int64_t columns);
 
 }  // namespace curdle

@@ -1,10 +1,17 @@
 #!/usr/bin/env bash
 # End-to-end tests of the `curdle` program: every pattern generates, bad input exits 2 with a
 # message naming what is wrong and leaves no output, threads do not change a byte, and the
-# golden outputs still come out. Usage: CURDLE=path/to/curdle cli_test.sh SOURCE_DIR
+# golden outputs still come out. Each section is its own ctest entry, so that they run side by
+# side. Usage: CURDLE=path/to/curdle cli_test.sh SOURCE_DIR SECTION [ARGUMENT]
+#   sections: pattern RECIPE, bad_recipe RECIPE, bad_options, segments, overrides, threads,
+#             golden, report, search, serve
 set -u
 src=${1:?source dir}
+section=${2:?section}
+argument=${3:-}
 curdle=${CURDLE:?path to curdle}
+fig3="$src/patterns/paper/fig3-two-curds.toml"
+fig7="$src/patterns/paper/fig7-paving-20m.toml"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 passed=0 failed=0
@@ -31,8 +38,9 @@ expect_empty() {
   if [ -n "$(ls -A "$1" 2>/dev/null)" ]; then fail "$2 left files: $(ls -A "$1")"; else pass; fi
 }
 
-# 1. Every pattern loads and generates all outputs.
-while IFS= read -r recipe; do
+# A pattern loads and generates all outputs.
+section_pattern() {
+  local recipe=$1 f
   out="$work/patterns/$(basename "$recipe" .toml)"
   expect 0 "outputs in" generate "$recipe" --out "$out"
   for f in report.json cells.csv preview.png; do
@@ -49,19 +57,22 @@ while IFS= read -r recipe; do
       for f in "$out"/sheets/*.svg; do xmllint --noout "$f" && pass || fail "$f does not parse"; done
     fi
   fi
-done < <(find "$src/patterns" -name '*.toml' | sort)
+}
 
-# 2. Every bad recipe exits 2, names the file and what is allowed, and writes nothing.
-for recipe in "$src"/tests/bad_recipes/*.toml; do
+# A bad recipe exits 2, names the file and what is allowed (its "# expect:" line), and writes
+# nothing.
+section_bad_recipe() {
+  local recipe=$1
   want=$(sed -n 's/^# expect: //p' "$recipe")
+  [ -n "$want" ] && pass || fail "$recipe has no '# expect:' line"
   out="$work/bad/$(basename "$recipe" .toml)"
   expect 2 "$want" generate "$recipe" --out "$out"
   grep -qF "$(basename "$recipe")" "$work/stderr" && pass || fail "$recipe: message does not name the file"
   expect_empty "$out" "$recipe"
-done
+}
 
-# 3. Bad command lines exit 2 with a message and no output.
-fig3="$src/patterns/paper/fig3-two-curds.toml"
+# Bad command lines exit 2 with a message naming the option, and no output.
+section_bad_options() {
 o="$work/badcli"
 expect 2 "cannot read the recipe" generate "$work/missing.toml" --out "$o"
 expect 2 "X,Y,W,H" generate "$fig3" --window 1,2,3 --out "$o"
@@ -89,9 +100,10 @@ expect 2 "cannot create the output directory" generate "$fig3" --out "$work/a-fi
 mkdir -p "$work/blocked/cells.csv"
 expect 2 "cannot write" generate "$fig3" --out "$work/blocked"
 [ "$(ls -A "$work/blocked")" = "cells.csv" ] && pass || fail "blocked run left: $(ls -A "$work/blocked" | tr '\n' ' ')"
+}
 
 # A fixed floor is laid from a segment of exactly its own size, never from a part of it.
-fig7="$src/patterns/paper/fig7-paving-20m.toml"
+section_segments() {
 expect 2 "takes exactly 67 x 67 cells" generate "$fig7" --window 10,10,20,20 --out "$work/win-floor"
 [ ! -e "$work/win-floor/layout.svg" ] && pass || fail "a refused window left layout.svg"
 expect 2 "make it at least that large" generate "$fig7" --set 'field.cells=[60,80]' --out "$work/win-floor"
@@ -101,20 +113,25 @@ expect 0 "outputs in" generate "$fig7" --set 'field.cells=[256,256]' --outputs s
 cmp -s "$work/floor-plain/schedule.csv" "$work/floor-seg0/schedule.csv" && pass || fail "the segment at the origin differs from the floor"
 expect 0 "layout: 4489 paving tiles" generate "$fig7" --set 'field.cells=[256,256]' --window 100,40,67,67 --out "$work/floor-seg"
 grep -q '^P-R00-C00,1,0,0,0.0,0.0,' "$work/floor-seg/schedule.csv" && pass || fail "a segment's floor does not start at its own origin"
+}
 
-# 4. Overrides and windows.
+# Overrides and windows.
+section_overrides() {
 expect 0 "outputs in" generate "$fig3" --set lattice.mode=exact \
   --set 'curds.0.probabilities=["3/4","1/2"]' --set 'curds.1.probabilities=["1/2","1/2"]' --out "$work/set"
 grep -q '"mode": "exact"' "$work/set/report.json" && pass || fail "--set lattice.mode not applied"
 expect 0 "outputs in" generate "$fig3" --window 4,2,8,10 --out "$work/win"
 [ "$(wc -l < "$work/win/cells.csv")" -eq 81 ] && pass || fail "window cells.csv should have 80 rows"
 # The window's rows are the same as the whole curd's rows for those cells.
+expect 0 "outputs in" generate "$fig3" --outputs cells.csv --out "$work/patterns/fig3-two-curds"
 awk -F, 'NR > 1 && $1 >= 4 && $1 < 12 && $2 >= 2 && $2 < 12' "$work/patterns/fig3-two-curds/cells.csv" \
   | sort > "$work/whole-part.csv"
 tail -n +2 "$work/win/cells.csv" | sort > "$work/win-part.csv"
 cmp -s "$work/whole-part.csv" "$work/win-part.csv" && pass || fail "window differs from the whole curd"
+}
 
-# 5. One and two threads give byte-identical outputs (2^22 cells, split between threads).
+# One and two threads give byte-identical outputs (2^22 cells, split between threads).
+section_threads() {
 big="$work/big.toml"
 cat > "$big" <<'TOML'
 name = "threads"
@@ -133,27 +150,37 @@ expect 0 "outputs in" generate "$big" --threads 2 --out "$work/t2" --outputs rep
 for f in report.json cells.csv preview.png; do
   cmp -s "$work/t1/$f" "$work/t2/$f" && pass || fail "$f differs between 1 and 2 threads"
 done
+}
 
-# 6. Golden outputs lock the random stream layout.
+# Golden outputs lock the random stream layout.
+section_golden() {
 expect 0 "outputs in" generate "$fig3" --seed 3 --out "$work/golden" --outputs cells.csv
 cmp -s "$work/golden/cells.csv" "$src/tests/golden/fig3-seed3-cells.csv" && pass \
   || fail "fig3 seed 3 cells.csv differs from tests/golden (the stream layout changed?)"
 expect 0 "outputs in" generate "$src/patterns/paper/fig7-three-stages.toml" --seed 7 --out "$work/golden7" --outputs cells.csv
 cmp -s "$work/golden7/cells.csv" "$src/tests/golden/fig7-three-stages-seed7-cells.csv" && pass \
   || fail "fig7 seed 7 cells.csv differs from tests/golden"
+}
 
-# 7. The report command, and cells.csv skipped by default above 10 million cells.
+# The report command, and cells.csv skipped by default above 10 million cells (a recipe
+# without a layout, so that nothing else is large).
+section_report() {
 expect 0 "box dimension: fit" report "$fig3" --seed 3
 grep -q "survivors" "$work/stdout" && pass || fail "report table lacks its header"
-expect 0 "outputs in" generate "$fig3" --set 'field.cells=[3200,3200]' --out "$work/huge" --outputs report.json,preview.png,cells.csv
+plain="$src/patterns/paper/fig6-decreasing.toml"
+grep -q '^\[layout\]' "$plain" && fail "$plain has a layout"
+expect 0 "outputs in" generate "$plain" --set 'field.cells=[3200,3200]' --out "$work/huge" --outputs report.json,cells.csv
 [ -f "$work/huge/cells.csv" ] && pass || fail "named cells.csv should be written even when large"
-expect 0 "cells.csv skipped" generate "$fig3" --set 'field.cells=[3200,3200]' --out "$work/huge2"
+expect 0 "cells.csv skipped" generate "$plain" --set 'field.cells=[3200,3200]' --out "$work/huge2"
 [ ! -f "$work/huge2/cells.csv" ] && pass || fail "cells.csv should be skipped above 10 million cells"
+[ -f "$work/huge2/preview.png" ] && pass || fail "the other outputs should still be written"
 # Progress goes to a terminal only: not into this pipe.
 grep -q "%" "$work/stderr" && fail "progress printed into a pipe" || pass
+}
 
-# 8. Search: ranked seeds and segments, their previews and search.csv; the command printed for
+# Search: ranked seeds and segments, their previews and search.csv; the command printed for
 # the best one reproduces its segment, whose report gives the measured ratio.
+section_search() {
 expect 0 "rank" search "$fig7" --set 'field.cells=[256,256]' --seeds 1..40 --top 3 \
   --target ratio:dark=0.111 --target 'cluster:dark<=6' --target 'empty=0,0,10,10' --out "$work/search"
 [ "$(ls "$work/search" | grep -c '^rank-0[1-3]-seed-.*\.png$')" = 3 ] && pass || fail "search previews: $(ls "$work/search")"
@@ -172,8 +199,10 @@ expect 2 "not a range of seeds" search "$fig7" --seeds 9..1 --out "$work/search-
 expect 2 "must fit in the view" search "$fig7" --seeds 1..5 --window 100,100 --out "$work/search-bad"
 expect 2 "inside the segment" search "$fig7" --seeds 1..5 --target 'empty=60,60,10,10' --out "$work/search-bad"
 [ ! -e "$work/search-bad" ] && pass || fail "a refused search left $work/search-bad"
+}
 
-# 9. Serve: bad recipes, a busy port and missing page files exit 2; SIGINT stops it cleanly.
+# Serve: bad recipes, a busy port and missing page files exit 2; SIGINT stops it cleanly.
+section_serve() {
 expect 2 "cannot read the recipe" serve "$work/no-such-recipe.toml" --port 0
 expect 2 "index.html missing" serve "$fig3" --port 0 --web-root "$work"
 "$curdle" serve "$fig3" --port 0 > "$work/serve.out" 2>&1 &
@@ -190,6 +219,12 @@ else
   wait "$serve_pid" && pass || fail "serve exited $? on SIGINT"
 fi
 grep -q "curdle: stopped" "$work/serve.out" && pass || fail "serve did not say it stopped"
+}
 
-echo "cli: $passed passed, $failed failed"
+if ! declare -F "section_$section" > /dev/null; then
+  echo "unknown section '$section'" >&2
+  exit 2
+fi
+"section_$section" $argument
+echo "cli $section: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -145,18 +145,25 @@ TEST(Preview, StripsAndSheetsAndLargeFields) {
   EXPECT_EQ(preview_memory(big, big.field), uint64_t(down.width) * down.height * 19);
 }
 
-TEST(Preview, WritesAPngThatReadsBack) {
+// Encoded through the image module, read back with OpenImageIO directly.
+TEST(Preview, EncodesAPngThatReadsBackWithItsResolution) {
   const fs::path dir = temp_dir("png");
   Design d = design(4, 2, {{"3/4", "2/3"}});
   const PreviewImage img = render_preview(d, curdle(d, 3, d.field), d.field);
-  write_png(dir / "p.png", img);
+  write_file(dir / "p.png", [&](std::ostream& o) { o << encode_png(img, 300); });
   auto in = OIIO::ImageInput::open((dir / "p.png").string());
   ASSERT_TRUE(in);
   EXPECT_EQ(in->spec().width, img.width);
   EXPECT_EQ(in->spec().nchannels, 3);
+  EXPECT_NEAR(in->spec().get_float_attribute("XResolution"), 300, 1e-3);
   std::vector<uint8_t> back(img.rgb.size());
   ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, back.data()));
   EXPECT_EQ(back, img.rgb);
+  const LuminanceImage grey = read_luminance(dir / "p.png");
+  ASSERT_EQ(grey.width, img.width);
+  EXPECT_NEAR(grey.luminance[0],
+              (0.2126f * img.rgb[0] + 0.7152f * img.rgb[1] + 0.0722f * img.rgb[2]) / 255, 1e-3);
+  EXPECT_THROW(read_luminance(dir / "missing.png"), std::runtime_error);
   fs::remove_all(dir);
 }
 

@@ -92,8 +92,18 @@ TEST(Recipe, ExactModeNeedsWholeCounts) {
 
 TEST(Recipe, OverrideErrorsNameTheOverride) {
   const std::string e = error_of(kGood, {"lattice.base=99"});
-  EXPECT_NE(e.find("--set lattice.base"), std::string::npos) << e;
+  EXPECT_NE(e.find("set lattice.base: must be"), std::string::npos) << e;
   EXPECT_NE(e.find("from 2 to 64"), std::string::npos) << e;
+  // Each shell names the override its own way: the command line's option, the API's key.
+  try {
+    parse_recipe(kGood, "good.toml", {"lattice.base=99"});
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_EQ(render_error(error, [](const std::string& p) { return "--" + p; }),
+              "--set lattice.base: must be a whole number from 2 to 64");
+    EXPECT_EQ(render_error(error, [](const std::string&) { return std::string(); }),
+              "key 'lattice.base': must be a whole number from 2 to 64");
+  }
   EXPECT_NE(error_of(kGood, {"curds.5.name=x"}).find("out of range"), std::string::npos);
 }
 

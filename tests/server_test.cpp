@@ -12,8 +12,9 @@
 #include <sstream>
 #include <thread>
 
-#include "cli/generate.h"
-#include "cli/session.h"
+#include "app/outputs.h"
+#include "app/reproduce.h"
+#include "app/run.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
 #include "curdle/overlay.h"
@@ -90,20 +91,33 @@ class ServerTest : public ::testing::Test {
     return json::parse(r->body);
   }
   // The CLI's file for the same recipe, seed, overrides and window.
-  std::string cli_file(const std::string& name, const std::string& seed, const std::string& window,
-                       const std::vector<std::string>& sets = {}) {
-    cli::CommonOptions o;
-    o.recipe_path = kRecipe;
-    o.seed = seed;
-    o.window = window;
-    o.sets = sets;
-    cli::Session s = cli::open_session(o);
+  static app::Run open_run(const std::string& path, const std::string& seed = "",
+                           const std::string& window = "",
+                           const std::vector<std::string>& sets = {}) {
+    app::RunRequest request;
+    request.recipe_path = path;
+    request.recipe_text = app::read_recipe_file(path);
+    request.seed = seed;
+    request.window = window;
+    request.overrides = sets;
+    return app::resolve_run(request);
+  }
+  // The file the command line writes (through a staging directory) for the same run.
+  static std::string written_file(const app::Run& run, const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / ("curdle-server-test-" + name);
     fs::remove_all(dir);
-    cli::write_outputs(s, dir, {name}, 0, nullptr);
+    {
+      app::StagingDirectory sink(dir);
+      app::write_outputs(run, app::select_outputs(run, {name}, nullptr), sink, 0, nullptr);
+      sink.commit();
+    }
     std::string bytes = slurp(dir / name);
     fs::remove_all(dir);
     return bytes;
+  }
+  std::string cli_file(const std::string& name, const std::string& seed, const std::string& window,
+                       const std::vector<std::string>& sets = {}) {
+    return written_file(open_run(kRecipe, seed, window, sets), name);
   }
 
   static Server* server_;
@@ -122,19 +136,26 @@ TEST_F(ServerTest, RecipeDescribesTheDesignAndTheFloor) {
   EXPECT_EQ(j["default_window"], json({0, 0, 67, 67}));
   EXPECT_EQ(j["curds"][0]["probabilities"], json({"2/3", "1/2", "1/3"}));
   EXPECT_EQ(j["legend"].size(), 2u);
+  // The downloads come from the registry of outputs: every single file, and the recipe.
+  EXPECT_EQ(j["downloads"],
+            json({"report.json", "cells.csv", "preview.png", "layout.svg", "layout.png",
+                  "layout.glb", "schedule.csv", "quantities.csv", "install.svg", "recipe.toml"}));
+  EXPECT_EQ(j["seed"], "8");  // the recipe's, as a string
+}
+
+// New values take the library's blend, which truncates: (255 + 0) / 2 = 127, not 128.
+TEST_F(ServerTest, ColoursAreTheLibrarysBlends) {
+  const json j = get_json("/api/colours?colour=%23ff0000&colour=%230000ff", 200);
+  EXPECT_EQ(j["values"], json({"#ece8de", "#ff0000", "#0000ff", "#7f007f"}));
 }
 
 TEST_F(ServerTest, GenerateGivesTheEnginesCellsAndReport) {
   const json j = get_json("/api/generate?seed=42&curds.0.probabilities=%5B%223%2F4%22,%221%2F2%22,%221%2F3%22%5D", 200);
-  EXPECT_EQ(j["seed"], 42);
+  EXPECT_EQ(j["seed"], "42");  // a string: JavaScript numbers lose seeds above 2^53
   EXPECT_EQ(j["report"]["cells"], 65536);
   const auto bytes = unbase64(j["values"]);
   ASSERT_EQ(bytes.size(), 65536u);
-  cli::CommonOptions o;
-  o.recipe_path = kRecipe;
-  o.seed = "42";
-  o.sets = {"curds.0.probabilities=[\"3/4\",\"1/2\",\"1/3\"]"};
-  const cli::Session s = cli::open_session(o);
+  const app::Run s = open_run(kRecipe, "42", "", {"curds.0.probabilities=[\"3/4\",\"1/2\",\"1/3\"]"});
   const auto& d = s.recipe.design;
   const auto values = values_in(curdle::curdle(d, 42, d.field), d.field);
   EXPECT_TRUE(std::equal(values.begin(), values.end(), bytes.begin()));
@@ -162,17 +183,12 @@ TEST_F(ServerTest, DownloadsAreTheFilesTheCommandLineWrites) {
   ASSERT_TRUE(r);
   const fs::path saved = fs::temp_directory_path() / "curdle-server-test-recipe.toml";
   std::ofstream(saved, std::ios::binary) << r->body;
-  cli::CommonOptions o;
-  o.recipe_path = saved.string();
-  cli::Session s = cli::open_session(o);
+  const app::Run s = open_run(saved.string());
   EXPECT_EQ(s.seed, 5u);
   EXPECT_EQ(s.view.origin[0], 100);
   EXPECT_EQ(s.recipe.design.lattice.mode, Mode::quota);
-  const fs::path dir = fs::temp_directory_path() / "curdle-server-test-from-recipe";
-  fs::remove_all(dir);
-  cli::write_outputs(s, dir, {"schedule.csv"}, 0, nullptr);
-  EXPECT_EQ(slurp(dir / "schedule.csv"), cli_file("schedule.csv", "5", "100,30,67,67", {"lattice.mode=quota"}));
-  fs::remove_all(dir);
+  EXPECT_EQ(written_file(s, "schedule.csv"),
+            cli_file("schedule.csv", "5", "100,30,67,67", {"lattice.mode=quota"}));
   fs::remove(saved);
 }
 
@@ -189,14 +205,18 @@ TEST_F(ServerTest, BadRequestsAreJsonErrorsThatSayWhatIsAllowed) {
       {"/api/generate?lattice.base=1", 400, "from 2 to 64"},
       {"/api/generate?curds.0.probabilities=%5B%221.5%22,%221%22,%221%22%5D", 400, "curds.0.probabilities"},
       {"/api/generate?window=250,250,67,67", 400, "inside the field"},
+      // The API names a parameter by its key, never by a command-line option.
+      {"/api/generate?window=1,2,3", 400, "window=: a 2-D lattice takes a window X,Y,W,H"},
+      {"/api/colours?colour=red", 400, "is not a colour written #rrggbb"},
+      {"/api/colours?shade=%23ffffff", 400, "unknown parameter"},
       {"/api/generate?cells=2", 400, "must be 0 or 1"},
       {"/api/generate?set=lattice.base", 400, "KEY=VALUE"},
       {"/api/generate?field.cells=%5B2048,2048%5D", 413, "the server allows 1048576"},
-      {"/api/export?file=secrets.txt", 400, "allowed: cells.csv"},
+      {"/api/export?file=secrets.txt", 400, "is not a download; allowed: report.json, cells.csv"},
       {"/api/export?file=layout.svg&window=1,1,20,20", 400, "takes exactly 67 x 67 cells"},
       {"/api/search?seeds=5..1", 400, "not a range of seeds"},
       {"/api/search?seeds=1..100000000", 413, "more than the server searches"},
-      {"/api/search?seeds=0..18446744073709551615", 413, "more than the server searches"},
+      {"/api/search?seeds=0..18446744073709551615", 413, "at most 2^40 seeds"},
       {"/api/search?target=size:dark=3", 400, "unknown measure"},
       {"/api/search?seeds=1..3&target=ratio:dark=2", 400, "a ratio is from 0 to 1"},
       {"/api/search?segment=300,300", 400, "must fit in the view"},
@@ -249,9 +269,7 @@ TEST_F(ServerTest, SearchRanksAsTheLibraryDoes) {
       "/api/search?seeds=1..40&segment=67,67&stride=16&top=4&target=ratio:dark%3D0.111&target=cluster:dark%3C%3D8",
       200);
   ASSERT_EQ(j["hits"].size(), 4u);
-  cli::CommonOptions o;
-  o.recipe_path = kRecipe;
-  const cli::Session s = cli::open_session(o);
+  const app::Run s = open_run(kRecipe);
   const Design& d = s.recipe.design;
   SearchSpec spec;
   spec.targets = {parse_target("ratio:dark=0.111", d), parse_target("cluster:dark<=8", d)};
@@ -260,8 +278,8 @@ TEST_F(ServerTest, SearchRanksAsTheLibraryDoes) {
   spec.top = 4;
   const auto hits = search_seeds(d, d.field, spec, 1, 40);
   for (size_t i = 0; i < 4; ++i) {
-    EXPECT_EQ(j["hits"][i]["seed"], hits[i].seed);
-    EXPECT_EQ(j["hits"][i]["window"], cli::window_text(hits[i].segment, 2));
+    EXPECT_EQ(j["hits"][i]["seed"], std::to_string(hits[i].seed));
+    EXPECT_EQ(j["hits"][i]["window"], app::window_text(hits[i].segment, 2));
     EXPECT_DOUBLE_EQ(j["hits"][i]["score"].get<double>(), hits[i].score);
   }
 }

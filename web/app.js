@@ -281,21 +281,24 @@ function resizeCurds() {
     while (c.probabilities.length < stages) c.probabilities.push(c.probabilities[c.probabilities.length - 1] || "1/2");
     c.probabilities.length = stages;
   }
-  // A recipe with a colour per value needs one for every value: new values take the mean of
-  // their curds' colours, as the previews do.
-  if (state.valueColours.length && state.valueColours.length !== 1 << count) {
-    const old = state.valueColours;
-    state.valueColours = Array.from({ length: 1 << count }, (_, v) =>
-      v < old.length ? old[v] : blend(state.curds.filter((c, i) => v >> i & 1).map((c) => c.colour)));
-  }
   renderCurdControls();
   renderPalette();
 }
 
-function blend(colours) {
-  const rgb = colours.map(hexToRgb);
-  const mean = [0, 1, 2].map((k) => Math.round(rgb.reduce((sum, c) => sum + c[k], 0) / rgb.length));
-  return "#" + mean.map((x) => x.toString(16).padStart(2, "0")).join("");
+// A recipe with a colour per value needs one for every value: new values take the blend of
+// their curds' colours as the library makes it (/api/colours), so that the page and the
+// previews agree to the last bit.
+async function fillValueColours() {
+  const count = state.curds.length;
+  if (!state.valueColours.length || state.valueColours.length === 1 << count) return;
+  const p = new URLSearchParams();
+  for (const c of state.curds) p.append("colour", c.colour);
+  const response = await fetch("/api/colours?" + p.toString());
+  const body = await response.json();
+  if (!response.ok) throw new Error(body.error || `HTTP ${response.status}`);
+  const old = state.valueColours;
+  state.valueColours = body.values.map((blended, v) => (v < old.length ? old[v] : blended));
+  renderPalette();
 }
 
 let timer = null;
@@ -534,9 +537,6 @@ function escapeHtml(s) {
   return String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" }[c]));
 }
 
-const kDownloads = ["layout.svg", "layout.png", "layout.glb", "schedule.csv", "quantities.csv",
-                    "install.svg", "report.json", "cells.csv", "preview.png", "recipe.toml"];
-
 function renderExports() {
   const box = $("exports");
   box.textContent = "";
@@ -545,8 +545,8 @@ function renderExports() {
   const own = state.whole && state.whole.default_window;
   $("export-what").textContent = win ? `segment ${win}`
     : own ? `the recipe's segment ${own.join(",")}` : "whole field";
-  for (const name of kDownloads) {
-    if (!hasLayout && /^(layout|schedule|quantities|install)/.test(name)) continue;
+  // The server lists what this recipe can download (its registry of outputs).
+  for (const name of (state.whole || state.recipe).downloads) {
     const a = document.createElement("a");
     a.href = "/api/export?" + query({ file: name, window: win || undefined });
     a.download = name;
@@ -618,7 +618,9 @@ async function runSearch(event) {
         Object.values(hit.measured).map((x) => `<td>${fmt(x, 3)}</td>`).join("") + "</tr>";
     }
     $("search-results").innerHTML = html;
-    $("status").textContent = `searched ${result.seeds[1] - result.seeds[0] + 1} seeds in ${result.server_ms.toFixed(0)} ms`;
+    // Seeds come as strings: JavaScript numbers lose whole numbers above 2^53.
+    const searched = BigInt(result.seeds[1]) - BigInt(result.seeds[0]) + 1n;
+    $("status").textContent = `searched ${searched} seeds in ${result.server_ms.toFixed(0)} ms`;
   } catch (err) {
     showError(err.message);
     $("search-results").innerHTML = "";
@@ -671,7 +673,16 @@ function wireControls() {
   });
   $("mode").addEventListener("change", () => { state.mode = $("mode").value; schedule(); });
   $("stages").addEventListener("change", () => { resizeCurds(); schedule(); });
-  $("curd-count").addEventListener("change", () => { resizeCurds(); schedule(); });
+  $("curd-count").addEventListener("change", async () => {
+    resizeCurds();
+    try {
+      await fillValueColours();
+    } catch (err) {
+      showError(err.message);
+      return;
+    }
+    schedule();
+  });
   for (const id of ["field-w", "field-h"])
     $(id).addEventListener("change", () => {
       state.field[0] = Number($("field-w").value);

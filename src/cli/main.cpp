@@ -5,36 +5,16 @@
 #include <exception>
 #include <filesystem>
 
-#include "cli/generate.h"
+#include "cli/generate_command.h"
+#include "cli/options.h"
 #include "cli/search_command.h"
 #include "cli/serve_command.h"
-#include "cli/session.h"
 #include "curdle/error.h"
-#include "curdle/report.h"
-#include "export/report_table.h"
 
 namespace fs = std::filesystem;
 
 namespace curdle::cli {
 namespace {
-
-int generate(const CommonOptions& common, const std::string& out_dir,
-             const std::vector<std::string>& outputs_named) {
-  Session s = open_session(common);
-  const fs::path dir = out_dir.empty()
-                           ? fs::path("curdle-out") / fs::path(common.recipe_path).stem()
-                           : fs::path(out_dir);
-  write_outputs(s, dir, outputs_named, common.threads, stdout);
-  return 0;
-}
-
-int report(const CommonOptions& common) {
-  const Session s = open_session(common);
-  const CurdField field = run_engine(s, common.threads);
-  std::fputs(format_report_table(make_report(s.recipe.design, s.seed, field, s.view)).c_str(),
-             stdout);
-  return 0;
-}
 
 int run(int argc, char** argv) {
   CLI::App app{
@@ -48,11 +28,7 @@ int run(int argc, char** argv) {
   CLI::App* gen = app.add_subcommand("generate", "Curdle a recipe and write its outputs");
   add_common_options(*gen, gen_options);
   gen->add_option("--out", out_dir, "Output directory (default: curdle-out/<recipe name>)");
-  gen->add_option("--outputs", outputs,
-                  "Which outputs: report.json, cells.csv, preview.png; with a [layout] also "
-                  "layout.svg, layout.png, layout.glb, layout.gltf, schedule.csv, quantities.csv, "
-                  "install.svg, sheets (default: all but layout.gltf)")
-      ->delimiter(',');
+  gen->add_option("--outputs", outputs, outputs_help())->delimiter(',');
   CLI::App* rep = app.add_subcommand("report", "Print the per-stage report of a recipe");
   add_common_options(*rep, report_options);
   SearchOptions search_options;
@@ -84,10 +60,10 @@ int run(int argc, char** argv) {
     app.exit(e);
     return 2;
   }
-  if (gen->parsed()) return generate(gen_options, out_dir, outputs);
+  if (gen->parsed()) return run_generate(gen_options, out_dir, outputs);
   if (find->parsed()) return run_search(search_options);
   if (serve->parsed()) return run_serve(serve_options);
-  return report(report_options);
+  return run_report(report_options);
 }
 
 }  // namespace
@@ -97,7 +73,8 @@ int main(int argc, char** argv) {
   try {
     return curdle::cli::run(argc, argv);
   } catch (const curdle::InputError& e) {
-    std::fprintf(stderr, "curdle: error: %s\n", e.what());
+    std::fprintf(stderr, "curdle: error: %s\n",
+                 curdle::render_error(e, curdle::cli::option_name).c_str());
     return 2;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "curdle: internal error: out of memory\n");

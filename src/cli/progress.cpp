@@ -27,3 +27,25 @@ void Progress::update(double fraction) {
 }
 
 }  // namespace curdle::cli
+
+namespace curdle::cli {
+namespace {
+class ProgressOnTerminal : public app::ProgressTask {
+ public:
+  explicit ProgressOnTerminal(const std::string& what) : progress_(what) {}
+  void update(double fraction) override { progress_.update(fraction); }
+
+ private:
+  Progress progress_;
+};
+}  // namespace
+
+std::unique_ptr<app::ProgressTask> TerminalObserver::begin(const std::string& what) {
+  return std::make_unique<ProgressOnTerminal>(what);
+}
+
+void TerminalObserver::note(const std::string& text) {
+  std::fprintf(stderr, "note: %s\n", text.c_str());
+}
+
+}  // namespace curdle::cli

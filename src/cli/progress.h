@@ -22,3 +22,16 @@ class Progress {
 };
 
 }  // namespace curdle::cli
+
+#include "app/observer.h"
+
+namespace curdle::cli {
+
+// A run's progress and notes on the terminal (notes on standard error).
+class TerminalObserver : public app::RunObserver {
+ public:
+  std::unique_ptr<app::ProgressTask> begin(const std::string& what) override;
+  void note(const std::string& text) override;
+};
+
+}  // namespace curdle::cli

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <thread>
 
-#include "cli/session.h"
+#include "app/run.h"
 #include "curdle/error.h"
 #include "server/server.h"
 
@@ -55,13 +55,15 @@ int run_serve(const ServeOptions& o) {
   config.web_root = web_root;
   config.workers = o.workers;
   config.api.recipe_path = recipe_path;
-  config.api.recipe_text = read_recipe_file(recipe_path);
+  config.api.recipe_text = app::read_recipe_file(recipe_path);
   config.api.limits.max_cells = o.max_cells;
-  if (!o.max_memory.empty()) config.api.limits.max_memory = parse_bytes(o.max_memory, "--max-memory");
+  if (!o.max_memory.empty())
+    config.api.limits.max_memory = app::parse_bytes(o.max_memory, "max_memory");
   // The recipe must be good before the page is offered.
-  CommonOptions check;
+  app::RunRequest check;
   check.recipe_path = recipe_path;
-  make_session(config.api.recipe_text, check);
+  check.recipe_text = config.api.recipe_text;
+  app::resolve_run(check);
 
   // Ctrl-C and SIGTERM are taken by one thread, which stops the server; every other thread
   // (including httplib's and TBB's) inherits the blocked mask.

@@ -505,7 +505,7 @@ void curdle_into(const Design& design, uint64_t seed, const Box& view, CurdField
   if (options.max_memory_bytes != 0) {
     const uint64_t need = estimate_memory(design, box);
     if (need > options.max_memory_bytes)
-      throw InputError(
+      throw ResourceLimitError(
           "generating " + std::to_string(box.cells()) + " cells x " +
           std::to_string(design.curds.size()) + " curds needs about " + human_bytes(need) +
           ", above the memory limit of " + human_bytes(options.max_memory_bytes) +

@@ -1,50 +1,56 @@
-// User-facing errors. Bad input is an InputError carrying where it came from (file, line,
-// column, key) and what is allowed; programmer mistakes are assertions. `main` turns
-// InputError into exit code 2 and anything else into exit code 1.
+// User-facing errors. Bad input is an InputError carrying where it came from (recipe file, line,
+// column and key, or a run parameter) and what is allowed; programmer mistakes are assertions.
+//
+// The core names run parameters neutrally ("window", "seed", "max_memory"); each shell renders
+// them in its own words (`--window` on the command line, `window=` in the API) through
+// render_error. A resource limit is its own type: exit 2 on the command line, HTTP 413 in the API.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 
 namespace curdle {
 
 struct SourceLocation {
-  std::string file;  // recipe path, or "--set", or "command line"
+  std::string file;  // recipe path; empty for a run parameter
   int line = 0;      // 1-based; 0 when unknown
   int column = 0;
-  std::string key;  // dotted key path, e.g. "curds.0.probabilities"
+  std::string key;        // dotted recipe key, e.g. "curds.0.probabilities"
+  std::string parameter;  // neutral run parameter: "window", "seed", "set" (an override), ...
 };
+
+// Where a run parameter's value was wrong.
+inline SourceLocation parameter(std::string name, std::string key = {}) {
+  SourceLocation where;
+  where.parameter = std::move(name);
+  where.key = std::move(key);
+  return where;
+}
 
 class InputError : public std::runtime_error {
  public:
-  InputError(SourceLocation where, const std::string& what)
-      : std::runtime_error(format(where, what)), where_(std::move(where)) {}
-  explicit InputError(const std::string& what) : std::runtime_error(what) {}
+  InputError(SourceLocation where, const std::string& message);
+  explicit InputError(const std::string& message);
 
   const SourceLocation& where() const { return where_; }
+  const std::string& message() const { return message_; }  // without the location
 
  private:
-  // Built by appending: GCC 12 warns falsely (-Wrestrict) on chains of string concatenation.
-  static std::string format(const SourceLocation& w, const std::string& what) {
-    std::string s = w.file;
-    if (w.line > 0) {
-      s += ':';
-      s += std::to_string(w.line);
-      s += ':';
-      s += std::to_string(w.column);
-    }
-    if (!w.key.empty()) {
-      if (!s.empty()) s += ": ";
-      s += "key '";
-      s += w.key;
-      s += '\'';
-    }
-    if (s.empty()) return what;
-    s += ": ";
-    s += what;
-    return s;
-  }
   SourceLocation where_;
+  std::string message_;
 };
+
+// A request above a limit (memory, cells, seeds, work): what is allowed and how to raise it.
+class ResourceLimitError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+// How a shell spells a run parameter: "--window" or "window=".
+using ParameterNames = std::function<std::string(const std::string& parameter)>;
+
+// "file:line:column: key 'k': message", with a parameter spelt by `names` (neutral: as is).
+std::string render_error(const InputError& error, const ParameterNames& names = {});
 
 }  // namespace curdle

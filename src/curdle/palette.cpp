@@ -1,5 +1,7 @@
 #include "curdle/palette.h"
 
+#include <charconv>
+
 #include <array>
 #include <cstdio>
 
@@ -41,6 +43,14 @@ std::string hex_colour(const Rgb& c) {
   char text[8];
   std::snprintf(text, sizeof text, "#%02x%02x%02x", c.r, c.g, c.b);
   return text;
+}
+
+std::optional<Rgb> parse_hex_colour(std::string_view s) {
+  if (s.size() != 7 || s[0] != '#') return std::nullopt;
+  unsigned v = 0;
+  auto [p, ec] = std::from_chars(s.data() + 1, s.data() + 7, v, 16);
+  if (ec != std::errc() || p != s.data() + 7) return std::nullopt;
+  return Rgb{static_cast<uint8_t>(v >> 16), static_cast<uint8_t>(v >> 8), static_cast<uint8_t>(v)};
 }
 
 }  // namespace curdle

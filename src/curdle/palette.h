@@ -2,6 +2,9 @@
 // several curds survive takes their mean (the paper's a + b = c: red and blue give purple).
 #pragma once
 
+#include <optional>
+#include <string_view>
+
 #include <string>
 #include <vector>
 
@@ -17,6 +20,8 @@ std::vector<Rgb> value_colours(const std::vector<CurdSpec>& curds);
 
 // "#rrggbb", as recipes, SVG and CSV write colours.
 std::string hex_colour(const Rgb& colour);
+// "#rrggbb", or nothing when the text is not one.
+std::optional<Rgb> parse_hex_colour(std::string_view text);
 
 inline constexpr Rgb kEmptyColour{236, 232, 222};
 

@@ -26,7 +26,7 @@ const char* const kTargetSyntax =
 
 namespace {
 
-const SourceLocation kWhere{"--target", 0, 0, ""};
+const SourceLocation kWhere = parameter("target");
 
 [[noreturn]] void fail(const std::string& text, const std::string& why) {
   std::string message = "'";
@@ -279,19 +279,19 @@ double measure(const Target& t, SegmentMeasures& m, const Design& d, const Box& 
 }
 
 void check_search(const Design& d, const Box& view, const SearchSpec& spec) {
-  const SourceLocation where{"search", 0, 0, ""};
+  const SourceLocation where;
   if (d.lattice.dimension > 2)
     throw InputError(where, "search works on 1-D and 2-D lattices; this one is 3-D");
   if (spec.top < 1 || spec.top > 1000)
-    throw InputError(SourceLocation{"--top", 0, 0, ""}, "must be from 1 to 1000");
-  if (spec.stride < 0) throw InputError(SourceLocation{"--stride", 0, 0, ""}, "must be 1 or more");
+    throw InputError(parameter("top"), "must be from 1 to 1000");
+  if (spec.stride < 0) throw InputError(parameter("stride"), "must be 1 or more");
   if (spec.lacunarity_box < 0)
-    throw InputError(SourceLocation{"--lacunarity-box", 0, 0, ""}, "must be 1 or more cells");
+    throw InputError(parameter("lacunarity_box"), "must be 1 or more cells");
   std::array<int64_t, 2> size{view.size[0], d.lattice.dimension == 2 ? view.size[1] : 1};
   if (spec.window) {
     const auto& w = *spec.window;
     if (w[0] < 1 || w[1] < 1 || w[0] > size[0] || w[1] > size[1])
-      throw InputError(SourceLocation{"--window", 0, 0, ""},
+      throw InputError(parameter("segment"),
                        "a segment of " + std::to_string(w[0]) + " x " + std::to_string(w[1]) +
                            " cells must fit in the view of " + std::to_string(size[0]) + " x " +
                            std::to_string(size[1]) + " cells");
@@ -300,7 +300,7 @@ void check_search(const Design& d, const Box& view, const SearchSpec& spec) {
   for (const Target& t : spec.targets)
     if (t.measure == Measure::empty &&
         (t.zone.origin[0] + t.zone.size[0] > size[0] || t.zone.origin[1] + t.zone.size[1] > size[1]))
-      throw InputError(SourceLocation{"--target", 0, 0, ""},
+      throw InputError(parameter("target"),
                        "'" + t.text + "': the zone must lie inside the segment of " +
                            std::to_string(size[0]) + " x " + std::to_string(size[1]) + " cells");
 }
@@ -311,7 +311,7 @@ std::vector<SearchHit> search_seeds(const Design& d, const Box& view, const Sear
                                     const std::atomic<bool>* cancel) {
   check_search(d, view, spec_in);
   if (last < first || last - first == UINT64_MAX)
-    throw InputError(SourceLocation{"--seeds", 0, 0, ""},
+    throw InputError(parameter("seeds"),
                      "a range of seeds runs from its first to its last, and holds fewer than 2^64");
   SearchSpec spec = spec_in;
   if (spec.targets.empty()) spec.targets = default_targets(d);

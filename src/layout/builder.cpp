@@ -112,7 +112,7 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
                        "leave out the layout's size and give field.cells instead");
   }
   if (spec.kind == LayoutKind::blocks) return stack_blocks(design, field, view, spec);
-  const int dimension = spec.kind == LayoutKind::rhythm ? 1 : 2;
+  const int dimension = layout_dimension(spec.kind);
   if (design.lattice.dimension != dimension)
     throw InputError("this layout needs a " + std::to_string(dimension) + "-D lattice, not " +
                      std::to_string(design.lattice.dimension) + "-D");

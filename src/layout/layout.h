@@ -29,6 +29,11 @@ std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes);
 
 enum class LayoutKind { tile, paving, facade, perforation, park, rhythm, blocks };
 
+// The lattice dimension a kind lays out: rhythm a line (1-D), blocks voxels (3-D), the rest 2-D.
+constexpr int layout_dimension(LayoutKind kind) {
+  return kind == LayoutKind::rhythm ? 1 : kind == LayoutKind::blocks ? 3 : 2;
+}
+
 struct Circle {
   double cx = 0, cy = 0, d = 0;
   double area() const { return 3.14159265358979323846 * d * d / 4; }

@@ -10,9 +10,10 @@
 #include <set>
 #include <sstream>
 
-#include "cli/generate.h"
-#include "cli/search_command.h"
-#include "cli/session.h"
+#include "app/outputs.h"
+#include "app/reproduce.h"
+#include "app/run.h"
+#include "app/search_run.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
 #include "curdle/overlay.h"
@@ -27,15 +28,19 @@ using nlohmann::ordered_json;
 namespace curdle::server {
 namespace {
 
-// A request over a limit: 413, with what is allowed.
-struct TooLarge : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+// The files the page may download: the registry's single-file outputs, and the recipe.
+std::vector<std::string> downloads() {
+  std::vector<std::string> names;
+  for (const app::Output& o : app::output_registry())
+    if (o.download) names.push_back(o.name);
+  names.push_back("recipe.toml");
+  return names;
+}
 
-const std::set<std::string> kDownloads = {"report.json",  "cells.csv",      "preview.png",
-                                          "layout.svg",   "layout.png",     "layout.glb",
-                                          "schedule.csv", "quantities.csv", "install.svg",
-                                          "recipe.toml"};
+// The API spells a run parameter as its query key; an override is named by its recipe key.
+std::string query_key(const std::string& parameter) {
+  return parameter == "set" ? std::string() : parameter + "=";
+}
 
 std::string base64(const uint8_t* data, size_t size) {
   static const char* kAlphabet =
@@ -62,12 +67,12 @@ struct RunRequest {
 
 RunRequest read_run(const Params& params, const std::set<std::string>& own_names) {
   if (params.size() > 256)
-    throw TooLarge("too many parameters (" + std::to_string(params.size()) + "); at most 256");
+    throw ResourceLimitError("too many parameters (" + std::to_string(params.size()) + "); at most 256");
   RunRequest r;
   for (const auto& [key, value] : params) {
     if (key == "set") {
       if (value.find('=') == std::string::npos)
-        throw InputError(SourceLocation{"set", 0, 0, ""},
+        throw InputError(parameter("set"),
                          "'" + value + "' is not KEY=VALUE, e.g. set=lattice.base=3");
       r.sets.push_back(value);
     } else if (key.find('.') != std::string::npos) {
@@ -81,8 +86,7 @@ RunRequest read_run(const Params& params, const std::set<std::string>& own_names
     } else {
       std::string allowed = "seed, window, set";
       for (const auto& n : own_names) allowed += ", " + n;
-      throw InputError(SourceLocation{key, 0, 0, ""},
-                       "unknown parameter; allowed: " + allowed +
+      throw InputError(parameter(key), "unknown parameter; allowed: " + allowed +
                            ", and recipe keys such as lattice.base=3 or curds.0.probabilities=[\"1/2\",\"1/2\"]");
     }
   }
@@ -94,26 +98,31 @@ std::string own(const RunRequest& r, const std::string& name, const std::string&
   return it == r.own.end() ? fallback : it->second.back();
 }
 
+// A quarter of physical memory (the default limit is half of it) for one request.
 uint64_t memory_limit(const ApiContext& c) {
-  return c.limits.max_memory ? c.limits.max_memory : cli::default_memory_limit() / 4;
+  return c.limits.max_memory ? c.limits.max_memory : app::default_memory_limit() / 2;
 }
 
-cli::Session session_for(const ApiContext& c, const RunRequest& r) {
-  cli::CommonOptions o;
-  o.recipe_path = c.recipe_path;
-  o.seed = r.seed;
-  o.sets = r.sets;
-  o.window = r.window;
-  cli::Session s = cli::make_session(c.recipe_text, o);
-  s.generate.max_memory_bytes = memory_limit(c);
-  s.generate.memory_limit_hint = "start the server with a larger --max-memory";
-  return s;
+app::RunRequest run_request(const ApiContext& c, const RunRequest& r) {
+  app::RunRequest request;
+  request.recipe_path = c.recipe_path;
+  request.recipe_text = c.recipe_text;
+  request.seed = r.seed;
+  request.overrides = r.sets;
+  request.window = r.window;
+  request.max_memory = memory_limit(c);
+  request.memory_limit_hint = "start the server with a larger --max-memory";
+  return request;
+}
+
+app::Run run_for(const ApiContext& c, const RunRequest& r) {
+  return app::resolve_run(run_request(c, r));
 }
 
 void check_cells(const Design& d, const Box& view, uint64_t limit, const char* what) {
   const uint64_t cells = generation_box(d, view).cells();
   if (cells > limit)
-    throw TooLarge(std::string(what) + " " + std::to_string(cells) + " cells; the server allows " +
+    throw ResourceLimitError(std::string(what) + " " + std::to_string(cells) + " cells; the server allows " +
                    std::to_string(limit) +
                    ": choose a smaller field.cells or window, or start it with a larger "
                    "--max-cells");
@@ -127,7 +136,7 @@ ordered_json box_json(const Box& b, int dimension) {
 }
 
 // What the page draws and edits: the design, layout facts and the legend.
-ordered_json describe(const cli::Session& s) {
+ordered_json describe(const app::Run& s) {
   const Design& d = s.recipe.design;
   const int E = d.lattice.dimension;
   ordered_json j;
@@ -171,6 +180,12 @@ ordered_json describe(const cli::Session& s) {
     j["layout"] = nullptr;
   }
   j["legend"] = legend;
+  // What this recipe can download, from the registry: the page lists no names of its own.
+  ordered_json files = ordered_json::array();
+  for (const app::Output& o : app::output_registry())
+    if (o.download && (!o.needs_layout || s.recipe.layout)) files.push_back(o.name);
+  files.push_back("recipe.toml");
+  j["downloads"] = files;
   return j;
 }
 
@@ -184,36 +199,15 @@ template <class F>
 ApiResponse guarded(F&& f) {
   try {
     return f();
-  } catch (const TooLarge& e) {
-    return api_error(413, e.what());
+  } catch (const ResourceLimitError& e) {
+    return api_error(413, render_error(e, query_key));
   } catch (const InputError& e) {
-    return api_error(400, e.what());
+    return api_error(400, render_error(e, query_key));
   } catch (const std::bad_alloc&) {
     return api_error(507, "out of memory; try a smaller field or window");
   } catch (const std::exception& e) {
     return api_error(500, std::string("internal error: ") + e.what());
   }
-}
-
-// A fresh private directory for one download, removed when done.
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    std::string pattern = (fs::temp_directory_path() / "curdle-serve-XXXXXX").string();
-    if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot make a temporary directory");
-    path = pattern;
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 const char* content_type(const std::string& name) {
@@ -238,9 +232,9 @@ ApiResponse api_error(int status, const std::string& message) {
 
 ApiResponse api_recipe(const ApiContext& c) {
   return guarded([&] {
-    const cli::Session s = session_for(c, RunRequest{});
+    const app::Run s = run_for(c, RunRequest{});
     ordered_json j = describe(s);
-    j["seed"] = s.seed;
+    j["seed"] = std::to_string(s.seed);
     j["recipe_toml"] = c.recipe_text;
     return json_response(j);
   });
@@ -252,8 +246,8 @@ ApiResponse api_generate(const ApiContext& c, const Params& params) {
     const RunRequest r = read_run(params, {"cells"});
     const std::string cells = own(r, "cells", "1");
     if (cells != "0" && cells != "1")
-      throw InputError(SourceLocation{"cells", 0, 0, ""}, "must be 0 or 1");
-    cli::Session s = session_for(c, r);
+      throw InputError(parameter("cells"), "must be 0 or 1");
+    const app::Run s = run_for(c, r);
     const Design& d = s.recipe.design;
     const int E = d.lattice.dimension;
     // The page sees the whole field unless it asks for a window.
@@ -262,7 +256,7 @@ ApiResponse api_generate(const ApiContext& c, const Params& params) {
     const CurdField field = curdle(d, s.seed, view, s.generate);
     const Report report = make_report(d, s.seed, field, view);
     ordered_json j = describe(s);
-    j["seed"] = s.seed;
+    j["seed"] = std::to_string(s.seed);
     j["view"] = box_json(view, E);
     j["report"] = report_to_json(report);
     if (cells == "1" && E <= 2) {
@@ -276,9 +270,7 @@ ApiResponse api_generate(const ApiContext& c, const Params& params) {
         j["value_bytes"] = 2;
       }
     }
-    const std::optional<Box> window =
-        r.window.empty() ? std::nullopt : std::optional<Box>(view);
-    j["command"] = cli::generate_command(c.recipe_path, r.sets, s.seed, window, E);
+    j["command"] = app::generate_command(s);
     j["server_ms"] =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return json_response(j);
@@ -289,36 +281,29 @@ ApiResponse api_export(const ApiContext& c, const Params& params) {
   return guarded([&] {
     const RunRequest r = read_run(params, {"file"});
     const std::string name = own(r, "file");
-    if (!kDownloads.count(name)) {
-      std::string allowed;
-      for (const auto& n : kDownloads) allowed += (allowed.empty() ? "" : ", ") + n;
-      throw InputError(SourceLocation{"file", 0, 0, ""},
-                       "'" + name + "' is not a download; allowed: " + allowed);
+    const std::vector<std::string> allowed = downloads();
+    if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
+      std::string list;
+      for (const auto& n : allowed) list += (list.empty() ? "" : ", ") + n;
+      throw InputError(parameter("file"), "'" + name + "' is not a download; allowed: " + list);
     }
-    cli::Session s = session_for(c, r);
+    const app::Run s = run_for(c, r);
     const Design& d = s.recipe.design;
-    const bool layout_file = name != "report.json" && name != "cells.csv" &&
-                             name != "preview.png" && name != "recipe.toml";
+    const app::Output* output = app::find_output(name);
+    const bool layout_file = output && output->needs_layout;
     check_cells(d, s.view, layout_file ? c.limits.max_layout_cells : c.limits.max_cells,
                 layout_file ? "this layout would have" : "this request would generate");
     ApiResponse out;
     out.filename = name;
     out.content_type = content_type(name);
     if (name == "recipe.toml") {
-      // The recipe with every change, the seed and the window written in: it reproduces the
-      // run with no options at all.
-      std::vector<std::string> sets = r.sets;
-      sets.push_back("seed=" + std::to_string(s.seed));
-      if (!r.window.empty() || s.recipe.window) {
-        std::string w = "field.window=[" + cli::window_text(s.view, d.lattice.dimension) + "]";
-        sets.push_back(w);
-      }
-      out.body = recipe_text_with(c.recipe_text, c.recipe_path, sets);
+      out.body = app::reproducing_recipe(s);
       return out;
     }
-    ScratchDir scratch;
-    cli::write_outputs(s, scratch.path, {name}, 0, nullptr);
-    out.body = read_file(scratch.path / name);
+    const auto outputs = app::select_outputs(s, {name}, nullptr);
+    app::MemorySink sink;
+    app::write_outputs(s, outputs, sink, 0, nullptr);
+    out.body = sink.files().at(name);
     return out;
   });
 }
@@ -329,42 +314,66 @@ ApiResponse api_search(const ApiContext& c, const Params& params) {
     RunRequest r = read_run(params, {"seeds", "target", "top", "stride", "segment"});
     // A search's window is a segment size, not a place: take it as `segment`.
     if (!r.window.empty())
-      throw InputError(SourceLocation{"window", 0, 0, ""},
+      throw InputError(parameter("window"),
                        "a search takes segment=W,H (the size of the segments tried), not window");
-    cli::Session s = session_for(c, r);
-    const Design& d = s.recipe.design;
-    const auto [first, last] = cli::parse_seed_range(own(r, "seeds", "1..1000"), "seeds");
     auto integer = [&](const std::string& key, int64_t fallback, int64_t lo, int64_t hi) {
       const std::string text = own(r, key);
       if (text.empty()) return fallback;
       int64_t v = 0;
       auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
       if (ec != std::errc() || p != text.data() + text.size() || v < lo || v > hi)
-        throw InputError(SourceLocation{key, 0, 0, ""},
-                         "must be a whole number from " + std::to_string(lo) + " to " +
-                             std::to_string(hi));
+        throw InputError(parameter(key), "must be a whole number from " + std::to_string(lo) +
+                                             " to " + std::to_string(hi));
       return v;
     };
-    const int top = static_cast<int>(integer("top", 10, 1, 100));
-    const int64_t stride = integer("stride", 0, 1, 1 << 20);
+    app::SearchRequest request;
+    request.run = run_request(c, r);
+    request.seeds = own(r, "seeds", "1..1000");
+    request.segment = own(r, "segment");
+    request.top = static_cast<int>(integer("top", 10, 1, 100));
+    request.stride = integer("stride", 0, 1, 1 << 20);
     const auto targets_it = r.own.find("target");
-    const std::vector<std::string> targets =
-        targets_it == r.own.end() ? std::vector<std::string>{} : targets_it->second;
-    const SearchSpec spec = cli::make_search_spec(s, targets, own(r, "segment"), stride, top, 0);
+    if (targets_it != r.own.end()) request.targets = targets_it->second;
+    const app::SearchRun search = app::resolve_search(request);
+    const Design& d = search.run.recipe.design;
+    const uint64_t first = search.first, last = search.last;
     check_cells(d, d.field, c.limits.max_cells, "each seed would generate");
     // Counted as last - first, which cannot overflow, against the most seeds of this field.
     const uint64_t most = c.limits.max_search_cells / std::max<uint64_t>(1, d.field.cells());
     if (last - first >= most)
-      throw TooLarge("seeds " + std::to_string(first) + " to " + std::to_string(last) + " of " +
-                     std::to_string(d.field.cells()) +
-                     " cells are more than the server searches at once (" + std::to_string(most) +
-                     " seeds of this field); search fewer seeds, or run curdle search");
-    const auto hits = search_seeds(d, d.field, spec, first, last, {}, c.stopping);
-    ordered_json j = cli::search_hits_json(s, r.sets, spec, hits);
-    j["seeds"] = {first, last};
+      throw ResourceLimitError(
+          parameter("seeds"),
+          std::to_string(first) + ".." + std::to_string(last) + " of " +
+              std::to_string(d.field.cells()) +
+              " cells are more than the server searches at once (" + std::to_string(most) +
+              " seeds of this field); search fewer seeds, or run curdle search");
+    const auto hits = app::run_search(search, {}, c.stopping);
+    ordered_json j = app::search_hits_json(search, hits);
+    j["seeds"] = {std::to_string(first), std::to_string(last)};
     j["server_ms"] =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return json_response(j);
+  });
+}
+
+ApiResponse api_colours(const Params& params) {
+  return guarded([&] {
+    std::vector<CurdSpec> curds;
+    for (const auto& [key, value] : params) {
+      if (key != "colour")
+        throw InputError(parameter(key), "unknown parameter; allowed: colour (one per curd)");
+      const auto colour = parse_hex_colour(value);
+      if (!colour)
+        throw InputError(parameter("colour"), "'" + value + "' is not a colour written #rrggbb");
+      CurdSpec curd;
+      curd.colour = colour;
+      curds.push_back(curd);
+    }
+    if (curds.empty() || curds.size() > 8)
+      throw InputError(parameter("colour"), "give from 1 to 8 curd colours");
+    ordered_json values = ordered_json::array();
+    for (const Rgb& c : value_colours(curds)) values.push_back(hex_colour(c));
+    return json_response({{"values", values}});
   });
 }
 

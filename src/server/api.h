@@ -44,6 +44,10 @@ ApiResponse api_export(const ApiContext& context, const Params& params);
 // GET /api/search: seeds=A..B, window=W,H, target (repeatable), top, stride, recipe keys.
 ApiResponse api_search(const ApiContext& context, const Params& params);
 
+// GET /api/colours: colour=#rrggbb once per curd; the colour of every value as the library
+// blends it ({"values": [...]}, value 0 first), so that the page never blends on its own.
+ApiResponse api_colours(const Params& params);
+
 // {"error": message} with an HTTP status.
 ApiResponse api_error(int status, const std::string& message);
 

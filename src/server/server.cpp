@@ -74,6 +74,9 @@ struct Server::Impl {
     http.Get("/api/recipe", [this](const httplib::Request&, httplib::Response& res) {
       reply(res, api_recipe(config.api));
     });
+    http.Get("/api/colours", [this](const httplib::Request& req, httplib::Response& res) {
+      reply(res, api_colours(query_params(req.target)));
+    });
     http.Get("/api/generate", [this](const httplib::Request& req, httplib::Response& res) {
       heavy(res, [&] { return api_generate(config.api, query_params(req.target)); });
     });
@@ -88,7 +91,7 @@ struct Server::Impl {
       const bool get = req.method == "GET";
       reply(res, api_error(get ? 404 : 405,
                            get ? "no such endpoint " + req.path +
-                                     "; the API has /api/recipe, /api/generate, /api/export "
+                                     "; the API has /api/recipe, /api/colours, /api/generate, /api/export "
                                      "and /api/search"
                                : "the API takes GET requests only"));
     };
@@ -130,10 +133,10 @@ int Server::bind(const std::string& host, int port) {
   const int bound = port == 0 ? impl_->http.bind_to_any_port(host)
                               : (impl_->http.bind_to_port(host, port) ? port : -1);
   if (bound <= 0)
-    throw InputError(SourceLocation{"--port", 0, 0, ""},
+    throw InputError(parameter("port"),
                      "cannot listen on " + host + ":" + std::to_string(port) +
-                         " (in use, or not an address of this machine); choose another "
-                         "--port, or 0 for any free port");
+                         " (in use, or not an address of this machine); choose another port, "
+                         "or 0 for any free port");
   return bound;
 }
 

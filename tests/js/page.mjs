@@ -38,7 +38,7 @@ const browser = await chromium.launch({
 try {
   const page = await browser.newPage({ viewport: { width: 1500, height: 1000 }, acceptDownloads: true });
   const pageErrors = [];
-  page.on('pageerror', (e) => pageErrors.push(e.stack || e.message));
+  page.on('pageerror', (e) => { pageErrors.push(e.stack || e.message); console.log('PAGEERROR', e.stack || e.message); });
   await page.goto(url);
   await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
   await page.screenshot({ path: path.join(shots, '1-loaded.png') });

@@ -1,0 +1,80 @@
+#include "export/image.h"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <mutex>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace curdle {
+namespace {
+
+struct ImageModule {
+  EncodePngFn encode_png = nullptr;
+  ReadLuminanceFn read_luminance = nullptr;
+};
+
+// Beside the program (build tree), in ../lib/curdle (installed), or where it was built.
+std::vector<fs::path> candidates() {
+  std::vector<fs::path> paths;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    paths.push_back(exe.parent_path() / CURDLE_IMAGE_MODULE_NAME);
+    paths.push_back(exe.parent_path() / ".." / CURDLE_IMAGE_MODULE_INSTALL_DIR /
+                    CURDLE_IMAGE_MODULE_NAME);
+  }
+  paths.push_back(fs::path(CURDLE_IMAGE_MODULE_BUILD_DIR) / CURDLE_IMAGE_MODULE_NAME);
+  return paths;
+}
+
+const ImageModule& module() {
+  static ImageModule loaded;
+  static std::once_flag once;
+  static std::string failure;
+  std::call_once(once, [] {
+    std::string tried;
+    for (const fs::path& path : candidates()) {
+      std::error_code ec;
+      if (!fs::is_regular_file(path, ec)) {
+        tried += (tried.empty() ? "" : ", ") + path.lexically_normal().string();
+        continue;
+      }
+      void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!handle) {
+        failure = std::string("cannot load the image module: ") + ::dlerror();
+        return;
+      }
+      loaded.encode_png = reinterpret_cast<EncodePngFn>(::dlsym(handle, "curdle_image_encode_png"));
+      loaded.read_luminance =
+          reinterpret_cast<ReadLuminanceFn>(::dlsym(handle, "curdle_image_read_luminance"));
+      if (!loaded.encode_png || !loaded.read_luminance)
+        failure = "the image module " + path.string() + " lacks its entry points";
+      return;
+    }
+    failure = "the image module " CURDLE_IMAGE_MODULE_NAME " is not installed (looked in " +
+              tried + ")";
+  });
+  if (!failure.empty()) throw std::runtime_error(failure);
+  return loaded;
+}
+
+}  // namespace
+
+std::string encode_png(const PreviewImage& image, double dpi) {
+  std::string png, error;
+  if (!module().encode_png(&image, dpi, &png, &error))
+    throw std::runtime_error("cannot encode a PNG: " + error);
+  return png;
+}
+
+LuminanceImage read_luminance(const fs::path& path) {
+  LuminanceImage image;
+  std::string error;
+  if (!module().read_luminance(path.c_str(), &image, &error)) throw std::runtime_error(error);
+  return image;
+}
+
+}  // namespace curdle

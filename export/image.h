@@ -1,0 +1,36 @@
+// Images in and out: PNG encoding and reading any image OpenImageIO reads. OpenImageIO (and the
+// codecs it brings, over 250 shared libraries) lives in a module, libcurdle_image.so, loaded the
+// first time an image is read or written, so that commands that write no image start at once.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace curdle {
+
+struct PreviewImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;  // row-major, top row first
+};
+
+// The PNG file's bytes; `dpi` > 0 records the resolution so that it prints at size.
+std::string encode_png(const PreviewImage& image, double dpi = 0);
+
+// An image's luminance (Rec. 709), row-major, top row first, from 0 (black) to 1 (white).
+struct LuminanceImage {
+  int width = 0, height = 0;
+  std::vector<float> luminance;
+};
+// Throws std::runtime_error with OpenImageIO's message when the file cannot be read.
+LuminanceImage read_luminance(const std::filesystem::path& path);
+
+// The module's entry points (C linkage so that dlsym finds them by name).
+extern "C" {
+using EncodePngFn = bool (*)(const PreviewImage* image, double dpi, std::string* png,
+                             std::string* error);
+using ReadLuminanceFn = bool (*)(const char* path, LuminanceImage* image, std::string* error);
+}
+
+}  // namespace curdle

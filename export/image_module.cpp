@@ -1,0 +1,58 @@
+// libcurdle_image.so: the only code that touches OpenImageIO. Loaded on demand by image.cpp.
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include "export/image.h"
+
+using curdle::LuminanceImage;
+using curdle::PreviewImage;
+
+extern "C" __attribute__((visibility("default"))) bool curdle_image_encode_png(
+    const PreviewImage* image, double dpi, std::string* png, std::string* error) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  auto out = OIIO::ImageOutput::create("png");
+  if (!out) {
+    *error = "OpenImageIO has no PNG writer: " + OIIO::geterror();
+    return false;
+  }
+  OIIO::ImageSpec spec(image->width, image->height, 3, OIIO::TypeDesc::UINT8);
+  if (dpi > 0) {
+    spec.attribute("XResolution", static_cast<float>(dpi));
+    spec.attribute("YResolution", static_cast<float>(dpi));
+    spec.attribute("ResolutionUnit", "inch");
+  }
+  OIIO::ImageOutput* raw = out.get();
+  raw->set_ioproxy(&memory);
+  if (!raw->open("memory.png", spec) ||
+      !raw->write_image(OIIO::TypeDesc::UINT8, image->rgb.data()) || !raw->close()) {
+    *error = raw->geterror();
+    return false;
+  }
+  png->assign(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  return true;
+}
+
+extern "C" __attribute__((visibility("default"))) bool curdle_image_read_luminance(
+    const char* path, LuminanceImage* image, std::string* error) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) {
+    *error = OIIO::geterror();
+    return false;
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  const int w = spec.width, h = spec.height, channels = spec.nchannels;
+  std::vector<float> pixels(static_cast<size_t>(w) * h * channels);
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
+    *error = in->geterror();
+    return false;
+  }
+  image->width = w;
+  image->height = h;
+  image->luminance.resize(static_cast<size_t>(w) * h);
+  for (size_t i = 0; i < image->luminance.size(); ++i) {
+    const float* p = &pixels[i * channels];
+    image->luminance[i] = channels >= 3 ? 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2] : p[0];
+  }
+  return true;
+}

@@ -1,0 +1,25 @@
+// What a run tells its caller as it goes: progress of long steps, and notes. The command line
+// shows them on a terminal; the server passes none.
+#pragma once
+
+#include <memory>
+#include <string>
+
+namespace curdle::app {
+
+class ProgressTask {
+ public:
+  virtual ~ProgressTask() = default;
+  virtual void update(double fraction) = 0;  // from 0 to 1
+};
+
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  // A long step begins; it ends when the task is destroyed.
+  virtual std::unique_ptr<ProgressTask> begin(const std::string& what) = 0;
+  // Something the user should know that is not an error ("cells.csv skipped: ...").
+  virtual void note(const std::string& text) = 0;
+};
+
+}  // namespace curdle::app

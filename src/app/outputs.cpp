@@ -1,0 +1,323 @@
+#include "app/outputs.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "curdle/error.h"
+#include "export/cells_csv.h"
+#include "export/cutting.h"
+#include "export/gltf.h"
+#include "export/install.h"
+#include "export/layout_png.h"
+#include "export/mask_image.h"
+#include "export/preview_png.h"
+#include "export/report_json.h"
+#include "export/schedule.h"
+#include "export/svg.h"
+#include "layout/builder.h"
+
+namespace fs = std::filesystem;
+
+namespace curdle::app {
+namespace {
+
+// Runs a step with progress shown, when there is an observer.
+template <class F>
+auto with_progress(RunObserver* observer, const std::string& what, F&& step) {
+  std::unique_ptr<ProgressTask> task = observer ? observer->begin(what) : nullptr;
+  return step([&](double f) {
+    if (task) task->update(f);
+  });
+}
+
+TitleBlock title_of(const Run& run) {
+  return TitleBlock{run.recipe.design.name, run.recipe.description, run.seed};
+}
+
+uint64_t view_cells(const Run& run) { return run.view.cells(); }
+
+// Rough bytes an element costs in each writer's structures, measured on the patterns.
+constexpr uint64_t kGltfBytesPerElement = 700;
+constexpr uint64_t kLayoutPngBytesPerPixel = 15;
+
+void write_report(const OutputContext& c, OutputSink& sink) {
+  sink.write("report.json", [&](std::ostream& o) {
+    const auto j = c.layout ? report_to_json(c.report, *c.layout) : report_to_json(c.report);
+    o << j.dump(2) << "\n";
+  });
+}
+
+void write_cells(const OutputContext& c, OutputSink& sink) {
+  with_progress(c.observer, "writing cells.csv", [&](const auto& progress) {
+    sink.write("cells.csv", [&](std::ostream& o) {
+      write_cells_csv(o, c.run.recipe.design, c.field, c.run.view, progress);
+    });
+  });
+}
+
+void write_preview(const OutputContext& c, OutputSink& sink) {
+  const PreviewImage image = with_progress(c.observer, "drawing preview.png", [&](const auto& p) {
+    return render_preview(c.run.recipe.design, c.field, c.run.view, p);
+  });
+  const std::string png = encode_png(image);
+  sink.write("preview.png", [&](std::ostream& o) { o << png; });
+}
+
+void write_layout_svg_output(const OutputContext& c, OutputSink& sink) {
+  sink.write("layout.svg", [&](std::ostream& o) {
+    write_layout_svg(o, *c.layout, c.run.recipe.design, title_of(c.run), *c.spec);
+  });
+}
+
+void write_layout_png(const OutputContext& c, OutputSink& sink) {
+  const std::string png = encode_png(render_layout(*c.layout, *c.spec), c.spec->dpi);
+  sink.write("layout.png", [&](std::ostream& o) { o << png; });
+}
+
+void write_layout_glb(const OutputContext& c, OutputSink& sink) {
+  sink.write("layout.glb", [&](std::ostream& o) {
+    write_glb(o, *c.layout, c.run.recipe.design, title_of(c.run), *c.spec);
+  });
+}
+
+void write_layout_gltf(const OutputContext& c, OutputSink& sink) {
+  std::ostringstream bin;
+  sink.write("layout.gltf", [&](std::ostream& o) {
+    write_gltf(o, bin, "layout.bin", *c.layout, c.run.recipe.design, title_of(c.run), *c.spec);
+  });
+  sink.write("layout.bin", [&](std::ostream& o) { o << bin.str(); });
+}
+
+void write_schedule(const OutputContext& c, OutputSink& sink) {
+  sink.write("schedule.csv", [&](std::ostream& o) {
+    write_schedule_csv(o, *c.layout, c.run.recipe.design, *c.spec);
+  });
+}
+
+void write_quantities(const OutputContext& c, OutputSink& sink) {
+  sink.write("quantities.csv",
+             [&](std::ostream& o) { write_quantities_csv(o, *c.layout, *c.spec); });
+}
+
+void write_install(const OutputContext& c, OutputSink& sink) {
+  sink.write("install.svg",
+             [&](std::ostream& o) { write_install_svg(o, *c.layout, title_of(c.run)); });
+}
+
+void write_sheets(const OutputContext& c, OutputSink& sink) {
+  const Layout& layout = *c.layout;
+  for (size_t i = 0; i < layout.sheets.size(); ++i) {
+    const std::string id = layout.sheets[i].id;
+    const int sheet = static_cast<int>(i);
+    sink.write_via_file("sheets/" + id + ".dxf",
+                        [&](const fs::path& path) { write_sheet_dxf(path, layout, sheet); });
+    sink.write("sheets/" + id + ".svg",
+               [&](std::ostream& o) { write_sheet_svg(o, layout, sheet); });
+  }
+}
+
+std::vector<Output> make_registry() {
+  std::vector<Output> r;
+  auto add = [&](Output o) { r.push_back(std::move(o)); };
+  add({.name = "report.json",
+       .description = "per-stage report: survivors, expectations, box counts and dimensions",
+       .write = write_report});
+  add({.name = "cells.csv",
+       .description = "one row per cell: its value and a 0/1 column per curd",
+       .skip_above = 10'000'000,
+       .size_unit = "cells",
+       .size = view_cells,
+       .write = write_cells});
+  add({.name = "preview.png",
+       .description = "the curds' values as a picture, a colour per value",
+       .memory = [](const Run& run, const LayoutSpec*) {
+         return preview_memory(run.recipe.design, run.view);
+       },
+       .write = write_preview});
+  add({.name = "layout.svg",
+       .description = "the layout in true millimetres, with legend and title block",
+       .needs_layout = true,
+       .write = write_layout_svg_output});
+  add({.name = "layout.png",
+       .description = "the layout drawn at a scale, to print",
+       .needs_layout = true,
+       .memory = [](const Run& run, const LayoutSpec* spec) {
+         return layout_png_pixels(*spec, run.view) * kLayoutPngBytesPerPixel;
+       },
+       .write = write_layout_png});
+  add({.name = "layout.glb",
+       .description = "the layout as a glTF 2.0 scene in metres",
+       .needs_layout = true,
+       .memory = [](const Run& run, const LayoutSpec*) {
+         return run.view.cells() * kGltfBytesPerElement;
+       },
+       .write = write_layout_glb});
+  add({.name = "layout.gltf",
+       .description = "the same as glTF JSON with layout.bin beside it",
+       .needs_layout = true,
+       .by_default = false,
+       .download = false,
+       .memory = [](const Run& run, const LayoutSpec*) {
+         return run.view.cells() * kGltfBytesPerElement * 2;
+       },
+       .write = write_layout_gltf});
+  add({.name = "schedule.csv",
+       .description = "one row per element: ID, lot, position, size, value, material",
+       .needs_layout = true,
+       .skip_above = 2'000'000,
+       .size_unit = "elements",
+       .size = view_cells,
+       .write = write_schedule});
+  add({.name = "quantities.csv",
+       .description = "counts and areas per element type and colour, with spare and packs",
+       .needs_layout = true,
+       .write = write_quantities});
+  add({.name = "install.svg",
+       .description = "the installer's map: every element's ID and the laying order",
+       .needs_layout = true,
+       .skip_above = 250'000,
+       .size_unit = "elements",
+       .size = view_cells,
+       .write = write_install});
+  add({.name = "sheets",
+       .description = "perforated sheets: a DXF and an SVG per fabrication sheet, in sheets/",
+       .needs_layout = true,
+       .download = false,
+       .write = write_sheets});
+  return r;
+}
+
+std::string known_outputs() {
+  std::string names;
+  for (const Output& o : output_registry())
+    names += (names.empty() ? "" : ", ") + o.name + (o.needs_layout ? " (needs a [layout])" : "");
+  return names;
+}
+
+}  // namespace
+
+const std::vector<Output>& output_registry() {
+  static const std::vector<Output> registry = make_registry();
+  return registry;
+}
+
+const Output* find_output(const std::string& name) {
+  for (const Output& o : output_registry())
+    if (o.name == name || o.name.substr(0, o.name.find('.')) == name) return &o;
+  return nullptr;
+}
+
+std::vector<const Output*> select_outputs(const Run& run, const std::vector<std::string>& named,
+                                          RunObserver* observer) {
+  const bool has_layout = run.recipe.layout.has_value();
+  std::vector<const Output*> chosen;
+  if (!named.empty()) {
+    for (const std::string& name : named) {
+      const Output* o = find_output(name);
+      if (!o)
+        throw InputError(parameter("outputs"),
+                         "unknown output '" + name + "'; allowed: " + known_outputs());
+      if (o->needs_layout && !has_layout)
+        throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout", ""},
+                         o->name + " needs a [layout] section in the recipe (see "
+                                   "patterns/README.md)");
+      if (std::find(chosen.begin(), chosen.end(), o) == chosen.end()) chosen.push_back(o);
+    }
+    return chosen;
+  }
+  for (const Output& o : output_registry()) {
+    if (!o.by_default || (o.needs_layout && !has_layout)) continue;
+    if (o.skip_above && o.size(run) > o.skip_above) {
+      if (observer)
+        observer->note(o.name + " skipped: " + std::to_string(o.size(run)) + " " + o.size_unit +
+                       " is above " + std::to_string(o.skip_above) + "; name it with --outputs " +
+                       o.name + " to write it anyway");
+      continue;
+    }
+    chosen.push_back(&o);
+  }
+  return chosen;
+}
+
+namespace {
+
+// Whether the run lays out its curds: for an output drawn from the layout, and for report.json,
+// which describes the layout whenever the recipe has one.
+bool builds_layout(const Run& run, const std::vector<const Output*>& outputs) {
+  if (!run.recipe.layout) return false;
+  return std::any_of(outputs.begin(), outputs.end(), [](const Output* o) {
+    return o->needs_layout || o->name == "report.json";
+  });
+}
+
+}  // namespace
+
+uint64_t estimate_run_memory(const Run& run, const std::vector<const Output*>& outputs) {
+  const Design& d = run.recipe.design;
+  uint64_t need = estimate_memory(d, generation_box(d, run.view));
+  const LayoutSpec* spec = run.recipe.layout ? &*run.recipe.layout : nullptr;
+  for (const Output* o : outputs)
+    if (o->memory) need += o->memory(run, spec);
+  // An element with its ID and shape is about 256 bytes.
+  if (builds_layout(run, outputs)) need += run.view.cells() * 256;
+  return need;
+}
+
+void check_run_memory(const Run& run, const std::vector<const Output*>& outputs) {
+  const uint64_t need = estimate_run_memory(run, outputs);
+  if (need > run.generate.max_memory_bytes)
+    throw ResourceLimitError(
+        "the curds and their outputs need about " + std::to_string(need >> 20) +
+        " MiB, above the memory limit of " + std::to_string(run.generate.max_memory_bytes >> 20) +
+        " MiB; use a smaller field or window" +
+        (run.generate.memory_limit_hint.empty() ? "" : ", or " + run.generate.memory_limit_hint));
+}
+
+RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outputs,
+                         OutputSink& sink, int threads, RunObserver* observer) {
+  const Design& d = run.recipe.design;
+  const bool needs_layout = builds_layout(run, outputs);
+  std::optional<LayoutSpec> spec = run.recipe.layout;
+  if (spec && !spec->mask.empty() && needs_layout) {
+    const fs::path mask = fs::path(run.recipe_path).parent_path() / spec->mask;
+    for (const Rect& r : read_mask_openings(mask, (*spec->size)[0], (*spec->size)[1],
+                                            SourceLocation{run.recipe_path, 0, 0, "layout.mask", ""}))
+      spec->openings.push_back(r);
+  }
+  check_run_memory(run, outputs);
+
+  const CurdField field = with_progress(observer, "curdling", [&](const auto& progress) {
+    return run_engine(run, threads, progress);
+  });
+  RunSummary summary;
+  summary.report = make_report(d, run.seed, field, run.view);
+  std::optional<Layout> layout;
+  if (spec && needs_layout) layout = make_layout(d, field, run.view, *spec);
+  const OutputContext context{run, field, summary.report, layout ? &*layout : nullptr,
+                              spec ? &*spec : nullptr, observer};
+  // report.json last: it describes the layout the other files drew.
+  for (const Output* o : outputs)
+    if (o->name != "report.json") o->write(context, sink);
+  for (const Output* o : outputs)
+    if (o->name == "report.json") o->write(context, sink);
+
+  if (layout) {
+    LayoutSummary s;
+    s.element_type = layout->element_type;
+    s.elements = layout->elements.size();
+    s.cut = cut_elements(*layout);
+    s.omitted = layout->omitted;
+    s.sheets = layout->sheets.size();
+    s.width = layout->width;
+    s.height = layout->height;
+    s.drawing_scale = drawing_scale(*layout, *spec);
+    s.dpi = spec->dpi;
+    s.notes = layout->notes;
+    s.violations = layout->violations;
+    summary.layout = std::move(s);
+  }
+  return summary;
+}
+
+}  // namespace curdle::app

@@ -1,0 +1,79 @@
+// The one list of a run's outputs: each with its name, whether it needs a [layout], whether it
+// is written by default, the memory it needs, a size above which it is skipped unless named,
+// and a writer to a sink. The command line, the API and the page (through /api/recipe) all
+// read this list.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/observer.h"
+#include "app/output_sink.h"
+#include "app/run.h"
+#include "curdle/report.h"
+#include "layout/layout.h"
+
+namespace curdle::app {
+
+// What writers read: the run, its curds and report, and its layout when it has one.
+struct OutputContext {
+  const Run& run;
+  const CurdField& field;
+  const Report& report;
+  const Layout* layout;      // null without a [layout]
+  const LayoutSpec* spec;    // the recipe's, with a mask's openings read in
+  RunObserver* observer;     // may be null
+};
+
+struct Output {
+  std::string name;
+  std::string description;
+  bool needs_layout = false;
+  bool by_default = true;
+  bool download = true;  // one file the page can offer (not a folder, not a pair)
+  // Skipped unless named when size(run) is above this (0: never skipped): huge files nobody
+  // opens are not written by accident.
+  uint64_t skip_above = 0;
+  const char* size_unit = "";  // what size() counts: "cells", "elements"
+  uint64_t (*size)(const Run& run) = nullptr;
+  // Bytes needed beyond the curds and the layout while writing it.
+  uint64_t (*memory)(const Run& run, const LayoutSpec* spec) = nullptr;
+  void (*write)(const OutputContext& context, OutputSink& sink) = nullptr;
+};
+
+const std::vector<Output>& output_registry();
+const Output* find_output(const std::string& name);
+
+// The outputs a run writes: those named (a name without its extension is taken too, e.g.
+// "schedule"), or every default one. Named outputs that need a layout the recipe lacks are an
+// InputError (parameter "outputs"); defaults too large are skipped with a note.
+std::vector<const Output*> select_outputs(const Run& run, const std::vector<std::string>& named,
+                                          RunObserver* observer);
+
+// Bytes the run and these outputs need at once, counted before anything is allocated.
+uint64_t estimate_run_memory(const Run& run, const std::vector<const Output*>& outputs);
+// ResourceLimitError when that is above the run's memory limit.
+void check_run_memory(const Run& run, const std::vector<const Output*>& outputs);
+
+// What a run made, for the caller to tell the user.
+struct LayoutSummary {
+  std::string element_type;
+  uint64_t elements = 0, cut = 0, omitted = 0, sheets = 0;
+  double width = 0, height = 0;  // mm
+  double drawing_scale = 0;      // layout.png, 1 : scale
+  double dpi = 0;
+  std::vector<std::string> notes, violations;
+};
+struct RunSummary {
+  Report report;
+  std::optional<LayoutSummary> layout;
+};
+
+// Runs the engine and writes the outputs to `sink`. Throws InputError for bad input and
+// ResourceLimitError above the run's memory limit, before anything is written.
+RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outputs,
+                         OutputSink& sink, int threads, RunObserver* observer);
+
+}  // namespace curdle::app

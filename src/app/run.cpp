@@ -1,0 +1,113 @@
+#include "app/run.h"
+
+#include <sys/stat.h>
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "curdle/error.h"
+
+namespace curdle::app {
+
+namespace {
+constexpr uint64_t kMaxRecipeBytes = uint64_t{1} << 20;
+}
+
+uint64_t default_memory_limit() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || size <= 0) return uint64_t{8} << 30;
+  return static_cast<uint64_t>(pages) * static_cast<uint64_t>(size) / 2;
+}
+
+uint64_t parse_bytes(const std::string& text, const std::string& name) {
+  size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (...) {
+    used = 0;
+  }
+  std::string unit = text.substr(used);
+  for (auto& ch : unit) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  double scale = 0;
+  if (unit.empty() || unit == "B")
+    scale = 1;
+  else if (unit == "K" || unit == "KB" || unit == "KIB")
+    scale = 1024.0;
+  else if (unit == "M" || unit == "MB" || unit == "MIB")
+    scale = 1024.0 * 1024;
+  else if (unit == "G" || unit == "GB" || unit == "GIB")
+    scale = 1024.0 * 1024 * 1024;
+  else if (unit == "T" || unit == "TB" || unit == "TIB")
+    scale = 1024.0 * 1024 * 1024 * 1024;
+  // Above 2^60 bytes the conversion to uint64_t would wrap: no machine has that much.
+  if (used == 0 || scale == 0 || !(value > 0) || !std::isfinite(value) ||
+      value * scale > 1152921504606846976.0)
+    throw InputError(parameter(name), "'" + text +
+                                          "' is not a size; write a positive number with K, M, G "
+                                          "or T, e.g. 8G (at most 2^60 bytes)");
+  return static_cast<uint64_t>(value * scale);
+}
+
+std::string read_recipe_file(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0)
+    throw InputError(SourceLocation{path, 0, 0, "", ""},
+                     std::string("cannot read the recipe: ") + std::strerror(errno));
+  if (!S_ISREG(info.st_mode))
+    throw InputError(SourceLocation{path, 0, 0, "", ""},
+                     "is not a regular file; a recipe is a TOML file such as patterns/tiles.toml");
+  if (static_cast<uint64_t>(info.st_size) > kMaxRecipeBytes)
+    throw InputError(SourceLocation{path, 0, 0, "", ""},
+                     "is " + std::to_string(info.st_size) + " bytes; a recipe is at most 1 MiB");
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(SourceLocation{path, 0, 0, "", ""},
+                     std::string("cannot read the recipe: ") + std::strerror(errno));
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Run resolve_run(const RunRequest& request) {
+  Run run;
+  run.recipe_path = request.recipe_path;
+  run.recipe_text = request.recipe_text;
+  run.overrides = request.overrides;
+  run.recipe = parse_recipe(request.recipe_text, request.recipe_path, request.overrides);
+  run.seed = run.recipe.seed;
+  if (!request.seed.empty()) {
+    const std::string& text = request.seed;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), run.seed);
+    if (ec != std::errc() || end != text.data() + text.size())
+      throw InputError(parameter("seed"), "'" + text +
+                                              "' is not a seed; a seed is a whole number from 0 "
+                                              "to " + std::to_string(UINT64_MAX));
+  }
+  run.view = run.recipe.design.field;
+  if (run.recipe.window) run.view = *run.recipe.window;
+  if (!request.window.empty()) {
+    run.view = parse_window(request.window, run.recipe.design);
+    run.window_given = true;
+  }
+  run.generate.max_memory_bytes = request.max_memory ? request.max_memory : default_memory_limit();
+  run.generate.memory_limit_hint = request.memory_limit_hint;
+  return run;
+}
+
+CurdField run_engine(const Run& run, int threads, const std::function<void(double)>& progress) {
+  std::optional<tbb::global_control> limit;
+  if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
+  GenerateOptions options = run.generate;
+  options.progress = progress;
+  return curdle(run.recipe.design, run.seed, run.view, options);
+}
+
+}  // namespace curdle::app

@@ -1,0 +1,159 @@
+#include "app/search_run.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <charconv>
+#include <cmath>
+#include <optional>
+
+#include "app/reproduce.h"
+#include "curdle/curdling.h"
+#include "curdle/error.h"
+#include "export/csv_field.h"
+#include "export/preview_png.h"
+
+namespace curdle::app {
+
+std::pair<uint64_t, uint64_t> parse_seed_range(const std::string& text, const std::string& name) {
+  const size_t dots = text.find("..");
+  const std::string a = text.substr(0, dots),
+                    b = dots == std::string::npos ? a : text.substr(dots + 2);
+  auto number = [&](const std::string& s, uint64_t& v) {
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return !s.empty() && ec == std::errc() && p == s.data() + s.size();
+  };
+  uint64_t first = 0, last = 0;
+  if (!number(a, first) || !number(b, last) || last < first)
+    throw InputError(parameter(name), "'" + text +
+                                          "' is not a range of seeds; write A..B with whole "
+                                          "numbers A <= B, e.g. 1..10000");
+  return {first, last};
+}
+
+std::array<int64_t, 2> parse_segment_size(const std::string& text, int dimension,
+                                          const std::string& name) {
+  std::array<int64_t, 2> size{1, 1};
+  const size_t comma = text.find(',');
+  const std::string w = text.substr(0, comma),
+                    h = comma == std::string::npos ? "" : text.substr(comma + 1);
+  auto number = [](const std::string& s, int64_t& v) {
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return !s.empty() && ec == std::errc() && p == s.data() + s.size() && v >= 1;
+  };
+  const bool ok = dimension == 1 ? number(w, size[0]) && comma == std::string::npos
+                                 : number(w, size[0]) && number(h, size[1]);
+  if (!ok)
+    throw InputError(parameter(name), "'" + text + "' is not a segment size; write " +
+                                          (dimension == 1 ? "W" : "W,H") +
+                                          " in whole cells, each at least 1");
+  return size;
+}
+
+SearchRun resolve_search(const SearchRequest& request) {
+  SearchRun s;
+  s.run = resolve_run(request.run);
+  const Design& d = s.run.recipe.design;
+  std::tie(s.first, s.last) = parse_seed_range(request.seeds, "seeds");
+  if (s.last - s.first >= (uint64_t{1} << 40))
+    throw ResourceLimitError(parameter("seeds"), "at most 2^40 seeds a search");
+  for (const std::string& t : request.targets) s.spec.targets.push_back(parse_target(t, d));
+  if (!request.segment.empty())
+    s.spec.window = parse_segment_size(request.segment, d.lattice.dimension, "segment");
+  else if (s.run.recipe.window)
+    s.spec.window = std::array<int64_t, 2>{
+        s.run.recipe.window->size[0], d.lattice.dimension >= 2 ? s.run.recipe.window->size[1] : 1};
+  s.spec.stride = request.stride;
+  s.spec.top = request.top;
+  s.spec.lacunarity_box = request.lacunarity_box;
+  check_search(d, d.field, s.spec);
+
+  // Each thread holds one seed's curds and, for segments, the grid of values with its sums:
+  // the grid is 2 bytes a cell, and each target reads one prefix-sum table of 4 bytes a cell.
+  const uint64_t threads = request.threads > 0
+                               ? static_cast<uint64_t>(request.threads)
+                               : static_cast<uint64_t>(tbb::info::default_concurrency());
+  const uint64_t tables =
+      (s.spec.targets.empty() ? default_targets(d).size() : s.spec.targets.size()) + 1;
+  const uint64_t per_thread =
+      estimate_memory(d, generation_box(d, d.field)) + d.field.cells() * (2 + 4 * tables);
+  if (per_thread * threads > s.run.generate.max_memory_bytes)
+    throw ResourceLimitError(
+        "a search over this field needs about " + std::to_string((per_thread * threads) >> 20) +
+        " MiB, above the memory limit of " +
+        std::to_string(s.run.generate.max_memory_bytes >> 20) +
+        " MiB; use a smaller field.cells" +
+        (s.run.generate.memory_limit_hint.empty() ? ""
+                                                  : ", or " + s.run.generate.memory_limit_hint));
+  return s;
+}
+
+std::vector<SearchHit> run_search(const SearchRun& s, const std::function<void(double)>& progress,
+                                  const std::atomic<bool>* cancel) {
+  const Design& d = s.run.recipe.design;
+  return search_seeds(d, d.field, s.spec, s.first, s.last, progress, cancel);
+}
+
+nlohmann::ordered_json search_hits_json(const SearchRun& s, const std::vector<SearchHit>& hits) {
+  const Design& d = s.run.recipe.design;
+  const std::vector<Target> targets = s.spec.targets.empty() ? default_targets(d) : s.spec.targets;
+  nlohmann::ordered_json j;
+  j["targets"] = nlohmann::json::array();
+  for (const Target& t : targets) j["targets"].push_back(t.text);
+  j["hits"] = nlohmann::json::array();
+  int rank = 0;
+  for (const SearchHit& h : hits) {
+    nlohmann::ordered_json hit;
+    hit["rank"] = ++rank;
+    hit["seed"] = std::to_string(h.seed);
+    hit["window"] = window_text(h.segment, d.lattice.dimension);
+    hit["score"] = h.score;
+    hit["meets_empty_zones"] = h.meets_empty_zones;
+    nlohmann::ordered_json measured = nlohmann::json::object();
+    for (size_t i = 0; i < targets.size(); ++i)
+      measured[targets[i].text] = std::isnan(h.measured[i])
+                                      ? nlohmann::ordered_json(nullptr)
+                                      : nlohmann::ordered_json(h.measured[i]);
+    hit["measured"] = measured;
+    const bool whole = h.segment == d.field;
+    hit["command"] = generate_command(s.run.recipe_path, s.run.overrides, h.seed,
+                                      whole ? std::nullopt : std::optional<Box>(h.segment),
+                                      d.lattice.dimension);
+    j["hits"].push_back(hit);
+  }
+  return j;
+}
+
+std::vector<std::string> write_search_outputs(const SearchRun& s,
+                                              const std::vector<SearchHit>& hits,
+                                              const nlohmann::ordered_json& j, bool previews,
+                                              OutputSink& sink) {
+  sink.write("search.csv", [&](std::ostream& out) {
+    out << "rank,seed,window,score,meets_empty_zones";
+    for (const auto& t : j["targets"]) out << ',' << csv_field(t.get<std::string>());
+    out << ",command\r\n";
+    for (const auto& h : j["hits"]) {
+      out << h["rank"].get<int>() << ',' << h["seed"].get<std::string>() << ','
+          << csv_field(h["window"].get<std::string>()) << ',' << h["score"].get<double>() << ','
+          << (h["meets_empty_zones"].get<bool>() ? 1 : 0);
+      for (const auto& [name, x] : h["measured"].items())
+        out << ',' << (x.is_null() ? std::string() : std::to_string(x.get<double>()));
+      out << ',' << csv_field(h["command"].get<std::string>()) << "\r\n";
+    }
+  });
+  std::vector<std::string> names;
+  if (!previews) return names;
+  const Design& d = s.run.recipe.design;
+  for (size_t i = 0; i < hits.size(); ++i) {
+    char name[64];
+    std::snprintf(name, sizeof name, "rank-%02zu-seed-%llu.png", i + 1,
+                  static_cast<unsigned long long>(hits[i].seed));
+    names.push_back(name);
+    const CurdField field = curdle(d, hits[i].seed, hits[i].segment);
+    const std::string png = encode_png(render_preview(d, field, hits[i].segment));
+    sink.write(name, [&](std::ostream& o) { o << png; });
+  }
+  return names;
+}
+
+}  // namespace curdle::app

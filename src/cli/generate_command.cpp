@@ -1,0 +1,87 @@
+#include "cli/generate_command.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "app/outputs.h"
+#include "cli/progress.h"
+#include "export/report_table.h"
+
+namespace fs = std::filesystem;
+
+namespace curdle::cli {
+namespace {
+
+std::string first_digits(double x) { return std::to_string(x).substr(0, 5); }
+
+void print_summary(const app::RunSummary& s, const app::Run& run, const fs::path& dir,
+                   const std::vector<fs::path>& files) {
+  if (s.layout) {
+    const app::LayoutSummary& l = *s.layout;
+    if (l.sheets) std::printf("sheets: %llu, each as DXF and SVG in sheets/\n",
+                              static_cast<unsigned long long>(l.sheets));
+    std::printf("layout: %llu %ss (%llu cut, %llu over openings), %.0f x %.0f mm; layout.png at "
+                "1:%g, %g dpi\n",
+                static_cast<unsigned long long>(l.elements), l.element_type.c_str(),
+                static_cast<unsigned long long>(l.cut), static_cast<unsigned long long>(l.omitted),
+                l.width, l.height, l.drawing_scale, l.dpi);
+    for (const std::string& note : l.notes) std::printf("  note: %s\n", note.c_str());
+    for (size_t i = 0; i < l.violations.size() && i < 20; ++i)
+      std::printf("  rule: %s\n", l.violations[i].c_str());
+    if (l.violations.size() > 20)
+      std::printf("  rule: ... %zu more in report.json\n", l.violations.size() - 20);
+  }
+  std::printf("%s, seed %llu: %llu cells\n", run.recipe.design.name.c_str(),
+              static_cast<unsigned long long>(run.seed),
+              static_cast<unsigned long long>(s.report.cells));
+  for (const CurdReport& c : s.report.curds)
+    std::printf("  curd %-12s %llu survivors (expected %.1f), box dimension %s (theory %s)\n",
+                c.name.c_str(), static_cast<unsigned long long>(c.stages.back().survivors),
+                c.stages.back().expected, c.fit ? first_digits(c.fit->slope).c_str() : "-",
+                c.theory_dimension ? first_digits(*c.theory_dimension).c_str() : "-");
+  std::printf("outputs in %s:\n", fs::absolute(dir).lexically_normal().c_str());
+  for (const fs::path& f : files) std::printf("  %s\n", f.lexically_relative(dir).c_str());
+}
+
+}  // namespace
+
+std::string outputs_help() {
+  std::string all, defaults;
+  for (const app::Output& o : app::output_registry()) {
+    all += (all.empty() ? "" : ", ") + o.name;
+    if (!o.by_default) defaults += (defaults.empty() ? "all but " : ", ") + o.name;
+  }
+  return "Which outputs: " + all + " (those of a layout need a [layout]; default: " + defaults +
+         ")";
+}
+
+int run_generate(const CommonOptions& common, const std::string& out_dir,
+                 const std::vector<std::string>& outputs_named) {
+  const app::Run run = app::resolve_run(run_request(common));
+  TerminalObserver observer;
+  const auto outputs = app::select_outputs(run, outputs_named, &observer);
+  // Checked before the directory is made, so that a run over its limit leaves nothing.
+  app::check_run_memory(run, outputs);
+  const fs::path dir = out_dir.empty()
+                           ? fs::path("curdle-out") / fs::path(common.recipe_path).stem()
+                           : fs::path(out_dir);
+  app::StagingDirectory sink(dir);
+  const app::RunSummary summary = app::write_outputs(run, outputs, sink, common.threads, &observer);
+  sink.commit();
+  print_summary(summary, run, dir, sink.files());
+  return 0;
+}
+
+int run_report(const CommonOptions& common) {
+  const app::Run run = app::resolve_run(run_request(common));
+  TerminalObserver observer;
+  auto task = observer.begin("curdling");
+  const CurdField field =
+      app::run_engine(run, common.threads, [&](double f) { task->update(f); });
+  task.reset();
+  std::fputs(format_report_table(make_report(run.recipe.design, run.seed, field, run.view)).c_str(),
+             stdout);
+  return 0;
+}
+
+}  // namespace curdle::cli

@@ -1,0 +1,221 @@
+#include "recipe/layout_reader.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "layout/builder.h"
+
+namespace curdle::reading {
+namespace {
+
+// What a kind is called in recipes, and the keys it owns beyond the ones every kind takes.
+struct KindKeys {
+  const char* name;
+  LayoutKind kind;
+  const char* module_key;  // the element's size; empty for lines and voxels
+  const char* size_key;    // the surface's size
+  bool size_required;
+  bool joint;
+  std::vector<std::string> own;
+};
+
+const std::vector<KindKeys>& kinds() {
+  static const std::vector<KindKeys> table = {
+      {"tile", LayoutKind::tile, "tile", "size", false, true, {}},
+      {"paving", LayoutKind::paving, "tile", "floor", true, true, {}},
+      {"facade", LayoutKind::facade, "panel", "wall", true, true, {"openings", "mask"}},
+      {"perforation", LayoutKind::perforation, "cell", "sheet", true, false,
+       {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin", "fix",
+        "chord_tolerance", "sheet_size"}},
+      {"park", LayoutKind::park, "cell", "area", false, false, {"elements", "ground", "clearance"}},
+      {"rhythm", LayoutKind::rhythm, "", "", false, false,
+       {"bay", "height", "length", "widths", "origin", "highlight"}},
+      {"blocks", LayoutKind::blocks, "", "", false, false, {"voxel"}},
+  };
+  return table;
+}
+
+const std::vector<std::string> kEveryKind = {"kind",  "colours", "scale",    "dpi",
+                                             "spare", "pack",    "lot_size", "lot_rows"};
+const std::vector<std::string> kSurface = {"combine",    "origin",    "joint_colour",
+                                           "stage_grid", "highlight"};
+
+Corner read_corner(TableReader& r) {
+  const auto origin = read_string(r, "origin", "a corner").value_or("bottom-left");
+  if (origin == "bottom-left") return Corner::bottom_left;
+  if (origin == "bottom-right") return Corner::bottom_right;
+  if (origin == "top-left") return Corner::top_left;
+  if (origin == "top-right") return Corner::top_right;
+  r.fail("origin", "must be \"bottom-left\", \"bottom-right\", \"top-left\" or \"top-right\"");
+}
+
+std::optional<Box> read_highlight(TableReader& r) {
+  const toml::node* n = r.get("highlight");
+  if (!n) return std::nullopt;
+  const toml::array* a = n->as_array();
+  std::array<int64_t, 4> v{};
+  bool ok = a && a->size() == 4;
+  for (size_t i = 0; ok && i < 4; ++i) {
+    const auto x = a->get(i)->value<int64_t>();
+    ok = a->get(i)->is_integer() && x && *x >= (i < 2 ? 0 : 1) && *x <= (int64_t{1} << 40);
+    if (ok) v[i] = *x;
+  }
+  if (!ok) r.fail("highlight", "must be [x, y, width, height] in cells, a window to outline");
+  return Box{{v[0], v[1], 0}, {v[2], v[3], 1}};
+}
+
+// The keys of the 2-D surface kinds: element, joint, surface size, corner and drawing.
+void read_surface(TableReader& r, const KindKeys& k, const Design& design, LayoutSpec& spec) {
+  const auto combine = read_string(r, "combine", "\"mix\" or \"keep\"").value_or("mix");
+  if (combine == "mix")
+    spec.combine = Combine::mix;
+  else if (combine == "keep")
+    spec.combine = Combine::keep;
+  else
+    r.fail("combine",
+           "must be \"mix\" (a + b = c) or \"keep\" (a + b = ab), not \"" + combine + "\"");
+  if (const auto module = read_mm_pair(r, k.module_key))
+    spec.module_w = (*module)[0], spec.module_h = (*module)[1];
+  spec.joint = k.joint ? read_mm(r, "joint", 0, 0) : 0;
+  if (spec.joint >= std::min(spec.module_w, spec.module_h))
+    r.fail("joint", std::string("must be narrower than the ") + k.module_key + " (" +
+                        std::to_string(static_cast<int>(std::min(spec.module_w, spec.module_h))) +
+                        " mm)");
+  spec.size = read_mm_pair(r, k.size_key, k.size_required);
+  spec.origin = read_corner(r);
+  read_value_colours(r, design, spec);
+  if (const auto colour = read_colour(r, "joint_colour")) spec.joint_colour = *colour;
+  spec.stage_grid = read_bool(r, "stage_grid", false);
+  spec.highlight = read_highlight(r);
+  read_drawing_scale(r, spec);
+}
+
+}  // namespace
+
+void read_drawing_scale(TableReader& r, LayoutSpec& spec) {
+  spec.scale = read_mm(r, "scale", 0, 1);
+  spec.dpi = read_mm(r, "dpi", 150, 10);
+  if (spec.dpi > 1200) r.fail("dpi", "must be from 10 to 1200");
+}
+
+std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool field_given) {
+  const toml::table* t = read_table(top, "layout");
+  if (!t) return std::nullopt;
+  std::string name = "tile";
+  if (const toml::node* n = t->get("kind")) {
+    if (!n->is_string()) top.fail_node(*n, "layout.kind", "must be a string such as \"paving\"");
+    name = *n->value<std::string>();
+    if (name == "façade") name = "facade";
+  }
+  const auto& table = kinds();
+  const auto k = std::find_if(table.begin(), table.end(),
+                              [&](const KindKeys& x) { return name == x.name; });
+  if (k == table.end())
+    top.fail_node(*t->get("kind"), "layout.kind",
+                  "unknown element kind \"" + name +
+                      "\"; allowed: \"tile\", \"paving\", \"facade\", \"perforation\", \"park\", "
+                      "\"rhythm\", \"blocks\"");
+  const bool surface = *k->module_key != '\0';
+  std::vector<std::string> keys = kEveryKind;
+  if (surface) {
+    keys.insert(keys.end(), kSurface.begin(), kSurface.end());
+    keys.push_back(k->module_key);
+    keys.push_back(k->size_key);
+    if (k->joint) keys.push_back("joint");
+  }
+  keys.insert(keys.end(), k->own.begin(), k->own.end());
+  TableReader r(*t, "layout", top.source(), keys);
+
+  LayoutSpec spec;
+  spec.kind = k->kind;
+  read_ordering(r, spec);
+  const int dimension = layout_dimension(spec.kind);
+  if (design.lattice.dimension != dimension)
+    r.fail("kind", "a " + name + " layout needs a " + std::to_string(dimension) +
+                       "-D lattice; this one is " + std::to_string(design.lattice.dimension) +
+                       "-D");
+  switch (spec.kind) {
+    case LayoutKind::rhythm:
+      read_rhythm(r, design, spec, field_given);
+      return spec;
+    case LayoutKind::blocks:
+      read_value_colours(r, design, spec);
+      read_drawing_scale(r, spec);
+      read_blocks(r, spec);
+      return spec;
+    case LayoutKind::facade:
+      read_surface(r, *k, design, spec);
+      read_facade(r, spec);
+      break;
+    case LayoutKind::perforation:
+      read_surface(r, *k, design, spec);
+      read_perforation(r, design, spec);
+      break;
+    case LayoutKind::park:
+      read_surface(r, *k, design, spec);
+      read_park(r, design, spec);
+      break;
+    case LayoutKind::tile:
+    case LayoutKind::paving:
+      read_surface(r, *k, design, spec);
+      break;
+  }
+
+  if (spec.size) {
+    const auto cells = elements_to_cover(spec);
+    // A larger field is a curd from which a segment of `cells` becomes the floor or wall.
+    if (field_given && (design.field.size[0] < cells[0] || design.field.size[1] < cells[1]))
+      r.fail(k->size_key, "needs " + std::to_string(cells[0]) + " x " + std::to_string(cells[1]) +
+                              " elements but field.cells is " +
+                              std::to_string(design.field.size[0]) + " x " +
+                              std::to_string(design.field.size[1]) +
+                              "; leave field.cells out, or make it at least that large");
+    if (!field_given) {
+      design.field.size[0] = cells[0];
+      design.field.size[1] = cells[1];
+    }
+  }
+  return spec;
+}
+
+// Ordering: the spare share, pack size and lots of the schedules.
+void read_ordering(TableReader& r, LayoutSpec& spec) {
+  if (const toml::node* n = r.get("spare")) {
+    const auto v = n->value<double>();
+    if (!v || !std::isfinite(*v) || *v < 0 || *v > 10)
+      r.fail("spare", "must be a share from 0 to 10, e.g. 0.05 for 5 % spare; not negative");
+    spec.spare = *v;
+  }
+  spec.pack = read_int(r, "pack", 1, 1, 1000000);
+  spec.lot_size = read_int(r, "lot_size", 0, 0, INT64_MAX);
+  spec.lot_rows = read_int(r, "lot_rows", 0, 0, INT64_MAX);
+  if (spec.lot_size && spec.lot_rows)
+    r.fail("lot_rows", "give lots either by size (lot_size) or by rows (lot_rows), not both");
+}
+
+// layout.colours: exactly one "#rrggbb" per value, value 0 first.
+void read_value_colours(TableReader& r, const Design& design, LayoutSpec& spec) {
+  const size_t values = size_t{1} << design.curds.size();
+  if (const toml::node* n = r.get("colours")) {
+    const toml::array* a = n->as_array();
+    if (!a) r.fail("colours", "must be an array of colours \"#rrggbb\", one per value");
+    if (a->size() < values)
+      r.fail("colours", "gives " + std::to_string(a->size()) + " colours for " +
+                            std::to_string(values) + " values (2^" +
+                            std::to_string(design.curds.size()) +
+                            " curds); give one per value, value 0 first");
+    if (a->size() > values)
+      r.fail("colours", "gives " + std::to_string(a->size()) + " colours but there are only " +
+                            std::to_string(values) + " values");
+    for (size_t v = 0; v < a->size(); ++v) {
+      const auto text = a->get(v)->value<std::string>();
+      const auto colour = text ? parse_colour(*text) : std::nullopt;
+      if (!colour)
+        r.fail_node(*a->get(v), "layout.colours." + std::to_string(v),
+                    "must be a colour written \"#rrggbb\"");
+      spec.value_colours.push_back(colour);
+    }
+  }
+}
+
+}  // namespace curdle::reading

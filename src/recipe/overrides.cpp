@@ -1,0 +1,89 @@
+#include "recipe/overrides.h"
+
+#include <algorithm>
+#include <charconv>
+#include <sstream>
+
+#include "curdle/error.h"
+#include "recipe/recipe.h"
+#include "recipe/toml_reader.h"
+
+namespace curdle {
+namespace reading {
+
+void apply_override(toml::table& doc, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  const std::string key = assignment.substr(0, eq);
+  if (eq == std::string::npos || key.empty())
+    throw InputError(parameter("set", key),
+                     "expects KEY=VALUE, e.g. lattice.mode=exact");
+  const std::string value = assignment.substr(eq + 1);
+  const std::string source = "override " + key;
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + value, source);
+  } catch (const toml::parse_error&) {
+    parsed = toml::parse("v = \"\"", source);  // a bare word is a string
+    parsed.insert_or_assign("v", value);
+  }
+  const toml::node& v = *parsed.get("v");
+
+  std::vector<std::string> parts;
+  for (size_t start = 0;;) {
+    const size_t dot = key.find('.', start);
+    parts.push_back(key.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  toml::node* at = &doc;
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    if (auto* t = at->as_table()) {
+      if (!t->get(part)) {
+        const bool next_is_index = std::all_of(parts[i + 1].begin(), parts[i + 1].end(), ::isdigit);
+        if (next_is_index)
+          throw InputError(parameter("set", key), "'" + part + "' has no such entry");
+        t->insert_or_assign(part, toml::table{});
+      }
+      at = t->get(part);
+    } else if (auto* a = at->as_array()) {
+      size_t idx = 0;
+      auto [p, ec] = std::from_chars(part.data(), part.data() + part.size(), idx);
+      if (ec != std::errc() || p != part.data() + part.size() || idx >= a->size())
+        throw InputError(parameter("set", key),
+                         "index '" + part + "' is out of range; the array has " +
+                             std::to_string(a->size()) + " entries (from 0)");
+      at = a->get(idx);
+    } else {
+      throw InputError(parameter("set", key),
+                       "'" + part + "' is not a table or array");
+    }
+  }
+  const std::string& last = parts.back();
+  if (auto* t = at->as_table()) {
+    v.visit([&](auto&& x) { t->insert_or_assign(last, x); });
+  } else if (auto* a = at->as_array()) {
+    size_t idx = 0;
+    auto [p, ec] = std::from_chars(last.data(), last.data() + last.size(), idx);
+    if (ec != std::errc() || idx >= a->size())
+      throw InputError(parameter("set", key), "index '" + last + "' is out of range");
+    v.visit([&](auto&& x) { a->replace(a->cbegin() + static_cast<ptrdiff_t>(idx), x); });
+  } else {
+    throw InputError(parameter("set", key), "cannot set a key inside a value");
+  }
+}
+
+
+}  // namespace reading
+
+std::string recipe_text_with(std::string_view text, const std::string& source,
+                             const std::vector<std::string>& overrides) {
+  toml::table doc = reading::parse_toml(text, source);
+  for (const auto& o : overrides) reading::apply_override(doc, o);
+  std::ostringstream out;
+  out << doc << "\n";
+  return out.str();
+}
+
+
+}  // namespace curdle

@@ -1,0 +1,86 @@
+// [layout] of kind "park": what each curd places in its cells, the ground and the clearance
+// (Cirovic 2014, fig. 5).
+#include "layout/park.h"
+#include "recipe/layout_reader.h"
+
+namespace curdle::reading {
+namespace {
+
+ParkElement read_park_element(TableReader& r, bool ground) {
+  ParkElement e;
+  e.type = read_string(r, "type", "a name such as \"tree\"").value_or(ground ? "white paving" : "");
+  if (e.type.empty())
+    r.fail("type", "is required: what the curd places, e.g. \"tree\", \"bench\", \"grey paving\"");
+  const std::string form =
+      ground ? "surface" : read_string(r, "form", "\"surface\" or \"object\"").value_or("object");
+  if (form != "surface" && form != "object")
+    r.fail("form",
+           "must be \"surface\" (fills the cell, like paving) or \"object\" (stands in it)");
+  e.surface = form == "surface";
+  if (auto c = read_string(r, "colour", "a colour written \"#rrggbb\"")) {
+    const auto colour = parse_colour(*c);
+    if (!colour) r.fail("colour", "must be a colour written \"#rrggbb\"");
+    e.colour = *colour;
+  } else {
+    e.colour = ground ? Rgb{242, 240, 234} : e.surface ? Rgb{140, 140, 140} : Rgb{58, 138, 79};
+  }
+  if (!e.surface) {
+    const auto shape = read_string(r, "shape", "\"circle\" or \"rectangle\"").value_or("circle");
+    if (shape != "circle" && shape != "rectangle")
+      r.fail("shape", "must be \"circle\" or \"rectangle\"");
+    e.round = shape == "circle";
+    const auto size = read_mm_pair(r, "size", true);
+    e.w = (*size)[0], e.h = e.round ? (*size)[0] : (*size)[1];
+  }
+  return e;
+}
+
+}  // namespace
+
+void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
+  spec.clearance = read_mm(r, "clearance", 0, 0);
+  if (const toml::node* g = r.get("ground")) {
+    if (!g->as_table())
+      r.fail("ground", "must be a table {type = \"white paving\", colour = \"#f2f0ea\"}");
+    TableReader gr(*g->as_table(), "layout.ground", r.source(), {"type", "colour"});
+    spec.ground = read_park_element(gr, true);
+  }
+  const toml::node* n = r.get("elements");
+  const toml::array* a = n ? n->as_array() : nullptr;
+  if (!a || a->size() != design.curds.size())
+    r.fail("elements", "must give one element per curd (" + std::to_string(design.curds.size()) +
+                           "), e.g. {type = \"tree\", form = \"object\", shape = \"circle\", size "
+                           "= [2400, 2400]}");
+  size_t objects = 0;
+  for (size_t i = 0; i < a->size(); ++i) {
+    const std::string path = "layout.elements." + std::to_string(i);
+    if (!a->get(i)->as_table())
+      r.fail_node(*a->get(i), path, "must be a table {type = ..., form = ...}");
+    TableReader er(*a->get(i)->as_table(), path, r.source(),
+                   {"type", "form", "shape", "size", "colour"});
+    spec.park.push_back(read_park_element(er, false));
+    objects += !spec.park.back().surface;
+  }
+  // Every object must fit in its slot when all the objects share one cell.
+  const Rect cell{0, 0, spec.module_w, spec.module_h};
+  const std::vector<Rect> slots = object_slots(cell, objects, spec.clearance);
+  for (size_t i = 0; i < spec.park.size(); ++i) {
+    const ParkElement& e = spec.park[i];
+    if (e.surface || slots.empty()) continue;
+    if (e.w > slots[0].w + 1e-9 || e.h > slots[0].h + 1e-9 || slots[0].w <= 0 || slots[0].h <= 0)
+      r.fail_node(*a->get(i), "layout.elements." + std::to_string(i),
+                  "a " + e.type + " of " + std::to_string(static_cast<int>(e.w)) + " x " +
+                      std::to_string(static_cast<int>(e.h)) + " mm does not fit when " +
+                      std::to_string(objects) + " objects share a " +
+                      std::to_string(static_cast<int>(spec.module_w)) + " x " +
+                      std::to_string(static_cast<int>(spec.module_h)) + " mm cell with " +
+                      std::to_string(static_cast<int>(spec.clearance)) +
+                      " mm clearance (each gets " +
+                      std::to_string(static_cast<int>(std::max(0.0, slots[0].w))) + " x " +
+                      std::to_string(static_cast<int>(std::max(0.0, slots[0].h))) +
+                      " mm); use smaller elements, a larger cell or less clearance");
+  }
+}
+
+
+}  // namespace curdle::reading

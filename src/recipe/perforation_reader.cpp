@@ -1,0 +1,74 @@
+// [layout] of kind "perforation": one opening per curd, the sheet and the fabrication rules.
+#include <cmath>
+
+#include "recipe/layout_reader.h"
+
+namespace curdle::reading {
+
+void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
+  spec.thickness = read_mm(r, "thickness", 0, 0, true);
+  if (spec.thickness <= 0) r.fail("thickness", "must be above 0 mm");
+  spec.min_diameter = read_mm(r, "min_diameter", 0, 0);
+  spec.min_bridge = read_mm(r, "min_bridge", 0, 0);
+  spec.edge_margin = read_mm(r, "edge_margin", 0, 0);
+  spec.chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
+  if (spec.chord_tolerance <= 0) r.fail("chord_tolerance", "must be above 0 mm, e.g. 0.05");
+  const auto fix = read_string(r, "fix", "\"none\" or \"drop\"").value_or("none");
+  if (fix == "none")
+    spec.fix = HoleFix::none;
+  else if (fix == "drop")
+    spec.fix = HoleFix::drop;
+  else
+    r.fail("fix",
+           "must be \"none\" (report only) or \"drop\" (drop the openings that break a rule)");
+  const toml::node* n = r.get("holes");
+  if (!n)
+    r.fail(
+        "holes",
+        "is required: one {diameter, offset} per curd, e.g. [{diameter = 20, offset = [-10, 0]}]");
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != design.curds.size())
+    r.fail("holes",
+           "must give one {diameter, offset} per curd: " + std::to_string(design.curds.size()) +
+               " curds, " + std::to_string(a ? a->size() : 0) + " holes");
+  for (size_t i = 0; i < a->size(); ++i) {
+    const std::string path = "layout.holes." + std::to_string(i);
+    const toml::table* h = a->get(i)->as_table();
+    if (!h) r.fail_node(*a->get(i), path, "must be a table {diameter = 20, offset = [0, 0]}");
+    TableReader hr(*h, path, r.source(), {"diameter", "offset"});
+    HoleSpec hole;
+    hole.diameter = read_mm(hr, "diameter", 0, 0, true);
+    if (hole.diameter <= 0) hr.fail("diameter", "must be above 0 mm");
+    if (const auto off = hr.get("offset")) {
+      const toml::array* o = off->as_array();
+      const auto x = o && o->size() == 2 ? o->get(0)->value<double>() : std::nullopt;
+      const auto y = o && o->size() == 2 ? o->get(1)->value<double>() : std::nullopt;
+      if (!x || !y) hr.fail("offset", "must be [x, y] in millimetres from the cell centre");
+      hole.offset_x = *x, hole.offset_y = *y;
+    }
+    if (std::fabs(hole.offset_x) + hole.diameter / 2 > spec.module_w / 2 + 1e-9 ||
+        std::fabs(hole.offset_y) + hole.diameter / 2 > spec.module_h / 2 + 1e-9)
+      r.fail_node(
+          *a->get(i), path,
+          "a hole of " + std::to_string(hole.diameter) + " mm at that offset does not fit in its " +
+              std::to_string(static_cast<int>(spec.module_w)) + " x " +
+              std::to_string(static_cast<int>(spec.module_h)) +
+              " mm cell; holes must lie inside their cells (smaller, or nearer the centre)");
+    spec.holes.push_back(hole);
+  }
+  spec.sheet_size = read_mm_pair(r, "sheet_size");
+  if (spec.sheet_size) {
+    double largest = 0;
+    for (const HoleSpec& h : spec.holes) largest = std::max(largest, h.diameter);
+    if ((*spec.sheet_size)[0] < largest + 2 * spec.edge_margin ||
+        (*spec.sheet_size)[1] < largest + 2 * spec.edge_margin)
+      r.fail("sheet_size", "a sheet must hold the largest opening (" +
+                               std::to_string(static_cast<int>(largest)) +
+                               " mm) within its margins (2 x " +
+                               std::to_string(static_cast<int>(spec.edge_margin)) +
+                               " mm); give a larger sheet_size");
+  }
+}
+
+
+}  // namespace curdle::reading

@@ -1,0 +1,173 @@
+#include "recipe/toml_reader.h"
+
+#include "curdle/palette.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace curdle::reading {
+namespace {
+
+size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diag = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1])});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+
+}  // namespace
+
+std::string join(const std::vector<std::string>& items) {
+  std::string s;
+  for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
+  return s;
+}
+
+SourceLocation locate(const Source& source, const toml::source_region& region,
+                      const std::string& key) {
+  for (const auto& o : source.overridden)
+    if (key == o || key.rfind(o + ".", 0) == 0 || o.rfind(key + ".", 0) == 0)
+      return parameter("set", key);
+  SourceLocation where{source.file, 0, 0, key};
+  where.line = static_cast<int>(region.begin.line);
+  where.column = static_cast<int>(region.begin.column);
+  return where;
+}
+
+int64_t read_int(TableReader& r, const std::string& key, int64_t fallback, int64_t lo, int64_t hi,
+                 bool required) {
+  const toml::node* n = r.get(key);
+  if (!n) {
+    if (required)
+      r.fail(key, "is required: a whole number from " + std::to_string(lo) + " to " +
+                      std::to_string(hi));
+    return fallback;
+  }
+  const auto v = n->value<int64_t>();
+  if (!n->is_integer() || !v || *v < lo || *v > hi)
+    r.fail(key, "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+  return *v;
+}
+
+std::optional<std::string> read_string(TableReader& r, const std::string& key,
+                                       const std::string& allowed) {
+  const toml::node* n = r.get(key);
+  if (!n) return std::nullopt;
+  if (!n->is_string()) r.fail(key, "must be a string in double quotes: " + allowed);
+  return *n->value<std::string>();
+}
+
+const toml::table* read_table(TableReader& r, const std::string& key) {
+  const toml::node* n = r.get(key);
+  if (!n) return nullptr;
+  if (!n->is_table()) r.fail(key, "must be a table, written [" + key + "]");
+  return n->as_table();
+}
+
+std::optional<Rgb> parse_colour(std::string_view s) { return parse_hex_colour(s); }
+
+Probability read_probability(const TableReader& r, const toml::node& n, const std::string& path) {
+  std::optional<Probability> p;
+  if (n.is_string())
+    p = Probability::parse(*n.value<std::string>());
+  else if (n.is_integer())
+    p = Probability::from_double(static_cast<double>(*n.value<int64_t>()));
+  else if (n.is_floating_point())
+    p = Probability::from_double(*n.value<double>());
+  if (!p)
+    r.fail_node(n, path,
+                "a probability is a fraction like \"3/4\" or a decimal like \"0.75\", from 0 to 1");
+  return *p;
+}
+
+double read_mm(TableReader& r, const std::string& key, double fallback, double lo,
+               bool required) {
+  const toml::node* n = r.get(key);
+  if (!n) {
+    if (required) r.fail(key, "is required: a length in millimetres");
+    return fallback;
+  }
+  const auto v = n->value<double>();
+  if (!v || !std::isfinite(*v) || *v < lo || *v > 1e7)
+    r.fail(key, "must be a length in millimetres from " + std::to_string(static_cast<int>(lo)) +
+                    " to 10 km");
+  return *v;
+}
+
+std::optional<std::array<double, 2>> read_mm_pair(TableReader& r, const std::string& key,
+                                                  bool required) {
+  const toml::node* n = r.get(key);
+  if (!n) {
+    if (required) r.fail(key, "is required: [width, height] in millimetres");
+    return std::nullopt;
+  }
+  const toml::array* a = n->as_array();
+  std::array<double, 2> v{};
+  if (!a || a->size() != 2) r.fail(key, "must be [width, height] in millimetres");
+  for (size_t i = 0; i < 2; ++i) {
+    const auto x = a->get(i)->value<double>();
+    if (!x || !std::isfinite(*x) || *x <= 0 || *x > 1e7)
+      r.fail(key, "must be [width, height] in millimetres, each above 0 and up to 10 km");
+    v[i] = *x;
+  }
+  return v;
+}
+
+bool read_bool(TableReader& r, const std::string& key, bool fallback) {
+  const toml::node* n = r.get(key);
+  if (!n) return fallback;
+  if (!n->is_boolean()) r.fail(key, "must be true or false");
+  return *n->value<bool>();
+}
+
+toml::table parse_toml(std::string_view text, const std::string& source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(SourceLocation{source, static_cast<int>(e.source().begin.line),
+                                    static_cast<int>(e.source().begin.column), ""},
+                     "not valid TOML: " + std::string(e.description()));
+  }
+}
+
+
+std::optional<Rgb> read_colour(TableReader& r, const std::string& key) {
+  const auto text = read_string(r, key, "a colour written \"#rrggbb\"");
+  if (!text) return std::nullopt;
+  const auto colour = parse_colour(*text);
+  if (!colour) r.fail(key, "must be a colour written \"#rrggbb\", e.g. \"#c0392b\"");
+  return colour;
+}
+
+void TableReader::reject_unknown() const {
+  if (table_.empty()) return;
+  for (auto&& [k, v] : table_) {
+    const std::string key(k.str());
+    if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
+    std::string best;
+    size_t best_d = 99;
+    for (const auto& candidate : known_) {
+      const size_t d = edit_distance(key, candidate);
+      if (d < best_d) best_d = d, best = candidate;
+    }
+    std::string msg = "unknown key '" + key + "'";
+    if (best_d <= std::max<size_t>(2, key.size() / 3))
+      msg += "; did you mean '" + best + "'?";
+    else
+      msg += ".";
+    msg += " Allowed here: " + join(known_) + ".";
+    throw InputError(locate(source_, v.source(), key_path(key)), msg);
+  }
+}
+
+}  // namespace curdle::reading

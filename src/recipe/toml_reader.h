@@ -1,0 +1,87 @@
+// Reading recipe TOML: one table at a time, with its allowed keys known up front so that an
+// unknown key (often a misspelt required one) is reported first, with a did-you-mean; every
+// error names the file, line, column and key, or the override that set the key.
+#pragma once
+
+#include <toml++/toml.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "curdle/curd.h"
+#include "curdle/error.h"
+#include "curdle/probability.h"
+
+namespace curdle::reading {
+
+std::string join(const std::vector<std::string>& items);
+
+// Where the recipe came from: its file, and the keys the command line overrode.
+struct Source {
+  std::string file;
+  std::vector<std::string> overridden;  // dotted keys given with --set
+};
+
+
+SourceLocation locate(const Source& source, const toml::source_region& region,
+                      const std::string& key);
+
+// Reads one table whose allowed keys are known up front, so that an unknown key (often a
+// misspelt required one) is reported before anything else.
+class TableReader {
+ public:
+  TableReader(const toml::table& table, std::string path, const Source& source,
+              std::vector<std::string> allowed)
+      : table_(table), path_(std::move(path)), source_(source), known_(std::move(allowed)) {
+    reject_unknown();
+  }
+
+  const toml::node* get(const std::string& key) const { return table_.get(key); }
+  std::string key_path(const std::string& key) const {
+    return path_.empty() ? key : path_ + "." + key;
+  }
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    const toml::node* n = table_.get(key);
+    throw InputError(locate(source_, n ? n->source() : table_.source(), key_path(key)), what);
+  }
+  [[noreturn]] void fail_node(const toml::node& n, const std::string& key_path,
+                              const std::string& what) const {
+    throw InputError(locate(source_, n.source(), key_path), what);
+  }
+
+  // Every key not asked for is an error, with the closest known key as a suggestion.
+  void reject_unknown() const;
+
+  const Source& source() const { return source_; }
+
+ private:
+  const toml::table& table_;
+  std::string path_;
+  const Source& source_;
+  std::vector<std::string> known_;
+};
+
+int64_t read_int(TableReader& r, const std::string& key, int64_t fallback, int64_t lo, int64_t hi,
+                 bool required = false);
+std::optional<std::string> read_string(TableReader& r, const std::string& key,
+                                       const std::string& allowed = "text");
+const toml::table* read_table(TableReader& r, const std::string& key);
+std::optional<Rgb> parse_colour(std::string_view s);
+// A colour written "#rrggbb", or the fallback when the key is absent.
+std::optional<Rgb> read_colour(TableReader& r, const std::string& key);
+Probability read_probability(const TableReader& r, const toml::node& n, const std::string& path);
+// A length in millimetres from `lo` to 10 km.
+double read_mm(TableReader& r, const std::string& key, double fallback, double lo,
+               bool required = false);
+// [width, height] in millimetres, each above 0.
+std::optional<std::array<double, 2>> read_mm_pair(TableReader& r, const std::string& key,
+                                                  bool required = false);
+bool read_bool(TableReader& r, const std::string& key, bool fallback);
+// The text as TOML, or InputError at the first syntax error.
+toml::table parse_toml(std::string_view text, const std::string& source);
+
+}  // namespace curdle::reading
