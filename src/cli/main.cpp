@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "cli/generate_command.h"
+#include "cli/exit_code.h"
 #include "cli/options.h"
 #include "cli/search_command.h"
 #include "cli/serve_command.h"
@@ -62,7 +63,7 @@ int run(int argc, char** argv) {
   }
   if (gen->parsed()) return run_generate(gen_options, out_dir, outputs);
   if (find->parsed()) return run_search(search_options);
-  if (serve->parsed()) return run_serve(serve_options);
+  if (serve->parsed()) return exec_serve(argc, argv);
   return run_report(report_options);
 }
 
@@ -70,17 +71,5 @@ int run(int argc, char** argv) {
 }  // namespace curdle::cli
 
 int main(int argc, char** argv) {
-  try {
-    return curdle::cli::run(argc, argv);
-  } catch (const curdle::InputError& e) {
-    std::fprintf(stderr, "curdle: error: %s\n",
-                 curdle::render_error(e, curdle::cli::option_name).c_str());
-    return 2;
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "curdle: internal error: out of memory\n");
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "curdle: internal error: %s\n", e.what());
-    return 1;
-  }
+  return curdle::cli::exit_code([&] { return curdle::cli::run(argc, argv); });
 }
