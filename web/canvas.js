@@ -1,0 +1,174 @@
+// The page: drawing the curd on the canvas, and selecting a segment on it (loaded before app.js,
+// which holds the state and starts the page).
+"use strict";
+
+// ---- drawing ----
+
+function decodeValues(b64, bytes) {
+  const raw = atob(b64);
+  const n = raw.length / bytes;
+  const out = new Uint16Array(n);
+  for (let i = 0; i < n; ++i)
+    out[i] = bytes === 1 ? raw.charCodeAt(i) : raw.charCodeAt(2 * i) | raw.charCodeAt(2 * i + 1) << 8;
+  return out;
+}
+
+function hexToRgb(h) {
+  const n = parseInt(h.slice(1), 16);
+  return [n >> 16 & 255, n >> 8 & 255, n & 255];
+}
+
+function fieldSize() {
+  const v = state.whole.view;
+  return state.whole.lattice.dimension === 1 ? [v[1], 1] : [v[2], v[3]];
+}
+
+function draw() {
+  const canvas = $("curd");
+  const whole = state.whole;
+  if (!whole.values) {
+    canvas.width = canvas.height = 1;
+    showError("The page draws 1-D and 2-D lattices; for 3-D, use the report here and curdle generate.");
+    return;
+  }
+  const [w, h] = fieldSize();
+  const values = decodeValues(whole.values, whole.value_bytes);
+  const colours = whole.legend.map((e) => hexToRgb(e.colour));
+  canvas.width = w;
+  canvas.height = h;
+  const ctx = canvas.getContext("2d");
+  const image = ctx.createImageData(w, h);
+  // Cell y grows upwards, as in the layouts; the canvas's rows grow downwards.
+  for (let y = 0; y < h; ++y)
+    for (let x = 0; x < w; ++x) {
+      const c = colours[values[y * w + x]] || [255, 0, 255];
+      const o = ((h - 1 - y) * w + x) * 4;
+      image.data[o] = c[0]; image.data[o + 1] = c[1]; image.data[o + 2] = c[2]; image.data[o + 3] = 255;
+    }
+  ctx.putImageData(image, 0, 0);
+  const room = Math.min($("view").clientWidth - 4, window.innerHeight - 220);
+  const scale = Math.max(1, Math.floor(Math.max(room, 200) / Math.max(w, h))) || 1;
+  const cssScale = Math.max(w, h) * scale > room ? room / Math.max(w, h) : scale;
+  canvas.style.width = `${w * cssScale}px`;
+  canvas.style.height = `${Math.max(h * cssScale, h === 1 ? 40 : 0)}px`;
+  placeSelection();
+}
+
+function placeSelection() {
+  const box = $("selection");
+  if (!state.segment || !state.whole) { box.hidden = true; return; }
+  const [w, h] = fieldSize();
+  const canvas = $("curd");
+  const sx = canvas.clientWidth / w, sy = canvas.clientHeight / h;
+  const [x, y, sw, sh] = state.segment;
+  box.hidden = false;
+  box.style.left = `${x * sx}px`;
+  box.style.width = `${sw * sx}px`;
+  box.style.top = `${(h - y - sh) * sy}px`;
+  box.style.height = `${sh * sy}px`;
+  const layout = state.whole.layout;
+  let size = "";
+  if (layout && layout.size_mm && layout.segment_cells[0] === sw && layout.segment_cells[1] === sh)
+    size = ` · the floor, ${layout.size_mm[0] / 1000} × ${layout.size_mm[1] / 1000} m`;
+  else if (layout)
+    size = ` · ${(sw * layout.cell_mm[0] / 1000).toFixed(2)} × ${(sh * layout.cell_mm[1] / 1000).toFixed(2)} m`;
+  $("segment-text").textContent = `Segment ${windowText()} (x, y, width, height in cells)${size}`;
+  if (document.activeElement !== $("window-text")) $("window-text").value = windowText();
+}
+
+// ---- selection ----
+
+function fixMode() { return document.querySelector("input[name=fix]:checked").value; }
+function setFix(mode) {
+  document.querySelector(`input[name=fix][value=${mode}]`).checked = true;
+  const floor = state.recipe.layout && state.recipe.layout.segment_cells;
+  if (mode === "floor" && floor) { $("fix-w").value = floor[0]; $("fix-h").value = floor[1]; }
+  $("fix-w").disabled = $("fix-h").disabled = mode === "free" || mode === "floor";
+}
+
+// The fixed size in cells, or null when the selection is free.
+function fixedCells() {
+  const mode = fixMode();
+  const layout = state.whole && state.whole.layout;
+  if (mode === "free") return null;
+  if (mode === "floor" && layout && layout.segment_cells) return layout.segment_cells.slice();
+  const w = Number($("fix-w").value), h = Number($("fix-h").value);
+  if (!(w > 0) || !(h > 0)) return null;
+  if (mode === "metres") {
+    if (!layout) { showError("This recipe has no layout, so sizes in metres have no meaning; give cells."); return null; }
+    return [Math.max(1, Math.round(w * 1000 / layout.cell_mm[0])), Math.max(1, Math.round(h * 1000 / layout.cell_mm[1]))];
+  }
+  return [Math.max(1, Math.round(w)), Math.max(1, Math.round(h))];
+}
+
+function cellAt(event) {
+  const canvas = $("curd");
+  const rect = canvas.getBoundingClientRect();
+  const [w, h] = fieldSize();
+  const x = Math.floor((event.clientX - rect.left) / rect.width * w);
+  const y = h - 1 - Math.floor((event.clientY - rect.top) / rect.height * h);
+  return [Math.max(0, Math.min(w - 1, x)), Math.max(0, Math.min(h - 1, y))];
+}
+
+function segmentFrom(a, b) {
+  const [w, h] = fieldSize();
+  const fixed = fixedCells();
+  if (fixed) {
+    const sw = Math.min(fixed[0], w), sh = Math.min(fixed[1], h);
+    // The fixed segment is centred on the pointer, kept inside the field.
+    const x = Math.max(0, Math.min(w - sw, b[0] - Math.floor(sw / 2)));
+    const y = Math.max(0, Math.min(h - sh, b[1] - Math.floor(sh / 2)));
+    return [x, y, sw, sh];
+  }
+  const x0 = Math.min(a[0], b[0]), x1 = Math.max(a[0], b[0]);
+  const y0 = Math.min(a[1], b[1]), y1 = Math.max(a[1], b[1]);
+  return [x0, y0, x1 - x0 + 1, y1 - y0 + 1];
+}
+
+function fitSegmentToField() {
+  if (!state.segment || !state.whole || !state.whole.values) return;
+  const [w, h] = fieldSize();
+  let [x, y, sw, sh] = state.segment;
+  sw = Math.min(sw, w); sh = Math.min(sh, h);
+  x = Math.max(0, Math.min(w - sw, x)); y = Math.max(0, Math.min(h - sh, y));
+  state.segment = [x, y, sw, sh];
+}
+
+let dragFrom = null;
+function wireCanvas() {
+  const canvas = $("curd");
+  canvas.addEventListener("pointerdown", (e) => {
+    if (!state.whole || !state.whole.values) return;
+    canvas.setPointerCapture(e.pointerId);
+    dragFrom = cellAt(e);
+    state.segment = segmentFrom(dragFrom, dragFrom);
+    placeSelection();
+  });
+  canvas.addEventListener("pointermove", (e) => {
+    if (!state.whole || !state.whole.values) return;
+    const cell = cellAt(e);
+    const v = decodeValueAt(cell);
+    $("hover").textContent = `cell ${cell[0]}, ${cell[1]}: ${v === null ? "" : state.whole.legend[v].label}`;
+    if (!dragFrom) return;
+    state.segment = segmentFrom(dragFrom, cell);
+    placeSelection();
+  });
+  const end = (e) => {
+    if (!dragFrom) return;
+    state.segment = segmentFrom(dragFrom, cellAt(e));
+    dragFrom = null;
+    placeSelection();
+    refreshSegment();
+  };
+  canvas.addEventListener("pointerup", end);
+  canvas.addEventListener("pointercancel", () => { dragFrom = null; });
+}
+
+let decodedCache = { key: null, values: null };
+function decodeValueAt([x, y]) {
+  const whole = state.whole;
+  if (decodedCache.key !== whole.values) decodedCache = { key: whole.values, values: decodeValues(whole.values, whole.value_bytes) };
+  const [w] = fieldSize();
+  const v = decodedCache.values[y * w + x];
+  return v === undefined ? null : v;
+}

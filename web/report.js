@@ -1,0 +1,119 @@
+// The page: the values, box-dimension and per-stage tables, the reproducing command, the
+// downloads and the layout drawing (loaded before app.js).
+"use strict";
+
+// ---- report ----
+
+const fmt = (x, digits = 4) => (x === null || x === undefined || Number.isNaN(x)) ? "–" : Number(x).toFixed(digits);
+
+function renderReport() {
+  const whole = state.whole;
+  if (!whole) return;
+  const seg = state.segmentReport;
+  const legend = whole.legend;
+  const cells = whole.report.cells, segCells = seg ? seg.report.cells : 0;
+  const head = ["Value", "Whole", "ratio", "expected"].concat(seg ? ["Segment", "ratio", "÷ exp."] : []);
+  let html = "<tr>" + head.map((h, i) => `<th class="${i >= 4 ? "seg" : ""}">${h}</th>`).join("") + "</tr>";
+  whole.report.values.forEach((v, i) => {
+    const expectedRatio = v.expected / cells;
+    html += `<tr><td><span class="chip" style="background:${legend[i] ? legend[i].colour : "#fff"}"></span>${escapeHtml(v.label)}</td>` +
+      `<td>${v.count}</td><td>${fmt(v.count / cells)}</td><td>${fmt(expectedRatio)}</td>`;
+    if (seg) {
+      const s = seg.report.values[i];
+      const ratio = s.count / segCells;
+      html += `<td class="seg">${s.count}</td><td class="seg">${fmt(ratio)}</td>` +
+        `<td class="seg">${expectedRatio > 0 ? fmt(ratio / expectedRatio, 2) : "–"}</td>`;
+    }
+    html += "</tr>";
+  });
+  $("values-table").innerHTML = html;
+
+  let dims = "<tr><th>Curd</th><th>theory</th><th>whole</th><th>R²</th>" + (seg ? '<th class="seg">segment</th><th class="seg">R²</th>' : "") + "</tr>";
+  whole.report.curds.forEach((c, i) => {
+    const s = seg ? seg.report.curds[i] : null;
+    dims += `<tr><td>${escapeHtml(c.name)}</td><td>${fmt(c.box_dimension.theory, 3)}</td><td>${fmt(c.box_dimension.fit, 3)}</td><td>${fmt(c.box_dimension.r2, 3)}</td>` +
+      (s ? `<td class="seg">${fmt(s.box_dimension.fit, 3)}</td><td class="seg">${fmt(s.box_dimension.r2, 3)}</td>` : "") + "</tr>";
+  });
+  $("dimension-table").innerHTML = dims;
+
+  const stages = $("stages-tables");
+  stages.textContent = "";
+  whole.report.curds.forEach((c, i) => {
+    const t = document.createElement("table");
+    const s = seg ? seg.report.curds[i] : null;
+    let rows = `<caption>${escapeHtml(c.name)}</caption><tr><th title="stage">k</th><th>p</th><th>N</th>` +
+      `<th title="expected survivors ± standard deviation">expected</th><th title="boxes with a survivor">boxes</th>` +
+      `<th title="local box dimension">D</th>` +
+      (s ? '<th class="seg" title="survivors in the segment">seg. N</th><th class="seg" title="expected in the segment">expected</th>' : "") + "</tr>";
+    c.stages.forEach((k, j) => {
+      rows += `<tr><td>${k.stage}</td><td>${escapeHtml(k.probability_text)}</td><td>${k.survivors}</td>` +
+        `<td>${fmt(k.expected, 1)} ± ${fmt(k.expected_sd, 1)}</td><td>${k.box_count}</td><td>${fmt(k.local_dimension, 3)}</td>` +
+        (s ? `<td class="seg">${s.stages[j].survivors}</td><td class="seg">${fmt(s.stages[j].expected, 1)}</td>` : "") + "</tr>";
+    });
+    t.innerHTML = rows;
+    stages.append(t);
+  });
+  const shown = seg || whole;
+  $("command").textContent = shown.command;
+}
+
+function escapeHtml(s) {
+  return String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" }[c]));
+}
+
+function renderExports() {
+  const box = $("exports");
+  box.textContent = "";
+  const hasLayout = !!(state.whole && state.whole.layout);
+  const win = windowText();
+  const own = state.whole && state.whole.default_window;
+  $("export-what").textContent = win ? `segment ${win}`
+    : own ? `the recipe's segment ${own.join(",")}` : "whole field";
+  // The server lists what this recipe can download (its registry of outputs).
+  for (const name of (state.whole || state.recipe).downloads) {
+    const a = document.createElement("a");
+    a.href = "/api/export?" + query({ file: name, window: win || undefined });
+    a.download = name;
+    a.textContent = name;
+    box.append(a);
+  }
+  // The recipe text and the drawn layout cost more than a regenerate: they wait until the
+  // controls rest, so that a moving slider never queues them ahead of the curd.
+  clearTimeout(slowTimer);
+  slowTimer = setTimeout(() => {
+    updateRecipeText();
+    updateLayoutPreview(hasLayout, win);
+  }, 300);
+}
+let slowTimer = null;
+
+let recipeController = null;
+async function updateRecipeText() {
+  if (recipeController) recipeController.abort();
+  recipeController = new AbortController();
+  try {
+    const response = await fetch("/api/export?" + query({ file: "recipe.toml", window: windowText() || undefined }),
+                                 { signal: recipeController.signal });
+    if (response.ok) $("recipe-toml").textContent = await response.text();
+  } catch (err) { /* a newer request took over */ }
+}
+
+function updateLayoutPreview(hasLayout, win) {
+  const figure = $("layout-figure");
+  const cells = state.segment ? state.segment[2] * state.segment[3] : (state.whole ? state.whole.report.cells : 0);
+  if (!hasLayout || cells > 40000) { figure.hidden = true; return; }
+  figure.hidden = false;
+  const img = $("layout-preview");
+  const src = "/api/export?" + query({ file: "layout.png", window: win || undefined });
+  if (img.getAttribute("src") === src) return;
+  // Until the new drawing arrives, the old one is dimmed and the caption says so.
+  img.classList.add("stale");
+  $("layout-caption").textContent = "Drawing the layout…";
+  img.onload = () => {
+    img.classList.remove("stale");
+    $("layout-caption").textContent = `The layout of ${win ? "segment " + win : "the field"}, as layout.png`;
+    img.dataset.shown = src;
+  };
+  img.onerror = () => { $("layout-caption").textContent = "The layout could not be drawn."; };
+  img.src = src;
+}
