@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -28,11 +30,41 @@ void OutputSink::write_via_file(const std::string& name,
   write(name, [&](std::ostream& out) { out << bytes.str(); });
 }
 
-StagingDirectory::StagingDirectory(fs::path dir) : dir_(std::move(dir)) { make_output_dir(dir_); }
+StagingDirectory::StagingDirectory(fs::path dir) : dir_(std::move(dir)) {
+  // The nearest existing ancestor must be a directory we may write into; nothing is made yet,
+  // so that a run that fails leaves no new directory behind.
+  fs::path existing = fs::absolute(dir_).lexically_normal();
+  std::error_code ec;
+  while (!fs::exists(existing, ec) && existing.has_relative_path()) existing = existing.parent_path();
+  if (!fs::is_directory(existing, ec))
+    throw InputError("cannot create the output directory " + dir_.string() + ": " +
+                     existing.string() + " is a file in the way");
+  if (::access(existing.c_str(), W_OK) != 0)
+    throw InputError("cannot create the output directory " + dir_.string() + ": " +
+                     std::strerror(errno));
+}
+
+StagingDirectory::~StagingDirectory() {
+  if (committed_) return;
+  staged_.clear();  // removes the staged files
+  std::error_code ec;
+  for (auto it = made_.rbegin(); it != made_.rend(); ++it) fs::remove(*it, ec);  // if empty
+}
+
+void StagingDirectory::make_dir(const fs::path& dir) {
+  std::vector<fs::path> missing;
+  std::error_code ec;
+  for (fs::path p = dir; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    missing.push_back(p);
+    if (!p.has_relative_path() || p == p.parent_path()) break;
+  }
+  make_output_dir(dir);
+  made_.insert(made_.end(), missing.rbegin(), missing.rend());
+}
 
 StagedFile& StagingDirectory::stage(const std::string& name) {
   const fs::path target = dir_ / name;
-  if (target.parent_path() != dir_) make_output_dir(target.parent_path());
+  make_dir(target.parent_path());
   staged_.push_back(std::make_unique<StagedFile>(target));
   return *staged_.back();
 }
@@ -48,8 +80,10 @@ void StagingDirectory::write_via_file(const std::string& name,
 }
 
 void StagingDirectory::commit() {
+  if (staged_.empty()) make_dir(dir_);  // a run with nothing to write still makes its directory
   for (auto& f : staged_) f->check_replaceable();
   for (auto& f : staged_) f->commit();
+  committed_ = true;
 }
 
 std::vector<fs::path> StagingDirectory::files() const {

@@ -25,10 +25,12 @@ class OutputSink {
 };
 
 // Stages every file beside its target in `dir`; commit() renames them all into place, and a
-// sink destroyed before that removes what it staged.
+// sink destroyed before that removes what it staged, and the directories it made.
 class StagingDirectory : public OutputSink {
  public:
-  explicit StagingDirectory(std::filesystem::path dir);  // creates `dir` or throws InputError
+  // Throws InputError when `dir` cannot be made or written; makes it at the first file.
+  explicit StagingDirectory(std::filesystem::path dir);
+  ~StagingDirectory() override;
   void write(const std::string& name, const std::function<void(std::ostream&)>& fill) override;
   void write_via_file(const std::string& name,
                       const std::function<void(const std::filesystem::path&)>& fill) override;
@@ -38,8 +40,11 @@ class StagingDirectory : public OutputSink {
 
  private:
   StagedFile& stage(const std::string& name);
+  void make_dir(const std::filesystem::path& dir);
   std::filesystem::path dir_;
   std::vector<std::unique_ptr<StagedFile>> staged_;
+  std::vector<std::filesystem::path> made_;  // directories this sink created, outermost first
+  bool committed_ = false;
 };
 
 // Keeps every file in memory, by name.
