@@ -308,7 +308,8 @@ RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outpu
     s.elements = layout->elements.size();
     s.cut = cut_elements(*layout);
     s.omitted = layout->omitted;
-    s.sheets = layout->sheets.size();
+    for (const Output* o : outputs)
+      if (o->name == "sheets") s.sheets = layout->sheets.size();
     s.width = layout->width;
     s.height = layout->height;
     s.drawing_scale = drawing_scale(*layout, *spec);
