@@ -49,7 +49,8 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
       row.stage = k;
       row.probability = spec.probabilities[k - 1];
       row.cells = cells_meeting(l, k, view);
-      row.survivors = curd.stages[k].count();
+      // The finest level's box count is its survivors: no second pass over the largest stage.
+      row.survivors = k == l.stages ? cr.box_counts[k] : curd.stages[k].count();
       row.expected = expected_survivors(l, spec.probabilities, k, view);
       row.expected_sd =
           quota && !report.sd_is_approximate ? 0.0 : survivors_sd(l, spec.probabilities, k, view);
@@ -69,7 +70,12 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     report.curds.push_back(std::move(cr));
   }
 
-  const std::vector<uint64_t> counts = value_counts(field);
+  // One curd's values are its final survivors and the rest: counted already.
+  const std::vector<uint64_t> counts =
+      design.curds.size() == 1
+          ? std::vector<uint64_t>{field.generated.cells() - report.curds[0].box_counts.back(),
+                                  report.curds[0].box_counts.back()}
+          : value_counts(field);
   const double cells = static_cast<double>(cells_meeting(l, l.stages, view));
   for (uint32_t v = 0; v < counts.size(); ++v) {
     ValueRow row;
