@@ -16,24 +16,24 @@ namespace {
 
 constexpr double kEps = 1e-6;
 
-const char* prefix(LayoutKind kind) {
+char id_kind(LayoutKind kind) {
   switch (kind) {
     case LayoutKind::tile:
-      return "T";
+      return 'T';
     case LayoutKind::paving:
-      return "P";
+      return 'P';
     case LayoutKind::facade:
-      return "F";
+      return 'F';
     case LayoutKind::perforation:
-      return "C";  // cells; their openings become "H-..."
+      return 'C';  // cells; their openings become "H-..."
     case LayoutKind::park:
-      return "C";  // cells; their elements become "K-..."
+      return 'C';  // cells; their elements become "K-..."
     case LayoutKind::rhythm:
-      return "B";  // bays; their elements become "R-..."
+      return 'B';  // bays; their elements become "R-..."
     case LayoutKind::blocks:
-      return "V";
+      return 'B';  // "B-L..-R..-C.."
   }
-  return "E";
+  return 'E';
 }
 
 
@@ -41,13 +41,6 @@ Rect clip(const Rect& r, double width, double height) {
   const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
   const double x1 = std::min(width, r.right()), y1 = std::min(height, r.top());
   return Rect{x0, y0, std::max(0.0, x1 - x0), std::max(0.0, y1 - y0)};
-}
-
-std::string element_id(LayoutKind kind, int64_t row, int64_t column, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%s-R%0*lld-C%0*lld", prefix(kind), digits,
-                static_cast<long long>(row), digits, static_cast<long long>(column));
-  return buf;
 }
 
 }  // namespace
@@ -170,7 +163,8 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
       }
       e.cut = e.area() < e.nominal.area() - kEps;
       if (laid.w < spec.module_w / 4 - kEps || laid.h < spec.module_h / 4 - kEps) ++slivers;
-      e.id = element_id(spec.kind, row, column, digits);
+      e.key = ElementId{id_kind(spec.kind), digits, std::nullopt, row, column, ""};
+      e.id = e.key.text();
       layout.elements.push_back(std::move(e));
     }
   }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "curdle/curd.h"
+#include "layout/element_id.h"
 
 namespace curdle {
 
@@ -116,7 +117,8 @@ struct LayoutSpec {
 };
 
 struct Element {
-  std::string id;                  // stable and readable: prefix, row and column in laying order
+  ElementId key;                   // stable and readable: kind, row and column in laying order
+  std::string id;                  // key.text(), formatted once
   uint32_t value = 0;              // the overlay value of its cell
   int64_t row = 0, column = 0;     // laying order from the origin corner
   int64_t cell_x = 0, cell_y = 0;  // the field cell it stands for

@@ -33,7 +33,8 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
     auto add = [&](const ParkElement& kind, std::vector<Rect> shape, std::optional<Circle> circle,
                    const std::string& suffix) {
       Element e = cell;
-      e.id = fmt::format("K{}-{}", cell.id.substr(1), suffix);
+      e.key = cell.key.within('K', suffix);
+      e.id = e.key.text();
       e.type = kind.type;
       e.colour = kind.colour;
       e.shape = std::move(shape);

@@ -74,7 +74,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
       h.element = cell;
       h.element.shape.clear();
       h.element.cut = false;
-      h.element.id = fmt::format("H{}-{}", cell.id.substr(1), ++index);
+      h.element.key = cell.key.within('H', std::to_string(++index));
+      h.element.id = h.element.key.text();
       if (group.size() == 1) {
         h.element.circle = group[0];
         h.parts = group;

@@ -19,7 +19,8 @@ void set_rhythm(Layout& layout, const LayoutSpec& spec) {
     const Rect bay = e.nominal;
     e.shape = {Rect{bay.x + (bay.w - w) / 2, bay.y, w, bay.h}};
     e.cut = false;
-    e.id = fmt::format("R-{}", e.id.substr(2));
+    e.key = e.key.as('R');
+    e.id = e.key.text();
     layout.elements.push_back(std::move(e));
   }
 }
@@ -58,7 +59,8 @@ Layout stack_blocks(const Design& design, const CurdField& field, const Box& vie
         e.cell_x = view.origin[0] + x, e.cell_y = view.origin[1] + y, e.cell_z = view.origin[2] + z;
         e.nominal = Rect{x * w, y * d, w, d};
         e.shape = {e.nominal};
-        e.id = fmt::format("B-L{:0{}}-R{:0{}}-C{:0{}}", z, digits, y, digits, x, digits);
+        e.key = ElementId{'B', digits, z, y, x, ""};
+        e.id = e.key.text();
         layout.elements.push_back(std::move(e));
       }
   // Plan: each column shows its top-most block. Elevation from the front (y = 0 looking
