@@ -28,7 +28,7 @@ int main() {
   const curdle::CurdField field = curdle::curdle(design, 11, design.field);
   const curdle::Layout layout = curdle::make_layout(design, field, design.field, spec);
   std::ofstream svg("terrace.svg");
-  curdle::write_layout_svg(svg, layout, design, {"terrace", "example", 11}, spec);
+  curdle::write_layout_svg(svg, layout);
 
   size_t cut = 0;
   for (const auto& e : layout.elements) cut += e.cut;

@@ -179,7 +179,7 @@ std::pair<Vec3, Vec3> box_of(const Layout& l, const Rect& r, double base, double
           Vec3{std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]), std::fabs(b[2] - a[2])}};
 }
 
-tinygltf::Value element_extras(const Element& e, const Design& design) {
+tinygltf::Value element_extras(const Element& e, const Provenance& design) {
   tinygltf::Value::Object o;
   o["value"] = tinygltf::Value(static_cast<int>(e.value));
   tinygltf::Value::Array bits, names;
@@ -196,8 +196,9 @@ tinygltf::Value element_extras(const Element& e, const Design& design) {
   return tinygltf::Value(o);
 }
 
-tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlock& title,
-                      const LayoutSpec& spec) {
+tinygltf::Model build(const Layout& layout) {
+  const Provenance& design = layout.source;
+  const LayoutSpec& spec = layout.spec;
   ModelBuilder b;
   std::vector<int>& roots = b.model.scenes[0].nodes;
   const double t = thickness_of(layout, spec);
@@ -440,8 +441,8 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
   }
 
   tinygltf::Value::Object scene;
-  scene["recipe"] = tinygltf::Value(title.recipe);
-  scene["seed"] = tinygltf::Value(std::to_string(title.seed));
+  scene["recipe"] = tinygltf::Value(design.recipe);
+  scene["seed"] = tinygltf::Value(std::to_string(design.seed));
   tinygltf::Value::Object lattice;
   lattice["base"] = tinygltf::Value(design.lattice.base);
   lattice["dimension"] = tinygltf::Value(design.lattice.dimension);
@@ -449,25 +450,23 @@ tinygltf::Model build(const Layout& layout, const Design& design, const TitleBlo
   lattice["mode"] = tinygltf::Value(std::string(to_string(design.lattice.mode)));
   scene["lattice"] = tinygltf::Value(lattice);
   scene["units"] = tinygltf::Value(std::string("metres, +Y up"));
-  b.model.scenes[0].name = title.recipe;
+  b.model.scenes[0].name = design.recipe;
   b.model.scenes[0].extras = tinygltf::Value(scene);
   return b.model;
 }
 
 }  // namespace
 
-void write_glb(std::ostream& out, const Layout& layout, const Design& design,
-               const TitleBlock& title, const LayoutSpec& spec) {
-  tinygltf::Model model = build(layout, design, title, spec);
+void write_glb(std::ostream& out, const Layout& layout) {
+  tinygltf::Model model = build(layout);
   tinygltf::TinyGLTF writer;
   if (!writer.WriteGltfSceneToStream(&model, out, false, true))
     throw std::runtime_error("tinygltf could not write the binary glTF");
 }
 
 void write_gltf(std::ostream& json, std::ostream& bin, const std::string& bin_name,
-                const Layout& layout, const Design& design, const TitleBlock& title,
-                const LayoutSpec& spec) {
-  const tinygltf::Model model = build(layout, design, title, spec);
+                const Layout& layout) {
+  const tinygltf::Model model = build(layout);
   const auto& data = model.buffers[0].data;
   bin.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
   // tinygltf's stream writer embeds buffers; point the buffer at the .bin file instead.

@@ -17,18 +17,15 @@
 #include <vector>
 
 #include "curdle/curd.h"
-#include "export/title_block.h"
 #include "layout/layout.h"
 
 namespace curdle {
 
 // Writes a binary glTF (.glb).
-void write_glb(std::ostream& out, const Layout& layout, const Design& design,
-               const TitleBlock& title, const LayoutSpec& spec);
+void write_glb(std::ostream& out, const Layout& layout);
 
 // Writes a .gltf (JSON) whose buffer is the file `bin_name` beside it, written to `bin`.
 void write_gltf(std::ostream& json, std::ostream& bin, const std::string& bin_name,
-                const Layout& layout, const Design& design, const TitleBlock& title,
-                const LayoutSpec& spec);
+                const Layout& layout);
 
 }  // namespace curdle

@@ -12,7 +12,8 @@ std::string num(double v) { return fmt::format("{:.1f}", v); }
 
 }  // namespace
 
-void write_install_svg(std::ostream& out, const Layout& layout, const TitleBlock& title) {
+void write_install_svg(std::ostream& out, const Layout& layout) {
+  const Provenance& title = layout.source;
   const double W = layout.width, H = layout.height;
   const double unit = std::max(W, H) / 60, margin = unit * 3;
   auto x = [&](double v) { return margin + v; };

@@ -5,11 +5,10 @@
 
 #include <ostream>
 
-#include "export/title_block.h"
 #include "layout/layout.h"
 
 namespace curdle {
 
-void write_install_svg(std::ostream& out, const Layout& layout, const TitleBlock& title);
+void write_install_svg(std::ostream& out, const Layout& layout);
 
 }  // namespace curdle

@@ -93,8 +93,8 @@ struct Canvas {
 
 }  // namespace
 
-double drawing_scale(const Layout& layout, const LayoutSpec& spec) {
-  if (spec.scale > 0) return spec.scale;
+double drawing_scale(const Layout& layout) {
+  if (layout.spec.scale > 0) return layout.spec.scale;
   const double longest = std::max(layout.width, layout.height);
   for (double decade = 1;; decade *= 10)
     for (double step : {1.0, 2.0, 2.5, 5.0})
@@ -102,20 +102,22 @@ double drawing_scale(const Layout& layout, const LayoutSpec& spec) {
 }
 
 uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view) {
-  Layout outline;  // only the extent matters for the scale
+  Layout outline;  // only the extent and the spec matter for the scale
+  outline.spec = spec;
   outline.width = spec.size ? (*spec.size)[0] : view.size[0] * (spec.module_w + spec.joint);
   outline.height = spec.size ? (*spec.size)[1] : view.size[1] * (spec.module_h + spec.joint);
   if (spec.kind == LayoutKind::blocks) {
     outline.width = 2 * view.size[0] * spec.module_w + 2 * std::max(spec.module_w, spec.module_h);
     outline.height = std::max(view.size[1] * spec.module_h, view.size[2] * spec.voxel_h);
   }
-  const double ppm = spec.dpi / 25.4 / drawing_scale(outline, spec);
+  const double ppm = spec.dpi / 25.4 / drawing_scale(outline);
   return static_cast<uint64_t>(std::ceil(outline.width * ppm) * std::ceil(outline.height * ppm));
 }
 
-PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec) {
+PreviewImage render_layout(const Layout& layout) {
+  const LayoutSpec& spec = layout.spec;
   Canvas canvas;
-  canvas.px_per_mm = spec.dpi / 25.4 / drawing_scale(layout, spec);
+  canvas.px_per_mm = spec.dpi / 25.4 / drawing_scale(layout);
   canvas.layout_height = layout.height;
   canvas.width = std::max(1, static_cast<int>(std::ceil(layout.width * canvas.px_per_mm)));
   canvas.height = std::max(1, static_cast<int>(std::ceil(layout.height * canvas.px_per_mm)));

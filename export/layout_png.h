@@ -12,9 +12,9 @@ namespace curdle {
 
 // 1 : scale; the spec's, or the smallest of 1, 2, 5, 10, 20, 25, 50, 100, ... that fits the
 // layout's long side in 400 mm (an A3 sheet).
-double drawing_scale(const Layout& layout, const LayoutSpec& spec);
+double drawing_scale(const Layout& layout);
 
-PreviewImage render_layout(const Layout& layout, const LayoutSpec& spec);
+PreviewImage render_layout(const Layout& layout);
 
 // Pixels of layout.png for the layout `spec` makes of `view`, known before it is built.
 uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view);

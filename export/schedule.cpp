@@ -29,8 +29,9 @@ int64_t lot_of(const Element& e, size_t index, const LayoutSpec& spec) {
   return 1;
 }
 
-void write_schedule_csv(std::ostream& out, const Layout& layout, const Design& design,
-                        const LayoutSpec& spec) {
+void write_schedule_csv(std::ostream& out, const Layout& layout) {
+  const Provenance& design = layout.source;
+  const LayoutSpec& spec = layout.spec;
   std::string header = "element_id,lot,row,column,x_mm,y_mm,z_mm,width_mm,height_mm,value";
   for (const CurdSpec& c : design.curds) {
     header += ',';
@@ -84,7 +85,8 @@ void write_schedule_csv(std::ostream& out, const Layout& layout, const Design& d
   out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
 }
 
-void write_quantities_csv(std::ostream& out, const Layout& layout, const LayoutSpec& spec) {
+void write_quantities_csv(std::ostream& out, const Layout& layout) {
+  const LayoutSpec& spec = layout.spec;
   // One line per element type and colour: values that share a colour are one order.
   struct Line {
     uint64_t count = 0;

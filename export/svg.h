@@ -13,7 +13,6 @@
 #include <string>
 
 #include "curdle/curd.h"
-#include "export/title_block.h"
 #include "layout/layout.h"
 #include "layout/merge_runs.h"
 
@@ -22,7 +21,6 @@ namespace curdle {
 // The background that hides seams between jointless elements: the most common value's colour.
 Rgb seamless_background(const Layout& layout);
 
-void write_layout_svg(std::ostream& out, const Layout& layout, const Design& design,
-                      const TitleBlock& title, const LayoutSpec& spec);
+void write_layout_svg(std::ostream& out, const Layout& layout);
 
 }  // namespace curdle

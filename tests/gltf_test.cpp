@@ -18,9 +18,9 @@
 namespace curdle {
 namespace {
 
-tinygltf::Model read_back(const Layout& layout, const Design& d, const LayoutSpec& spec) {
+tinygltf::Model read_back(const Layout& layout) {
   std::ostringstream out;
-  write_glb(out, layout, d, TitleBlock{"test", "", 5}, spec);
+  write_glb(out, layout);
   const std::string bytes = out.str();
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
@@ -79,7 +79,7 @@ TEST(Gltf, PavingReadsBackWithItsElementsMaterialsAndExtent) {
   const auto cells = elements_to_cover(spec);
   d.field.size = {cells[0], cells[1], 1};
   const Layout layout = make_layout(d, curdle(d, 2, d.field), d.field, spec);
-  const tinygltf::Model m = read_back(layout, d, spec);
+  const tinygltf::Model m = read_back(layout);
   const Totals t = totals(m);
   std::set<std::string> ids;
   for (const Element& e : layout.elements) ids.insert(e.id);
@@ -99,7 +99,7 @@ TEST(Gltf, PavingReadsBackWithItsElementsMaterialsAndExtent) {
   EXPECT_EQ(extras.Get("lattice").Get("base").Get<int>(), 4);
   // The same IDs name the SVG's elements: cut ones by id, the rest in merged ranges.
   std::ostringstream svg;
-  write_layout_svg(svg, layout, d, TitleBlock{"test", "", 5}, spec);
+  write_layout_svg(svg, layout);
   const std::string text = svg.str();
   std::set<std::string> svg_ids;
   const std::regex named("(id|data-elements)=\"(P-R[0-9]+-C[0-9]+)(:P-R([0-9]+)-C([0-9]+))?\"");
@@ -128,7 +128,7 @@ TEST(Gltf, FacadeStandsUpWithItsOpeningsLeftOpen) {
   const auto cells = elements_to_cover(spec);
   d.field.size = {cells[0], cells[1], 1};
   const Layout layout = make_layout(d, curdle(d, 2, d.field), d.field, spec);
-  const Totals t = totals(read_back(layout, d, spec));
+  const Totals t = totals(read_back(layout));
   uint64_t pieces = 0;
   for (const Element& e : layout.elements) pieces += e.shape.size();
   EXPECT_EQ(t.triangles, pieces * 12);
@@ -147,7 +147,7 @@ TEST(Gltf, PerforatedSheetIsASolidWithItsOpenings) {
   spec.holes = {{16, -6, 0}, {16, 6, 0}};
   spec.chord_tolerance = 0.1;
   const Layout layout = make_layout(d, curdle(d, 3, d.field), d.field, spec);
-  const tinygltf::Model m = read_back(layout, d, spec);
+  const tinygltf::Model m = read_back(layout);
   const Totals t = totals(m);
   EXPECT_NEAR(t.hi[0], 0.64, 1e-6);
   EXPECT_NEAR(t.hi[1], 0.003, 1e-6);
@@ -196,7 +196,7 @@ TEST(Gltf, BlocksLeaveOutTheFacesBetweenNeighbours) {
     for (const auto& dv :
          {std::array<int, 3>{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}})
       exposed += !solid.count({c[0] + dv[0], c[1] + dv[1], c[2] + dv[2]});
-  const Totals t = totals(read_back(layout, d, spec));
+  const Totals t = totals(read_back(layout));
   EXPECT_EQ(t.triangles, exposed * 2);
   EXPECT_NEAR(t.hi[1], 24.0, 1e-6);  // eight storeys of 3 m
 }

@@ -83,9 +83,12 @@ SvgSummary parse_svg(const std::string& text) {
   return s;
 }
 
-std::string svg_of(const Layout& layout, const Design& d, const LayoutSpec& spec) {
+std::string svg_of(const Layout& built) {
+  Layout layout = built;
+  layout.source.description = "a <test> & more";  // the title block escapes it
+  layout.source.seed = 1;
   std::ostringstream out;
-  write_layout_svg(out, layout, d, TitleBlock{"test", "a <test> & more", 1}, spec);
+  write_layout_svg(out, layout);
   return out.str();
 }
 
@@ -143,7 +146,7 @@ TEST(Layout, CountsPerValueMatchTheOverlay) {
   ASSERT_EQ(layout.elements.size(), 256u);
   const auto counts = value_counts(f);
   for (uint32_t v = 0; v < 4; ++v) EXPECT_EQ(layout.legend[v].count, counts[v]);
-  SvgSummary svg = parse_svg(svg_of(layout, d, spec));
+  SvgSummary svg = parse_svg(svg_of(layout));
   for (uint32_t v = 0; v < 4; ++v) EXPECT_EQ(svg.counts[v], counts[v]) << "value " << v;
   EXPECT_EQ(svg.width, "5200mm");  // 16 x 305 - 5 = 4875, and a margin of 4875 / 30 each side
   EXPECT_EQ(svg.view_box.rfind("0 0 5200 ", 0), 0u);
@@ -193,7 +196,7 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
         EXPECT_NEAR(right ? 18000 - first.nominal.right() : first.nominal.x, 0, 1e-6);
         EXPECT_NEAR(top ? 15600 - first.nominal.top() : first.nominal.y, 0, 1e-6);
       }
-      SvgSummary svg = parse_svg(svg_of(layout, sized, spec));
+      SvgSummary svg = parse_svg(svg_of(layout));
       uint64_t drawn = 0;
       for (auto& [v, n] : svg.counts) drawn += n;
       EXPECT_EQ(drawn, layout.elements.size());
@@ -214,7 +217,7 @@ TEST(Layout, MixBlendsOrTakesTheGivenColoursAndKeepShowsEachCurd) {
   const Layout given = make_layout(d, f, d.field, mix);
   EXPECT_EQ(given.legend[3].colour, (Rgb{4, 4, 4}));
   EXPECT_EQ(given.legend[1].colour, (Rgb{200, 0, 0}));
-  EXPECT_EQ(parse_svg(svg_of(given, d, mix)).fills[3], "#040404");
+  EXPECT_EQ(parse_svg(svg_of(given)).fills[3], "#040404");
 
   LayoutSpec keep = mix;
   keep.combine = Combine::keep;
@@ -223,12 +226,13 @@ TEST(Layout, MixBlendsOrTakesTheGivenColoursAndKeepShowsEachCurd) {
   ASSERT_EQ(kept.legend[3].parts.size(), 2u);
   EXPECT_EQ(kept.legend[3].parts[0], (Rgb{200, 0, 0}));
   EXPECT_EQ(kept.legend[3].parts[1], (Rgb{0, 0, 200}));
-  SvgSummary svg = parse_svg(svg_of(kept, d, keep));
+  SvgSummary svg = parse_svg(svg_of(kept));
   EXPECT_EQ(svg.patterns, 4);
   EXPECT_EQ(svg.fills[3], "url(#parts-3)");
   // The PNG shows both curds in a cell of value 3: red on the left, blue on the right.
-  keep.scale = 1, keep.dpi = 25.4;  // one pixel per millimetre
-  const PreviewImage png = render_layout(kept, keep);
+  Layout drawn = kept;
+  drawn.spec.scale = 1, drawn.spec.dpi = 25.4;  // one pixel per millimetre
+  const PreviewImage png = render_layout(drawn);
   for (const Element& e : kept.elements) {
     if (e.value != 3) continue;
     auto at = [&](double x, double y) {
@@ -247,10 +251,10 @@ TEST(Layout, PngColoursEachElementAndRecordsItsScale) {
   const CurdField f = curdle(d, 8, d.field);
   LayoutSpec spec;
   spec.joint = 20;
-  const Layout layout = make_layout(d, f, d.field, spec);
-  EXPECT_EQ(drawing_scale(layout, spec), 20);  // 5.1 m fits an A3 sheet at 1:20
-  spec.scale = 10, spec.dpi = 254;             // 1 px = 1 mm / (254 / 25.4 / 10) = 1 mm
-  const PreviewImage png = render_layout(layout, spec);
+  Layout layout = make_layout(d, f, d.field, spec);
+  EXPECT_EQ(drawing_scale(layout), 20);  // 5.1 m fits an A3 sheet at 1:20
+  layout.spec.scale = 10, layout.spec.dpi = 254;  // 1 px = 1 mm / (254 / 25.4 / 10) = 1 mm
+  const PreviewImage png = render_layout(layout);
   EXPECT_EQ(png.width, static_cast<int>(std::ceil(layout.width)));
   for (const Element& e : layout.elements) {
     const size_t px = static_cast<size_t>(e.nominal.x + 150),
@@ -272,7 +276,7 @@ TEST(Layout, OverlaysDrawTheStageGridInTheJointsAndTheWindow) {
   EXPECT_NEAR(layout.cell_edge_x(4), 4 * 310 - 5, 1e-9);
   EXPECT_NEAR(layout.cell_edge_x(0), 0, 1e-9);
   EXPECT_NEAR(layout.cell_edge_x(16), layout.width, 1e-9);
-  const std::string svg = svg_of(layout, d, spec);
+  const std::string svg = svg_of(layout);
   const SvgSummary s = parse_svg(svg);
   EXPECT_TRUE(s.ids.count("stage-grid"));
   EXPECT_TRUE(s.ids.count("window"));
@@ -288,7 +292,7 @@ TEST(Layout, ALargePavingStaysSmallAsSvg) {
   spec.kind = LayoutKind::paving;
   spec.joint = 3;
   const Layout layout = make_layout(d, f, d.field, spec);
-  const std::string svg = svg_of(layout, d, spec);
+  const std::string svg = svg_of(layout);
   EXPECT_LT(svg.size(), 60u << 20) << "1,000,000 tiles";
   SvgSummary s = parse_svg(svg);
   EXPECT_EQ(s.counts[0] + s.counts[1], 1000000u);
@@ -396,7 +400,7 @@ TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
   for (Combine combine : {Combine::mix, Combine::keep}) {
     Sheet s = perforated(combine, HoleFix::drop, 2, 4);
     s.spec.scale = 1, s.spec.dpi = 127;  // 5 px a millimetre
-    const PreviewImage png = render_layout(s.layout, s.spec);
+    const PreviewImage png = render_layout(s.layout);
     const Rgb metal{201, 205, 210};
     double open = 0;
     for (size_t p = 0; p < png.rgb.size(); p += 3) {
@@ -464,7 +468,7 @@ TEST(Park, ElementsShareCellsWithoutOverlapAndSurfacesCoverTheArea) {
         boxes.push_back(box);
       }
     }
-    SvgSummary svg = parse_svg(svg_of(layout, d, spec));
+    SvgSummary svg = parse_svg(svg_of(layout));
     EXPECT_TRUE(svg.ids.count("type-tree") && svg.ids.count("type-bench") &&
                 svg.ids.count("type-grey-paving"));
   }
@@ -493,7 +497,7 @@ TEST(Rhythm, FinWidthsFollowTheValuesCentredInTheirBays) {
     EXPECT_NEAR(e.shape[0].x + e.shape[0].w / 2, e.cell_x * 600 + 300, 1e-9);
     EXPECT_NEAR(e.shape[0].h, 4200, 1e-9);
   }
-  SvgSummary svg = parse_svg(svg_of(layout, d, spec));
+  SvgSummary svg = parse_svg(svg_of(layout));
   for (uint32_t v = 0; v < 4; ++v)
     EXPECT_EQ(svg.counts[v], v ? counts[v] : 0u) << "fins of value " << v;
 }
@@ -525,7 +529,7 @@ TEST(Blocks, PlanAndElevationShowTheFirstBlockSeen) {
       EXPECT_EQ(it == shown.end() ? 0u : it->second, first) << x << "," << z;
     }
   }
-  SvgSummary svg = parse_svg(svg_of(layout, d, spec));
+  SvgSummary svg = parse_svg(svg_of(layout));
   for (uint32_t v = 1; v < 4; ++v)
     EXPECT_EQ(svg.counts[v], 0u);  // views are drawings, not elements
 }

@@ -68,8 +68,8 @@ TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
   const Layout layout = make_layout(d, f, d.field, spec);
 
   std::ostringstream schedule, quantities;
-  write_schedule_csv(schedule, layout, d, spec);
-  write_quantities_csv(quantities, layout, spec);
+  write_schedule_csv(schedule, layout);
+  write_quantities_csv(quantities, layout);
   const auto rows = strict_csv(schedule.str());
   ASSERT_EQ(rows.size(), layout.elements.size() + 1);
   EXPECT_EQ(rows[0][10], "grey, light");
@@ -125,7 +125,7 @@ TEST(Install, TheMapNamesEveryElementAndWhereLayingStarts) {
   d.field.size = {cells[0], cells[1], 1};
   const Layout layout = make_layout(d, curdle(d, 6, d.field), d.field, spec);
   std::ostringstream out;
-  write_install_svg(out, layout, TitleBlock{"t", "", 6});
+  write_install_svg(out, layout);
   const std::string svg = out.str();
   std::set<std::string> labelled, ids;
   const std::regex label("<g id=\"(F-R[0-9]+-C[0-9]+)\" class=\"element\"");

@@ -31,10 +31,6 @@ auto with_progress(RunObserver* observer, const std::string& what, F&& step) {
   });
 }
 
-TitleBlock title_of(const Run& run) {
-  return TitleBlock{run.recipe.design.name, run.recipe.description, run.seed};
-}
-
 uint64_t view_cells(const Run& run) { return run.view.cells(); }
 
 // Rough bytes an element costs in each writer's structures, measured on the patterns.
@@ -66,43 +62,43 @@ void write_preview(const OutputContext& c, OutputSink& sink) {
 
 void write_layout_svg_output(const OutputContext& c, OutputSink& sink) {
   sink.write("layout.svg", [&](std::ostream& o) {
-    write_layout_svg(o, *c.layout, c.run.recipe.design, title_of(c.run), *c.spec);
+    write_layout_svg(o, *c.layout);
   });
 }
 
 void write_layout_png(const OutputContext& c, OutputSink& sink) {
-  const std::string png = encode_png(render_layout(*c.layout, *c.spec), c.spec->dpi);
+  const std::string png = encode_png(render_layout(*c.layout), c.layout->spec.dpi);
   sink.write("layout.png", [&](std::ostream& o) { o << png; });
 }
 
 void write_layout_glb(const OutputContext& c, OutputSink& sink) {
   sink.write("layout.glb", [&](std::ostream& o) {
-    write_glb(o, *c.layout, c.run.recipe.design, title_of(c.run), *c.spec);
+    write_glb(o, *c.layout);
   });
 }
 
 void write_layout_gltf(const OutputContext& c, OutputSink& sink) {
   std::ostringstream bin;
   sink.write("layout.gltf", [&](std::ostream& o) {
-    write_gltf(o, bin, "layout.bin", *c.layout, c.run.recipe.design, title_of(c.run), *c.spec);
+    write_gltf(o, bin, "layout.bin", *c.layout);
   });
   sink.write("layout.bin", [&](std::ostream& o) { o << bin.str(); });
 }
 
 void write_schedule(const OutputContext& c, OutputSink& sink) {
   sink.write("schedule.csv", [&](std::ostream& o) {
-    write_schedule_csv(o, *c.layout, c.run.recipe.design, *c.spec);
+    write_schedule_csv(o, *c.layout);
   });
 }
 
 void write_quantities(const OutputContext& c, OutputSink& sink) {
   sink.write("quantities.csv",
-             [&](std::ostream& o) { write_quantities_csv(o, *c.layout, *c.spec); });
+             [&](std::ostream& o) { write_quantities_csv(o, *c.layout); });
 }
 
 void write_install(const OutputContext& c, OutputSink& sink) {
   sink.write("install.svg",
-             [&](std::ostream& o) { write_install_svg(o, *c.layout, title_of(c.run)); });
+             [&](std::ostream& o) { write_install_svg(o, *c.layout); });
 }
 
 void write_sheets(const OutputContext& c, OutputSink& sink) {
@@ -293,9 +289,12 @@ RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outpu
   RunSummary summary;
   summary.report = make_report(d, run.seed, field, run.view);
   std::optional<Layout> layout;
-  if (spec && needs_layout) layout = make_layout(d, field, run.view, *spec);
-  const OutputContext context{run, field, summary.report, layout ? &*layout : nullptr,
-                              spec ? &*spec : nullptr, observer};
+  if (spec && needs_layout) {
+    layout = make_layout(d, field, run.view, *spec);
+    layout->source.description = run.recipe.description;
+    layout->source.seed = run.seed;
+  }
+  const OutputContext context{run, field, summary.report, layout ? &*layout : nullptr, observer};
   // report.json last: it describes the layout the other files drew.
   for (const Output* o : outputs)
     if (o->name != "report.json") o->write(context, sink);
@@ -312,7 +311,7 @@ RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outpu
       if (o->name == "sheets") s.sheets = layout->sheets.size();
     s.width = layout->width;
     s.height = layout->height;
-    s.drawing_scale = drawing_scale(*layout, *spec);
+    s.drawing_scale = drawing_scale(*layout);
     s.dpi = spec->dpi;
     s.notes = layout->notes;
     s.violations = layout->violations;

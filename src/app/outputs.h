@@ -22,9 +22,8 @@ struct OutputContext {
   const Run& run;
   const CurdField& field;
   const Report& report;
-  const Layout* layout;      // null without a [layout]
-  const LayoutSpec* spec;    // the recipe's, with a mask's openings read in
-  RunObserver* observer;     // may be null
+  const Layout* layout;   // null without a [layout]; it holds the spec it was built from
+  RunObserver* observer;  // may be null
 };
 
 struct Output {

@@ -90,8 +90,10 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
   return legend;
 }
 
-Layout make_layout(const Design& design, const CurdField& field, const Box& view,
-                   const LayoutSpec& spec) {
+namespace {
+
+Layout lay_out(const Design& design, const CurdField& field, const Box& view,
+               const LayoutSpec& spec) {
   // A fixed floor, wall, sheet or line is laid from the view's corner: the view is the segment
   // of the curd that becomes the floor, so it must have the floor's number of elements.
   if (spec.size) {
@@ -177,6 +179,18 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
   if (spec.kind == LayoutKind::perforation) perforate(layout, design, spec);
   if (spec.kind == LayoutKind::park) plant(layout, design, spec);
   if (spec.kind == LayoutKind::rhythm) set_rhythm(layout, spec);
+  return layout;
+}
+
+}  // namespace
+
+Layout make_layout(const Design& design, const CurdField& field, const Box& view,
+                   const LayoutSpec& spec) {
+  Layout layout = lay_out(design, field, view, spec);
+  layout.spec = spec;
+  layout.source.recipe = design.name;
+  layout.source.lattice = design.lattice;
+  layout.source.curds = design.curds;
   return layout;
 }
 

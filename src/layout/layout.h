@@ -116,6 +116,15 @@ struct LayoutSpec {
   double dpi = 150;
 };
 
+// Where a layout came from, for title blocks and the files' metadata.
+struct Provenance {
+  std::string recipe;  // the design's name
+  std::string description;
+  uint64_t seed = 0;
+  Lattice lattice;
+  std::vector<CurdSpec> curds;
+};
+
 struct Element {
   ElementId key;                   // stable and readable: kind, row and column in laying order
   std::string id;                  // key.text(), formatted once
@@ -142,7 +151,10 @@ struct LegendEntry {
   uint64_t count = 0;      // elements of this value (perforation: cells with holes)
 };
 
+// A built layout: everything an exporter reads, so that writers take a Layout and nothing else.
 struct Layout {
+  LayoutSpec spec;    // what it was built from: drawing scale, ordering, sheet thickness, ...
+  Provenance source;  // recipe, seed, lattice and curds
   LayoutKind kind = LayoutKind::tile;
   Combine combine = Combine::mix;
   std::string element_type;      // "tile", "paving tile", "panel"

@@ -86,8 +86,8 @@ void BM_Schedule_1M_elements(benchmark::State& state) {
   const std::string path = "/tmp/curdle-bench-schedule.csv";
   for (auto _ : state) {
     std::ofstream schedule(path, std::ios::binary), quantities(path + ".q", std::ios::binary);
-    curdle::write_schedule_csv(schedule, layout, d, spec);
-    curdle::write_quantities_csv(quantities, layout, spec);
+    curdle::write_schedule_csv(schedule, layout);
+    curdle::write_quantities_csv(quantities, layout);
   }
   state.counters["elements"] = static_cast<double>(layout.elements.size());
   std::remove(path.c_str());
