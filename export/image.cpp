@@ -14,6 +14,7 @@ namespace {
 struct ImageModule {
   EncodePngFn encode_png = nullptr;
   ReadLuminanceFn read_luminance = nullptr;
+  ReadSizeFn read_size = nullptr;
 };
 
 // Beside the program (build tree), in ../lib/curdle (installed), or where it was built.
@@ -50,7 +51,8 @@ const ImageModule& module() {
       loaded.encode_png = reinterpret_cast<EncodePngFn>(::dlsym(handle, "curdle_image_encode_png"));
       loaded.read_luminance =
           reinterpret_cast<ReadLuminanceFn>(::dlsym(handle, "curdle_image_read_luminance"));
-      if (!loaded.encode_png || !loaded.read_luminance)
+      loaded.read_size = reinterpret_cast<ReadSizeFn>(::dlsym(handle, "curdle_image_read_size"));
+      if (!loaded.encode_png || !loaded.read_luminance || !loaded.read_size)
         failure = "the image module " + path.string() + " lacks its entry points";
       return;
     }
@@ -75,6 +77,13 @@ LuminanceImage read_luminance(const fs::path& path) {
   std::string error;
   if (!module().read_luminance(path.c_str(), &image, &error)) throw std::runtime_error(error);
   return image;
+}
+
+ImageSize read_image_size(const fs::path& path) {
+  ImageSize size;
+  std::string error;
+  if (!module().read_size(path.c_str(), &size, &error)) throw std::runtime_error(error);
+  return size;
 }
 
 }  // namespace curdle

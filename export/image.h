@@ -26,11 +26,18 @@ struct LuminanceImage {
 // Throws std::runtime_error with OpenImageIO's message when the file cannot be read.
 LuminanceImage read_luminance(const std::filesystem::path& path);
 
+// An image's size from its header, without decoding it (for memory guards).
+struct ImageSize {
+  int width = 0, height = 0, channels = 0;
+};
+ImageSize read_image_size(const std::filesystem::path& path);
+
 // The module's entry points (C linkage so that dlsym finds them by name).
 extern "C" {
 using EncodePngFn = bool (*)(const PreviewImage* image, double dpi, std::string* png,
                              std::string* error);
 using ReadLuminanceFn = bool (*)(const char* path, LuminanceImage* image, std::string* error);
+using ReadSizeFn = bool (*)(const char* path, ImageSize* size, std::string* error);
 }
 
 }  // namespace curdle

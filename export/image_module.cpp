@@ -4,6 +4,7 @@
 
 #include "export/image.h"
 
+using curdle::ImageSize;
 using curdle::LuminanceImage;
 using curdle::PreviewImage;
 
@@ -54,5 +55,19 @@ extern "C" __attribute__((visibility("default"))) bool curdle_image_read_luminan
     const float* p = &pixels[i * channels];
     image->luminance[i] = channels >= 3 ? 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2] : p[0];
   }
+  return true;
+}
+
+extern "C" __attribute__((visibility("default"))) bool curdle_image_read_size(const char* path,
+                                                                              ImageSize* size,
+                                                                              std::string* error) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) {
+    *error = OIIO::geterror();
+    return false;
+  }
+  size->width = in->spec().width;
+  size->height = in->spec().height;
+  size->channels = in->spec().nchannels;
   return true;
 }

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <map>
 
+#include "curdle/text.h"
+
 namespace curdle {
 namespace {
 
@@ -23,7 +25,7 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}mm\" height=\"{1}mm\" "
       "viewBox=\"0 0 {0} {1}\" font-family=\"Helvetica, Arial, sans-serif\">\n",
       num(W + 2 * margin), num(H + 2 * margin));
-  out << fmt::format("<title>{} - installation map, seed {}</title>\n", title.recipe, title.seed);
+  out << fmt::format("<title>{} - installation map, seed {}</title>\n", xml_escape(title.recipe), title.seed);
   out << fmt::format(
       "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#ffffff\" stroke=\"#000\" "
       "stroke-width=\"{}\"/>\n",
@@ -42,7 +44,7 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
     const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
     const std::string fill = fmt::format("rgb({},{},{})", c.r, c.g, c.b);
     double cx, cy, w;
-    out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">", e.id,
+    out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">", xml_escape(e.id),
                        e.row, e.column);
     if (e.circle) {
       cx = e.circle->cx, cy = e.circle->cy, w = e.circle->d;
@@ -66,7 +68,7 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
     out << fmt::format(
         "<text x=\"{}\" y=\"{}\" font-size=\"{}\" text-anchor=\"middle\" fill=\"#000\" "
         "stroke=\"none\">{}</text></g>\n",
-        num(x(cx)), num(y(cy) + size * 0.35), num(size), e.id);
+        num(x(cx)), num(y(cy) + size * 0.35), num(size), xml_escape(e.id));
   }
   out << "</g>\n";
 

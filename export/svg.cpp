@@ -7,33 +7,14 @@
 #include <map>
 
 #include "curdle/palette.h"
+#include "curdle/text.h"
 
 namespace curdle {
 namespace {
 
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
+// All text in the drawing goes through the one XML escaper (curdle/text.h).
+std::string escape(const std::string& s) { return xml_escape(s); }
 
 // Millimetres, short: 0.001 mm is below any tolerance and keeps files small.
 std::string mm(double v) {

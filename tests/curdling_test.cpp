@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "curdle/cell_index.h"
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/theory.h"
@@ -137,7 +138,8 @@ TEST(Curdling, RefusesWorkAboveTheMemoryLimit) {
     EXPECT_NE(std::string(e.what()).find("--max-memory"), std::string::npos);
   }
   EXPECT_GT(estimate_memory(d, d.field), (uint64_t{1} << 28) / 8);
-  EXPECT_LT(estimate_memory(d, d.field), (uint64_t{1} << 28) / 8 * 4 / 3 + 4096);
+  EXPECT_LT(estimate_memory(d, d.field),
+            (uint64_t{1} << 28) / 8 * 4 / 3 + 4096 + CellIndex::table_bytes(d.lattice));
 }
 
 TEST(Curdling, OneAndThreeDimensions) {
@@ -145,6 +147,22 @@ TEST(Curdling, OneAndThreeDimensions) {
   EXPECT_EQ(curdle(line, 1, line.field).finest(0).count(), 16u);
   const Design cube = design(2, 3, {{"1/2", "1/2", "1/2"}}, Mode::exact);
   EXPECT_EQ(curdle(cube, 1, cube.field).finest(0).count(), 64u);
+}
+
+}  // namespace curdle
+
+namespace curdle {
+
+// A deep 1-D lattice's index tables alone are gigabytes: the estimate counts them without
+// building them, and the engine refuses before allocating anything.
+TEST(Curdling, DeepLatticesAreRefusedBeforeTheirTablesAreBuilt) {
+  const Design d = test::design(2, 1, std::vector<std::vector<std::string>>{
+                                           std::vector<std::string>(56, "1/2")});
+  EXPECT_GT(CellIndex::table_bytes(d.lattice), uint64_t{1} << 31);
+  EXPECT_GE(estimate_memory(d, d.field), CellIndex::table_bytes(d.lattice));
+  GenerateOptions options;
+  options.max_memory_bytes = uint64_t{1} << 30;
+  EXPECT_THROW(curdle(d, 1, d.field, options), ResourceLimitError);
 }
 
 }  // namespace curdle

@@ -215,7 +215,7 @@ TEST_F(ServerTest, BadRequestsAreJsonErrorsThatSayWhatIsAllowed) {
       {"/api/export?file=secrets.txt", 400, "is not a download; allowed: report.json, cells.csv"},
       {"/api/export?file=layout.svg&window=1,1,20,20", 400, "takes exactly 67 x 67 cells"},
       {"/api/search?seeds=5..1", 400, "not a range of seeds"},
-      {"/api/search?seeds=1..100000000", 413, "more than the server searches"},
+      {"/api/search?seeds=1..100000000", 413, "above the budget of 1073741824"},
       {"/api/search?seeds=0..18446744073709551615", 413, "at most 2^40 seeds"},
       {"/api/search?target=size:dark=3", 400, "unknown measure"},
       {"/api/search?seeds=1..3&target=ratio:dark=2", 400, "a ratio is from 0 to 1"},

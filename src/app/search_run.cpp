@@ -50,6 +50,12 @@ std::array<int64_t, 2> parse_segment_size(const std::string& text, int dimension
   return size;
 }
 
+uint64_t search_work(const Design& d, uint64_t first, uint64_t last) {
+  const unsigned __int128 work = (static_cast<unsigned __int128>(last - first) + 1) *
+                                 d.field.cells() * static_cast<unsigned>(d.lattice.stages);
+  return work > UINT64_MAX ? UINT64_MAX : static_cast<uint64_t>(work);
+}
+
 SearchRun resolve_search(const SearchRequest& request) {
   SearchRun s;
   s.run = resolve_run(request.run);
@@ -57,6 +63,14 @@ SearchRun resolve_search(const SearchRequest& request) {
   std::tie(s.first, s.last) = parse_seed_range(request.seeds, "seeds");
   if (s.last - s.first >= (uint64_t{1} << 40))
     throw ResourceLimitError(parameter("seeds"), "at most 2^40 seeds a search");
+  const uint64_t work = search_work(d, s.first, s.last);
+  if (request.max_work && work > request.max_work)
+    throw ResourceLimitError(
+        parameter("seeds"),
+        std::to_string(s.first) + ".." + std::to_string(s.last) + " is " + std::to_string(work) +
+            " cell-stages of work (seeds x " + std::to_string(d.field.cells()) + " cells x " +
+            std::to_string(d.lattice.stages) + " stages), above the budget of " +
+            std::to_string(request.max_work) + "; search fewer seeds or a smaller field");
   for (const std::string& t : request.targets) s.spec.targets.push_back(parse_target(t, d));
   if (!request.segment.empty())
     s.spec.window = parse_segment_size(request.segment, d.lattice.dimension, "segment");

@@ -25,6 +25,10 @@ struct SearchRequest {
   int top = 10;
   int64_t lacunarity_box = 0;
   int threads = 0;  // 0: all cores; counted in the memory estimate
+  // Most work one search may do, in cell-stages (seeds x field cells x stages): a budget
+  // that both shells enforce, so that no request runs for hours.
+  uint64_t max_work = kDefaultSearchWork;
+  static constexpr uint64_t kDefaultSearchWork = uint64_t{1} << 42;
 };
 
 struct SearchRun {
@@ -33,7 +37,10 @@ struct SearchRun {
   uint64_t first = 0, last = 0;
 };
 
-// Checks everything and the memory the threads need together; InputError naming the
+// Cell-stages a search of these seeds does: seeds x field cells x stages (saturating).
+uint64_t search_work(const Design& design, uint64_t first, uint64_t last);
+
+// Checks everything, the work budget and the memory the threads need together; InputError naming the
 // parameter ("seeds", "segment", "target", ...), ResourceLimitError above the memory limit.
 SearchRun resolve_search(const SearchRequest& request);
 

@@ -28,7 +28,8 @@ int run(int argc, char** argv) {
   std::vector<std::string> outputs;
   CLI::App* gen = app.add_subcommand("generate", "Curdle a recipe and write its outputs");
   add_common_options(*gen, gen_options);
-  gen->add_option("--out", out_dir, "Output directory (default: curdle-out/<recipe name>)");
+  gen->add_option("--out", out_dir, "Output directory (default: curdle-out/<recipe name>)")
+      ->check(kNotEmpty);
   gen->add_option("--outputs", outputs, outputs_help())->delimiter(',');
   CLI::App* rep = app.add_subcommand("report", "Print the per-stage report of a recipe");
   add_common_options(*rep, report_options);

@@ -23,6 +23,9 @@ void add_common_options(CLI::App& command, CommonOptions& options);
 // Reads the recipe file and turns the options into a run request.
 app::RunRequest run_request(const CommonOptions& options);
 
+// Refuses a value given as '' (which would otherwise read as "not given").
+extern const CLI::Validator kNotEmpty;
+
 // "--window" for the parameter "window"; `search` spells the segment size --window too.
 std::string option_name(const std::string& parameter);
 

@@ -17,11 +17,14 @@ namespace fs = std::filesystem;
 namespace curdle::cli {
 
 void add_search_options(CLI::App& c, SearchOptions& o) {
-  c.add_option("recipe", o.recipe_path, "Recipe file (TOML)")->required();
-  c.add_option("--seeds", o.seeds, "Seeds to try: A..B (inclusive), e.g. 1..10000")->required();
+  c.add_option("recipe", o.recipe_path, "Recipe file (TOML)")->required()->check(kNotEmpty);
+  c.add_option("--seeds", o.seeds, "Seeds to try: A..B (inclusive), e.g. 1..10000")
+      ->required()
+      ->check(kNotEmpty);
   c.add_option("--window", o.window,
                "Segment size in cells, W,H (1-D: W): every segment of that size in each seed's "
-               "field is scored (default: the whole field, or the recipe's fixed floor)");
+               "field is scored (default: the whole field, or the recipe's fixed floor)")
+      ->check(kNotEmpty);
   c.add_option("--stride", o.stride,
                "Cells between the corners of the segments tried (default: an eighth of the "
                "segment's smaller side)");
@@ -34,13 +37,15 @@ void add_search_options(CLI::App& c, SearchOptions& o) {
   c.add_option("--lacunarity-box", o.lacunarity_box,
                "Side in cells of the gliding box for lacunarity (default: the base b)");
   c.add_option("--out", o.out_dir,
-               "Where search.csv and the previews go (default: curdle-out/<recipe name>-search)");
+               "Where search.csv and the previews go (default: curdle-out/<recipe name>-search)")
+      ->check(kNotEmpty);
   c.add_flag("!--no-previews", o.previews, "Write search.csv only, no preview images");
   c.add_option("--set", o.sets, "Override a recipe key, as for generate")
       ->allow_extra_args(false);
   c.add_option("--threads", o.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
-  c.add_option("--max-memory", o.max_memory, "Refuse work above this much memory, e.g. 8G");
+  c.add_option("--max-memory", o.max_memory, "Refuse work above this much memory, e.g. 8G")
+      ->check(kNotEmpty);
 }
 
 int run_search(const SearchOptions& o) {

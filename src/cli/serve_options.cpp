@@ -1,5 +1,7 @@
 #include "cli/serve_command.h"
 
+#include "cli/options.h"
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,8 +19,10 @@ void add_serve_options(CLI::App& c, ServeOptions& o) {
       ->check(CLI::Range(0, 65535));
   c.add_option("--host", o.host,
                "Address to listen on (default 127.0.0.1, this machine only; give another "
-               "explicitly to share the page on a network)");
-  c.add_option("--web-root", o.web_root, "Directory of the page's files (default: installed)");
+               "explicitly to share the page on a network)")
+      ->check(kNotEmpty);
+  c.add_option("--web-root", o.web_root, "Directory of the page's files (default: installed)")
+      ->check(kNotEmpty);
   c.add_option("--workers", o.workers,
                "Generate, export and search requests run at once (default 2)")
       ->check(CLI::Range(1, 64));
@@ -26,7 +30,8 @@ void add_serve_options(CLI::App& c, ServeOptions& o) {
                "Most cells one request may generate (default 4194304, 2048 x 2048)")
       ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 32));
   c.add_option("--max-memory", o.max_memory,
-               "Memory one request may use, e.g. 2G (default: a quarter of physical memory)");
+               "Memory one request may use, e.g. 2G (default: a quarter of physical memory)")
+      ->check(kNotEmpty);
 }
 
 int exec_serve(int argc, char** argv) {

@@ -25,6 +25,10 @@ class CellIndex {
   CellIndex() = default;
   CellIndex(const Lattice& lattice, const Box& covered);
 
+  // What a CellIndex would hold, known without building it (for memory estimates).
+  static uint64_t count_roots(const Lattice& lattice, const Box& covered);
+  static uint64_t table_bytes(const Lattice& lattice);
+
   const Lattice& lattice() const { return lattice_; }
   uint64_t roots() const { return roots_; }
   const Coord& root_origin() const { return root_origin_; }

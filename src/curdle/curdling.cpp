@@ -484,11 +484,15 @@ Box generation_box(const Design& design, const Box& view) {
 }
 
 uint64_t estimate_memory(const Design& design, const Box& box) {
-  const CellIndex index(design.lattice, box);
-  uint64_t words = 0;
-  for (int k = 0; k <= design.lattice.stages; ++k)
-    words += (index.roots() * design.lattice.cells_per_root(k) + 63) / 64;
-  return words * 8 * design.curds.size();
+  // Counted without building anything (a deep lattice's index tables alone can be gigabytes),
+  // in 128 bits so that no product wraps; saturates at 2^64 - 1.
+  const Lattice& l = design.lattice;
+  const unsigned __int128 roots = CellIndex::count_roots(l, box);
+  unsigned __int128 words = 0;
+  for (int k = 0; k <= l.stages; ++k) words += (roots * l.cells_per_root(k) + 63) / 64;
+  const unsigned __int128 bytes =
+      words * 8 * design.curds.size() + CellIndex::table_bytes(l);
+  return bytes > UINT64_MAX ? UINT64_MAX : static_cast<uint64_t>(bytes);
 }
 
 CurdField curdle(const Design& design, uint64_t seed, const Box& view,

@@ -200,6 +200,8 @@ Target parse_target(const std::string& text, const Design& d) {
     }
     t.zone.origin = {v[0], v[1], 0};
     t.zone.size = {v[2], v[3], 1};
+    if (!t.zone.well_formed())
+      fail(text, "the zone must have origins from 0 and sizes from 1, each at most 2^40 cells");
     return t;
   }
   t.subject = t.measure == Measure::dimension ? parse_curd(text, subject, d)
@@ -299,7 +301,7 @@ void check_search(const Design& d, const Box& view, const SearchSpec& spec) {
   }
   for (const Target& t : spec.targets)
     if (t.measure == Measure::empty &&
-        (t.zone.origin[0] + t.zone.size[0] > size[0] || t.zone.origin[1] + t.zone.size[1] > size[1]))
+        !Box{{0, 0, 0}, {size[0], size[1], 1}}.contains(t.zone))
       throw InputError(parameter("target"),
                        "'" + t.text + "': the zone must lie inside the segment of " +
                            std::to_string(size[0]) + " x " + std::to_string(size[1]) + " cells");

@@ -146,8 +146,8 @@ Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {
       box.origin[d] = (*w)[d];
       box.size[d] = (*w)[l.dimension + d];
     }
-    if (box.cells() == 0 || box.origin[0] < 0 || box.origin[1] < 0 || box.origin[2] < 0)
-      r.fail("window", "must have origin >= 0 and sizes >= 1");
+    if (!box.well_formed())
+      r.fail("window", "must have origins from 0 and sizes from 1, each at most 2^40");
     window = box;  // checked against the field once the layout has sized it
   }
   return field;

@@ -15,7 +15,7 @@ void read_facade(TableReader& r, LayoutSpec& spec) {
       std::array<double, 4> v{};
       bool ok = o && o->size() == 4;
       for (size_t k = 0; ok && k < 4; ++k) {
-        const auto x = o->get(k)->value<double>();
+        const auto x = finite_number(o->get(k));
         ok = x && std::isfinite(*x) && (k < 2 ? *x >= 0 : *x > 0);
         if (ok) v[k] = *x;
       }

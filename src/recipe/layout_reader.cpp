@@ -181,7 +181,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
 // Ordering: the spare share, pack size and lots of the schedules.
 void read_ordering(TableReader& r, LayoutSpec& spec) {
   if (const toml::node* n = r.get("spare")) {
-    const auto v = n->value<double>();
+    const auto v = finite_number(n);
     if (!v || !std::isfinite(*v) || *v < 0 || *v > 10)
       r.fail("spare", "must be a share from 0 to 10, e.g. 0.05 for 5 % spare; not negative");
     spec.spare = *v;

@@ -13,7 +13,7 @@ void read_blocks(TableReader& r, LayoutSpec& spec) {
   if (n) {
     bool ok = a && a->size() == 3;
     for (size_t i = 0; ok && i < 3; ++i) {
-      const auto x = a->get(i)->value<double>();
+      const auto x = finite_number(a->get(i));
       ok = x && *x > 0 && *x <= 1e6;
       if (ok) v[i] = *x;
     }
@@ -40,7 +40,7 @@ void read_rhythm(TableReader& r, Design& design, LayoutSpec& spec, bool field_gi
     r.fail("widths", "must give one element width in mm per value (" + std::to_string(values) +
                          "), value 0 first; 0 leaves a bay empty");
   for (size_t v = 0; v < a->size(); ++v) {
-    const auto x = a->get(v)->value<double>();
+    const auto x = finite_number(a->get(v));
     if (!x || *x < 0 || *x > spec.module_w)
       r.fail_node(*a->get(v), "layout.widths." + std::to_string(v),
                   "must be a width from 0 to the bay (" +

@@ -12,7 +12,9 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   spec.min_bridge = read_mm(r, "min_bridge", 0, 0);
   spec.edge_margin = read_mm(r, "edge_margin", 0, 0);
   spec.chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
-  if (spec.chord_tolerance <= 0) r.fail("chord_tolerance", "must be above 0 mm, e.g. 0.05");
+  // Finer than a micrometre no cutter follows, and the polygons would grow without bound.
+  if (spec.chord_tolerance < 0.001)
+    r.fail("chord_tolerance", "must be from 0.001 mm (a micrometre), e.g. 0.05");
   const auto fix = read_string(r, "fix", "\"none\" or \"drop\"").value_or("none");
   if (fix == "none")
     spec.fix = HoleFix::none;
@@ -41,8 +43,8 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
     if (hole.diameter <= 0) hr.fail("diameter", "must be above 0 mm");
     if (const auto off = hr.get("offset")) {
       const toml::array* o = off->as_array();
-      const auto x = o && o->size() == 2 ? o->get(0)->value<double>() : std::nullopt;
-      const auto y = o && o->size() == 2 ? o->get(1)->value<double>() : std::nullopt;
+      const auto x = o && o->size() == 2 ? finite_number(o->get(0)) : std::nullopt;
+      const auto y = o && o->size() == 2 ? finite_number(o->get(1)) : std::nullopt;
       if (!x || !y) hr.fail("offset", "must be [x, y] in millimetres from the cell centre");
       hole.offset_x = *x, hole.offset_y = *y;
     }

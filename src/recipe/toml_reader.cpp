@@ -1,6 +1,7 @@
 #include "recipe/toml_reader.h"
 
 #include "curdle/palette.h"
+#include "curdle/text.h"
 
 #include <algorithm>
 #include <charconv>
@@ -64,7 +65,13 @@ std::optional<std::string> read_string(TableReader& r, const std::string& key,
   const toml::node* n = r.get(key);
   if (!n) return std::nullopt;
   if (!n->is_string()) r.fail(key, "must be a string in double quotes: " + allowed);
-  return *n->value<std::string>();
+  std::string text = *n->value<std::string>();
+  // Every string ends up in SVG, JSON and CSV: well-formed UTF-8 without control characters.
+  if (!valid_utf8(text)) r.fail(key, "is not valid UTF-8 text");
+  if (has_control_characters(text))
+    r.fail(key, "holds a control character; write plain text (tabs and line breaks allowed)");
+  if (text.size() > 4096) r.fail(key, "is longer than 4096 bytes");
+  return text;
 }
 
 const toml::table* read_table(TableReader& r, const std::string& key) {
@@ -90,6 +97,13 @@ Probability read_probability(const TableReader& r, const toml::node& n, const st
   return *p;
 }
 
+std::optional<double> finite_number(const toml::node* node) {
+  if (!node || !(node->is_integer() || node->is_floating_point())) return std::nullopt;
+  const auto v = node->value<double>();
+  if (!v || !std::isfinite(*v)) return std::nullopt;
+  return v;
+}
+
 double read_mm(TableReader& r, const std::string& key, double fallback, double lo,
                bool required) {
   const toml::node* n = r.get(key);
@@ -97,8 +111,8 @@ double read_mm(TableReader& r, const std::string& key, double fallback, double l
     if (required) r.fail(key, "is required: a length in millimetres");
     return fallback;
   }
-  const auto v = n->value<double>();
-  if (!v || !std::isfinite(*v) || *v < lo || *v > 1e7)
+  const auto v = finite_number(n);
+  if (!v || *v < lo || *v > 1e7)
     r.fail(key, "must be a length in millimetres from " + std::to_string(static_cast<int>(lo)) +
                     " to 10 km");
   return *v;
@@ -115,9 +129,9 @@ std::optional<std::array<double, 2>> read_mm_pair(TableReader& r, const std::str
   std::array<double, 2> v{};
   if (!a || a->size() != 2) r.fail(key, "must be [width, height] in millimetres");
   for (size_t i = 0; i < 2; ++i) {
-    const auto x = a->get(i)->value<double>();
-    if (!x || !std::isfinite(*x) || *x <= 0 || *x > 1e7)
-      r.fail(key, "must be [width, height] in millimetres, each above 0 and up to 10 km");
+    const auto x = finite_number(a->get(i));
+    if (!x || *x < 1 || *x > 1e7)
+      r.fail(key, "must be [width, height] in millimetres, each from 1 mm to 10 km");
     v[i] = *x;
   }
   return v;

@@ -74,10 +74,12 @@ std::optional<Rgb> parse_colour(std::string_view s);
 // A colour written "#rrggbb", or the fallback when the key is absent.
 std::optional<Rgb> read_colour(TableReader& r, const std::string& key);
 Probability read_probability(const TableReader& r, const toml::node& n, const std::string& path);
+// A number that is finite (no NaN or infinity), integer or floating; nothing otherwise.
+std::optional<double> finite_number(const toml::node* node);
 // A length in millimetres from `lo` to 10 km.
 double read_mm(TableReader& r, const std::string& key, double fallback, double lo,
                bool required = false);
-// [width, height] in millimetres, each above 0.
+// [width, height] in millimetres, each from 1 mm to 10 km.
 std::optional<std::array<double, 2>> read_mm_pair(TableReader& r, const std::string& key,
                                                   bool required = false);
 bool read_bool(TableReader& r, const std::string& key, bool fallback);

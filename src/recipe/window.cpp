@@ -29,8 +29,7 @@ Box parse_window(const std::string& text, const Design& design) {
     box.origin[d] = v[d];
     box.size[d] = v[E + d];
   }
-  if (!design.field.contains(box) || box.cells() == 0 || box.size[0] < 1 || box.size[1] < 1 ||
-      box.size[2] < 1) {
+  if (!box.well_formed() || !design.field.contains(box)) {
     std::string field;
     for (int d = 0; d < E; ++d) field += (d ? " x " : "") + std::to_string(design.field.size[d]);
     throw InputError(parameter("window"),

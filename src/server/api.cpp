@@ -77,10 +77,11 @@ RunRequest read_run(const Params& params, const std::set<std::string>& own_names
       r.sets.push_back(value);
     } else if (key.find('.') != std::string::npos) {
       r.sets.push_back(key + "=" + value);
-    } else if (key == "seed") {
-      r.seed = value;
-    } else if (key == "window") {
-      r.window = value;
+    } else if (key == "seed" || key == "window") {
+      // Given empty, it would read as not given: a different run from the one asked for.
+      if (value.empty())
+        throw InputError(parameter(key), "is empty; give a value or leave the parameter out");
+      (key == "seed" ? r.seed : r.window) = value;
     } else if (own_names.count(key)) {
       r.own[key].push_back(value);
     } else {
@@ -331,6 +332,7 @@ ApiResponse api_search(const ApiContext& c, const Params& params) {
     request.seeds = own(r, "seeds", "1..1000");
     request.segment = own(r, "segment");
     request.top = static_cast<int>(integer("top", 10, 1, 100));
+    request.max_work = c.limits.max_search_work;
     request.stride = integer("stride", 0, 1, 1 << 20);
     const auto targets_it = r.own.find("target");
     if (targets_it != r.own.end()) request.targets = targets_it->second;
@@ -338,15 +340,6 @@ ApiResponse api_search(const ApiContext& c, const Params& params) {
     const Design& d = search.run.recipe.design;
     const uint64_t first = search.first, last = search.last;
     check_cells(d, d.field, c.limits.max_cells, "each seed would generate");
-    // Counted as last - first, which cannot overflow, against the most seeds of this field.
-    const uint64_t most = c.limits.max_search_cells / std::max<uint64_t>(1, d.field.cells());
-    if (last - first >= most)
-      throw ResourceLimitError(
-          parameter("seeds"),
-          std::to_string(first) + ".." + std::to_string(last) + " of " +
-              std::to_string(d.field.cells()) +
-              " cells are more than the server searches at once (" + std::to_string(most) +
-              " seeds of this field); search fewer seeds, or run curdle search");
     const auto hits = app::run_search(search, {}, c.stopping);
     ordered_json j = app::search_hits_json(search, hits);
     j["seeds"] = {std::to_string(first), std::to_string(last)};

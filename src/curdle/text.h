@@ -1,0 +1,21 @@
+// Text from users: recipe names and descriptions, query strings. Checked once where it enters,
+// and escaped once where it leaves as markup.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace curdle {
+
+// Well-formed UTF-8 (no overlong forms, surrogates or code points above U+10FFFF).
+bool valid_utf8(std::string_view text);
+
+// True when the text holds a control character other than tab, line feed and carriage return
+// (XML 1.0 forbids them; terminals and CSV readers misread them).
+bool has_control_characters(std::string_view text);
+
+// Text for XML character data and attribute values: &, <, >, " and ' escaped, and characters
+// XML forbids (controls, invalid UTF-8) dropped.
+std::string xml_escape(std::string_view text);
+
+}  // namespace curdle
