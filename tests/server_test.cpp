@@ -234,13 +234,50 @@ TEST_F(ServerTest, BadRequestsAreJsonErrorsThatSayWhatIsAllowed) {
   ASSERT_TRUE(post);
   EXPECT_EQ(post->status, 405);
   EXPECT_NE(post->body.find("GET requests only"), std::string::npos);
-  // An address longer than the server reads, and a body larger than it accepts.
+  // An address longer than the server reads.
   auto longer = get("/api/generate?seed=1&lattice.description=" + std::string(9000, 'a'));
   ASSERT_TRUE(longer);
   EXPECT_EQ(longer->status, 414);
+  // A large body is refused with its method, before anything reads it.
   auto big = client.Post("/api/generate", std::string(100000, 'x'), "text/plain");
   ASSERT_TRUE(big);
-  EXPECT_EQ(big->status, 413);
+  EXPECT_EQ(big->status, 405);
+  // Every method but GET and HEAD is refused, on the API and on the page's files alike.
+  for (const char* method : {"PATCH", "OPTIONS", "PUT", "DELETE"}) {
+    httplib::Request r;
+    r.method = method;
+    r.path = "/index.html";
+    auto answer = client.send(r);
+    ASSERT_TRUE(answer) << method;
+    EXPECT_EQ(answer->status, 405) << method;
+    EXPECT_EQ(answer->get_header_value("Allow"), "GET, HEAD") << method;
+  }
+}
+
+// DNS rebinding and cross-site requests: a page elsewhere may make the browser send requests
+// here (an <img>, a fetch), but with its own Host or Origin.
+TEST_F(ServerTest, RequestsFromOtherSitesAndNamesAreRefused) {
+  httplib::Client client("127.0.0.1", port_);
+  auto with = [&](const httplib::Headers& headers, const std::string& path = "/api/recipe") {
+    auto r = client.Get(path, headers);
+    return r ? r->status : -1;
+  };
+  EXPECT_EQ(with({}), 200);
+  EXPECT_EQ(with({{"Host", "localhost:" + std::to_string(port_)}}), 200);
+  EXPECT_EQ(with({{"Host", "evil.example:" + std::to_string(port_)}}), 403);
+  EXPECT_EQ(with({{"Host", "evil.example:" + std::to_string(port_)}}, "/index.html"), 403);
+  EXPECT_EQ(with({{"Host", "127.0.0.1:1"}}), 403);
+  EXPECT_EQ(with({{"Origin", "http://evil.example"}}), 403);
+  EXPECT_EQ(with({{"Origin", "http://127.0.0.1:" + std::to_string(port_)}}), 200);
+  EXPECT_EQ(with({{"Sec-Fetch-Site", "cross-site"}}), 403);
+  EXPECT_EQ(with({{"Sec-Fetch-Site", "same-origin"}}), 200);
+  // A query that is not UTF-8 text is a 400, not a 500.
+  auto bad = client.Get("/api/generate?name=%FF%FE");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_NE(bad->body.find("not UTF-8"), std::string::npos);
+  // And the server still answers.
+  EXPECT_EQ(with({}), 200);
 }
 
 TEST_F(ServerTest, ConcurrentRequestsGiveEachTheirOwnAnswer) {

@@ -7,6 +7,8 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <chrono>
+#include <cstdlib>
 #include <thread>
 
 #include "app/run.h"
@@ -68,6 +70,14 @@ int run_serve(const ServeOptions& o) {
     std::printf("\ncurdle: stopping (%s)\n", received == SIGINT ? "Ctrl-C" : "SIGTERM");
     std::fflush(stdout);
     server.stop();
+    // Requests still running (a large export) would hold the stop; the server writes no files,
+    // so after a second it ends at once.
+    for (int i = 0; i < 100 && !done; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (!done) {
+      std::printf("curdle: stopped (requests in progress dropped)\n");
+      std::fflush(stdout);
+      std::_Exit(0);
+    }
   });
   const bool served = server.listen();
   // listen() also returns on failure: wake the waiter so that it can be joined.

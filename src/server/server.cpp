@@ -2,10 +2,12 @@
 
 #include <httplib.h>
 
+#include <algorithm>
 #include <chrono>
 #include <semaphore>
 
 #include "curdle/error.h"
+#include "curdle/text.h"
 
 namespace curdle::server {
 
@@ -30,10 +32,39 @@ Params query_params(const std::string& target) {
   return params;
 }
 
+namespace {
+
+// What a request must say in its Host header (and an API request in its Origin): the address
+// the server is bound to, so that a page elsewhere cannot reach it through a DNS name that
+// resolves here (DNS rebinding).
+std::vector<std::string> hosts_for(const std::string& host, int port) {
+  const std::string p = ":" + std::to_string(port);
+  if (host == "127.0.0.1" || host == "localhost" || host == "::1")
+    return {"127.0.0.1" + p, "localhost" + p, "[::1]" + p};
+  if (host.find(':') != std::string::npos) return {"[" + host + "]" + p};
+  return {host + p};
+}
+
+// Bound to every address, the server is reached by this machine's addresses: IP literals.
+bool is_ip_literal_with_port(const std::string& value, int port) {
+  const std::string p = ":" + std::to_string(port);
+  if (value.size() <= p.size() || value.compare(value.size() - p.size(), p.size(), p) != 0)
+    return false;
+  const std::string name = value.substr(0, value.size() - p.size());
+  if (name == "localhost") return true;
+  if (name.size() > 2 && name.front() == '[' && name.back() == ']')
+    return name.find_first_not_of("0123456789abcdefABCDEF:.", 1) == name.size() - 1;
+  return !name.empty() && name.find_first_not_of("0123456789.") == std::string::npos;
+}
+
+}  // namespace
+
 struct Server::Impl {
   ServerConfig config;
   httplib::Server http;
   std::atomic<bool> stopping{false};
+  std::string bound_host;
+  int bound_port = 0;
   std::counting_semaphore<64> slots;
 
   explicit Impl(ServerConfig c)
@@ -63,8 +94,58 @@ struct Server::Impl {
     reply(res, endpoint());
   }
 
+  bool host_allowed(const std::string& value) const {
+    if (bound_host == "0.0.0.0" || bound_host == "::") return is_ip_literal_with_port(value, bound_port);
+    const auto hosts = hosts_for(bound_host, bound_port);
+    return std::find(hosts.begin(), hosts.end(), value) != hosts.end();
+  }
+
+  // Every request is checked before it is routed: its method, its Host, and for the API its
+  // origin and the text of its query.
+  httplib::Server::HandlerResponse screen(const httplib::Request& req, httplib::Response& res) {
+    const bool api = req.path.rfind("/api/", 0) == 0;
+    auto refuse = [&](int status, const std::string& message) {
+      if (status == 405) res.set_header("Allow", "GET, HEAD");
+      if (api)
+        reply(res, api_error(status, message));
+      else {
+        res.status = status;
+        res.set_content(message + "\n", "text/plain");
+      }
+      return httplib::Server::HandlerResponse::Handled;
+    };
+    if (req.method != "GET" && req.method != "HEAD")
+      return refuse(405, "the server takes GET requests only, not " + req.method);
+    if (!host_allowed(req.get_header_value("Host")))
+      return refuse(403, "this server answers requests addressed to " +
+                             hosts_for(bound_host, bound_port).front() + " only");
+    if (api) {
+      const std::string origin = req.get_header_value("Origin");
+      if (!origin.empty() &&
+          !(origin.rfind("http://", 0) == 0 && host_allowed(origin.substr(7))))
+        return refuse(403, "requests from other sites are refused (Origin " + origin + ")");
+      const std::string site = req.get_header_value("Sec-Fetch-Site");
+      if (!site.empty() && site != "same-origin" && site != "none")
+        return refuse(403, "requests from other sites are refused (Sec-Fetch-Site " + site + ")");
+      for (const auto& [key, value] : query_params(req.target))
+        if (!valid_utf8(key) || !valid_utf8(value) || has_control_characters(key) ||
+            has_control_characters(value))
+          return refuse(400, "the query holds bytes that are not UTF-8 text");
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
+  }
+
   void routes() {
     http.set_payload_max_length(config.max_body_bytes);
+    // Slow clients: each read waits at most 2 s, an idle connection closes after 2 s, and the
+    // pool has threads enough that a few slow sockets cannot take every one.
+    http.set_read_timeout(2, 0);
+    http.set_write_timeout(10, 0);
+    http.set_keep_alive_timeout(2);
+    http.set_keep_alive_max_count(100);
+    http.new_task_queue = [] { return new httplib::ThreadPool(32); };
+    http.set_pre_routing_handler(
+        [this](const httplib::Request& req, httplib::Response& res) { return screen(req, res); });
     // SO_REUSEADDR only: httplib's default SO_REUSEPORT would let a second server take the
     // same port silently, each answering half the requests.
     http.set_socket_options([](socket_t sock) {
@@ -96,9 +177,6 @@ struct Server::Impl {
                                : "the API takes GET requests only"));
     };
     http.Get(R"(/api/.*)", not_found);
-    http.Post(R"(/api/.*)", not_found);
-    http.Put(R"(/api/.*)", not_found);
-    http.Delete(R"(/api/.*)", not_found);
     http.set_mount_point("/", config.web_root.string());
     http.set_exception_handler(
         [this](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
@@ -109,6 +187,7 @@ struct Server::Impl {
       // API, plain text for files.
       if (!res.body.empty()) return;
       const std::string message = res.status == 413   ? "the request is too large"
+                                  : res.status == 400 ? "the request is malformed"
                                   : res.status == 414 ? "the request's address is too long"
                                   : res.status == 404 ? "not found: " + req.path
                                                       : "request failed";
@@ -137,6 +216,8 @@ int Server::bind(const std::string& host, int port) {
                      "cannot listen on " + host + ":" + std::to_string(port) +
                          " (in use, or not an address of this machine); choose another port, "
                          "or 0 for any free port");
+  impl_->bound_host = host;
+  impl_->bound_port = bound;
   return bound;
 }
 
