@@ -1,6 +1,11 @@
 #include "app/output_sink.h"
 
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <cstdio>
+#include <mutex>
+#include <set>
 
 #include <cerrno>
 #include <cstring>
@@ -30,7 +35,43 @@ void OutputSink::write_via_file(const std::string& name,
   write(name, [&](std::ostream& out) { out << bytes.str(); });
 }
 
-StagingDirectory::StagingDirectory(fs::path dir) : dir_(std::move(dir)) {
+namespace {
+
+// Every path staged by any sink, for remove_staged_files_for_exit.
+std::mutex staged_mutex;
+std::set<fs::path>& staged_paths() {
+  static std::set<fs::path> paths;
+  return paths;
+}
+void remember(const fs::path& p) {
+  std::lock_guard<std::mutex> lock(staged_mutex);
+  staged_paths().insert(p);
+}
+void forget(const fs::path& p) {
+  std::lock_guard<std::mutex> lock(staged_mutex);
+  staged_paths().erase(p);
+}
+
+void write_to(const fs::path& path, const fs::path& target,
+              const std::function<void(std::ostream&)>& fill) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError("cannot write " + target.string() + ": " + std::strerror(errno));
+  fill(out);
+  out.flush();
+  if (!out) throw InputError("cannot write " + target.string() + ": " + std::strerror(errno));
+}
+
+}  // namespace
+
+void remove_staged_files_for_exit() {
+  staged_mutex.lock();  // never released: no sink stages anything after this
+  std::error_code ec;
+  for (const fs::path& p : staged_paths()) fs::remove_all(p, ec);
+}
+
+StagingDirectory::StagingDirectory(fs::path dir,
+                                   std::function<bool(const std::string&, bool)> is_output)
+    : dir_(std::move(dir)) {
   // The nearest existing ancestor must be a directory we may write into; nothing is made yet,
   // so that a run that fails leaves no new directory behind.
   fs::path existing = fs::absolute(dir_).lexically_normal();
@@ -42,12 +83,40 @@ StagingDirectory::StagingDirectory(fs::path dir) : dir_(std::move(dir)) {
   if (::access(existing.c_str(), W_OK) != 0)
     throw InputError("cannot create the output directory " + dir_.string() + ": " +
                      std::strerror(errno));
+  // Replaced whole when the directory is new, or holds nothing but this program's outputs.
+  const fs::path absolute = fs::absolute(dir_).lexically_normal();
+  whole_ = absolute.has_filename() && absolute != fs::current_path(ec);
+  if (whole_ && fs::exists(dir_, ec)) {
+    for (const auto& entry : fs::directory_iterator(dir_, ec)) {
+      const std::string name = entry.path().filename().string();
+      const bool folder = entry.is_directory(ec);
+      const bool ours = name[0] == '.' ? !folder && name.find(".tmp-") != std::string::npos
+                                       : is_output && is_output(name, folder);
+      if (!ours) {
+        whole_ = false;
+        break;
+      }
+    }
+    if (ec) whole_ = false;
+  }
+  if (whole_) {
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on a chain of + here.
+    std::string hidden = ".";
+    hidden += absolute.filename().string();
+    hidden += ".curdle-";
+    hidden += std::to_string(::getpid());
+    staging_ = absolute.parent_path() / hidden;
+  }
 }
 
 StagingDirectory::~StagingDirectory() {
   if (committed_) return;
-  staged_.clear();  // removes the staged files
+  staged_.clear();  // removes the files staged beside their targets
   std::error_code ec;
+  if (!staging_.empty()) {
+    fs::remove_all(staging_, ec);
+    forget(staging_);
+  }
   for (auto it = made_.rbegin(); it != made_.rend(); ++it) fs::remove(*it, ec);  // if empty
 }
 
@@ -62,33 +131,67 @@ void StagingDirectory::make_dir(const fs::path& dir) {
   made_.insert(made_.end(), missing.rbegin(), missing.rend());
 }
 
-StagedFile& StagingDirectory::stage(const std::string& name) {
+fs::path StagingDirectory::prepare(const std::string& name) {
+  names_.push_back(name);
+  if (whole_) {
+    if (!fs::exists(staging_)) {
+      make_dir(staging_.parent_path());
+      remember(staging_);
+      make_output_dir(staging_);
+    }
+    const fs::path path = staging_ / name;
+    if (path.parent_path() != staging_) make_output_dir(path.parent_path());
+    return path;
+  }
   const fs::path target = dir_ / name;
   make_dir(target.parent_path());
   staged_.push_back(std::make_unique<StagedFile>(target));
-  return *staged_.back();
+  remember(staged_.back()->temporary());
+  return staged_.back()->temporary();
 }
 
 void StagingDirectory::write(const std::string& name,
                              const std::function<void(std::ostream&)>& fill) {
-  stage(name).write(fill);
+  write_to(prepare(name), dir_ / name, fill);
 }
 
 void StagingDirectory::write_via_file(const std::string& name,
                                       const std::function<void(const fs::path&)>& fill) {
-  fill(stage(name).temporary());
+  fill(prepare(name));
 }
 
 void StagingDirectory::commit() {
-  if (staged_.empty()) make_dir(dir_);  // a run with nothing to write still makes its directory
+  if (names_.empty()) {  // a run with nothing to write still makes its directory
+    make_dir(dir_);
+    committed_ = true;
+    return;
+  }
+  if (whole_) {
+    std::error_code ec;
+    if (!fs::exists(dir_, ec)) {
+      fs::rename(staging_, dir_, ec);
+      if (ec) throw InputError("cannot write " + dir_.string() + ": " + ec.message());
+    } else {
+      // One rename swaps the whole set in: a reader sees the old set or the new, never a mix.
+      if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, dir_.c_str(), RENAME_EXCHANGE) != 0)
+        throw InputError("cannot replace " + dir_.string() + ": " + std::strerror(errno));
+      fs::remove_all(staging_, ec);  // now the old set
+    }
+    forget(staging_);
+    committed_ = true;
+    return;
+  }
   for (auto& f : staged_) f->check_replaceable();
-  for (auto& f : staged_) f->commit();
+  for (auto& f : staged_) {
+    f->commit();
+    forget(f->temporary());
+  }
   committed_ = true;
 }
 
 std::vector<fs::path> StagingDirectory::files() const {
   std::vector<fs::path> files;
-  for (const auto& f : staged_) files.push_back(f->target());
+  for (const std::string& n : names_) files.push_back(dir_ / n);
   return files;
 }
 

@@ -24,28 +24,40 @@ class OutputSink {
                               const std::function<void(const std::filesystem::path&)>& fill);
 };
 
-// Stages every file beside its target in `dir`; commit() renames them all into place, and a
-// sink destroyed before that removes what it staged, and the directories it made.
+// Writes a set of files into `dir`, replaced whole or not at all. While the run writes, the
+// new set is staged in a hidden directory beside `dir`; commit() swaps it in with one rename
+// (renameat2 RENAME_EXCHANGE) and removes the old set. A directory that also holds files this
+// program did not write (`is_output` says which it writes) keeps them: there each file is
+// staged beside its target and renamed into place. A sink destroyed before commit() removes
+// everything it staged and the directories it made.
 class StagingDirectory : public OutputSink {
  public:
-  // Throws InputError when `dir` cannot be made or written; makes it at the first file.
-  explicit StagingDirectory(std::filesystem::path dir);
+  explicit StagingDirectory(std::filesystem::path dir,
+                            std::function<bool(const std::string&, bool folder)> is_output = {});
   ~StagingDirectory() override;
   void write(const std::string& name, const std::function<void(std::ostream&)>& fill) override;
   void write_via_file(const std::string& name,
                       const std::function<void(const std::filesystem::path&)>& fill) override;
   void commit();
-  std::vector<std::filesystem::path> files() const;  // in the order written
+  std::vector<std::filesystem::path> files() const;  // the targets, in the order written
   const std::filesystem::path& dir() const { return dir_; }
+  bool replaces_whole() const { return whole_; }
 
  private:
-  StagedFile& stage(const std::string& name);
+  std::filesystem::path prepare(const std::string& name);  // where to write `name` now
   void make_dir(const std::filesystem::path& dir);
-  std::filesystem::path dir_;
-  std::vector<std::unique_ptr<StagedFile>> staged_;
+  std::filesystem::path dir_, staging_;
+  bool whole_ = false;
+  std::vector<std::string> names_;
+  std::vector<std::unique_ptr<StagedFile>> staged_;  // beside their targets (not whole)
   std::vector<std::filesystem::path> made_;  // directories this sink created, outermost first
   bool committed_ = false;
 };
+
+// After SIGINT or SIGTERM: removes every staged file and directory of every sink, and blocks
+// any new one, so that the process can end at once leaving nothing behind. Call it from a
+// thread (not a signal handler), then end the process.
+void remove_staged_files_for_exit();
 
 // Keeps every file in memory, by name.
 class MemorySink : public OutputSink {

@@ -198,6 +198,14 @@ const std::vector<Output>& output_registry() {
   return registry;
 }
 
+bool is_output_name(const std::string& name, bool folder) {
+  if (folder) return name == "sheets";
+  if (name == "layout.bin") return true;
+  for (const Output& o : output_registry())
+    if (o.name == name && o.name != "sheets") return true;
+  return false;
+}
+
 const Output* find_output(const std::string& name) {
   for (const Output& o : output_registry())
     if (o.name == name || o.name.substr(0, o.name.find('.')) == name) return &o;

@@ -43,6 +43,9 @@ struct Output {
 };
 
 const std::vector<Output>& output_registry();
+// A file or folder name a run writes (outputs, layout.bin, sheets): what a directory that is
+// replaced whole may hold.
+bool is_output_name(const std::string& name, bool folder);
 const Output* find_output(const std::string& name);
 
 // The outputs a run writes: those named (a name without its extension is taken too, e.g.

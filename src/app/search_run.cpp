@@ -138,6 +138,12 @@ nlohmann::ordered_json search_hits_json(const SearchRun& s, const std::vector<Se
   return j;
 }
 
+bool is_search_output_name(const std::string& name, bool folder) {
+  if (folder) return false;
+  return name == "search.csv" ||
+         (name.rfind("rank-", 0) == 0 && name.size() > 4 && name.substr(name.size() - 4) == ".png");
+}
+
 std::vector<std::string> write_search_outputs(const SearchRun& s,
                                               const std::vector<SearchHit>& hits,
                                               const nlohmann::ordered_json& j, bool previews,

@@ -59,6 +59,9 @@ std::vector<SearchHit> run_search(const SearchRun& search,
 nlohmann::ordered_json search_hits_json(const SearchRun& search,
                                         const std::vector<SearchHit>& hits);
 
+// search.csv or a preview (rank-01-seed-7.png): what a search's directory may hold.
+bool is_search_output_name(const std::string& name, bool folder);
+
 // search.csv, and with `previews` a preview PNG of each hit's segment, to `sink`.
 // Returns the previews' names.
 std::vector<std::string> write_search_outputs(const SearchRun& search,

@@ -65,7 +65,7 @@ int run_generate(const CommonOptions& common, const std::string& out_dir,
   const fs::path dir = out_dir.empty()
                            ? fs::path("curdle-out") / fs::path(common.recipe_path).stem()
                            : fs::path(out_dir);
-  app::StagingDirectory sink(dir);
+  app::StagingDirectory sink(dir, app::is_output_name);
   const app::RunSummary summary = app::write_outputs(run, outputs, sink, common.threads, &observer);
   sink.commit();
   print_summary(summary, run, dir, sink.files());

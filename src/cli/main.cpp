@@ -72,5 +72,6 @@ int run(int argc, char** argv) {
 }  // namespace curdle::cli
 
 int main(int argc, char** argv) {
+  curdle::cli::remove_staged_files_on_interrupt();
   return curdle::cli::exit_code([&] { return curdle::cli::run(argc, argv); });
 }

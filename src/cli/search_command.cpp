@@ -70,7 +70,7 @@ int run_search(const SearchOptions& o) {
   const fs::path dir = o.out_dir.empty() ? fs::path("curdle-out") /
                                                (fs::path(o.recipe_path).stem().string() + "-search")
                                          : fs::path(o.out_dir);
-  app::StagingDirectory sink(dir);
+  app::StagingDirectory sink(dir, app::is_search_output_name);
   std::vector<SearchHit> hits;
   {
     Progress progress("searching");

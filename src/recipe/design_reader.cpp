@@ -117,6 +117,8 @@ Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {
   if (!t) return field;
   TableReader r(*t, "field", top.source(), {"cells", "window"});
   const int64_t max_roots = l.dimension == 1 ? (int64_t{1} << 32) : l.dimension == 2 ? 65536 : 1024;
+  // At most 2^40 cells along an axis, however large the root cells: no product overflows.
+  const int64_t most = side > Box::kLimit / max_roots ? Box::kLimit : max_roots * side;
   auto read_numbers = [&](const std::string& key,
                           size_t count) -> std::optional<std::vector<int64_t>> {
     const toml::node* n = r.get(key);
@@ -133,10 +135,10 @@ Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {
   };
   if (auto cells = read_numbers("cells", l.dimension)) {
     for (int d = 0; d < l.dimension; ++d) {
-      if ((*cells)[d] < 1 || (*cells)[d] > max_roots * side)
-        r.fail("cells", "each size must be from 1 to " + std::to_string(max_roots * side) +
-                            " cells (" + std::to_string(max_roots) + " root cells of " +
-                            std::to_string(side) + ")");
+      if ((*cells)[d] < 1 || (*cells)[d] > most)
+        r.fail("cells", "each size must be from 1 to " + std::to_string(most) + " cells (" +
+                            std::to_string(max_roots) + " root cells of " +
+                            std::to_string(side) + ", and at most 2^40)");
       field.size[d] = (*cells)[d];
     }
   }

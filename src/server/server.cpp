@@ -37,8 +37,14 @@ namespace {
 // What a request must say in its Host header (and an API request in its Origin): the address
 // the server is bound to, so that a page elsewhere cannot reach it through a DNS name that
 // resolves here (DNS rebinding).
+std::string port_suffix(int port) {
+  std::string p = ":";  // appended: GCC 12 warns falsely (-Wrestrict) on ":" + ...
+  p += std::to_string(port);
+  return p;
+}
+
 std::vector<std::string> hosts_for(const std::string& host, int port) {
-  const std::string p = ":" + std::to_string(port);
+  const std::string p = port_suffix(port);
   if (host == "127.0.0.1" || host == "localhost" || host == "::1")
     return {"127.0.0.1" + p, "localhost" + p, "[::1]" + p};
   if (host.find(':') != std::string::npos) return {"[" + host + "]" + p};
@@ -47,7 +53,7 @@ std::vector<std::string> hosts_for(const std::string& host, int port) {
 
 // Bound to every address, the server is reached by this machine's addresses: IP literals.
 bool is_ip_literal_with_port(const std::string& value, int port) {
-  const std::string p = ":" + std::to_string(port);
+  const std::string p = port_suffix(port);
   if (value.size() <= p.size() || value.compare(value.size() - p.size(), p.size(), p) != 0)
     return false;
   const std::string name = value.substr(0, value.size() - p.size());

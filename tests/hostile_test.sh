@@ -1,0 +1,181 @@
+#!/usr/bin/env bash
+# Hostile input: every example that once crashed, hung or wrote a bad file now exits 2 (or a
+# 4xx from the server) with a message; the server keeps answering; an interrupted or failing
+# run leaves the previous output set intact and no temporary files.
+# Usage: CURDLE=path/to/curdle hostile_test.sh SOURCE_DIR SECTION   (recipes, options, kills, server)
+set -u
+src=${1:?source dir}
+section=${2:?section}
+curdle=${CURDLE:?path to curdle}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+p="$src/patterns"
+
+# Runs curdle (at most 60 s), expecting exit 2, a message containing $1, and no output.
+refused() {
+  local pattern=$1
+  shift
+  rm -rf "$work/out"
+  timeout 60 "$curdle" "$@" --out "$work/out" >"$work/stdout" 2>"$work/stderr"
+  local got=$?
+  if [ "$got" -ne 2 ]; then
+    fail "curdle $* exited $got, expected 2: $(head -c 300 "$work/stderr")"
+  elif ! grep -qF -- "$pattern" "$work/stderr"; then
+    fail "curdle $*: message lacks '$pattern': $(head -c 300 "$work/stderr")"
+  elif [ -e "$work/out" ]; then
+    fail "curdle $*: a refused run left $work/out"
+  else
+    pass
+  fi
+}
+
+section_recipes() {
+  refused "each from 1 mm" generate "$p/paper/fig7-paving-20m.toml" --set 'layout.floor=[1e-300,1e-300]'
+  refused "sizes from 1" generate "$p/paper/fig3-two-curds.toml" --set 'field.window=[0,0,-1,-1]'
+  refused "layout.widths.3" generate "$p/fins-facade-rhythm.toml" --set 'layout.widths=[0,100,180,nan]'
+  refused "layout.widths.0" generate "$p/fins-facade-rhythm.toml" --set 'layout.widths=[inf,100,180,0]'
+  refused "from 0.001 mm" generate "$p/perforated-aluminium-screen.toml" --set layout.chord_tolerance=1e-9
+  refused "layout.holes.0.offset" generate "$p/perforated-aluminium-screen.toml" --set 'layout.holes.0.offset=[nan,0]'
+  refused "probabilities.0" generate "$p/paper/fig3-two-curds.toml" --set 'curds.0.probabilities=[nan,0.5]'
+  refused "not valid UTF-8" generate "$p/paper/fig3-two-curds.toml" --set $'name=\xff\xfe'
+  refused "control character" generate "$p/paper/fig3-two-curds.toml" --set $'description=a\x1bb'
+  refused "memory limit" generate "$p/paper/fig6-decreasing.toml" --set lattice.base=2 \
+    --set lattice.dimension=1 --set "curds.0.probabilities=[$(printf '0.5,%.0s' {1..55})0.5]" \
+    --max-memory 1G
+  refused "not a regular file" generate "$p"
+  sed 's|^mask = .*|mask = "/dev/zero"|' "$p/gallery-facade-mask.toml" > "$work/zero.toml"
+  refused "not a regular file" generate "$work/zero.toml"
+  # A small PNG that decodes to 12,000 x 12,000 pixels: refused from its header.
+  python3 - "$work/big.png" <<'PY'
+import struct, sys, zlib
+w = h = 12000
+raw = zlib.compress(b''.join(b'\0' + b'\0' * w for _ in range(h)), 9)
+chunk = lambda t, d: struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d))
+open(sys.argv[1], 'wb').write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 0, 0, 0, 0)) + chunk(b'IDAT', raw) + chunk(b'IEND', b''))
+PY
+  sed 's|^mask = .*|mask = "big.png"|' "$p/gallery-facade-mask.toml" > "$work/big.toml"
+  refused "12000 x 12000 pixels" generate "$work/big.toml" --max-memory 64M
+  # Markup in a name is text in every drawing, never markup.
+  timeout 60 "$curdle" generate "$p/brick-facade-five-storeys.toml" --set 'name=Smith & Sons <script>' \
+    --outputs layout.svg,install.svg --out "$work/named" > /dev/null 2>&1 && pass || fail "a name with & and < was refused"
+  for f in layout.svg install.svg; do
+    xmllint --noout "$work/named/$f" && pass || fail "$f with a name holding & and < is not XML"
+    grep -q '<script' "$work/named/$f" && fail "$f holds a live <script>" || pass
+  done
+}
+
+section_options() {
+  f3="$p/paper/fig3-two-curds.toml"
+  refused "must lie inside the field" generate "$f3" --set 'field.cells=[16,16]' --window 9223372036854775807,0,1,1
+  refused "is not a size" generate "$f3" --max-memory 16777216T
+  refused "is empty" generate "$f3" --window ''
+  refused "is empty" generate "$f3" --max-memory ''
+  refused "is empty" generate "$f3" --seed ''
+  refused "at most 2^40 cells" search "$f3" --seeds 1..1 --target empty=4611687117939015680,0,4611686018427387904,1
+  refused "at most 2^40 seeds" search "$f3" --seeds 0..18446744073709551614
+  refused "above the budget" search "$f3" --set 'field.cells=[1024,1024]' --seeds 0..100000000
+}
+
+# Interrupted runs: the previous set stays whole (byte for byte), no temporary is left; a run
+# that finishes replaces the set whole.
+section_kills() {
+  f7="$p/paper/fig7-paving-20m.toml"
+  "$curdle" generate "$f7" --seed 1 --out "$work/kill/out" > /dev/null || fail "first run failed"
+  (cd "$work/kill/out" && md5sum ./* > "$work/before.md5")
+  local interrupted=0
+  for delay in 0.02 0.05 0.1 0.2 0.3 0.5; do
+    for signal in INT TERM; do
+      "$curdle" generate "$f7" --seed 2 --set 'field.cells=[3000,3000]' --window 10,10,67,67 \
+        --outputs report.json,cells.csv,preview.png --out "$work/kill/out" > /dev/null 2>&1 &
+      local pid=$!
+      sleep "$delay"
+      kill -"$signal" "$pid" 2> /dev/null
+      wait "$pid"
+      local code=$?
+      if [ "$code" -eq 130 ] || [ "$code" -eq 143 ]; then
+        interrupted=$((interrupted + 1))
+        (cd "$work/kill/out" && md5sum --quiet -c "$work/before.md5") && pass \
+          || fail "an interrupted run ($signal after ${delay}s) changed the previous set"
+      elif [ "$code" -eq 0 ]; then
+        grep -q '"seed": 2' "$work/kill/out/report.json" && [ ! -e "$work/kill/out/schedule.csv" ] \
+          && pass || fail "a finished run did not replace the set whole"
+        "$curdle" generate "$f7" --seed 1 --out "$work/kill/out" > /dev/null
+      else
+        fail "an interrupted run exited $code"
+      fi
+      [ "$(ls -A "$work/kill")" = "out" ] && pass || fail "temporaries left: $(ls -A "$work/kill")"
+      [ -z "$(ls -A "$work/kill/out" | grep '^\.')" ] && pass || fail "hidden files left in the set"
+    done
+  done
+  [ "$interrupted" -gt 0 ] && pass || fail "no run was interrupted: the test did not test"
+}
+
+section_server() {
+  "$curdle" serve "$p/paper/fig8-segment-of-large-curd.toml" --port 0 > "$work/serve.out" 2>&1 &
+  local pid=$!
+  for _ in $(seq 50); do grep -q "open http" "$work/serve.out" && break; sleep 0.1; done
+  local port
+  port=$(sed -n 's/.*127\.0\.0\.1:\([0-9]*\).*/\1/p' "$work/serve.out")
+  python3 - "$port" <<'PY' && pass || fail "hostile requests"
+import http.client, json, socket, sys, time
+port = int(sys.argv[1])
+def get(path, headers=None, method="GET"):
+    c = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
+    c.request(method, path, headers=headers or {})
+    r = c.getresponse()
+    return r.status, r.read()
+bad = 0
+cases = [
+    ("/api/search?seeds=1..1&target=empty=4611687117939015680,0,4611686018427387904,1", 400),
+    ("/api/generate?layout.floor=%5B1e-300,1e-300%5D", 400),
+    ("/api/generate?field.window=%5B0,0,-1,-1%5D", 400),
+    ("/api/export?file=layout.svg&layout.tile=%5Bnan,300%5D", 400),
+    ("/api/generate?window=9223372036854775807,0,1,1", 400),
+    ("/api/generate?name=%FF%FE", 400),
+    ("/api/generate?window=", 400),
+    ("/api/search?seeds=1..268435456", 413),
+    ("/api/export?file=layout.svg&layout.mask=%22%2Fdev%2Fzero%22", 400),
+]
+for path, status in cases:
+    got, body = get(path)
+    if got != status or b"error" not in body:
+        print("FAIL", path, got, body[:200]); bad += 1
+for method in ("PATCH", "OPTIONS", "POST", "PUT", "DELETE"):
+    got, _ = get("/api/recipe", method=method)
+    if got != 405: print("FAIL", method, got); bad += 1
+for headers in ({"Host": "evil.example:%d" % port}, {"Origin": "http://evil.example"},
+                {"Sec-Fetch-Site": "cross-site"}):
+    got, _ = get("/api/recipe", headers)
+    if got != 403: print("FAIL", headers, got); bad += 1
+# Slow clients: eight sockets sending a header line every second do not stop the server.
+slow = []
+for _ in range(8):
+    s = socket.create_connection(("127.0.0.1", port)); s.sendall(b"GET / HTTP/1.1\r\n"); slow.append(s)
+time.sleep(1)
+for s in slow:
+    try: s.sendall(b"X-Slow: 1\r\n")
+    except OSError: pass
+start = time.time()
+got, _ = get("/api/recipe")
+if got != 200 or time.time() - start > 5: print("FAIL slow clients", got, time.time() - start); bad += 1
+for s in slow: s.close()
+got, body = get("/api/generate?seed=3&cells=0")
+if got != 200: print("FAIL the server no longer answers", got); bad += 1
+sys.exit(1 if bad else 0)
+PY
+  kill -TERM "$pid"
+  local start=$(date +%s%N)
+  wait "$pid" && pass || fail "serve exited $? on SIGTERM"
+  [ $(( ($(date +%s%N) - start) / 1000000 )) -lt 1500 ] && pass || fail "serve took over a second to stop"
+}
+
+if ! declare -F "section_$section" > /dev/null; then
+  echo "unknown section '$section'" >&2
+  exit 2
+fi
+"section_$section"
+echo "hostile $section: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
