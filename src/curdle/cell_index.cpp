@@ -25,17 +25,6 @@ uint64_t axis_path(const Lattice& l, int axis, uint64_t c, int first, int last) 
 
 }  // namespace
 
-uint64_t CellIndex::count_roots(const Lattice& lattice, const Box& covered) {
-  const int64_t side = static_cast<int64_t>(lattice.root_side());
-  uint64_t roots = 1;
-  for (int d = 0; d < lattice.dimension; ++d) {
-    const int64_t first = floor_div(covered.origin[d], side);
-    const int64_t last = floor_div(covered.origin[d] + covered.size[d] - 1, side);
-    roots *= static_cast<uint64_t>(last - first + 1);
-  }
-  return roots;
-}
-
 uint64_t CellIndex::table_bytes(const Lattice& lattice) {
   const int low_stages = lattice.stages / 2;
   const double spans = std::pow(static_cast<double>(lattice.base), low_stages) +

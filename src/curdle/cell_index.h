@@ -25,8 +25,8 @@ class CellIndex {
   CellIndex() = default;
   CellIndex(const Lattice& lattice, const Box& covered);
 
-  // What a CellIndex would hold, known without building it (for memory estimates).
-  static uint64_t count_roots(const Lattice& lattice, const Box& covered);
+  // Bytes the index tables of a lattice take, known without building them (for memory
+  // estimates; a deep lattice's tables alone can be gigabytes).
   static uint64_t table_bytes(const Lattice& lattice);
 
   const Lattice& lattice() const { return lattice_; }

@@ -487,7 +487,7 @@ uint64_t estimate_memory(const Design& design, const Box& box) {
   // Counted without building anything (a deep lattice's index tables alone can be gigabytes),
   // in 128 bits so that no product wraps; saturates at 2^64 - 1.
   const Lattice& l = design.lattice;
-  const unsigned __int128 roots = CellIndex::count_roots(l, box);
+  const unsigned __int128 roots = cells_meeting(l, 0, box);
   unsigned __int128 words = 0;
   for (int k = 0; k <= l.stages; ++k) words += (roots * l.cells_per_root(k) + 63) / 64;
   const unsigned __int128 bytes =
