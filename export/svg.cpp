@@ -410,7 +410,6 @@ Rgb seamless_background(const Layout& layout) {
 
 void write_layout_svg(std::ostream& out, const Layout& layout) {
   const Provenance& source = layout.source;
-  const LayoutSpec& spec = layout.spec;
   const double W = layout.width, H = layout.height;
   const double unit = std::max(W, H) / 60;  // text and line sizes follow the drawing
   const double margin = unit * 2;

@@ -192,7 +192,7 @@ ordered_json describe(const app::Run& s) {
 
 ApiResponse json_response(const ordered_json& j) {
   ApiResponse r;
-  r.body = j.dump();
+  r.body = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   return r;
 }
 
@@ -227,7 +227,9 @@ const char* content_type(const std::string& name) {
 ApiResponse api_error(int status, const std::string& message) {
   ApiResponse r;
   r.status = status;
-  r.body = ordered_json{{"error", message}, {"status", status}}.dump();
+  // A message may quote bytes a caller sent that are not UTF-8: replaced, never thrown on.
+  r.body = ordered_json{{"error", message}, {"status", status}}.dump(
+      -1, ' ', false, nlohmann::json::error_handler_t::replace);
   return r;
 }
 
