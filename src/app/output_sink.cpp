@@ -43,10 +43,6 @@ std::set<fs::path>& staged_paths() {
   static std::set<fs::path> paths;
   return paths;
 }
-void remember(const fs::path& p) {
-  std::lock_guard<std::mutex> lock(staged_mutex);
-  staged_paths().insert(p);
-}
 void forget(const fs::path& p) {
   std::lock_guard<std::mutex> lock(staged_mutex);
   staged_paths().erase(p);
@@ -132,11 +128,14 @@ void StagingDirectory::make_dir(const fs::path& dir) {
 }
 
 fs::path StagingDirectory::prepare(const std::string& name) {
+  // Under the lock that remove_staged_files_for_exit keeps: once it has run, nothing new is
+  // staged (this blocks until the process ends).
+  std::lock_guard<std::mutex> lock(staged_mutex);
   names_.push_back(name);
   if (whole_) {
     if (!fs::exists(staging_)) {
       make_dir(staging_.parent_path());
-      remember(staging_);
+      staged_paths().insert(staging_);
       make_output_dir(staging_);
     }
     const fs::path path = staging_ / name;
@@ -146,7 +145,7 @@ fs::path StagingDirectory::prepare(const std::string& name) {
   const fs::path target = dir_ / name;
   make_dir(target.parent_path());
   staged_.push_back(std::make_unique<StagedFile>(target));
-  remember(staged_.back()->temporary());
+  staged_paths().insert(staged_.back()->temporary());
   return staged_.back()->temporary();
 }
 
