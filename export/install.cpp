@@ -74,9 +74,8 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
 
   // Row numbers beside the origin side, and where laying starts.
   if (layout.kind != LayoutKind::blocks) {
-    const bool from_right =
-        layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
-    const bool from_top = layout.origin == Corner::top_left || layout.origin == Corner::top_right;
+    const bool right = from_right(layout.origin);
+    const bool top = from_top(layout.origin);
     std::map<int64_t, std::pair<double, double>> rows;  // row -> y extent
     for (const Element& e : layout.elements) {
       auto& r = rows.try_emplace(e.row, 1e300, -1e300).first->second;
@@ -85,12 +84,12 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
     out << fmt::format("<g id=\"rows\" font-size=\"{}\" fill=\"#c92a2a\">\n", num(unit * 0.6));
     for (const auto& [row, extent] : rows)
       out << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"{}\">row {}</text>\n",
-                         num(from_right ? x(W) + unit * 0.3 : x(0) - unit * 0.3),
+                         num(right ? x(W) + unit * 0.3 : x(0) - unit * 0.3),
                          num(y((extent.first + extent.second) / 2) + unit * 0.2),
-                         from_right ? "start" : "end", row);
+                         right ? "start" : "end", row);
     out << "</g>\n";
-    const double sx = from_right ? W : 0, sy = from_top ? H : 0;
-    const double dx = from_right ? -1 : 1, dy = from_top ? -1 : 1;
+    const double sx = right ? W : 0, sy = top ? H : 0;
+    const double dx = right ? -1 : 1, dy = top ? -1 : 1;
     out << fmt::format(
         "<g id=\"laying-order\" stroke=\"#c92a2a\" stroke-width=\"{0}\" fill=\"#c92a2a\">"
         "<circle cx=\"{1}\" cy=\"{2}\" r=\"{3}\"/>"
@@ -98,8 +97,8 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
         "<text x=\"{6}\" y=\"{7}\" stroke=\"none\" font-size=\"{8}\">start: row 0, column 0; "
         "rows run this way, columns along each row</text></g>\n",
         num(unit * 0.12), num(x(sx)), num(y(sy)), num(unit * 0.4), num(dx * unit * 4),
-        num(-dy * unit * 4), num(x(sx) + dx * unit * 0.8 - (from_right ? unit * 20 : 0)),
-        num(y(sy) + (from_top ? -unit : unit * 1.6)), num(unit * 0.6));
+        num(-dy * unit * 4), num(x(sx) + dx * unit * 0.8 - (right ? unit * 20 : 0)),
+        num(y(sy) + (top ? -unit : unit * 1.6)), num(unit * 0.6));
   }
   out << "</svg>\n";
 }

@@ -136,8 +136,7 @@ PreviewImage render_layout(const Layout& layout) {
     canvas.rgb[i + 2] = background.b;
   for (const Rect& o : layout.openings) canvas.fill(o, Rgb{223, 234, 242});
   for (const auto& [rect, value] : layout.views) canvas.fill(rect, layout.legend[value].colour);
-  const bool from_right =
-      layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
+  const bool right = from_right(layout.origin);
   for (const Element& e : layout.elements) {
     if (!layout.views.empty()) break;  // blocks are drawn as their views
     const LegendEntry& entry = layout.legend[e.value];
@@ -162,7 +161,7 @@ PreviewImage render_layout(const Layout& layout) {
     // element's start as in the SVG.
     const double part = e.nominal.w / static_cast<double>(entry.parts.size());
     for (size_t i = 0; i < entry.parts.size(); ++i) {
-      const double x = from_right ? e.nominal.right() - (i + 1) * part : e.nominal.x + i * part;
+      const double x = right ? e.nominal.right() - (i + 1) * part : e.nominal.x + i * part;
       const Rect stripe{x, e.nominal.y, part, e.nominal.h};
       for (const Rect& r : e.shape) {
         const double x0 = std::max(r.x, stripe.x), x1 = std::min(r.right(), stripe.right());

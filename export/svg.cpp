@@ -434,11 +434,10 @@ void write_layout_svg(std::ostream& out, const Layout& layout) {
   if (striped) {
     out << "<defs>\n";
     const double pw = layout.module_w + layout.joint, ph = layout.module_h + layout.joint;
-    const bool from_right =
-        layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
-    const bool from_top = layout.origin == Corner::top_left || layout.origin == Corner::top_right;
-    const double ox = s.x(from_right ? W + layout.joint : 0);
-    const double oy = s.y(from_top ? H + layout.joint : 0);
+    const bool right = from_right(layout.origin);
+    const bool top = from_top(layout.origin);
+    const double ox = s.x(right ? W + layout.joint : 0);
+    const double oy = s.y(top ? H + layout.joint : 0);
     for (const LegendEntry& e : layout.legend) {
       out << fmt::format(
           "<pattern id=\"parts-{}\" patternUnits=\"userSpaceOnUse\" x=\"{}\" y=\"{}\" width=\"{}\" "
@@ -447,7 +446,7 @@ void write_layout_svg(std::ostream& out, const Layout& layout) {
       const double part = layout.module_w / static_cast<double>(e.parts.size());
       for (size_t i = 0; i < e.parts.size(); ++i)
         out << fmt::format("<rect x=\"{}\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
-                           mm(from_right ? layout.joint + i * part : i * part), mm(part), mm(ph),
+                           mm(right ? layout.joint + i * part : i * part), mm(part), mm(ph),
                            hex_colour(e.parts[i]));
       out << "</pattern>\n";
     }

@@ -136,8 +136,8 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
     if (c.area() > 0) layout.openings.push_back(c);
   }
 
-  const bool from_right = spec.origin == Corner::bottom_right || spec.origin == Corner::top_right;
-  const bool from_top = spec.origin == Corner::top_left || spec.origin == Corner::top_right;
+  const bool right = from_right(spec.origin);
+  const bool top = from_top(spec.origin);
   const int digits = static_cast<int>(std::to_string(std::max(layout.columns, layout.rows)).size());
   const std::vector<uint16_t> values = values_in(field, view);
   uint64_t slivers = 0;
@@ -145,8 +145,8 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
   // Laying order: rows from the origin corner, and along each row away from it.
   for (int64_t row = 0; row < layout.rows; ++row) {
     for (int64_t column = 0; column < layout.columns; ++column) {
-      const int64_t i = from_right ? layout.columns - 1 - column : column;
-      const int64_t j = from_top ? layout.rows - 1 - row : row;
+      const int64_t i = right ? layout.columns - 1 - column : column;
+      const int64_t j = top ? layout.rows - 1 - row : row;
       const double along = column * pitch_w, up = row * pitch_h;
       Element e;
       e.row = row;
@@ -155,8 +155,8 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
       e.cell_y = view.origin[1] + j;
       e.value = values[static_cast<size_t>(j * layout.columns + i)];
       e.nominal =
-          Rect{from_right ? layout.width - along - spec.module_w : along,
-               from_top ? layout.height - up - spec.module_h : up, spec.module_w, spec.module_h};
+          Rect{right ? layout.width - along - spec.module_w : along,
+               top ? layout.height - up - spec.module_h : up, spec.module_w, spec.module_h};
       const Rect laid = clip(e.nominal, layout.width, layout.height);
       e.shape = subtract(laid, layout.openings);
       if (e.shape.empty() || e.area() < kEps) {
@@ -210,31 +210,30 @@ double edge(int64_t index, int64_t count, double module, double joint, double ex
 }  // namespace
 
 double Layout::cell_edge_x(int64_t cell_x) const {
-  const bool from_right = origin == Corner::bottom_right || origin == Corner::top_right;
-  return std::max(0.0, edge(cell_x - view.origin[0], columns, module_w, joint, width, from_right));
+  const bool right = from_right(origin);
+  return std::max(0.0, edge(cell_x - view.origin[0], columns, module_w, joint, width, right));
 }
 
 double Layout::cell_edge_y(int64_t cell_y) const {
-  const bool from_top = origin == Corner::top_left || origin == Corner::top_right;
-  return std::max(0.0, edge(cell_y - view.origin[1], rows, module_h, joint, height, from_top));
+  const bool top = from_top(origin);
+  return std::max(0.0, edge(cell_y - view.origin[1], rows, module_h, joint, height, top));
 }
 
 double joint_area(const Layout& layout) {
   if (layout.joint <= 0) return 0;
-  const bool from_right =
-      layout.origin == Corner::bottom_right || layout.origin == Corner::top_right;
-  const bool from_top = layout.origin == Corner::top_left || layout.origin == Corner::top_right;
+  const bool right = from_right(layout.origin);
+  const bool top = from_top(layout.origin);
   // Joints follow each module, counted from the origin corner.
   std::vector<Rect> vertical, horizontal;
   for (int64_t c = 0; c + 1 < layout.columns; ++c) {
     const double along = c * (layout.module_w + layout.joint) + layout.module_w;
-    vertical.push_back(Rect{from_right ? layout.width - along - layout.joint : along, 0,
+    vertical.push_back(Rect{right ? layout.width - along - layout.joint : along, 0,
                             layout.joint, layout.height});
   }
   for (int64_t r = 0; r + 1 < layout.rows; ++r) {
     const double up = r * (layout.module_h + layout.joint) + layout.module_h;
     horizontal.push_back(
-        Rect{0, from_top ? layout.height - up - layout.joint : up, layout.width, layout.joint});
+        Rect{0, top ? layout.height - up - layout.joint : up, layout.width, layout.joint});
   }
   auto laid = [&](const Rect& r) {
     double area = 0;

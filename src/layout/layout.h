@@ -73,6 +73,10 @@ enum class Combine {
   keep,  // a + b = ab: every curd that survived in the cell stays visible, side by side
 };
 enum class Corner { bottom_left, bottom_right, top_left, top_right };
+// Whether laying starts at the right edge (columns count leftwards) or at the top (rows count
+// downwards).
+constexpr bool from_right(Corner c) { return c == Corner::bottom_right || c == Corner::top_right; }
+constexpr bool from_top(Corner c) { return c == Corner::top_left || c == Corner::top_right; }
 
 // The recipe's [layout] section.
 struct LayoutSpec {
