@@ -18,7 +18,7 @@ int main() {
   design.curds.push_back(dark);
 
   curdle::LayoutSpec spec;
-  spec.kind = curdle::LayoutKind::paving;
+  spec.set_kind(curdle::LayoutKind::paving);
   spec.module_w = spec.module_h = 400;
   spec.joint = 8;
   spec.size = std::array<double, 2>{6000, 4000};

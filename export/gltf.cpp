@@ -31,11 +31,11 @@ double thickness_of(const Layout& l, const LayoutSpec& spec) {
     case LayoutKind::rhythm:
       return 300;  // fins stand out of the wall
     case LayoutKind::perforation:
-      return spec.thickness;
+      return spec.perforation().thickness;
     case LayoutKind::park:
       return 30;
     case LayoutKind::blocks:
-      return spec.voxel_h;
+      return spec.blocks().voxel_h;
   }
   return 10;
 }
@@ -247,7 +247,7 @@ tinygltf::Model build(const Layout& layout) {
     std::vector<Ring> rings{
         {{0, 0}, {layout.width, 0}, {layout.width, layout.height}, {0, layout.height}}};
     for (const Element& e : layout.elements) {
-      if (e.circle) rings.push_back(polygonise(*e.circle, spec.chord_tolerance));
+      if (e.circle) rings.push_back(polygonise(*e.circle, spec.perforation().chord_tolerance));
       if (e.outline) rings.insert(rings.end(), e.outline->rings.begin(), e.outline->rings.end());
     }
     std::vector<Vec3> p, n;
@@ -308,7 +308,7 @@ tinygltf::Model build(const Layout& layout) {
     for (const Element& e : layout.elements) solid[{e.cell_x, e.cell_y, e.cell_z}] = e.value;
     std::map<uint32_t, std::array<std::vector<Vec3>, 2>> geo;
     std::map<uint32_t, std::vector<uint32_t>> idx;
-    const double w = spec.module_w, d = spec.module_h, h = spec.voxel_h;
+    const double w = spec.module_w, d = spec.module_h, h = spec.blocks().voxel_h;
     static const int dirs[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                    {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     for (const auto& [cell, value] : solid) {

@@ -106,9 +106,9 @@ uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view) {
   outline.spec = spec;
   outline.width = spec.size ? (*spec.size)[0] : view.size[0] * (spec.module_w + spec.joint);
   outline.height = spec.size ? (*spec.size)[1] : view.size[1] * (spec.module_h + spec.joint);
-  if (spec.kind == LayoutKind::blocks) {
+  if (spec.kind() == LayoutKind::blocks) {
     outline.width = 2 * view.size[0] * spec.module_w + 2 * std::max(spec.module_w, spec.module_h);
-    outline.height = std::max(view.size[1] * spec.module_h, view.size[2] * spec.voxel_h);
+    outline.height = std::max(view.size[1] * spec.module_h, view.size[2] * spec.blocks().voxel_h);
   }
   const double ppm = spec.dpi / 25.4 / drawing_scale(outline);
   return static_cast<uint64_t>(std::ceil(outline.width * ppm) * std::ceil(outline.height * ppm));

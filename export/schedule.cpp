@@ -53,8 +53,9 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
         x0 = std::min(x0, r.x), y0 = std::min(y0, r.y), x1 = std::max(x1, r.right()),
         y1 = std::max(y1, r.top());
     }
-    const double z =
-        layout.kind == LayoutKind::blocks ? (e.cell_z - layout.view.origin[2]) * spec.voxel_h : 0;
+    const double z = layout.kind == LayoutKind::blocks
+                         ? (e.cell_z - layout.view.origin[2]) * spec.blocks().voxel_h
+                         : 0;
     // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in.
     const std::string lot = e.sheet >= 0 ? layout.sheets[static_cast<size_t>(e.sheet)].id
                                          : std::to_string(lot_of(e, i, spec));

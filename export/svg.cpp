@@ -59,10 +59,11 @@ std::string sheet_line(const Layout& layout, const LayoutSpec& spec) {
                        : layout.origin == Corner::top_left     ? "top-left"
                                                                : "top-right") +
            "; element IDs count rows and columns from it";
-  return fmt::format("sheet {} mm thick, {} openings, open area {:.2f} %, {} rule violations{}",
-                     mm(spec.thickness), layout.elements.size(), 100 * layout.open_area,
-                     layout.violations.size(),
-                     spec.fix == HoleFix::drop && !layout.violations.empty() ? " (dropped)" : "");
+  return fmt::format(
+      "sheet {} mm thick, {} openings, open area {:.2f} %, {} rule violations{}",
+      mm(spec.perforation().thickness), layout.elements.size(), 100 * layout.open_area,
+      layout.violations.size(),
+      spec.perforation().fix == HoleFix::drop && !layout.violations.empty() ? " (dropped)" : "");
 }
 
 // A rectangle of merged elements, from the first to the last of the run (see svg.h).
@@ -362,7 +363,7 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
       : layout.kind == LayoutKind::blocks
           ? fmt::format("{} x {} x {} voxels of {} x {} x {} mm (w x d x h), {} blocks",
                         layout.view.size[0], layout.view.size[1], layout.view.size[2],
-                        mm(layout.module_w), mm(layout.module_h), mm(spec.voxel_h),
+                        mm(layout.module_w), mm(layout.module_h), mm(spec.blocks().voxel_h),
                         layout.elements.size())
       : layout.kind == LayoutKind::park
           ? fmt::format("{} x {} mm: {} x {} cells of {} x {} mm, {} elements", mm(W), mm(H),

@@ -159,15 +159,15 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
        {Corner::bottom_left, Corner::bottom_right, Corner::top_left, Corner::top_right}) {
     for (LayoutKind kind : {LayoutKind::paving, LayoutKind::facade}) {
       LayoutSpec spec;
-      spec.kind = kind;
+      spec.set_kind(kind);
       spec.origin = corner;
       spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
       spec.size = std::array<double, 2>{18000, 15600};
       if (kind == LayoutKind::facade)
-        spec.openings = {{1200, 0, 7200, 2700},
-                         {1500, 3900, 1200, 1500},
-                         {16200, 12900, 1200, 1500},
-                         {17500, 14000, 500, 1600}};
+        spec.facade().openings = {{1200, 0, 7200, 2700},
+                                  {1500, 3900, 1200, 1500},
+                                  {16200, 12900, 1200, 1500},
+                                  {17500, 14000, 500, 1600}};
       Design sized = d;
       const auto cells = elements_to_cover(spec);
       sized.field.size = {cells[0], cells[1], 1};
@@ -289,7 +289,7 @@ TEST(Layout, ALargePavingStaysSmallAsSvg) {
   d.field.size = {1000, 1000, 1};
   const CurdField f = curdle(d, 1, d.field);
   LayoutSpec spec;
-  spec.kind = LayoutKind::paving;
+  spec.set_kind(LayoutKind::paving);
   spec.joint = 3;
   const Layout layout = make_layout(d, f, d.field, spec);
   const std::string svg = svg_of(layout);
@@ -312,17 +312,17 @@ struct Sheet {
 Sheet perforated(Combine combine, HoleFix fix, double bridge, uint64_t seed) {
   Sheet s;
   s.design = test::design(4, 2, {{"1/2", "1/2"}, {"1/2", "1/2"}, {"1/2", "1/2"}});
-  s.spec.kind = LayoutKind::perforation;
+  s.spec.set_kind(LayoutKind::perforation);
   s.spec.combine = combine;
   s.spec.module_w = s.spec.module_h = 40;
   s.spec.size = std::array<double, 2>{640, 640};
-  s.spec.thickness = 2;
-  s.spec.holes = {{16, -7, 6}, {16, 7, 6}, {16, 0, -7}};
-  s.spec.min_diameter = 5;
-  s.spec.min_bridge = bridge;
-  s.spec.edge_margin = 5;
-  s.spec.fix = fix;
-  s.spec.chord_tolerance = 0.01;
+  s.spec.perforation().thickness = 2;
+  s.spec.perforation().holes = {{16, -7, 6}, {16, 7, 6}, {16, 0, -7}};
+  s.spec.perforation().min_diameter = 5;
+  s.spec.perforation().min_bridge = bridge;
+  s.spec.perforation().edge_margin = 5;
+  s.spec.perforation().fix = fix;
+  s.spec.perforation().chord_tolerance = 0.01;
   const CurdField f = curdle(s.design, seed, s.design.field);
   s.layout = make_layout(s.design, f, s.design.field, s.spec);
   return s;
@@ -333,10 +333,11 @@ std::vector<Circle> circles_of(const Element& e, const LayoutSpec& spec) {
   if (e.circle) return {*e.circle};
   std::vector<Circle> parts;
   const double cx = e.nominal.x + e.nominal.w / 2, cy = e.nominal.y + e.nominal.h / 2;
-  for (size_t c = 0; c < spec.holes.size(); ++c)
+  for (size_t c = 0; c < spec.perforation().holes.size(); ++c)
     if (e.value >> c & 1)
-      parts.push_back(
-          {cx + spec.holes[c].offset_x, cy + spec.holes[c].offset_y, spec.holes[c].diameter});
+      parts.push_back({cx + spec.perforation().holes[c].offset_x,
+                       cy + spec.perforation().holes[c].offset_y,
+                       spec.perforation().holes[c].diameter});
   return parts;
 }
 
@@ -423,12 +424,12 @@ namespace curdle {
 TEST(Park, ElementsShareCellsWithoutOverlapAndSurfacesCoverTheArea) {
   Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
   LayoutSpec spec;
-  spec.kind = LayoutKind::park;
+  spec.set_kind(LayoutKind::park);
   spec.module_w = spec.module_h = 3000;
-  spec.clearance = 300;
-  spec.park = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
-               {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
-               {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
+  spec.park().clearance = 300;
+  spec.park().elements = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
+                          {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
+                          {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
   for (uint64_t seed = 1; seed <= 5; ++seed) {
     const CurdField f = curdle(d, seed, d.field);
     const Layout layout = make_layout(d, f, d.field, spec);
@@ -483,9 +484,9 @@ namespace curdle {
 TEST(Rhythm, FinWidthsFollowTheValuesCentredInTheirBays) {
   const Design d = test::design(4, 1, {{"3/4", "3/4", "2/3"}, {"1/2", "3/4", "3/4"}});
   LayoutSpec spec;
-  spec.kind = LayoutKind::rhythm;
+  spec.set_kind(LayoutKind::rhythm);
   spec.module_w = 600, spec.module_h = 4200;
-  spec.widths = {0, 100, 180, 300};
+  spec.rhythm().widths = {0, 100, 180, 300};
   const CurdField f = curdle(d, 64, d.field);
   const Layout layout = make_layout(d, f, d.field, spec);
   const auto counts = value_counts(f);
@@ -493,7 +494,7 @@ TEST(Rhythm, FinWidthsFollowTheValuesCentredInTheirBays) {
   for (uint32_t v = 0; v < 4; ++v) EXPECT_EQ(layout.legend[v].count, counts[v]);
   for (const Element& e : layout.elements) {
     EXPECT_EQ(e.value, f.value_at({e.cell_x, 0, 0}));
-    EXPECT_NEAR(e.shape[0].w, spec.widths[e.value], 1e-9);
+    EXPECT_NEAR(e.shape[0].w, spec.rhythm().widths[e.value], 1e-9);
     EXPECT_NEAR(e.shape[0].x + e.shape[0].w / 2, e.cell_x * 600 + 300, 1e-9);
     EXPECT_NEAR(e.shape[0].h, 4200, 1e-9);
   }
@@ -505,8 +506,8 @@ TEST(Rhythm, FinWidthsFollowTheValuesCentredInTheirBays) {
 TEST(Blocks, PlanAndElevationShowTheFirstBlockSeen) {
   const Design d = test::design(2, 3, {{"7/8", "3/4", "3/4"}, {"3/4", "1/2", "3/4"}});
   LayoutSpec spec;
-  spec.kind = LayoutKind::blocks;
-  spec.module_w = spec.module_h = 6000, spec.voxel_h = 3000;
+  spec.set_kind(LayoutKind::blocks);
+  spec.module_w = spec.module_h = 6000, spec.blocks().voxel_h = 3000;
   const CurdField f = curdle(d, 3, d.field);
   const Layout layout = make_layout(d, f, d.field, spec);
   const auto counts = value_counts(f);

@@ -57,7 +57,7 @@ TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
   Design d = test::design(4, 2, {{"3/4", "1/2", "1/2"}, {"1/2", "1/2", "1/2"}});
   d.curds[0].name = "grey, light";  // a comma, to be quoted
   LayoutSpec spec;
-  spec.kind = LayoutKind::paving;
+  spec.set_kind(LayoutKind::paving);
   spec.module_w = spec.module_h = 400, spec.joint = 5;
   spec.size = std::array<double, 2>{12000, 8100};  // cut edge tiles
   spec.value_colours = {Rgb{200, 200, 200}, Rgb{100, 100, 100}, Rgb{40, 40, 40}, Rgb{40, 40, 40}};
@@ -116,11 +116,11 @@ namespace curdle {
 TEST(Install, TheMapNamesEveryElementAndWhereLayingStarts) {
   Design d = test::design(4, 2, {{"3/4", "1/2"}});
   LayoutSpec spec;
-  spec.kind = LayoutKind::facade;
+  spec.set_kind(LayoutKind::facade);
   spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
   spec.size = std::array<double, 2>{6000, 3000};
   spec.origin = Corner::top_right;
-  spec.openings = {{1000, 0, 1200, 2100}};
+  spec.facade().openings = {{1000, 0, 1200, 2100}};
   const auto cells = elements_to_cover(spec);
   d.field.size = {cells[0], cells[1], 1};
   const Layout layout = make_layout(d, curdle(d, 6, d.field), d.field, spec);

@@ -283,13 +283,13 @@ RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outpu
   const Design& d = run.recipe.design;
   const bool needs_layout = builds_layout(run, outputs);
   std::optional<LayoutSpec> spec = run.recipe.layout;
-  if (spec && !spec->mask.empty() && needs_layout) {
-    const fs::path mask = fs::path(run.recipe_path).parent_path() / spec->mask;
+  if (spec && spec->kind() == LayoutKind::facade && !spec->facade().mask.empty() && needs_layout) {
+    const fs::path mask = fs::path(run.recipe_path).parent_path() / spec->facade().mask;
     for (const Rect& r :
          read_mask_openings(mask, (*spec->size)[0], (*spec->size)[1],
                             SourceLocation{run.recipe_path, 0, 0, "layout.mask", ""},
                             run.generate.max_memory_bytes))
-      spec->openings.push_back(r);
+      spec->facade().openings.push_back(r);
   }
   check_run_memory(run, outputs);
 

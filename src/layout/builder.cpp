@@ -106,15 +106,15 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
                        ": give a window of that size (a segment of a larger field.cells), or "
                        "leave out the layout's size and give field.cells instead");
   }
-  if (spec.kind == LayoutKind::blocks) return stack_blocks(design, field, view, spec);
-  const int dimension = layout_dimension(spec.kind);
+  if (spec.kind() == LayoutKind::blocks) return stack_blocks(design, field, view, spec);
+  const int dimension = layout_dimension(spec.kind());
   if (design.lattice.dimension != dimension)
     throw InputError("this layout needs a " + std::to_string(dimension) + "-D lattice, not " +
                      std::to_string(design.lattice.dimension) + "-D");
   Layout layout;
-  layout.kind = spec.kind;
+  layout.kind = spec.kind();
   layout.combine = spec.combine;
-  layout.element_type = element_type(spec.kind);
+  layout.element_type = element_type(spec.kind());
   layout.joint = spec.joint;
   layout.joint_colour = spec.joint_colour;
   layout.origin = spec.origin;
@@ -131,7 +131,7 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
     layout.width = layout.columns * pitch_w - spec.joint;
     layout.height = layout.rows * pitch_h - spec.joint;
   }
-  for (const Rect& o : spec.openings) {
+  for (const Rect& o : spec.openings()) {
     const Rect c = clip(o, layout.width, layout.height);
     if (c.area() > 0) layout.openings.push_back(c);
   }
@@ -165,7 +165,7 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
       }
       e.cut = e.area() < e.nominal.area() - kEps;
       if (laid.w < spec.module_w / 4 - kEps || laid.h < spec.module_h / 4 - kEps) ++slivers;
-      e.key = ElementId{id_kind(spec.kind), digits, std::nullopt, row, column, ""};
+      e.key = ElementId{id_kind(spec.kind()), digits, std::nullopt, row, column, ""};
       e.id = e.key.text();
       layout.elements.push_back(std::move(e));
     }
@@ -176,9 +176,9 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
 
   layout.legend = make_legend(design, spec);
   for (const Element& e : layout.elements) ++layout.legend[e.value].count;
-  if (spec.kind == LayoutKind::perforation) perforate(layout, design, spec);
-  if (spec.kind == LayoutKind::park) plant(layout, design, spec);
-  if (spec.kind == LayoutKind::rhythm) set_rhythm(layout, spec);
+  if (spec.kind() == LayoutKind::perforation) perforate(layout, design, spec);
+  if (spec.kind() == LayoutKind::park) plant(layout, design, spec);
+  if (spec.kind() == LayoutKind::rhythm) set_rhythm(layout, spec);
   return layout;
 }
 

@@ -62,3 +62,38 @@ double Element::area() const {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+void LayoutSpec::set_kind(LayoutKind kind) {
+  switch (kind) {
+    case LayoutKind::tile:
+      keys = TileKeys{};
+      break;
+    case LayoutKind::paving:
+      keys = PavingKeys{};
+      break;
+    case LayoutKind::facade:
+      keys = FacadeKeys{};
+      break;
+    case LayoutKind::perforation:
+      keys = PerforationKeys{};
+      break;
+    case LayoutKind::park:
+      keys = ParkKeys{};
+      break;
+    case LayoutKind::rhythm:
+      keys = RhythmKeys{};
+      break;
+    case LayoutKind::blocks:
+      keys = BlocksKeys{};
+      break;
+  }
+}
+
+const std::vector<Rect>& LayoutSpec::openings() const {
+  static const std::vector<Rect> none;
+  return kind() == LayoutKind::facade ? facade().openings : none;
+}
+
+}  // namespace curdle

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "curdle/curd.h"
@@ -78,21 +79,14 @@ enum class Corner { bottom_left, bottom_right, top_left, top_right };
 constexpr bool from_right(Corner c) { return c == Corner::bottom_right || c == Corner::top_right; }
 constexpr bool from_top(Corner c) { return c == Corner::top_left || c == Corner::top_right; }
 
-// The recipe's [layout] section.
-struct LayoutSpec {
-  LayoutKind kind = LayoutKind::tile;
-  Combine combine = Combine::mix;
-  double module_w = 300, module_h = 300;          // element size (tile, panel) in mm
-  double joint = 0;                               // joint between elements, mm
-  std::optional<std::array<double, 2>> size;      // floor or wall, mm; default: the field's cells
-  Corner origin = Corner::bottom_left;            // where cell (0, 0) and the laying order start
-  std::vector<std::optional<Rgb>> value_colours;  // per value, overriding the blend (mix)
-  Rgb joint_colour{150, 150, 150};
-  std::vector<Rect> openings;    // façade: windows and doors, mm from the wall's origin
-  std::string mask;              // façade: image whose dark pixels are openings (read by the CLI)
-  bool stage_grid = false;       // draw lines at each stage's cell boundaries
-  std::optional<Box> highlight;  // a window of cells to outline on the drawing
-  // Perforation.
+// What only one kind of layout has, one type per kind, in LayoutKind's order.
+struct TileKeys {};
+struct PavingKeys {};
+struct FacadeKeys {
+  std::vector<Rect> openings;  // windows and doors, mm from the wall's origin
+  std::string mask;            // image whose dark pixels are openings (read by the application)
+};
+struct PerforationKeys {
   std::vector<HoleSpec> holes;  // one per curd
   double thickness = 0;         // sheet thickness, mm
   double min_diameter = 0;      // smallest hole the tool cuts
@@ -101,15 +95,51 @@ struct LayoutSpec {
   HoleFix fix = HoleFix::none;
   double chord_tolerance = 0.05;                    // how far polygonised circles may stray, mm
   std::optional<std::array<double, 2>> sheet_size;  // fabrication sheets at most this size
-  // Park.
-  std::vector<ParkElement> park;  // one per curd
-  ParkElement ground{"white paving",    true, false, 0, 0,
-                     Rgb{242, 240, 234}};  // cells with no surface
-  double clearance = 0;                    // between objects, and from objects to the cell's edge
-  // Rhythm (E = 1): a line of bays, each holding an element whose width follows the value.
-  std::vector<double> widths;  // per value, mm; 0: no element
-  // Blocks (E = 3): voxels of module_w x module_h (plan) x voxel_h (storey).
+};
+struct ParkKeys {
+  std::vector<ParkElement> elements;  // one per curd (Cirovic 2014, fig. 5)
+  ParkElement ground{"white paving", true, false, 0, 0, Rgb{242, 240, 234}};  // no surface
+  double clearance = 0;  // between objects, and from objects to the cell's edge
+};
+struct RhythmKeys {            // E = 1: a line of bays, each holding an element whose width
+  std::vector<double> widths;  // follows the value: per value, mm; 0: no element
+};
+struct BlocksKeys {  // E = 3: voxels of module_w x module_h (plan) x voxel_h (storey)
   double voxel_h = 3000;
+};
+using KindKeys = std::variant<TileKeys, PavingKeys, FacadeKeys, PerforationKeys, ParkKeys,
+                              RhythmKeys, BlocksKeys>;
+
+// The recipe's [layout] section: the keys every kind has, and its own kind's (`keys`, whose
+// alternative is the kind: there is no second record of it to disagree).
+struct LayoutSpec {
+  KindKeys keys;
+  LayoutKind kind() const { return static_cast<LayoutKind>(keys.index()); }
+  void set_kind(LayoutKind kind);  // the kind's own keys take their defaults
+
+  // A kind's own keys; asking the wrong kind is a programming error (std::bad_variant_access).
+  const FacadeKeys& facade() const { return std::get<FacadeKeys>(keys); }
+  FacadeKeys& facade() { return std::get<FacadeKeys>(keys); }
+  const PerforationKeys& perforation() const { return std::get<PerforationKeys>(keys); }
+  PerforationKeys& perforation() { return std::get<PerforationKeys>(keys); }
+  const ParkKeys& park() const { return std::get<ParkKeys>(keys); }
+  ParkKeys& park() { return std::get<ParkKeys>(keys); }
+  const RhythmKeys& rhythm() const { return std::get<RhythmKeys>(keys); }
+  RhythmKeys& rhythm() { return std::get<RhythmKeys>(keys); }
+  const BlocksKeys& blocks() const { return std::get<BlocksKeys>(keys); }
+  BlocksKeys& blocks() { return std::get<BlocksKeys>(keys); }
+  // A façade's openings; none for other kinds.
+  const std::vector<Rect>& openings() const;
+
+  Combine combine = Combine::mix;
+  double module_w = 300, module_h = 300;          // element size (tile, panel) in mm
+  double joint = 0;                               // joint between elements, mm
+  std::optional<std::array<double, 2>> size;      // floor or wall, mm; default: the field's cells
+  Corner origin = Corner::bottom_left;            // where cell (0, 0) and the laying order start
+  std::vector<std::optional<Rgb>> value_colours;  // per value, overriding the blend (mix)
+  Rgb joint_colour{150, 150, 150};
+  bool stage_grid = false;       // draw lines at each stage's cell boundaries
+  std::optional<Box> highlight;  // a window of cells to outline on the drawing
   // Ordering: spare share added to each quantity, elements per pack, and lots in laying order
   // (a number of elements, e.g. a pallet, or a number of rows, e.g. a floor; 0: one lot).
   double spare = 0;

@@ -29,7 +29,7 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
   for (const Element& cell : cells) {
     std::vector<size_t> surfaces, objects;
     for (size_t c = 0; c < design.curds.size(); ++c)
-      if (cell.value >> c & 1) (spec.park[c].surface ? surfaces : objects).push_back(c);
+      if (cell.value >> c & 1) (spec.park().elements[c].surface ? surfaces : objects).push_back(c);
     auto add = [&](const ParkElement& kind, std::vector<Rect> shape, std::optional<Circle> circle,
                    const std::string& suffix) {
       Element e = cell;
@@ -45,16 +45,17 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
     // The ground, or the surfaces of the curds present in strips side by side.
     const Rect laid = cell.shape.empty() ? cell.nominal : cell.shape.front();
     if (surfaces.empty()) {
-      add(spec.ground, {laid}, std::nullopt, "ground");
+      add(spec.park().ground, {laid}, std::nullopt, "ground");
     } else {
       const double w = laid.w / static_cast<double>(surfaces.size());
       for (size_t i = 0; i < surfaces.size(); ++i)
-        add(spec.park[surfaces[i]], {Rect{laid.x + i * w, laid.y, w, laid.h}}, std::nullopt,
-            design.curds[surfaces[i]].name);
+        add(spec.park().elements[surfaces[i]], {Rect{laid.x + i * w, laid.y, w, laid.h}},
+            std::nullopt, design.curds[surfaces[i]].name);
     }
-    const std::vector<Rect> slots = object_slots(cell.nominal, objects.size(), spec.clearance);
+    const std::vector<Rect> slots =
+        object_slots(cell.nominal, objects.size(), spec.park().clearance);
     for (size_t i = 0; i < objects.size(); ++i) {
-      const ParkElement& kind = spec.park[objects[i]];
+      const ParkElement& kind = spec.park().elements[objects[i]];
       const double cx = slots[i].x + slots[i].w / 2, cy = slots[i].y + slots[i].h / 2;
       if (kind.round)
         add(kind, {}, Circle{cx, cy, kind.w}, design.curds[objects[i]].name);

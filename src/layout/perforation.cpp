@@ -66,8 +66,9 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
     std::vector<Circle> circles;
     for (size_t c = 0; c < design.curds.size(); ++c)
       if (cell.value >> c & 1)
-        circles.push_back(Circle{cx + spec.holes[c].offset_x, cy + spec.holes[c].offset_y,
-                                 spec.holes[c].diameter});
+        circles.push_back(Circle{cx + spec.perforation().holes[c].offset_x,
+                                 cy + spec.perforation().holes[c].offset_y,
+                                 spec.perforation().holes[c].diameter});
     int index = 0;
     for (const std::vector<Circle>& group : overlapping_groups(circles)) {
       Hole h;
@@ -88,7 +89,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         h.element.circle = merged;
         h.parts = {merged};
       } else {
-        h.element.outline = union_of_circles(group, spec.chord_tolerance).front();
+        h.element.outline = union_of_circles(group, spec.perforation().chord_tolerance).front();
         h.parts = group;
       }
       holes.push_back(std::move(h));
@@ -96,19 +97,19 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
   }
 
   // Fabrication rules, in laying order so that reports and fixes are reproducible.
-  const bool fix = spec.fix == HoleFix::drop;
+  const bool fix = spec.perforation().fix == HoleFix::drop;
   auto drop = [&](Hole& h, const std::string& why) {
     layout.violations.push_back(h.element.id + ": " + why + (fix ? "; dropped" : ""));
     if (fix) h.dropped = true;
   };
   for (Hole& h : holes) {
-    if (h.element.circle && h.element.circle->d < spec.min_diameter - 1e-9)
+    if (h.element.circle && h.element.circle->d < spec.perforation().min_diameter - 1e-9)
       drop(h, fmt::format("diameter {:.2f} mm is below the minimum {:.2f} mm", h.element.circle->d,
-                          spec.min_diameter));
+                          spec.perforation().min_diameter));
     else if (const double gap = edge_gap(h, layout.width, layout.height);
-             gap < spec.edge_margin - 1e-9)
+             gap < spec.perforation().edge_margin - 1e-9)
       drop(h, fmt::format("{:.2f} mm from the sheet edge, below the margin {:.2f} mm", gap,
-                          spec.edge_margin));
+                          spec.perforation().edge_margin));
   }
   std::map<std::pair<int64_t, int64_t>, std::vector<size_t>> by_cell;
   for (size_t i = 0; i < holes.size(); ++i)
@@ -122,12 +123,12 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         for (size_t j : it->second) {
           if (j <= i || holes[j].dropped) continue;
           const double gap = bridge(holes[i].parts, holes[j].parts);
-          if (gap >= spec.min_bridge - 1e-9) continue;
+          if (gap >= spec.perforation().min_bridge - 1e-9) continue;
           // The smaller opening goes (the later one on a tie), so the larger keeps its place.
           Hole& loser = holes[i].element.area() < holes[j].element.area() ? holes[i] : holes[j];
           const Hole& other = &loser == &holes[i] ? holes[j] : holes[i];
           drop(loser, fmt::format("bridge {:.2f} mm to {} is below {:.2f} mm", gap,
-                                  other.element.id, spec.min_bridge));
+                                  other.element.id, spec.perforation().min_bridge));
           if (holes[i].dropped) break;
         }
       }
@@ -135,8 +136,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
 
   // Fabrication sheets: every opening keeps the edge margin inside its own sheet, so one that
   // crosses a seam or comes within the margin of it is dropped (the stated rule), and reported.
-  if (spec.sheet_size) {
-    const double sw = (*spec.sheet_size)[0], sh = (*spec.sheet_size)[1];
+  if (spec.perforation().sheet_size) {
+    const double sw = (*spec.perforation().sheet_size)[0], sh = (*spec.perforation().sheet_size)[1];
     const int nx = static_cast<int>(std::ceil(layout.width / sw - 1e-9));
     const int ny = static_cast<int>(std::ceil(layout.height / sh - 1e-9));
     for (int j = 0; j < ny; ++j)
@@ -158,7 +159,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
             {gap, c.cx - r - a.x, a.right() - c.cx - r, c.cy - r - a.y, a.top() - c.cy - r});
       }
       // A seam keeps the edge margin on each side, and never less than a bridge.
-      const double clear = std::max(spec.edge_margin, spec.min_bridge);
+      const double clear = std::max(spec.perforation().edge_margin, spec.perforation().min_bridge);
       if (gap < clear - 1e-9) {
         layout.violations.push_back(
             fmt::format("{}: {:.2f} mm from the edge of sheet {}, below {:.2f} mm; dropped "
@@ -186,7 +187,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
                                        layout.violations.size(),
                                        fix ? " and were dropped" : " (see the report)"));
   layout.notes.push_back(fmt::format("open area {:.2f} % of the sheet; sheet {} mm thick",
-                                     100 * layout.open_area, spec.thickness));
+                                     100 * layout.open_area, spec.perforation().thickness));
 }
 
 }  // namespace curdle

@@ -13,7 +13,7 @@ void set_rhythm(Layout& layout, const LayoutSpec& spec) {
   layout.element_type = "fin";
   for (LegendEntry& e : layout.legend) e.count = 0;
   for (Element& e : bays) {
-    const double w = spec.widths[e.value];
+    const double w = spec.rhythm().widths[e.value];
     ++layout.legend[e.value].count;  // bays of each value, as the report counts cells
     if (w <= 0) continue;
     const Rect bay = e.nominal;
@@ -36,7 +36,7 @@ Layout stack_blocks(const Design& design, const CurdField& field, const Box& vie
   layout.rows = view.size[1];
   layout.module_w = spec.module_w;
   layout.module_h = spec.module_h;
-  const double w = spec.module_w, d = spec.module_h, h = spec.voxel_h;
+  const double w = spec.module_w, d = spec.module_h, h = spec.blocks().voxel_h;
   const double plan_w = view.size[0] * w, plan_h = view.size[1] * d, elev_h = view.size[2] * h;
   const double gap = std::max(w, d) * 2;
   layout.width = plan_w * 2 + gap;

@@ -29,10 +29,10 @@ void read_facade(TableReader& r, LayoutSpec& spec) {
                     "lies outside the wall of " +
                         std::to_string(static_cast<int>((*spec.size)[0])) + " x " +
                         std::to_string(static_cast<int>((*spec.size)[1])) + " mm");
-      spec.openings.push_back(rect);
+      spec.facade().openings.push_back(rect);
     }
   }
-  spec.mask = read_string(r, "mask", "the path of an image").value_or("");
+  spec.facade().mask = read_string(r, "mask", "the path of an image").value_or("");
 }
 
 }  // namespace curdle::reading

@@ -127,14 +127,14 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   TableReader r(*t, "layout", top.source(), keys);
 
   LayoutSpec spec;
-  spec.kind = k->kind;
+  spec.set_kind(k->kind);
   read_ordering(r, spec);
-  const int dimension = layout_dimension(spec.kind);
+  const int dimension = layout_dimension(spec.kind());
   if (design.lattice.dimension != dimension)
     r.fail("kind", "a " + name + " layout needs a " + std::to_string(dimension) +
                        "-D lattice; this one is " + std::to_string(design.lattice.dimension) +
                        "-D");
-  switch (spec.kind) {
+  switch (spec.kind()) {
     case LayoutKind::rhythm:
       read_rhythm(r, design, spec, field_given);
       return spec;

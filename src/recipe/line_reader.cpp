@@ -19,7 +19,7 @@ void read_blocks(TableReader& r, LayoutSpec& spec) {
     }
     if (!ok) r.fail("voxel", "must be [width, depth, height] in millimetres, each above 0");
   }
-  spec.module_w = v[0], spec.module_h = v[1], spec.voxel_h = v[2];
+  spec.module_w = v[0], spec.module_h = v[1], spec.blocks().voxel_h = v[2];
 }
 
 void read_rhythm(TableReader& r, Design& design, LayoutSpec& spec, bool field_given) {
@@ -45,7 +45,7 @@ void read_rhythm(TableReader& r, Design& design, LayoutSpec& spec, bool field_gi
       r.fail_node(*a->get(v), "layout.widths." + std::to_string(v),
                   "must be a width from 0 to the bay (" +
                       std::to_string(static_cast<int>(spec.module_w)) + " mm)");
-    spec.widths.push_back(*x);
+    spec.rhythm().widths.push_back(*x);
   }
   if (r.get("length")) {
     const double length = read_mm(r, "length", 0, 1);

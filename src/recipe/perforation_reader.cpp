@@ -6,20 +6,20 @@
 namespace curdle::reading {
 
 void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
-  spec.thickness = read_mm(r, "thickness", 0, 0, true);
-  if (spec.thickness <= 0) r.fail("thickness", "must be above 0 mm");
-  spec.min_diameter = read_mm(r, "min_diameter", 0, 0);
-  spec.min_bridge = read_mm(r, "min_bridge", 0, 0);
-  spec.edge_margin = read_mm(r, "edge_margin", 0, 0);
-  spec.chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
+  spec.perforation().thickness = read_mm(r, "thickness", 0, 0, true);
+  if (spec.perforation().thickness <= 0) r.fail("thickness", "must be above 0 mm");
+  spec.perforation().min_diameter = read_mm(r, "min_diameter", 0, 0);
+  spec.perforation().min_bridge = read_mm(r, "min_bridge", 0, 0);
+  spec.perforation().edge_margin = read_mm(r, "edge_margin", 0, 0);
+  spec.perforation().chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
   // Finer than a micrometre no cutter follows, and the polygons would grow without bound.
-  if (spec.chord_tolerance < 0.001)
+  if (spec.perforation().chord_tolerance < 0.001)
     r.fail("chord_tolerance", "must be from 0.001 mm (a micrometre), e.g. 0.05");
   const auto fix = read_string(r, "fix", "\"none\" or \"drop\"").value_or("none");
   if (fix == "none")
-    spec.fix = HoleFix::none;
+    spec.perforation().fix = HoleFix::none;
   else if (fix == "drop")
-    spec.fix = HoleFix::drop;
+    spec.perforation().fix = HoleFix::drop;
   else
     r.fail("fix",
            "must be \"none\" (report only) or \"drop\" (drop the openings that break a rule)");
@@ -56,18 +56,18 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
               std::to_string(static_cast<int>(spec.module_w)) + " x " +
               std::to_string(static_cast<int>(spec.module_h)) +
               " mm cell; holes must lie inside their cells (smaller, or nearer the centre)");
-    spec.holes.push_back(hole);
+    spec.perforation().holes.push_back(hole);
   }
-  spec.sheet_size = read_mm_pair(r, "sheet_size");
-  if (spec.sheet_size) {
+  spec.perforation().sheet_size = read_mm_pair(r, "sheet_size");
+  if (spec.perforation().sheet_size) {
     double largest = 0;
-    for (const HoleSpec& h : spec.holes) largest = std::max(largest, h.diameter);
-    if ((*spec.sheet_size)[0] < largest + 2 * spec.edge_margin ||
-        (*spec.sheet_size)[1] < largest + 2 * spec.edge_margin)
+    for (const HoleSpec& h : spec.perforation().holes) largest = std::max(largest, h.diameter);
+    if ((*spec.perforation().sheet_size)[0] < largest + 2 * spec.perforation().edge_margin ||
+        (*spec.perforation().sheet_size)[1] < largest + 2 * spec.perforation().edge_margin)
       r.fail("sheet_size", "a sheet must hold the largest opening (" +
                                std::to_string(static_cast<int>(largest)) +
                                " mm) within its margins (2 x " +
-                               std::to_string(static_cast<int>(spec.edge_margin)) +
+                               std::to_string(static_cast<int>(spec.perforation().edge_margin)) +
                                " mm); give a larger sheet_size");
   }
 }

@@ -165,10 +165,12 @@ ordered_json describe(const app::Run& s) {
     const auto entries = make_legend(d, spec);
     for (const LegendEntry& e : entries)
       legend.push_back({{"value", e.value}, {"label", e.label}, {"colour", hex_colour(e.colour)}});
-    const bool line = spec.kind == LayoutKind::rhythm;
-    j["layout"] = {{"element", element_type(spec.kind)},
-                   {"cell_mm", {spec.module_w + spec.joint, line ? spec.module_h : spec.module_h + spec.joint}},
-                   {"has_value_colours", !spec.value_colours.empty()}};
+    const bool line = spec.kind() == LayoutKind::rhythm;
+    j["layout"] = {
+        {"element", element_type(spec.kind())},
+        {"cell_mm",
+         {spec.module_w + spec.joint, line ? spec.module_h : spec.module_h + spec.joint}},
+        {"has_value_colours", !spec.value_colours.empty()}};
     if (spec.size) {
       const auto need = elements_to_cover(spec);
       j["layout"]["size_mm"] = {(*spec.size)[0], (*spec.size)[1]};

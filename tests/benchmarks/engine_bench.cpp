@@ -78,7 +78,7 @@ void BM_Schedule_1M_elements(benchmark::State& state) {
   curdle::Design d = make(2, 2, std::vector<std::string>(10, "0.9"));
   d.field.size = {1000, 1000, 1};
   curdle::LayoutSpec spec;
-  spec.kind = curdle::LayoutKind::paving;
+  spec.set_kind(curdle::LayoutKind::paving);
   spec.module_w = spec.module_h = 297, spec.joint = 3;
   spec.spare = 0.05, spec.pack = 20, spec.lot_size = 5000;
   const curdle::Layout layout =

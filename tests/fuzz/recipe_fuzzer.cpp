@@ -30,7 +30,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   request.max_memory = uint64_t{64} << 20;
   try {
     const curdle::app::Run run = curdle::app::resolve_run(request);
-    if (run.view.cells() > 20000 || !run.recipe.layout || !run.recipe.layout->mask.empty()) return 0;
+    const auto& layout = run.recipe.layout;
+    if (run.view.cells() > 20000 || !layout ||
+        (layout->kind() == curdle::LayoutKind::facade && !layout->facade().mask.empty()))
+      return 0;
     const auto outputs = curdle::app::select_outputs(
         run, {"report.json", "schedule.csv", "quantities.csv", "layout.svg", "install.svg"},
         nullptr);
