@@ -40,12 +40,17 @@ void StagedFile::commit() {
   committed_ = true;
 }
 
-void StagedFile::write(const std::function<void(std::ostream&)>& write) {
-  std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError("cannot write " + target_.string() + ": " + std::strerror(errno));
+void write_stream(const fs::path& path, const fs::path& target,
+                  const std::function<void(std::ostream&)>& write) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError("cannot write " + target.string() + ": " + std::strerror(errno));
   write(out);
   out.flush();
-  if (!out) throw InputError("cannot write " + target_.string() + ": " + std::strerror(errno));
+  if (!out) throw InputError("cannot write " + target.string() + ": " + std::strerror(errno));
+}
+
+void StagedFile::write(const std::function<void(std::ostream&)>& write) {
+  write_stream(temporary_, target_, write);
 }
 
 void write_file(const fs::path& target, const std::function<void(std::ostream&)>& write) {

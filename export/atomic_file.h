@@ -30,6 +30,11 @@ class StagedFile {
   bool committed_ = false;
 };
 
+// Writes exactly `path` through a stream (no staging); InputError naming `target` (the file
+// the user will see) when it cannot be written.
+void write_stream(const std::filesystem::path& path, const std::filesystem::path& target,
+                  const std::function<void(std::ostream&)>& write);
+
 // Writes `target` through a stream, atomically.
 void write_file(const std::filesystem::path& target,
                 const std::function<void(std::ostream&)>& write);

@@ -3,13 +3,12 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <cstdio>
-#include <mutex>
-#include <set>
-
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <sstream>
 
 #include "curdle/error.h"
@@ -48,15 +47,6 @@ void forget(const fs::path& p) {
   staged_paths().erase(p);
 }
 
-void write_to(const fs::path& path, const fs::path& target,
-              const std::function<void(std::ostream&)>& fill) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError("cannot write " + target.string() + ": " + std::strerror(errno));
-  fill(out);
-  out.flush();
-  if (!out) throw InputError("cannot write " + target.string() + ": " + std::strerror(errno));
-}
-
 }  // namespace
 
 void remove_staged_files_for_exit() {
@@ -70,7 +60,8 @@ StagingDirectory::StagingDirectory(fs::path dir,
     : dir_(std::move(dir)) {
   // The nearest existing ancestor must be a directory we may write into; nothing is made yet,
   // so that a run that fails leaves no new directory behind.
-  fs::path existing = fs::absolute(dir_).lexically_normal();
+  const fs::path absolute = fs::absolute(dir_).lexically_normal();
+  fs::path existing = absolute;
   std::error_code ec;
   while (!fs::exists(existing, ec) && existing.has_relative_path()) existing = existing.parent_path();
   if (!fs::is_directory(existing, ec))
@@ -80,7 +71,6 @@ StagingDirectory::StagingDirectory(fs::path dir,
     throw InputError("cannot create the output directory " + dir_.string() + ": " +
                      std::strerror(errno));
   // Replaced whole when the directory is new, or holds nothing but this program's outputs.
-  const fs::path absolute = fs::absolute(dir_).lexically_normal();
   whole_ = absolute.has_filename() && absolute != fs::current_path(ec);
   if (whole_ && fs::exists(dir_, ec)) {
     for (const auto& entry : fs::directory_iterator(dir_, ec)) {
@@ -151,7 +141,7 @@ fs::path StagingDirectory::prepare(const std::string& name) {
 
 void StagingDirectory::write(const std::string& name,
                              const std::function<void(std::ostream&)>& fill) {
-  write_to(prepare(name), dir_ / name, fill);
+  write_stream(prepare(name), dir_ / name, fill);
 }
 
 void StagingDirectory::write_via_file(const std::string& name,
