@@ -127,7 +127,7 @@ std::vector<Output> make_registry() {
        .write = write_cells});
   add({.name = "preview.png",
        .description = "the curds' values as a picture, a colour per value",
-       .memory = [](const Run& run, const LayoutSpec*) {
+       .memory = [](const Run& run) {
          return preview_memory(run.recipe.design, run.view);
        },
        .write = write_preview});
@@ -138,14 +138,15 @@ std::vector<Output> make_registry() {
   add({.name = "layout.png",
        .description = "the layout drawn at a scale, to print",
        .needs_layout = true,
-       .memory = [](const Run& run, const LayoutSpec* spec) {
-         return layout_png_pixels(*spec, run.view) * kLayoutPngBytesPerPixel;
+       .memory = [](const Run& run) {
+         // Selected only with a [layout], so the recipe has one.
+         return layout_png_pixels(*run.recipe.layout, run.view) * kLayoutPngBytesPerPixel;
        },
        .write = write_layout_png});
   add({.name = "layout.glb",
        .description = "the layout as a glTF 2.0 scene in metres",
        .needs_layout = true,
-       .memory = [](const Run& run, const LayoutSpec*) {
+       .memory = [](const Run& run) {
          return run.view.cells() * kGltfBytesPerElement;
        },
        .write = write_layout_glb});
@@ -154,7 +155,7 @@ std::vector<Output> make_registry() {
        .needs_layout = true,
        .by_default = false,
        .download = false,
-       .memory = [](const Run& run, const LayoutSpec*) {
+       .memory = [](const Run& run) {
          return run.view.cells() * kGltfBytesPerElement * 2;
        },
        .write = write_layout_gltf});
@@ -260,9 +261,8 @@ bool builds_layout(const Run& run, const std::vector<const Output*>& outputs) {
 uint64_t estimate_run_memory(const Run& run, const std::vector<const Output*>& outputs) {
   const Design& d = run.recipe.design;
   uint64_t need = estimate_memory(d, generation_box(d, run.view));
-  const LayoutSpec* spec = run.recipe.layout ? &*run.recipe.layout : nullptr;
   for (const Output* o : outputs)
-    if (o->memory) need += o->memory(run, spec);
+    if (o->memory) need += o->memory(run);
   // An element with its ID and shape is about 256 bytes.
   if (builds_layout(run, outputs)) need += run.view.cells() * 256;
   return need;

@@ -38,7 +38,7 @@ struct Output {
   const char* size_unit = "";  // what size() counts: "cells", "elements"
   uint64_t (*size)(const Run& run) = nullptr;
   // Bytes needed beyond the curds and the layout while writing it.
-  uint64_t (*memory)(const Run& run, const LayoutSpec* spec) = nullptr;
+  uint64_t (*memory)(const Run& run) = nullptr;
   void (*write)(const OutputContext& context, OutputSink& sink) = nullptr;
 };
 
