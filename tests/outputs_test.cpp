@@ -49,7 +49,10 @@ std::vector<std::string> names(const std::vector<const Output*>& outputs) {
 struct Notes : RunObserver {
   std::vector<std::string> notes;
   std::unique_ptr<ProgressTask> begin(const std::string&) override { return nullptr; }
-  void note(const std::string& text) override { notes.push_back(text); }
+  void skipped(const std::string& output, uint64_t count, const std::string& unit,
+               uint64_t) override {
+    notes.push_back(output + " skipped: " + std::to_string(count) + " " + unit);
+  }
 };
 
 TEST(Outputs, EveryNameIsUniqueAndHasAWriter) {

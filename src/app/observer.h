@@ -2,6 +2,7 @@
 // shows them on a terminal; the server passes none.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -18,8 +19,10 @@ class RunObserver {
   virtual ~RunObserver() = default;
   // A long step begins; it ends when the task is destroyed.
   virtual std::unique_ptr<ProgressTask> begin(const std::string& what) = 0;
-  // Something the user should know that is not an error ("cells.csv skipped: ...").
-  virtual void note(const std::string& text) = 0;
+  // A default output left out for its size: `count` `unit` is above `limit`. Each shell says
+  // how to ask for it anyway in its own words.
+  virtual void skipped(const std::string& output, uint64_t count, const std::string& unit,
+                       uint64_t limit) = 0;
 };
 
 }  // namespace curdle::app

@@ -234,10 +234,7 @@ std::vector<const Output*> select_outputs(const Run& run, const std::vector<std:
   for (const Output& o : output_registry()) {
     if (!o.by_default || (o.needs_layout && !has_layout)) continue;
     if (o.skip_above && o.size(run) > o.skip_above) {
-      if (observer)
-        observer->note(o.name + " skipped: " + std::to_string(o.size(run)) + " " + o.size_unit +
-                       " is above " + std::to_string(o.skip_above) + "; name it with --outputs " +
-                       o.name + " to write it anyway");
+      if (observer) observer->skipped(o.name, o.size(run), o.size_unit, o.skip_above);
       continue;
     }
     chosen.push_back(&o);

@@ -44,8 +44,13 @@ std::unique_ptr<app::ProgressTask> TerminalObserver::begin(const std::string& wh
   return std::make_unique<ProgressOnTerminal>(what);
 }
 
-void TerminalObserver::note(const std::string& text) {
-  std::fprintf(stderr, "note: %s\n", text.c_str());
+void TerminalObserver::skipped(const std::string& output, uint64_t count, const std::string& unit,
+                               uint64_t limit) {
+  std::fprintf(stderr,
+               "note: %s skipped: %llu %s is above %llu; name it with --outputs %s to write it "
+               "anyway\n",
+               output.c_str(), static_cast<unsigned long long>(count), unit.c_str(),
+               static_cast<unsigned long long>(limit), output.c_str());
 }
 
 }  // namespace curdle::cli

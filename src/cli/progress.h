@@ -31,7 +31,8 @@ namespace curdle::cli {
 class TerminalObserver : public app::RunObserver {
  public:
   std::unique_ptr<app::ProgressTask> begin(const std::string& what) override;
-  void note(const std::string& text) override;
+  void skipped(const std::string& output, uint64_t count, const std::string& unit,
+               uint64_t limit) override;
 };
 
 }  // namespace curdle::cli
