@@ -28,11 +28,12 @@ using nlohmann::ordered_json;
 namespace curdle::server {
 namespace {
 
-// The files the page may download: the registry's single-file outputs, and the recipe.
-std::vector<std::string> downloads() {
+// The files the page may download: the registry's single-file outputs (those of a layout only
+// when there is one), and the recipe.
+std::vector<std::string> downloads(bool with_layout) {
   std::vector<std::string> names;
   for (const app::Output& o : app::output_registry())
-    if (o.download) names.push_back(o.name);
+    if (o.download && (with_layout || !o.needs_layout)) names.push_back(o.name);
   names.push_back("recipe.toml");
   return names;
 }
@@ -184,11 +185,7 @@ ordered_json describe(const app::Run& s) {
   }
   j["legend"] = legend;
   // What this recipe can download, from the registry: the page lists no names of its own.
-  ordered_json files = ordered_json::array();
-  for (const app::Output& o : app::output_registry())
-    if (o.download && (!o.needs_layout || s.recipe.layout)) files.push_back(o.name);
-  files.push_back("recipe.toml");
-  j["downloads"] = files;
+  j["downloads"] = downloads(s.recipe.layout.has_value());
   return j;
 }
 
@@ -286,7 +283,8 @@ ApiResponse api_export(const ApiContext& c, const Params& params) {
   return guarded([&] {
     const RunRequest r = read_run(params, {"file"});
     const std::string name = own(r, "file");
-    const std::vector<std::string> allowed = downloads();
+    // Every download is named here; one a layout-less recipe lacks is refused as such below.
+    const std::vector<std::string> allowed = downloads(true);
     if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
       std::string list;
       for (const auto& n : allowed) list += (list.empty() ? "" : ", ") + n;
