@@ -11,11 +11,6 @@
 
 namespace curdle::cli {
 
-// SIGINT and SIGTERM end the program at once with 130 or 143, after removing every staged
-// file: an interrupted run leaves the previous output set and no temporary files. Call first
-// in main, before any thread starts, so that every thread inherits the blocked signals.
-void remove_staged_files_on_interrupt();
-
 inline int exit_code(const std::function<int()>& run) {
   try {
     return run();

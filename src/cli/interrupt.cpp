@@ -1,3 +1,5 @@
+#include "cli/interrupt.h"
+
 #include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
@@ -6,7 +8,6 @@
 #include <thread>
 
 #include "app/output_sink.h"
-#include "cli/exit_code.h"
 
 namespace curdle::cli {
 

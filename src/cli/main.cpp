@@ -7,6 +7,7 @@
 
 #include "cli/generate_command.h"
 #include "cli/exit_code.h"
+#include "cli/interrupt.h"
 #include "cli/options.h"
 #include "cli/search_command.h"
 #include "cli/serve_command.h"
