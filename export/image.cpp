@@ -56,8 +56,8 @@ const ImageModule& module() {
         failure = "the image module " + path.string() + " lacks its entry points";
       return;
     }
-    failure = "the image module " CURDLE_IMAGE_MODULE_NAME " is not installed (looked in " +
-              tried + ")";
+    failure =
+        "the image module " CURDLE_IMAGE_MODULE_NAME " is not installed (looked in " + tried + ")";
   });
   if (!failure.empty()) throw std::runtime_error(failure);
   return loaded;

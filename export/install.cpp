@@ -25,7 +25,8 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}mm\" height=\"{1}mm\" "
       "viewBox=\"0 0 {0} {1}\" font-family=\"Helvetica, Arial, sans-serif\">\n",
       num(W + 2 * margin), num(H + 2 * margin));
-  out << fmt::format("<title>{} - installation map, seed {}</title>\n", xml_escape(title.recipe), title.seed);
+  out << fmt::format("<title>{} - installation map, seed {}</title>\n", xml_escape(title.recipe),
+                     title.seed);
   out << fmt::format(
       "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#ffffff\" stroke=\"#000\" "
       "stroke-width=\"{}\"/>\n",
@@ -44,8 +45,8 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
     const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
     const std::string fill = fmt::format("rgb({},{},{})", c.r, c.g, c.b);
     double cx, cy, w;
-    out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">", xml_escape(e.id),
-                       e.row, e.column);
+    out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">",
+                       xml_escape(e.id), e.row, e.column);
     if (e.circle) {
       cx = e.circle->cx, cy = e.circle->cy, w = e.circle->d;
       out << fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" fill-opacity=\"0.35\"/>",

@@ -1,6 +1,5 @@
 #include "export/layout_png.h"
 
-
 #include <algorithm>
 #include <cmath>
 
@@ -177,6 +176,5 @@ PreviewImage render_layout(const Layout& layout) {
     image.rgb[i] = static_cast<uint8_t>(std::clamp(std::lround(canvas.rgb[i]), 0L, 255L));
   return image;
 }
-
 
 }  // namespace curdle

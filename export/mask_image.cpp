@@ -35,13 +35,12 @@ std::vector<Rect> read_mask_openings(const std::filesystem::path& path, double w
                           static_cast<uint64_t>(std::max(0, size.height));
   const uint64_t need = pixels * (4 * static_cast<uint64_t>(std::max(1, size.channels)) + 8);
   if (pixels == 0 || pixels > (uint64_t{1} << 32) || need > max_bytes)
-    throw ResourceLimitError(where, "the mask image is " + std::to_string(size.width) + " x " +
-                                        std::to_string(size.height) +
-                                        " pixels, which would take about " +
-                                        std::to_string(need >> 20) +
-                                        " MiB to read, above the memory limit of " +
-                                        std::to_string(max_bytes >> 20) +
-                                        " MiB; use a smaller image (a pixel per 10 mm is plenty)");
+    throw ResourceLimitError(
+        where, "the mask image is " + std::to_string(size.width) + " x " +
+                   std::to_string(size.height) + " pixels, which would take about " +
+                   std::to_string(need >> 20) + " MiB to read, above the memory limit of " +
+                   std::to_string(max_bytes >> 20) +
+                   " MiB; use a smaller image (a pixel per 10 mm is plenty)");
   LuminanceImage image;
   try {
     image = read_luminance(path);

@@ -1,6 +1,5 @@
 #include "export/preview_png.h"
 
-
 #include <algorithm>
 #include <cmath>
 
@@ -107,6 +106,5 @@ PreviewImage render_preview(const Design& design, const CurdField& field, const 
   }
   return image;
 }
-
 
 }  // namespace curdle

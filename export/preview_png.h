@@ -11,7 +11,6 @@
 
 namespace curdle {
 
-
 // Bytes render_preview needs for `view` (its accumulators and the image).
 uint64_t preview_memory(const Design& design, const Box& view);
 

@@ -88,14 +88,10 @@ uint64_t cut_elements(const Layout& layout) {
 
 json report_to_json(const Report& report, const Layout& layout) {
   json j = report_to_json(report);
-  j["layout"] = {{"element_type", layout.element_type},
-                 {"width_mm", layout.width},
-                 {"height_mm", layout.height},
-                 {"elements", layout.elements.size()},
-                 {"cut", cut_elements(layout)},
-                 {"omitted_over_openings", layout.omitted},
-                 {"open_area", layout.open_area},
-                 {"notes", layout.notes},
+  j["layout"] = {{"element_type", layout.element_type}, {"width_mm", layout.width},
+                 {"height_mm", layout.height},          {"elements", layout.elements.size()},
+                 {"cut", cut_elements(layout)},         {"omitted_over_openings", layout.omitted},
+                 {"open_area", layout.open_area},       {"notes", layout.notes},
                  {"rule_violations", layout.violations}};
   return j;
 }

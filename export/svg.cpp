@@ -12,7 +12,6 @@
 namespace curdle {
 namespace {
 
-
 // All text in the drawing goes through the one XML escaper (curdle/text.h).
 std::string escape(const std::string& s) { return xml_escape(s); }
 
@@ -87,7 +86,6 @@ std::string rect_path(const Sheet& s, const Rect& r) {
   return fmt::format("M{} {}h{}v{}h{}z", mm(s.x(r.x)), mm(s.y(r.y, r.h)), mm(r.w), mm(r.h),
                      mm(-r.w));
 }
-
 
 void draw_openings(std::ostream& out, const Layout& layout, const Sheet& s) {
   std::vector<std::vector<const Element*>> by_value(layout.legend.size());
@@ -271,8 +269,8 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
   }
 }
 
-void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Sheet& s,
-                             double unit, double margin) {
+void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Sheet& s, double unit,
+                             double margin) {
   const Provenance& source = layout.source;
   const LayoutSpec& spec = layout.spec;
   const double W = layout.width, H = layout.height;

@@ -156,8 +156,8 @@ namespace curdle {
 // A deep 1-D lattice's index tables alone are gigabytes: the estimate counts them without
 // building them, and the engine refuses before allocating anything.
 TEST(Curdling, DeepLatticesAreRefusedBeforeTheirTablesAreBuilt) {
-  const Design d = test::design(2, 1, std::vector<std::vector<std::string>>{
-                                           std::vector<std::string>(56, "1/2")});
+  const Design d = test::design(
+      2, 1, std::vector<std::vector<std::string>>{std::vector<std::string>(56, "1/2")});
   EXPECT_GT(CellIndex::table_bytes(d.lattice), uint64_t{1} << 31);
   EXPECT_GE(estimate_memory(d, d.field), CellIndex::table_bytes(d.lattice));
   GenerateOptions options;

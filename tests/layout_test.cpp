@@ -252,7 +252,7 @@ TEST(Layout, PngColoursEachElementAndRecordsItsScale) {
   LayoutSpec spec;
   spec.joint = 20;
   Layout layout = make_layout(d, f, d.field, spec);
-  EXPECT_EQ(drawing_scale(layout), 20);  // 5.1 m fits an A3 sheet at 1:20
+  EXPECT_EQ(drawing_scale(layout), 20);           // 5.1 m fits an A3 sheet at 1:20
   layout.spec.scale = 10, layout.spec.dpi = 254;  // 1 px = 1 mm / (254 / 25.4 / 10) = 1 mm
   const PreviewImage png = render_layout(layout);
   EXPECT_EQ(png.width, static_cast<int>(std::ceil(layout.width)));

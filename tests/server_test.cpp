@@ -155,7 +155,8 @@ TEST_F(ServerTest, GenerateGivesTheEnginesCellsAndReport) {
   EXPECT_EQ(j["report"]["cells"], 65536);
   const auto bytes = unbase64(j["values"]);
   ASSERT_EQ(bytes.size(), 65536u);
-  const app::Run s = open_run(kRecipe, "42", "", {"curds.0.probabilities=[\"3/4\",\"1/2\",\"1/3\"]"});
+  const app::Run s =
+      open_run(kRecipe, "42", "", {"curds.0.probabilities=[\"3/4\",\"1/2\",\"1/3\"]"});
   const auto& d = s.recipe.design;
   const auto values = values_in(curdle::curdle(d, 42, d.field), d.field);
   EXPECT_TRUE(std::equal(values.begin(), values.end(), bytes.begin()));
@@ -203,7 +204,8 @@ TEST_F(ServerTest, BadRequestsAreJsonErrorsThatSayWhatIsAllowed) {
       {"/api/generate?seed=-1", 400, "is not a seed"},
       {"/api/generate?colour=red", 400, "unknown parameter"},
       {"/api/generate?lattice.base=1", 400, "from 2 to 64"},
-      {"/api/generate?curds.0.probabilities=%5B%221.5%22,%221%22,%221%22%5D", 400, "curds.0.probabilities"},
+      {"/api/generate?curds.0.probabilities=%5B%221.5%22,%221%22,%221%22%5D", 400,
+       "curds.0.probabilities"},
       {"/api/generate?window=250,250,67,67", 400, "inside the field"},
       // The API names a parameter by its key, never by a command-line option.
       {"/api/generate?window=1,2,3", 400, "window=: a 2-D lattice takes a window X,Y,W,H"},

@@ -63,7 +63,8 @@ StagingDirectory::StagingDirectory(fs::path dir,
   const fs::path absolute = fs::absolute(dir_).lexically_normal();
   fs::path existing = absolute;
   std::error_code ec;
-  while (!fs::exists(existing, ec) && existing.has_relative_path()) existing = existing.parent_path();
+  while (!fs::exists(existing, ec) && existing.has_relative_path())
+    existing = existing.parent_path();
   if (!fs::is_directory(existing, ec))
     throw InputError("cannot create the output directory " + dir_.string() + ": " +
                      existing.string() + " is a file in the way");

@@ -61,9 +61,7 @@ void write_preview(const OutputContext& c, OutputSink& sink) {
 }
 
 void write_layout_svg_output(const OutputContext& c, OutputSink& sink) {
-  sink.write("layout.svg", [&](std::ostream& o) {
-    write_layout_svg(o, *c.layout);
-  });
+  sink.write("layout.svg", [&](std::ostream& o) { write_layout_svg(o, *c.layout); });
 }
 
 void write_layout_png(const OutputContext& c, OutputSink& sink) {
@@ -72,33 +70,25 @@ void write_layout_png(const OutputContext& c, OutputSink& sink) {
 }
 
 void write_layout_glb(const OutputContext& c, OutputSink& sink) {
-  sink.write("layout.glb", [&](std::ostream& o) {
-    write_glb(o, *c.layout);
-  });
+  sink.write("layout.glb", [&](std::ostream& o) { write_glb(o, *c.layout); });
 }
 
 void write_layout_gltf(const OutputContext& c, OutputSink& sink) {
   std::ostringstream bin;
-  sink.write("layout.gltf", [&](std::ostream& o) {
-    write_gltf(o, bin, "layout.bin", *c.layout);
-  });
+  sink.write("layout.gltf", [&](std::ostream& o) { write_gltf(o, bin, "layout.bin", *c.layout); });
   sink.write("layout.bin", [&](std::ostream& o) { o << bin.str(); });
 }
 
 void write_schedule(const OutputContext& c, OutputSink& sink) {
-  sink.write("schedule.csv", [&](std::ostream& o) {
-    write_schedule_csv(o, *c.layout);
-  });
+  sink.write("schedule.csv", [&](std::ostream& o) { write_schedule_csv(o, *c.layout); });
 }
 
 void write_quantities(const OutputContext& c, OutputSink& sink) {
-  sink.write("quantities.csv",
-             [&](std::ostream& o) { write_quantities_csv(o, *c.layout); });
+  sink.write("quantities.csv", [&](std::ostream& o) { write_quantities_csv(o, *c.layout); });
 }
 
 void write_install(const OutputContext& c, OutputSink& sink) {
-  sink.write("install.svg",
-             [&](std::ostream& o) { write_install_svg(o, *c.layout); });
+  sink.write("install.svg", [&](std::ostream& o) { write_install_svg(o, *c.layout); });
 }
 
 void write_sheets(const OutputContext& c, OutputSink& sink) {
@@ -127,9 +117,7 @@ std::vector<Output> make_registry() {
        .write = write_cells});
   add({.name = "preview.png",
        .description = "the curds' values as a picture, a colour per value",
-       .memory = [](const Run& run) {
-         return preview_memory(run.recipe.design, run.view);
-       },
+       .memory = [](const Run& run) { return preview_memory(run.recipe.design, run.view); },
        .write = write_preview});
   add({.name = "layout.svg",
        .description = "the layout in true millimetres, with legend and title block",
@@ -138,26 +126,23 @@ std::vector<Output> make_registry() {
   add({.name = "layout.png",
        .description = "the layout drawn at a scale, to print",
        .needs_layout = true,
-       .memory = [](const Run& run) {
-         // Selected only with a [layout], so the recipe has one.
-         return layout_png_pixels(*run.recipe.layout, run.view) * kLayoutPngBytesPerPixel;
-       },
+       .memory =
+           [](const Run& run) {
+             // Selected only with a [layout], so the recipe has one.
+             return layout_png_pixels(*run.recipe.layout, run.view) * kLayoutPngBytesPerPixel;
+           },
        .write = write_layout_png});
   add({.name = "layout.glb",
        .description = "the layout as a glTF 2.0 scene in metres",
        .needs_layout = true,
-       .memory = [](const Run& run) {
-         return run.view.cells() * kGltfBytesPerElement;
-       },
+       .memory = [](const Run& run) { return run.view.cells() * kGltfBytesPerElement; },
        .write = write_layout_glb});
   add({.name = "layout.gltf",
        .description = "the same as glTF JSON with layout.bin beside it",
        .needs_layout = true,
        .by_default = false,
        .download = false,
-       .memory = [](const Run& run) {
-         return run.view.cells() * kGltfBytesPerElement * 2;
-       },
+       .memory = [](const Run& run) { return run.view.cells() * kGltfBytesPerElement * 2; },
        .write = write_layout_gltf});
   add({.name = "schedule.csv",
        .description = "one row per element: ID, lot, position, size, value, material",
@@ -225,8 +210,9 @@ std::vector<const Output*> select_outputs(const Run& run, const std::vector<std:
                          "unknown output '" + name + "'; allowed: " + known_outputs());
       if (o->needs_layout && !has_layout)
         throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout", ""},
-                         o->name + " needs a [layout] section in the recipe (see "
-                                   "patterns/README.md)");
+                         o->name +
+                             " needs a [layout] section in the recipe (see "
+                             "patterns/README.md)");
       if (std::find(chosen.begin(), chosen.end(), o) == chosen.end()) chosen.push_back(o);
     }
     return chosen;
@@ -248,9 +234,8 @@ namespace {
 // which describes the layout whenever the recipe has one.
 bool builds_layout(const Run& run, const std::vector<const Output*>& outputs) {
   if (!run.recipe.layout) return false;
-  return std::any_of(outputs.begin(), outputs.end(), [](const Output* o) {
-    return o->needs_layout || o->name == "report.json";
-  });
+  return std::any_of(outputs.begin(), outputs.end(),
+                     [](const Output* o) { return o->needs_layout || o->name == "report.json"; });
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ void check_run_memory(const Run& run, const std::vector<const Output*>& outputs)
 struct LayoutSummary {
   std::string element_type;
   uint64_t elements = 0, cut = 0, omitted = 0;
-  uint64_t sheets = 0;  // fabrication sheets written to sheets/
+  uint64_t sheets = 0;           // fabrication sheets written to sheets/
   double width = 0, height = 0;  // mm
   double drawing_scale = 0;      // layout.png, 1 : scale
   double dpi = 0;

@@ -89,7 +89,8 @@ Run resolve_run(const RunRequest& request) {
     if (ec != std::errc() || end != text.data() + text.size())
       throw InputError(parameter("seed"), "'" + text +
                                               "' is not a seed; a seed is a whole number from 0 "
-                                              "to " + std::to_string(UINT64_MAX));
+                                              "to " +
+                                              std::to_string(UINT64_MAX));
   }
   run.view = run.recipe.design.field;
   if (run.recipe.window) run.view = *run.recipe.window;

@@ -47,7 +47,6 @@ uint64_t parse_bytes(const std::string& text, const std::string& parameter);
 uint64_t default_memory_limit();
 
 // Runs the engine over the run's view with at most `threads` threads (0: all cores).
-CurdField run_engine(const Run& run, int threads,
-                     const std::function<void(double)>& progress = {});
+CurdField run_engine(const Run& run, int threads, const std::function<void(double)>& progress = {});
 
 }  // namespace curdle::app

@@ -94,8 +94,7 @@ SearchRun resolve_search(const SearchRequest& request) {
   if (per_thread * threads > s.run.generate.max_memory_bytes)
     throw ResourceLimitError(
         "a search over this field needs about " + std::to_string((per_thread * threads) >> 20) +
-        " MiB, above the memory limit of " +
-        std::to_string(s.run.generate.max_memory_bytes >> 20) +
+        " MiB, above the memory limit of " + std::to_string(s.run.generate.max_memory_bytes >> 20) +
         " MiB; use a smaller field.cells" +
         (s.run.generate.memory_limit_hint.empty() ? ""
                                                   : ", or " + s.run.generate.memory_limit_hint));
@@ -125,14 +124,13 @@ nlohmann::ordered_json search_hits_json(const SearchRun& s, const std::vector<Se
     hit["meets_empty_zones"] = h.meets_empty_zones;
     nlohmann::ordered_json measured = nlohmann::json::object();
     for (size_t i = 0; i < targets.size(); ++i)
-      measured[targets[i].text] = std::isnan(h.measured[i])
-                                      ? nlohmann::ordered_json(nullptr)
-                                      : nlohmann::ordered_json(h.measured[i]);
+      measured[targets[i].text] = std::isnan(h.measured[i]) ? nlohmann::ordered_json(nullptr)
+                                                            : nlohmann::ordered_json(h.measured[i]);
     hit["measured"] = measured;
     const bool whole = h.segment == d.field;
-    hit["command"] = generate_command(s.run.recipe_path, s.run.overrides, h.seed,
-                                      whole ? std::nullopt : std::optional<Box>(h.segment),
-                                      d.lattice.dimension);
+    hit["command"] =
+        generate_command(s.run.recipe_path, s.run.overrides, h.seed,
+                         whole ? std::nullopt : std::optional<Box>(h.segment), d.lattice.dimension);
     j["hits"].push_back(hit);
   }
   return j;

@@ -40,8 +40,8 @@ struct SearchRun {
 // Cell-stages a search of these seeds does: seeds x field cells x stages (saturating).
 uint64_t search_work(const Design& design, uint64_t first, uint64_t last);
 
-// Checks everything, the work budget and the memory the threads need together; InputError naming the
-// parameter ("seeds", "segment", "target", ...), ResourceLimitError above the memory limit.
+// Checks everything, the work budget and the memory the threads need together; InputError naming
+// the parameter ("seeds", "segment", "target", ...), ResourceLimitError above the memory limit.
 SearchRun resolve_search(const SearchRequest& request);
 
 // "A..B" or "N"; InputError naming `name`.

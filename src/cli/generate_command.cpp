@@ -18,13 +18,15 @@ void print_summary(const app::RunSummary& s, const app::Run& run, const fs::path
                    const std::vector<fs::path>& files) {
   if (s.layout) {
     const app::LayoutSummary& l = *s.layout;
-    if (l.sheets) std::printf("sheets: %llu, each as DXF and SVG in sheets/\n",
-                              static_cast<unsigned long long>(l.sheets));
-    std::printf("layout: %llu %ss (%llu cut, %llu over openings), %.0f x %.0f mm; layout.png at "
-                "1:%g, %g dpi\n",
-                static_cast<unsigned long long>(l.elements), l.element_type.c_str(),
-                static_cast<unsigned long long>(l.cut), static_cast<unsigned long long>(l.omitted),
-                l.width, l.height, l.drawing_scale, l.dpi);
+    if (l.sheets)
+      std::printf("sheets: %llu, each as DXF and SVG in sheets/\n",
+                  static_cast<unsigned long long>(l.sheets));
+    std::printf(
+        "layout: %llu %ss (%llu cut, %llu over openings), %.0f x %.0f mm; layout.png at "
+        "1:%g, %g dpi\n",
+        static_cast<unsigned long long>(l.elements), l.element_type.c_str(),
+        static_cast<unsigned long long>(l.cut), static_cast<unsigned long long>(l.omitted), l.width,
+        l.height, l.drawing_scale, l.dpi);
     for (const std::string& note : l.notes) std::printf("  note: %s\n", note.c_str());
     for (size_t i = 0; i < l.violations.size() && i < 20; ++i)
       std::printf("  rule: %s\n", l.violations[i].c_str());
@@ -76,8 +78,7 @@ int run_report(const CommonOptions& common) {
   const app::Run run = app::resolve_run(run_request(common));
   TerminalObserver observer;
   auto task = observer.begin("curdling");
-  const CurdField field =
-      app::run_engine(run, common.threads, [&](double f) { task->update(f); });
+  const CurdField field = app::run_engine(run, common.threads, [&](double f) { task->update(f); });
   task.reset();
   std::fputs(format_report_table(make_report(run.recipe.design, run.seed, field, run.view)).c_str(),
              stdout);

@@ -5,8 +5,8 @@
 #include <exception>
 #include <filesystem>
 
-#include "cli/generate_command.h"
 #include "cli/exit_code.h"
+#include "cli/generate_command.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "cli/search_command.h"

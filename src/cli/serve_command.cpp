@@ -4,11 +4,11 @@
 #include <signal.h>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
-#include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <thread>
 
 #include "app/run.h"
@@ -72,7 +72,8 @@ int run_serve(const ServeOptions& o) {
     server.stop();
     // Requests still running (a large export) would hold the stop; the server writes no files,
     // so after a second it ends at once.
-    for (int i = 0; i < 100 && !done; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    for (int i = 0; i < 100 && !done; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
     if (!done) {
       std::printf("curdle: stopped (requests in progress dropped)\n");
       std::fflush(stdout);

@@ -1,13 +1,12 @@
-#include "cli/serve_command.h"
-
-#include "cli/options.h"
-
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <vector>
+
+#include "cli/options.h"
+#include "cli/serve_command.h"
 
 namespace curdle::cli {
 

@@ -1,8 +1,7 @@
 #include "curdle/cell_index.h"
 
-#include <cmath>
-
 #include <cassert>
+#include <cmath>
 
 namespace curdle {
 namespace {

@@ -490,8 +490,7 @@ uint64_t estimate_memory(const Design& design, const Box& box) {
   const unsigned __int128 roots = cells_meeting(l, 0, box);
   unsigned __int128 words = 0;
   for (int k = 0; k <= l.stages; ++k) words += (roots * l.cells_per_root(k) + 63) / 64;
-  const unsigned __int128 bytes =
-      words * 8 * design.curds.size() + CellIndex::table_bytes(l);
+  const unsigned __int128 bytes = words * 8 * design.curds.size() + CellIndex::table_bytes(l);
   return bytes > UINT64_MAX ? UINT64_MAX : static_cast<uint64_t>(bytes);
 }
 

@@ -4,7 +4,8 @@ namespace curdle {
 namespace {
 
 // Built by appending: GCC 12 warns falsely (-Wrestrict) on chains of string concatenation.
-std::string format(const SourceLocation& w, const std::string& message, const ParameterNames& names) {
+std::string format(const SourceLocation& w, const std::string& message,
+                   const ParameterNames& names) {
   std::string s = w.file;
   if (!w.parameter.empty()) {
     // A parameter that names a recipe key (an override) is written with it: "--set lattice.base".

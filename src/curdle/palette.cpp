@@ -1,8 +1,7 @@
 #include "curdle/palette.h"
 
-#include <charconv>
-
 #include <array>
+#include <charconv>
 #include <cstdio>
 
 namespace curdle {

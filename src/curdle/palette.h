@@ -3,9 +3,8 @@
 #pragma once
 
 #include <optional>
-#include <string_view>
-
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "curdle/curd.h"

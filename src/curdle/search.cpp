@@ -284,8 +284,7 @@ void check_search(const Design& d, const Box& view, const SearchSpec& spec) {
   const SourceLocation where;
   if (d.lattice.dimension > 2)
     throw InputError(where, "search works on 1-D and 2-D lattices; this one is 3-D");
-  if (spec.top < 1 || spec.top > 1000)
-    throw InputError(parameter("top"), "must be from 1 to 1000");
+  if (spec.top < 1 || spec.top > 1000) throw InputError(parameter("top"), "must be from 1 to 1000");
   if (spec.stride < 0) throw InputError(parameter("stride"), "must be 1 or more");
   if (spec.lacunarity_box < 0)
     throw InputError(parameter("lacunarity_box"), "must be 1 or more cells");
@@ -300,8 +299,7 @@ void check_search(const Design& d, const Box& view, const SearchSpec& spec) {
     size = w;
   }
   for (const Target& t : spec.targets)
-    if (t.measure == Measure::empty &&
-        !Box{{0, 0, 0}, {size[0], size[1], 1}}.contains(t.zone))
+    if (t.measure == Measure::empty && !Box{{0, 0, 0}, {size[0], size[1], 1}}.contains(t.zone))
       throw InputError(parameter("target"),
                        "'" + t.text + "': the zone must lie inside the segment of " +
                            std::to_string(size[0]) + " x " + std::to_string(size[1]) + " cells");

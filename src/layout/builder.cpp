@@ -36,7 +36,6 @@ char id_kind(LayoutKind kind) {
   return 'E';
 }
 
-
 Rect clip(const Rect& r, double width, double height) {
   const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
   const double x1 = std::min(width, r.right()), y1 = std::min(height, r.top());
@@ -154,9 +153,8 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
       e.cell_x = view.origin[0] + i;
       e.cell_y = view.origin[1] + j;
       e.value = values[static_cast<size_t>(j * layout.columns + i)];
-      e.nominal =
-          Rect{right ? layout.width - along - spec.module_w : along,
-               top ? layout.height - up - spec.module_h : up, spec.module_w, spec.module_h};
+      e.nominal = Rect{right ? layout.width - along - spec.module_w : along,
+                       top ? layout.height - up - spec.module_h : up, spec.module_w, spec.module_h};
       const Rect laid = clip(e.nominal, layout.width, layout.height);
       e.shape = subtract(laid, layout.openings);
       if (e.shape.empty() || e.area() < kEps) {
@@ -227,8 +225,8 @@ double joint_area(const Layout& layout) {
   std::vector<Rect> vertical, horizontal;
   for (int64_t c = 0; c + 1 < layout.columns; ++c) {
     const double along = c * (layout.module_w + layout.joint) + layout.module_w;
-    vertical.push_back(Rect{right ? layout.width - along - layout.joint : along, 0,
-                            layout.joint, layout.height});
+    vertical.push_back(
+        Rect{right ? layout.width - along - layout.joint : along, 0, layout.joint, layout.height});
   }
   for (int64_t r = 0; r + 1 < layout.rows; ++r) {
     const double up = r * (layout.module_h + layout.joint) + layout.module_h;

@@ -137,8 +137,8 @@ Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {
     for (int d = 0; d < l.dimension; ++d) {
       if ((*cells)[d] < 1 || (*cells)[d] > most)
         r.fail("cells", "each size must be from 1 to " + std::to_string(most) + " cells (" +
-                            std::to_string(max_roots) + " root cells of " +
-                            std::to_string(side) + ", and at most 2^40)");
+                            std::to_string(max_roots) + " root cells of " + std::to_string(side) +
+                            ", and at most 2^40)");
       field.size[d] = (*cells)[d];
     }
   }
@@ -154,6 +154,5 @@ Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {
   }
   return field;
 }
-
 
 }  // namespace curdle::reading

@@ -24,11 +24,21 @@ const std::vector<KindKeys>& kinds() {
       {"tile", LayoutKind::tile, "tile", "size", false, true, {}},
       {"paving", LayoutKind::paving, "tile", "floor", true, true, {}},
       {"facade", LayoutKind::facade, "panel", "wall", true, true, {"openings", "mask"}},
-      {"perforation", LayoutKind::perforation, "cell", "sheet", true, false,
-       {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin", "fix",
-        "chord_tolerance", "sheet_size"}},
+      {"perforation",
+       LayoutKind::perforation,
+       "cell",
+       "sheet",
+       true,
+       false,
+       {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin", "fix", "chord_tolerance",
+        "sheet_size"}},
       {"park", LayoutKind::park, "cell", "area", false, false, {"elements", "ground", "clearance"}},
-      {"rhythm", LayoutKind::rhythm, "", "", false, false,
+      {"rhythm",
+       LayoutKind::rhythm,
+       "",
+       "",
+       false,
+       false,
        {"bay", "height", "length", "widths", "origin", "highlight"}},
       {"blocks", LayoutKind::blocks, "", "", false, false, {"voxel"}},
   };
@@ -37,8 +47,8 @@ const std::vector<KindKeys>& kinds() {
 
 const std::vector<std::string> kEveryKind = {"kind",  "colours", "scale",    "dpi",
                                              "spare", "pack",    "lot_size", "lot_rows"};
-const std::vector<std::string> kSurface = {"combine",    "origin",    "joint_colour",
-                                           "stage_grid", "highlight"};
+const std::vector<std::string> kSurface = {"combine", "origin", "joint_colour", "stage_grid",
+                                           "highlight"};
 
 Corner read_corner(TableReader& r) {
   const auto origin = read_string(r, "origin", "a corner").value_or("bottom-left");
@@ -108,8 +118,8 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     if (name == "façade") name = "facade";
   }
   const auto& table = kinds();
-  const auto k = std::find_if(table.begin(), table.end(),
-                              [&](const KindKeys& x) { return name == x.name; });
+  const auto k =
+      std::find_if(table.begin(), table.end(), [&](const KindKeys& x) { return name == x.name; });
   if (k == table.end())
     top.fail_node(*t->get("kind"), "layout.kind",
                   "unknown element kind \"" + name +

@@ -15,8 +15,7 @@ void apply_override(toml::table& doc, const std::string& assignment) {
   const auto eq = assignment.find('=');
   const std::string key = assignment.substr(0, eq);
   if (eq == std::string::npos || key.empty())
-    throw InputError(parameter("set", key),
-                     "expects KEY=VALUE, e.g. lattice.mode=exact");
+    throw InputError(parameter("set", key), "expects KEY=VALUE, e.g. lattice.mode=exact");
   const std::string value = assignment.substr(eq + 1);
   const std::string source = "override " + key;
   toml::table parsed;
@@ -55,8 +54,7 @@ void apply_override(toml::table& doc, const std::string& assignment) {
                              std::to_string(a->size()) + " entries (from 0)");
       at = a->get(idx);
     } else {
-      throw InputError(parameter("set", key),
-                       "'" + part + "' is not a table or array");
+      throw InputError(parameter("set", key), "'" + part + "' is not a table or array");
     }
   }
   const std::string& last = parts.back();
@@ -73,7 +71,6 @@ void apply_override(toml::table& doc, const std::string& assignment) {
   }
 }
 
-
 }  // namespace reading
 
 std::string recipe_text_with(std::string_view text, const std::string& source,
@@ -84,6 +81,5 @@ std::string recipe_text_with(std::string_view text, const std::string& source,
   out << doc << "\n";
   return out.str();
 }
-
 
 }  // namespace curdle

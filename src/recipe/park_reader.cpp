@@ -82,5 +82,4 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
 }
 
-
 }  // namespace curdle::reading

@@ -72,5 +72,4 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
 }
 
-
 }  // namespace curdle::reading

@@ -61,5 +61,4 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
   return recipe;
 }
 
-
 }  // namespace curdle

@@ -1,11 +1,11 @@
 #include "recipe/toml_reader.h"
 
-#include "curdle/palette.h"
-#include "curdle/text.h"
-
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+
+#include "curdle/palette.h"
+#include "curdle/text.h"
 
 namespace curdle::reading {
 namespace {
@@ -24,7 +24,6 @@ size_t edit_distance(std::string_view a, std::string_view b) {
   }
   return row[b.size()];
 }
-
 
 }  // namespace
 
@@ -104,8 +103,7 @@ std::optional<double> finite_number(const toml::node* node) {
   return v;
 }
 
-double read_mm(TableReader& r, const std::string& key, double fallback, double lo,
-               bool required) {
+double read_mm(TableReader& r, const std::string& key, double fallback, double lo, bool required) {
   const toml::node* n = r.get(key);
   if (!n) {
     if (required) r.fail(key, "is required: a length in millimetres");
@@ -153,7 +151,6 @@ toml::table parse_toml(std::string_view text, const std::string& source) {
                      "not valid TOML: " + std::string(e.description()));
   }
 }
-
 
 std::optional<Rgb> read_colour(TableReader& r, const std::string& key) {
   const auto text = read_string(r, key, "a colour written \"#rrggbb\"");

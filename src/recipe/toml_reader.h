@@ -26,7 +26,6 @@ struct Source {
   std::vector<std::string> overridden;  // dotted keys given with --set
 };
 
-
 SourceLocation locate(const Source& source, const toml::source_region& region,
                       const std::string& key);
 

@@ -21,9 +21,8 @@ Box parse_window(const std::string& text, const Design& design) {
     start = comma + 1;
   }
   if (static_cast<int>(v.size()) != 2 * E)
-    throw InputError(
-        parameter("window"),
-        "a " + std::to_string(E) + "-D lattice takes a window " + form + ", not '" + text + "'");
+    throw InputError(parameter("window"), "a " + std::to_string(E) + "-D lattice takes a window " +
+                                              form + ", not '" + text + "'");
   Box box;
   for (int d = 0; d < E; ++d) {
     box.origin[d] = v[d];
@@ -32,9 +31,8 @@ Box parse_window(const std::string& text, const Design& design) {
   if (!box.well_formed() || !design.field.contains(box)) {
     std::string field;
     for (int d = 0; d < E; ++d) field += (d ? " x " : "") + std::to_string(design.field.size[d]);
-    throw InputError(parameter("window"),
-                     "'" + text + "' must lie inside the field of " + field +
-                         " cells (origin >= 0, sizes >= 1)");
+    throw InputError(parameter("window"), "'" + text + "' must lie inside the field of " + field +
+                                              " cells (origin >= 0, sizes >= 1)");
   }
   return box;
 }

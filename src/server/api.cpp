@@ -68,7 +68,8 @@ struct RunRequest {
 
 RunRequest read_run(const Params& params, const std::set<std::string>& own_names) {
   if (params.size() > 256)
-    throw ResourceLimitError("too many parameters (" + std::to_string(params.size()) + "); at most 256");
+    throw ResourceLimitError("too many parameters (" + std::to_string(params.size()) +
+                             "); at most 256");
   RunRequest r;
   for (const auto& [key, value] : params) {
     if (key == "set") {
@@ -89,7 +90,8 @@ RunRequest read_run(const Params& params, const std::set<std::string>& own_names
       std::string allowed = "seed, window, set";
       for (const auto& n : own_names) allowed += ", " + n;
       throw InputError(parameter(key), "unknown parameter; allowed: " + allowed +
-                           ", and recipe keys such as lattice.base=3 or curds.0.probabilities=[\"1/2\",\"1/2\"]");
+                                           ", and recipe keys such as lattice.base=3 or "
+                                           "curds.0.probabilities=[\"1/2\",\"1/2\"]");
     }
   }
   return r;
@@ -124,10 +126,10 @@ app::Run run_for(const ApiContext& c, const RunRequest& r) {
 void check_cells(const Design& d, const Box& view, uint64_t limit, const char* what) {
   const uint64_t cells = generation_box(d, view).cells();
   if (cells > limit)
-    throw ResourceLimitError(std::string(what) + " " + std::to_string(cells) + " cells; the server allows " +
-                   std::to_string(limit) +
-                   ": choose a smaller field.cells or window, or start it with a larger "
-                   "--max-cells");
+    throw ResourceLimitError(std::string(what) + " " + std::to_string(cells) +
+                             " cells; the server allows " + std::to_string(limit) +
+                             ": choose a smaller field.cells or window, or start it with a larger "
+                             "--max-cells");
 }
 
 ordered_json box_json(const Box& b, int dimension) {
@@ -247,8 +249,7 @@ ApiResponse api_generate(const ApiContext& c, const Params& params) {
     const auto start = std::chrono::steady_clock::now();
     const RunRequest r = read_run(params, {"cells"});
     const std::string cells = own(r, "cells", "1");
-    if (cells != "0" && cells != "1")
-      throw InputError(parameter("cells"), "must be 0 or 1");
+    if (cells != "0" && cells != "1") throw InputError(parameter("cells"), "must be 0 or 1");
     const app::Run s = run_for(c, r);
     const Design& d = s.recipe.design;
     const int E = d.lattice.dimension;

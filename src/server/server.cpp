@@ -101,7 +101,8 @@ struct Server::Impl {
   }
 
   bool host_allowed(const std::string& value) const {
-    if (bound_host == "0.0.0.0" || bound_host == "::") return is_ip_literal_with_port(value, bound_port);
+    if (bound_host == "0.0.0.0" || bound_host == "::")
+      return is_ip_literal_with_port(value, bound_port);
     const auto hosts = hosts_for(bound_host, bound_port);
     return std::find(hosts.begin(), hosts.end(), value) != hosts.end();
   }
@@ -127,8 +128,7 @@ struct Server::Impl {
                              hosts_for(bound_host, bound_port).front() + " only");
     if (api) {
       const std::string origin = req.get_header_value("Origin");
-      if (!origin.empty() &&
-          !(origin.rfind("http://", 0) == 0 && host_allowed(origin.substr(7))))
+      if (!origin.empty() && !(origin.rfind("http://", 0) == 0 && host_allowed(origin.substr(7))))
         return refuse(403, "requests from other sites are refused (Origin " + origin + ")");
       const std::string site = req.get_header_value("Sec-Fetch-Site");
       if (!site.empty() && site != "same-origin" && site != "none")
@@ -176,11 +176,13 @@ struct Server::Impl {
     // Anything else under /api/ is a JSON 404 (or 405 for another method), never a page.
     auto not_found = [this](const httplib::Request& req, httplib::Response& res) {
       const bool get = req.method == "GET";
-      reply(res, api_error(get ? 404 : 405,
-                           get ? "no such endpoint " + req.path +
-                                     "; the API has /api/recipe, /api/colours, /api/generate, /api/export "
-                                     "and /api/search"
-                               : "the API takes GET requests only"));
+      reply(
+          res,
+          api_error(get ? 404 : 405,
+                    get ? "no such endpoint " + req.path +
+                              "; the API has /api/recipe, /api/colours, /api/generate, /api/export "
+                              "and /api/search"
+                        : "the API takes GET requests only"));
     };
     http.Get(R"(/api/.*)", not_found);
     http.set_mount_point("/", config.web_root.string());
