@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -109,6 +110,11 @@ CurdField run_engine(const Run& run, int threads, const std::function<void(doubl
   GenerateOptions options = run.generate;
   options.progress = progress;
   return curdle(run.recipe.design, run.seed, run.view, options);
+}
+
+void start_worker_threads(int threads) {
+  // An empty task queued without waiting: the scheduler creates its workers to run it.
+  if (threads != 1) tbb::this_task_arena::enqueue([] {});
 }
 
 }  // namespace curdle::app

@@ -59,6 +59,7 @@ std::string outputs_help() {
 
 int run_generate(const CommonOptions& common, const std::string& out_dir,
                  const std::vector<std::string>& outputs_named) {
+  app::start_worker_threads(common.threads);
   const app::Run run = app::resolve_run(run_request(common));
   TerminalObserver observer;
   const auto outputs = app::select_outputs(run, outputs_named, &observer);

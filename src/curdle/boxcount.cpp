@@ -32,6 +32,44 @@ struct GroupLevel {
   uint64_t* count;
 };
 
+// Which words of a stage can hold a survivor: those under a survivor of a coarser stage whose
+// cells each cover whole words. The finest stages are sparse (a p = 0.7 plane keeps under 1 %
+// of its cells), and reading only these words never touches, nor faults in, the rest.
+struct LiveWords {
+  const Bitset* coarse = nullptr;  // null: every word
+  uint64_t words_per_bit = 0;
+};
+
+LiveWords live_words(const Curd& curd, int k, uint64_t children) {
+  if (!std::has_single_bit(children) || children >= 64) return {};
+  uint64_t span = 1;  // finest bits under one cell of stage k - up
+  int up = 0;
+  while (span < 64) span *= children, ++up;
+  // Worth it only when the coarse stage is much smaller than the one scanned.
+  if (k - up < 1 || span < 64 || curd.stages[k].words.size() < (1u << 14)) return {};
+  return LiveWords{&curd.stages[k - up], span / 64};
+}
+
+// Calls f(begin, end) for the runs of live words among coarse bits [begin_bit, end_bit), or of
+// all words in that range of words when there is no coarse stage.
+template <class F>
+void for_each_live_run(const LiveWords& live, uint64_t begin, uint64_t end, F&& f) {
+  if (!live.coarse) {
+    f(begin, end);
+    return;
+  }
+  uint64_t run_begin = 0, run_end = 0;
+  for_each_set(*live.coarse, begin, end, [&](uint64_t i) {
+    const uint64_t b = i * live.words_per_bit;
+    if (b != run_end) {
+      if (run_end > run_begin) f(run_begin, run_end);
+      run_begin = b;
+    }
+    run_end = b + live.words_per_bit;
+  });
+  if (run_end > run_begin) f(run_begin, run_end);
+}
+
 void count_groups(const uint64_t* words, size_t n, GroupLevel* levels, size_t count) {
   size_t in_word = 0;
   while (in_word < count && levels[in_word].group <= 64) ++in_word;
@@ -80,6 +118,77 @@ void count_groups(const uint64_t* words, size_t n, GroupLevel* levels, size_t co
   count_groups(map, map_words, levels + in_word, count - in_word);
 }
 
+// count_groups on a sparse finest stage: only the words under live coarse cells are read.
+// Groups up to a word are folded as above; a larger group is a group of coarse cells, so its
+// count is the number of distinct ancestors of the coarse cells with a final survivor, found
+// in one ordered pass (tasks join where an ancestor straddles their boundary).
+void count_groups_live(const uint64_t* words, const LiveWords& live, GroupLevel* levels,
+                       size_t count) {
+  const uint64_t span = live.words_per_bit * 64;  // finest bits per coarse cell
+  size_t in_word = 0;
+  while (in_word < count && levels[in_word].group <= 64) ++in_word;
+  std::array<uint64_t, 64> starts;
+  std::array<int, 64> shift;  // ancestor of coarse cell i at a large level: i >> shift
+  for (size_t i = 0; i < count; ++i) {
+    if (i < in_word)
+      starts[i] = group_starts(levels[i].group);
+    else
+      shift[i] = std::countr_zero(levels[i].group / span);
+  }
+  struct Partial {
+    std::array<uint64_t, 64> sums{};
+    std::array<uint64_t, 64> first{}, last{};  // ancestors at the ends, per large level
+    bool any = false;
+  };
+  auto pass = [&](uint64_t begin, uint64_t end, Partial& acc) {
+    for_each_set(*live.coarse, begin, end, [&](uint64_t cell) {
+      bool alive = false;
+      for (uint64_t w = cell * live.words_per_bit; w < (cell + 1) * live.words_per_bit; ++w) {
+        const uint64_t x = words[w];
+        if (!x) continue;
+        alive = true;
+        for (size_t i = 0; i < in_word; ++i)
+          acc.sums[i] += nonzero_groups(x, levels[i].group, starts[i]);
+      }
+      if (!alive) return;
+      for (size_t i = in_word; i < count; ++i) {
+        const uint64_t ancestor = cell >> shift[i];
+        if (!acc.any) acc.first[i] = ancestor;
+        if (!acc.any || ancestor != acc.last[i]) ++acc.sums[i];
+        acc.last[i] = ancestor;
+      }
+      acc.any = true;
+    });
+  };
+  auto join = [&](Partial a, const Partial& b) {
+    if (!b.any) return a;
+    if (!a.any) return b;
+    for (size_t i = 0; i < count; ++i) {
+      a.sums[i] += b.sums[i];
+      if (i >= in_word && a.last[i] == b.first[i]) --a.sums[i];
+      a.last[i] = b.last[i];
+    }
+    return a;
+  };
+  constexpr uint64_t kCellsPerTask = 64 * 256;
+  const uint64_t cells = live.coarse->size;
+  Partial total;
+  if (cells <= kCellsPerTask) {
+    pass(0, cells, total);
+  } else {
+    // parallel_reduce keeps the order of its operands: join(left, right).
+    total = tbb::parallel_reduce(
+        tbb::blocked_range<uint64_t>(0, (cells + kCellsPerTask - 1) / kCellsPerTask), Partial{},
+        [&](const tbb::blocked_range<uint64_t>& r, Partial acc) {
+          Partial own;
+          pass(r.begin() * kCellsPerTask, std::min(cells, r.end() * kCellsPerTask), own);
+          return join(std::move(acc), own);
+        },
+        join);
+  }
+  for (size_t i = 0; i < count; ++i) *levels[i].count = total.sums[i];
+}
+
 }  // namespace
 
 std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children,
@@ -97,7 +206,11 @@ void box_counts_into(const Curd& curd, uint64_t children, std::vector<Bitset>& s
     std::array<GroupLevel, 64> levels;
     uint64_t group = 1;
     for (int j = K; j >= 0; --j, group *= children) levels[K - j] = GroupLevel{group, &counts[j]};
-    count_groups(curd.stages[K].words.data(), curd.stages[K].words.size(), levels.data(), K + 1);
+    const LiveWords live = live_words(curd, K, children);
+    if (live.coarse)
+      count_groups_live(curd.stages[K].words.data(), live, levels.data(), K + 1);
+    else
+      count_groups(curd.stages[K].words.data(), curd.stages[K].words.size(), levels.data(), K + 1);
     return;
   }
   counts[K] = curd.stages[K].count();
@@ -139,6 +252,18 @@ void box_counts_into(const Curd& curd, uint64_t children, std::vector<Bitset>& s
     }
     below = &alive;
   }
+}
+
+uint64_t count_survivors(const Curd& curd, int stage, uint64_t children) {
+  const Bitset& bits = curd.stages[stage];
+  const LiveWords live = live_words(curd, stage, children);
+  if (!live.coarse) return bits.count();
+  const uint64_t* w = bits.words.data();
+  uint64_t n = 0;
+  for_each_live_run(live, 0, live.coarse->size, [&](uint64_t b, uint64_t e) {
+    for (uint64_t i = b; i < e; ++i) n += std::popcount(w[i]);
+  });
+  return n;
 }
 
 std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children) {

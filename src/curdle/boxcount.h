@@ -21,6 +21,9 @@ std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children);
 void box_counts_into(const Curd& curd, uint64_t children, std::vector<Bitset>& scratch,
                      std::vector<uint64_t>& counts);
 
+// Survivors of one stage; on a sparse stage only the words under coarser survivors are read.
+uint64_t count_survivors(const Curd& curd, int stage, uint64_t children);
+
 struct LineFit {
   double slope = 0;
   double r2 = 0;

@@ -183,6 +183,10 @@ class SurvivalBatch {
       flush_whole_draws();
       return;
     }
+    if (16 % B == 0 && !w_.prune) {
+      flush_small_families();
+      return;
+    }
     Block* blocks = buffers_.blocks.data();
     size_t n = 0;
     for (size_t p = 0; p < count_; ++p) {
@@ -257,6 +261,51 @@ class SurvivalBatch {
         if (bits && !filter.all) bits &= allowed_bits(w_, filter, c, count);
         if (bits) children_.or_bits(parent.index * B + c, bits, count);
       }
+    }
+    count_ = 0;
+  }
+
+  // b^E dividing 16 (b = 2 in 2-D or 3-D, b = 2 or 4 on a line) with every child inside the
+  // box: a draw holds the children of 16 / b^E neighbouring parents whole, so each parent's
+  // children are one field of one draw and land in one field of one word. The same draws and
+  // bits as the general path, with none of its per-child bookkeeping.
+  void flush_small_families() {
+    Buffers& b = buffers_;
+    const uint64_t B = w_.children;
+    const uint32_t tag = RandomStream::tag(w_.curd, w_.stage, DrawKind::survival, 0);
+    size_t n = 0;
+    for (size_t p = 0; p < count_; ++p) {
+      Parent& parent = parents_[p];
+      const uint64_t block = parent.path * B >> 4;
+      if (n == 0 || b.blocks[n - 1].block != block || b.blocks[n - 1].root != parent.root) {
+        b.blocks[n] = Block{block, parent.root, 0, 0};
+        b.w0[n] = static_cast<uint32_t>(block);
+        b.w1[n] = static_cast<uint32_t>(block >> 32);
+        b.w2[n] = parent.root;
+        b.w3[n++] = tag;
+      }
+      parent.first_block = n - 1;
+    }
+    const size_t lanes = (n + 7) / 8 * 8;  // whole vectors; the padding draws are discarded
+    for (size_t i = n; i < lanes; ++i) b.w0[i] = b.w1[i] = b.w2[i] = b.w3[i] = 0;
+    philox_in_place(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, w_.rng.key(0),
+                    w_.rng.key(1));
+    compare_lanes(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, top_, b.below.data(),
+                  b.tie.data());
+    for (size_t i = 0; i < n; ++i) {
+      if (!b.tie[i]) continue;  // rare: 1 in 16 draws
+      Block& block = b.blocks[i];
+      block.below = b.below[i];
+      for (uint32_t ties = b.tie[i]; ties; ties &= ties - 1) resolve(block, std::countr_zero(ties));
+      b.below[i] = static_cast<uint16_t>(block.below);
+    }
+    const uint64_t field = (uint64_t{1} << B) - 1;
+    uint64_t* words = children_.words.data();
+    for (size_t p = 0; p < count_; ++p) {
+      const Parent& parent = parents_[p];
+      const uint64_t bits = (b.below[parent.first_block] >> (parent.path * B & 15)) & field;
+      const uint64_t first = parent.index * B;
+      if (bits) words[first >> 6] |= bits << (first & 63);
     }
     count_ = 0;
   }
