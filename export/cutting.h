@@ -1,8 +1,8 @@
 // Cutting files for each fabrication sheet of a perforated surface:
-//   DXF (AutoCAD R12 ASCII, through dxflib): the sheet outline, the openings as circles on one
-//     layer per diameter (HOLE_D16.0), merged openings as closed polylines (OPENING_OUTLINE),
-//     each opening's element ID as text on layer ID (not cut), and the sheet ID on layer TEXT;
-//     millimetres from the sheet's bottom-left corner;
+//   DXF (AutoCAD 2000, millimetres, through dxf_document.h): the sheet outline, the openings as
+//     circles on one layer per diameter (HOLE_D16, HOLE_D22_6), merged openings as closed
+//     polylines (OPENING_OUTLINE), each opening's element ID as text on layer ID (does not
+//     plot), and the sheet ID on layer TEXT; millimetres from the sheet's bottom-left corner;
 //   SVG for laser cutters: the same, in true millimetres, hairline strokes, no fill.
 #pragma once
 

@@ -6,11 +6,14 @@
 #include <map>
 
 #include "curdle/text.h"
+#include "export/wkt.h"
+#include "layout/piece.h"
 
 namespace curdle {
 namespace {
 
-std::string num(double v) { return fmt::format("{:.1f}", v); }
+// Positions to the micrometre, as in the schedule and the DXF.
+std::string num(double v) { return mm_text(v); }
 
 }  // namespace
 
@@ -51,6 +54,16 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
       cx = e.circle->cx, cy = e.circle->cy, w = e.circle->d;
       out << fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" fill-opacity=\"0.35\"/>",
                          num(x(cx)), num(y(cy)), num(e.circle->d / 2), fill);
+    } else if (e.outline) {  // merged openings, cut as their union
+      std::string d;
+      for (const Ring& ring : e.outline->rings)
+        for (size_t i = 0; i < ring.size(); ++i)
+          d += fmt::format("{}{} {}{}", i ? "L" : "M", num(x(ring[i][0])), num(y(ring[i][1])),
+                           i + 1 == ring.size() ? "z" : "");
+      out << fmt::format("<path d=\"{}\" fill=\"{}\" fill-opacity=\"0.35\" fill-rule=\"evenodd\"/>",
+                         d, fill);
+      const Rect b = laid_bounds(e);
+      cx = b.x + b.w / 2, cy = b.y + b.h / 2, w = std::min(b.w, b.h * 3);
     } else {
       const auto& rects = e.shape.empty() ? std::vector<Rect>{e.nominal} : e.shape;
       double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;

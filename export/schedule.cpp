@@ -4,21 +4,55 @@
 
 #include <cmath>
 #include <map>
+#include <tuple>
 
 #include "curdle/palette.h"
 #include "export/csv_field.h"
+#include "export/wkt.h"
+#include "layout/piece.h"
 
 namespace curdle {
 namespace {
 
-std::string mm(double v) { return fmt::format("{:.1f}", v); }
+// Spreadsheets read a CSV file as UTF-8 only when it starts with a byte-order mark.
+constexpr const char* kUtf8Mark = "\xEF\xBB\xBF";
 
 const Rgb& colour_of(const Layout& layout, const Element& e) {
   return e.type.empty() ? layout.legend[e.value].colour : e.colour;
 }
 
 std::string type_of(const Layout& layout, const Element& e) {
-  return e.type.empty() ? layout.element_type : e.type;
+  if (!e.type.empty()) return e.type;
+  if (e.circle || e.outline) return "opening";
+  return layout.element_type;
+}
+
+std::string material_of(const Layout& layout, const Element& e) {
+  return e.type.empty() ? layout.legend[e.value].label : e.type;
+}
+
+bool is_blocks(const Layout& layout) { return layout.kind == LayoutKind::blocks; }
+
+// What an order line is bought as: the stock size, or the opening's diameter.
+std::string size_of(const Layout& layout, const Element& e) {
+  if (e.circle) {
+    std::string s = "D";  // appended: GCC 12 warns falsely on "D" + string
+    s += mm_text(e.circle->d);
+    return s;
+  }
+  if (e.outline) return "merged opening";
+  const double h = is_blocks(layout) ? layout.spec.blocks().voxel_h : e.stock_h;
+  std::string s = mm_text(e.stock_w) + " x " + mm_text(h);
+  if (is_blocks(layout)) s += " x " + mm_text(e.stock_h);
+  return s;
+}
+
+double stock_area(const Element& e) { return e.stock_w * e.stock_h; }
+
+std::string lot_text(const Layout& layout, const Element& e, size_t index) {
+  // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in.
+  return e.sheet >= 0 ? layout.sheets[static_cast<size_t>(e.sheet)].id
+                      : std::to_string(lot_of(e, index, layout.spec));
 }
 
 }  // namespace
@@ -32,53 +66,52 @@ int64_t lot_of(const Element& e, size_t index, const LayoutSpec& spec) {
 void write_schedule_csv(std::ostream& out, const Layout& layout) {
   const Provenance& design = layout.source;
   const LayoutSpec& spec = layout.spec;
-  std::string header = "element_id,lot,row,column,x_mm,y_mm,z_mm,width_mm,height_mm,value";
+  std::string header = kUtf8Mark;
+  header +=
+      "element_id,lot,level,row,column,x_mm,y_mm,z_mm,width_mm,height_mm,depth_mm,area_m2,"
+      "stock_width_mm,stock_height_mm,value";
   for (const CurdSpec& c : design.curds) {
     header += ',';
     header += csv_field(c.name);
   }
   header +=
-      ",element_type,colour,material,cut,cut_width_mm,cut_height_mm,opening_x_mm,"
-      "opening_y_mm,opening_diameter_mm\r\n";
+      ",element_type,colour,material,cut,shape_wkt,opening_x_mm,opening_y_mm,"
+      "opening_diameter_mm\r\n";
   out << header;
   std::string buffer;
   buffer.reserve(1 << 20);
+  const bool blocks = is_blocks(layout);
   for (size_t i = 0; i < layout.elements.size(); ++i) {
     const Element& e = layout.elements[i];
-    // The laid extent: the pieces' bounding box (the nominal size when whole).
-    double x0 = e.nominal.x, y0 = e.nominal.y, x1 = e.nominal.right(), y1 = e.nominal.top();
-    if (!e.shape.empty()) {
-      x0 = y0 = 1e300, x1 = y1 = -1e300;
-      for (const Rect& r : e.shape)
-        x0 = std::min(x0, r.x), y0 = std::min(y0, r.y), x1 = std::max(x1, r.right()),
-        y1 = std::max(y1, r.top());
+    const Rect b = laid_bounds(e);
+    std::string level, z = "0", height = mm_text(b.h), depth;
+    if (blocks) {
+      const int64_t l = e.cell_z - layout.view.origin[2];
+      level = std::to_string(l);
+      z = mm_text(static_cast<double>(l) * spec.blocks().voxel_h);
+      height = mm_text(spec.blocks().voxel_h);
+      depth = mm_text(b.h);
     }
-    const double z = layout.kind == LayoutKind::blocks
-                         ? (e.cell_z - layout.view.origin[2]) * spec.blocks().voxel_h
-                         : 0;
-    // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in.
-    const std::string lot = e.sheet >= 0 ? layout.sheets[static_cast<size_t>(e.sheet)].id
-                                         : std::to_string(lot_of(e, i, spec));
-    fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{},{},{}", e.id, lot, e.row,
-                   e.column, mm(e.nominal.x), mm(e.nominal.y), mm(z), mm(e.nominal.w),
-                   mm(e.nominal.h), e.value);
+    const bool bought = stock_area(e) > 0;
+    fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", e.id,
+                   lot_text(layout, e, i), level, e.row, e.column, mm_text(b.x), mm_text(b.y), z,
+                   mm_text(b.w), height, depth, fmt::format("{:.6f}", e.area() / 1e6),
+                   bought ? mm_text(e.stock_w) : "",
+                   bought ? mm_text(blocks ? spec.blocks().voxel_h : e.stock_h) : "", e.value);
     for (size_t c = 0; c < design.curds.size(); ++c) buffer += (e.value >> c & 1) ? ",1" : ",0";
-    fmt::format_to(std::back_inserter(buffer), ",{},{},{},{}", csv_field(type_of(layout, e)),
-                   hex_colour(colour_of(layout, e)),
-                   csv_field(e.type.empty() ? layout.legend[e.value].label : e.type), e.cut ? 1 : 0);
-    if (e.cut)
-      fmt::format_to(std::back_inserter(buffer), ",{},{}", mm(x1 - x0), mm(y1 - y0));
-    else
-      buffer += ",,";
+    fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{}", csv_field(type_of(layout, e)),
+                   hex_colour(colour_of(layout, e)), csv_field(material_of(layout, e)),
+                   e.cut ? 1 : 0, csv_field(outlines_wkt(piece_outlines(e))));
     if (e.circle)
-      fmt::format_to(std::back_inserter(buffer), ",{},{},{}", mm(e.circle->cx), mm(e.circle->cy),
-                     mm(e.circle->d));
+      fmt::format_to(std::back_inserter(buffer), ",{},{},{}", mm_text(e.circle->cx),
+                     mm_text(e.circle->cy), mm_text(e.circle->d));
     else if (e.outline)
-      fmt::format_to(std::back_inserter(buffer), ",{},{},", mm((x0 + x1) / 2), mm((y0 + y1) / 2));
+      fmt::format_to(std::back_inserter(buffer), ",{},{},", mm_text(b.x + b.w / 2),
+                     mm_text(b.y + b.h / 2));
     else
       buffer += ",,,";
     buffer += "\r\n";
-    if (buffer.size() > (1 << 20) - 1024) {
+    if (buffer.size() > (1 << 20) - 4096) {
       out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
       buffer.clear();
     }
@@ -86,36 +119,80 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
   out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
 }
 
+namespace {
+
+// One order line: pieces of one type, material, colour and stock size.
+struct OrderLine {
+  std::map<uint32_t, bool> values;
+  uint64_t count = 0, whole = 0, cut = 0;
+  double laid_area = 0, stock_area = 0;
+};
+using OrderKey = std::tuple<std::string, std::string, std::string, std::string>;
+
+OrderKey order_key(const Layout& layout, const Element& e) {
+  return {type_of(layout, e), material_of(layout, e), hex_colour(colour_of(layout, e)),
+          size_of(layout, e)};
+}
+
+void add_to(OrderLine& l, const Element& e) {
+  ++l.count;
+  (e.cut ? l.cut : l.whole) += 1;
+  l.laid_area += e.area();
+  l.stock_area += stock_area(e);
+  l.values[e.value] = true;
+}
+
+std::string value_list(const OrderLine& l) {
+  std::string s;
+  for (const auto& [v, _] : l.values) {
+    if (!s.empty()) s += ' ';
+    s += std::to_string(v);
+  }
+  return s;
+}
+
+}  // namespace
+
 void write_quantities_csv(std::ostream& out, const Layout& layout) {
   const LayoutSpec& spec = layout.spec;
-  // One line per element type and colour: values that share a colour are one order.
-  struct Line {
-    uint64_t count = 0;
-    double area = 0;
-    std::map<uint32_t, std::string> values;  // value -> label
-  };
-  std::map<std::pair<std::string, std::string>, Line> lines;
-  for (const Element& e : layout.elements) {
-    Line& l = lines[{type_of(layout, e), hex_colour(colour_of(layout, e))}];
-    ++l.count;
-    l.area += e.area();
-    l.values[e.value] = e.type.empty() ? layout.legend[e.value].label : e.type;
-  }
-  out << "element_type,colour,values,labels,count,area_m2,spare,count_with_spare,pack_size,"
-         "packs\r\n";
+  std::map<OrderKey, OrderLine> lines;
+  for (const Element& e : layout.elements) add_to(lines[order_key(layout, e)], e);
+  out << kUtf8Mark
+      << "element_type,material,colour,size_mm,values,count,whole,cut,laid_area_m2,"
+         "stock_area_m2,spare,count_with_spare,area_to_buy_m2,pack_size,packs\r\n";
   for (const auto& [key, l] : lines) {
-    std::string values, labels;
-    for (const auto& [v, label] : l.values) {
-      if (!values.empty()) values += ' ', labels += "; ";
-      values += std::to_string(v);
-      labels += label;
-    }
+    // Every piece, whole or cut, takes one stock element: offcuts are not reused.
     const auto with_spare = static_cast<uint64_t>(std::ceil(l.count * (1 + spec.spare) - 1e-9));
     const auto packs = (with_spare + spec.pack - 1) / spec.pack;
-    out << fmt::format("{},{},{},{},{},{:.4f},{},{},{},{}\r\n", csv_field(key.first), key.second,
-                       values, csv_field(labels), l.count, l.area / 1e6, spec.spare, with_spare,
-                       spec.pack, packs);
+    const double per_piece = l.count ? l.stock_area / static_cast<double>(l.count) : 0;
+    out << fmt::format("{},{},{},{},{},{},{},{},{:.6f},{:.6f},{},{},{:.6f},{},{}\r\n",
+                       csv_field(std::get<0>(key)), csv_field(std::get<1>(key)), std::get<2>(key),
+                       csv_field(std::get<3>(key)), value_list(l), l.count, l.whole, l.cut,
+                       l.laid_area / 1e6, l.stock_area / 1e6, spec.spare, with_spare,
+                       per_piece * static_cast<double>(with_spare) / 1e6, spec.pack, packs);
   }
+}
+
+void write_lots_csv(std::ostream& out, const Layout& layout) {
+  std::map<std::string, std::map<OrderKey, OrderLine>> lots;
+  std::vector<std::string> order;  // lots in laying order
+  for (size_t i = 0; i < layout.elements.size(); ++i) {
+    const Element& e = layout.elements[i];
+    std::string lot = lot_text(layout, e, i);
+    if (layout.kind == LayoutKind::blocks)
+      lot = "level " + std::to_string(e.cell_z - layout.view.origin[2]);
+    if (!lots.count(lot)) order.push_back(lot);
+    add_to(lots[lot][order_key(layout, e)], e);
+  }
+  out << kUtf8Mark
+      << "lot,element_type,material,colour,size_mm,values,count,whole,cut,laid_area_m2,"
+         "stock_area_m2\r\n";
+  for (const std::string& lot : order)
+    for (const auto& [key, l] : lots[lot])
+      out << fmt::format("{},{},{},{},{},{},{},{},{},{:.6f},{:.6f}\r\n", csv_field(lot),
+                         csv_field(std::get<0>(key)), csv_field(std::get<1>(key)),
+                         std::get<2>(key), csv_field(std::get<3>(key)), value_list(l), l.count,
+                         l.whole, l.cut, l.laid_area / 1e6, l.stock_area / 1e6);
 }
 
 }  // namespace curdle

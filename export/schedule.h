@@ -1,10 +1,17 @@
-// Fabrication schedules (CSV, RFC 4180, UTF-8, header row), streamed row by row:
-//   schedule.csv    one row per element: ID, lot, row, column, position and size in mm from the
-//                   layout origin (bottom-left corner, x right, y up; z up for blocks), value, a
-//                   0/1 column per curd, type, colour and material, cut size, opening centre and
-//                   diameter;
-//   quantities.csv  per element type and colour: count, area in m2, the spare share, the count
-//                   with spare, the pack size and the packs to order.
+// Fabrication schedules (CSV, RFC 4180, UTF-8 with a byte-order mark so that spreadsheets read
+// non-ASCII names, header row), every length in mm to the micrometre:
+//   schedule.csv    one row per piece as laid: ID, lot (or fabrication sheet), level (blocks),
+//                   row, column; x, y, z, width, height (and depth for blocks: width and depth
+//                   in plan, height the storey) of the piece's bounding box from the layout's
+//                   bottom-left corner, x right, y up; its own area; the stock element it is
+//                   cut from; value and a 0/1 column per curd; type, colour, material; cut;
+//                   shape_wkt, a WKT POLYGON for pieces that are not one rectangle (empty
+//                   otherwise); an opening's centre and diameter;
+//   quantities.csv  per element type, material, colour and stock size (diameter for openings):
+//                   count, whole and cut, laid area, stock area, spare, count and area to buy,
+//                   pack size and packs. Every piece takes one stock element;
+//   lots.csv        the same per lot (per fabrication sheet for perforations, per level for
+//                   blocks), in laying order.
 #pragma once
 
 #include <ostream>
@@ -20,5 +27,6 @@ int64_t lot_of(const Element& element, size_t index, const LayoutSpec& spec);
 
 void write_schedule_csv(std::ostream& out, const Layout& layout);
 void write_quantities_csv(std::ostream& out, const Layout& layout);
+void write_lots_csv(std::ostream& out, const Layout& layout);
 
 }  // namespace curdle

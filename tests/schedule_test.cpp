@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -70,17 +71,32 @@ TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
   std::ostringstream schedule, quantities;
   write_schedule_csv(schedule, layout);
   write_quantities_csv(quantities, layout);
-  const auto rows = strict_csv(schedule.str());
+  // Spreadsheets need the UTF-8 byte-order mark; after it, strict RFC 4180.
+  const std::string mark = "\xEF\xBB\xBF";
+  ASSERT_EQ(schedule.str().substr(0, 3), mark);
+  ASSERT_EQ(quantities.str().substr(0, 3), mark);
+  const auto rows = strict_csv(schedule.str().substr(3));
   ASSERT_EQ(rows.size(), layout.elements.size() + 1);
-  EXPECT_EQ(rows[0][10], "grey, light");
+  auto column = [&](const std::vector<std::vector<std::string>>& table, const std::string& name) {
+    const auto& h = table[0];
+    const auto it = std::find(h.begin(), h.end(), name);
+    EXPECT_NE(it, h.end()) << name;
+    return static_cast<size_t>(it - h.begin());
+  };
+  EXPECT_EQ(rows[0][column(rows, "value") + 1], "grey, light");
+  const size_t value = column(rows, "value"), cut_column = column(rows, "cut"),
+               lot_column = column(rows, "lot"), row_column = column(rows, "row"),
+               area_column = column(rows, "area_m2");
+  double schedule_area = 0;
   std::map<int, uint64_t> per_value;
   int64_t cut = 0, last_lot = 0;
   double area = 0;
   for (size_t r = 1; r < rows.size(); ++r) {
-    ++per_value[std::stoi(rows[r][9])];
-    cut += rows[r][15] == "1";
-    const int64_t lot = std::stoll(rows[r][1]);
-    EXPECT_EQ(lot, std::stoll(rows[r][2]) / 5 + 1);  // five rows a lot
+    ++per_value[std::stoi(rows[r][value])];
+    cut += rows[r][cut_column] == "1";
+    schedule_area += std::stod(rows[r][area_column]);
+    const int64_t lot = std::stoll(rows[r][lot_column]);
+    EXPECT_EQ(lot, std::stoll(rows[r][row_column]) / 5 + 1);  // five rows a lot
     EXPECT_GE(lot, last_lot);                        // lots follow the laying order
     last_lot = lot;
   }
@@ -89,20 +105,26 @@ TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
   for (int v = 0; v < 4; ++v) EXPECT_EQ(per_value[v], counts[v]) << "value " << v;
   EXPECT_GT(cut, 0);
 
-  const auto q = strict_csv(quantities.str());
-  ASSERT_EQ(q.size(), 4u);  // three colours: values 2 and 3 share one
+  const auto q = strict_csv(quantities.str().substr(3));
+  ASSERT_EQ(q.size(), 5u);  // one line per value: values 2 and 3 share a colour, not a name
   uint64_t ordered = 0;
   double ordered_area = 0;
   for (size_t r = 1; r < q.size(); ++r) {
-    const uint64_t count = std::stoull(q[r][4]);
+    const uint64_t count = std::stoull(q[r][column(q, "count")]);
+    EXPECT_EQ(count, std::stoull(q[r][column(q, "whole")]) + std::stoull(q[r][column(q, "cut")]));
     ordered += count;
-    ordered_area += std::stod(q[r][5]);
-    const uint64_t with_spare = std::stoull(q[r][7]);
+    ordered_area += std::stod(q[r][column(q, "laid_area_m2")]);
+    // Every piece, cut or whole, is bought as a 400 x 400 slab.
+    EXPECT_NEAR(std::stod(q[r][column(q, "stock_area_m2")]), count * 0.16, 1e-6);
+    EXPECT_EQ(q[r][column(q, "size_mm")], "400 x 400");
+    const uint64_t with_spare = std::stoull(q[r][column(q, "count_with_spare")]);
     EXPECT_EQ(with_spare, static_cast<uint64_t>(std::ceil(count * 1.05 - 1e-9)));
-    EXPECT_EQ(std::stoull(q[r][9]), (with_spare + 19) / 20);
+    EXPECT_EQ(std::stoull(q[r][column(q, "packs")]), (with_spare + 19) / 20);
+    EXPECT_NEAR(std::stod(q[r][column(q, "area_to_buy_m2")]), with_spare * 0.16, 1e-6);
   }
   EXPECT_EQ(ordered, layout.elements.size());
-  EXPECT_NEAR(ordered_area, area / 1e6, 1e-3);
+  EXPECT_NEAR(ordered_area, area / 1e6, 1e-5);
+  EXPECT_NEAR(schedule_area, area / 1e6, 1e-5);  // the pieces' own areas add up
 }
 
 }  // namespace curdle

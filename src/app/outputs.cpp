@@ -9,6 +9,7 @@
 #include "export/cutting.h"
 #include "export/gltf.h"
 #include "export/install.h"
+#include "export/layout_dxf.h"
 #include "export/layout_png.h"
 #include "export/mask_image.h"
 #include "export/preview_png.h"
@@ -87,6 +88,15 @@ void write_quantities(const OutputContext& c, OutputSink& sink) {
   sink.write("quantities.csv", [&](std::ostream& o) { write_quantities_csv(o, *c.layout); });
 }
 
+void write_layout_dxf_output(const OutputContext& c, OutputSink& sink) {
+  sink.write_via_file("layout.dxf",
+                      [&](const fs::path& path) { write_layout_dxf(path, *c.layout); });
+}
+
+void write_lots(const OutputContext& c, OutputSink& sink) {
+  sink.write("lots.csv", [&](std::ostream& o) { write_lots_csv(o, *c.layout); });
+}
+
 void write_install(const OutputContext& c, OutputSink& sink) {
   sink.write("install.svg", [&](std::ostream& o) { write_install_svg(o, *c.layout); });
 }
@@ -151,10 +161,23 @@ std::vector<Output> make_registry() {
        .size_unit = "elements",
        .size = view_cells,
        .write = write_schedule});
+  add({.name = "layout.dxf",
+       .description = "the pieces as laid for CAD: AutoCAD 2000 DXF in millimetres, a layer "
+                      "per material, IDs on a layer that does not plot",
+       .needs_layout = true,
+       .skip_above = 2'000'000,
+       .size_unit = "elements",
+       .size = view_cells,
+       .write = write_layout_dxf_output});
   add({.name = "quantities.csv",
-       .description = "counts and areas per element type and colour, with spare and packs",
+       .description =
+           "per element type, material and size: whole and cut, laid area, stock to buy, packs",
        .needs_layout = true,
        .write = write_quantities});
+  add({.name = "lots.csv",
+       .description = "the quantities per lot, fabrication sheet or level, in laying order",
+       .needs_layout = true,
+       .write = write_lots});
   add({.name = "install.svg",
        .description = "the installer's map: every element's ID and the laying order",
        .needs_layout = true,

@@ -77,7 +77,7 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
   for (uint32_t v = 0; v < blend.size(); ++v) {
     LegendEntry& entry = legend[v];
     entry.value = v;
-    entry.label = value_label(v, design.curds);
+    entry.label = v < spec.materials.size() ? spec.materials[v] : value_label(v, design.curds);
     entry.colour =
         v < spec.value_colours.size() && spec.value_colours[v] ? *spec.value_colours[v] : blend[v];
     if (spec.combine == Combine::keep) {
@@ -155,6 +155,7 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
       e.value = values[static_cast<size_t>(j * layout.columns + i)];
       e.nominal = Rect{right ? layout.width - along - spec.module_w : along,
                        top ? layout.height - up - spec.module_h : up, spec.module_w, spec.module_h};
+      e.stock_w = spec.module_w, e.stock_h = spec.module_h;
       const Rect laid = clip(e.nominal, layout.width, layout.height);
       e.shape = subtract(laid, layout.openings);
       if (e.shape.empty() || e.area() < kEps) {

@@ -146,6 +146,7 @@ struct LayoutSpec {
   int64_t pack = 1;
   int64_t lot_size = 0;
   int64_t lot_rows = 0;
+  std::vector<std::string> materials;  // per value, the product's name; empty: the curds' names
   double scale = 0;  // layout.png drawing scale 1 : scale; 0 picks one
   double dpi = 150;
 };
@@ -168,7 +169,8 @@ struct Element {
   int64_t cell_z = 0;              // blocks: the voxel's level
   Rect nominal;                    // where the whole element would be
   std::vector<Rect> shape;         // what is laid: one rect, or the pieces of a cut element
-  bool cut = false;                // smaller than nominal (edge or opening)
+  bool cut = false;                // smaller than its stock element (edge or opening)
+  double stock_w = 0, stock_h = 0;  // the whole element the piece is cut from (blocks: plan)
   std::optional<Circle> circle;    // a round opening (perforation)
   std::optional<Outline> outline;  // merged openings cut as their union (perforation, keep)
   std::string type;                // park: the element type; empty for modules

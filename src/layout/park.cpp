@@ -39,6 +39,11 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
       e.colour = kind.colour;
       e.shape = std::move(shape);
       e.circle = circle;
+      // Surfaces are laid to their share of the cell; objects come whole.
+      if (circle)
+        e.stock_w = e.stock_h = circle->d;
+      else if (!e.shape.empty())
+        e.stock_w = e.shape.front().w, e.stock_h = e.shape.front().h;
       e.cut = false;
       layout.elements.push_back(std::move(e));
     };

@@ -75,6 +75,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
       h.element = cell;
       h.element.shape.clear();
       h.element.cut = false;
+      h.element.stock_w = h.element.stock_h = 0;  // punched or cut out: nothing is bought
       h.element.key = cell.key.within('H', std::to_string(++index));
       h.element.id = h.element.key.text();
       if (group.size() == 1) {

@@ -18,6 +18,7 @@ void set_rhythm(Layout& layout, const LayoutSpec& spec) {
     if (w <= 0) continue;
     const Rect bay = e.nominal;
     e.shape = {Rect{bay.x + (bay.w - w) / 2, bay.y, w, bay.h}};
+    e.stock_w = w, e.stock_h = bay.h;
     e.cut = false;
     e.key = e.key.as('R');
     e.id = e.key.text();
@@ -59,6 +60,7 @@ Layout stack_blocks(const Design& design, const CurdField& field, const Box& vie
         e.cell_x = view.origin[0] + x, e.cell_y = view.origin[1] + y, e.cell_z = view.origin[2] + z;
         e.nominal = Rect{x * w, y * d, w, d};
         e.shape = {e.nominal};
+        e.stock_w = w, e.stock_h = d;
         e.key = ElementId{'B', digits, z, y, x, ""};
         e.id = e.key.text();
         layout.elements.push_back(std::move(e));

@@ -36,6 +36,8 @@ Ring polygonise(const Circle& c, double tolerance) {
   return ring;
 }
 
+std::vector<Outline> outlines_of(const CGAL::Polygon_set_2<Kernel>& set);
+
 std::vector<Outline> union_of_circles(const std::vector<Circle>& circles, double tolerance) {
   CGAL::Polygon_set_2<Kernel> set;
   for (const Circle& c : circles) {
@@ -43,6 +45,39 @@ std::vector<Outline> union_of_circles(const std::vector<Circle>& circles, double
     for (const auto& v : polygonise(c, tolerance)) p.push_back(Kernel::Point_2(v[0], v[1]));
     set.join(p);
   }
+  return outlines_of(set);
+}
+
+std::vector<Outline> union_of_rects(const std::vector<Rect>& rects) {
+  CGAL::Polygon_set_2<Kernel> set;
+  for (const Rect& r : rects) {
+    if (r.w <= 0 || r.h <= 0) continue;
+    Polygon p;
+    p.push_back(Kernel::Point_2(r.x, r.y));
+    p.push_back(Kernel::Point_2(r.right(), r.y));
+    p.push_back(Kernel::Point_2(r.right(), r.top()));
+    p.push_back(Kernel::Point_2(r.x, r.top()));
+    set.join(p);
+  }
+  std::vector<Outline> out = outlines_of(set);
+  // Joined edges leave collinear vertices behind: drop them, so that an L is six corners.
+  for (Outline& o : out)
+    for (Ring& ring : o.rings) {
+      Ring kept;
+      const size_t n = ring.size();
+      for (size_t i = 0; i < n; ++i) {
+        const auto& a = ring[(i + n - 1) % n];
+        const auto& b = ring[i];
+        const auto& c = ring[(i + 1) % n];
+        const double cross = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+        if (std::fabs(cross) > 1e-9) kept.push_back(b);
+      }
+      ring = std::move(kept);
+    }
+  return out;
+}
+
+std::vector<Outline> outlines_of(const CGAL::Polygon_set_2<Kernel>& set) {
   std::list<PolygonWithHoles> parts;
   set.polygons_with_holes(std::back_inserter(parts));
   std::vector<Outline> out;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "curdle/text.h"
 #include "layout/builder.h"
 
 namespace curdle::reading {
@@ -45,8 +46,28 @@ const std::vector<KindKeys>& kinds() {
   return table;
 }
 
-const std::vector<std::string> kEveryKind = {"kind",  "colours", "scale",    "dpi",
-                                             "spare", "pack",    "lot_size", "lot_rows"};
+const std::vector<std::string> kEveryKind = {"kind", "colours",  "materials", "scale",
+                                             "dpi",  "spare",    "pack",      "lot_size",
+                                             "lot_rows"};
+
+// layout.materials: the product each value is laid in, one name per value, value 0 first.
+void read_materials(TableReader& r, const Design& design, LayoutSpec& spec) {
+  const toml::node* n = r.get("materials");
+  if (!n) return;
+  const size_t values = size_t{1} << design.curds.size();
+  const toml::array* a = n->as_array();
+  const std::string allowed = "must be " + std::to_string(values) +
+                              " product names, one per value (value 0 first), e.g. "
+                              "[\"Buff brick\", \"Red brick\"]";
+  if (!a || a->size() != values) r.fail("materials", allowed);
+  for (const toml::node& item : *a) {
+    const auto name = item.value<std::string>();
+    if (!name || name->empty() || name->size() > 200 || !valid_utf8(*name) ||
+        has_control_characters(*name))
+      r.fail("materials", allowed + "; each a non-empty name of at most 200 characters");
+    spec.materials.push_back(*name);
+  }
+}
 const std::vector<std::string> kSurface = {"combine", "origin", "joint_colour", "stage_grid",
                                            "highlight"};
 
@@ -139,6 +160,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   LayoutSpec spec;
   spec.set_kind(k->kind);
   read_ordering(r, spec);
+  read_materials(r, design, spec);
   const int dimension = layout_dimension(spec.kind());
   if (design.lattice.dimension != dimension)
     r.fail("kind", "a " + name + " layout needs a " + std::to_string(dimension) +

@@ -1,0 +1,46 @@
+// A DXF drawing in millimetres that CAD programs open at true size: AutoCAD 2000 (AC1015)
+// through dxflib, with $INSUNITS = 4 (mm), metric measurement and the drawing's extents in the
+// header, one layer per material (true colour), closed polylines, and layers that do not plot.
+#pragma once
+
+#include <dxflib/dl_dxf.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace curdle {
+
+struct DxfLayer {
+  std::string name;  // as given; made a valid DXF name by dxf_layer_name
+  Rgb colour;
+  bool plot = true;  // false: shown on screen, never plotted or cut (IDs, notes)
+};
+
+// A valid DXF layer name: characters DXF forbids become '_', non-ASCII letters \U+XXXX.
+std::string dxf_layer_name(const std::string& name);
+
+class DxfDocument {
+ public:
+  // Opens `path` and writes the header and tables; throws InputError when it cannot be written.
+  DxfDocument(const std::filesystem::path& path, const std::vector<DxfLayer>& layers,
+              const Rect& extents);
+  ~DxfDocument();
+
+  void polygon(const std::string& layer, const Ring& ring);  // a closed polyline
+  void rect(const std::string& layer, const Rect& r);
+  void circle(const std::string& layer, double cx, double cy, double d);
+  void text(const std::string& layer, double x, double y, double height, const std::string& text,
+            bool centred);
+  void close();  // ends the entities and the file
+
+ private:
+  DL_Dxf dxf_;
+  std::unique_ptr<DL_WriterA> dw_;
+  bool closed_ = false;
+};
+
+}  // namespace curdle

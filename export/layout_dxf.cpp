@@ -1,0 +1,77 @@
+#include "export/layout_dxf.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+#include "export/dxf_document.h"
+#include "export/wkt.h"
+#include "layout/piece.h"
+
+namespace curdle {
+namespace {
+
+constexpr Rgb kInk{0, 0, 0};
+
+std::string layer_of(const Layout& layout, const Element& e) {
+  if (e.circle && layout.kind == LayoutKind::perforation) return fmt::format("HOLE_D{}", mm_text(e.circle->d));
+  if (e.outline) return "OPENING_OUTLINE";
+  const std::string material = e.type.empty() ? layout.legend[e.value].label : e.type;
+  if (layout.kind == LayoutKind::blocks)
+    return fmt::format("L{} {}", e.cell_z - layout.view.origin[2], material);
+  return material;
+}
+
+const Rgb& colour_of(const Layout& layout, const Element& e) {
+  return e.type.empty() ? layout.legend[e.value].colour : e.colour;
+}
+
+// Text that fits the piece: at most 40 % of its height, and its width over the ID's length.
+double id_height(const Rect& b, const std::string& id) {
+  return std::max(0.1, std::min(b.h * 0.4, b.w / (0.75 * static_cast<double>(id.size()) + 1)));
+}
+
+}  // namespace
+
+void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
+  std::vector<DxfLayer> layers{{"OUTLINE", kInk, true}, {"OPENINGS", Rgb{90, 90, 90}, true}};
+  std::map<std::string, bool> seen;
+  for (const Element& e : layout.elements) {
+    const std::string name = layer_of(layout, e);
+    if (seen.emplace(name, true).second) layers.push_back({name, colour_of(layout, e), true});
+  }
+  layers.push_back({"ID", Rgb{0, 0, 255}, false});
+  layers.push_back({"TEXT", kInk, true});
+  const Rect extents{0, 0, layout.width, layout.height};
+  DxfDocument dxf(path, layers, extents);
+
+  if (layout.kind != LayoutKind::blocks) dxf.rect("OUTLINE", extents);
+  for (const Rect& o : layout.openings) dxf.rect("OPENINGS", o);
+  for (const Element& e : layout.elements) {
+    const std::string layer = layer_of(layout, e);
+    if (e.circle) {
+      dxf.circle(layer, e.circle->cx, e.circle->cy, e.circle->d);
+      continue;
+    }
+    const std::vector<Outline> outlines = piece_outlines(e);
+    if (!outlines.empty()) {
+      for (const Outline& o : outlines)
+        for (const Ring& ring : o.rings) dxf.polygon(layer, ring);
+      continue;
+    }
+    dxf.rect(layer, laid_bounds(e));
+  }
+  for (const Element& e : layout.elements) {
+    const Rect b = laid_bounds(e);
+    dxf.text("ID", b.x + b.w / 2, b.y + b.h / 2, id_height(b, e.id), e.id, true);
+  }
+  const double h = std::max(10.0, std::min(layout.width, layout.height) / 100);
+  dxf.text("TEXT", 0, -2 * h, h,
+           fmt::format("{} - seed {} - millimetres from the bottom-left corner",
+                       layout.source.recipe, layout.source.seed),
+           false);
+  dxf.close();
+}
+
+}  // namespace curdle

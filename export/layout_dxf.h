@@ -1,0 +1,16 @@
+// layout.dxf: every layout kind as a CAD drawing (dxf_document.h): the surface's outline, its
+// openings, each piece as laid as a closed polyline (a circle for round openings and
+// canopies) on its material's layer, and each piece's ID, the same as in every other file, on
+// layer ID, which does not plot. Millimetres from the layout's bottom-left corner; blocks as
+// their plan, one layer per level and material.
+#pragma once
+
+#include <filesystem>
+
+#include "layout/layout.h"
+
+namespace curdle {
+
+void write_layout_dxf(const std::filesystem::path& path, const Layout& layout);
+
+}  // namespace curdle

@@ -1,0 +1,42 @@
+#include "layout/piece.h"
+
+#include <algorithm>
+
+#include "layout/union.h"
+
+namespace curdle {
+
+Rect laid_bounds(const Element& e) {
+  if (e.circle)
+    return Rect{e.circle->cx - e.circle->d / 2, e.circle->cy - e.circle->d / 2, e.circle->d,
+                e.circle->d};
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  auto add = [&](double x, double y) {
+    x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+  };
+  if (e.outline) {
+    for (const Ring& ring : e.outline->rings)
+      for (const auto& v : ring) add(v[0], v[1]);
+  } else {
+    for (const Rect& r : e.shape) add(r.x, r.y), add(r.right(), r.top());
+  }
+  if (x0 > x1) return e.nominal;
+  return Rect{x0, y0, x1 - x0, y1 - y0};
+}
+
+bool is_rectangle(const Element& e) {
+  if (e.circle || e.outline) return false;
+  if (e.shape.size() <= 1) return true;
+  const Rect b = laid_bounds(e);
+  double area = 0;
+  for (const Rect& r : e.shape) area += r.area();
+  return area >= b.area() - 1e-6;  // disjoint pieces that fill their box
+}
+
+std::vector<Outline> piece_outlines(const Element& e) {
+  if (e.outline) return {*e.outline};
+  if (e.circle || is_rectangle(e)) return {};
+  return union_of_rects(e.shape);
+}
+
+}  // namespace curdle

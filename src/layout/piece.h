@@ -1,0 +1,22 @@
+// A piece as laid: the one reading of an element's geometry that the schedule, the drawings,
+// the glTF and the DXF share, so that no two files can describe the same piece differently.
+#pragma once
+
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace curdle {
+
+// The piece's extent as laid: its rectangles' bounding box, or its opening's (a circle or a
+// merged outline); the nominal element when it has neither.
+Rect laid_bounds(const Element& e);
+
+// Whether the piece is one axis-aligned rectangle (whole, or cut straight at an edge).
+bool is_rectangle(const Element& e);
+
+// The piece's outline when it is not one rectangle and not a circle: the union of its
+// rectangles (an L-shaped panel cut at a window), or a merged opening. Empty otherwise.
+std::vector<Outline> piece_outlines(const Element& e);
+
+}  // namespace curdle
