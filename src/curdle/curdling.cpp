@@ -2,10 +2,6 @@
 
 #include <tbb/parallel_for.h>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -18,6 +14,7 @@
 #include "curdle/error.h"
 #include "curdle/philox_batch.h"
 #include "curdle/random_stream.h"
+#include "curdle/survival_bytes.h"
 #include "curdle/theory.h"
 
 namespace curdle {
@@ -92,59 +89,6 @@ uint64_t allowed_bits(const StageWork& w, const ChildFilter& f, uint64_t first, 
   uint64_t bits = 0;
   for (unsigned i = 0; i < count; ++i) bits |= uint64_t{f.allows(digits[first + i])} << i;
   return bits;
-}
-
-// 16 survival bytes of one draw against the threshold's top byte: which are below, which tie.
-void compare_bytes(const RandomStream::Block& r, uint32_t top, uint32_t& below, uint32_t& tie) {
-#if defined(__SSE2__)
-  const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(r.data()));
-  const __m128i flip = _mm_set1_epi8(static_cast<char>(0x80));
-  const __m128i t = _mm_set1_epi8(static_cast<char>(top ^ 0x80));
-  below = static_cast<uint32_t>(_mm_movemask_epi8(_mm_cmplt_epi8(_mm_xor_si128(v, flip), t)));
-  tie = static_cast<uint32_t>(
-      _mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_set1_epi8(static_cast<char>(top)))));
-#else
-  below = tie = 0;
-  for (unsigned word = 0; word < 4; ++word)
-    for (unsigned q = 0; q < 4; ++q) {
-      const uint32_t u = (r[word] >> (8 * q)) & 0xff;
-      below |= static_cast<uint32_t>(u < top) << (4 * word + q);
-      tie |= static_cast<uint32_t>(u == top) << (4 * word + q);
-    }
-#endif
-}
-
-// compare_bytes for draws held as four word arrays (philox_batch.h), four at a time: an SSE
-// 4 x 4 transpose puts each draw's 16 bytes in one register without a trip through memory.
-void compare_lanes(const uint32_t* w0, const uint32_t* w1, const uint32_t* w2, const uint32_t* w3,
-                   size_t lanes, uint32_t top, uint16_t* below, uint16_t* tie) {
-  size_t i = 0;
-#if defined(__SSE2__)
-  const __m128i flip = _mm_set1_epi8(static_cast<char>(0x80));
-  const __m128i t = _mm_set1_epi8(static_cast<char>(top ^ 0x80));
-  const __m128i eq = _mm_set1_epi8(static_cast<char>(top));
-  for (; i + 4 <= lanes; i += 4) {
-    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w0 + i));
-    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w1 + i));
-    const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w2 + i));
-    const __m128i d = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w3 + i));
-    const __m128i ab_lo = _mm_unpacklo_epi32(a, b), ab_hi = _mm_unpackhi_epi32(a, b);
-    const __m128i cd_lo = _mm_unpacklo_epi32(c, d), cd_hi = _mm_unpackhi_epi32(c, d);
-    const __m128i draw[4] = {_mm_unpacklo_epi64(ab_lo, cd_lo), _mm_unpackhi_epi64(ab_lo, cd_lo),
-                             _mm_unpacklo_epi64(ab_hi, cd_hi), _mm_unpackhi_epi64(ab_hi, cd_hi)};
-    for (int k = 0; k < 4; ++k) {
-      below[i + k] =
-          static_cast<uint16_t>(_mm_movemask_epi8(_mm_cmplt_epi8(_mm_xor_si128(draw[k], flip), t)));
-      tie[i + k] = static_cast<uint16_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(draw[k], eq)));
-    }
-  }
-#endif
-  for (; i < lanes; ++i) {
-    uint32_t b = 0, e = 0;
-    compare_bytes(RandomStream::Block{{w0[i], w1[i], w2[i], w3[i]}}, top, b, e);
-    below[i] = static_cast<uint16_t>(b);
-    tie[i] = static_cast<uint16_t>(e);
-  }
 }
 
 // Canonical survival for a batch of parents, keyed by the children's paths (random_stream.h,
@@ -235,12 +179,7 @@ class SurvivalBatch {
         b.w3[n++] = tag;
       }
     }
-    const size_t lanes = (n + 7) / 8 * 8;  // whole vectors; the padding draws are discarded
-    for (size_t i = n; i < lanes; ++i) b.w0[i] = b.w1[i] = b.w2[i] = b.w3[i] = 0;
-    philox_in_place(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, w_.rng.key(0),
-                    w_.rng.key(1));
-    compare_lanes(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, top_, b.below.data(),
-                  b.tie.data());
+    draw_lanes(n);
     size_t i = 0;
     for (size_t p = 0; p < count_; ++p) {
       const Parent& parent = parents_[p];
@@ -286,12 +225,7 @@ class SurvivalBatch {
       }
       parent.first_block = n - 1;
     }
-    const size_t lanes = (n + 7) / 8 * 8;  // whole vectors; the padding draws are discarded
-    for (size_t i = n; i < lanes; ++i) b.w0[i] = b.w1[i] = b.w2[i] = b.w3[i] = 0;
-    philox_in_place(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, w_.rng.key(0),
-                    w_.rng.key(1));
-    compare_lanes(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, top_, b.below.data(),
-                  b.tie.data());
+    draw_lanes(n);
     for (size_t i = 0; i < n; ++i) {
       if (!b.tie[i]) continue;  // rare: 1 in 16 draws
       Block& block = b.blocks[i];
@@ -314,23 +248,31 @@ class SurvivalBatch {
   // threshold.
   void draw_all(size_t n) {
     Buffers& b = buffers_;
-    const size_t lanes = (n + 7) / 8 * 8;  // whole vectors; the padding draws are discarded
     const uint32_t tag = RandomStream::tag(w_.curd, w_.stage, DrawKind::survival, 0);
-    for (size_t i = 0; i < lanes; ++i) {
-      const Block& block = b.blocks[std::min(i, n - 1)];
+    for (size_t i = 0; i < n; ++i) {
+      const Block& block = b.blocks[i];
       b.w0[i] = static_cast<uint32_t>(block.block);
       b.w1[i] = static_cast<uint32_t>(block.block >> 32);
       b.w2[i] = block.root;
       b.w3[i] = tag;
     }
-    philox_in_place(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, w_.rng.key(0),
-                    w_.rng.key(1));
-    compare_lanes(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, top_, b.below.data(),
-                  b.tie.data());
+    draw_lanes(n);
     for (size_t i = 0; i < n; ++i) {
       b.blocks[i].below = b.below[i];
       b.blocks[i].tie = b.tie[i];
     }
+  }
+
+  // Draws the n counters in the buffers' word arrays in place, in whole vectors (the padding
+  // draws are discarded), and compares their bytes with the threshold into below and tie.
+  void draw_lanes(size_t n) {
+    Buffers& b = buffers_;
+    const size_t lanes = (n + 7) / 8 * 8;
+    for (size_t i = n; i < lanes; ++i) b.w0[i] = b.w1[i] = b.w2[i] = b.w3[i] = 0;
+    philox_in_place(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, w_.rng.key(0),
+                    w_.rng.key(1));
+    compare_lanes(b.w0.data(), b.w1.data(), b.w2.data(), b.w3.data(), lanes, top_, b.below.data(),
+                  b.tie.data());
   }
 
   // A tie on the top byte: the next 56 bits decide (kind 1).
