@@ -22,7 +22,8 @@ void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, in
   std::vector<DxfLayer> layers{{"OUTLINE", Rgb{0, 0, 0}, true},
                                {"OPENING_OUTLINE", Rgb{255, 0, 0}, true}};
   for (const Element& e : layout.elements)
-    if (e.sheet == sheet && e.circle) layers.push_back({hole_layer(e.circle->d), {255, 0, 0}, true});
+    if (e.sheet == sheet && e.circle)
+      layers.push_back({hole_layer(e.circle->d), {255, 0, 0}, true});
   layers.push_back({"ID", Rgb{0, 0, 255}, false});
   layers.push_back({"TEXT", Rgb{0, 128, 0}, true});
   DxfDocument dxf(path, layers, Rect{0, 0, s.area.w, s.area.h});
@@ -44,8 +45,8 @@ void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, in
   for (const Element& e : layout.elements) {
     if (e.sheet != sheet) continue;
     const Rect b = laid_bounds(e);
-    dxf.text("ID", b.x + b.w / 2 - s.area.x, b.y + b.h / 2 - s.area.y, std::max(0.5, b.w / 8),
-             e.id, true);
+    dxf.text("ID", b.x + b.w / 2 - s.area.x, b.y + b.h / 2 - s.area.y, std::max(0.5, b.w / 8), e.id,
+             true);
   }
   const double h = std::max(5.0, std::min(s.area.w, s.area.h) / 80);
   dxf.text("TEXT", h, h, h, s.id, false);

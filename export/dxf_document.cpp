@@ -91,9 +91,9 @@ DxfDocument::DxfDocument(const std::filesystem::path& path, const std::vector<Dx
     const std::string name = dxf_layer_name(l.name);
     const int aci = name == "0" ? 7 : nearest_aci(l.colour);
     if (l.plot) {
-      DL_Attributes a(std::string(), aci, name == "0" ? -1 : (l.colour.r << 16 | l.colour.g << 8 |
-                                                             l.colour.b),
-                      -3, "CONTINUOUS");
+      DL_Attributes a(std::string(), aci,
+                      name == "0" ? -1 : (l.colour.r << 16 | l.colour.g << 8 | l.colour.b), -3,
+                      "CONTINUOUS");
       dxf_.writeLayer(dw, DL_LayerData(name, 0), a);
       continue;
     }
@@ -166,8 +166,8 @@ void DxfDocument::text(const std::string& layer, double x, double y, double heig
                        const std::string& text, bool centred) {
   // Centred text: horizontal 1 (centre), vertical 2 (middle) at the second alignment point.
   dxf_.writeText(*dw_,
-                 DL_TextData(x, y, 0, x, y, 0, height, 1, 0, centred ? 1 : 0, centred ? 2 : 0,
-                             text, "Standard", 0),
+                 DL_TextData(x, y, 0, x, y, 0, height, 1, 0, centred ? 1 : 0, centred ? 2 : 0, text,
+                             "Standard", 0),
                  on_layer(layer));
 }
 

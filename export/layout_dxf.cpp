@@ -15,7 +15,8 @@ namespace {
 constexpr Rgb kInk{0, 0, 0};
 
 std::string layer_of(const Layout& layout, const Element& e) {
-  if (e.circle && layout.kind == LayoutKind::perforation) return fmt::format("HOLE_D{}", mm_text(e.circle->d));
+  if (e.circle && layout.kind == LayoutKind::perforation)
+    return fmt::format("HOLE_D{}", mm_text(e.circle->d));
   if (e.outline) return "OPENING_OUTLINE";
   const std::string material = e.type.empty() ? layout.legend[e.value].label : e.type;
   if (layout.kind == LayoutKind::blocks)

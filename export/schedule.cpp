@@ -190,9 +190,9 @@ void write_lots_csv(std::ostream& out, const Layout& layout) {
   for (const std::string& lot : order)
     for (const auto& [key, l] : lots[lot])
       out << fmt::format("{},{},{},{},{},{},{},{},{},{:.6f},{:.6f}\r\n", csv_field(lot),
-                         csv_field(std::get<0>(key)), csv_field(std::get<1>(key)),
-                         std::get<2>(key), csv_field(std::get<3>(key)), value_list(l), l.count,
-                         l.whole, l.cut, l.laid_area / 1e6, l.stock_area / 1e6);
+                         csv_field(std::get<0>(key)), csv_field(std::get<1>(key)), std::get<2>(key),
+                         csv_field(std::get<3>(key)), value_list(l), l.count, l.whole, l.cut,
+                         l.laid_area / 1e6, l.stock_area / 1e6);
 }
 
 }  // namespace curdle

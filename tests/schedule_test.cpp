@@ -97,7 +97,7 @@ TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
     schedule_area += std::stod(rows[r][area_column]);
     const int64_t lot = std::stoll(rows[r][lot_column]);
     EXPECT_EQ(lot, std::stoll(rows[r][row_column]) / 5 + 1);  // five rows a lot
-    EXPECT_GE(lot, last_lot);                        // lots follow the laying order
+    EXPECT_GE(lot, last_lot);                                 // lots follow the laying order
     last_lot = lot;
   }
   for (const Element& e : layout.elements) area += e.area();

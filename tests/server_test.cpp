@@ -137,10 +137,9 @@ TEST_F(ServerTest, RecipeDescribesTheDesignAndTheFloor) {
   EXPECT_EQ(j["curds"][0]["probabilities"], json({"2/3", "1/2", "1/3"}));
   EXPECT_EQ(j["legend"].size(), 2u);
   // The downloads come from the registry of outputs: every single file, and the recipe.
-  EXPECT_EQ(j["downloads"],
-            json({"report.json", "cells.csv", "preview.png", "layout.svg", "layout.png",
-                  "layout.glb", "schedule.csv", "layout.dxf", "quantities.csv", "lots.csv",
-                  "install.svg", "recipe.toml"}));
+  EXPECT_EQ(j["downloads"], json({"report.json", "cells.csv", "preview.png", "layout.svg",
+                                  "layout.png", "layout.glb", "schedule.csv", "layout.dxf",
+                                  "quantities.csv", "lots.csv", "install.svg", "recipe.toml"}));
   EXPECT_EQ(j["seed"], "8");  // the recipe's, as a string
 }
 
@@ -151,7 +150,8 @@ TEST_F(ServerTest, ColoursAreTheLibrarysBlends) {
 }
 
 TEST_F(ServerTest, GenerateGivesTheEnginesCellsAndReport) {
-  const json j = get_json("/api/generate?seed=42&curds.0.probabilities=%5B%223%2F4%22,%221%2F2%22,%221%2F3%22%5D", 200);
+  const json j = get_json(
+      "/api/generate?seed=42&curds.0.probabilities=%5B%223%2F4%22,%221%2F2%22,%221%2F3%22%5D", 200);
   EXPECT_EQ(j["seed"], "42");  // a string: JavaScript numbers lose seeds above 2^53
   EXPECT_EQ(j["report"]["cells"], 65536);
   const auto bytes = unbase64(j["values"]);
@@ -161,9 +161,8 @@ TEST_F(ServerTest, GenerateGivesTheEnginesCellsAndReport) {
   const auto& d = s.recipe.design;
   const auto values = values_in(curdle::curdle(d, 42, d.field), d.field);
   EXPECT_TRUE(std::equal(values.begin(), values.end(), bytes.begin()));
-  EXPECT_EQ(j["command"],
-            "curdle generate " + kRecipe +
-                " --set 'curds.0.probabilities=[\"3/4\",\"1/2\",\"1/3\"]' --seed 42");
+  EXPECT_EQ(j["command"], "curdle generate " + kRecipe +
+                              " --set 'curds.0.probabilities=[\"3/4\",\"1/2\",\"1/3\"]' --seed 42");
   // A window: that segment's report, no cells when cells=0.
   const json w = get_json("/api/generate?seed=42&window=10,20,67,67&cells=0", 200);
   EXPECT_EQ(w["report"]["cells"], 4489);
@@ -306,7 +305,9 @@ TEST_F(ServerTest, ConcurrentRequestsGiveEachTheirOwnAnswer) {
 
 TEST_F(ServerTest, SearchRanksAsTheLibraryDoes) {
   const json j = get_json(
-      "/api/search?seeds=1..40&segment=67,67&stride=16&top=4&target=ratio:dark%3D0.111&target=cluster:dark%3C%3D8",
+      "/api/"
+      "search?seeds=1..40&segment=67,67&stride=16&top=4&target=ratio:dark%3D0.111&target=cluster:"
+      "dark%3C%3D8",
       200);
   ASSERT_EQ(j["hits"].size(), 4u);
   const app::Run s = open_run(kRecipe);

@@ -50,8 +50,7 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
       row.probability = spec.probabilities[k - 1];
       row.cells = cells_meeting(l, k, view);
       // The finest level's box count is its survivors: no second pass over the largest stage.
-      row.survivors =
-          k == l.stages ? cr.box_counts[k] : count_survivors(curd, k, l.children());
+      row.survivors = k == l.stages ? cr.box_counts[k] : count_survivors(curd, k, l.children());
       row.expected = expected_survivors(l, spec.probabilities, k, view);
       row.expected_sd =
           quota && !report.sd_is_approximate ? 0.0 : survivors_sd(l, spec.probabilities, k, view);

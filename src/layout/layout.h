@@ -147,7 +147,7 @@ struct LayoutSpec {
   int64_t lot_size = 0;
   int64_t lot_rows = 0;
   std::vector<std::string> materials;  // per value, the product's name; empty: the curds' names
-  double scale = 0;  // layout.png drawing scale 1 : scale; 0 picks one
+  double scale = 0;                    // layout.png drawing scale 1 : scale; 0 picks one
   double dpi = 150;
 };
 
@@ -161,21 +161,21 @@ struct Provenance {
 };
 
 struct Element {
-  ElementId key;                   // stable and readable: kind, row and column in laying order
-  std::string id;                  // key.text(), formatted once
-  uint32_t value = 0;              // the overlay value of its cell
-  int64_t row = 0, column = 0;     // laying order from the origin corner
-  int64_t cell_x = 0, cell_y = 0;  // the field cell it stands for
-  int64_t cell_z = 0;              // blocks: the voxel's level
-  Rect nominal;                    // where the whole element would be
-  std::vector<Rect> shape;         // what is laid: one rect, or the pieces of a cut element
-  bool cut = false;                // smaller than its stock element (edge or opening)
+  ElementId key;                    // stable and readable: kind, row and column in laying order
+  std::string id;                   // key.text(), formatted once
+  uint32_t value = 0;               // the overlay value of its cell
+  int64_t row = 0, column = 0;      // laying order from the origin corner
+  int64_t cell_x = 0, cell_y = 0;   // the field cell it stands for
+  int64_t cell_z = 0;               // blocks: the voxel's level
+  Rect nominal;                     // where the whole element would be
+  std::vector<Rect> shape;          // what is laid: one rect, or the pieces of a cut element
+  bool cut = false;                 // smaller than its stock element (edge or opening)
   double stock_w = 0, stock_h = 0;  // the whole element the piece is cut from (blocks: plan)
-  std::optional<Circle> circle;    // a round opening (perforation)
-  std::optional<Outline> outline;  // merged openings cut as their union (perforation, keep)
-  std::string type;                // park: the element type; empty for modules
-  int sheet = -1;                  // perforation: the fabrication sheet it is cut in
-  Rgb colour;                      // park: the element's own colour
+  std::optional<Circle> circle;     // a round opening (perforation)
+  std::optional<Outline> outline;   // merged openings cut as their union (perforation, keep)
+  std::string type;                 // park: the element type; empty for modules
+  int sheet = -1;                   // perforation: the fabrication sheet it is cut in
+  Rgb colour;                       // park: the element's own colour
   double area() const;
 };
 

@@ -1,6 +1,6 @@
-// Unions of round openings, cut as one outline, and of the rectangles of a cut piece: CGAL's regularized Boolean operations on
-// circles polygonised within a chord tolerance (CGAL User Manual, "2D Regularized Boolean
-// Set-Operations"). CGAL stays inside union.cpp.
+// Unions of round openings, cut as one outline, and of the rectangles of a cut piece: CGAL's
+// regularized Boolean operations on circles polygonised within a chord tolerance (CGAL User Manual,
+// "2D Regularized Boolean Set-Operations"). CGAL stays inside union.cpp.
 #pragma once
 
 #include <vector>

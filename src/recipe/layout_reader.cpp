@@ -46,9 +46,8 @@ const std::vector<KindKeys>& kinds() {
   return table;
 }
 
-const std::vector<std::string> kEveryKind = {"kind", "colours",  "materials", "scale",
-                                             "dpi",  "spare",    "pack",      "lot_size",
-                                             "lot_rows"};
+const std::vector<std::string> kEveryKind = {"kind",  "colours", "materials", "scale",   "dpi",
+                                             "spare", "pack",    "lot_size",  "lot_rows"};
 
 // layout.materials: the product each value is laid in, one name per value, value 0 first.
 void read_materials(TableReader& r, const Design& design, LayoutSpec& spec) {
