@@ -2,9 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <map>
-#include <memory>
-
 #include "export/dxf_document.h"
 #include "export/wkt.h"
 #include "layout/piece.h"

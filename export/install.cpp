@@ -45,7 +45,7 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
   out << "<g id=\"elements\" fill=\"none\" stroke=\"#555\" stroke-width=\"" << num(unit * 0.02)
       << "\">\n";
   for (const Element& e : layout.elements) {
-    const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
+    const Rgb& c = piece_colour(layout, e);
     const std::string fill = fmt::format("rgb({},{},{})", c.r, c.g, c.b);
     double cx, cy, w;
     out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">",

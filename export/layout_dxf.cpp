@@ -18,14 +18,10 @@ std::string layer_of(const Layout& layout, const Element& e) {
   if (e.circle && layout.kind == LayoutKind::perforation)
     return fmt::format("HOLE_D{}", mm_text(e.circle->d));
   if (e.outline) return "OPENING_OUTLINE";
-  const std::string material = e.type.empty() ? layout.legend[e.value].label : e.type;
+  const std::string& material = piece_material(layout, e);
   if (layout.kind == LayoutKind::blocks)
     return fmt::format("L{} {}", e.cell_z - layout.view.origin[2], material);
   return material;
-}
-
-const Rgb& colour_of(const Layout& layout, const Element& e) {
-  return e.type.empty() ? layout.legend[e.value].colour : e.colour;
 }
 
 // Text that fits the piece: at most 40 % of its height, and its width over the ID's length.
@@ -40,7 +36,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
   std::map<std::string, bool> seen;
   for (const Element& e : layout.elements) {
     const std::string name = layer_of(layout, e);
-    if (seen.emplace(name, true).second) layers.push_back({name, colour_of(layout, e), true});
+    if (seen.emplace(name, true).second) layers.push_back({name, piece_colour(layout, e), true});
   }
   layers.push_back({"ID", Rgb{0, 0, 255}, false});
   layers.push_back({"TEXT", kInk, true});

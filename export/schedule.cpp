@@ -17,18 +17,10 @@ namespace {
 // Spreadsheets read a CSV file as UTF-8 only when it starts with a byte-order mark.
 constexpr const char* kUtf8Mark = "\xEF\xBB\xBF";
 
-const Rgb& colour_of(const Layout& layout, const Element& e) {
-  return e.type.empty() ? layout.legend[e.value].colour : e.colour;
-}
-
 std::string type_of(const Layout& layout, const Element& e) {
   if (!e.type.empty()) return e.type;
   if (e.circle || e.outline) return "opening";
   return layout.element_type;
-}
-
-std::string material_of(const Layout& layout, const Element& e) {
-  return e.type.empty() ? layout.legend[e.value].label : e.type;
 }
 
 bool is_blocks(const Layout& layout) { return layout.kind == LayoutKind::blocks; }
@@ -100,7 +92,7 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
                    bought ? mm_text(blocks ? spec.blocks().voxel_h : e.stock_h) : "", e.value);
     for (size_t c = 0; c < design.curds.size(); ++c) buffer += (e.value >> c & 1) ? ",1" : ",0";
     fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{}", csv_field(type_of(layout, e)),
-                   hex_colour(colour_of(layout, e)), csv_field(material_of(layout, e)),
+                   hex_colour(piece_colour(layout, e)), csv_field(piece_material(layout, e)),
                    e.cut ? 1 : 0, csv_field(outlines_wkt(piece_outlines(e))));
     if (e.circle)
       fmt::format_to(std::back_inserter(buffer), ",{},{},{}", mm_text(e.circle->cx),
@@ -130,7 +122,7 @@ struct OrderLine {
 using OrderKey = std::tuple<std::string, std::string, std::string, std::string>;
 
 OrderKey order_key(const Layout& layout, const Element& e) {
-  return {type_of(layout, e), material_of(layout, e), hex_colour(colour_of(layout, e)),
+  return {type_of(layout, e), piece_material(layout, e), hex_colour(piece_colour(layout, e)),
           size_of(layout, e)};
 }
 

@@ -46,7 +46,7 @@ LiveWords live_words(const Curd& curd, int k, uint64_t children) {
   int up = 0;
   while (span < 64) span *= children, ++up;
   // Worth it only when the coarse stage is much smaller than the one scanned.
-  if (k - up < 1 || span < 64 || curd.stages[k].words.size() < (1u << 14)) return {};
+  if (k - up < 1 || curd.stages[k].words.size() < (1u << 14)) return {};
   return LiveWords{&curd.stages[k - up], span / 64};
 }
 

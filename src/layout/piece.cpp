@@ -39,4 +39,12 @@ std::vector<Outline> piece_outlines(const Element& e) {
   return union_of_rects(e.shape);
 }
 
+const std::string& piece_material(const Layout& layout, const Element& e) {
+  return e.type.empty() ? layout.legend[e.value].label : e.type;
+}
+
+const Rgb& piece_colour(const Layout& layout, const Element& e) {
+  return e.type.empty() ? layout.legend[e.value].colour : e.colour;
+}
+
 }  // namespace curdle

@@ -2,6 +2,7 @@
 // the glTF and the DXF share, so that no two files can describe the same piece differently.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "layout/layout.h"
@@ -18,5 +19,10 @@ bool is_rectangle(const Element& e);
 // The piece's outline when it is not one rectangle and not a circle: the union of its
 // rectangles (an L-shaped panel cut at a window), or a merged opening. Empty otherwise.
 std::vector<Outline> piece_outlines(const Element& e);
+
+// What the piece is made of and its colour: a park element's own, else its value's (the
+// legend's label is the material's name, layout.materials or the curds').
+const std::string& piece_material(const Layout& layout, const Element& e);
+const Rgb& piece_colour(const Layout& layout, const Element& e);
 
 }  // namespace curdle
