@@ -4,6 +4,7 @@
 #include <string>
 
 #include "curdle/overlay.h"
+#include "export/csv_field.h"
 
 namespace curdle {
 
@@ -11,7 +12,7 @@ void write_cells_csv(std::ostream& out, const Design& design, const CurdField& f
                      const Box& view, const std::function<void(double)>& progress) {
   const int E = design.lattice.dimension;
   static const char* axes[] = {"x", "y", "z"};
-  std::string header;
+  std::string header = kUtf8Mark;
   for (int d = 0; d < E; ++d) header += std::string(d ? "," : "") + axes[d];
   header += ",value";
   for (const CurdSpec& c : design.curds) header += "," + c.name;

@@ -1,9 +1,13 @@
-// RFC 4180: a CSV field, quoted when it holds a comma, a quote or a line break.
+// RFC 4180 CSV: a field, quoted when it holds a comma, a quote or a line break.
 #pragma once
 
 #include <string>
 
 namespace curdle {
+
+// Written first in every CSV file: spreadsheets then read names such as "grès" as UTF-8, and
+// strict RFC 4180 readers that expect UTF-8 skip it.
+inline constexpr const char* kUtf8Mark = "\xEF\xBB\xBF";
 
 inline std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\r\n") == std::string::npos) return s;

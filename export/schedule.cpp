@@ -14,9 +14,6 @@
 namespace curdle {
 namespace {
 
-// Spreadsheets read a CSV file as UTF-8 only when it starts with a byte-order mark.
-constexpr const char* kUtf8Mark = "\xEF\xBB\xBF";
-
 std::string type_of(const Layout& layout, const Element& e) {
   if (!e.type.empty()) return e.type;
   if (e.circle || e.outline) return "opening";
