@@ -7,9 +7,12 @@
 #include <cstring>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "curdle/error.h"
+#include "curdle/palette.h"
+#include "layout/piece.h"
 #include "layout/triangulation.h"
 #include "layout/union.h"
 
@@ -17,7 +20,6 @@ namespace curdle {
 namespace {
 
 using Vec3 = std::array<float, 3>;
-constexpr size_t kInstancesAbove = 20000;
 
 // Thickness of what is laid, in mm: what a viewer needs to read the layout as built.
 double thickness_of(const Layout& l, const LayoutSpec& spec) {
@@ -219,12 +221,17 @@ tinygltf::Model build(const Layout& layout) {
     return box_mesh[mat] =
                b.add_mesh("box " + b.model.materials[mat].name, {b.primitive(p, n, i, mat)});
   };
-  auto box_node = [&](const Rect& r, double base, double height, int mat) {
+  // A node that carries a unit box to the rect, `base` to `base + height` out of the plane.
+  auto placed = [&](const Rect& r, double base, double height) {
     const auto [lo, size] = box_of(layout, r, base, height);
     tinygltf::Node n;
-    n.mesh = unit_box(mat);
     n.translation = {lo[0] + size[0] / 2.0, lo[1] + size[1] / 2.0, lo[2] + size[2] / 2.0};
     n.scale = {size[0], size[1], size[2]};
+    return n;
+  };
+  auto box_node = [&](const Rect& r, double base, double height, int mat) {
+    tinygltf::Node n = placed(r, base, height);
+    n.mesh = unit_box(mat);
     return n;
   };
   auto named = [&](const Element& e, tinygltf::Node n) {
@@ -296,55 +303,50 @@ tinygltf::Model build(const Layout& layout) {
     roots.push_back(b.add_node(std::move(node)));
     for (const Element& e : layout.elements) {  // each opening, named, at its centre
       tinygltf::Node h;
-      const double cx = e.circle ? e.circle->cx : e.nominal.x + e.nominal.w / 2;
-      const double cy = e.circle ? e.circle->cy : e.nominal.y + e.nominal.h / 2;
-      const Vec3 c = to_gltf(layout, cx, cy, t / 2);
+      const Rect r = laid_bounds(e);
+      const Vec3 c = to_gltf(layout, r.x + r.w / 2, r.y + r.h / 2, t / 2);
       h.translation = {c[0], c[1], c[2]};
       roots.push_back(named(e, std::move(h)));
     }
   } else if (layout.kind == LayoutKind::blocks) {
-    // Voxels merged per value; a face between two blocks is inside and left out.
-    std::map<std::array<int64_t, 3>, uint32_t> solid;
-    for (const Element& e : layout.elements) solid[{e.cell_x, e.cell_y, e.cell_z}] = e.value;
-    std::map<uint32_t, std::array<std::vector<Vec3>, 2>> geo;
-    std::map<uint32_t, std::vector<uint32_t>> idx;
-    const double w = spec.module_w, d = spec.module_h, h = spec.blocks().voxel_h;
-    static const int dirs[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-    for (const auto& [cell, value] : solid) {
-      auto& [p, n] = geo[value];
-      auto& ix = idx[value];
-      std::vector<Vec3> bp, bn;
-      std::vector<uint32_t> bi;
-      const double x = (cell[0] - layout.view.origin[0]) * w,
-                   y = (cell[1] - layout.view.origin[1]) * d,
-                   z = (cell[2] - layout.view.origin[2]) * h;
-      const auto [lo, size] = box_of(layout, Rect{x, y, w, d}, z, h);
-      add_box(bp, bn, bi, lo, size);
-      // add_box's faces are +X, -X, +Y(up), -Y, +Z, -Z in glTF: map to lattice neighbours.
-      const int lattice_dir[6] = {0, 1, 4, 5, 3, 2};  // glTF +Z is lattice -y
+    // A node per block, named by its ID: a unit box in its value's material with only the
+    // faces that show (a face between two blocks is inside), shared by the blocks whose
+    // value and shown faces agree.
+    std::set<std::array<int64_t, 3>> solid;
+    for (const Element& e : layout.elements) solid.insert({e.cell_x, e.cell_y, e.cell_z});
+    // add_box's faces are +X, -X, +Y (up), -Y, +Z, -Z in glTF; as lattice steps (glTF +Z is
+    // lattice -y):
+    static const int step[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 0, 1},
+                                   {0, 0, -1}, {0, -1, 0}, {0, 1, 0}};
+    std::map<std::pair<uint32_t, int>, int> block_mesh;
+    auto mesh_for = [&](uint32_t value, int shown) {
+      auto it = block_mesh.find({value, shown});
+      if (it != block_mesh.end()) return it->second;
+      std::vector<Vec3> bp, bn, p, n;
+      std::vector<uint32_t> bi, idx;
+      add_box(bp, bn, bi, {-0.5f, -0.5f, -0.5f}, {1, 1, 1});
       for (int f = 0; f < 6; ++f) {
-        const int* dv = dirs[lattice_dir[f]];
-        if (solid.count({cell[0] + dv[0], cell[1] + dv[1], cell[2] + dv[2]})) continue;
+        if (!(shown >> f & 1)) continue;
         const uint32_t base = static_cast<uint32_t>(p.size());
         for (int v = 0; v < 4; ++v) p.push_back(bp[f * 4 + v]), n.push_back(bn[f * 4 + v]);
-        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) ix.push_back(base + i);
+        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) idx.push_back(base + i);
       }
-    }
-    for (auto& [value, pn] : geo) {
-      if (idx[value].empty()) continue;
-      tinygltf::Node node;
-      node.name = "blocks value " + std::to_string(value);
-      node.mesh = b.add_mesh(node.name, {b.primitive(pn[0], pn[1], idx[value], material[value])});
-      roots.push_back(b.add_node(std::move(node)));
-    }
+      return block_mesh[{value, shown}] =
+                 b.add_mesh("block " + b.model.materials[material[value]].name + " faces " +
+                                std::to_string(shown),
+                            {b.primitive(p, n, idx, material[value])});
+    };
+    const double w = spec.module_w, d = spec.module_h, h = spec.blocks().voxel_h;
     for (const Element& e : layout.elements) {
-      tinygltf::Node v;
-      const Vec3 c = to_gltf(layout, (e.cell_x - layout.view.origin[0] + 0.5) * w,
-                             (e.cell_y - layout.view.origin[1] + 0.5) * d,
-                             (e.cell_z - layout.view.origin[2] + 0.5) * h);
-      v.translation = {c[0], c[1], c[2]};
-      roots.push_back(named(e, std::move(v)));
+      const Rect plan{(e.cell_x - layout.view.origin[0]) * w,
+                      (e.cell_y - layout.view.origin[1]) * d, w, d};
+      tinygltf::Node node = placed(plan, (e.cell_z - layout.view.origin[2]) * h, h);
+      int shown = 0;
+      for (int f = 0; f < 6; ++f)
+        if (!solid.count({e.cell_x + step[f][0], e.cell_y + step[f][1], e.cell_z + step[f][2]}))
+          shown |= 1 << f;
+      node.mesh = shown ? mesh_for(e.value, shown) : -1;  // a block wholly inside shows nothing
+      roots.push_back(named(e, std::move(node)));
     }
   } else if (layout.kind == LayoutKind::park) {
     // One mesh per element type, shared by every element of the type.
@@ -396,47 +398,31 @@ tinygltf::Model build(const Layout& layout) {
       roots.push_back(named(e, std::move(n)));
     }
   } else {
-    // Tiles, paving, panels, fins: boxes. Many uncut ones become instances.
-    const bool instanced = layout.elements.size() > kInstancesAbove;
-    std::map<uint32_t, std::pair<std::vector<Vec3>, std::vector<Vec3>>> instances;
-    std::map<uint32_t, tinygltf::Value::Array> instance_ids;
+    // Tiles, paving, panels, fins: a node per element, named by its ID, sharing one unit box
+    // per material, so that any importer keeps every element's identity at any size. In keep
+    // mode each curd's stripe is a child in the curd's own colour, as the drawings show it.
+    std::map<std::array<uint8_t, 3>, int> part_material;
+    auto material_of = [&](const Element& e, const Rgb& colour) {
+      if (colour == layout.legend[e.value].colour) return material[e.value];
+      const std::array<uint8_t, 3> key{colour.r, colour.g, colour.b};
+      auto it = part_material.find(key);
+      if (it != part_material.end()) return it->second;
+      std::string name = "part " + hex_colour(colour);
+      for (size_t c = 0; c < design.curds.size(); ++c)
+        if (curd_colour(design.curds, c) == colour) name = "curd " + design.curds[c].name;
+      return part_material[key] = b.add_material(name, colour, metallic, 0.8);
+    };
     for (const Element& e : layout.elements) {
-      if (instanced && !e.cut && e.shape.size() == 1) {
-        const auto [lo, size] = box_of(layout, e.shape[0], 0, t);
-        instances[e.value].first.push_back(
-            {lo[0] + size[0] / 2, lo[1] + size[1] / 2, lo[2] + size[2] / 2});
-        instances[e.value].second.push_back(size);
-        instance_ids[e.value].push_back(tinygltf::Value(e.id));
+      const std::vector<ColouredRect> parts = keep_stripes(layout, e);
+      if (parts.size() == 1) {
+        roots.push_back(named(e, box_node(parts[0].rect, 0, t, material_of(e, parts[0].colour))));
         continue;
       }
-      if (e.shape.size() == 1) {
-        roots.push_back(named(e, box_node(e.shape[0], 0, t, material[e.value])));
-        continue;
-      }
-      tinygltf::Node parent;  // a cut element in pieces: the pieces are its children
-      for (const Rect& r : e.shape)
-        parent.children.push_back(b.add_node(box_node(r, 0, t, material[e.value])));
+      tinygltf::Node parent;  // a cut element in pieces, or a kept element in stripes
+      for (const ColouredRect& part : parts)
+        parent.children.push_back(
+            b.add_node(box_node(part.rect, 0, t, material_of(e, part.colour))));
       roots.push_back(named(e, std::move(parent)));
-    }
-    for (auto& [value, tr] : instances) {
-      tinygltf::Node n;
-      n.name = "instances value " + std::to_string(value);
-      n.mesh = unit_box(material[value]);
-      tinygltf::Value::Object attributes;
-      attributes["TRANSLATION"] = tinygltf::Value(b.add_vec3(tr.first, false, 0));
-      attributes["SCALE"] = tinygltf::Value(b.add_vec3(tr.second, false, 0));
-      tinygltf::Value::Object ext;
-      ext["attributes"] = tinygltf::Value(attributes);
-      n.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(ext);
-      tinygltf::Value::Object extras;
-      extras["value"] = tinygltf::Value(static_cast<int>(value));
-      extras["element_ids"] = tinygltf::Value(instance_ids[value]);
-      n.extras = tinygltf::Value(extras);
-      roots.push_back(b.add_node(std::move(n)));
-    }
-    if (!instances.empty()) {
-      b.model.extensionsUsed.push_back("EXT_mesh_gpu_instancing");
-      b.model.extensionsRequired.push_back("EXT_mesh_gpu_instancing");
     }
   }
 

@@ -5,6 +5,7 @@
 
 #include "curdle/error.h"
 #include "export/svg.h"
+#include "layout/piece.h"
 
 namespace curdle {
 namespace {
@@ -134,8 +135,7 @@ PreviewImage render_layout(const Layout& layout) {
     canvas.rgb[i] = background.r, canvas.rgb[i + 1] = background.g,
     canvas.rgb[i + 2] = background.b;
   for (const Rect& o : layout.openings) canvas.fill(o, Rgb{223, 234, 242});
-  for (const auto& [rect, value] : layout.views) canvas.fill(rect, layout.legend[value].colour);
-  const bool right = from_right(layout.origin);
+  for (const Layout::ViewCell& v : layout.views) canvas.fill(v.rect, layout.legend[v.value].colour);
   for (const Element& e : layout.elements) {
     if (!layout.views.empty()) break;  // blocks are drawn as their views
     const LegendEntry& entry = layout.legend[e.value];
@@ -152,21 +152,9 @@ PreviewImage render_layout(const Layout& layout) {
       canvas.fill(*e.outline, entry.colour);
       continue;
     }
-    if (layout.combine == Combine::mix) {
-      for (const Rect& r : e.shape) canvas.fill(r, entry.colour);
-      continue;
-    }
-    // keep: each curd present keeps its own stripe of the element, in the same order from the
-    // element's start as in the SVG.
-    const double part = e.nominal.w / static_cast<double>(entry.parts.size());
-    for (size_t i = 0; i < entry.parts.size(); ++i) {
-      const double x = right ? e.nominal.right() - (i + 1) * part : e.nominal.x + i * part;
-      const Rect stripe{x, e.nominal.y, part, e.nominal.h};
-      for (const Rect& r : e.shape) {
-        const double x0 = std::max(r.x, stripe.x), x1 = std::min(r.right(), stripe.right());
-        if (x1 > x0) canvas.fill(Rect{x0, r.y, x1 - x0, r.h}, entry.parts[i]);
-      }
-    }
+    // keep: each curd present keeps its own stripe of the element.
+    for (const ColouredRect& stripe : keep_stripes(layout, e))
+      canvas.fill(stripe.rect, stripe.colour);
   }
   PreviewImage image;
   image.width = canvas.width;

@@ -93,6 +93,21 @@ json report_to_json(const Report& report, const Layout& layout) {
                  {"cut", cut_elements(layout)},         {"omitted_over_openings", layout.omitted},
                  {"open_area", layout.open_area},       {"notes", layout.notes},
                  {"rule_violations", layout.violations}};
+  if (!layout.sheets.empty()) {
+    json sheets = json::array();
+    for (const Layout::FabricationSheet& sheet : layout.sheets) {
+      json tools = json::object();
+      for (const auto& [tool, count] : sheet.tools) tools[tool] = count;
+      sheets.push_back({{"id", sheet.id},
+                        {"x_mm", sheet.area.x},
+                        {"y_mm", sheet.area.y},
+                        {"width_mm", sheet.area.w},
+                        {"height_mm", sheet.area.h},
+                        {"open_area", sheet.open_area},
+                        {"openings_per_tool", tools}});
+    }
+    j["layout"]["sheets"] = sheets;
+  }
   return j;
 }
 

@@ -201,4 +201,45 @@ TEST(Gltf, BlocksLeaveOutTheFacesBetweenNeighbours) {
   EXPECT_NEAR(t.hi[1], 24.0, 1e-6);  // eight storeys of 3 m
 }
 
+// Above 20,000 elements every element keeps its own named node, and the file needs no extension
+// an importer might lack; in keep mode each element shows its curds' stripes in their colours.
+TEST(Gltf, EveryElementKeepsItsNodeAtAnySizeAndKeptStripesTakeTheCurdsColours) {
+  Design d = test::design(
+      2, 2, {std::vector<std::string>(8, "9/10"), std::vector<std::string>(8, "9/10")});
+  d.curds[0].colour = Rgb{200, 40, 40}, d.curds[1].colour = Rgb{40, 40, 200};
+  LayoutSpec spec;
+  spec.set_kind(LayoutKind::tile);
+  spec.combine = Combine::keep;
+  spec.module_w = spec.module_h = 100;
+  d.field.size = {144, 144, 1};  // 20,736 tiles
+  const Layout layout = make_layout(d, curdle(d, 6, d.field), d.field, spec);
+  ASSERT_GT(layout.elements.size(), 20000u);
+  const tinygltf::Model m = read_back(layout);
+  EXPECT_TRUE(m.extensionsRequired.empty());
+  EXPECT_TRUE(m.extensionsUsed.empty());
+  std::map<std::string, const tinygltf::Node*> by_name;
+  for (const tinygltf::Node& n : m.nodes) by_name[n.name] = &n;
+  auto colour_of = [&](int mesh) {
+    const auto& f = m.materials[m.meshes[mesh].primitives[0].material].pbrMetallicRoughness;
+    return std::array<double, 3>{f.baseColorFactor[0], f.baseColorFactor[1], f.baseColorFactor[2]};
+  };
+  size_t both = 0;
+  for (const Element& e : layout.elements) {
+    ASSERT_TRUE(by_name.count(e.id)) << e.id;
+    const tinygltf::Node& n = *by_name[e.id];
+    if (e.value != 3) continue;  // both curds
+    ++both;
+    // Two stripes, each half the tile, the first curd's on the side laying starts from.
+    ASSERT_EQ(n.children.size(), 2u) << e.id;
+    const tinygltf::Node& first = m.nodes[n.children[0]];
+    const tinygltf::Node& second = m.nodes[n.children[1]];
+    EXPECT_NEAR(first.scale[0], 0.05, 1e-6);
+    EXPECT_LT(first.translation[0], second.translation[0]);
+    const auto a = colour_of(first.mesh), b = colour_of(second.mesh);
+    EXPECT_GT(a[0], a[2]);  // red, in linear light
+    EXPECT_GT(b[2], b[0]);  // blue
+  }
+  EXPECT_GT(both, 0u);
+}
+
 }  // namespace curdle

@@ -158,9 +158,12 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
   for (Corner corner :
        {Corner::bottom_left, Corner::bottom_right, Corner::top_left, Corner::top_right}) {
     for (LayoutKind kind : {LayoutKind::paving, LayoutKind::facade}) {
+      const std::array<double, 2> shift =
+          kind == LayoutKind::facade ? std::array<double, 2>{130, 80} : std::array<double, 2>{0, 0};
       LayoutSpec spec;
       spec.set_kind(kind);
       spec.origin = corner;
+      spec.shift = shift;
       spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
       spec.size = std::array<double, 2>{18000, 15600};
       if (kind == LayoutKind::facade)
@@ -192,9 +195,9 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
       EXPECT_EQ(first.row, 0);
       const bool right = corner == Corner::bottom_right || corner == Corner::top_right;
       const bool top = corner == Corner::top_left || corner == Corner::top_right;
-      if (first.column == 0) {
-        EXPECT_NEAR(right ? 18000 - first.nominal.right() : first.nominal.x, 0, 1e-6);
-        EXPECT_NEAR(top ? 15600 - first.nominal.top() : first.nominal.y, 0, 1e-6);
+      if (first.column == 0) {  // the grid starts the shift back from the corner
+        EXPECT_NEAR(right ? 18000 - first.nominal.right() : first.nominal.x, -shift[0], 1e-6);
+        EXPECT_NEAR(top ? 15600 - first.nominal.top() : first.nominal.y, -shift[1], 1e-6);
       }
       SvgSummary svg = parse_svg(svg_of(layout));
       uint64_t drawn = 0;
@@ -513,7 +516,14 @@ TEST(Blocks, PlanAndElevationShowTheFirstBlockSeen) {
   const auto counts = value_counts(f);
   EXPECT_EQ(layout.elements.size(), 512 - counts[0]);
   std::map<std::pair<double, double>, uint32_t> shown;
-  for (const auto& [rect, value] : layout.views) shown[{rect.x, rect.y}] = value;
+  std::multiset<std::string> in_plan;  // every block named once, under its plan cell
+  for (const Layout::ViewCell& v : layout.views) {
+    shown[{v.rect.x, v.rect.y}] = v.value;
+    if (v.plan) in_plan.insert(v.elements.begin(), v.elements.end());
+  }
+  std::multiset<std::string> ids;
+  for (const Element& e : layout.elements) ids.insert(e.id);
+  EXPECT_EQ(in_plan, ids);
   for (int64_t x = 0; x < 8; ++x) {
     for (int64_t y = 0; y < 8; ++y) {  // plan: the top-most block
       uint32_t top = 0;

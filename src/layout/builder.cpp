@@ -7,6 +7,7 @@
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
+#include "layout/cut_rules.h"
 #include "layout/park.h"
 #include "layout/perforation.h"
 #include "layout/rhythm.h"
@@ -66,9 +67,9 @@ const char* element_type(LayoutKind kind) {
 
 std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec) {
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
-  // Element i starts at i * pitch: every element that starts inside the floor is laid.
-  return {static_cast<int64_t>(std::ceil(spec.size->at(0) / pitch_w - 1e-9)),
-          static_cast<int64_t>(std::ceil(spec.size->at(1) / pitch_h - 1e-9))};
+  // Element i starts at i * pitch - shift: every element that starts inside the floor is laid.
+  return {static_cast<int64_t>(std::ceil((spec.size->at(0) + spec.shift[0]) / pitch_w - 1e-9)),
+          static_cast<int64_t>(std::ceil((spec.size->at(1) + spec.shift[1]) / pitch_h - 1e-9))};
 }
 
 std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spec) {
@@ -122,13 +123,14 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
   layout.rows = view.size[1];
   layout.module_w = spec.module_w;
   layout.module_h = spec.module_h;
+  layout.shift = spec.shift;
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
   if (spec.size) {
     layout.width = (*spec.size)[0];
     layout.height = (*spec.size)[1];
   } else {
-    layout.width = layout.columns * pitch_w - spec.joint;
-    layout.height = layout.rows * pitch_h - spec.joint;
+    layout.width = layout.columns * pitch_w - spec.joint - spec.shift[0];
+    layout.height = layout.rows * pitch_h - spec.joint - spec.shift[1];
   }
   for (const Rect& o : spec.openings()) {
     const Rect c = clip(o, layout.width, layout.height);
@@ -139,14 +141,13 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
   const bool top = from_top(spec.origin);
   const int digits = static_cast<int>(std::to_string(std::max(layout.columns, layout.rows)).size());
   const std::vector<uint16_t> values = values_in(field, view);
-  uint64_t slivers = 0;
   layout.elements.reserve(values.size());
   // Laying order: rows from the origin corner, and along each row away from it.
   for (int64_t row = 0; row < layout.rows; ++row) {
     for (int64_t column = 0; column < layout.columns; ++column) {
       const int64_t i = right ? layout.columns - 1 - column : column;
       const int64_t j = top ? layout.rows - 1 - row : row;
-      const double along = column * pitch_w, up = row * pitch_h;
+      const double along = column * pitch_w - spec.shift[0], up = row * pitch_h - spec.shift[1];
       Element e;
       e.row = row;
       e.column = column;
@@ -163,15 +164,13 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
         continue;
       }
       e.cut = e.area() < e.nominal.area() - kEps;
-      if (laid.w < spec.module_w / 4 - kEps || laid.h < spec.module_h / 4 - kEps) ++slivers;
       e.key = ElementId{id_kind(spec.kind()), digits, std::nullopt, row, column, ""};
       e.id = e.key.text();
       layout.elements.push_back(std::move(e));
     }
   }
-  if (slivers)
-    layout.notes.push_back(std::to_string(slivers) + " edge pieces are narrower than a quarter " +
-                           layout.element_type + "; consider another origin corner or size");
+  if (spec.kind() == LayoutKind::facade) report_open_area(layout);
+  check_cut_widths(layout, spec);
 
   layout.legend = make_legend(design, spec);
   for (const Element& e : layout.elements) ++layout.legend[e.value].count;
@@ -196,13 +195,13 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
 namespace {
 
 // The edge before module `index` counted along an axis from the low side, in mm.
-double edge(int64_t index, int64_t count, double module, double joint, double extent,
+double edge(int64_t index, int64_t count, double module, double joint, double shift, double extent,
             bool from_high) {
   const double pitch = module + joint;
-  if (index <= 0) return from_high ? extent - (count * pitch - joint) : 0.0;
+  if (index <= 0) return from_high ? extent - (count * pitch - joint - shift) : 0.0;
   if (index >= count) return extent;
   const int64_t from_anchor = from_high ? count - index : index;  // modules between anchor and edge
-  const double at = from_anchor * pitch - joint / 2;
+  const double at = from_anchor * pitch - joint / 2 - shift;
   return std::clamp(from_high ? extent - at : at, 0.0, extent);
 }
 
@@ -210,12 +209,13 @@ double edge(int64_t index, int64_t count, double module, double joint, double ex
 
 double Layout::cell_edge_x(int64_t cell_x) const {
   const bool right = from_right(origin);
-  return std::max(0.0, edge(cell_x - view.origin[0], columns, module_w, joint, width, right));
+  return std::max(0.0,
+                  edge(cell_x - view.origin[0], columns, module_w, joint, shift[0], width, right));
 }
 
 double Layout::cell_edge_y(int64_t cell_y) const {
   const bool top = from_top(origin);
-  return std::max(0.0, edge(cell_y - view.origin[1], rows, module_h, joint, height, top));
+  return std::max(0.0, edge(cell_y - view.origin[1], rows, module_h, joint, shift[1], height, top));
 }
 
 double joint_area(const Layout& layout) {
@@ -225,12 +225,12 @@ double joint_area(const Layout& layout) {
   // Joints follow each module, counted from the origin corner.
   std::vector<Rect> vertical, horizontal;
   for (int64_t c = 0; c + 1 < layout.columns; ++c) {
-    const double along = c * (layout.module_w + layout.joint) + layout.module_w;
+    const double along = c * (layout.module_w + layout.joint) + layout.module_w - layout.shift[0];
     vertical.push_back(
         Rect{right ? layout.width - along - layout.joint : along, 0, layout.joint, layout.height});
   }
   for (int64_t r = 0; r + 1 < layout.rows; ++r) {
-    const double up = r * (layout.module_h + layout.joint) + layout.module_h;
+    const double up = r * (layout.module_h + layout.joint) + layout.module_h - layout.shift[1];
     horizontal.push_back(
         Rect{0, top ? layout.height - up - layout.joint : up, layout.width, layout.joint});
   }

@@ -95,6 +95,8 @@ struct PerforationKeys {
   HoleFix fix = HoleFix::none;
   double chord_tolerance = 0.05;                    // how far polygonised circles may stray, mm
   std::optional<std::array<double, 2>> sheet_size;  // fabrication sheets at most this size
+  std::vector<double> punches;  // the tools' diameters: every opening is one of them; empty: any
+  std::optional<std::array<double, 2>> open_area;  // [min, max] share each sheet must be open
 };
 struct ParkKeys {
   std::vector<ParkElement> elements;  // one per curd (Cirovic 2014, fig. 5)
@@ -134,6 +136,10 @@ struct LayoutSpec {
   Combine combine = Combine::mix;
   double module_w = 300, module_h = 300;          // element size (tile, panel) in mm
   double joint = 0;                               // joint between elements, mm
+  // The grid moved this far back from the origin corner along x and y, so that the first
+  // column and row are cut to module - shift (tile, paving, facade): how slivers are avoided.
+  std::array<double, 2> shift{0, 0};
+  double min_cut = 0;  // narrowest cut piece allowed, mm; 0: a quarter of the element each way
   std::optional<std::array<double, 2>> size;      // floor or wall, mm; default: the field's cells
   Corner origin = Corner::bottom_left;            // where cell (0, 0) and the laying order start
   std::vector<std::optional<Rgb>> value_colours;  // per value, overriding the blend (mix)
@@ -200,24 +206,38 @@ struct Layout {
   Corner origin = Corner::bottom_left;
   int64_t columns = 0, rows = 0;  // elements along x and y
   double module_w = 0, module_h = 0;
+  std::array<double, 2> shift{0, 0};  // the grid moved back from the origin corner, mm
   std::vector<Element> elements;
   std::vector<Rect> openings;
   std::vector<LegendEntry> legend;  // one per value
   uint64_t omitted = 0;             // cells wholly inside openings: no element
-  // Perforation: the sheet's open-area share, and what the fabrication rules found or changed.
+  // The open share of the surface (perforation: the openings; facade: its windows and doors),
+  // and what the fabrication rules found or changed.
   double open_area = 0;
   std::vector<std::string> violations;
-  // Perforation: the fabrication sheets the surface is cut into, row by row from the origin.
+  // Perforation: the fabrication sheets the surface is cut into, row by row from the origin
+  // (one, the whole surface, when no sheet size is given).
   struct FabricationSheet {
     std::string id;  // S-R1-C2: row and column of sheets
     Rect area;
+    double open_area = 0;  // share of the sheet's area that is open
+    // Openings per tool: "D22.6" for a punch of 22.6 mm, "outline" for merged openings cut
+    // along their outline; in order of the tool's name.
+    std::vector<std::pair<std::string, uint64_t>> tools;
   };
   std::vector<FabricationSheet> sheets;
   std::vector<std::string> notes;  // what a builder should know (cut slivers, ...)
   Box view;                        // the cells laid, in field coordinates
   // Blocks: the drawing is a plan and an elevation of the voxels, side by side; each shape
-  // with the value it shows. Captions say which view is which.
-  std::vector<std::pair<Rect, uint32_t>> views;
+  // with the value it shows and the blocks behind it, the one shown first. Captions say which
+  // view is which.
+  struct ViewCell {
+    Rect rect;
+    uint32_t value = 0;
+    std::vector<std::string> elements;  // IDs along the line of sight, the one shown first
+    bool plan = false;                  // in the plan: every block lies under one plan cell
+  };
+  std::vector<ViewCell> views;
   std::vector<std::pair<std::string, Rect>> captions;
 
   // Where the edge between field cells x - 1 and x (or y - 1 and y) lies, in mm: the middle

@@ -12,6 +12,8 @@
 namespace curdle {
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 struct Hole {
   Element element;
   std::vector<Circle> parts;  // the circles it is made of: exact gaps for the rules
@@ -45,6 +47,33 @@ std::vector<std::vector<Circle>> overlapping_groups(const std::vector<Circle>& c
   return out;
 }
 
+// The diameter of the punch whose opening's area is nearest `area` (the larger on a tie), or
+// the diameter of exactly that area when no punches are given.
+double nearest_punch(const std::vector<double>& punches, double area) {
+  const double exact = 2 * std::sqrt(area / kPi);
+  double best = exact, miss = 1e300;
+  for (const double p : punches) {
+    const double m = std::fabs(kPi * p * p / 4 - area);
+    if (m <= miss) best = p, miss = m;  // punches are sorted: the larger wins a tie
+  }
+  return best;
+}
+
+// The circle of the group that holds all the others, if one does.
+const Circle* covering_circle(const std::vector<Circle>& group) {
+  for (const Circle& c : group) {
+    const bool holds_all = std::all_of(group.begin(), group.end(), [&](const Circle& o) {
+      return std::hypot(o.cx - c.cx, o.cy - c.cy) + o.d / 2 <= c.d / 2 + 1e-9;
+    });
+    if (holds_all) return &c;
+  }
+  return nullptr;
+}
+
+std::string tool_name(const Element& e) {
+  return e.circle ? fmt::format("D{:g}", std::round(e.circle->d * 1000) / 1000) : "outline";
+}
+
 }  // namespace
 
 double bridge(const std::vector<Circle>& a, const std::vector<Circle>& b) {
@@ -54,6 +83,35 @@ double bridge(const std::vector<Circle>& a, const std::vector<Circle>& b) {
       gap = std::min(gap, std::hypot(p.cx - q.cx, p.cy - q.cy) - (p.d + q.d) / 2);
   return gap;
 }
+
+namespace {
+
+// Each sheet's open area (checked against layout.open_area) and its openings per tool.
+void summarise_sheets(Layout& layout, const LayoutSpec& spec) {
+  std::vector<std::map<std::string, uint64_t>> tools(layout.sheets.size());
+  std::vector<double> open(layout.sheets.size(), 0.0);
+  for (const Element& e : layout.elements) {
+    ++tools[static_cast<size_t>(e.sheet)][tool_name(e)];
+    open[static_cast<size_t>(e.sheet)] += e.area();
+  }
+  double least = 1, most = 0;
+  for (size_t i = 0; i < layout.sheets.size(); ++i) {
+    Layout::FabricationSheet& sheet = layout.sheets[i];
+    sheet.open_area = sheet.area.area() > 0 ? open[i] / sheet.area.area() : 0;
+    sheet.tools.assign(tools[i].begin(), tools[i].end());
+    least = std::min(least, sheet.open_area), most = std::max(most, sheet.open_area);
+    const auto& range = spec.perforation().open_area;
+    if (range && (sheet.open_area < (*range)[0] - 1e-12 || sheet.open_area > (*range)[1] + 1e-12))
+      layout.violations.push_back(
+          fmt::format("{}: open area {:.2f} %, outside layout.open_area {:.2f} % to {:.2f} %",
+                      sheet.id, 100 * sheet.open_area, 100 * (*range)[0], 100 * (*range)[1]));
+  }
+  if (layout.sheets.size() > 1)
+    layout.notes.push_back(fmt::format("{} sheets, from {:.2f} % to {:.2f} % open",
+                                       layout.sheets.size(), 100 * least, 100 * most));
+}
+
+}  // namespace
 
 void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
   std::vector<Element> cells = std::move(layout.elements);
@@ -82,13 +140,18 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         h.element.circle = group[0];
         h.parts = group;
       } else if (spec.combine == Combine::mix) {
-        // One opening of the summed area at the group's centre of area (a + b = c).
+        // One opening of the summed area at the group's centre of area (a + b = c), cut with
+        // the punch whose area is nearest when the tools are given.
         double area = 0, mx = 0, my = 0;
         for (const Circle& c : group)
           area += c.area(), mx += c.area() * c.cx, my += c.area() * c.cy;
-        const Circle merged{mx / area, my / area, 2 * std::sqrt(area / 3.14159265358979323846)};
+        const double d = nearest_punch(spec.perforation().punches, area);
+        const Circle merged{mx / area, my / area, d};
         h.element.circle = merged;
         h.parts = {merged};
+      } else if (const Circle* whole = covering_circle(group)) {
+        h.element.circle = *whole;  // the others lie inside it: the union is that circle
+        h.parts = {*whole};
       } else {
         h.element.outline = union_of_circles(group, spec.perforation().chord_tolerance).front();
         h.parts = group;
@@ -173,20 +236,30 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
     }
   }
 
+  if (layout.sheets.empty())
+    layout.sheets.push_back({"S-R1-C1", {0, 0, layout.width, layout.height}});
   double open = 0;
   for (Hole& h : holes) {
     if (h.dropped) continue;
     open += h.element.area();
+    if (h.element.sheet < 0) h.element.sheet = 0;  // one sheet: the whole surface
     layout.elements.push_back(std::move(h.element));
   }
   layout.open_area = open / (layout.width * layout.height);
+  const size_t broken = layout.violations.size();
+  summarise_sheets(layout, spec);
   // The legend keeps counting cells of each value (as the report does); value 0 is bare sheet.
   layout.legend[0].colour = Rgb{201, 205, 210};
   layout.legend[0].label = "sheet";
-  if (!layout.violations.empty())
-    layout.notes.push_back(fmt::format("{} openings break the fabrication rules{}",
-                                       layout.violations.size(),
+  if (broken)
+    layout.notes.push_back(fmt::format("{} openings break the fabrication rules{}", broken,
                                        fix ? " and were dropped" : " (see the report)"));
+  if (layout.violations.size() > broken)
+    layout.notes.push_back(
+        fmt::format("{} outside layout.open_area (see the report)",
+                    layout.violations.size() - broken == 1
+                        ? std::string("1 sheet is")
+                        : fmt::format("{} sheets are", layout.violations.size() - broken)));
   layout.notes.push_back(fmt::format("open area {:.2f} % of the sheet; sheet {} mm thick",
                                      100 * layout.open_area, spec.perforation().thickness));
 }

@@ -47,4 +47,23 @@ const Rgb& piece_colour(const Layout& layout, const Element& e) {
   return e.type.empty() ? layout.legend[e.value].colour : e.colour;
 }
 
+std::vector<ColouredRect> keep_stripes(const Layout& layout, const Element& e) {
+  const LegendEntry& entry = layout.legend[e.value];
+  std::vector<ColouredRect> out;
+  if (layout.combine != Combine::keep || entry.parts.empty() || !e.type.empty()) {
+    for (const Rect& r : e.shape) out.push_back({r, piece_colour(layout, e)});
+    return out;
+  }
+  const bool right = from_right(layout.origin);
+  const double part = e.nominal.w / static_cast<double>(entry.parts.size());
+  for (size_t i = 0; i < entry.parts.size(); ++i) {
+    const double x = right ? e.nominal.right() - (i + 1) * part : e.nominal.x + i * part;
+    for (const Rect& r : e.shape) {
+      const double x0 = std::max(r.x, x), x1 = std::min(r.right(), x + part);
+      if (x1 > x0 + 1e-9) out.push_back({Rect{x0, r.y, x1 - x0, r.h}, entry.parts[i]});
+    }
+  }
+  return out;
+}
+
 }  // namespace curdle

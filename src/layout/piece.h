@@ -25,4 +25,12 @@ std::vector<Outline> piece_outlines(const Element& e);
 const std::string& piece_material(const Layout& layout, const Element& e);
 const Rgb& piece_colour(const Layout& layout, const Element& e);
 
+// Keep mode: the stripe of the element each curd present keeps, side by side from the side
+// laying starts from, cut to the piece as laid; one part, the whole piece, in mix mode.
+struct ColouredRect {
+  Rect rect;
+  Rgb colour;
+};
+std::vector<ColouredRect> keep_stripes(const Layout& layout, const Element& e);
+
 }  // namespace curdle

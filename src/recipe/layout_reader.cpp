@@ -1,5 +1,7 @@
 #include "recipe/layout_reader.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -22,9 +24,15 @@ struct KindKeys {
 
 const std::vector<KindKeys>& kinds() {
   static const std::vector<KindKeys> table = {
-      {"tile", LayoutKind::tile, "tile", "size", false, true, {}},
-      {"paving", LayoutKind::paving, "tile", "floor", true, true, {}},
-      {"facade", LayoutKind::facade, "panel", "wall", true, true, {"openings", "mask"}},
+      {"tile", LayoutKind::tile, "tile", "size", false, true, {"min_cut", "shift"}},
+      {"paving", LayoutKind::paving, "tile", "floor", true, true, {"min_cut", "shift"}},
+      {"facade",
+       LayoutKind::facade,
+       "panel",
+       "wall",
+       true,
+       true,
+       {"openings", "mask", "min_cut", "shift"}},
       {"perforation",
        LayoutKind::perforation,
        "cell",
@@ -32,7 +40,7 @@ const std::vector<KindKeys>& kinds() {
        true,
        false,
        {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin", "fix", "chord_tolerance",
-        "sheet_size"}},
+        "sheet_size", "punches", "open_area"}},
       {"park", LayoutKind::park, "cell", "area", false, false, {"elements", "ground", "clearance"}},
       {"rhythm",
        LayoutKind::rhythm,
@@ -120,6 +128,27 @@ void read_surface(TableReader& r, const KindKeys& k, const Design& design, Layou
   read_drawing_scale(r, spec);
 }
 
+// layout.min_cut and layout.shift: the narrowest cut piece, and the grid moved to avoid slivers.
+void read_cut_rules(TableReader& r, LayoutSpec& spec) {
+  spec.min_cut = read_mm(r, "min_cut", 0, 0);
+  if (spec.min_cut > std::max(spec.module_w, spec.module_h))
+    r.fail("min_cut", "must be at most the element's size; e.g. 50 for pieces of at least 50 mm");
+  const toml::node* n = r.get("shift");
+  if (!n) return;
+  const toml::array* a = n->as_array();
+  const std::string allowed = fmt::format(
+      "must be [x, y] in millimetres, each from 0 up to less than the element ({:g} "
+      "x {:g} mm): how far the grid moves back from the origin corner",
+      spec.module_w, spec.module_h);
+  if (!a || a->size() != 2) r.fail("shift", allowed);
+  for (size_t i = 0; i < 2; ++i) {
+    const auto v = finite_number(a->get(i));
+    const double module = i ? spec.module_h : spec.module_w;
+    if (!v || *v < 0 || *v >= module) r.fail("shift", allowed);
+    spec.shift[i] = *v;
+  }
+}
+
 }  // namespace
 
 void read_drawing_scale(TableReader& r, LayoutSpec& spec) {
@@ -177,6 +206,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     case LayoutKind::facade:
       read_surface(r, *k, design, spec);
       read_facade(r, spec);
+      read_cut_rules(r, spec);
       break;
     case LayoutKind::perforation:
       read_surface(r, *k, design, spec);
@@ -189,6 +219,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     case LayoutKind::tile:
     case LayoutKind::paving:
       read_surface(r, *k, design, spec);
+      read_cut_rules(r, spec);
       break;
   }
 

@@ -1,9 +1,55 @@
 // [layout] of kind "perforation": one opening per curd, the sheet and the fabrication rules.
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 
 #include "recipe/layout_reader.h"
 
 namespace curdle::reading {
+namespace {
+
+// layout.punches: the diameters the tools cut; every hole's diameter must be one of them.
+void read_punches(TableReader& r, LayoutSpec& spec) {
+  const toml::node* n = r.get("punches");
+  if (!n) return;
+  const toml::array* a = n->as_array();
+  const std::string allowed =
+      "must be the punches' diameters in millimetres, e.g. [16, 22.6, 27.7], each above 0";
+  if (!a || a->empty() || a->size() > 100) r.fail("punches", allowed + ", at most 100");
+  std::vector<double>& punches = spec.perforation().punches;
+  for (const toml::node& item : *a) {
+    const auto d = finite_number(&item);
+    if (!d || *d <= 0 || *d > 1e7) r.fail("punches", allowed);
+    punches.push_back(*d);
+  }
+  std::sort(punches.begin(), punches.end());
+  punches.erase(std::unique(punches.begin(), punches.end()), punches.end());
+  for (size_t i = 0; i < spec.perforation().holes.size(); ++i) {
+    const double d = spec.perforation().holes[i].diameter;
+    if (std::none_of(punches.begin(), punches.end(),
+                     [&](double p) { return std::fabs(p - d) < 1e-9; }))
+      r.fail("punches", "has no punch for layout.holes." + std::to_string(i) + " (diameter " +
+                            fmt::format("{:g}", d) +
+                            " mm); every hole's diameter must be one of the punches");
+  }
+}
+
+// layout.open_area: [min, max] share of each sheet that must be open.
+void read_open_area(TableReader& r, LayoutSpec& spec) {
+  const toml::node* n = r.get("open_area");
+  if (!n) return;
+  const toml::array* a = n->as_array();
+  const auto lo = a && a->size() == 2 ? finite_number(a->get(0)) : std::nullopt;
+  const auto hi = a && a->size() == 2 ? finite_number(a->get(1)) : std::nullopt;
+  if (!lo || !hi || *lo < 0 || *hi > 1 || *lo > *hi)
+    r.fail("open_area",
+           "must be [min, max], shares of each sheet from 0 to 1, min not above max; e.g. "
+           "[0.15, 0.30] for 15 % to 30 % open");
+  spec.perforation().open_area = std::array<double, 2>{*lo, *hi};
+}
+
+}  // namespace
 
 void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   spec.perforation().thickness = read_mm(r, "thickness", 0, 0, true);
@@ -58,6 +104,8 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
               " mm cell; holes must lie inside their cells (smaller, or nearer the centre)");
     spec.perforation().holes.push_back(hole);
   }
+  read_punches(r, spec);
+  read_open_area(r, spec);
   spec.perforation().sheet_size = read_mm_pair(r, "sheet_size");
   if (spec.perforation().sheet_size) {
     double largest = 0;

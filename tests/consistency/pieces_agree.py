@@ -1,16 +1,21 @@
-"""Every piece agrees across schedule.csv, layout.dxf, install.svg and the sheet DXFs.
+"""Every piece agrees across schedule.csv, layout.dxf, layout.glb, layout.svg, install.svg and
+the sheet DXFs.
 
 For one recipe and every origin corner its layout kind takes, runs `curdle generate` and checks
 each element of schedule.csv against the other files within 0.01 mm: the DXF's piece on its
-material layer (bounding box, or circle) and its ID on layer ID at the piece's centre; the
-installer's map's drawing of the element; a perforation's sheet DXF. Also that the DXF is in
+material layer (bounding box, or circle) and its ID on layer ID at the piece's centre; the glTF
+node named by its ID (the extent of its boxes, or an opening's centre); its ID in layout.svg;
+the installer's map's drawing of the element; a perforation's sheet DXF. Also that the DXF is in
 millimetres (AutoCAD 2000, $INSUNITS 4) and audits clean, and that the schedule's areas add up
 to the quantities' laid areas.
 
 Usage: pieces_agree.py CURDLE RECIPE WORKDIR   (Debian's python3 with python3-ezdxf)
 """
 import csv
+import json
 import os
+import struct
+import tomllib
 import re
 import subprocess
 import sys
@@ -101,24 +106,100 @@ def install_boxes(path):
     return out
 
 
+def glb_nodes(path, upright):
+    """Per named node of a binary glTF: its extent in layout millimetres from its meshes' bounds
+    (boxes, trees), or its position when it has no mesh (an opening), as (x0, y0, x1, y1)."""
+    data = open(path, "rb").read()
+    length, kind = struct.unpack_from("<I4s", data, 12)
+    doc = json.loads(data[20:20 + length])
+    nodes, meshes, accessors = doc["nodes"], doc.get("meshes", []), doc["accessors"]
+
+    def to_mm(p):  # glTF metres to layout millimetres: x right, y up the wall or into the floor
+        return (p[0] * 1000, p[1] * 1000) if upright else (p[0] * 1000, -p[2] * 1000)
+
+    def extent(index, offset, scale, pts):
+        n = nodes[index]
+        t, s = n.get("translation", [0, 0, 0]), n.get("scale", [1, 1, 1])
+        o = [offset[i] + scale[i] * t[i] for i in range(3)]
+        sc = [scale[i] * s[i] for i in range(3)]
+        if "mesh" in n and "scale" in n:  # a unit box (a block may show only some faces)
+            for corner in (-0.5, 0.5):
+                pts.append(to_mm([o[i] + sc[i] * corner for i in range(3)]))
+        elif "mesh" in n:
+            for prim in meshes[n["mesh"]]["primitives"]:
+                a = accessors[prim["attributes"]["POSITION"]]
+                for corner in ((a["min"], a["max"]), (a["max"], a["min"])):
+                    pts.append(to_mm([o[i] + sc[i] * corner[0][i] for i in range(3)]))
+        for c in n.get("children", []):
+            extent(c, o, sc, pts)
+        return o
+
+    out = {}
+    for root in doc["scenes"][0]["nodes"]:
+        name = nodes[root].get("name")
+        if not name:
+            continue
+        pts = []
+        o = extent(root, [0, 0, 0], [1, 1, 1], pts)
+        out[name] = box_of_points(pts) if pts else to_mm(o) * 2
+    return out
+
+
+def svg_ids(path):
+    """Element IDs named in layout.svg: by id, in data-elements lists, and in ranges first:last."""
+    text = open(path, encoding="utf-8").read()
+    ids = set(re.findall(r' id="([A-Z]-[^"]+)"', text))
+    ranges = []
+    for listed in re.findall(r'data-elements="([^"]+)"', text):
+        for item in listed.split():
+            if ":" in item:
+                ranges.append(item.split(":"))
+            else:
+                ids.add(item)
+    return ids, ranges
+
+
+ID = re.compile(r"([A-Z])-R(\d+)-C(\d+)(-.+)?")
+
+
+def ids_in_ranges(ranges):
+    """The (kind, part, row, column) of every element in merged runs first:last (rows and
+    columns inclusive, one kind and part)."""
+    out = set()
+    for first, last in ranges:
+        a, b = ID.fullmatch(first), ID.fullmatch(last)
+        if not (a and b and a.group(1) == b.group(1) and a.group(4) == b.group(4)):
+            fail(f"layout.svg: a run {first}:{last} that is not one kind")
+            continue
+        for r in range(int(a.group(2)), int(b.group(2)) + 1):
+            for c in range(int(a.group(3)), int(b.group(3)) + 1):
+                out.add((a.group(1), a.group(4), r, c))
+    return out
+
+
+def in_runs(eid, runs):
+    m = ID.fullmatch(eid)
+    return bool(m) and (m.group(1), m.group(4), int(m.group(2)), int(m.group(3))) in runs
+
+
 def check(curdle, recipe, out, corner):
     args = [curdle, "generate", recipe, "--out", out,
-            "--outputs", "schedule.csv,quantities.csv,layout.dxf,install.svg,sheets"]
+            "--outputs", "schedule.csv,quantities.csv,layout.dxf,layout.glb,layout.svg,install.svg,sheets"]
     if corner:
         args += ["--set", f'layout.origin="{corner}"']
     run = subprocess.run(args, capture_output=True, text=True)
     if run.returncode != 0:
-        if corner and "origin" in run.stderr:
-            return False  # this kind has no origin corner
-        if not corner and "needs a [layout]" in run.stderr:
-            print(f"{os.path.basename(recipe)}: no [layout], so no pieces to compare")
-            return False
         fail(f"{' '.join(args)}: exit {run.returncode}: {run.stderr.strip()}")
-        return True
+        return
     where = f"{os.path.basename(recipe)} origin {corner or 'default'}"
     rows = read_csv(os.path.join(out, "schedule.csv"))
     boxes, ids = dxf_pieces(os.path.join(out, "layout.dxf"))
     drawn = install_boxes(os.path.join(out, "install.svg"))
+    with open(recipe, "rb") as f:
+        kind = tomllib.load(f).get("layout", {}).get("kind", "tile")
+    modelled = glb_nodes(os.path.join(out, "layout.glb"), kind in ("facade", "façade", "rhythm"))
+    named, ranges = svg_ids(os.path.join(out, "layout.svg"))
+    runs = ids_in_ranges(ranges)
     sheet_offsets = {}
     sheets = os.path.join(out, "sheets")
     area = 0.0
@@ -133,6 +214,16 @@ def check(curdle, recipe, out, corner):
         p = ids.get(eid)
         if p is None or not (near(p[0], x + w / 2) and near(p[1], y + h / 2)):
             fail(f"{where}: {eid}'s ID in layout.dxf is at {p}, not at its centre")
+        g = modelled.get(eid)
+        if g is None:
+            fail(f"{where}: {eid} has no node in layout.glb")
+        elif g[0] == g[2] and g[1] == g[3]:  # an opening: its node marks the centre
+            if not (near(g[0], x + w / 2) and near(g[1], y + h / 2)):
+                fail(f"{where}: {eid}'s node in layout.glb is at {g[:2]}, not at its centre")
+        elif not all(near(u, v) for u, v in zip(g, b)):
+            fail(f"{where}: {eid} is modelled at {g} in layout.glb, {b} in the schedule")
+        if eid not in named and not in_runs(eid, runs):
+            fail(f"{where}: {eid} is not named in layout.svg")
         d = drawn.get(eid)
         if d is None or not all(near(u, v) for u, v in zip(d, b)):
             fail(f"{where}: {eid} is drawn at {d} in install.svg, {b} in the schedule")
@@ -172,15 +263,21 @@ def check(curdle, recipe, out, corner):
                 if not has_box(sboxes, (x - ox, y - oy, x - ox + w, y - oy + h)):
                     fail(f"{where}: {eid} has no piece of its extent in {name}.dxf")
     print(f"{where}: {len(rows)} pieces checked")
-    return True
 
 
 def main():
     curdle, recipe, work = sys.argv[1:4]
     os.makedirs(work, exist_ok=True)
-    for i, corner in enumerate([None] + CORNERS):
-        if not check(curdle, recipe, os.path.join(work, f"out{i}"), corner):
-            break
+    # Every corner when the kind takes one (the recipe's own is among them), else as written.
+    with open(recipe, "rb") as f:
+        layout = tomllib.load(f).get("layout")
+    if layout is None:
+        print(f"{os.path.basename(recipe)}: no [layout], so no pieces to compare")
+    elif layout.get("kind", "tile") in ("rhythm", "blocks"):
+        check(curdle, recipe, os.path.join(work, "out"), None)
+    else:
+        for i, corner in enumerate(CORNERS):
+            check(curdle, recipe, os.path.join(work, f"out{i}"), corner)
     if failures:
         print(f"{len(failures)} disagreements")
         sys.exit(1)

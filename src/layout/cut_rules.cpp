@@ -1,0 +1,197 @@
+#include "layout/cut_rules.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "layout/builder.h"
+
+namespace curdle {
+namespace {
+
+constexpr double kEps = 1e-6;
+
+using Span = std::pair<double, double>;
+
+// Spans sorted and joined where they touch.
+std::vector<Span> joined(std::vector<Span> spans) {
+  std::sort(spans.begin(), spans.end());
+  std::vector<Span> out;
+  for (const Span& s : spans) {
+    if (!out.empty() && s.first <= out.back().second + kEps)
+      out.back().second = std::max(out.back().second, s.second);
+    else
+      out.push_back(s);
+  }
+  return out;
+}
+
+// The cut pieces narrower than `least` where material [a, b] along an axis meets a grid of
+// `module` + joint = `pitch`, moved back by `shift` from the anchor at 0.
+uint64_t slivers_in(double a, double b, double module, double pitch, double shift, double least) {
+  uint64_t count = 0;
+  const double k0 = std::floor((a + shift) / pitch), k1 = std::floor((b - kEps + shift) / pitch);
+  for (const double k : {k0, k1}) {
+    const double start = k * pitch - shift;
+    const double piece = std::min(b, start + module) - std::max(a, start);
+    if (piece > kEps && piece < module - kEps && piece < least - kEps) ++count;
+    if (k1 == k0) break;
+  }
+  return count;
+}
+
+Rect clipped(const Rect& r, const Layout& layout) {
+  const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
+  const double x1 = std::min(layout.width, r.right()), y1 = std::min(layout.height, r.top());
+  return Rect{x0, y0, std::max(0.0, x1 - x0), std::max(0.0, y1 - y0)};
+}
+
+}  // namespace
+
+double narrowest_run(const std::vector<Rect>& pieces, bool along_x) {
+  std::vector<double> bands;
+  for (const Rect& r : pieces) {
+    bands.push_back(along_x ? r.y : r.x);
+    bands.push_back(along_x ? r.top() : r.right());
+  }
+  std::sort(bands.begin(), bands.end());
+  double least = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i + 1 < bands.size(); ++i) {
+    if (bands[i + 1] - bands[i] < kEps) continue;
+    const double mid = (bands[i] + bands[i + 1]) / 2;
+    std::vector<Span> runs;
+    for (const Rect& r : pieces) {
+      const double lo = along_x ? r.y : r.x, hi = along_x ? r.top() : r.right();
+      if (lo < mid && mid < hi) runs.push_back(along_x ? Span{r.x, r.right()} : Span{r.y, r.top()});
+    }
+    for (const Span& s : joined(std::move(runs))) least = std::min(least, s.second - s.first);
+  }
+  return std::isfinite(least) ? least : 0.0;
+}
+
+double least_cut(const LayoutSpec& spec, int axis) {
+  if (spec.min_cut > 0) return spec.min_cut;
+  return (axis == 0 ? spec.module_w : spec.module_h) / 4;
+}
+
+ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis) {
+  const int other = 1 - axis;
+  const double extent = axis == 0 ? layout.width : layout.height;
+  const double across = other == 0 ? layout.width : layout.height;
+  const double module = axis == 0 ? spec.module_w : spec.module_h;
+  const double other_module = other == 0 ? spec.module_w : spec.module_h;
+  const double pitch = module + spec.joint, other_pitch = other_module + spec.joint;
+  const bool high = axis == 0 ? from_right(spec.origin) : from_top(spec.origin);
+  const bool other_high = other == 0 ? from_right(spec.origin) : from_top(spec.origin);
+  const int64_t lines = other == 0 ? layout.columns : layout.rows;
+  auto lo = [](const Rect& r, int a) { return a == 0 ? r.x : r.y; };
+  auto hi = [](const Rect& r, int a) { return a == 0 ? r.right() : r.top(); };
+
+  // Bands across the surface between openings' edges; in each, the material is the surface
+  // less the openings that span the band, and every row (or column) in it meets the same cuts.
+  std::vector<double> edges{0, across};
+  for (const Rect& o : layout.openings)
+    edges.push_back(lo(o, other)), edges.push_back(hi(o, other));
+  std::sort(edges.begin(), edges.end());
+  struct Band {
+    uint64_t lines = 0;
+    std::vector<Span> material;  // from the anchor of the axis
+  };
+  std::vector<Band> bands;
+  for (size_t i = 0; i + 1 < edges.size(); ++i) {
+    const double b0 = edges[i], b1 = edges[i + 1], mid = (b0 + b1) / 2;
+    if (b1 - b0 < kEps) continue;
+    Band band;
+    for (int64_t k = 0; k < lines; ++k) {  // rows (or columns) that reach into the band
+      const double start = k * other_pitch - spec.shift[other];
+      const double s0 = other_high ? across - start - other_module : start;
+      if (std::min(b1, s0 + other_module) - std::max(b0, s0) > kEps) ++band.lines;
+    }
+    std::vector<Span> holes;
+    for (const Rect& o : layout.openings)
+      if (lo(o, other) < mid && mid < hi(o, other)) holes.push_back({lo(o, axis), hi(o, axis)});
+    double at = 0;
+    for (const Span& h : joined(std::move(holes))) {
+      if (h.first > at + kEps) band.material.push_back({at, h.first});
+      at = std::max(at, h.second);
+    }
+    if (extent > at + kEps) band.material.push_back({at, extent});
+    if (high)
+      for (Span& s : band.material) s = {extent - s.second, extent - s.first};
+    if (band.lines) bands.push_back(std::move(band));
+  }
+  const double least = least_cut(spec, axis);
+  auto count = [&](double shift) {
+    uint64_t n = 0;
+    for (const Band& band : bands)
+      for (const Span& s : band.material)
+        n += band.lines * slivers_in(s.first, s.second, module, pitch, shift, least);
+    return n;
+  };
+  ShiftAdvice advice;
+  advice.shift = spec.shift[axis];
+  advice.slivers = advice.now = count(spec.shift[axis]);
+  // Whole millimetres (coarser for elements over 4 m): what a setter-out can mark.
+  const double step = std::max(1.0, std::ceil(module / 4000));
+  for (double s = 0; s < module - kEps && advice.slivers > 0; s += step) {
+    const uint64_t n = count(s);
+    if (n < advice.slivers) advice.slivers = n, advice.shift = s;
+  }
+  return advice;
+}
+
+void check_cut_widths(Layout& layout, const LayoutSpec& spec) {
+  const LayoutKind kind = spec.kind();
+  if (kind != LayoutKind::tile && kind != LayoutKind::paving && kind != LayoutKind::facade) return;
+  const char* rule = spec.min_cut > 0 ? "layout.min_cut" : "a quarter of the element";
+  uint64_t slivers = 0;
+  for (const Element& e : layout.elements) {
+    if (!e.cut) continue;
+    const Rect laid = clipped(e.nominal, layout);
+    for (int axis = 0; axis < 2; ++axis) {
+      const double run = narrowest_run(e.shape, axis == 0);
+      const double least = least_cut(spec, axis);
+      if (run >= least - kEps) continue;
+      const double laid_extent = axis == 0 ? laid.w : laid.h;
+      const double module = axis == 0 ? spec.module_w : spec.module_h;
+      const bool at_edge = laid_extent < module - kEps && std::fabs(laid_extent - run) < kEps;
+      layout.violations.push_back(fmt::format("{}: cut to {:.1f} mm {} at {}, below {:.1f} mm ({})",
+                                              e.id, run, axis == 0 ? "wide" : "high",
+                                              at_edge ? "the edge" : "an opening", least, rule));
+      ++slivers;
+      break;
+    }
+  }
+  if (!slivers) return;
+  std::string note = fmt::format("{} cut {}{} narrower than {} (see the rule violations)", slivers,
+                                 layout.element_type, slivers == 1 ? " is" : "s are", rule);
+  const ShiftAdvice x = best_shift(layout, spec, 0), y = best_shift(layout, spec, 1);
+  if (x.slivers + y.slivers < x.now + y.now) {
+    note += fmt::format(
+        "; layout.shift = [{:g}, {:g}] leaves {} instead of {}, counted along "
+        "rows and columns",
+        x.shift + 0.0, y.shift + 0.0, x.slivers + y.slivers, x.now + y.now);
+    if (spec.size) {
+      LayoutSpec moved = spec;
+      moved.shift = {x.shift, y.shift};
+      const auto cells = elements_to_cover(moved);
+      note += fmt::format(" (the window then takes {} x {} cells)", cells[0], cells[1]);
+    }
+  }
+  layout.notes.push_back(note);
+}
+
+void report_open_area(Layout& layout) {
+  const double wall = layout.width * layout.height;
+  if (wall <= 0 || layout.openings.empty()) return;
+  double solid = 0;
+  for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, layout.openings))
+    solid += r.area();
+  layout.open_area = (wall - solid) / wall;
+  layout.notes.push_back(fmt::format("openings {:.2f} m2, {:.1f} % of the wall",
+                                     (wall - solid) / 1e6, 100 * layout.open_area));
+}
+
+}  // namespace curdle

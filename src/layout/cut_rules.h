@@ -1,0 +1,38 @@
+// Cut pieces too narrow to lay: every edge a piece is cut along counts, the surface's edges and
+// its openings (layout.min_cut), and the grid can be moved to avoid them (layout.shift).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace curdle {
+
+// The narrowest run of a piece across x (along_x: the shortest horizontal stretch of material
+// at any height) or across y. A rectangle's is its width or height; an L-shaped panel's is its
+// thinner leg, however its rectangles happen to be split.
+double narrowest_run(const std::vector<Rect>& pieces, bool along_x);
+
+// The narrowest cut piece allowed across x (axis 0) or y (1): layout.min_cut, or a quarter of
+// the element when it is not given.
+double least_cut(const LayoutSpec& spec, int axis);
+
+// Tile, paving and facade layouts: every cut piece narrower than the least cut goes to the
+// violations, with where it was cut (an edge or an opening); a note gives how many and the
+// layout.shift that would leave the fewest.
+void check_cut_widths(Layout& layout, const LayoutSpec& spec);
+
+// The shift along x (axis 0) or y (1) that leaves the fewest slivers, and how many it leaves
+// and the current shift leaves, counted row by row (or column by column) across the surface
+// less its openings.
+struct ShiftAdvice {
+  double shift = 0;
+  uint64_t slivers = 0, now = 0;
+};
+ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis);
+
+// Facade: the share of the wall its openings take, as layout.open_area and a note.
+void report_open_area(Layout& layout);
+
+}  // namespace curdle

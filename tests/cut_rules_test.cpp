@@ -1,0 +1,158 @@
+// Fabrication rules a builder meets: slivers at every edge and the shift that avoids them, a
+// façade's open area, punches for real tools, and each sheet's open area and hole counts.
+#include "layout/cut_rules.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <map>
+
+#include "curdle/curdling.h"
+#include "layout/builder.h"
+#include "test_support.h"
+
+namespace curdle {
+namespace {
+
+Layout facade(const std::array<double, 2>& shift, double min_cut) {
+  Design d = test::design(4, 2, {{"3/4", "1/2", "2/3"}});
+  LayoutSpec spec;
+  spec.set_kind(LayoutKind::facade);
+  spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
+  spec.size = std::array<double, 2>{6000, 3000};
+  spec.shift = shift;
+  spec.min_cut = min_cut;
+  // A window whose head is 15 mm above a course and whose sides cut bricks near their ends.
+  spec.facade().openings = {{1000, 900, 1200, 1475}, {4000, 0, 900, 2100}};
+  const auto cells = elements_to_cover(spec);
+  d.field.size = {cells[0], cells[1], 1};
+  const CurdField f = curdle(d, 5, d.field);
+  return make_layout(d, f, d.field, spec);
+}
+
+// Every cut piece narrower than the rule, measured from its rectangles independently.
+size_t slivers_of(const Layout& layout, double least) {
+  size_t n = 0;
+  for (const Element& e : layout.elements)
+    if (e.cut && (narrowest_run(e.shape, true) < least - 1e-6 ||
+                  narrowest_run(e.shape, false) < least - 1e-6))
+      ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST(CutRules, TheNarrowestRunIsTheThinnerLegHoweverThePieceIsSplit) {
+  // An L: a 10 mm strip over a window beside a full-height leg, split two ways.
+  const std::vector<Rect> across{{0, 290, 600, 10}, {300, 0, 300, 290}};
+  const std::vector<Rect> down{{0, 290, 300, 10}, {300, 0, 300, 300}};
+  for (const auto& piece : {across, down}) {
+    EXPECT_NEAR(narrowest_run(piece, false), 10, 1e-9);  // the strip, measured up
+    EXPECT_NEAR(narrowest_run(piece, true), 300, 1e-9);  // the leg, measured across
+  }
+  // A rectangle split into thin slices is as wide as the rectangle.
+  EXPECT_NEAR(narrowest_run({{0, 0, 5, 100}, {5, 0, 5, 100}, {10, 0, 90, 100}}, true), 100, 1e-9);
+}
+
+TEST(CutRules, SliversAtOpeningsAreReportedAndTheAdvisedShiftLeavesFewer) {
+  const Layout plain = facade({0, 0}, 50);
+  const size_t found = slivers_of(plain, 50);
+  ASSERT_GT(found, 0u);
+  size_t reported = 0, at_openings = 0;
+  for (const std::string& v : plain.violations) {
+    reported += v.find("below 50.0 mm (layout.min_cut)") != std::string::npos;
+    at_openings += v.find("at an opening") != std::string::npos;
+  }
+  EXPECT_EQ(reported, found);
+  EXPECT_GT(at_openings, 0u);  // the window head's course, not only the wall's edges
+  LayoutSpec spec = plain.spec;
+  const ShiftAdvice x = best_shift(plain, spec, 0), y = best_shift(plain, spec, 1);
+  EXPECT_LT(x.slivers + y.slivers, x.now + y.now);
+  const Layout moved = facade({x.shift, y.shift}, 50);
+  EXPECT_LT(slivers_of(moved, 50), found);
+  bool advised = false;
+  for (const std::string& note : plain.notes)
+    advised |= note.find("layout.shift = [") != std::string::npos;
+  EXPECT_TRUE(advised);
+}
+
+TEST(CutRules, AFacadeReportsTheShareItsOpeningsTake) {
+  const Layout layout = facade({0, 0}, 0);
+  EXPECT_NEAR(layout.open_area, (1200.0 * 1475 + 900.0 * 2100) / (6000.0 * 3000), 1e-12);
+}
+
+namespace {
+
+Layout screen(Combine combine, std::vector<double> punches,
+              std::optional<std::array<double, 2>> open_area, uint64_t seed) {
+  const Design d = test::design(4, 2, {{"1/2", "1/2"}, {"1/2", "1/2"}, {"1/2", "1/2"}});
+  LayoutSpec spec;
+  spec.set_kind(LayoutKind::perforation);
+  spec.combine = combine;
+  spec.module_w = spec.module_h = 40;
+  spec.size = std::array<double, 2>{640, 640};
+  spec.perforation().thickness = 2;
+  // The third opening lies inside the first: their union is the first circle.
+  spec.perforation().holes = {{16, -7, 6}, {16, 7, 6}, {8, -7, 6}};
+  spec.perforation().punches = std::move(punches);
+  spec.perforation().open_area = open_area;
+  spec.perforation().sheet_size = std::array<double, 2>{300, 640};
+  const CurdField f = curdle(d, seed, d.field);
+  return make_layout(d, f, d.field, spec);
+}
+
+}  // namespace
+
+TEST(CutRules, MergedOpeningsTakeTheNearestPunchByArea) {
+  const std::vector<double> punches{8, 16, 20, 24};
+  const Layout layout = screen(Combine::mix, punches, std::nullopt, 3);
+  bool merged = false;
+  for (const Element& e : layout.elements) {
+    ASSERT_TRUE(e.circle) << e.id;
+    EXPECT_TRUE(std::count(punches.begin(), punches.end(), e.circle->d)) << e.id;
+    if (std::popcount(e.value) < 2 || (e.value & 3) != 3) continue;
+    merged = true;
+    // Two 16 mm openings and maybe an 8 mm one overlap: 22.6 or 24 mm exactly; 24 is nearest.
+    EXPECT_EQ(e.circle->d, 24) << e.id;
+  }
+  EXPECT_TRUE(merged);
+}
+
+TEST(CutRules, AKeptUnionThatIsOneCircleStaysACircle) {
+  const Layout layout = screen(Combine::keep, {}, std::nullopt, 3);
+  bool inside = false;
+  for (const Element& e : layout.elements) {
+    if (e.value != 5) continue;  // the 16 mm opening and the 8 mm one inside it
+    inside = true;
+    ASSERT_TRUE(e.circle) << e.id;
+    EXPECT_FALSE(e.outline) << e.id;
+    EXPECT_EQ(e.circle->d, 16);
+  }
+  EXPECT_TRUE(inside);
+}
+
+TEST(CutRules, EachSheetReportsItsOpenAreaAndHoleCountsPerTool) {
+  const Layout layout = screen(Combine::keep, {}, std::array<double, 2>{0.2, 0.3}, 4);
+  ASSERT_EQ(layout.sheets.size(), 3u);  // 300 + 300 + 40 mm wide
+  std::map<int, double> open;
+  std::map<int, uint64_t> holes;
+  for (const Element& e : layout.elements) open[e.sheet] += e.area(), ++holes[e.sheet];
+  size_t outside = 0;
+  for (size_t i = 0; i < layout.sheets.size(); ++i) {
+    const auto& sheet = layout.sheets[i];
+    EXPECT_NEAR(sheet.open_area, open[static_cast<int>(i)] / sheet.area.area(), 1e-12);
+    uint64_t counted = 0;
+    for (const auto& [tool, n] : sheet.tools) counted += n;
+    EXPECT_EQ(counted, holes[static_cast<int>(i)]) << sheet.id;
+    outside += sheet.open_area < 0.2 || sheet.open_area > 0.3;
+  }
+  size_t reported = 0;
+  for (const std::string& v : layout.violations)
+    reported += v.find("outside layout.open_area") != std::string::npos;
+  EXPECT_EQ(reported, outside);
+  EXPECT_GT(outside, 0u);
+}
+
+}  // namespace curdle
