@@ -53,6 +53,7 @@ json report_to_json(const Report& r) {
                         {"expected", rounded(s.expected, 3)},
                         {"expected_sd", rounded(s.expected_sd, 3)},
                         {"box_count", s.box_count},
+                        {"expected_box_count", rounded(s.expected_box_count, 3)},
                         {"local_dimension", rounded(s.local_dimension)},
                         {"log_ratio_dimension", rounded(s.mean_dimension)},
                         {"theory_dimension", rounded(s.theory_dimension)}});
@@ -60,6 +61,8 @@ json report_to_json(const Report& r) {
     json fit = {{"fit", c.fit ? rounded(c.fit->slope) : json(nullptr)},
                 {"r2", c.fit ? rounded(c.fit->r2) : json(nullptr)},
                 {"levels", c.fit ? c.fit->points : 0},
+                {"expected_at_these_stages",
+                 c.expected_fit ? rounded(c.expected_fit->slope) : json(nullptr)},
                 {"theory", rounded(c.theory_dimension)}};
     curds.push_back({{"name", c.name},
                      {"final_probability", rounded(c.final_probability, 6)},

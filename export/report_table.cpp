@@ -25,17 +25,23 @@ std::string format_report_table(const Report& r) {
   for (const CurdReport& c : r.curds) {
     line("");
     line(fmt::format("curd '{}': P(final) = {:.6g}", c.name, c.final_probability));
-    line(fmt::format("  {:>5} {:>9} {:>12} {:>12} {:>10} {:>12} {:>8} {:>8} {:>8}", "stage", "p",
-                     "survivors", "expected", "sd", "box count", "local D", "logN/klb",
-                     "theory D"));
+    line(fmt::format("  {:>5} {:>9} {:>12} {:>12} {:>10} {:>12} {:>12} {:>8} {:>8} {:>8}", "stage",
+                     "p", "survivors", "expected", "sd", "box count", "expected", "local D",
+                     "logN/klb", "theory D"));
     for (const StageRow& s : c.stages)
-      line(fmt::format("  {:>5} {:>9} {:>12} {:>12.1f} {:>10.2f} {:>12} {:>8} {:>8} {:>8}", s.stage,
-                       s.probability.text(), s.survivors, s.expected, s.expected_sd, s.box_count,
-                       number(s.local_dimension), number(s.mean_dimension),
-                       number(s.theory_dimension)));
-    line(fmt::format("  box dimension: fit {} (R^2 {}, {} levels), theory {}",
-                     c.fit ? number(c.fit->slope) : "-", c.fit ? number(c.fit->r2, 4) : "-",
-                     c.fit ? c.fit->points : 0, number(c.theory_dimension)));
+      line(
+          fmt::format("  {:>5} {:>9} {:>12} {:>12.1f} {:>10.2f} {:>12} {:>12.1f} {:>8} {:>8} {:>8}",
+                      s.stage, s.probability.text(), s.survivors, s.expected, s.expected_sd,
+                      s.box_count, s.expected_box_count, number(s.local_dimension),
+                      number(s.mean_dimension), number(s.theory_dimension)));
+    // The fit beside what the same fit gives on the expected counts at these stages and in this
+    // view, and the limit of many stages: a crop or few stages move the first, not the last.
+    line(fmt::format(
+        "  box dimension: fit {} (R^2 {}, {} levels); expected at {} stages {}; "
+        "limit {}",
+        c.fit ? number(c.fit->slope) : "-", c.fit ? number(c.fit->r2, 4) : "-",
+        c.fit ? c.fit->points : 0, r.lattice.stages,
+        c.expected_fit ? number(c.expected_fit->slope) : "-", number(c.theory_dimension)));
   }
   line("");
   line(fmt::format("  {:>6} {:<28} {:>12} {:>12}", "value", "curds", "count", "expected"));

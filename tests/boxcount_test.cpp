@@ -81,7 +81,7 @@ TEST(BoxCount, FitOfAnExactPowerLaw) {
   ASSERT_TRUE(fit);
   EXPECT_NEAR(fit->slope, std::log2(3.0), 1e-12);
   EXPECT_NEAR(fit->r2, 1.0, 1e-12);
-  EXPECT_FALSE(fit_box_dimension({1, 0, 0}, 2));
+  EXPECT_FALSE(fit_box_dimension(std::vector<uint64_t>{1, 0, 0}, 2));
 }
 
 }  // namespace curdle

@@ -7,6 +7,7 @@
 
 #include "curdle/boxcount.h"
 #include "curdle/curdling.h"
+#include "curdle/extinction.h"
 #include "curdle/overlay.h"
 #include "curdle/theory.h"
 #include "test_support.h"
@@ -146,6 +147,53 @@ TEST(Statistics, FittedBoxDimensionConvergesToTheory) {
   EXPECT_NEAR(mean_fitted_dimension(line, 400), 1 + std::log2(0.85), 0.03);
   const Design cube = design(2, 3, repeat("7/10", 7));
   EXPECT_NEAR(mean_fitted_dimension(cube, 200), 3 + std::log2(0.7), 0.03);
+}
+
+}  // namespace curdle
+
+namespace curdle {
+namespace {
+
+// Box counts at every level against their finite-K expectation with extinction, over seeds.
+void expect_box_counts_match(const Design& d, const Box& view, int seeds) {
+  const int K = d.lattice.stages;
+  std::vector<std::vector<double>> counts(static_cast<size_t>(K + 1));
+  CurdField f;
+  std::vector<Bitset> scratch;
+  for (int seed = 0; seed < seeds; ++seed) {
+    curdle_into(d, static_cast<uint64_t>(seed), view, f);
+    const auto c = box_counts(f.curds[0], d.lattice.children(), scratch);
+    for (int k = 0; k <= K; ++k) counts[k].push_back(static_cast<double>(c[k]));
+  }
+  const auto expected = expected_box_counts(d.lattice, d.curds[0].probabilities, view);
+  for (int k = 0; k <= K; ++k) {
+    const Moments m = moments(counts[k]);
+    // A level of few cells may show no spread in the sample: the spread of one cell kept with
+    // the mean share is the least the bound allows.
+    const double share = expected[k] / static_cast<double>(cells_meeting(d.lattice, k, view));
+    const double floor = std::sqrt(share * (1 - share) / seeds);
+    EXPECT_NEAR(m.mean, expected[k], 4 * std::max(m.se_mean, floor)) << "level " << k;
+  }
+}
+
+}  // namespace
+
+TEST(Statistics, BoxCountsMatchTheirFiniteStageExpectationWithExtinction) {
+  // Low probabilities late, so that many early survivors leave nothing: a cropped field,
+  // a window across roots, and exact mode in a window.
+  Design d = design(3, 2, {{"4/5", "1/2", "1/3", "1/4"}});
+  d.field = Box{{0, 0, 0}, {100, 70, 1}};
+  // Extinction matters here: a surviving stage-3 cell keeps no child with chance (3/4)^9.
+  const auto expected = expected_box_counts(d.lattice, d.curds[0].probabilities, d.field);
+  EXPECT_LT(expected[3],
+            expected_survivors(d.lattice, d.curds[0].probabilities, 3, d.field) * 0.95);
+  expect_box_counts_match(d, d.field, 1500);
+  expect_box_counts_match(d, Box{{17, 30, 0}, {50, 33, 1}}, 1500);
+  Design exact = design(3, 2, {{"7/9", "5/9", "1/3", "1/3"}}, Mode::exact);
+  exact.field = Box{{0, 0, 0}, {100, 70, 1}};
+  expect_box_counts_match(exact, Box{{5, 9, 0}, {61, 40, 1}}, 1500);
+  const Design cube = design(2, 3, {{"3/4", "1/2", "1/2", "1/2"}});
+  expect_box_counts_match(cube, Box{{3, 0, 1}, {11, 13, 9}}, 1500);
 }
 
 }  // namespace curdle

@@ -44,3 +44,50 @@ TEST(Theory, Dimension) {
 }
 
 }  // namespace curdle
+
+#include "curdle/curdling.h"
+#include "curdle/extinction.h"
+#include "curdle/report.h"
+
+namespace curdle {
+
+// The paper's fig. 3 on a field of 64 x 64 roots: every dimension in the report is at most E,
+// and with p = 1 the per-root log ratio is E exactly.
+TEST(Theory, NoDimensionInTheReportExceedsTheLatticeDimension) {
+  for (const char* p : {"1", "3/4"}) {
+    Design d = design(4, 2, {{p, p}, {"2/3", "3/4"}});
+    d.field = Box{{0, 0, 0}, {1024, 1024, 1}};
+    const Report r = make_report(d, 3, curdle(d, 3, d.field), d.field);
+    for (const CurdReport& c : r.curds) {
+      for (const StageRow& s : c.stages) {
+        ASSERT_TRUE(s.mean_dimension);
+        EXPECT_LE(*s.mean_dimension, 2 + 1e-12) << c.name << " stage " << s.stage;
+        if (s.local_dimension) EXPECT_LE(*s.local_dimension, 2 + 1e-12);
+      }
+      ASSERT_TRUE(c.fit);
+      EXPECT_LE(c.fit->slope, 2 + 1e-12);
+    }
+    if (std::string(p) == "1") EXPECT_NEAR(*r.curds[0].stages[1].mean_dimension, 2.0, 1e-12);
+  }
+}
+
+// With p = 1 nothing dies out: every cell meeting the view keeps a survivor. For a whole root
+// in canonical mode the recursion is the Galton-Watson extinction e_k = f(e_(k+1)).
+TEST(Theory, ExpectedBoxCountsFollowTheGeneratingFunction) {
+  const Lattice l{3, 2, 4, Mode::canonical};
+  const Box crop{{2, 5, 0}, {50, 31, 1}};
+  const auto all =
+      expected_box_counts(l, std::vector<Probability>(4, *Probability::parse("1")), crop);
+  for (int k = 0; k <= 4; ++k)
+    EXPECT_NEAR(all[k], static_cast<double>(cells_meeting(l, k, crop)), 1e-9);
+  const std::vector<Probability> p(4, *Probability::parse("1/2"));
+  const Box root{{0, 0, 0}, {81, 81, 1}};
+  const auto counts = expected_box_counts(l, p, root);
+  double e = 0;  // a surviving stage-k cell leaves nothing
+  for (int k = 4; k >= 0; --k) {
+    EXPECT_NEAR(counts[k], std::pow(9.0, k) * std::pow(0.5, k) * (1 - e), 1e-9) << k;
+    e = std::pow(1 - 0.5 * (1 - e), 9);
+  }
+}
+
+}  // namespace curdle

@@ -272,10 +272,14 @@ std::vector<uint64_t> box_counts(const Curd& curd, uint64_t children) {
 }
 
 std::optional<LineFit> fit_box_dimension(const std::vector<uint64_t>& counts, int base) {
+  return fit_box_dimension(std::vector<double>(counts.begin(), counts.end()), base);
+}
+
+std::optional<LineFit> fit_box_dimension(const std::vector<double>& counts, int base) {
   double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
   int n = 0;
   for (size_t j = 0; j < counts.size(); ++j) {
-    if (counts[j] == 0) continue;
+    if (!(counts[j] > 0)) continue;
     const double x = static_cast<double>(j) * std::log(static_cast<double>(base));
     const double y = std::log(static_cast<double>(counts[j]));
     sx += x, sy += y, sxx += x * x, sxy += x * y, syy += y * y;

@@ -33,5 +33,7 @@ struct LineFit {
 // Least-squares slope of log counts[j] against j log b over the levels with a non-zero count;
 // nullopt with fewer than two such levels.
 std::optional<LineFit> fit_box_dimension(const std::vector<uint64_t>& counts, int base);
+// The same over expected (real) counts.
+std::optional<LineFit> fit_box_dimension(const std::vector<double>& counts, int base);
 
 }  // namespace curdle

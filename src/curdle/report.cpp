@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "curdle/extinction.h"
 #include "curdle/overlay.h"
 #include "curdle/theory.h"
 
@@ -44,6 +45,9 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     cr.roots = curd.stages[0].count();
     cr.root_box_count = cr.box_counts[0];
     uint64_t previous = cr.roots;
+    cr.expected_box_counts = expected_box_counts(l, spec.probabilities, view);
+    // Per root cell meeting the view: N_k <= R b^(E k), so the ratio never exceeds E.
+    const double roots = static_cast<double>(cells_meeting(l, 0, view));
     for (int k = 1; k <= l.stages; ++k) {
       StageRow row;
       row.stage = k;
@@ -55,15 +59,17 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
       row.expected_sd =
           quota && !report.sd_is_approximate ? 0.0 : survivors_sd(l, spec.probabilities, k, view);
       row.box_count = cr.box_counts[k];
+      row.expected_box_count = cr.expected_box_counts[static_cast<size_t>(k)];
       if (row.survivors > 0 && previous > 0)
         row.local_dimension = std::log(static_cast<double>(row.survivors) / previous) / log_b;
       if (row.survivors > 0)
-        row.mean_dimension = std::log(static_cast<double>(row.survivors)) / (k * log_b);
+        row.mean_dimension = std::log(static_cast<double>(row.survivors) / roots) / (k * log_b);
       row.theory_dimension = finite(theory_dimension(l, row.probability.value()));
       previous = row.survivors;
       cr.stages.push_back(row);
     }
     cr.fit = fit_box_dimension(cr.box_counts, l.base);
+    cr.expected_fit = fit_box_dimension(cr.expected_box_counts, l.base);
     cr.final_probability = survival_probability(spec.probabilities, l.stages);
     cr.theory_dimension =
         finite(theory_dimension(l, std::pow(cr.final_probability, 1.0 / l.stages)));

@@ -20,8 +20,9 @@ struct StageRow {
   double expected = 0;     // C_k * p_1 ... p_k
   double expected_sd = 0;
   uint64_t box_count = 0;                  // stage-k cells keeping a final survivor
+  double expected_box_count = 0;           // its expectation at this K, with extinction
   std::optional<double> local_dimension;   // log(N_k / N_(k-1)) / log b
-  std::optional<double> mean_dimension;    // log N_k / (k log b), biased low
+  std::optional<double> mean_dimension;    // log(N_k / R) / (k log b), R roots meeting the view
   std::optional<double> theory_dimension;  // E + log p_k / log b
 };
 
@@ -32,7 +33,9 @@ struct CurdReport {
   std::vector<StageRow> stages;      // k = 1..K
   std::vector<uint64_t> box_counts;  // level 0..K
   std::optional<LineFit> fit;
-  std::optional<double> theory_dimension;  // E + log(P_K^(1/K)) / log b
+  std::vector<double> expected_box_counts;  // level 0..K, at this K and view (extinction.h)
+  std::optional<LineFit> expected_fit;      // the same fit over the expected counts
+  std::optional<double> theory_dimension;   // E + log(P_K^(1/K)) / log b, the limit K -> inf
   double final_probability = 0;            // P_K
 };
 

@@ -9,7 +9,8 @@ the installer's map's drawing of the element; a perforation's sheet DXF. Also th
 millimetres (AutoCAD 2000, $INSUNITS 4) and audits clean, and that the schedule's areas add up
 to the quantities' laid areas.
 
-Usage: pieces_agree.py CURDLE RECIPE WORKDIR   (Debian's python3 with python3-ezdxf)
+Usage: pieces_agree.py CURDLE RECIPE WORKDIR [CORNER,CORNER,...]
+(Debian's python3 with python3-ezdxf; every corner unless some are named)
 """
 import csv
 import json
@@ -267,6 +268,7 @@ def check(curdle, recipe, out, corner):
 
 def main():
     curdle, recipe, work = sys.argv[1:4]
+    corners = sys.argv[4].split(",") if len(sys.argv) > 4 else CORNERS
     os.makedirs(work, exist_ok=True)
     # Every corner when the kind takes one (the recipe's own is among them), else as written.
     with open(recipe, "rb") as f:
@@ -276,7 +278,7 @@ def main():
     elif layout.get("kind", "tile") in ("rhythm", "blocks"):
         check(curdle, recipe, os.path.join(work, "out"), None)
     else:
-        for i, corner in enumerate(CORNERS):
+        for i, corner in enumerate(corners):
             check(curdle, recipe, os.path.join(work, f"out{i}"), corner)
     if failures:
         print(f"{len(failures)} disagreements")

@@ -1,0 +1,146 @@
+#include "curdle/extinction.h"
+
+#include <cmath>
+#include <map>
+
+#include "curdle/theory.h"
+
+namespace curdle {
+namespace {
+
+// The part of a cell inside the view along one axis, in finest cells from the cell's start.
+using Span = std::pair<int64_t, int64_t>;
+using Shape = std::array<Span, 3>;  // per axis; unused axes hold {0, 1}
+
+// Exact mode's cells cut by the view take the hypergeometric sum up to this many children
+// (B^2 terms); above it, sampling with replacement, which differs by O(1/B).
+constexpr uint64_t kExactUpTo = 512;
+
+// Stage cells of side `side` meeting [lo, hi) along one axis, by the part of them inside.
+std::map<Span, uint64_t> spans_meeting(int64_t lo, int64_t hi, int64_t side) {
+  std::map<Span, uint64_t> out;
+  const int64_t first = floor_div(lo, side), last = floor_div(hi - 1, side);
+  for (const int64_t i : {first, last}) {
+    out[{std::max(lo, i * side) - i * side, std::min(hi, (i + 1) * side) - i * side}] += 1;
+    if (first == last) break;
+  }
+  if (last - first > 1) out[{0, side}] += static_cast<uint64_t>(last - first - 1);
+  return out;
+}
+
+// The children of a cell of side `side` whose inside part is `span`, by their inside parts.
+std::map<Span, uint64_t> child_spans(const Span& span, int64_t side, int base) {
+  std::map<Span, uint64_t> out;
+  const int64_t child = side / base;
+  for (int c = 0; c < base; ++c) {
+    const int64_t lo = std::max(span.first, c * child), hi = std::min(span.second, (c + 1) * child);
+    if (hi > lo) out[{lo - c * child, hi - c * child}] += 1;
+  }
+  return out;
+}
+
+// Cartesian product of per-axis classes: shapes with how many cells (or children) have each.
+std::vector<std::pair<Shape, uint64_t>> shapes(const std::array<std::map<Span, uint64_t>, 3>& axes,
+                                               int dimension) {
+  std::vector<std::pair<Shape, uint64_t>> out{{Shape{Span{0, 1}, Span{0, 1}, Span{0, 1}}, 1}};
+  for (int d = 0; d < dimension; ++d) {
+    std::vector<std::pair<Shape, uint64_t>> next;
+    for (const auto& [shape, n] : out)
+      for (const auto& [span, m] : axes[d]) {
+        Shape s = shape;
+        s[d] = span;
+        next.push_back({s, n * m});
+      }
+    out = std::move(next);
+  }
+  return out;
+}
+
+double log_choose(double n, double k) {
+  return std::lgamma(n + 1) - std::lgamma(k + 1) - std::lgamma(n - k + 1);
+}
+
+// E[prod of x over the chosen], `chosen` items drawn without replacement from `total`, of which
+// groups[g].second have the value groups[g].first and the rest the value 1.
+double hypergeometric_product(const std::vector<std::pair<double, uint64_t>>& groups,
+                              uint64_t total, uint64_t chosen) {
+  std::vector<double> weight(chosen + 1, 0.0);  // by how many remain to be chosen
+  weight[chosen] = 1;
+  double left = static_cast<double>(total);
+  for (const auto& [x, count] : groups) {
+    const double n = static_cast<double>(count);
+    std::vector<double> next(chosen + 1, 0.0);
+    for (uint64_t r = 0; r <= chosen; ++r) {
+      if (weight[r] == 0) continue;
+      for (uint64_t j = 0; j <= std::min<uint64_t>(count, r); ++j) {
+        const double rest = left - n, need = static_cast<double>(r - j);
+        if (need > rest) continue;
+        const double h = std::exp(log_choose(n, static_cast<double>(j)) + log_choose(rest, need) -
+                                  log_choose(left, static_cast<double>(r)));
+        next[r - j] += weight[r] * h * std::pow(x, static_cast<double>(j));
+      }
+    }
+    weight = std::move(next);
+    left -= n;
+  }
+  double sum = 0;  // the rest are outside the view: value 1, whatever is still to choose
+  for (double w : weight) sum += w;
+  return sum;
+}
+
+class Extinction {
+ public:
+  Extinction(const Lattice& l, const std::vector<Probability>& p) : l_(l), p_(p) {}
+
+  // The chance that a surviving stage-k cell with this inside part leaves no finest survivor
+  // inside the view.
+  double operator()(int k, const Shape& shape) {
+    if (k == l_.stages) return 0.0;
+    const auto key = std::make_pair(k, shape);
+    if (const auto it = memo_.find(key); it != memo_.end()) return it->second;
+    const int64_t side = static_cast<int64_t>(l_.side_in_cells(k));
+    std::array<std::map<Span, uint64_t>, 3> axes;
+    for (int d = 0; d < l_.dimension; ++d) axes[d] = child_spans(shape[d], side, l_.base);
+    const double p = p_[static_cast<size_t>(k)].value();
+    std::vector<std::pair<double, uint64_t>> groups;
+    for (const auto& [child, n] : shapes(axes, l_.dimension))
+      groups.push_back({(*this)(k + 1, child), n});
+    double e = 1;
+    const uint64_t B = l_.children();
+    const auto m = static_cast<uint64_t>(std::llround(p * static_cast<double>(B)));
+    if (l_.mode == Mode::exact && groups.size() == 1 && groups[0].second == B) {
+      e = std::pow(groups[0].first, static_cast<double>(m));  // all m chosen children alike
+    } else if (l_.mode == Mode::exact && B <= kExactUpTo) {
+      e = hypergeometric_product(groups, B, m);
+    } else {  // canonical, quota, and exact cut cells of over kExactUpTo children (O(1/B) off)
+      for (const auto& [x, n] : groups) e *= std::pow(1 - p * (1 - x), static_cast<double>(n));
+    }
+    return memo_[key] = e;
+  }
+
+ private:
+  const Lattice& l_;
+  const std::vector<Probability>& p_;
+  std::map<std::pair<int, Shape>, double> memo_;
+};
+
+}  // namespace
+
+std::vector<double> expected_box_counts(const Lattice& l, const std::vector<Probability>& p,
+                                        const Box& view) {
+  Extinction extinction(l, p);
+  std::vector<double> out;
+  for (int k = 0; k <= l.stages; ++k) {
+    const int64_t side = static_cast<int64_t>(l.side_in_cells(k));
+    std::array<std::map<Span, uint64_t>, 3> axes;
+    for (int d = 0; d < l.dimension; ++d)
+      axes[d] = spans_meeting(view.origin[d], view.origin[d] + view.size[d], side);
+    double kept = 0;
+    for (const auto& [shape, n] : shapes(axes, l.dimension))
+      kept += static_cast<double>(n) * (1 - extinction(k, shape));
+    out.push_back(survival_probability(p, k) * kept);
+  }
+  return out;
+}
+
+}  // namespace curdle
