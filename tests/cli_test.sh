@@ -4,7 +4,7 @@
 # golden outputs still come out. Each section is its own ctest entry, so that they run side by
 # side. Usage: CURDLE=path/to/curdle cli_test.sh SOURCE_DIR SECTION [ARGUMENT]
 #   sections: pattern RECIPE, bad_recipe RECIPE, bad_options, segments, overrides, threads,
-#             golden, report, search, serve
+#             golden, report, search, measure, serve
 set -u
 src=${1:?source dir}
 section=${2:?section}
@@ -205,6 +205,32 @@ expect 2 "not a range of seeds" search "$fig7" --seeds 9..1 --out "$work/search-
 expect 2 "must fit in the view" search "$fig7" --seeds 1..5 --window 100,100 --out "$work/search-bad"
 expect 2 "inside the segment" search "$fig7" --seeds 1..5 --target 'empty=60,60,10,10' --out "$work/search-bad"
 [ ! -e "$work/search-bad" ] && pass || fail "a refused search left $work/search-bad"
+}
+
+# Measure: a picture's values come out in measure.json and a plot; bad pictures and options
+# exit 2 and leave nothing.
+section_measure() {
+local mask="$src/patterns/gallery-facade-mask.png"
+expect 0 "outputs in" measure "$mask" --out "$work/measure"
+[ -s "$work/measure/measure.png" ] && pass || fail "no measure.png"
+/usr/bin/python3 - "$work/measure/measure.json" <<'PY' && pass || fail "measure.json is not as described"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["size"] == [240, 120] and j["base"] == 2, j
+ground, figure = j["values"]
+assert ground["ground"] and "box_dimension" not in ground, ground
+assert figure["colour"] == "#000000" and 0 < figure["box_dimension"]["fit"] <= 2, figure
+assert abs(ground["share"] + figure["share"] - 1) < 1e-9
+assert figure["box_dimension"]["sizes"][0] == 1 and len(figure["box_dimension"]["counts"]) == 7
+PY
+expect 0 "(ground)" measure "$mask" --threshold 0.5 --base 3 --out "$work/measure3"
+expect 2 "is not a regular file" measure /dev/zero --out "$work/measure-bad"
+expect 2 "no such file" measure "$work/no-such.png" --out "$work/measure-bad"
+expect 2 "OpenImageIO" measure "$fig3" --out "$work/measure-bad"
+expect 2 "must be from 2 to 16" measure "$mask" --values 40 --out "$work/measure-bad"
+expect 2 "must be a luminance" measure "$mask" --threshold 1.5 --out "$work/measure-bad"
+expect 2 "must be from 2 to 64" measure "$mask" --base 1 --out "$work/measure-bad"
+[ ! -e "$work/measure-bad" ] && pass || fail "a refused measure left $work/measure-bad"
 }
 
 # Serve: bad recipes, a busy port and missing page files exit 2; SIGINT stops it cleanly.

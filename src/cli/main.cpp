@@ -8,6 +8,7 @@
 #include "cli/exit_code.h"
 #include "cli/generate_command.h"
 #include "cli/interrupt.h"
+#include "cli/measure_command.h"
 #include "cli/options.h"
 #include "cli/search_command.h"
 #include "cli/serve_command.h"
@@ -39,6 +40,11 @@ int run(int argc, char** argv) {
       "search", "Rank seeds, and segments of each seed's curd, by how well they meet targets");
   add_search_options(*find, search_options);
 
+  MeasureOptions measure_options;
+  CLI::App* meas = app.add_subcommand(
+      "measure", "Measure a picture: each value's share, lacunarity and box-counting dimension");
+  add_measure_options(*meas, measure_options);
+
   ServeOptions serve_options;
   CLI::App* serve = app.add_subcommand(
       "serve", "Serve the interactive page on a local address: edit, select segments, export");
@@ -46,10 +52,10 @@ int run(int argc, char** argv) {
 
   const std::string command = argc >= 2 ? argv[1] : "";
   if (argc >= 2 && argv[1][0] != '-' && command != "generate" && command != "report" &&
-      command != "search" && command != "serve") {
+      command != "search" && command != "serve" && command != "measure") {
     std::fprintf(stderr,
                  "curdle: error: unknown command '%s'; the commands are generate, report, "
-                 "search and serve (curdle --help)\n",
+                 "search, measure and serve (curdle --help)\n",
                  argv[1]);
     return 2;
   }
@@ -66,6 +72,7 @@ int run(int argc, char** argv) {
   if (gen->parsed()) return run_generate(gen_options, out_dir, outputs);
   if (find->parsed()) return run_search(search_options);
   if (serve->parsed()) return exec_serve(argc, argv);
+  if (meas->parsed()) return run_measure(measure_options);
   return run_report(report_options);
 }
 

@@ -1,0 +1,48 @@
+#include "export/bounded_image.h"
+
+#include <algorithm>
+
+namespace curdle {
+namespace {
+constexpr uint64_t kMaxFileBytes = uint64_t{64} << 20;
+}
+
+LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const std::string& what,
+                                      const SourceLocation& where, uint64_t max_bytes,
+                                      uint64_t max_pixels) {
+  // A device or a pipe (/dev/zero) would be read forever: regular files of bounded size only.
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    throw InputError(where, "cannot read " + what + " " + path.string() + ": no such file");
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(where, what + " " + path.string() + " is not a regular file");
+  const uint64_t file_bytes = std::filesystem::file_size(path, ec);
+  if (ec || file_bytes > kMaxFileBytes)
+    throw InputError(where, what + " " + path.string() + " is larger than 64 MiB");
+  const std::string readable = " (any image OpenImageIO reads: PNG, TIFF, JPEG, ...)";
+  ImageSize size;
+  try {
+    size = read_image_size(path);
+  } catch (const std::runtime_error& e) {
+    throw InputError(where,
+                     "cannot read " + what + " " + path.string() + ": " + e.what() + readable);
+  }
+  // Decoded as floats per channel, then luminance and a grid of values: 4 bytes each.
+  const uint64_t pixels = static_cast<uint64_t>(std::max(0, size.width)) *
+                          static_cast<uint64_t>(std::max(0, size.height));
+  const uint64_t need = pixels * (4 * static_cast<uint64_t>(std::max(1, size.channels)) + 8);
+  if (pixels == 0 || pixels > max_pixels || need > max_bytes)
+    throw ResourceLimitError(
+        where, what + " is " + std::to_string(size.width) + " x " + std::to_string(size.height) +
+                   " pixels, which would take about " + std::to_string(need >> 20) +
+                   " MiB to read; at most " + std::to_string(max_pixels) + " pixels and " +
+                   std::to_string(max_bytes >> 20) + " MiB; use a smaller image");
+  try {
+    return read_luminance(path);
+  } catch (const std::runtime_error& e) {
+    throw InputError(where,
+                     "cannot read " + what + " " + path.string() + ": " + e.what() + readable);
+  }
+}
+
+}  // namespace curdle

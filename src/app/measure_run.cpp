@@ -1,0 +1,55 @@
+#include "app/measure_run.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "app/run.h"
+#include "export/bounded_image.h"
+
+namespace curdle::app {
+namespace {
+// 8192 x 8192: box counts and lacunarity take about 30 bytes a pixel.
+constexpr uint64_t kMaxPixels = uint64_t{1} << 26;
+}  // namespace
+
+MeasuredPicture run_measure(const MeasureRequest& r) {
+  if (r.values < 2 || r.values > 16)
+    throw InputError("--values " + std::to_string(r.values) +
+                     ": must be from 2 to 16 (the values the picture is quantised to)");
+  if (r.threshold && !(*r.threshold > 0 && *r.threshold < 1))
+    throw InputError("--threshold must be a luminance between 0 (black) and 1 (white), e.g. 0.5");
+  if (r.base < 2 || r.base > 64)
+    throw InputError("--base " + std::to_string(r.base) + ": must be from 2 to 64");
+  const uint64_t memory = r.max_memory ? r.max_memory : default_memory_limit();
+  const LuminanceImage image = read_bounded_luminance(
+      r.image, "the picture", SourceLocation{r.image, 0, 0, "", ""}, memory, kMaxPixels);
+  MeasuredPicture picture;
+  picture.source = std::filesystem::path(r.image).filename().string();
+  const int count = r.threshold ? 2 : r.values;
+  ValueGrid grid;
+  if (r.threshold) {
+    grid = threshold(image.width, image.height, image.luminance, *r.threshold);
+    double light = 0, dark = 0, nl = 0, nd = 0;
+    for (size_t i = 0; i < image.luminance.size(); ++i)
+      (grid.values[i] ? (dark += image.luminance[i], nd += 1)
+                      : (light += image.luminance[i], nl += 1));
+    picture.levels = {nl ? light / nl : 1.0, nd ? dark / nd : 0.0};
+  } else {
+    grid = quantise(image.width, image.height, image.luminance, count, picture.levels);
+  }
+  picture.measurement = measure(grid, count, r.base);
+  return picture;
+}
+
+bool is_measure_output_name(const std::string& name, bool folder) {
+  return !folder && (name == "measure.json" || name == "measure.png");
+}
+
+void write_measure_outputs(const MeasuredPicture& picture, OutputSink& sink) {
+  sink.write("measure.json",
+             [&](std::ostream& out) { out << measure_to_json(picture).dump(1) << "\n"; });
+  const std::string png = encode_png(plot_box_counts(picture));
+  sink.write("measure.png", [&](std::ostream& out) { out << png; });
+}
+
+}  // namespace curdle::app

@@ -1,0 +1,28 @@
+// `measure`: a picture quantised to values and measured (curdle/measure.h), its files written
+// through a sink. Shared by the command line (and any shell that measures a picture).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "app/output_sink.h"
+#include "export/measure_files.h"
+
+namespace curdle::app {
+
+struct MeasureRequest {
+  std::string image;                // any picture OpenImageIO reads
+  int values = 2;                   // quantise to this many values, 2 to 16
+  std::optional<double> threshold;  // or two values: darker than this (0 to 1) is value 1
+  int base = 2;                     // boxes of side base^j
+  uint64_t max_memory = 0;          // bytes; 0: default_memory_limit()
+};
+
+// Reads, quantises and measures the picture; InputError for bad options or pictures.
+MeasuredPicture run_measure(const MeasureRequest& request);
+
+bool is_measure_output_name(const std::string& name, bool folder);
+// measure.json and measure.png.
+void write_measure_outputs(const MeasuredPicture& picture, OutputSink& sink);
+
+}  // namespace curdle::app
