@@ -4,7 +4,7 @@
 # golden outputs still come out. Each section is its own ctest entry, so that they run side by
 # side. Usage: CURDLE=path/to/curdle cli_test.sh SOURCE_DIR SECTION [ARGUMENT]
 #   sections: pattern RECIPE, bad_recipe RECIPE, bad_options, segments, overrides, threads,
-#             golden, report, search, measure, serve
+#             golden, report, search, measure, fit, serve
 set -u
 src=${1:?source dir}
 section=${2:?section}
@@ -231,6 +231,35 @@ expect 2 "must be from 2 to 16" measure "$mask" --values 40 --out "$work/measure
 expect 2 "must be a luminance" measure "$mask" --threshold 1.5 --out "$work/measure-bad"
 expect 2 "must be from 2 to 64" measure "$mask" --base 1 --out "$work/measure-bad"
 [ ! -e "$work/measure-bad" ] && pass || fail "a refused measure left $work/measure-bad"
+}
+
+# Fit: a curd drawn here (canonical, p = 0.8 at every stage, its own generator) is fitted back,
+# and the recipe written reads back and curdles; bad options exit 2 and write nothing.
+section_fit() {
+/usr/bin/python3 - "$work/curd.pgm" <<'PY'
+import random, sys
+random.seed(5)
+alive = [[True]]
+for _ in range(8):
+    n = len(alive) * 2
+    alive = [[alive[y // 2][x // 2] and random.random() < 0.8 for x in range(n)] for y in range(n)]
+with open(sys.argv[1], "wb") as f:
+    f.write(b"P5\n256 256\n255\n" + bytes(0 if a else 255 for row in alive for a in row))
+PY
+expect 0 "recipe in" fit "$work/curd.pgm" --base 2 --stages 8 --out "$work/fit/curd.toml"
+/usr/bin/python3 - "$work/fit/curd.toml" <<'PY' && pass || fail "the fitted probabilities are not near 0.8"
+import sys, tomllib
+r = tomllib.load(open(sys.argv[1], "rb"))
+p = r["curds"][0]["probabilities"]
+assert r["field"]["cells"] == [256, 256] and len(p) == 8, r
+assert all(abs(x - 0.8) < 0.02 for x in p[-2:]), p  # thousands of cells: within 0.02
+assert all(abs(x - 0.8) < 0.1 for x in p[2:]), p
+PY
+expect 0 "outputs in" generate "$work/fit/curd.toml" --out "$work/fit-out" --outputs report.json
+expect 2 "must be from 1 to 30" fit "$work/curd.pgm" --stages 0 --out "$work/fit-bad/x.toml"
+expect 2 "must be from 1 to 4" fit "$work/curd.pgm" --stages 3 --curds 9 --out "$work/fit-bad/x.toml"
+expect 2 "is not a regular file" fit /dev/zero --stages 3 --out "$work/fit-bad/x.toml"
+[ ! -e "$work/fit-bad" ] && pass || fail "a refused fit left $work/fit-bad"
 }
 
 # Serve: bad recipes, a busy port and missing page files exit 2; SIGINT stops it cleanly.

@@ -62,12 +62,16 @@ TEST(Theory, NoDimensionInTheReportExceedsTheLatticeDimension) {
       for (const StageRow& s : c.stages) {
         ASSERT_TRUE(s.mean_dimension);
         EXPECT_LE(*s.mean_dimension, 2 + 1e-12) << c.name << " stage " << s.stage;
-        if (s.local_dimension) EXPECT_LE(*s.local_dimension, 2 + 1e-12);
+        if (s.local_dimension) {
+          EXPECT_LE(*s.local_dimension, 2 + 1e-12);
+        }
       }
       ASSERT_TRUE(c.fit);
       EXPECT_LE(c.fit->slope, 2 + 1e-12);
     }
-    if (std::string(p) == "1") EXPECT_NEAR(*r.curds[0].stages[1].mean_dimension, 2.0, 1e-12);
+    if (std::string(p) == "1") {
+      EXPECT_NEAR(*r.curds[0].stages[1].mean_dimension, 2.0, 1e-12);
+    }
   }
 }
 

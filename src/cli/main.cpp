@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "cli/exit_code.h"
+#include "cli/fit_command.h"
 #include "cli/generate_command.h"
 #include "cli/interrupt.h"
 #include "cli/measure_command.h"
@@ -45,6 +46,11 @@ int run(int argc, char** argv) {
       "measure", "Measure a picture: each value's share, lacunarity and box-counting dimension");
   add_measure_options(*meas, measure_options);
 
+  FitOptions fit_options;
+  CLI::App* fit = app.add_subcommand(
+      "fit", "Fit a recipe to a picture: per-stage probabilities that give its statistics");
+  add_fit_options(*fit, fit_options);
+
   ServeOptions serve_options;
   CLI::App* serve = app.add_subcommand(
       "serve", "Serve the interactive page on a local address: edit, select segments, export");
@@ -52,10 +58,10 @@ int run(int argc, char** argv) {
 
   const std::string command = argc >= 2 ? argv[1] : "";
   if (argc >= 2 && argv[1][0] != '-' && command != "generate" && command != "report" &&
-      command != "search" && command != "serve" && command != "measure") {
+      command != "search" && command != "serve" && command != "measure" && command != "fit") {
     std::fprintf(stderr,
                  "curdle: error: unknown command '%s'; the commands are generate, report, "
-                 "search, measure and serve (curdle --help)\n",
+                 "search, measure, fit and serve (curdle --help)\n",
                  argv[1]);
     return 2;
   }
@@ -73,6 +79,7 @@ int run(int argc, char** argv) {
   if (find->parsed()) return run_search(search_options);
   if (serve->parsed()) return exec_serve(argc, argv);
   if (meas->parsed()) return run_measure(measure_options);
+  if (fit->parsed()) return run_fit(fit_options);
   return run_report(report_options);
 }
 

@@ -1,0 +1,78 @@
+#include "app/fit_run.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "app/run.h"
+#include "curdle/measure.h"
+#include "export/bounded_image.h"
+#include "export/measure_files.h"
+
+namespace curdle::app {
+namespace {
+constexpr uint64_t kMaxPixels = uint64_t{1} << 26;
+
+std::string recipe_text(const FittedRecipe& f, const std::string& source) {
+  std::string t = fmt::format(
+      "# Fitted by `curdle fit` to {}: per-stage probabilities whose expected box counts, with\n"
+      "# extinction, match the picture's occupied cells at every stage.\n"
+      "name = \"{}\"\nseed = 1\n\n[lattice]\nbase = {}\ndimension = 2\nstages = {}\n"
+      "mode = \"canonical\"\n\n[field]\ncells = [{}, {}]\n",
+      source, f.name, f.lattice.base, f.lattice.stages, f.width, f.height);
+  for (const FittedCurd& c : f.curds) {
+    std::string p;
+    for (const StageFit& s : c.stages)
+      p += (p.empty() ? "" : ", ") + fmt::format("{:.4f}", s.probability);
+    t += fmt::format("\n[[curds]]\nname = \"{}\"\nprobabilities = [{}]\ncolour = \"{}\"\n", c.name,
+                     p, c.colour);
+  }
+  return t;
+}
+
+}  // namespace
+
+FittedRecipe run_fit(const FitRequest& r) {
+  if (r.base < 2 || r.base > 64)
+    throw InputError("--base " + std::to_string(r.base) + ": must be from 2 to 64");
+  if (r.stages < 1 || r.stages > 30)
+    throw InputError("--stages " + std::to_string(r.stages) + ": must be from 1 to 30");
+  if (r.curds < 1 || r.curds > 4)
+    throw InputError("--curds " + std::to_string(r.curds) +
+                     ": must be from 1 to 4 (the picture is quantised to 2^n values)");
+  const uint64_t memory = r.max_memory ? r.max_memory : default_memory_limit();
+  const LuminanceImage image = read_bounded_luminance(
+      r.source, "the picture", SourceLocation{r.source, 0, 0, "", ""}, memory, kMaxPixels);
+  FittedRecipe f;
+  f.name = std::filesystem::path(r.source).stem().string() + "-fit";
+  for (char& c : f.name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '-';
+  f.lattice = Lattice{r.base, 2, r.stages, Mode::canonical};
+  f.width = image.width, f.height = image.height;
+  std::vector<double> levels;
+  const int values = 1 << r.curds;
+  const ValueGrid grid = quantise(image.width, image.height, image.luminance, values, levels);
+  const Box field{{0, 0, 0}, {f.width, f.height, 1}};
+  for (int c = 0; c < r.curds; ++c) {
+    // Cells with the curd's bit, y up from the picture's bottom row.
+    std::vector<bool> cells(static_cast<size_t>(f.width * f.height));
+    for (int64_t y = 0; y < f.height; ++y)
+      for (int64_t x = 0; x < f.width; ++x)
+        cells[static_cast<size_t>(y * f.width + x)] =
+            grid.values[static_cast<size_t>((f.height - 1 - y) * f.width + x)] >> c & 1;
+    FittedCurd curd;
+    curd.name = r.curds == 1 ? "figure" : "curd-" + std::to_string(c + 1);
+    curd.colour = level_colour(levels[static_cast<size_t>(1) << c]);
+    curd.stages = fit_probabilities(f.lattice, field, occupied_cells(f.lattice, field, cells));
+    f.curds.push_back(std::move(curd));
+  }
+  f.toml = recipe_text(f, std::filesystem::path(r.source).filename().string());
+  // The recipe must read back as written: a fitted recipe curdle refuses is a bug here.
+  RunRequest check;
+  check.recipe_text = f.toml;
+  check.recipe_path = f.name + ".toml";
+  (void)resolve_run(check);
+  return f;
+}
+
+}  // namespace curdle::app

@@ -1,0 +1,38 @@
+// `fit`: a recipe fitted to a picture (curdle/fit.h): the picture quantised to 2^n values whose
+// bits are the curds (value 0 the lightest), each curd's per-stage probabilities fitted to its
+// occupied cells, and the recipe written as TOML that curdle reads back.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "curdle/fit.h"
+#include "curdle/lattice.h"
+
+namespace curdle::app {
+
+struct FitRequest {
+  std::string source;  // a picture OpenImageIO reads
+  int base = 2;
+  int stages = 0;
+  int curds = 1;
+  uint64_t max_memory = 0;  // bytes; 0: default_memory_limit()
+};
+
+struct FittedCurd {
+  std::string name;
+  std::string colour;  // "#rrggbb": the grey of the value holding only this curd
+  std::vector<StageFit> stages;
+};
+
+struct FittedRecipe {
+  std::string name;  // of the source, for the recipe
+  Lattice lattice;
+  int64_t width = 0, height = 0;  // the field in cells: a cell a pixel
+  std::vector<FittedCurd> curds;
+  std::string toml;  // the recipe, checked by reading it back
+};
+
+FittedRecipe run_fit(const FitRequest& request);
+
+}  // namespace curdle::app

@@ -1,0 +1,60 @@
+#include "cli/fit_command.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "app/fit_run.h"
+#include "app/run.h"
+#include "cli/options.h"
+#include "export/atomic_file.h"
+
+namespace fs = std::filesystem;
+
+namespace curdle::cli {
+
+void add_fit_options(CLI::App& c, FitOptions& o) {
+  c.add_option("source", o.source, "Picture to fit (PNG, TIFF, JPEG, ...)")
+      ->required()
+      ->check(kNotEmpty);
+  c.add_option("--base", o.base, "Lattice base b (default 2)");
+  c.add_option("--stages", o.stages, "Stages K")->required();
+  c.add_option("--curds", o.curds,
+               "Curds n: the picture is quantised to 2^n values, lightest first, whose bits are "
+               "the curds (default 1: the dark figure)");
+  c.add_option("--out", o.out, "Recipe to write (default: curdle-out/<source name>-fit.toml)")
+      ->check(kNotEmpty);
+  c.add_option("--max-memory", o.max_memory, "Refuse pictures above this much memory, e.g. 2G")
+      ->check(kNotEmpty);
+}
+
+int run_fit(const FitOptions& o) {
+  app::FitRequest request;
+  request.source = o.source;
+  request.base = o.base;
+  request.stages = o.stages;
+  request.curds = o.curds;
+  if (!o.max_memory.empty()) request.max_memory = app::parse_bytes(o.max_memory, "max_memory");
+  const app::FittedRecipe f = app::run_fit(request);
+  const fs::path out =
+      o.out.empty() ? fs::path("curdle-out") / (f.name + ".toml") : fs::path(o.out);
+  if (out.has_parent_path()) make_output_dir(out.parent_path());
+  write_file(out, [&](std::ostream& s) { s << f.toml; });
+
+  std::printf("%s: %lld x %lld cells, base %d, %d stages\n", o.source.c_str(),
+              static_cast<long long>(f.width), static_cast<long long>(f.height), f.lattice.base,
+              f.lattice.stages);
+  for (const app::FittedCurd& c : f.curds) {
+    std::printf("curd '%s' (%s)\n", c.name.c_str(), c.colour.c_str());
+    std::printf("  %5s %12s %12s %10s %21s\n", "stage", "measured", "expected", "p",
+                "95 % interval of p");
+    for (const StageFit& s : c.stages)
+      std::printf("  %5d %12llu %12.1f %10.4f       %.4f to %.4f\n", s.stage,
+                  static_cast<unsigned long long>(s.measured), s.expected, s.probability,
+                  std::max(0.0, s.probability - 1.96 * s.sd),
+                  std::min(1.0, s.probability + 1.96 * s.sd));
+  }
+  std::printf("recipe in %s\n", fs::absolute(out).lexically_normal().c_str());
+  return 0;
+}
+
+}  // namespace curdle::cli
