@@ -256,6 +256,18 @@ assert all(abs(x - 0.8) < 0.02 for x in p[-2:]), p  # thousands of cells: within
 assert all(abs(x - 0.8) < 0.1 for x in p[2:]), p
 PY
 expect 0 "outputs in" generate "$work/fit/curd.toml" --out "$work/fit-out" --outputs report.json
+# A cells.csv brings its curds: fig. 3's on 16 x 16 roots come back near 3/4, 2/3, 3/4, 2/3.
+expect 0 "outputs in" generate "$fig3" --set 'field.cells=[256,256]' --set lattice.stages=4 \
+  --set 'curds.0.probabilities=["3/4","2/3","3/4","2/3"]' \
+  --set 'curds.1.probabilities=["3/4","2/3","3/4","2/3"]' --out "$work/fig3-big" --outputs cells.csv
+expect 0 "curd 'blue'" fit "$work/fig3-big/cells.csv" --base 4 --stages 4 --out "$work/fit/fig3.toml"
+/usr/bin/python3 - "$work/fit/fig3.toml" <<'PY' && pass || fail "the cells.csv fit is off"
+import sys, tomllib
+r = tomllib.load(open(sys.argv[1], "rb"))
+assert [c["name"] for c in r["curds"]] == ["red", "blue"], r
+for c in r["curds"]:
+    assert abs(c["probabilities"][3] - 2 / 3) < 0.02 and abs(c["probabilities"][2] - 0.75) < 0.04, c
+PY
 expect 2 "must be from 1 to 30" fit "$work/curd.pgm" --stages 0 --out "$work/fit-bad/x.toml"
 expect 2 "must be from 1 to 4" fit "$work/curd.pgm" --stages 3 --curds 9 --out "$work/fit-bad/x.toml"
 expect 2 "is not a regular file" fit /dev/zero --stages 3 --out "$work/fit-bad/x.toml"

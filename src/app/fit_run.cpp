@@ -7,27 +7,43 @@
 #include "app/run.h"
 #include "curdle/measure.h"
 #include "export/bounded_image.h"
+#include "export/cells_csv_reader.h"
 #include "export/measure_files.h"
 
 namespace curdle::app {
 namespace {
-constexpr uint64_t kMaxPixels = uint64_t{1} << 26;
+constexpr uint64_t kMaxPixels = uint64_t{1} << 26;  // cells too: a picture's or a cells.csv's
+constexpr uint64_t kMaxCsvBytes = uint64_t{2} << 30;
 
 std::string recipe_text(const FittedRecipe& f, const std::string& source) {
+  std::string cells;
+  for (int d = 0; d < f.lattice.dimension; ++d)
+    cells += (d ? ", " : "") + std::to_string(f.size[static_cast<size_t>(d)]);
   std::string t = fmt::format(
       "# Fitted by `curdle fit` to {}: per-stage probabilities whose expected box counts, with\n"
       "# extinction, match the picture's occupied cells at every stage.\n"
-      "name = \"{}\"\nseed = 1\n\n[lattice]\nbase = {}\ndimension = 2\nstages = {}\n"
-      "mode = \"canonical\"\n\n[field]\ncells = [{}, {}]\n",
-      source, f.name, f.lattice.base, f.lattice.stages, f.width, f.height);
+      "name = \"{}\"\nseed = 1\n\n[lattice]\nbase = {}\ndimension = {}\nstages = {}\n"
+      "mode = \"canonical\"\n\n[field]\ncells = [{}]\n",
+      source, f.name, f.lattice.base, f.lattice.dimension, f.lattice.stages, cells);
   for (const FittedCurd& c : f.curds) {
     std::string p;
     for (const StageFit& s : c.stages)
       p += (p.empty() ? "" : ", ") + fmt::format("{:.4f}", s.probability);
-    t += fmt::format("\n[[curds]]\nname = \"{}\"\nprobabilities = [{}]\ncolour = \"{}\"\n", c.name,
-                     p, c.colour);
+    t += fmt::format("\n[[curds]]\nname = \"{}\"\nprobabilities = [{}]\n", c.name, p);
+    if (!c.colour.empty()) t += fmt::format("colour = \"{}\"\n", c.colour);
   }
   return t;
+}
+
+// The recipe's text, checked: it must read back as written (a fitted recipe curdle refuses is
+// a bug here).
+FittedRecipe finish(FittedRecipe f, const std::string& source) {
+  f.toml = recipe_text(f, std::filesystem::path(source).filename().string());
+  RunRequest check;
+  check.recipe_text = f.toml;
+  check.recipe_path = f.name + ".toml";
+  (void)resolve_run(check);
+  return f;
 }
 
 }  // namespace
@@ -40,39 +56,52 @@ FittedRecipe run_fit(const FitRequest& r) {
   if (r.curds < 1 || r.curds > 4)
     throw InputError("--curds " + std::to_string(r.curds) +
                      ": must be from 1 to 4 (the picture is quantised to 2^n values)");
-  const uint64_t memory = r.max_memory ? r.max_memory : default_memory_limit();
-  const LuminanceImage image = read_bounded_luminance(
-      r.source, "the picture", SourceLocation{r.source, 0, 0, "", ""}, memory, kMaxPixels);
   FittedRecipe f;
   f.name = std::filesystem::path(r.source).stem().string() + "-fit";
   for (char& c : f.name)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '-';
+  if (std::filesystem::path(r.source).extension() == ".csv") {
+    // A curd field as curdle writes it: the curds and their cells are the file's own.
+    const CellsTable table =
+        parse_cells_csv(read_bounded_text(r.source, "the cells file",
+                                          "a cells.csv as curdle generate writes it", kMaxCsvBytes),
+                        kMaxPixels);
+    f.lattice = Lattice{r.base, table.dimension, r.stages, Mode::canonical};
+    f.size = table.box.size;
+    const Box field{{0, 0, 0}, table.box.size};
+    for (size_t c = 0; c < table.curds.size(); ++c) {
+      FittedCurd curd;
+      curd.name = table.curds[c];
+      curd.stages =
+          fit_probabilities(f.lattice, field, occupied_cells(f.lattice, field, table.cells[c]));
+      f.curds.push_back(std::move(curd));
+    }
+    return finish(f, r.source);
+  }
+  const uint64_t memory = r.max_memory ? r.max_memory : default_memory_limit();
+  const LuminanceImage image = read_bounded_luminance(
+      r.source, "the picture", SourceLocation{r.source, 0, 0, "", ""}, memory, kMaxPixels);
   f.lattice = Lattice{r.base, 2, r.stages, Mode::canonical};
-  f.width = image.width, f.height = image.height;
+  f.size = {image.width, image.height, 1};
+  const int64_t width = image.width, height = image.height;
   std::vector<double> levels;
   const int values = 1 << r.curds;
   const ValueGrid grid = quantise(image.width, image.height, image.luminance, values, levels);
-  const Box field{{0, 0, 0}, {f.width, f.height, 1}};
+  const Box field{{0, 0, 0}, f.size};
   for (int c = 0; c < r.curds; ++c) {
     // Cells with the curd's bit, y up from the picture's bottom row.
-    std::vector<bool> cells(static_cast<size_t>(f.width * f.height));
-    for (int64_t y = 0; y < f.height; ++y)
-      for (int64_t x = 0; x < f.width; ++x)
-        cells[static_cast<size_t>(y * f.width + x)] =
-            grid.values[static_cast<size_t>((f.height - 1 - y) * f.width + x)] >> c & 1;
+    std::vector<bool> cells(static_cast<size_t>(width * height));
+    for (int64_t y = 0; y < height; ++y)
+      for (int64_t x = 0; x < width; ++x)
+        cells[static_cast<size_t>(y * width + x)] =
+            grid.values[static_cast<size_t>((height - 1 - y) * width + x)] >> c & 1;
     FittedCurd curd;
     curd.name = r.curds == 1 ? "figure" : "curd-" + std::to_string(c + 1);
     curd.colour = level_colour(levels[static_cast<size_t>(1) << c]);
     curd.stages = fit_probabilities(f.lattice, field, occupied_cells(f.lattice, field, cells));
     f.curds.push_back(std::move(curd));
   }
-  f.toml = recipe_text(f, std::filesystem::path(r.source).filename().string());
-  // The recipe must read back as written: a fitted recipe curdle refuses is a bug here.
-  RunRequest check;
-  check.recipe_text = f.toml;
-  check.recipe_path = f.name + ".toml";
-  (void)resolve_run(check);
-  return f;
+  return finish(f, r.source);
 }
 
 }  // namespace curdle::app

@@ -1,8 +1,10 @@
-// `fit`: a recipe fitted to a picture (curdle/fit.h): the picture quantised to 2^n values whose
-// bits are the curds (value 0 the lightest), each curd's per-stage probabilities fitted to its
-// occupied cells, and the recipe written as TOML that curdle reads back.
+// `fit`: a recipe fitted to a picture or a cells.csv (curdle/fit.h). A picture is quantised to
+// 2^n values whose bits are the curds (value 0 the lightest); a cells.csv brings its own curds
+// and dimension. Each curd's per-stage probabilities are fitted to its occupied cells, and the
+// recipe is written as TOML that curdle reads back.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -12,7 +14,7 @@
 namespace curdle::app {
 
 struct FitRequest {
-  std::string source;  // a picture OpenImageIO reads
+  std::string source;  // a picture OpenImageIO reads, or a cells.csv
   int base = 2;
   int stages = 0;
   int curds = 1;
@@ -21,14 +23,14 @@ struct FitRequest {
 
 struct FittedCurd {
   std::string name;
-  std::string colour;  // "#rrggbb": the grey of the value holding only this curd
+  std::string colour;  // "#rrggbb": the grey of the value holding only this curd; empty: none
   std::vector<StageFit> stages;
 };
 
 struct FittedRecipe {
   std::string name;  // of the source, for the recipe
   Lattice lattice;
-  int64_t width = 0, height = 0;  // the field in cells: a cell a pixel
+  std::array<int64_t, 3> size{1, 1, 1};  // the field in cells: a cell a pixel
   std::vector<FittedCurd> curds;
   std::string toml;  // the recipe, checked by reading it back
 };

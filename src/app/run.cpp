@@ -57,24 +57,26 @@ uint64_t parse_bytes(const std::string& text, const std::string& name) {
   return static_cast<uint64_t>(value * scale);
 }
 
-std::string read_recipe_file(const std::string& path) {
+std::string read_bounded_text(const std::string& path, const std::string& what,
+                              const std::string& kind, uint64_t max_bytes) {
+  const SourceLocation where{path, 0, 0, "", ""};
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0)
-    throw InputError(SourceLocation{path, 0, 0, "", ""},
-                     std::string("cannot read the recipe: ") + std::strerror(errno));
-  if (!S_ISREG(info.st_mode))
-    throw InputError(SourceLocation{path, 0, 0, "", ""},
-                     "is not a regular file; a recipe is a TOML file such as patterns/tiles.toml");
-  if (static_cast<uint64_t>(info.st_size) > kMaxRecipeBytes)
-    throw InputError(SourceLocation{path, 0, 0, "", ""},
-                     "is " + std::to_string(info.st_size) + " bytes; a recipe is at most 1 MiB");
+    throw InputError(where, "cannot read " + what + ": " + std::strerror(errno));
+  if (!S_ISREG(info.st_mode)) throw InputError(where, "is not a regular file; " + kind);
+  if (static_cast<uint64_t>(info.st_size) > max_bytes)
+    throw InputError(where, "is " + std::to_string(info.st_size) + " bytes; " + what +
+                                " is at most " + std::to_string(max_bytes >> 20) + " MiB");
   std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(SourceLocation{path, 0, 0, "", ""},
-                     std::string("cannot read the recipe: ") + std::strerror(errno));
+  if (!in) throw InputError(where, "cannot read " + what + ": " + std::strerror(errno));
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+std::string read_recipe_file(const std::string& path) {
+  return read_bounded_text(path, "the recipe",
+                           "a recipe is a TOML file such as patterns/tiles.toml", kMaxRecipeBytes);
 }
 
 Run resolve_run(const RunRequest& request) {

@@ -13,14 +13,15 @@ namespace fs = std::filesystem;
 namespace curdle::cli {
 
 void add_fit_options(CLI::App& c, FitOptions& o) {
-  c.add_option("source", o.source, "Picture to fit (PNG, TIFF, JPEG, ...)")
+  c.add_option("source", o.source,
+               "Picture to fit (PNG, TIFF, JPEG, ...), or a cells.csv as generate writes it")
       ->required()
       ->check(kNotEmpty);
   c.add_option("--base", o.base, "Lattice base b (default 2)");
   c.add_option("--stages", o.stages, "Stages K")->required();
   c.add_option("--curds", o.curds,
                "Curds n: the picture is quantised to 2^n values, lightest first, whose bits are "
-               "the curds (default 1: the dark figure)");
+               "the curds (default 1: the dark figure); a cells.csv brings its own curds");
   c.add_option("--out", o.out, "Recipe to write (default: curdle-out/<source name>-fit.toml)")
       ->check(kNotEmpty);
   c.add_option("--max-memory", o.max_memory, "Refuse pictures above this much memory, e.g. 2G")
@@ -40,11 +41,14 @@ int run_fit(const FitOptions& o) {
   if (out.has_parent_path()) make_output_dir(out.parent_path());
   write_file(out, [&](std::ostream& s) { s << f.toml; });
 
-  std::printf("%s: %lld x %lld cells, base %d, %d stages\n", o.source.c_str(),
-              static_cast<long long>(f.width), static_cast<long long>(f.height), f.lattice.base,
-              f.lattice.stages);
+  std::string size;
+  for (int d = 0; d < f.lattice.dimension; ++d)
+    size += (d ? " x " : "") + std::to_string(f.size[static_cast<size_t>(d)]);
+  std::printf("%s: %s cells, base %d, %d-D, %d stages\n", o.source.c_str(), size.c_str(),
+              f.lattice.base, f.lattice.dimension, f.lattice.stages);
   for (const app::FittedCurd& c : f.curds) {
-    std::printf("curd '%s' (%s)\n", c.name.c_str(), c.colour.c_str());
+    std::printf("curd '%s'%s\n", c.name.c_str(),
+                c.colour.empty() ? "" : (" (" + c.colour + ")").c_str());
     std::printf("  %5s %12s %12s %10s %21s\n", "stage", "measured", "expected", "p",
                 "95 % interval of p");
     for (const StageFit& s : c.stages)
