@@ -42,6 +42,13 @@ std::string format_report_table(const Report& r) {
         c.fit ? number(c.fit->slope) : "-", c.fit ? number(c.fit->r2, 4) : "-",
         c.fit ? c.fit->points : 0, r.lattice.stages,
         c.expected_fit ? number(c.expected_fit->slope) : "-", number(c.theory_dimension)));
+    // Shown when the view cuts boxes, so that the two fits differ.
+    if (c.share_weighted_fit && c.fit &&
+        std::fabs(c.share_weighted_fit->slope - c.fit->slope) > 1e-9)
+      line(fmt::format(
+          "  boxes the view cuts weighted by the share it shows: fit {}; expected {}",
+          number(c.share_weighted_fit->slope),
+          c.expected_share_weighted_fit ? number(c.expected_share_weighted_fit->slope) : "-"));
   }
   line("");
   line(fmt::format("  {:>6} {:<28} {:>12} {:>12}", "value", "curds", "count", "expected"));

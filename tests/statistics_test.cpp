@@ -157,22 +157,34 @@ namespace {
 // Box counts at every level against their finite-K expectation with extinction, over seeds.
 void expect_box_counts_match(const Design& d, const Box& view, int seeds) {
   const int K = d.lattice.stages;
-  std::vector<std::vector<double>> counts(static_cast<size_t>(K + 1));
+  std::vector<std::vector<double>> counts(static_cast<size_t>(K + 1)), weighted = counts;
   CurdField f;
   std::vector<Bitset> scratch;
   for (int seed = 0; seed < seeds; ++seed) {
     curdle_into(d, static_cast<uint64_t>(seed), view, f);
     const auto c = box_counts(f.curds[0], d.lattice.children(), scratch);
-    for (int k = 0; k <= K; ++k) counts[k].push_back(static_cast<double>(c[k]));
+    const std::vector<uint16_t> values = values_in(f, view);
+    const auto w =
+        share_weighted_box_counts(d.lattice, view, std::vector<bool>(values.begin(), values.end()));
+    for (int k = 0; k <= K; ++k) {
+      counts[k].push_back(static_cast<double>(c[k]));
+      weighted[k].push_back(w[k]);
+      // Weights are at most 1, and whole boxes weigh 1: between the boxes inside and all.
+      EXPECT_LE(w[k], static_cast<double>(c[k]) + 1e-9);
+    }
   }
-  const auto expected = expected_box_counts(d.lattice, d.curds[0].probabilities, view);
+  const auto& p = d.curds[0].probabilities;
+  const auto expected = expected_box_counts(d.lattice, p, view);
+  const auto expected_weighted = expected_share_weighted_box_counts(d.lattice, p, view);
   for (int k = 0; k <= K; ++k) {
-    const Moments m = moments(counts[k]);
     // A level of few cells may show no spread in the sample: the spread of one cell kept with
     // the mean share is the least the bound allows.
     const double share = expected[k] / static_cast<double>(cells_meeting(d.lattice, k, view));
     const double floor = std::sqrt(share * (1 - share) / seeds);
+    const Moments m = moments(counts[k]), mw = moments(weighted[k]);
     EXPECT_NEAR(m.mean, expected[k], 4 * std::max(m.se_mean, floor)) << "level " << k;
+    EXPECT_NEAR(mw.mean, expected_weighted[k], 4 * std::max(mw.se_mean, floor) + 1e-9)
+        << "weighted, level " << k;
   }
 }
 

@@ -95,3 +95,21 @@ TEST(Theory, ExpectedBoxCountsFollowTheGeneratingFunction) {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+// The 20 m paving: 67 x 67 cells of base-4 roots of 64. Counted whole, the crop's boxes pull
+// the expected fit far below the limit; weighted by the share the view shows, it is near it.
+TEST(Theory, SharesOfCutBoxesBringACropsFitToTheLimit) {
+  Design d = design(4, 2, {{"2/3", "1/2", "1/3"}});
+  d.field = Box{{0, 0, 0}, {67, 67, 1}};
+  const Report r = make_report(d, 7, curdle(d, 7, d.field), d.field);
+  const CurdReport& c = r.curds[0];
+  ASSERT_TRUE(c.expected_fit && c.expected_share_weighted_fit && c.theory_dimension);
+  EXPECT_LT(c.expected_fit->slope, *c.theory_dimension - 0.2);
+  EXPECT_NEAR(c.expected_share_weighted_fit->slope, *c.theory_dimension, 0.02);
+  ASSERT_TRUE(c.share_weighted_fit);
+  EXPECT_NEAR(c.share_weighted_fit->slope, *c.theory_dimension, 0.1);  // this seed's curd
+}
+
+}  // namespace curdle

@@ -126,8 +126,10 @@ class Extinction {
 
 }  // namespace
 
-std::vector<double> expected_box_counts(const Lattice& l, const std::vector<Probability>& p,
-                                        const Box& view) {
+namespace {
+
+std::vector<double> expected_counts(const Lattice& l, const std::vector<Probability>& p,
+                                    const Box& view, bool weighted) {
   Extinction extinction(l, p);
   std::vector<double> out;
   for (int k = 0; k <= l.stages; ++k) {
@@ -136,9 +138,72 @@ std::vector<double> expected_box_counts(const Lattice& l, const std::vector<Prob
     for (int d = 0; d < l.dimension; ++d)
       axes[d] = spans_meeting(view.origin[d], view.origin[d] + view.size[d], side);
     double kept = 0;
-    for (const auto& [shape, n] : shapes(axes, l.dimension))
-      kept += static_cast<double>(n) * (1 - extinction(k, shape));
+    for (const auto& [shape, n] : shapes(axes, l.dimension)) {
+      double share = 1;  // of the cell's cells inside the view
+      for (int d = 0; d < l.dimension; ++d)
+        share *= static_cast<double>(shape[d].second - shape[d].first) / static_cast<double>(side);
+      kept += static_cast<double>(n) * (weighted ? share : 1.0) * (1 - extinction(k, shape));
+    }
     out.push_back(survival_probability(p, k) * kept);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> expected_box_counts(const Lattice& l, const std::vector<Probability>& p,
+                                        const Box& view) {
+  return expected_counts(l, p, view, false);
+}
+
+std::vector<double> expected_share_weighted_box_counts(const Lattice& l,
+                                                       const std::vector<Probability>& p,
+                                                       const Box& view) {
+  return expected_counts(l, p, view, true);
+}
+
+std::vector<double> share_weighted_box_counts(const Lattice& l, const Box& view,
+                                              const std::vector<bool>& cells) {
+  // Occupied boxes of each level over their absolute index ranges, from the finest (the cells)
+  // up: a box's parent is its index divided by the base, the lattice being aligned at 0.
+  const int E = l.dimension;
+  std::array<int64_t, 3> first{0, 0, 0}, count{1, 1, 1};
+  for (int d = 0; d < E; ++d) first[d] = view.origin[d], count[d] = view.size[d];
+  std::vector<bool> occupied = cells;
+  std::vector<double> out(static_cast<size_t>(l.stages + 1), 0.0);
+  for (int k = l.stages; k >= 0; --k) {
+    const auto side = static_cast<int64_t>(l.side_in_cells(k));
+    size_t i = 0;
+    for (int64_t z = 0; z < count[2]; ++z)
+      for (int64_t y = 0; y < count[1]; ++y)
+        for (int64_t x = 0; x < count[0]; ++x, ++i) {
+          if (!occupied[i]) continue;
+          const std::array<int64_t, 3> at{first[0] + x, first[1] + y, first[2] + z};
+          double share = 1;
+          for (int d = 0; d < E; ++d) {
+            const int64_t lo = std::max(at[d] * side, view.origin[d]);
+            const int64_t hi = std::min((at[d] + 1) * side, view.origin[d] + view.size[d]);
+            share *= static_cast<double>(hi - lo) / static_cast<double>(side);
+          }
+          out[static_cast<size_t>(k)] += share;
+        }
+    if (k == 0) break;
+    std::array<int64_t, 3> up_first{0, 0, 0}, up_count{1, 1, 1};
+    for (int d = 0; d < E; ++d) {
+      up_first[d] = floor_div(first[d], l.base);
+      up_count[d] = floor_div(first[d] + count[d] - 1, l.base) - up_first[d] + 1;
+    }
+    std::vector<bool> up(static_cast<size_t>(up_count[0] * up_count[1] * up_count[2]), false);
+    i = 0;
+    for (int64_t z = 0; z < count[2]; ++z)
+      for (int64_t y = 0; y < count[1]; ++y)
+        for (int64_t x = 0; x < count[0]; ++x, ++i) {
+          if (!occupied[i]) continue;
+          std::array<int64_t, 3> at{first[0] + x, first[1] + y, first[2] + z};
+          for (int d = 0; d < E; ++d) at[d] = floor_div(at[d], l.base) - up_first[d];
+          up[static_cast<size_t>((at[2] * up_count[1] + at[1]) * up_count[0] + at[0])] = true;
+        }
+    occupied = std::move(up), first = up_first, count = up_count;
   }
   return out;
 }

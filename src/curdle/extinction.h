@@ -27,5 +27,15 @@ namespace curdle {
 // in it.
 std::vector<double> expected_box_counts(const Lattice& lattice, const std::vector<Probability>& p,
                                         const Box& view);
+// The same with each box weighted by the share of its cells inside the view: a box the view
+// cuts counts for what it shows (share_weighted_box_counts).
+std::vector<double> expected_share_weighted_box_counts(const Lattice& lattice,
+                                                       const std::vector<Probability>& p,
+                                                       const Box& view);
+
+// Measured share-weighted box counts, levels 0..K, of a curd given as its finest cells over
+// `view` (x fastest, then y, then z; cells in lattice coordinates from view.origin).
+std::vector<double> share_weighted_box_counts(const Lattice& lattice, const Box& view,
+                                              const std::vector<bool>& cells);
 
 }  // namespace curdle

@@ -36,6 +36,10 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
   const double log_b = std::log(static_cast<double>(l.base));
 
   std::vector<Bitset> scratch;
+  // The view's values, for share-weighted box counts (bounded: two bytes a cell).
+  constexpr uint64_t kWeightedUpTo = uint64_t{1} << 24;
+  const std::vector<uint16_t> values =
+      view.cells() <= kWeightedUpTo ? values_in(field, view) : std::vector<uint16_t>{};
   for (size_t c = 0; c < design.curds.size(); ++c) {
     const CurdSpec& spec = design.curds[c];
     const Curd& curd = field.curds[c];
@@ -70,6 +74,13 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     }
     cr.fit = fit_box_dimension(cr.box_counts, l.base);
     cr.expected_fit = fit_box_dimension(cr.expected_box_counts, l.base);
+    if (!values.empty()) {
+      std::vector<bool> cells(values.size());
+      for (size_t i = 0; i < values.size(); ++i) cells[i] = values[i] >> c & 1;
+      cr.share_weighted_fit = fit_box_dimension(share_weighted_box_counts(l, view, cells), l.base);
+      cr.expected_share_weighted_fit = fit_box_dimension(
+          expected_share_weighted_box_counts(l, spec.probabilities, view), l.base);
+    }
     cr.final_probability = survival_probability(spec.probabilities, l.stages);
     cr.theory_dimension =
         finite(theory_dimension(l, std::pow(cr.final_probability, 1.0 / l.stages)));

@@ -35,6 +35,10 @@ struct CurdReport {
   std::optional<LineFit> fit;
   std::vector<double> expected_box_counts;  // level 0..K, at this K and view (extinction.h)
   std::optional<LineFit> expected_fit;      // the same fit over the expected counts
+  // Boxes the view cuts counted by the share of them it shows (views of up to 2^24 cells):
+  // a crop's largest boxes then weigh what they hold, and the fit is not pulled down by them.
+  std::optional<LineFit> share_weighted_fit;
+  std::optional<LineFit> expected_share_weighted_fit;
   std::optional<double> theory_dimension;   // E + log(P_K^(1/K)) / log b, the limit K -> inf
   double final_probability = 0;            // P_K
 };
