@@ -64,6 +64,15 @@ json report_to_json(const Report& r) {
                 {"expected_at_these_stages",
                  c.expected_fit ? rounded(c.expected_fit->slope) : json(nullptr)},
                 {"theory", rounded(c.theory_dimension)}};
+    // Boxes the view cuts weighted by the share it shows (null above 2^24 cells).
+    if (c.share_weighted_fit)
+      fit["share_weighted"] = {
+          {"fit", rounded(c.share_weighted_fit->slope)},
+          {"expected_at_these_stages", c.expected_share_weighted_fit
+                                           ? rounded(c.expected_share_weighted_fit->slope)
+                                           : json(nullptr)}};
+    else
+      fit["share_weighted"] = nullptr;
     curds.push_back({{"name", c.name},
                      {"final_probability", rounded(c.final_probability, 6)},
                      {"roots", c.roots},

@@ -28,11 +28,25 @@ function renderReport() {
   });
   $("values-table").innerHTML = html;
 
-  let dims = "<tr><th>Curd</th><th>theory</th><th>whole</th><th>R²</th>" + (seg ? '<th class="seg">segment</th><th class="seg">R²</th>' : "") + "</tr>";
+  // The limit of many stages, what the fit should give at these stages, and the fits; a
+  // segment's fit also with the boxes it cuts weighted by the share it shows.
+  let dims =
+      '<tr><th>Curd</th><th title="K → ∞">limit</th><th title="expected fit at these stages">at K</th><th>whole</th><th>R²</th>' +
+      (seg ?
+           '<th class="seg">segment</th><th class="seg" title="boxes the segment cuts weighted by the share it shows">cut boxes weighted</th><th class="seg" title="expected, weighted the same way">expected</th>' :
+           '') +
+      '</tr>';
   whole.report.curds.forEach((c, i) => {
     const s = seg ? seg.report.curds[i] : null;
-    dims += `<tr><td>${escapeHtml(c.name)}</td><td>${fmt(c.box_dimension.theory, 3)}</td><td>${fmt(c.box_dimension.fit, 3)}</td><td>${fmt(c.box_dimension.r2, 3)}</td>` +
-      (s ? `<td class="seg">${fmt(s.box_dimension.fit, 3)}</td><td class="seg">${fmt(s.box_dimension.r2, 3)}</td>` : "") + "</tr>";
+    const w = s && s.box_dimension.share_weighted;
+    dims += `<tr><td>${escapeHtml(c.name)}</td><td>${fmt(c.box_dimension.theory, 3)}</td><td>${
+                fmt(c.box_dimension.expected_at_these_stages, 3)}</td><td>${
+                fmt(c.box_dimension.fit, 3)}</td><td>${fmt(c.box_dimension.r2, 3)}</td>` +
+        (s ? `<td class="seg">${fmt(s.box_dimension.fit, 3)}</td><td class="seg">${
+                 w ? fmt(w.fit, 3) : '–'}</td><td class="seg">${
+                 w ? fmt(w.expected_at_these_stages, 3) : '–'}</td>` :
+             '') +
+        '</tr>';
   });
   $("dimension-table").innerHTML = dims;
 
