@@ -75,7 +75,15 @@ CellsTable parse_cells_csv(std::string_view text, uint64_t max_cells) {
   if (t.dimension == 0 || header.size() < value_column + 2 || header[value_column] != "value")
     refuse(1, "the header must be x[,y[,z]],value and one column per curd, as curdle writes it");
   for (size_t c = value_column + 1; c < header.size(); ++c) {
-    if (header[c].empty() || header[c].size() > 200) refuse(1, "a curd's column has no name");
+    const std::string_view name = header[c];
+    // A recipe's curd names: these become the fitted recipe's.
+    const bool plain = std::none_of(name.begin(), name.end(), [](char ch) {
+      return ch == '"' || ch == '\\' || ch == '+' || static_cast<unsigned char>(ch) < 0x20;
+    });
+    if (name.empty() || name.size() > 200 || !plain)
+      refuse(1, "curd column '" + std::string(name.substr(0, 40)) +
+                    "' must be a name of 1 to 200 characters without quotes, backslashes, '+' or "
+                    "control characters, as in a recipe");
     t.curds.emplace_back(header[c]);
   }
   if (t.curds.size() > 15) refuse(1, "at most 15 curds");
