@@ -159,12 +159,19 @@ void StagingDirectory::commit() {
   if (whole_) {
     std::error_code ec;
     if (!fs::exists(dir_, ec)) {
+      std::lock_guard<std::mutex> lock(staged_mutex);  // as below: never a half-removed set
       fs::rename(staging_, dir_, ec);
       if (ec) throw InputError("cannot write " + dir_.string() + ": " + ec.message());
     } else {
       // One rename swaps the whole set in: a reader sees the old set or the new, never a mix.
-      if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, dir_.c_str(), RENAME_EXCHANGE) != 0)
-        throw InputError("cannot replace " + dir_.string() + ": " + std::strerror(errno));
+      // It holds the lock an interrupt takes to remove staged files, so that the new set is
+      // never half removed while it moves in; once moved, the staging path holds the old set,
+      // which an interrupt may remove as well as this run.
+      {
+        std::lock_guard<std::mutex> lock(staged_mutex);
+        if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, dir_.c_str(), RENAME_EXCHANGE) != 0)
+          throw InputError("cannot replace " + dir_.string() + ": " + std::strerror(errno));
+      }
       fs::remove_all(staging_, ec);  // now the old set
     }
     forget(staging_);
