@@ -1,5 +1,6 @@
 #include "cli/generate_command.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -36,11 +37,22 @@ void print_summary(const app::RunSummary& s, const app::Run& run, const fs::path
   std::printf("%s, seed %llu: %llu cells\n", run.recipe.design.name.c_str(),
               static_cast<unsigned long long>(run.seed),
               static_cast<unsigned long long>(s.report.cells));
-  for (const CurdReport& c : s.report.curds)
-    std::printf("  curd %-12s %llu survivors (expected %.1f), box dimension %s (theory %s)\n",
+  for (const CurdReport& c : s.report.curds) {
+    // The fit beside what it should be at these stages in this view, then the limit: a crop's
+    // cut boxes pull the plain fit down, so the share-weighted one is shown when they do.
+    auto slope = [](const std::optional<LineFit>& f) {
+      return f ? first_digits(f->slope) : std::string("-");
+    };
+    std::string dimension = slope(c.fit) + " (expected " + slope(c.expected_fit) + ")";
+    if (c.share_weighted_fit && c.fit &&
+        std::fabs(c.share_weighted_fit->slope - c.fit->slope) > 1e-9)
+      dimension += ", cut boxes weighted " + slope(c.share_weighted_fit) + " (expected " +
+                   slope(c.expected_share_weighted_fit) + ")";
+    std::printf("  curd %-12s %llu survivors (expected %.1f), box dimension %s; limit %s\n",
                 c.name.c_str(), static_cast<unsigned long long>(c.stages.back().survivors),
-                c.stages.back().expected, c.fit ? first_digits(c.fit->slope).c_str() : "-",
+                c.stages.back().expected, dimension.c_str(),
                 c.theory_dimension ? first_digits(*c.theory_dimension).c_str() : "-");
+  }
   std::printf("outputs in %s:\n", fs::absolute(dir).lexically_normal().c_str());
   for (const fs::path& f : files) std::printf("  %s\n", f.lexically_relative(dir).c_str());
 }
