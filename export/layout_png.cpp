@@ -5,12 +5,12 @@
 
 #include "curdle/error.h"
 #include "export/svg.h"
+#include "layout/drawing_sheet.h"
 #include "layout/piece.h"
 
 namespace curdle {
 namespace {
 
-constexpr double kSheetMm = 400;
 constexpr int64_t kMaxPixels = 16000;  // a side; beyond this the scale is raised
 
 struct Canvas {
@@ -95,10 +95,8 @@ struct Canvas {
 
 double drawing_scale(const Layout& layout) {
   if (layout.spec.scale > 0) return layout.spec.scale;
-  const double longest = std::max(layout.width, layout.height);
-  for (double decade = 1;; decade *= 10)
-    for (double step : {1.0, 2.0, 2.5, 5.0})
-      if (longest / (step * decade) <= kSheetMm) return step * decade;
+  const auto sheet = paper_sheet(layout.spec.paper).value_or(*paper_sheet("A3"));
+  return fit_to_sheet(layout.width, layout.height, sheet).scale;
 }
 
 uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view) {

@@ -10,8 +10,9 @@
 
 namespace curdle {
 
-// 1 : scale; the spec's, or the smallest of 1, 2, 5, 10, 20, 25, 50, 100, ... that fits the
-// layout's long side in 400 mm (an A3 sheet).
+// 1 : scale; the spec's, or the smallest standard scale (1, 2, 5, 10, 20, 25, 50, 100, ...)
+// at which the layout fits the drawing area of its sheet (layout.paper, A3 by default) in
+// either orientation: drawing_sheet.h.
 double drawing_scale(const Layout& layout);
 
 PreviewImage render_layout(const Layout& layout);

@@ -403,7 +403,7 @@ TEST(Perforation, MixMakesOneOpeningOfTheSummedAreaAndKeepCutsTheUnion) {
 TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
   for (Combine combine : {Combine::mix, Combine::keep}) {
     Sheet s = perforated(combine, HoleFix::drop, 2, 4);
-    s.spec.scale = 1, s.spec.dpi = 127;  // 5 px a millimetre
+    s.layout.spec.scale = 1, s.layout.spec.dpi = 127;  // 5 px a millimetre
     const PreviewImage png = render_layout(s.layout);
     const Rgb metal{201, 205, 210};
     double open = 0;

@@ -154,6 +154,7 @@ struct LayoutSpec {
   int64_t lot_rows = 0;
   std::vector<std::string> materials;  // per value, the product's name; empty: the curds' names
   double scale = 0;                    // layout.png drawing scale 1 : scale; 0 picks one
+  std::string paper = "A3";            // the ISO sheet a scale is picked for (drawing_sheet.h)
   double dpi = 150;
 };
 

@@ -7,6 +7,7 @@
 
 #include "curdle/text.h"
 #include "layout/builder.h"
+#include "layout/drawing_sheet.h"
 
 namespace curdle::reading {
 namespace {
@@ -54,8 +55,9 @@ const std::vector<KindKeys>& kinds() {
   return table;
 }
 
-const std::vector<std::string> kEveryKind = {"kind",  "colours", "materials", "scale",   "dpi",
-                                             "spare", "pack",    "lot_size",  "lot_rows"};
+const std::vector<std::string> kEveryKind = {"kind",     "colours", "materials", "scale",
+                                             "dpi",      "paper",   "spare",     "pack",
+                                             "lot_size", "lot_rows"};
 
 // layout.materials: the product each value is laid in, one name per value, value 0 first.
 void read_materials(TableReader& r, const Design& design, LayoutSpec& spec) {
@@ -152,6 +154,16 @@ void read_cut_rules(TableReader& r, LayoutSpec& spec) {
 }  // namespace
 
 void read_drawing_scale(TableReader& r, LayoutSpec& spec) {
+  // layout.paper, or layout.sheet written as a name where the sheet is not the kind's surface.
+  const bool sheet_is_paper = spec.kind() != LayoutKind::perforation && r.get("sheet");
+  const char* key = sheet_is_paper ? "sheet" : "paper";
+  if (const auto paper = read_string(r, key, "an ISO sheet name such as \"A3\"")) {
+    if (!paper_sheet(*paper))
+      r.fail(key,
+             "must be \"A0\", \"A1\", \"A2\", \"A3\" or \"A4\": the sheet layout.png is "
+             "scaled to fit");
+    spec.paper = *paper;
+  }
   spec.scale = read_mm(r, "scale", 0, 1);
   spec.dpi = read_mm(r, "dpi", 150, 10);
   if (spec.dpi > 1200) r.fail("dpi", "must be from 10 to 1200");
@@ -176,6 +188,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
                       "\"rhythm\", \"blocks\"");
   const bool surface = *k->module_key != '\0';
   std::vector<std::string> keys = kEveryKind;
+  if (std::string(k->size_key) != "sheet") keys.push_back("sheet");  // the paper, by name
   if (surface) {
     keys.insert(keys.end(), kSurface.begin(), kSurface.end());
     keys.push_back(k->module_key);

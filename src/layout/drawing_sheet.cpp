@@ -1,0 +1,34 @@
+#include "layout/drawing_sheet.h"
+
+#include <cmath>
+
+namespace curdle {
+
+std::optional<PaperSheet> paper_sheet(std::string_view name) {
+  static const PaperSheet sheets[] = {
+      {"A0", 841, 1189}, {"A1", 594, 841}, {"A2", 420, 594}, {"A3", 297, 420}, {"A4", 210, 297}};
+  for (const PaperSheet& s : sheets)
+    if (s.name == name) return s;
+  return std::nullopt;
+}
+
+std::array<double, 2> drawing_area(const PaperSheet& sheet, bool landscape) {
+  const double w = landscape ? sheet.long_side : sheet.short_side;
+  const double h = landscape ? sheet.short_side : sheet.long_side;
+  return {w - 20 - 10, h - 10 - 10 - 50};
+}
+
+SheetFit fit_to_sheet(double width, double height, const PaperSheet& sheet) {
+  for (double decade = 1; decade <= 1e8; decade *= 10)
+    for (const double step : {1.0, 2.0, 2.5, 5.0}) {
+      if (step == 2.5 && decade < 10) continue;  // 1 : 25 and 1 : 250 are standard, 1 : 2.5 not
+      const double n = step * decade;
+      for (const bool landscape : {width >= height, width < height}) {
+        const auto area = drawing_area(sheet, landscape);
+        if (width / n <= area[0] + 1e-9 && height / n <= area[1] + 1e-9) return {n, landscape};
+      }
+    }
+  return {1e9, true};
+}
+
+}  // namespace curdle
