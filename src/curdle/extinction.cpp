@@ -1,8 +1,10 @@
 #include "curdle/extinction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
+#include "curdle/box_levels.h"
 #include "curdle/theory.h"
 
 namespace curdle {
@@ -164,47 +166,27 @@ std::vector<double> expected_share_weighted_box_counts(const Lattice& l,
 
 std::vector<double> share_weighted_box_counts(const Lattice& l, const Box& view,
                                               const std::vector<bool>& cells) {
-  // Occupied boxes of each level over their absolute index ranges, from the finest (the cells)
-  // up: a box's parent is its index divided by the base, the lattice being aligned at 0.
-  const int E = l.dimension;
-  std::array<int64_t, 3> first{0, 0, 0}, count{1, 1, 1};
-  for (int d = 0; d < E; ++d) first[d] = view.origin[d], count[d] = view.size[d];
-  std::vector<bool> occupied = cells;
   std::vector<double> out(static_cast<size_t>(l.stages + 1), 0.0);
-  for (int k = l.stages; k >= 0; --k) {
-    const auto side = static_cast<int64_t>(l.side_in_cells(k));
+  // Level j of the pyramid is stage K - j; a box weighs the share of its cells in the view.
+  for_each_box_level(l.base, l.dimension, view, cells, l.stages, [&](const BoxLevel& level) {
+    double sum = 0;
     size_t i = 0;
-    for (int64_t z = 0; z < count[2]; ++z)
-      for (int64_t y = 0; y < count[1]; ++y)
-        for (int64_t x = 0; x < count[0]; ++x, ++i) {
-          if (!occupied[i]) continue;
-          const std::array<int64_t, 3> at{first[0] + x, first[1] + y, first[2] + z};
+    for (int64_t z = 0; z < level.count[2]; ++z)
+      for (int64_t y = 0; y < level.count[1]; ++y)
+        for (int64_t x = 0; x < level.count[0]; ++x, ++i) {
+          if (!level.occupied[i]) continue;
+          const std::array<int64_t, 3> at{level.first[0] + x, level.first[1] + y,
+                                          level.first[2] + z};
           double share = 1;
-          for (int d = 0; d < E; ++d) {
-            const int64_t lo = std::max(at[d] * side, view.origin[d]);
-            const int64_t hi = std::min((at[d] + 1) * side, view.origin[d] + view.size[d]);
-            share *= static_cast<double>(hi - lo) / static_cast<double>(side);
+          for (int d = 0; d < l.dimension; ++d) {
+            const int64_t lo = std::max(at[d] * level.side, view.origin[d]);
+            const int64_t hi = std::min((at[d] + 1) * level.side, view.origin[d] + view.size[d]);
+            share *= static_cast<double>(hi - lo) / static_cast<double>(level.side);
           }
-          out[static_cast<size_t>(k)] += share;
+          sum += share;
         }
-    if (k == 0) break;
-    std::array<int64_t, 3> up_first{0, 0, 0}, up_count{1, 1, 1};
-    for (int d = 0; d < E; ++d) {
-      up_first[d] = floor_div(first[d], l.base);
-      up_count[d] = floor_div(first[d] + count[d] - 1, l.base) - up_first[d] + 1;
-    }
-    std::vector<bool> up(static_cast<size_t>(up_count[0] * up_count[1] * up_count[2]), false);
-    i = 0;
-    for (int64_t z = 0; z < count[2]; ++z)
-      for (int64_t y = 0; y < count[1]; ++y)
-        for (int64_t x = 0; x < count[0]; ++x, ++i) {
-          if (!occupied[i]) continue;
-          std::array<int64_t, 3> at{first[0] + x, first[1] + y, first[2] + z};
-          for (int d = 0; d < E; ++d) at[d] = floor_div(at[d], l.base) - up_first[d];
-          up[static_cast<size_t>((at[2] * up_count[1] + at[1]) * up_count[0] + at[0])] = true;
-        }
-    occupied = std::move(up), first = up_first, count = up_count;
-  }
+    out[static_cast<size_t>(l.stages - level.index)] = sum;
+  });
   return out;
 }
 

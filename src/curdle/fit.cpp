@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "curdle/box_levels.h"
 #include "curdle/extinction.h"
 #include "curdle/theory.h"
 
@@ -11,20 +12,12 @@ namespace curdle {
 std::vector<uint64_t> occupied_cells(const Lattice& l, const Box& field,
                                      const std::vector<bool>& cells) {
   std::vector<uint64_t> counts(static_cast<size_t>(l.stages + 1), 0);
-  for (int k = 0; k <= l.stages; ++k) {
-    const auto side = static_cast<int64_t>(l.side_in_cells(k));
-    std::array<int64_t, 3> n{1, 1, 1};
-    for (int d = 0; d < l.dimension; ++d) n[d] = (field.size[d] + side - 1) / side;
-    std::vector<bool> seen(static_cast<size_t>(n[0] * n[1] * n[2]), false);
-    size_t i = 0;
-    for (int64_t z = 0; z < field.size[2]; ++z)
-      for (int64_t y = 0; y < field.size[1]; ++y)
-        for (int64_t x = 0; x < field.size[0]; ++x, ++i)
-          if (cells[i])
-            seen[static_cast<size_t>(((z / side) * n[1] + y / side) * n[0] + x / side)] = true;
-    counts[static_cast<size_t>(k)] =
-        static_cast<uint64_t>(std::count(seen.begin(), seen.end(), true));
-  }
+  // Level j of the pyramid is stage K - j.
+  for_each_box_level(
+      l.base, l.dimension, Box{{0, 0, 0}, field.size}, cells, l.stages, [&](const BoxLevel& level) {
+        counts[static_cast<size_t>(l.stages - level.index)] =
+            static_cast<uint64_t>(std::count(level.occupied.begin(), level.occupied.end(), true));
+      });
   return counts;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "curdle/box_levels.h"
+
 namespace curdle {
 
 ValueGrid quantise(int64_t width, int64_t height, const std::vector<float>& luminance, int count,
@@ -57,25 +59,16 @@ ValueGrid threshold(int64_t width, int64_t height, const std::vector<float>& lum
 
 std::vector<uint64_t> count_boxes(int64_t width, int64_t height, const std::vector<bool>& inside,
                                   int base, std::vector<int64_t>& sizes) {
+  int levels = 0;  // boxes up to the shorter side
+  for (int64_t side = 1; side <= std::min(width, height) / base; side *= base) ++levels;
   std::vector<uint64_t> counts;
   sizes.clear();
-  // Each level's occupied boxes from the level below: a box is occupied when one of its
-  // base x base boxes is.
-  std::vector<bool> level = inside;
-  int64_t w = width, h = height, side = 1;
-  while (side <= std::min(width, height)) {
-    sizes.push_back(side);
-    counts.push_back(static_cast<uint64_t>(std::count(level.begin(), level.end(), true)));
-    if (side > std::min(width, height) / base) break;
-    const int64_t nw = (w + base - 1) / base, nh = (h + base - 1) / base;
-    std::vector<bool> next(static_cast<size_t>(nw * nh), false);
-    for (int64_t y = 0; y < h; ++y)
-      for (int64_t x = 0; x < w; ++x)
-        if (level[static_cast<size_t>(y * w + x)])
-          next[static_cast<size_t>((y / base) * nw + x / base)] = true;
-    level = std::move(next);
-    w = nw, h = nh, side *= base;
-  }
+  for_each_box_level(
+      base, 2, Box{{0, 0, 0}, {width, height, 1}}, inside, levels, [&](const BoxLevel& level) {
+        sizes.push_back(level.side);
+        counts.push_back(
+            static_cast<uint64_t>(std::count(level.occupied.begin(), level.occupied.end(), true)));
+      });
   return counts;
 }
 
