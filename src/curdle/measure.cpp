@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "curdle/box_levels.h"
+#include "curdle/segment_measures.h"
 
 namespace curdle {
 
@@ -72,33 +73,6 @@ std::vector<uint64_t> count_boxes(int64_t width, int64_t height, const std::vect
   return counts;
 }
 
-namespace {
-
-// Gliding-box lacunarity E[M^2] / E[M]^2 of `inside` with boxes of side `box` (Allain & Cloitre
-// 1991), from a summed-area table; nullopt when no pixel is inside.
-std::optional<double> lacunarity(int64_t width, int64_t height, const std::vector<bool>& inside,
-                                 int64_t box) {
-  std::vector<uint64_t> sat(static_cast<size_t>((width + 1) * (height + 1)), 0);
-  auto at = [&](int64_t x, int64_t y) -> uint64_t& {
-    return sat[static_cast<size_t>(y * (width + 1) + x)];
-  };
-  for (int64_t y = 0; y < height; ++y)
-    for (int64_t x = 0; x < width; ++x)
-      at(x + 1, y + 1) = at(x, y + 1) + at(x + 1, y) - at(x, y) +
-                         (inside[static_cast<size_t>(y * width + x)] ? 1 : 0);
-  double m1 = 0, m2 = 0, n = 0;
-  for (int64_t y = 0; y + box <= height; ++y)
-    for (int64_t x = 0; x + box <= width; ++x) {
-      const double m = static_cast<double>(at(x + box, y + box) + at(x, y)) -
-                       static_cast<double>(at(x, y + box) + at(x + box, y));
-      m1 += m, m2 += m * m, n += 1;
-    }
-  if (m1 <= 0) return std::nullopt;
-  return (m2 / n) / ((m1 / n) * (m1 / n));
-}
-
-}  // namespace
-
 Measurement measure(const ValueGrid& grid, int count, int base) {
   Measurement m;
   m.width = grid.width, m.height = grid.height, m.base = base;
@@ -112,6 +86,14 @@ Measurement measure(const ValueGrid& grid, int count, int base) {
     if (v < count) ++counts[v];
   for (size_t v = 1; v < counts.size(); ++v)
     if (counts[v] > counts[ground]) ground = v;
+  // Lacunarity as the search measures segments: the picture is a view of `count` values, the
+  // values of as many curds as their bits need.
+  Design picture;
+  picture.lattice = Lattice{base, 2, 1, Mode::canonical};
+  while ((1 << picture.curds.size()) < count) picture.curds.emplace_back();
+  const Box whole{{0, 0, 0}, {grid.width, grid.height, 1}};
+  SegmentMeasures segments;
+  segments.reset(picture, whole, grid.values);
   for (int v = 0; v < count; ++v) {
     ValueMeasure vm;
     vm.value = static_cast<uint32_t>(v);
@@ -120,7 +102,7 @@ Measurement measure(const ValueGrid& grid, int count, int base) {
     vm.most_common = static_cast<size_t>(v) == ground;
     std::vector<bool> inside(grid.values.size());
     for (size_t i = 0; i < grid.values.size(); ++i) inside[i] = grid.values[i] == v;
-    vm.lacunarity = lacunarity(grid.width, grid.height, inside, m.lacunarity_box);
+    vm.lacunarity = segments.lacunarity(vm.value, whole, m.lacunarity_box);
     if (!vm.most_common) {
       vm.counts = count_boxes(grid.width, grid.height, inside, base, vm.sizes);
       // fit_box_dimension takes the coarsest boxes first, one level per factor of the base.

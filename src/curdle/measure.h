@@ -36,7 +36,8 @@ struct ValueMeasure {
   uint32_t value = 0;
   uint64_t count = 0;  // pixels
   double share = 0;
-  std::optional<double> lacunarity;  // gliding box of the measurement's lacunarity_box
+  std::optional<double> lacunarity;  // gliding box of the measurement's lacunarity_box, as the
+                                     // search measures segments (segment_measures.h)
   bool most_common = false;          // the ground: no dimension is fitted for it
   std::vector<int64_t> sizes;        // box sides, smallest first
   std::vector<uint64_t> counts;      // boxes holding the value, per size
