@@ -1,9 +1,10 @@
 #include "export/measure_files.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
+
+#include "curdle/palette.h"
+#include "export/json_number.h"
 
 namespace curdle {
 namespace {
@@ -18,12 +19,6 @@ constexpr std::array<std::array<uint8_t, 3>, 8> kSeries = {{{214, 39, 40},
                                                             {140, 86, 75},
                                                             {227, 119, 194},
                                                             {23, 190, 207}}};
-
-json rounded(double x, int digits) {
-  if (!std::isfinite(x)) return nullptr;
-  const double scale = std::pow(10.0, digits);
-  return std::round(x * scale) / scale;
-}
 
 // Points are fitted series in order of value: the colour goes with the series, not the value.
 std::vector<const ValueMeasure*> fitted(const Measurement& m) {
@@ -76,13 +71,13 @@ struct Plot {
 }  // namespace
 
 std::string level_colour(double luminance) {
-  const int g = static_cast<int>(std::lround(std::clamp(luminance, 0.0, 1.0) * 255));
-  return fmt::format("#{:02x}{:02x}{:02x}", g, g, g);
+  const auto g = static_cast<uint8_t>(std::lround(std::clamp(luminance, 0.0, 1.0) * 255));
+  return hex_colour(Rgb{g, g, g});
 }
 
 std::string series_colour(size_t n) {
   const auto& c = kSeries[n % kSeries.size()];
-  return fmt::format("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
+  return hex_colour(Rgb{c[0], c[1], c[2]});
 }
 
 json measure_to_json(const MeasuredPicture& p) {
@@ -99,7 +94,7 @@ json measure_to_json(const MeasuredPicture& p) {
                 {"colour", level_colour(p.levels.at(v.value))},
                 {"count", v.count},
                 {"share", rounded(v.share, 6)},
-                {"lacunarity", v.lacunarity ? rounded(*v.lacunarity, 4) : json(nullptr)}};
+                {"lacunarity", rounded(v.lacunarity)}};
     if (v.most_common) row["ground"] = true;
     if (v.fit) {
       row["box_dimension"] = {{"fit", rounded(v.fit->slope, 4)},

@@ -2,20 +2,12 @@
 
 #include <cmath>
 
+#include "export/json_number.h"
+
 namespace curdle {
 namespace {
 
 using json = nlohmann::ordered_json;
-
-// Three significant decimals beyond the unit are plenty for a report and keep it diffable.
-json rounded(double x, int digits = 4) {
-  if (!std::isfinite(x)) return nullptr;
-  const double scale = std::pow(10.0, digits);
-  return std::round(x * scale) / scale;
-}
-json rounded(const std::optional<double>& x, int digits = 4) {
-  return x ? rounded(*x, digits) : json(nullptr);
-}
 
 json box_json(const Box& box, int dimension) {
   json origin = json::array(), size = json::array();

@@ -1,0 +1,21 @@
+// Numbers in the JSON files curdle writes: rounded to a few decimals (plenty for a report, and
+// diffable), null where there is no finite value.
+#pragma once
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+namespace curdle {
+
+inline nlohmann::ordered_json rounded(double x, int digits = 4) {
+  if (!std::isfinite(x)) return nullptr;
+  const double scale = std::pow(10.0, digits);
+  return std::round(x * scale) / scale;
+}
+
+inline nlohmann::ordered_json rounded(const std::optional<double>& x, int digits = 4) {
+  return x ? rounded(*x, digits) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace curdle
