@@ -37,12 +37,6 @@ char id_kind(LayoutKind kind) {
   return 'E';
 }
 
-Rect clip(const Rect& r, double width, double height) {
-  const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
-  const double x1 = std::min(width, r.right()), y1 = std::min(height, r.top());
-  return Rect{x0, y0, std::max(0.0, x1 - x0), std::max(0.0, y1 - y0)};
-}
-
 }  // namespace
 
 const char* element_type(LayoutKind kind) {

@@ -42,12 +42,6 @@ uint64_t slivers_in(double a, double b, double module, double pitch, double shif
   return count;
 }
 
-Rect clipped(const Rect& r, const Layout& layout) {
-  const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
-  const double x1 = std::min(layout.width, r.right()), y1 = std::min(layout.height, r.top());
-  return Rect{x0, y0, std::max(0.0, x1 - x0), std::max(0.0, y1 - y0)};
-}
-
 }  // namespace
 
 double narrowest_run(const std::vector<Rect>& pieces, bool along_x) {
@@ -149,7 +143,7 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec) {
   uint64_t slivers = 0;
   for (const Element& e : layout.elements) {
     if (!e.cut) continue;
-    const Rect laid = clipped(e.nominal, layout);
+    const Rect laid = clip(e.nominal, layout.width, layout.height);
     for (int axis = 0; axis < 2; ++axis) {
       const double run = narrowest_run(e.shape, axis == 0);
       const double least = least_cut(spec, axis);

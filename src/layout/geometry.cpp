@@ -12,6 +12,12 @@ bool overlaps(const Rect& a, const Rect& b) {
          b.y < a.top() - kEps;
 }
 
+Rect clip(const Rect& r, double width, double height) {
+  const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
+  const double x1 = std::min(width, r.right()), y1 = std::min(height, r.top());
+  return Rect{x0, y0, std::max(0.0, x1 - x0), std::max(0.0, y1 - y0)};
+}
+
 std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes) {
   std::vector<Rect> relevant;
   for (const Rect& h : holes)

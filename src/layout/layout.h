@@ -28,6 +28,8 @@ struct Rect {
 bool overlaps(const Rect& a, const Rect& b);
 // a minus the union of `holes`, as disjoint rectangles (all edges are axis-aligned).
 std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes);
+// The part of r on the surface [0, width] x [0, height] (empty: zero width or height).
+Rect clip(const Rect& r, double width, double height);
 
 enum class LayoutKind { tile, paving, facade, perforation, park, rhythm, blocks };
 
