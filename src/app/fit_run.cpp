@@ -4,15 +4,16 @@
 
 #include <filesystem>
 
+#include "app/measure_run.h"
 #include "app/run.h"
+#include "curdle/error.h"
 #include "curdle/measure.h"
-#include "export/bounded_image.h"
 #include "export/cells_csv_reader.h"
 #include "export/measure_files.h"
 
 namespace curdle::app {
 namespace {
-constexpr uint64_t kMaxPixels = uint64_t{1} << 26;  // cells too: a picture's or a cells.csv's
+constexpr uint64_t kMaxCells = uint64_t{1} << 26;  // a cells.csv's, as many as a picture's
 constexpr uint64_t kMaxCsvBytes = uint64_t{2} << 30;
 
 std::string recipe_text(const FittedRecipe& f, const std::string& source) {
@@ -49,8 +50,7 @@ FittedRecipe finish(FittedRecipe f, const std::string& source) {
 }  // namespace
 
 FittedRecipe run_fit(const FitRequest& r) {
-  if (r.base < 2 || r.base > 64)
-    throw InputError("--base " + std::to_string(r.base) + ": must be from 2 to 64");
+  check_base(r.base);
   if (r.stages < 1 || r.stages > 30)
     throw InputError("--stages " + std::to_string(r.stages) + ": must be from 1 to 30");
   if (r.curds < 1 || r.curds > 4)
@@ -65,7 +65,7 @@ FittedRecipe run_fit(const FitRequest& r) {
     const CellsTable table =
         parse_cells_csv(read_bounded_text(r.source, "the cells file",
                                           "a cells.csv as curdle generate writes it", kMaxCsvBytes),
-                        kMaxPixels);
+                        kMaxCells);
     f.lattice = Lattice{r.base, table.dimension, r.stages, Mode::canonical};
     f.size = table.box.size;
     const Box field{{0, 0, 0}, table.box.size};
@@ -78,9 +78,7 @@ FittedRecipe run_fit(const FitRequest& r) {
     }
     return finish(f, r.source);
   }
-  const uint64_t memory = r.max_memory ? r.max_memory : default_memory_limit();
-  const LuminanceImage image = read_bounded_luminance(
-      r.source, "the picture", SourceLocation{r.source, 0, 0, "", ""}, memory, kMaxPixels);
+  const LuminanceImage image = read_picture(r.source, r.max_memory);
   f.lattice = Lattice{r.base, 2, r.stages, Mode::canonical};
   f.size = {image.width, image.height, 1};
   const int64_t width = image.width, height = image.height;

@@ -12,17 +12,24 @@ namespace {
 constexpr uint64_t kMaxPixels = uint64_t{1} << 26;
 }  // namespace
 
+LuminanceImage read_picture(const std::string& path, uint64_t max_memory) {
+  return read_bounded_luminance(path, "the picture", SourceLocation{path, 0, 0, "", ""},
+                                max_memory ? max_memory : default_memory_limit(), kMaxPixels);
+}
+
+void check_base(int base) {
+  if (base < 2 || base > 64)
+    throw InputError("--base " + std::to_string(base) + ": must be from 2 to 64");
+}
+
 MeasuredPicture run_measure(const MeasureRequest& r) {
   if (r.values < 2 || r.values > 16)
     throw InputError("--values " + std::to_string(r.values) +
                      ": must be from 2 to 16 (the values the picture is quantised to)");
   if (r.threshold && !(*r.threshold > 0 && *r.threshold < 1))
     throw InputError("--threshold must be a luminance between 0 (black) and 1 (white), e.g. 0.5");
-  if (r.base < 2 || r.base > 64)
-    throw InputError("--base " + std::to_string(r.base) + ": must be from 2 to 64");
-  const uint64_t memory = r.max_memory ? r.max_memory : default_memory_limit();
-  const LuminanceImage image = read_bounded_luminance(
-      r.image, "the picture", SourceLocation{r.image, 0, 0, "", ""}, memory, kMaxPixels);
+  check_base(r.base);
+  const LuminanceImage image = read_picture(r.image, r.max_memory);
   MeasuredPicture picture;
   picture.source = std::filesystem::path(r.image).filename().string();
   const int count = r.threshold ? 2 : r.values;

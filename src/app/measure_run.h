@@ -18,6 +18,12 @@ struct MeasureRequest {
   uint64_t max_memory = 0;          // bytes; 0: default_memory_limit()
 };
 
+// A picture a user names, read as hostile input (bounded_image.h): at most 8192 x 8192 pixels
+// and `max_memory` bytes (0: default_memory_limit()). Measure and fit read pictures this way.
+LuminanceImage read_picture(const std::string& path, uint64_t max_memory);
+// The box base given on the command line, 2 to 64; InputError otherwise.
+void check_base(int base);
+
 // Reads, quantises and measures the picture; InputError for bad options or pictures.
 MeasuredPicture run_measure(const MeasureRequest& request);
 
