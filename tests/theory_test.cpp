@@ -113,3 +113,28 @@ TEST(Theory, SharesOfCutBoxesBringACropsFitToTheLimit) {
 }
 
 }  // namespace curdle
+
+#include "curdle/boxcount.h"
+#include "curdle/overlay.h"
+
+namespace curdle {
+
+// A view of whole root cells cuts no box: weighted by share its counts are the plain ones, which
+// is why the report fits them only once.
+TEST(Theory, AViewOfWholeRootsWeighsEveryBoxWhole) {
+  const Design d = design(4, 2, {{"3/4", "2/3", "1/2"}});
+  Design two_roots = d;
+  two_roots.field = Box{{64, 0, 0}, {128, 64, 1}};
+  const CurdField f = curdle(two_roots, 5, two_roots.field);
+  const std::vector<uint16_t> values = values_in(f, two_roots.field);
+  const auto weighted = share_weighted_box_counts(two_roots.lattice, two_roots.field,
+                                                  std::vector<bool>(values.begin(), values.end()));
+  const auto counts = box_counts(f.curds[0], two_roots.lattice.children());
+  ASSERT_EQ(weighted.size(), counts.size());
+  for (size_t k = 0; k < counts.size(); ++k) EXPECT_EQ(weighted[k], static_cast<double>(counts[k]));
+  const Report r = make_report(two_roots, 5, f, two_roots.field);
+  ASSERT_TRUE(r.curds[0].share_weighted_fit && r.curds[0].fit);
+  EXPECT_EQ(r.curds[0].share_weighted_fit->slope, r.curds[0].fit->slope);
+}
+
+}  // namespace curdle

@@ -36,10 +36,17 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
   const double log_b = std::log(static_cast<double>(l.base));
 
   std::vector<Bitset> scratch;
-  // The view's values, for share-weighted box counts (bounded: two bytes a cell).
+  // Share-weighted box counts, for views of up to 2^24 cells. A view of whole root cells cuts
+  // no box, so its weighted counts are its counts and the fits are the plain ones; otherwise
+  // the view's values (two bytes a cell) are read once for every curd.
   constexpr uint64_t kWeightedUpTo = uint64_t{1} << 24;
+  const bool weighted = view.cells() <= kWeightedUpTo;
+  const auto root = static_cast<int64_t>(l.side_in_cells(0));
+  bool cuts_boxes = false;
+  for (int d = 0; d < l.dimension; ++d)
+    cuts_boxes |= view.origin[d] % root != 0 || view.size[d] % root != 0;
   const std::vector<uint16_t> values =
-      view.cells() <= kWeightedUpTo ? values_in(field, view) : std::vector<uint16_t>{};
+      weighted && cuts_boxes ? values_in(field, view) : std::vector<uint16_t>{};
   for (size_t c = 0; c < design.curds.size(); ++c) {
     const CurdSpec& spec = design.curds[c];
     const Curd& curd = field.curds[c];
@@ -74,7 +81,10 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     }
     cr.fit = fit_box_dimension(cr.box_counts, l.base);
     cr.expected_fit = fit_box_dimension(cr.expected_box_counts, l.base);
-    if (!values.empty()) {
+    if (weighted && !cuts_boxes) {
+      cr.share_weighted_fit = cr.fit;
+      cr.expected_share_weighted_fit = cr.expected_fit;
+    } else if (weighted) {
       std::vector<bool> cells(values.size());
       for (size_t i = 0; i < values.size(); ++i) cells[i] = values[i] >> c & 1;
       cr.share_weighted_fit = fit_box_dimension(share_weighted_box_counts(l, view, cells), l.base);
