@@ -140,6 +140,14 @@ std::string value_list(const OrderLine& l) {
   return s;
 }
 
+// The columns quantities.csv and lots.csv share: element_type, material, colour, size_mm,
+// values, count, whole, cut, laid_area_m2, stock_area_m2.
+std::string order_fields(const OrderKey& key, const OrderLine& l) {
+  return fmt::format("{},{},{},{},{},{},{},{},{:.6f},{:.6f}", csv_field(std::get<0>(key)),
+                     csv_field(std::get<1>(key)), std::get<2>(key), csv_field(std::get<3>(key)),
+                     value_list(l), l.count, l.whole, l.cut, l.laid_area / 1e6, l.stock_area / 1e6);
+}
+
 }  // namespace
 
 void write_quantities_csv(std::ostream& out, const Layout& layout) {
@@ -154,10 +162,7 @@ void write_quantities_csv(std::ostream& out, const Layout& layout) {
     const auto with_spare = static_cast<uint64_t>(std::ceil(l.count * (1 + spec.spare) - 1e-9));
     const auto packs = (with_spare + spec.pack - 1) / spec.pack;
     const double per_piece = l.count ? l.stock_area / static_cast<double>(l.count) : 0;
-    out << fmt::format("{},{},{},{},{},{},{},{},{:.6f},{:.6f},{},{},{:.6f},{},{}\r\n",
-                       csv_field(std::get<0>(key)), csv_field(std::get<1>(key)), std::get<2>(key),
-                       csv_field(std::get<3>(key)), value_list(l), l.count, l.whole, l.cut,
-                       l.laid_area / 1e6, l.stock_area / 1e6, spec.spare, with_spare,
+    out << fmt::format("{},{},{},{:.6f},{},{}\r\n", order_fields(key, l), spec.spare, with_spare,
                        per_piece * static_cast<double>(with_spare) / 1e6, spec.pack, packs);
   }
 }
@@ -178,10 +183,7 @@ void write_lots_csv(std::ostream& out, const Layout& layout) {
          "stock_area_m2\r\n";
   for (const std::string& lot : order)
     for (const auto& [key, l] : lots[lot])
-      out << fmt::format("{},{},{},{},{},{},{},{},{},{:.6f},{:.6f}\r\n", csv_field(lot),
-                         csv_field(std::get<0>(key)), csv_field(std::get<1>(key)), std::get<2>(key),
-                         csv_field(std::get<3>(key)), value_list(l), l.count, l.whole, l.cut,
-                         l.laid_area / 1e6, l.stock_area / 1e6);
+      out << csv_field(lot) << ',' << order_fields(key, l) << "\r\n";
 }
 
 }  // namespace curdle
