@@ -7,12 +7,6 @@
 #include "layout/piece.h"
 
 namespace curdle {
-namespace {
-
-// No dots: some CAD programs take a dot in a layer name for a path separator.
-std::string hole_layer(double d) { return fmt::format("HOLE_D{}", mm_text(d)); }
-
-}  // namespace
 
 void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, int sheet) {
   const auto& s = layout.sheets[static_cast<size_t>(sheet)];

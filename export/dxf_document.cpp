@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "curdle/error.h"
+#include "export/wkt.h"
 
 namespace curdle {
 namespace {
@@ -25,11 +26,13 @@ int nearest_aci(const Rgb& c) {
 
 }  // namespace
 
+std::string hole_layer(double diameter) { return "HOLE_D" + mm_text(diameter); }
+
 std::string dxf_layer_name(const std::string& name) {
   std::string out;
   for (size_t i = 0; i < name.size();) {
     const unsigned char c = static_cast<unsigned char>(name[i]);
-    if (c < 0x80) {
+    if (c < 0x80) {  // no dots either: some CAD programs read one as a path separator
       out += std::string_view("<>/\\\":;?*|=,`.").find(static_cast<char>(c)) == std::string::npos &&
                      c >= 0x20
                  ? static_cast<char>(c)

@@ -23,6 +23,10 @@ struct DxfLayer {
 // A valid DXF layer name: characters DXF forbids become '_', non-ASCII letters \U+XXXX.
 std::string dxf_layer_name(const std::string& name);
 
+// The layer of round openings of one diameter, in the layout's DXF and the sheets' alike:
+// "HOLE_D22.6", written HOLE_D22_6.
+std::string hole_layer(double diameter);
+
 class DxfDocument {
  public:
   // Opens `path` and writes the header and tables; throws InputError when it cannot be written.

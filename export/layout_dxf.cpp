@@ -15,8 +15,7 @@ namespace {
 constexpr Rgb kInk{0, 0, 0};
 
 std::string layer_of(const Layout& layout, const Element& e) {
-  if (e.circle && layout.kind == LayoutKind::perforation)
-    return fmt::format("HOLE_D{}", mm_text(e.circle->d));
+  if (e.circle && layout.kind == LayoutKind::perforation) return hole_layer(e.circle->d);
   if (e.outline) return "OPENING_OUTLINE";
   const std::string& material = piece_material(layout, e);
   if (layout.kind == LayoutKind::blocks)
