@@ -88,9 +88,9 @@ class ModelBuilder {
     return static_cast<int>(model.bufferViews.size() - 1);
   }
 
-  int add_vec3(const std::vector<Vec3>& v, bool bounds, int target = TINYGLTF_TARGET_ARRAY_BUFFER) {
+  int add_vec3(const std::vector<Vec3>& v, bool bounds) {
     tinygltf::Accessor a;
-    a.bufferView = add_view(v.data(), v.size() * sizeof(Vec3), target);
+    a.bufferView = add_view(v.data(), v.size() * sizeof(Vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
     a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
     a.count = v.size();
     a.type = TINYGLTF_TYPE_VEC3;
