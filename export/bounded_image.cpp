@@ -9,23 +9,32 @@ constexpr uint64_t kMaxFileBytes = uint64_t{64} << 20;
 
 LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const std::string& what,
                                       const SourceLocation& where, uint64_t max_bytes,
-                                      uint64_t max_pixels) {
+                                      uint64_t max_pixels, const std::string& shown) {
+  const std::string name = shown.empty() ? path.string() : shown;
+  // The decoder's message may quote the path: shown by the same name.
+  auto reason = [&](const std::runtime_error& e) {
+    std::string text = e.what();
+    const std::string p = path.string();
+    for (size_t at = 0; !shown.empty() && (at = text.find(p, at)) != std::string::npos;
+         at += shown.size())
+      text.replace(at, p.size(), shown);
+    return text;
+  };
   // A device or a pipe (/dev/zero) would be read forever: regular files of bounded size only.
   std::error_code ec;
   if (!std::filesystem::exists(path, ec))
-    throw InputError(where, "cannot read " + what + " " + path.string() + ": no such file");
+    throw InputError(where, "cannot read " + what + " " + name + ": no such file");
   if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(where, what + " " + path.string() + " is not a regular file");
+    throw InputError(where, what + " " + name + " is not a regular file");
   const uint64_t file_bytes = std::filesystem::file_size(path, ec);
   if (ec || file_bytes > kMaxFileBytes)
-    throw InputError(where, what + " " + path.string() + " is larger than 64 MiB");
+    throw InputError(where, what + " " + name + " is larger than 64 MiB");
   const std::string readable = " (any image OpenImageIO reads: PNG, TIFF, JPEG, ...)";
   ImageSize size;
   try {
     size = read_image_size(path);
   } catch (const std::runtime_error& e) {
-    throw InputError(where,
-                     "cannot read " + what + " " + path.string() + ": " + e.what() + readable);
+    throw InputError(where, "cannot read " + what + " " + name + ": " + reason(e) + readable);
   }
   // Decoded as floats per channel, then luminance and a grid of values: 4 bytes each.
   const uint64_t pixels = static_cast<uint64_t>(std::max(0, size.width)) *
@@ -40,8 +49,7 @@ LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const s
   try {
     return read_luminance(path);
   } catch (const std::runtime_error& e) {
-    throw InputError(where,
-                     "cannot read " + what + " " + path.string() + ": " + e.what() + readable);
+    throw InputError(where, "cannot read " + what + " " + name + ": " + reason(e) + readable);
   }
 }
 

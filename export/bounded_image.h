@@ -11,11 +11,14 @@
 
 namespace curdle {
 
-// `what` names the picture in messages ("the mask image"). Throws InputError at `where` when
-// the file is missing, not a regular file, too large or unreadable, and ResourceLimitError when
-// decoding it would take more than `max_bytes` or it has over `max_pixels` pixels.
+// `what` names the picture in messages ("the mask image"), followed by `shown` (default: the
+// path; a temporary file holding an upload is shown by the upload's name). Throws InputError at
+// `where` when the file is missing, not a regular file, too large or unreadable, and
+// ResourceLimitError when decoding it would take more than `max_bytes` or it has over `max_pixels`
+// pixels.
 LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const std::string& what,
                                       const SourceLocation& where, uint64_t max_bytes,
-                                      uint64_t max_pixels = uint64_t{1} << 32);
+                                      uint64_t max_pixels = uint64_t{1} << 32,
+                                      const std::string& shown = {});
 
 }  // namespace curdle

@@ -29,7 +29,7 @@ std::string recipe_text(const FittedRecipe& f, const std::string& source) {
   for (const FittedCurd& c : f.curds) {
     std::string p;
     for (const StageFit& s : c.stages)
-      p += (p.empty() ? "" : ", ") + fmt::format("{:.4f}", s.probability);
+      p += (p.empty() ? "" : ", ") + probability_text(s.probability);
     t += fmt::format("\n[[curds]]\nname = \"{}\"\nprobabilities = [{}]\n", c.name, p);
     if (!c.colour.empty()) t += fmt::format("colour = \"{}\"\n", c.colour);
   }
@@ -47,19 +47,32 @@ FittedRecipe finish(FittedRecipe f, const std::string& source) {
   return f;
 }
 
+// The recipe's name: the source's stem, in letters, digits, '-' and '_'.
+std::string fitted_name(const std::string& source) {
+  std::string name = std::filesystem::path(source).stem().string() + "-fit";
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '-';
+  return name;
+}
+
 }  // namespace
 
-FittedRecipe run_fit(const FitRequest& r) {
+std::string probability_text(double p) { return fmt::format("{:.4f}", p); }
+
+void check_fit_options(const FitRequest& r) {
   check_base(r.base);
   if (r.stages < 1 || r.stages > 30)
-    throw InputError("--stages " + std::to_string(r.stages) + ": must be from 1 to 30");
+    throw InputError(parameter("stages"), "must be from 1 to 30, not " + std::to_string(r.stages));
   if (r.curds < 1 || r.curds > 4)
-    throw InputError("--curds " + std::to_string(r.curds) +
-                     ": must be from 1 to 4 (the picture is quantised to 2^n values)");
+    throw InputError(parameter("curds"),
+                     "must be from 1 to 4 (the picture is quantised to 2^n values), not " +
+                         std::to_string(r.curds));
+}
+
+FittedRecipe run_fit(const FitRequest& r) {
+  check_fit_options(r);
   FittedRecipe f;
-  f.name = std::filesystem::path(r.source).stem().string() + "-fit";
-  for (char& c : f.name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '-';
+  f.name = fitted_name(r.source);
   if (std::filesystem::path(r.source).extension() == ".csv") {
     // A curd field as curdle writes it: the curds and their cells are the file's own.
     const CellsTable table =
@@ -78,7 +91,13 @@ FittedRecipe run_fit(const FitRequest& r) {
     }
     return finish(f, r.source);
   }
-  const LuminanceImage image = read_picture(r.source, r.max_memory);
+  return fit_picture(read_picture(r.source, r.max_memory), r);
+}
+
+FittedRecipe fit_picture(const LuminanceImage& image, const FitRequest& r) {
+  check_fit_options(r);
+  FittedRecipe f;
+  f.name = fitted_name(r.source);
   f.lattice = Lattice{r.base, 2, r.stages, Mode::canonical};
   f.size = {image.width, image.height, 1};
   const int64_t width = image.width, height = image.height;

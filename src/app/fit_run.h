@@ -10,6 +10,7 @@
 
 #include "curdle/fit.h"
 #include "curdle/lattice.h"
+#include "export/image.h"
 
 namespace curdle::app {
 
@@ -35,6 +36,14 @@ struct FittedRecipe {
   std::string toml;  // the recipe, checked by reading it back
 };
 
+// A fitted probability as the recipe writes it ("0.6124").
+std::string probability_text(double probability);
+
+// InputError for a base, stage count or curd count out of range (checked before any reading).
+void check_fit_options(const FitRequest& request);
+
 FittedRecipe run_fit(const FitRequest& request);
+// A picture already read (request.source is only its name, for the recipe's name and note).
+FittedRecipe fit_picture(const LuminanceImage& image, const FitRequest& request);
 
 }  // namespace curdle::app

@@ -19,19 +19,31 @@ LuminanceImage read_picture(const std::string& path, uint64_t max_memory) {
 
 void check_base(int base) {
   if (base < 2 || base > 64)
-    throw InputError("--base " + std::to_string(base) + ": must be from 2 to 64");
+    throw InputError(parameter("base"), "must be from 2 to 64, not " + std::to_string(base));
+}
+
+void check_measure_options(const MeasureRequest& r) {
+  if (r.values < 2 || r.values > 16)
+    throw InputError(parameter("values"),
+                     "must be from 2 to 16 (the values the picture is quantised to), not " +
+                         std::to_string(r.values));
+  if (r.threshold && !(*r.threshold > 0 && *r.threshold < 1))
+    throw InputError(parameter("threshold"),
+                     "must be a luminance between 0 (black) and 1 (white), e.g. 0.5");
+  check_base(r.base);
 }
 
 MeasuredPicture run_measure(const MeasureRequest& r) {
-  if (r.values < 2 || r.values > 16)
-    throw InputError("--values " + std::to_string(r.values) +
-                     ": must be from 2 to 16 (the values the picture is quantised to)");
-  if (r.threshold && !(*r.threshold > 0 && *r.threshold < 1))
-    throw InputError("--threshold must be a luminance between 0 (black) and 1 (white), e.g. 0.5");
-  check_base(r.base);
-  const LuminanceImage image = read_picture(r.image, r.max_memory);
+  check_measure_options(r);
+  return measure_picture(read_picture(r.image, r.max_memory),
+                         std::filesystem::path(r.image).filename().string(), r);
+}
+
+MeasuredPicture measure_picture(const LuminanceImage& image, const std::string& source,
+                                const MeasureRequest& r) {
+  check_measure_options(r);
   MeasuredPicture picture;
-  picture.source = std::filesystem::path(r.image).filename().string();
+  picture.source = source;
   const int count = r.threshold ? 2 : r.values;
   ValueGrid grid;
   if (r.threshold) {

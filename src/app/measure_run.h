@@ -24,8 +24,15 @@ LuminanceImage read_picture(const std::string& path, uint64_t max_memory);
 // The box base given on the command line, 2 to 64; InputError otherwise.
 void check_base(int base);
 
+// InputError for values, threshold or base out of range (checked before any reading).
+void check_measure_options(const MeasureRequest& request);
+
 // Reads, quantises and measures the picture; InputError for bad options or pictures.
 MeasuredPicture run_measure(const MeasureRequest& request);
+// The same for a picture already read (request.image is only its name); `source` names it in
+// measure.json.
+MeasuredPicture measure_picture(const LuminanceImage& image, const std::string& source,
+                                const MeasureRequest& request);
 
 bool is_measure_output_name(const std::string& name, bool folder);
 // measure.json and measure.png.
