@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "app/fit_run.h"
 #include "app/outputs.h"
 #include "app/reproduce.h"
 #include "app/run.h"
@@ -19,6 +20,7 @@
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/search.h"
+#include "export/image.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -118,6 +120,27 @@ class ServerTest : public ::testing::Test {
   std::string cli_file(const std::string& name, const std::string& seed, const std::string& window,
                        const std::vector<std::string>& sets = {}) {
     return written_file(open_run(kRecipe, seed, window, sets), name);
+  }
+
+  // What the server answers to `request` sent as is on a socket of its own (a client library
+  // would send a body first).
+  std::string raw_request(const std::string& request) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<uint16_t>(port_));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    std::string answer;
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
+        ::send(fd, request.data(), request.size(), 0) == static_cast<ssize_t>(request.size())) {
+      timeval wait{10, 0};
+      ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
+      char buffer[4096];
+      for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;)
+        answer.append(buffer, static_cast<size_t>(n));
+    }
+    ::close(fd);
+    return answer;
   }
 
   static Server* server_;
@@ -323,6 +346,104 @@ TEST_F(ServerTest, SearchRanksAsTheLibraryDoes) {
     EXPECT_EQ(j["hits"][i]["window"], app::window_text(hits[i].segment, 2));
     EXPECT_DOUBLE_EQ(j["hits"][i]["score"].get<double>(), hits[i].score);
   }
+}
+
+// A picture sent by the page: measured with the lattice asked for, and fitted to the recipe
+// `curdle fit` writes for the same file; every bad picture or option is a 4xx that says why.
+TEST_F(ServerTest, MeasureTakesAPictureAndFitsTheRecipeTheCommandLineFits) {
+  const fs::path mask = fs::path(CURDLE_SOURCE_DIR) / "patterns/gallery-facade-mask.png";
+  const std::string bytes = slurp(mask);
+  httplib::Client client("127.0.0.1", port_);
+  client.set_read_timeout(120, 0);
+  auto r =
+      client.Post("/api/measure?name=gallery-facade-mask.png&base=2&stages=5", bytes, "image/png");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const json j = json::parse(r->body);
+  EXPECT_EQ(j["measure"]["size"], json::array({240, 120}));
+  EXPECT_EQ(j["measure"]["base"], 2);
+  EXPECT_EQ(j["measure"]["values"].size(), 2u);
+  app::FitRequest fit;
+  fit.source = mask.string();
+  fit.base = 2;
+  fit.stages = 5;
+  EXPECT_EQ(j["fit"]["recipe_toml"], app::run_fit(fit).toml);
+  ASSERT_EQ(j["fit"]["curds"].size(), 1u);
+  EXPECT_EQ(j["fit"]["curds"][0]["probabilities"].size(), 5u);
+  EXPECT_EQ(j["fit"]["field"], json::array({240, 120}));
+
+  // Without options, the served recipe's base and stages (fig. 8: base 4, 3 stages).
+  auto plain = client.Post("/api/measure", bytes, "image/png");
+  ASSERT_TRUE(plain);
+  ASSERT_EQ(plain->status, 200) << plain->body;
+  EXPECT_EQ(json::parse(plain->body)["fit"]["lattice"]["base"], 4);
+
+  // A picture with more pixels than the server generates cells (2^20 here).
+  PreviewImage wide;
+  wide.width = 1100;
+  wide.height = 1000;
+  wide.rgb.assign(size_t{3} * 1100 * 1000, 255);
+  const std::string wide_png = encode_png(wide);
+  struct Case {
+    std::string path, body;
+    int status;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {"/api/measure?name=notes.png", "plain text", 400, "cannot read the picture notes.png"},
+      {"/api/measure?name=..%2F..%2Fetc%2Fpasswd", "plain text", 400,
+       "cannot read the picture passwd"},
+      {"/api/measure", "", 400, "is empty"},
+      {"/api/measure?name=wide.png", wide_png, 413, "at most 1048576 pixels"},
+      {"/api/measure?stages=0", bytes, 400, "stages=: must be from 1 to 30"},
+      {"/api/measure?curds=9", bytes, 400, "curds=: must be from 1 to 4"},
+      {"/api/measure?base=x", bytes, 400, "base=: 'x' is not a whole number"},
+      {"/api/measure?seed=3", bytes, 400, "takes name, base, stages and curds only"},
+      {"/api/measure?colour=red", bytes, 400, "unknown parameter"},
+  };
+  for (const Case& c : cases) {
+    auto answer = client.Post(c.path, c.body, "image/png");
+    ASSERT_TRUE(answer) << c.path;
+    EXPECT_EQ(answer->status, c.status) << c.path << ": " << answer->body;
+    EXPECT_NE(answer->body.find(c.says), std::string::npos) << c.path << ": " << answer->body;
+  }
+  // Larger than the server takes: refused from its Content-Length, before a byte of the body
+  // is sent.
+  const std::string huge =
+      raw_request("POST /api/measure HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port_) +
+                  "\r\nContent-Length: 16777217\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(huge.rfind("HTTP/1.1 413", 0), 0u) << huge;
+  EXPECT_NE(huge.find("the picture is larger than 16384 KiB"), std::string::npos) << huge;
+  // A body without a length (chunked) is refused: its size could not be checked first.
+  auto chunked = client.Post(
+      "/api/measure",
+      [&](size_t offset, httplib::DataSink& sink) {
+        if (offset < bytes.size()) return sink.write(bytes.data(), bytes.size()), true;
+        sink.done();
+        return true;
+      },
+      "image/png");
+  ASSERT_TRUE(chunked);
+  EXPECT_EQ(chunked->status, 411);
+  // Only POST, and only from this server's own page.
+  auto got = get("/api/measure");
+  ASSERT_TRUE(got);
+  EXPECT_EQ(got->status, 405);
+  EXPECT_EQ(got->get_header_value("Allow"), "POST");
+  auto cross = client.Post("/api/measure", {{"Origin", "http://evil.example"}}, bytes, "image/png");
+  ASSERT_TRUE(cross);
+  EXPECT_EQ(cross->status, 403);
+  // No temporary picture is left behind (in this test's own TMPDIR: other tests upload too).
+  const char* was = std::getenv("TMPDIR");
+  const std::string saved = was ? was : "";
+  const fs::path own = fs::temp_directory_path() / "curdle-server-test-uploads";
+  fs::create_directories(own);
+  ::setenv("TMPDIR", own.c_str(), 1);
+  for (const Case& c : cases) (void)client.Post(c.path, c.body, "image/png");
+  (void)client.Post("/api/measure", bytes, "image/png");
+  was ? ::setenv("TMPDIR", saved.c_str(), 1) : ::unsetenv("TMPDIR");
+  EXPECT_TRUE(fs::is_empty(own));
+  fs::remove_all(own);
 }
 
 TEST_F(ServerTest, ThePageIsServedFromItsFiles) {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/outputs.h"
+#include "app/picture_study.h"
 #include "app/reproduce.h"
 #include "app/run.h"
 #include "app/search_run.h"
@@ -19,6 +20,7 @@
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
 #include "curdle/report.h"
+#include "export/measure_files.h"
 #include "export/report_json.h"
 #include "layout/builder.h"
 
@@ -240,6 +242,7 @@ ApiResponse api_recipe(const ApiContext& c) {
     ordered_json j = describe(s);
     j["seed"] = std::to_string(s.seed);
     j["recipe_toml"] = c.recipe_text;
+    j["max_upload_bytes"] = c.limits.max_upload_bytes;
     return json_response(j);
   });
 }
@@ -348,6 +351,64 @@ ApiResponse api_search(const ApiContext& c, const Params& params) {
     j["seeds"] = {std::to_string(first), std::to_string(last)};
     j["server_ms"] =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return json_response(j);
+  });
+}
+
+ApiResponse api_measure(const ApiContext& c, const Params& params, const std::string& body) {
+  return guarded([&] {
+    const RunRequest r = read_run(params, {"name", "base", "stages", "curds"});
+    if (!r.sets.empty() || !r.seed.empty() || !r.window.empty())
+      throw InputError(parameter("set"),
+                       "a measure takes name, base, stages and curds only; the recipe is not run");
+    const Lattice lattice = run_for(c, RunRequest{}).recipe.design.lattice;
+    auto integer = [&](const std::string& key, int fallback) {
+      const std::string text = own(r, key);
+      if (text.empty()) return fallback;
+      int v = 0;
+      auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (ec != std::errc() || p != text.data() + text.size())
+        throw InputError(parameter(key), "'" + text + "' is not a whole number");
+      return v;
+    };
+    app::PictureStudyRequest request;
+    request.bytes = body;
+    request.name = own(r, "name", "picture");
+    request.base = integer("base", lattice.base);
+    request.stages = integer("stages", lattice.stages);
+    request.curds = integer("curds", 1);
+    // A fitted recipe this server could not generate is no use to the page.
+    request.max_pixels = c.limits.max_cells;
+    request.max_memory = memory_limit(c);
+    const app::PictureStudy study = app::study_picture(request);
+    const app::FittedRecipe& f = study.fitted;
+    ordered_json curds = ordered_json::array();
+    for (const app::FittedCurd& curd : f.curds) {
+      ordered_json probabilities = ordered_json::array(), stages = ordered_json::array();
+      for (const StageFit& s : curd.stages) {
+        probabilities.push_back(app::probability_text(s.probability));
+        stages.push_back({{"stage", s.stage},
+                          {"measured", s.measured},
+                          {"expected", s.expected},
+                          {"probability", s.probability},
+                          {"sd", s.sd}});
+      }
+      curds.push_back({{"name", curd.name},
+                       {"colour", curd.colour},
+                       {"probabilities", probabilities},
+                       {"stages", stages}});
+    }
+    ordered_json j;
+    j["measure"] = measure_to_json(study.measured);
+    j["fit"] = {{"name", f.name},
+                {"lattice",
+                 {{"base", f.lattice.base},
+                  {"dimension", f.lattice.dimension},
+                  {"stages", f.lattice.stages},
+                  {"mode", std::string(to_string(f.lattice.mode))}}},
+                {"field", {f.size[0], f.size[1]}},
+                {"curds", curds},
+                {"recipe_toml", f.toml}};
     return json_response(j);
   });
 }

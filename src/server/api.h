@@ -18,6 +18,7 @@ struct ApiLimits {
   uint64_t max_layout_cells = uint64_t{1} << 20;  // cells laid out for a layout download
   uint64_t max_search_work = uint64_t{1} << 30;   // seeds x field cells x stages, one search
   uint64_t max_memory = 0;                        // bytes a request may use; 0: a default
+  uint64_t max_upload_bytes = uint64_t{16} << 20;  // a picture's file sent to be measured
 };
 
 struct ApiContext {
@@ -34,7 +35,8 @@ struct ApiResponse {
   std::string filename;  // set for downloads
 };
 
-// GET /api/recipe: the recipe as the page needs it (lattice, curds, field, layout, legend).
+// GET /api/recipe: the recipe as the page needs it (lattice, curds, field, layout, legend),
+// and the largest picture the page may send.
 ApiResponse api_recipe(const ApiContext& context);
 // GET /api/generate: seed, window, cells=0|1 and recipe keys (lattice.base=3, or
 // set=lattice.base=3): report, legend, values of the cells, command and recipe text.
@@ -43,6 +45,11 @@ ApiResponse api_generate(const ApiContext& context, const Params& params);
 ApiResponse api_export(const ApiContext& context, const Params& params);
 // GET /api/search: seeds=A..B, window=W,H, target (repeatable), top, stride, recipe keys.
 ApiResponse api_search(const ApiContext& context, const Params& params);
+
+// POST /api/measure: the body is a picture's file; name (its file name), base, stages and
+// curds (default: the recipe's). The picture measured (measure.json's content) and a recipe
+// fitted to it, whose probabilities the page loads as overrides.
+ApiResponse api_measure(const ApiContext& context, const Params& params, const std::string& body);
 
 // GET /api/colours: colour=#rrggbb once per curd; the colour of every value as the library
 // blends it ({"values": [...]}, value 0 first), so that the page never blends on its own.

@@ -3,6 +3,7 @@
 #include <httplib.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <semaphore>
 
@@ -33,6 +34,9 @@ Params query_params(const std::string& target) {
 }
 
 namespace {
+
+// The one path that takes a body of any size: a picture to measure.
+constexpr const char* kUpload = "/api/measure";
 
 // What a request must say in its Host header (and an API request in its Origin): the address
 // the server is bound to, so that a page elsewhere cannot reach it through a DNS name that
@@ -112,7 +116,7 @@ struct Server::Impl {
   httplib::Server::HandlerResponse screen(const httplib::Request& req, httplib::Response& res) {
     const bool api = req.path.rfind("/api/", 0) == 0;
     auto refuse = [&](int status, const std::string& message) {
-      if (status == 405) res.set_header("Allow", "GET, HEAD");
+      if (status == 405) res.set_header("Allow", req.path == kUpload ? "POST" : "GET, HEAD");
       if (api)
         reply(res, api_error(status, message));
       else {
@@ -121,8 +125,25 @@ struct Server::Impl {
       }
       return httplib::Server::HandlerResponse::Handled;
     };
-    if (req.method != "GET" && req.method != "HEAD")
-      return refuse(405, "the server takes GET requests only, not " + req.method);
+    const bool upload = req.path == kUpload;
+    if (upload ? req.method != "POST" : req.method != "GET" && req.method != "HEAD")
+      return refuse(405, upload ? "a picture to measure is sent by POST, not " + req.method
+                                : "the server takes GET requests only (and POST to " +
+                                      std::string(kUpload) + "), not " + req.method);
+    // A body is read only after this: its length is checked first, from the header.
+    const bool chunked = req.has_header("Transfer-Encoding");
+    const uint64_t limit = upload ? config.api.limits.max_upload_bytes : config.max_body_bytes;
+    if (chunked) return refuse(411, "send the body with a Content-Length, not in chunks");
+    const std::string length = req.get_header_value("Content-Length");
+    uint64_t bytes = 0;
+    if (!length.empty()) {
+      auto [end, ec] = std::from_chars(length.data(), length.data() + length.size(), bytes);
+      if (ec != std::errc() || end != length.data() + length.size())
+        return refuse(400, "Content-Length '" + length + "' is not a whole number");
+    }
+    if (bytes > limit)
+      return refuse(413, std::string(upload ? "the picture" : "the request's body") +
+                             " is larger than " + std::to_string(limit >> 10) + " KiB");
     if (!host_allowed(req.get_header_value("Host")))
       return refuse(403, "this server answers requests addressed to " +
                              hosts_for(bound_host, bound_port).front() + " only");
@@ -142,7 +163,8 @@ struct Server::Impl {
   }
 
   void routes() {
-    http.set_payload_max_length(config.max_body_bytes);
+    http.set_payload_max_length(
+        std::max(config.max_body_bytes, config.api.limits.max_upload_bytes));
     // Slow clients: each read waits at most 2 s, an idle connection closes after 2 s, and the
     // pool has threads enough that a few slow sockets cannot take every one.
     http.set_read_timeout(2, 0);
@@ -173,16 +195,20 @@ struct Server::Impl {
     http.Get("/api/search", [this](const httplib::Request& req, httplib::Response& res) {
       heavy(res, [&] { return api_search(config.api, query_params(req.target)); });
     });
+    http.Post(kUpload, [this](const httplib::Request& req, httplib::Response& res) {
+      heavy(res, [&] { return api_measure(config.api, query_params(req.target), req.body); });
+    });
     // Anything else under /api/ is a JSON 404 (or 405 for another method), never a page.
     auto not_found = [this](const httplib::Request& req, httplib::Response& res) {
       const bool get = req.method == "GET";
       reply(
           res,
-          api_error(get ? 404 : 405,
-                    get ? "no such endpoint " + req.path +
-                              "; the API has /api/recipe, /api/colours, /api/generate, /api/export "
-                              "and /api/search"
-                        : "the API takes GET requests only"));
+          api_error(
+              get ? 404 : 405,
+              get ? "no such endpoint " + req.path +
+                        "; the API has /api/recipe, /api/colours, /api/generate, /api/export, "
+                        "/api/search and /api/measure"
+                  : "the API takes GET requests only (and POST to " + std::string(kUpload) + ")"));
     };
     http.Get(R"(/api/.*)", not_found);
     http.set_mount_point("/", config.web_root.string());
