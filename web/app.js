@@ -142,6 +142,7 @@ async function refreshSegment() {
   }
   renderReport();
   renderExports();
+  drawMeasurePlot();
 }
 
 // ---- controls ----
@@ -423,6 +424,7 @@ function wireControls() {
   $("search-results").addEventListener("click", pickHit);
   window.addEventListener("resize", () => state.whole && draw());
   wireCanvas();
+  wireMeasure();
 }
 
 // A window typed as X,Y,W,H (X,W on a line): checked against the field here, so that the

@@ -4,7 +4,7 @@
 // message. Screenshots go to SCREENSHOT_DIR for a person to look at.
 // Usage: node page.mjs CURDLE SCREENSHOT_DIR
 import { spawn, execFileSync } from 'node:child_process';
-import { mkdir, mkdtemp, readFile, rm } from 'node:fs/promises';
+import { mkdir, mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
@@ -169,6 +169,38 @@ try {
   check((await page.inputValue('#seed')) === seed, `clicking the best hit loads seed ${seed} and segment ${win}`);
   await layoutShown(win);
   await page.screenshot({ path: path.join(shots, '4-search.png'), fullPage: true });
+
+  // A picture measured and fitted with the page's lattice: the fitted recipe is the one
+  // `curdle fit` writes, and loading it makes its lattice, field and curds the page's.
+  await page.click('#reset');
+  await page.waitForFunction(() => document.querySelector('#error').hidden);
+  const picture = path.resolve('../../patterns/gallery-facade-mask.png');
+  await page.setInputFiles('#measure-file', picture);
+  await page.waitForSelector('#measure-result:not([hidden])');
+  const measuredBody = await page.evaluate(() => measured.result);
+  const [base, stages] = [await page.inputValue('#base'), await page.inputValue('#stages')];
+  const fitted = path.join(work, 'fitted.toml');
+  execFileSync(curdle, ['fit', picture, '--base', base, '--stages', stages, '--out', fitted]);
+  check(measuredBody.fit.recipe_toml === await readFile(fitted, 'utf8'),
+        `the page's fitted recipe is the one curdle fit writes (base ${base}, ${stages} stages)`);
+  check(await page.locator('#measure-values tr').count() === 3, 'the picture is measured as two values');
+  check(await page.locator('#measure-fit tr').count() === 1 + Number(stages), 'a fitted row per stage');
+  check(await page.locator('#measure-plot').evaluate((c) => c.width > 0 && c.height > 0), 'the box counts are plotted');
+  const loaded = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+  await page.click('#measure-load');
+  const loadedUrl = decodeURIComponent((await loaded).url());
+  check(loadedUrl.includes('field.cells=[240,120]'), 'loading the fit sets the field to the picture: 240 x 120 cells');
+  const p1 = measuredBody.fit.curds[0].probabilities[0];
+  check(loadedUrl.includes(`"${p1}"`), `loading the fit sends its probabilities (p1 = ${p1})`);
+  await page.waitForFunction(() => document.querySelector('#status').textContent.includes('28,800 cells') ||
+                                   document.querySelector('#status').textContent.includes('28800 cells'));
+  check(await page.locator('#error').isHidden(), 'the fitted recipe generates without error');
+  await page.screenshot({ path: path.join(shots, '5-measure.png'), fullPage: true });
+  const notPicture = path.join(work, 'not-a-picture.png');
+  await writeFile(notPicture, 'plain text');
+  await page.setInputFiles('#measure-file', notPicture);
+  await page.waitForFunction(() => document.querySelector('#error').textContent.includes('cannot read the picture not-a-picture.png'));
+  check(true, 'a file that is no picture shows the server\'s message');
   check(pageErrors.length === 0, `no script errors on the page ${pageErrors.join('; ')}`);
 } finally {
   await browser.close();
