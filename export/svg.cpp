@@ -8,6 +8,7 @@
 
 #include "curdle/palette.h"
 #include "curdle/text.h"
+#include "export/title_block.h"
 
 namespace curdle {
 namespace {
@@ -49,21 +50,6 @@ struct Sheet {
   double x(double v) const { return margin + v; }
   double y(double v, double h = 0) const { return margin + height - v - h; }
 };
-
-std::string sheet_line(const Layout& layout, const LayoutSpec& spec) {
-  if (layout.kind != LayoutKind::perforation)
-    return "origin " +
-           std::string(layout.origin == Corner::bottom_left    ? "bottom-left"
-                       : layout.origin == Corner::bottom_right ? "bottom-right"
-                       : layout.origin == Corner::top_left     ? "top-left"
-                                                               : "top-right") +
-           "; element IDs count rows and columns from it";
-  return fmt::format(
-      "sheet {} mm thick, {} openings, open area {:.2f} %, {} rule violations{}",
-      mm(spec.perforation().thickness), layout.elements.size(), 100 * layout.open_area,
-      layout.violations.size(),
-      spec.perforation().fix == HoleFix::drop && !layout.violations.empty() ? " (dropped)" : "");
-}
 
 // A rectangle of merged elements, from the first to the last of the run (see svg.h).
 void write_merged(std::ostream& out, const Sheet& s, const Layout& layout,
@@ -334,50 +320,14 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
     out << fmt::format(
         "<g class=\"legend-entry\" data-value=\"{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" "
         "height=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\">"
-        "{} {}: {} {}{}</text></g>\n",
+        "{} {}: {}</text></g>\n",
         e.value, mm(margin), mm(y), mm(unit * 2), mm(unit * 1.2), fill, mm(unit * 0.05),
-        mm(margin + unit * 2.6), mm(y + unit), e.value, escape(e.label), e.count,
-        layout.kind == LayoutKind::perforation || layout.kind == LayoutKind::park ? "cell"
-        : layout.kind == LayoutKind::rhythm                                       ? "bay"
-        : layout.kind == LayoutKind::blocks                                       ? "voxel"
-                                            : escape(layout.element_type),
-        e.count == 1 ? "" : "s");
+        mm(margin + unit * 2.6), mm(y + unit), e.value, escape(e.label),
+        escape(legend_count(layout, e.count)));
   }
   out << "</g>\n";
   const double tx = margin + W * 0.42;
-  std::string probabilities;
-  for (const CurdSpec& c : source.curds) {
-    std::string p;
-    for (const Probability& q : c.probabilities) p += (p.empty() ? "" : ", ") + q.text();
-    probabilities += (probabilities.empty() ? "" : "; ") + c.name + " " + p;
-  }
-  uint64_t cut_count = 0;
-  for (const Element& e : layout.elements) cut_count += e.cut;
-  const std::vector<std::string> lines = {
-      source.recipe + (source.description.empty() ? "" : " - " + source.description),
-      fmt::format("seed {} - base {}, {}-D, {} stages, {} mode", source.seed, source.lattice.base,
-                  source.lattice.dimension, source.lattice.stages, to_string(source.lattice.mode)),
-      "probabilities: " + probabilities,
-      layout.kind == LayoutKind::perforation
-          ? fmt::format("{} x {} mm sheet: {} x {} cells of {} x {} mm", mm(W), mm(H),
-                        layout.columns, layout.rows, mm(layout.module_w), mm(layout.module_h))
-      : layout.kind == LayoutKind::rhythm
-          ? fmt::format("{} x {} mm: {} bays of {} mm, {} fins", mm(W), mm(H), layout.columns,
-                        mm(layout.module_w), layout.elements.size())
-      : layout.kind == LayoutKind::blocks
-          ? fmt::format("{} x {} x {} voxels of {} x {} x {} mm (w x d x h), {} blocks",
-                        layout.view.size[0], layout.view.size[1], layout.view.size[2],
-                        mm(layout.module_w), mm(layout.module_h), mm(spec.blocks().voxel_h),
-                        layout.elements.size())
-      : layout.kind == LayoutKind::park
-          ? fmt::format("{} x {} mm: {} x {} cells of {} x {} mm, {} elements", mm(W), mm(H),
-                        layout.columns, layout.rows, mm(layout.module_w), mm(layout.module_h),
-                        layout.elements.size())
-          : fmt::format("{} x {} mm: {} {}s of {} x {} mm, joint {} mm ({} cut)", mm(W), mm(H),
-                        layout.elements.size(), layout.element_type, mm(layout.module_w),
-                        mm(layout.module_h), mm(layout.joint), cut_count),
-      sheet_line(layout, spec),
-      "curdle - random curds (Mandelbrot; Cirovic 2014) - units mm"};
+  const std::vector<std::string> lines = title_lines(layout);
   // Sized to fit the longest line at about half an em per character.
   std::vector<std::string> all = lines;
   for (const std::string& note : layout.notes) all.push_back("note: " + note);

@@ -18,15 +18,23 @@ std::array<double, 2> drawing_area(const PaperSheet& sheet, bool landscape) {
   return {w - 20 - 10, h - 10 - 10 - 50};
 }
 
+const std::vector<double>& standard_scales() {
+  static const std::vector<double> scales = [] {
+    std::vector<double> s;
+    for (double decade = 1; decade <= 1e8; decade *= 10)
+      for (const double step : {1.0, 2.0, 2.5, 5.0})
+        if (step != 2.5 || decade >= 10) s.push_back(step * decade);  // 1 : 2.5 is not standard
+    s.push_back(1e9);
+    return s;
+  }();
+  return scales;
+}
+
 SheetFit fit_to_sheet(double width, double height, const PaperSheet& sheet) {
-  for (double decade = 1; decade <= 1e8; decade *= 10)
-    for (const double step : {1.0, 2.0, 2.5, 5.0}) {
-      if (step == 2.5 && decade < 10) continue;  // 1 : 25 and 1 : 250 are standard, 1 : 2.5 not
-      const double n = step * decade;
-      for (const bool landscape : {width >= height, width < height}) {
-        const auto area = drawing_area(sheet, landscape);
-        if (width / n <= area[0] + 1e-9 && height / n <= area[1] + 1e-9) return {n, landscape};
-      }
+  for (const double n : standard_scales())
+    for (const bool landscape : {width >= height, width < height}) {
+      const auto area = drawing_area(sheet, landscape);
+      if (width / n <= area[0] + 1e-9 && height / n <= area[1] + 1e-9) return {n, landscape};
     }
   return {1e9, true};
 }

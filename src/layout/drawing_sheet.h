@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace curdle {
 
@@ -32,5 +33,8 @@ struct SheetFit {
   bool landscape = true;
 };
 SheetFit fit_to_sheet(double width, double height, const PaperSheet& sheet);
+
+// The standard scales 1 : N from 1 up to 10^9, smallest N first.
+const std::vector<double>& standard_scales();
 
 }  // namespace curdle

@@ -1,0 +1,21 @@
+// The words a drawing of a layout carries: the title block's lines (recipe, seed and lattice,
+// probabilities, the surface and its elements, origin or sheet facts, units) and the legend's
+// unit, so that layout.svg, layout.png and layout.pdf say the same.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace curdle {
+
+std::vector<std::string> title_lines(const Layout& layout);
+
+// What a legend entry counts: "tile", "panel", "cell" (perforation, park), "bay", "voxel".
+std::string legend_unit(const Layout& layout);
+
+// "12 tiles", "1 cell".
+std::string legend_count(const Layout& layout, uint64_t count);
+
+}  // namespace curdle

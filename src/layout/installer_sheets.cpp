@@ -1,0 +1,224 @@
+#include "layout/installer_sheets.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "layout/piece.h"
+
+namespace curdle {
+namespace {
+
+constexpr double kRowStripMm = 14;    // row numbers, left of the frame
+constexpr double kColumnStripMm = 8;  // column numbers, under the frame
+constexpr double kBandMm = 16;        // paper around the layout for labels beside edge pieces
+constexpr size_t kScalesTried = 6;    // smaller scales tried when labels do not all find room
+
+bool contains(const Rect& outer, const Rect& inner) {
+  const double e = 1e-6;
+  return inner.x >= outer.x - e && inner.y >= outer.y - e && inner.right() <= outer.right() + e &&
+         inner.top() <= outer.top() + e;
+}
+
+// Label boxes already placed, found by a grid of buckets.
+class PlacedLabels {
+ public:
+  explicit PlacedLabels(double bucket) : bucket_(bucket) {}
+  bool collides(const Rect& r) const {
+    bool hit = false;
+    visit(r, [&](int64_t key) {
+      const auto it = buckets_.find(key);
+      if (it == buckets_.end()) return;
+      for (const Rect& other : it->second)
+        if (overlaps(other, r)) hit = true;
+    });
+    return hit;
+  }
+  void add(const Rect& r) {
+    visit(r, [&](int64_t key) { buckets_[key].push_back(r); });
+  }
+
+ private:
+  template <class F>
+  void visit(const Rect& r, F&& f) const {
+    const auto lo_x = static_cast<int64_t>(std::floor(r.x / bucket_));
+    const auto hi_x = static_cast<int64_t>(std::floor(r.right() / bucket_));
+    const auto lo_y = static_cast<int64_t>(std::floor(r.y / bucket_));
+    const auto hi_y = static_cast<int64_t>(std::floor(r.top() / bucket_));
+    for (int64_t y = lo_y; y <= hi_y; ++y)
+      for (int64_t x = lo_x; x <= hi_x; ++x) f(y * 4000037 + x);
+  }
+  double bucket_;
+  std::unordered_map<int64_t, std::vector<Rect>> buckets_;
+};
+
+Rect centred(double cx, double cy, double w, double h) { return {cx - w / 2, cy - h / 2, w, h}; }
+
+// Places every label at 1 : scale; false when some label found no place.
+bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
+           InstallerPlan& plan) {
+  plan.scale = scale;
+  const double band = kBandMm * scale;
+  const double win_w = plan.viewport[0] * scale, win_h = plan.viewport[1] * scale;
+  const double x0 = -band, y0 = -band;
+  plan.grid_columns =
+      std::max<size_t>(1, static_cast<size_t>(std::ceil((layout.width + 2 * band) / win_w - 1e-9)));
+  plan.grid_rows = std::max<size_t>(
+      1, static_cast<size_t>(std::ceil((layout.height + 2 * band) / win_h - 1e-9)));
+  plan.sheets.clear();
+  for (size_t r = 0; r < plan.grid_rows; ++r)
+    for (size_t c = 0; c < plan.grid_columns; ++c)
+      plan.sheets.push_back({r,
+                             c,
+                             {x0 + static_cast<double>(c) * win_w,
+                              y0 + static_cast<double>(r) * win_h, win_w, win_h}});
+  auto sheet_of = [&](double x, double y) {
+    const auto c = std::clamp<int64_t>(static_cast<int64_t>(std::floor((x - x0) / win_w)), 0,
+                                       static_cast<int64_t>(plan.grid_columns) - 1);
+    const auto r = std::clamp<int64_t>(static_cast<int64_t>(std::floor((y - y0) / win_h)), 0,
+                                       static_cast<int64_t>(plan.grid_rows) - 1);
+    return static_cast<size_t>(r) * plan.grid_columns + static_cast<size_t>(c);
+  };
+
+  const double lh = label_height_mm(plan.text_mm) * scale;
+  PlacedLabels placed(lh * 4);
+  plan.labels.assign(pieces.size(), {});
+  plan.unplaced = 0;
+  std::vector<size_t> beside;
+  // Inside first: a label in its own piece cannot meet another piece's.
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const InstallerPiece& p = pieces[i];
+    InstallerLabel& label = plan.labels[i];
+    label.text = p.id;
+    label.anchor = {p.bounds.x + p.bounds.w / 2, p.bounds.y + p.bounds.h / 2};
+    label.sheet = sheet_of(label.anchor[0], label.anchor[1]);
+    const Rect& window = plan.sheets[label.sheet].window;
+    const double lw = label_width_mm(p.id.size(), plan.text_mm) * scale;
+    std::vector<const Rect*> parts;
+    for (const Rect& r : p.parts) parts.push_back(&r);
+    std::sort(parts.begin(), parts.end(),
+              [](const Rect* a, const Rect* b) { return a->area() > b->area(); });
+    bool done = false;
+    for (const Rect* part : parts) {
+      for (const bool rotated : {false, true}) {
+        const Rect box = centred(part->x + part->w / 2, part->y + part->h / 2, rotated ? lh : lw,
+                                 rotated ? lw : lh);
+        if (contains(*part, box) && contains(window, box)) {
+          label.box = box, label.rotated = rotated, label.inside = true;
+          placed.add(box);
+          done = true;
+          break;
+        }
+      }
+      if (done) break;
+    }
+    if (!done) beside.push_back(i);
+  }
+  // Then beside: the nearest free place on the piece's own sheet, in eight directions.
+  for (const size_t i : beside) {
+    InstallerLabel& label = plan.labels[i];
+    const Rect& window = plan.sheets[label.sheet].window;
+    const double lw = label_width_mm(label.text.size(), plan.text_mm) * scale;
+    const auto [cx, cy] = label.anchor;
+    const Rect& b = pieces[i].bounds;
+    bool done = false;
+    for (int k = 1; k <= 24 && !done; ++k) {
+      const double d = lh * 0.75 * k;
+      const double dirs[8][2] = {{0, 1}, {0, -1}, {1, 0},  {-1, 0},
+                                 {1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+      for (const auto& dir : dirs) {
+        // Clear of the piece's own extent, then d further out.
+        const double ox = dir[0] * (b.w / 2 + lw / 2 + d), oy = dir[1] * (b.h / 2 + lh / 2 + d);
+        const Rect box = centred(cx + ox, cy + oy, lw, lh);
+        if (contains(window, box) && !placed.collides(box)) {
+          label.box = box, label.rotated = false, label.inside = false;
+          placed.add(box);
+          done = true;
+          break;
+        }
+      }
+    }
+    if (!done) {
+      label.box = centred(cx, cy, lw, lh), label.inside = false;
+      ++plan.unplaced;
+    }
+  }
+  return plan.unplaced == 0;
+}
+
+}  // namespace
+
+double label_width_mm(size_t characters, double text_mm) {
+  return (0.96 * static_cast<double>(characters) + 0.8) * text_mm;
+}
+double label_height_mm(double text_mm) { return 1.7 * text_mm; }
+
+std::array<double, 2> installer_viewport(const PaperSheet& paper, bool landscape) {
+  const auto area = drawing_area(paper, landscape);
+  return {area[0] - kRowStripMm, area[1] - kColumnStripMm};
+}
+
+std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
+  std::vector<InstallerPiece> pieces;
+  if (layout.kind == LayoutKind::perforation) {
+    for (const auto& sheet : layout.sheets) pieces.push_back({sheet.id, {sheet.area}, sheet.area});
+    return pieces;
+  }
+  pieces.reserve(layout.elements.size());
+  for (const Element& e : layout.elements) {
+    const Rect bounds = laid_bounds(e);
+    pieces.push_back(
+        {e.id, e.shape.empty() || e.circle || e.outline ? std::vector<Rect>{bounds} : e.shape,
+         bounds});
+  }
+  return pieces;
+}
+
+InstallerPlan plan_installer_sheets(const Layout& layout) {
+  InstallerPlan plan;
+  plan.paper = paper_sheet(layout.spec.paper).value_or(*paper_sheet("A3"));
+  plan.landscape = layout.width >= layout.height;
+  plan.viewport = installer_viewport(plan.paper, plan.landscape);
+  const std::vector<InstallerPiece> pieces = installer_pieces(layout);
+  // The typical piece: the median by area. Its label must fit inside it, across or along.
+  double typical_w = layout.width, typical_h = layout.height;
+  size_t longest = 1;
+  if (!pieces.empty()) {
+    std::vector<const InstallerPiece*> order;
+    for (const InstallerPiece& p : pieces) {
+      order.push_back(&p);
+      longest = std::max(longest, p.id.size());
+    }
+    std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(order.size() / 2),
+                     order.end(), [](const InstallerPiece* a, const InstallerPiece* b) {
+                       return a->bounds.area() < b->bounds.area();
+                     });
+    typical_w = order[order.size() / 2]->bounds.w;
+    typical_h = order[order.size() / 2]->bounds.h;
+  }
+  // The largest text at which the typical piece holds the longest label at 1 : n.
+  auto text_that_fits = [&](double n) {
+    const double w = typical_w / n, h = typical_h / n;
+    const double per_text = label_width_mm(longest, 1), tall = label_height_mm(1);
+    return std::max(std::min(w / per_text, h / tall), std::min(h / per_text, w / tall));
+  };
+  const std::vector<double>& scales = standard_scales();
+  // The largest standard scale at which the typical piece holds its label, and no larger than
+  // the one the whole layout is drawn at on sheet 1.
+  const double whole = fit_to_sheet(layout.width, layout.height, plan.paper).scale;
+  std::ptrdiff_t start = 0;
+  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(scales.size()); ++i) {
+    const double n = scales[static_cast<size_t>(i)];
+    if (n > whole) break;
+    if (text_that_fits(n) >= kInstallerMinTextMm) start = i;
+  }
+  for (std::ptrdiff_t i = start, tried = 0;
+       i >= 0 && tried < static_cast<std::ptrdiff_t>(kScalesTried); --i, ++tried) {
+    const double n = scales[static_cast<size_t>(i)];
+    plan.text_mm = std::clamp(text_that_fits(n), kInstallerMinTextMm, kInstallerTextMm);
+    if (place(pieces, n, layout, plan)) break;
+  }
+  return plan;
+}
+
+}  // namespace curdle

@@ -1,0 +1,73 @@
+// The installer's sheets: the layout cut into a grid of ISO sheets at a standard scale where
+// every piece's ID can be read on paper (text at least 2 mm high) and no two labels overlap.
+//
+// A label sits inside its piece when it fits there, across or along it; otherwise (a sliver at
+// an edge or an opening) beside it with a leader, at the nearest free place on the same sheet.
+// The scale is the largest standard one at which a typical piece holds its label and every
+// label finds a place; each sheet keeps the labels of the pieces whose centre it holds.
+// Perforated surfaces are installed as panels: their pieces are the fabrication sheets (the
+// openings are cut from the sheets' DXFs by their own IDs).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "layout/drawing_sheet.h"
+#include "layout/layout.h"
+
+namespace curdle {
+
+// Text of IDs on the installer's sheets, mm of capital height on paper (ISO 3098's h): 2.5
+// where the pieces have room, never below 2 (row and column numbers are 2.5).
+inline constexpr double kInstallerTextMm = 2.5;
+inline constexpr double kInstallerMinTextMm = 2.0;
+// DejaVu Sans: capitals are 0.729 em high, so the font size is text / 0.729.
+inline constexpr double kCapHeightEm = 0.729;
+// The width of a label of `characters` on paper, mm: 0.7 em a character (the widest letters
+// in IDs, R and C, are 0.70 em; digits 0.64), 0.96 capital heights, and room either side; its
+// height a line, 1.7 capital heights.
+double label_width_mm(size_t characters, double text_mm);
+double label_height_mm(double text_mm);
+
+struct InstallerLabel {
+  std::string text;                    // the piece's ID
+  Rect box;                            // layout mm
+  bool rotated = false;                // reads bottom to top
+  bool inside = true;                  // in its piece; else beside it, with a leader from `anchor`
+  std::array<double, 2> anchor{0, 0};  // the piece's centre, layout mm
+  size_t sheet = 0;                    // index into InstallerPlan::sheets
+};
+
+struct InstallerSheet {
+  size_t row = 0, column = 0;  // in the grid, from the bottom-left
+  Rect window;                 // the part of the layout it shows, layout mm
+};
+
+struct InstallerPlan {
+  PaperSheet paper;
+  bool landscape = true;
+  double scale = 1;                      // 1 : scale
+  double text_mm = kInstallerTextMm;     // the IDs' text height on paper
+  std::array<double, 2> viewport{0, 0};  // the drawing's frame on paper, mm
+  size_t grid_columns = 0, grid_rows = 0;
+  std::vector<InstallerSheet> sheets;  // row by row from the bottom
+  std::vector<InstallerLabel> labels;  // one per piece
+  size_t unplaced = 0;                 // labels that found no free place (drawn at the centre)
+};
+
+// The pieces an installer lays (their IDs and the rectangles they cover, layout mm).
+struct InstallerPiece {
+  std::string id;
+  std::vector<Rect> parts;
+  Rect bounds;
+};
+std::vector<InstallerPiece> installer_pieces(const Layout& layout);
+
+InstallerPlan plan_installer_sheets(const Layout& layout);
+
+// The frame of the drawing on an installer's sheet of `paper`: its drawing area less a strip
+// for row numbers on the left and column numbers along the bottom.
+std::array<double, 2> installer_viewport(const PaperSheet& paper, bool landscape);
+
+}  // namespace curdle
