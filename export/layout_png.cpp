@@ -99,8 +99,8 @@ double drawing_scale(const Layout& layout) {
   return fit_to_sheet(layout.width, layout.height, sheet).scale;
 }
 
-uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view) {
-  Layout outline;  // only the extent and the spec matter for the scale
+Layout layout_extent(const LayoutSpec& spec, const Box& view) {
+  Layout outline;
   outline.spec = spec;
   outline.width = spec.size ? (*spec.size)[0] : view.size[0] * (spec.module_w + spec.joint);
   outline.height = spec.size ? (*spec.size)[1] : view.size[1] * (spec.module_h + spec.joint);
@@ -108,6 +108,11 @@ uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view) {
     outline.width = 2 * view.size[0] * spec.module_w + 2 * std::max(spec.module_w, spec.module_h);
     outline.height = std::max(view.size[1] * spec.module_h, view.size[2] * spec.blocks().voxel_h);
   }
+  return outline;
+}
+
+uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view) {
+  const Layout outline = layout_extent(spec, view);
   const double ppm = spec.dpi / 25.4 / drawing_scale(outline);
   return static_cast<uint64_t>(std::ceil(outline.width * ppm) * std::ceil(outline.height * ppm));
 }

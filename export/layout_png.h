@@ -17,7 +17,11 @@ double drawing_scale(const Layout& layout);
 
 PreviewImage render_layout(const Layout& layout);
 
-// Pixels of layout.png for the layout `spec` makes of `view`, known before it is built.
+// A layout with only the extent and the spec of the one `spec` makes of `view`: enough to
+// pick scales and sheets before it is built.
+Layout layout_extent(const LayoutSpec& spec, const Box& view);
+
+// Pixels of the layout's own picture (render_layout), known before it is built.
 uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view);
 
 }  // namespace curdle

@@ -57,7 +57,7 @@ chunk = lambda t, d: struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.
 open(sys.argv[1], 'wb').write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 0, 0, 0, 0)) + chunk(b'IDAT', raw) + chunk(b'IEND', b''))
 PY
   sed 's|^mask = .*|mask = "big.png"|' "$p/gallery-facade-mask.toml" > "$work/big.toml"
-  refused "12000 x 12000 pixels" generate "$work/big.toml" --max-memory 64M
+  refused "12000 x 12000 pixels" generate "$work/big.toml" --max-memory 128M
   # Markup in a name is text in every drawing, never markup.
   timeout 60 "$curdle" generate "$p/brick-facade-five-storeys.toml" --set 'name=Smith & Sons <script>' \
     --outputs layout.svg,install.svg --out "$work/named" > /dev/null 2>&1 && pass || fail "a name with & and < was refused"

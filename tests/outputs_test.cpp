@@ -91,15 +91,17 @@ TEST(Outputs, DefaultsLeaveOutGltfAndNeedALayoutForLayoutFiles) {
 }
 
 // Huge files nobody opens are skipped unless named: cells.csv above 10 million cells,
-// schedule.csv above 2 million elements, install.svg above 250,000.
+// schedule.csv above 2 million elements, install.svg and layout.pdf above 250,000.
 TEST(Outputs, LargeFilesAreSkippedByDefaultWithANoteButWrittenWhenNamed) {
   const app::Run big = run_of(kTiles, {"field.cells=[600,600]"});  // 360,000 tiles
   Notes notes;
   const auto chosen = names(select_outputs(big, {}, &notes));
   EXPECT_EQ(std::count(chosen.begin(), chosen.end(), "install.svg"), 0);
   EXPECT_EQ(std::count(chosen.begin(), chosen.end(), "schedule.csv"), 1);
-  ASSERT_EQ(notes.notes.size(), 1u);
-  EXPECT_NE(notes.notes[0].find("install.svg skipped: 360000 elements"), std::string::npos);
+  EXPECT_EQ(std::count(chosen.begin(), chosen.end(), "layout.pdf"), 0);
+  ASSERT_EQ(notes.notes.size(), 2u);
+  EXPECT_NE(notes.notes[0].find("layout.pdf skipped: 360000 elements"), std::string::npos);
+  EXPECT_NE(notes.notes[1].find("install.svg skipped: 360000 elements"), std::string::npos);
   EXPECT_EQ(names(select_outputs(big, {"install.svg"}, &notes)),
             std::vector<std::string>{"install.svg"});
   const app::Run huge = run_of(kTiles, {"field.cells=[1500,1500]"});

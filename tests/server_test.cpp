@@ -160,9 +160,10 @@ TEST_F(ServerTest, RecipeDescribesTheDesignAndTheFloor) {
   EXPECT_EQ(j["curds"][0]["probabilities"], json({"2/3", "1/2", "1/3"}));
   EXPECT_EQ(j["legend"].size(), 2u);
   // The downloads come from the registry of outputs: every single file, and the recipe.
-  EXPECT_EQ(j["downloads"], json({"report.json", "cells.csv", "preview.png", "layout.svg",
-                                  "layout.png", "layout.glb", "schedule.csv", "layout.dxf",
-                                  "quantities.csv", "lots.csv", "install.svg", "recipe.toml"}));
+  EXPECT_EQ(j["downloads"],
+            json({"report.json", "cells.csv", "preview.png", "layout.svg", "layout.png",
+                  "layout.pdf", "layout.glb", "schedule.csv", "layout.dxf", "quantities.csv",
+                  "lots.csv", "install.svg", "recipe.toml"}));
   EXPECT_EQ(j["seed"], "8");  // the recipe's, as a string
 }
 

@@ -7,6 +7,7 @@
 #include "curdle/error.h"
 #include "export/cells_csv.h"
 #include "export/cutting.h"
+#include "export/drawing_set.h"
 #include "export/gltf.h"
 #include "export/install.h"
 #include "export/layout_dxf.h"
@@ -66,8 +67,12 @@ void write_layout_svg_output(const OutputContext& c, OutputSink& sink) {
 }
 
 void write_layout_png(const OutputContext& c, OutputSink& sink) {
-  const std::string png = encode_png(render_layout(*c.layout), c.layout->spec.dpi);
+  const std::string png = encode_png(render_layout_sheet(*c.layout), c.layout->spec.dpi);
   sink.write("layout.png", [&](std::ostream& o) { o << png; });
+}
+
+void write_layout_pdf_output(const OutputContext& c, OutputSink& sink) {
+  sink.write("layout.pdf", [&](std::ostream& o) { write_layout_pdf(o, *c.layout); });
 }
 
 void write_layout_glb(const OutputContext& c, OutputSink& sink) {
@@ -134,14 +139,26 @@ std::vector<Output> make_registry() {
        .needs_layout = true,
        .write = write_layout_svg_output});
   add({.name = "layout.png",
-       .description = "the layout drawn at a scale, to print",
+       .description = "sheet 1 of layout.pdf as a picture: the layout at a standard scale on its "
+                      "ISO sheet, with legend, scale bar and title block",
        .needs_layout = true,
        .memory =
            [](const Run& run) {
              // Selected only with a [layout], so the recipe has one.
-             return layout_png_pixels(*run.recipe.layout, run.view) * kLayoutPngBytesPerPixel;
+             // The layout's own picture, and the sheet it is put on (cairo's 4 bytes a pixel,
+             // then 3 for the PNG's rows).
+             return layout_png_pixels(*run.recipe.layout, run.view) * kLayoutPngBytesPerPixel +
+                    layout_sheet_pixels(*run.recipe.layout, run.view) * 8;
            },
        .write = write_layout_png});
+  add({.name = "layout.pdf",
+       .description = "the drawing set on ISO sheets: the whole layout, then the installer's "
+                      "sheets where every ID reads",
+       .needs_layout = true,
+       .skip_above = 250'000,
+       .size_unit = "elements",
+       .size = view_cells,
+       .write = write_layout_pdf_output});
   add({.name = "layout.glb",
        .description = "the layout as a glTF 2.0 scene in metres",
        .needs_layout = true,

@@ -222,6 +222,7 @@ const char* content_type(const std::string& name) {
   if (ext == ".svg") return "image/svg+xml";
   if (ext == ".glb") return "model/gltf-binary";
   if (ext == ".toml") return "application/toml; charset=utf-8";
+  if (ext == ".pdf") return "application/pdf";
   return "application/octet-stream";
 }
 

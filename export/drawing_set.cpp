@@ -1,0 +1,587 @@
+#include "export/drawing_set.h"
+
+#include <cairo-pdf.h>
+#include <cairo.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+
+#include "curdle/error.h"
+#include "export/layout_png.h"
+#include "export/svg.h"
+#include "export/title_block.h"
+#include "layout/installer_sheets.h"
+#include "layout/piece.h"
+
+namespace curdle {
+namespace {
+
+constexpr double kPointsPerMm = 72 / 25.4;
+constexpr double kLeftMargin = 20, kMargin = 10, kTitleStrip = 50;  // drawing_sheet.h
+constexpr const char* kFont = "DejaVu Sans";
+const Rgb kInk{34, 34, 34}, kRed{201, 42, 42}, kBlue{24, 100, 171};
+
+void colour(cairo_t* cr, const Rgb& c, double alpha = 1) {
+  cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
+}
+
+// Text whose capitals are `height` mm, its left end (or centre, or right end) at x, its
+// baseline at y; turned to read bottom to top when `rotated`.
+enum class Align { left, centre, right };
+void text(cairo_t* cr, double x, double y, const std::string& s, double height,
+          Align align = Align::left, bool rotated = false, bool bold = false) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, height / kCapHeightEm);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  const double shift = align == Align::left     ? 0
+                       : align == Align::centre ? e.x_advance / 2
+                                                : e.x_advance;
+  cairo_save(cr);
+  cairo_translate(cr, x, y);
+  if (rotated) cairo_rotate(cr, -M_PI / 2);
+  cairo_move_to(cr, -shift, 0);
+  cairo_show_text(cr, s.c_str());
+  cairo_restore(cr);
+}
+
+double text_width(cairo_t* cr, const std::string& s, double height) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, height / kCapHeightEm);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  return e.x_advance;
+}
+
+void box(cairo_t* cr, double x, double y, double w, double h, double line) {
+  cairo_rectangle(cr, x, y, w, h);
+  cairo_set_line_width(cr, line);
+  cairo_stroke(cr);
+}
+
+// Where layout millimetres land on paper: the window's top-left corner at (left, top).
+struct View {
+  Rect window;
+  double scale = 1;
+  double left = 0, top = 0;
+  double x(double v) const { return left + (v - window.x) / scale; }
+  double y(double v) const { return top + (window.top() - v) / scale; }
+  void rect(cairo_t* cr, const Rect& r) const {
+    cairo_rectangle(cr, x(r.x), y(r.top()), r.w / scale, r.h / scale);
+  }
+};
+
+// The layout's pieces as vectors; `faint` washes the colours out so that labels read over them.
+void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
+  const double alpha = faint ? 0.35 : 1;
+  const Rect all{0, 0, layout.width, layout.height};
+  const bool sheet = layout.kind == LayoutKind::perforation;
+  colour(cr,
+         sheet              ? Rgb{201, 205, 210}
+         : layout.joint > 0 ? layout.joint_colour
+                            : seamless_background(layout),
+         faint ? 0.25 : 1);
+  v.rect(cr, all);
+  cairo_fill(cr);
+  colour(cr, Rgb{223, 234, 242});
+  for (const Rect& o : layout.openings) v.rect(cr, o), cairo_fill(cr);
+  for (const Layout::ViewCell& c : layout.views) {
+    colour(cr, layout.legend[c.value].colour, alpha);
+    v.rect(cr, c.rect);
+    cairo_fill(cr);
+  }
+  if (!layout.views.empty()) return;  // blocks are drawn as their views
+  auto visible = [&](const Rect& r) {
+    return r.right() >= v.window.x && r.x <= v.window.right() && r.top() >= v.window.y &&
+           r.y <= v.window.top();
+  };
+  for (const Element& e : layout.elements) {
+    if (!visible(laid_bounds(e))) continue;
+    const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
+    if (e.circle) {
+      colour(cr, c, alpha);
+      cairo_new_path(cr);
+      cairo_arc(cr, v.x(e.circle->cx), v.y(e.circle->cy), e.circle->d / 2 / v.scale, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
+    if (e.outline) {
+      colour(cr, c, alpha);
+      for (const Ring& ring : e.outline->rings)
+        for (size_t i = 0; i < ring.size(); ++i)
+          (i ? cairo_line_to : cairo_move_to)(cr, v.x(ring[i][0]), v.y(ring[i][1]));
+      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+      cairo_fill(cr);
+      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    }
+    if (e.circle || e.outline) continue;
+    if (!e.type.empty()) {
+      colour(cr, c, alpha);
+      for (const Rect& r : e.shape) v.rect(cr, r), cairo_fill(cr);
+      continue;
+    }
+    for (const ColouredRect& stripe : keep_stripes(layout, e)) {
+      colour(cr, stripe.colour, alpha);
+      v.rect(cr, stripe.rect);
+      cairo_fill(cr);
+    }
+  }
+}
+
+// The frame of an ISO sheet; returns the drawing area's top-left corner and size.
+void frame(cairo_t* cr, double w, double h) {
+  colour(cr, Rgb{255, 255, 255});
+  cairo_paint(cr);
+  colour(cr, kInk);
+  box(cr, kLeftMargin, kMargin, w - kLeftMargin - kMargin, h - 2 * kMargin, 0.5);
+  cairo_move_to(cr, kLeftMargin, h - kMargin - kTitleStrip);
+  cairo_line_to(cr, w - kMargin, h - kMargin - kTitleStrip);
+  cairo_set_line_width(cr, 0.35);
+  cairo_stroke(cr);
+}
+
+// A scale bar of whole metres (or tenths) that reads at 1 : scale, at most `room` mm long.
+void scale_bar(cairo_t* cr, double x, double y, double scale, double room) {
+  double step = 1;  // mm of the layout per division
+  for (const double s : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0, 2000.0,
+                         5000.0, 10000.0, 20000.0, 50000.0, 100000.0})
+    if (4 * s / scale <= room) step = s;
+  const double d = step / scale;
+  for (int i = 0; i < 4; ++i) {
+    cairo_rectangle(cr, x + i * d, y, d, 1.6);
+    colour(cr, i % 2 ? Rgb{255, 255, 255} : kInk);
+    cairo_fill_preserve(cr);
+    colour(cr, kInk);
+    cairo_set_line_width(cr, 0.2);
+    cairo_stroke(cr);
+  }
+  auto label = [&](double v) {
+    return v >= 1000 ? fmt::format("{:g} m", v / 1000) : fmt::format("{:g} mm", v);
+  };
+  for (int i = 0; i <= 4; i += 2) text(cr, x + i * d, y - 1.2, label(i * step), 2, Align::centre);
+}
+
+// Where laying starts: a red dot just outside the origin corner, and arrows along the first
+// row and up the rows, clear of the first element.
+void start_corner(cairo_t* cr, const Layout& layout, const View& v) {
+  if (layout.kind == LayoutKind::blocks) return;
+  const bool right = from_right(layout.origin), top = from_top(layout.origin);
+  const double cx = v.x(right ? layout.width : 0), cy = v.y(top ? layout.height : 0);
+  const double dx = right ? -1 : 1, dy = top ? 1 : -1;  // paper y runs down
+  const double ox = cx - dx * 3, oy = cy - dy * 3;
+  colour(cr, kRed);
+  cairo_new_path(cr);  // no line from where the last text ended
+  cairo_arc(cr, ox, oy, 1.2, 0, 2 * M_PI);
+  cairo_fill(cr);
+  cairo_set_line_width(cr, 0.35);
+  cairo_move_to(cr, ox, oy);
+  cairo_line_to(cr, ox + dx * 14, oy);
+  cairo_move_to(cr, ox, oy);
+  cairo_line_to(cr, ox, oy + dy * 14);
+  cairo_stroke(cr);
+  text(cr, ox + dx * 16, oy + 1, "start: row 0, column 0", 2, right ? Align::right : Align::left);
+}
+
+std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,
+                                   double height) {
+  for (std::string& l : lines)
+    while (l.size() > 4 && text_width(cr, l, height) > width) l = l.substr(0, l.size() - 4) + "...";
+  return lines;
+}
+
+// The title block at the right of the strip: the title lines, the scale, and the sheet number.
+// The title block's width on a sheet `w` mm wide: 150 mm, less on narrow portrait sheets.
+double title_width(double w) { return std::min(150.0, (w - kLeftMargin - kMargin) * 0.55); }
+
+void title_block(cairo_t* cr, const Layout& layout, double w, double h, const std::string& what,
+                 double scale, size_t number, size_t total, const std::string& paper) {
+  const double tw = title_width(w);
+  const double x = w - kMargin - tw, y = h - kMargin - kTitleStrip;
+  colour(cr, kInk);
+  box(cr, x, y, tw, kTitleStrip, 0.35);
+  std::vector<std::string> lines = title_lines(layout);
+  lines.insert(lines.begin() + 1, what);
+  lines = fit_lines(cr, lines, tw - 14, 2);  // bold and 2.5 mm for the first: room kept
+  for (size_t i = 0; i < lines.size() && i < 8; ++i)
+    text(cr, x + 3, y + 5 + 4.2 * static_cast<double>(i), lines[i], i == 0 ? 2.5 : 2, Align::left,
+         false, i == 0);
+  text(cr, x + 3, y + kTitleStrip - 3, fmt::format("scale 1 : {:g} on {}", scale, paper), 2.5);
+  text(cr, x + tw - 3, y + kTitleStrip - 3, fmt::format("sheet {} of {}", number, total), 3.5,
+       Align::right, false, true);
+}
+
+struct Quantity {
+  uint64_t whole = 0, cut = 0;
+  double area = 0;  // m2
+};
+
+// Sheet 1: the layout, legend with counts, quantities per value, scale bar, title block.
+void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, size_t total,
+                   const PreviewImage* raster) {
+  const double w = s.landscape ? s.paper.long_side : s.paper.short_side;
+  const double h = s.landscape ? s.paper.short_side : s.paper.long_side;
+  frame(cr, w, h);
+  const auto area = drawing_area(s.paper, s.landscape);
+  View v;
+  v.window = {0, 0, layout.width, layout.height};
+  v.scale = s.scale;
+  v.left = kLeftMargin + (area[0] - layout.width / s.scale) / 2;
+  v.top = kMargin + (area[1] - layout.height / s.scale) / 2;
+  if (raster) {
+    // The picture's own pixels, on whole pixels of the sheet.
+    const double ppm = layout.spec.dpi / 25.4;
+    v.left = std::round(v.left * ppm) / ppm, v.top = std::round(v.top * ppm) / ppm;
+    std::vector<uint32_t> argb(static_cast<size_t>(raster->width) * raster->height);
+    for (size_t i = 0; i < argb.size(); ++i)
+      argb[i] = 0xff000000u | uint32_t{raster->rgb[3 * i]} << 16 |
+                uint32_t{raster->rgb[3 * i + 1]} << 8 | raster->rgb[3 * i + 2];
+    cairo_surface_t* image = cairo_image_surface_create_for_data(
+        reinterpret_cast<unsigned char*>(argb.data()), CAIRO_FORMAT_RGB24, raster->width,
+        raster->height, raster->width * 4);
+    cairo_save(cr);
+    cairo_translate(cr, v.left, v.top);
+    cairo_scale(cr, 1 / ppm, 1 / ppm);
+    cairo_set_source_surface(cr, image, 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
+    cairo_paint(cr);
+    cairo_restore(cr);
+    cairo_surface_destroy(image);
+  } else {
+    draw_pieces(cr, layout, v, false);
+  }
+  colour(cr, kInk);
+  v.rect(cr, v.window);
+  cairo_set_line_width(cr, 0.25);
+  cairo_stroke(cr);
+  start_corner(cr, layout, v);
+
+  // Legend: up to 8 rows a column, 62 mm a column, from the strip's left.
+  const double strip = h - kMargin - kTitleStrip;
+  std::map<uint32_t, Quantity> quantities;
+  for (const Element& e : layout.elements) {
+    Quantity& q = quantities[e.value];
+    (e.cut ? q.cut : q.whole) += 1;
+    q.area += e.area() / 1e6;
+  }
+  size_t shown = 0;
+  const double room = w - kMargin - title_width(w) - kLeftMargin - 6;
+  const size_t columns = room >= 200 ? 2 : 1;
+  const double column_w = room / static_cast<double>(columns);
+  for (const LegendEntry& e : layout.legend) {
+    if (layout.legend.size() > 16 && e.count == 0) continue;
+    if (shown == 8 * columns) break;
+    const double x = kLeftMargin + 3 + column_w * static_cast<double>(shown / 8);
+    const double y = strip + 4 + 5.6 * static_cast<double>(shown % 8);
+    ++shown;
+    const auto& parts = e.parts.size() > 1 && layout.combine == Combine::keep
+                            ? e.parts
+                            : std::vector<Rgb>{e.colour};
+    for (size_t i = 0; i < parts.size(); ++i) {
+      colour(cr, parts[i]);
+      cairo_rectangle(cr, x + 8.0 * static_cast<double>(i) / static_cast<double>(parts.size()), y,
+                      8.0 / static_cast<double>(parts.size()), 4);
+      cairo_fill(cr);
+    }
+    colour(cr, kInk);
+    box(cr, x, y, 8, 4, 0.2);
+    const Quantity q = quantities.count(e.value) ? quantities[e.value] : Quantity{};
+    std::string line = fmt::format("{} {}: {}", e.value, e.label, legend_count(layout, e.count));
+    if (q.cut) line += fmt::format(" ({} cut)", q.cut);
+    if (q.area > 0 && layout.kind != LayoutKind::perforation)
+      line += fmt::format(", {:.2f} m²", q.area);
+    text(cr, x + 10, y + 3.4, fit_lines(cr, {line}, column_w - 12, 2)[0], 2);
+  }
+  scale_bar(cr, w - kMargin - title_width(w), strip - 6, s.scale, title_width(w) - 20);
+  title_block(cr, layout, w, h, "the whole layout", s.scale, 1, total, s.paper.name);
+}
+
+// An installer's sheet: the part of the layout in its window with every ID, match lines, row
+// and column numbers, a key plan and the start corner.
+void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerPlan& plan,
+                          size_t index, size_t total) {
+  const double w = plan.landscape ? plan.paper.long_side : plan.paper.short_side;
+  const double h = plan.landscape ? plan.paper.short_side : plan.paper.long_side;
+  frame(cr, w, h);
+  const InstallerSheet& sheet = plan.sheets[index];
+  View v;
+  v.window = sheet.window;
+  v.scale = plan.scale;
+  v.left = kLeftMargin + 14;  // the row-number strip (installer_sheets.cpp)
+  v.top = kMargin;
+  cairo_save(cr);
+  cairo_rectangle(cr, v.left, v.top, plan.viewport[0], plan.viewport[1]);
+  cairo_clip(cr);
+  draw_pieces(cr, layout, v, true);
+  colour(cr, Rgb{85, 85, 85});
+  cairo_set_line_width(cr, 0.1);
+  for (const InstallerPiece& p : installer_pieces(layout))
+    for (const Rect& r : p.parts) v.rect(cr, r), cairo_stroke(cr);
+  // Labels: inside their piece, or beside it on white with a leader.
+  for (const InstallerLabel& l : plan.labels) {
+    if (l.sheet != index) continue;
+    if (!l.inside) {
+      colour(cr, kInk);
+      cairo_set_line_width(cr, 0.15);
+      const double ax = std::clamp(l.anchor[0], l.box.x, l.box.right());
+      const double ay = std::clamp(l.anchor[1], l.box.y, l.box.top());
+      cairo_move_to(cr, v.x(l.anchor[0]), v.y(l.anchor[1]));
+      cairo_line_to(cr, v.x(ax), v.y(ay));
+      cairo_stroke(cr);
+      cairo_new_path(cr);
+      cairo_arc(cr, v.x(l.anchor[0]), v.y(l.anchor[1]), 0.4, 0, 2 * M_PI);
+      cairo_fill(cr);
+      colour(cr, Rgb{255, 255, 255});
+      v.rect(cr, l.box);
+      cairo_fill_preserve(cr);
+      colour(cr, kInk);
+      cairo_set_line_width(cr, 0.1);
+      cairo_stroke(cr);
+    }
+    colour(cr, kInk);
+    const double cx = v.x(l.box.x + l.box.w / 2), cy = v.y(l.box.y + l.box.h / 2);
+    if (l.rotated)
+      text(cr, cx + plan.text_mm / 2, cy, l.text, plan.text_mm, Align::centre, true);
+    else
+      text(cr, cx, cy + plan.text_mm / 2, l.text, plan.text_mm, Align::centre);
+  }
+  cairo_restore(cr);
+  // The start corner, when it is on this sheet.
+  const double sx = from_right(layout.origin) ? layout.width : 0;
+  const double sy = from_top(layout.origin) ? layout.height : 0;
+  if (sx >= sheet.window.x && sx <= sheet.window.right() && sy >= sheet.window.y &&
+      sy <= sheet.window.top())
+    start_corner(cr, layout, v);
+  colour(cr, kInk);
+  box(cr, v.left, v.top, plan.viewport[0], plan.viewport[1], 0.35);
+
+  // Match lines: the edges shared with the next sheets, named.
+  const size_t columns = plan.grid_columns;
+  auto number_of = [&](size_t r, size_t c) { return 2 + r * columns + c; };
+  cairo_set_line_width(cr, 0.5);
+  const double dashes[] = {6, 1.5, 1, 1.5};
+  auto match = [&](double x0, double y0, double x1, double y1, size_t other, bool vertical) {
+    colour(cr, kBlue);
+    cairo_set_dash(cr, dashes, 4, 0);
+    cairo_move_to(cr, x0, y0);
+    cairo_line_to(cr, x1, y1);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    const std::string t = fmt::format("match line: sheet {}", other);
+    if (vertical)
+      text(cr, x0 + (x0 > v.left + 1 ? -1.5 : 3.5), (y0 + y1) / 2, t, 2.5, Align::centre, true);
+    else
+      text(cr, (x0 + x1) / 2, y0 + (y0 > v.top + 1 ? -1.5 : 4), t, 2.5, Align::centre);
+  };
+  const double L = v.left, T = v.top, R = v.left + plan.viewport[0], B = v.top + plan.viewport[1];
+  if (sheet.column > 0) match(L, T, L, B, number_of(sheet.row, sheet.column - 1), true);
+  if (sheet.column + 1 < columns) match(R, T, R, B, number_of(sheet.row, sheet.column + 1), true);
+  if (sheet.row > 0) match(L, B, R, B, number_of(sheet.row - 1, sheet.column), false);
+  if (sheet.row + 1 < plan.grid_rows)
+    match(L, T, R, T, number_of(sheet.row + 1, sheet.column), false);
+
+  // Row numbers on the left, column numbers along the bottom, where their rows show.
+  if (layout.kind != LayoutKind::perforation && layout.kind != LayoutKind::blocks) {
+    std::map<int64_t, std::pair<double, double>> rows, cols;  // index -> extent
+    for (const Element& e : layout.elements) {
+      auto& r = rows.try_emplace(e.row, 1e300, -1e300).first->second;
+      r.first = std::min(r.first, e.nominal.y), r.second = std::max(r.second, e.nominal.top());
+      auto& c = cols.try_emplace(e.column, 1e300, -1e300).first->second;
+      c.first = std::min(c.first, e.nominal.x), c.second = std::max(c.second, e.nominal.right());
+    }
+    colour(cr, kRed);
+    double last = -1e300;
+    for (const auto& [row, extent] : rows) {
+      const double mid = (extent.first + extent.second) / 2;
+      if (mid < sheet.window.y || mid > sheet.window.top()) continue;
+      const double y = v.y(mid);
+      if (std::fabs(y - last) < 3.2) continue;
+      last = y;
+      text(cr, v.left - 1.5, y + 1.25, fmt::format("R{}", row), 2.5, Align::right);
+    }
+    last = -1e300;
+    for (const auto& [column, extent] : cols) {
+      const double mid = (extent.first + extent.second) / 2;
+      if (mid < sheet.window.x || mid > sheet.window.right()) continue;
+      const double x = v.x(mid);
+      const std::string t = fmt::format("C{}", column);
+      if (std::fabs(x - last) < text_width(cr, t, 2.5) + 1.5) continue;
+      last = x;
+      text(cr, x, B + 4.5, t, 2.5, Align::centre);
+    }
+  }
+
+  // Key plan: the whole grid in the strip, this sheet filled.
+  const double strip = h - kMargin - kTitleStrip;
+  const double kw = 70, kh = kTitleStrip - 12;
+  const double gw = plan.sheets.back().window.right() - plan.sheets.front().window.x;
+  const double gh = plan.sheets.back().window.top() - plan.sheets.front().window.y;
+  const double k = std::min(kw / gw, kh / gh);
+  const double kx = kLeftMargin + 4, ky = strip + 8;
+  auto kxf = [&](double x) { return kx + (x - plan.sheets.front().window.x) * k; };
+  auto kyf = [&](double y) { return ky + kh - (y - plan.sheets.front().window.y) * k; };
+  colour(cr, kInk);
+  text(cr, kx, strip + 5, "key plan", 2);
+  colour(cr, Rgb{220, 220, 220});
+  cairo_rectangle(cr, kxf(0), kyf(layout.height), layout.width * k, layout.height * k);
+  cairo_fill(cr);
+  for (size_t i = 0; i < plan.sheets.size(); ++i) {
+    const Rect& r = plan.sheets[i].window;
+    if (i == index) {
+      colour(cr, kBlue, 0.45);
+      cairo_rectangle(cr, kxf(r.x), kyf(r.top()), r.w * k, r.h * k);
+      cairo_fill(cr);
+    }
+    colour(cr, kInk);
+    box(cr, kxf(r.x), kyf(r.top()), r.w * k, r.h * k, 0.15);
+    if (r.w * k > 6 && r.h * k > 3)
+      text(cr, kxf(r.x + r.w / 2), kyf(r.y + r.h / 2) + 1, std::to_string(i + 2), 1.8,
+           Align::centre);
+  }
+  const double ox = from_right(layout.origin) ? layout.width : 0;
+  const double oy = from_top(layout.origin) ? layout.height : 0;
+  colour(cr, kRed);
+  cairo_new_path(cr);
+  cairo_arc(cr, kxf(ox), kyf(oy), 0.8, 0, 2 * M_PI);
+  cairo_fill(cr);
+
+  // What the sheet holds, and the title block.
+  int64_t row0 = INT64_MAX, row1 = INT64_MIN, col0 = INT64_MAX, col1 = INT64_MIN;
+  size_t pieces = 0;
+  for (const InstallerLabel& l : plan.labels)
+    if (l.sheet == index) ++pieces;
+  for (const Element& e : layout.elements) {
+    const Rect b = laid_bounds(e);
+    const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
+    if (cx < sheet.window.x || cx >= sheet.window.right() || cy < sheet.window.y ||
+        cy >= sheet.window.top())
+      continue;
+    row0 = std::min(row0, e.row), row1 = std::max(row1, e.row);
+    col0 = std::min(col0, e.column), col1 = std::max(col1, e.column);
+  }
+  colour(cr, kInk);
+  const double info_x = kx + kw + 8, info_w = w - kMargin - title_width(w) - 4 - info_x;
+  const std::string holds = pieces == 0 ? "no pieces"
+                            : layout.kind == LayoutKind::perforation
+                                ? fmt::format("{} sheet{}", pieces, pieces == 1 ? "" : "s")
+                                : fmt::format("{} pieces: rows {} to {}, columns {} to {}", pieces,
+                                              row0, row1, col0, col1);
+  std::vector<std::string> info = {
+      fmt::format("installer's sheet {} of {}: grid row {}, column {}", index + 2, total,
+                  sheet.row + 1, sheet.column + 1),
+      holds, fmt::format("IDs {:.1f} mm high; a label off its piece points to it", plan.text_mm)};
+  if (plan.unplaced)
+    info.push_back(fmt::format("{} labels found no room: use a larger sheet", plan.unplaced));
+  info = fit_lines(cr, info, info_w, 2);
+  for (size_t i = 0; i < info.size(); ++i)
+    text(cr, info_x, strip + 8 + 5 * static_cast<double>(i), info[i], 2, Align::left, false,
+         i == 0);
+  scale_bar(cr, info_x, strip + 32, plan.scale, std::min(90.0, info_w));
+  title_block(cr, layout, w, h, "installer's sheet", plan.scale, index + 2, total, plan.paper.name);
+}
+
+cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::ostream*>(closure)->write(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+}  // namespace
+
+OverviewSheet overview_sheet(const Layout& layout) {
+  OverviewSheet s;
+  s.paper = paper_sheet(layout.spec.paper).value_or(*paper_sheet("A3"));
+  s.scale = drawing_scale(layout);
+  for (const char* name : {"A4", "A3", "A2", "A1", "A0"}) {
+    const PaperSheet p = *paper_sheet(name);
+    if (p.long_side < s.paper.long_side) continue;
+    for (const bool landscape : {layout.width >= layout.height, layout.width < layout.height}) {
+      const auto area = drawing_area(p, landscape);
+      if (layout.width / s.scale <= area[0] + 1e-6 && layout.height / s.scale <= area[1] + 1e-6) {
+        s.paper = p, s.landscape = landscape;
+        return s;
+      }
+    }
+  }
+  throw InputError(SourceLocation{"", 0, 0, "layout.scale", ""},
+                   fmt::format("at 1 : {:g} the layout is {:.0f} x {:.0f} mm, larger than an A0 "
+                               "sheet's drawing area; give a larger scale, or leave layout.scale "
+                               "out to have one picked",
+                               s.scale, layout.width / s.scale, layout.height / s.scale));
+}
+
+void write_layout_pdf(std::ostream& out, const Layout& layout) {
+  const OverviewSheet overview = overview_sheet(layout);
+  const InstallerPlan plan = plan_installer_sheets(layout);
+  const size_t total = 1 + plan.sheets.size();
+  auto size = [](const PaperSheet& p, bool landscape) {
+    return std::array<double, 2>{(landscape ? p.long_side : p.short_side) * kPointsPerMm,
+                                 (landscape ? p.short_side : p.long_side) * kPointsPerMm};
+  };
+  const auto first = size(overview.paper, overview.landscape);
+  cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(append, &out, first[0], first[1]);
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE,
+                                 (layout.source.recipe + " - drawing set").c_str());
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "curdle");
+  cairo_t* cr = cairo_create(surface);
+  cairo_scale(cr, kPointsPerMm, kPointsPerMm);
+  draw_overview(cr, layout, overview, total, nullptr);
+  cairo_show_page(cr);
+  const auto next = size(plan.paper, plan.landscape);
+  cairo_pdf_surface_set_size(surface, next[0], next[1]);
+  for (size_t i = 0; i < plan.sheets.size(); ++i) {
+    draw_installer_sheet(cr, layout, plan, i, total);
+    cairo_show_page(cr);
+  }
+  cairo_destroy(cr);
+  cairo_surface_finish(surface);
+  const cairo_status_t status = cairo_surface_status(surface);
+  cairo_surface_destroy(surface);
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error(std::string("layout.pdf: ") + cairo_status_to_string(status));
+}
+
+PreviewImage render_layout_sheet(const Layout& layout) {
+  const OverviewSheet overview = overview_sheet(layout);
+  const PreviewImage raster = render_layout(layout);
+  const double ppm = layout.spec.dpi / 25.4;
+  const int w = static_cast<int>(std::lround(
+      (overview.landscape ? overview.paper.long_side : overview.paper.short_side) * ppm));
+  const int h = static_cast<int>(std::lround(
+      (overview.landscape ? overview.paper.short_side : overview.paper.long_side) * ppm));
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
+  cairo_t* cr = cairo_create(surface);
+  cairo_scale(cr, ppm, ppm);
+  // The sheet number needs the installer's sheets only for "of n": planned here too.
+  const size_t total = 1 + plan_installer_sheets(layout).sheets.size();
+  draw_overview(cr, layout, overview, total, &raster);
+  cairo_destroy(cr);
+  cairo_surface_flush(surface);
+  PreviewImage image;
+  image.width = w, image.height = h;
+  image.rgb.resize(static_cast<size_t>(w) * h * 3);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      uint32_t p;
+      std::memcpy(&p, data + static_cast<size_t>(y) * stride + 4 * x, 4);
+      uint8_t* o = &image.rgb[(static_cast<size_t>(y) * w + x) * 3];
+      o[0] = p >> 16 & 255, o[1] = p >> 8 & 255, o[2] = p & 255;
+    }
+  cairo_surface_destroy(surface);
+  return image;
+}
+
+uint64_t layout_sheet_pixels(const LayoutSpec& spec, const Box& view) {
+  const PaperSheet paper = paper_sheet(spec.paper).value_or(*paper_sheet("A3"));
+  const double ppm = spec.dpi / 25.4;
+  // The sheet itself (at most A0 when a scale makes it grow) and the layout's picture.
+  const double sheet =
+      std::max(paper.long_side * paper.short_side, 841.0 * 1189.0 * (spec.scale > 0));
+  (void)view;
+  return static_cast<uint64_t>(sheet * ppm * ppm);
+}
+
+}  // namespace curdle

@@ -1,0 +1,40 @@
+// layout.pdf, the drawing set, and layout.png, its first sheet as a picture; drawn with cairo
+// on ISO sheets in millimetres.
+//
+// Sheet 1 is the whole layout at a standard scale (drawing_sheet.h) with a legend of counts, a
+// quantities table, a scale bar, the origin and start corner, and the title block. The
+// installer's sheets follow (installer_sheets.h): the layout cut into a grid of sheets at a
+// scale where every ID reads, each with row and column numbers, match lines naming the sheet
+// beyond, a key plan showing where it lies, the start corner, and "sheet k of n".
+#pragma once
+
+#include <ostream>
+
+#include "export/image.h"
+#include "layout/drawing_sheet.h"
+#include "layout/layout.h"
+
+namespace curdle {
+
+// The sheet the whole layout is drawn on: its paper, orientation and scale. With layout.scale
+// given, the smallest ISO sheet from layout.paper up that holds the drawing; InputError when
+// not even A0 does.
+struct OverviewSheet {
+  PaperSheet paper;
+  bool landscape = true;
+  double scale = 1;
+};
+OverviewSheet overview_sheet(const Layout& layout);
+
+// The drawing set as PDF 1.5: sheet 1 and the installer's sheets.
+void write_layout_pdf(std::ostream& out, const Layout& layout);
+
+// Sheet 1 at layout.dpi, the layout itself as render_layout draws it (so that its pixels are
+// the same), everything else as in layout.pdf.
+PreviewImage render_layout_sheet(const Layout& layout);
+
+// Pixels of the sheet for a layout `spec` makes of `view`, known before it is built (the
+// layout's own picture on it is render_layout's: layout_png_pixels).
+uint64_t layout_sheet_pixels(const LayoutSpec& spec, const Box& view);
+
+}  // namespace curdle

@@ -1,0 +1,153 @@
+// The drawing set: installer's sheets where every ID reads (at least 2 mm high), inside its
+// piece or beside it on the same sheet, and no two labels overlap; layout.pdf has sheet 1 and
+// one page per installer's sheet on ISO paper; layout.png is sheet 1 with the layout's pixels.
+#include "layout/installer_sheets.h"
+
+#include <cairo.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "app/run.h"
+#include "curdle/error.h"
+#include "export/drawing_set.h"
+#include "export/layout_png.h"
+#include "layout/builder.h"
+
+namespace curdle {
+namespace {
+
+Layout pattern_layout(const std::string& name) {
+  app::RunRequest request;
+  request.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/" + name;
+  request.recipe_text = app::read_recipe_file(request.recipe_path);
+  const app::Run run = app::resolve_run(request);
+  const CurdField field = app::run_engine(run, 0);
+  Layout layout = make_layout(run.recipe.design, field, run.view, *run.recipe.layout);
+  layout.source.seed = run.seed;
+  return layout;
+}
+
+bool within(const Rect& outer, const Rect& inner) {
+  const double e = 1e-6;
+  return inner.x >= outer.x - e && inner.y >= outer.y - e && inner.right() <= outer.right() + e &&
+         inner.top() <= outer.top() + e;
+}
+
+// How wide cairo sets the text with the font and size the sheets use, mm.
+double set_width(const std::string& text, double cap_height) {
+  cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
+  cairo_t* cr = cairo_create(s);
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, cap_height / kCapHeightEm);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, text.c_str(), &e);
+  cairo_destroy(cr);
+  cairo_surface_destroy(s);
+  return e.x_advance;
+}
+
+class InstallerSheets : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
+  const Layout layout = pattern_layout(GetParam());
+  const InstallerPlan plan = plan_installer_sheets(layout);
+  const std::vector<InstallerPiece> pieces = installer_pieces(layout);
+  ASSERT_EQ(plan.labels.size(), pieces.size());
+  EXPECT_EQ(plan.unplaced, 0u);
+  EXPECT_GE(plan.text_mm, 2.0);
+  EXPECT_NE(std::find(standard_scales().begin(), standard_scales().end(), plan.scale),
+            standard_scales().end());
+  EXPECT_EQ(plan.sheets.size(), plan.grid_columns * plan.grid_rows);
+  size_t inside = 0;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const InstallerLabel& l = plan.labels[i];
+    EXPECT_EQ(l.text, pieces[i].id);
+    const Rect& window = plan.sheets.at(l.sheet).window;
+    EXPECT_TRUE(within(window, l.box)) << l.text << " leaves its sheet";
+    EXPECT_TRUE(l.anchor[0] >= window.x && l.anchor[0] <= window.right() &&
+                l.anchor[1] >= window.y && l.anchor[1] <= window.top())
+        << l.text << " is labelled on another sheet than its centre's";
+    if (l.inside) {
+      ++inside;
+      EXPECT_TRUE(std::any_of(pieces[i].parts.begin(), pieces[i].parts.end(),
+                              [&](const Rect& part) { return within(part, l.box); }))
+          << l.text << " is said to be inside its piece but is not";
+    }
+    // The text as set fits the box the plan kept for it (on paper, mm).
+    const double room = (l.rotated ? l.box.h : l.box.w) / plan.scale;
+    EXPECT_LE(set_width(l.text, plan.text_mm), room) << l.text;
+  }
+  EXPECT_GT(inside, pieces.size() / 2) << "most pieces hold their own label";
+  // No two label boxes overlap: sweep along x.
+  std::vector<const InstallerLabel*> order;
+  for (const InstallerLabel& l : plan.labels) order.push_back(&l);
+  std::sort(order.begin(), order.end(),
+            [](const InstallerLabel* a, const InstallerLabel* b) { return a->box.x < b->box.x; });
+  size_t overlapping = 0;
+  for (size_t i = 0; i < order.size(); ++i)
+    for (size_t j = i + 1; j < order.size() && order[j]->box.x < order[i]->box.right(); ++j)
+      if (overlaps(order[i]->box, order[j]->box)) {
+        if (++overlapping <= 5) ADD_FAILURE() << order[i]->text << " overlaps " << order[j]->text;
+      }
+  EXPECT_EQ(overlapping, 0u);
+
+  // layout.pdf: sheet 1 and one page per installer's sheet, each an ISO sheet.
+  std::ostringstream pdf;
+  write_layout_pdf(pdf, layout);
+  const std::string bytes = pdf.str();
+  ASSERT_EQ(bytes.rfind("%PDF-", 0), 0u);
+  size_t pages = 0;
+  // cairo writes each page's dictionary as "/Type /Page % N".
+  for (size_t at = 0; (at = bytes.find("/Type /Page %", at)) != std::string::npos; ++at) ++pages;
+  EXPECT_EQ(pages, 1 + plan.sheets.size());
+}
+
+INSTANTIATE_TEST_SUITE_P(Patterns, InstallerSheets,
+                         ::testing::Values("brick-facade-five-storeys.toml",
+                                           "plaza-three-colours.toml",
+                                           "perforated-aluminium-screen.toml",
+                                           "paper/fig8-segment-of-large-curd.toml"));
+
+TEST(LayoutSheet, IsSheetOneWithTheLayoutsOwnPixels) {
+  Layout layout = pattern_layout("brick-facade-five-storeys.toml");
+  layout.spec.dpi = 50;  // small and quick
+  const OverviewSheet sheet = overview_sheet(layout);
+  EXPECT_EQ(sheet.paper.name, "A3");
+  const PreviewImage png = render_layout_sheet(layout);
+  EXPECT_EQ(png.width, static_cast<int>(std::lround(420 * 50 / 25.4)));
+  EXPECT_EQ(png.height, static_cast<int>(std::lround(297 * 50 / 25.4)));
+  // Every pixel of the layout's own picture is somewhere on the sheet, unchanged: find its
+  // first row by its left-most pixels.
+  const PreviewImage own = render_layout(layout);
+  bool found = false;
+  for (int y = 0; y + own.height <= png.height && !found; ++y)
+    for (int x = 0; x + own.width <= png.width && !found; ++x) {
+      bool same = true;
+      // Inside its outline, which is drawn over its edge.
+      for (int yy = 3; yy < own.height - 3 && same; yy += 7)
+        for (int xx = 3; xx < own.width - 3 && same; xx += 5)
+          same = std::equal(&own.rgb[(static_cast<size_t>(yy) * own.width + xx) * 3],
+                            &own.rgb[(static_cast<size_t>(yy) * own.width + xx) * 3 + 3],
+                            &png.rgb[(static_cast<size_t>(y + yy) * png.width + x + xx) * 3]);
+      found = same;
+    }
+  EXPECT_TRUE(found);
+  // A scale that makes the drawing larger than A0 is refused, naming the key.
+  layout.spec.scale = 1;
+  EXPECT_THROW(
+      {
+        try {
+          (void)overview_sheet(layout);
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("layout.scale"), std::string::npos);
+          throw;
+        }
+      },
+      InputError);
+}
+
+}  // namespace
+}  // namespace curdle
