@@ -19,6 +19,9 @@ const state = {
 
 // ---- overrides: what differs from the recipe, as KEY=VALUE in TOML ----
 
+// A new curd's colour, by its place.
+const defaultCurdColours = ['#3b3b3b', '#c0392b', '#2471a3', '#229954'];
+
 const tomlString = (s) => JSON.stringify(String(s));
 const tomlArray = (items) => "[" + items.join(",") + "]";
 
@@ -272,10 +275,13 @@ function resizeCurds() {
   const count = Math.max(1, Math.min(4, Number($("curd-count").value) || 1));
   const stages = Math.max(1, Math.min(16, Number($("stages").value) || 1));
   state.stages = stages;
-  const defaults = ["#3b3b3b", "#c0392b", "#2471a3", "#229954"];
   while (state.curds.length < count) {
     const i = state.curds.length;
-    state.curds.push({ name: `curd${i}`, colour: defaults[i % 4], probabilities: Array(stages).fill("1/2") });
+    state.curds.push({
+      name: `curd${i}`,
+      colour: defaultCurdColours[i % 4],
+      probabilities: Array(stages).fill('1/2')
+    });
   }
   state.curds.length = count;
   for (const c of state.curds) {

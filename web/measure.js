@@ -156,14 +156,17 @@ async function measurePicture(file) {
 function loadFittedRecipe() {
   const fit = measured.result && measured.result.fit;
   if (!fit) return;
-  const defaults = ["#3b3b3b", "#c0392b", "#2471a3", "#229954"];
   state.base = fit.lattice.base;
   state.dimension = fit.lattice.dimension;
   state.stages = fit.lattice.stages;
   state.mode = fit.lattice.mode;
   state.field = [fit.field[0], fit.field[1], 1];
   state.fieldTouched = true;
-  state.curds = fit.curds.map((c, i) => ({ name: c.name, colour: c.colour || defaults[i % 4], probabilities: c.probabilities.slice() }));
+  state.curds = fit.curds.map((c, i) => ({
+                                name: c.name,
+                                colour: c.colour || defaultCurdColours[i % 4],
+                                probabilities: c.probabilities.slice()
+                              }));
   state.segment = null;
   setFix("free");
   syncControls();
