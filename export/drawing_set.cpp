@@ -528,6 +528,8 @@ void write_layout_pdf(std::ostream& out, const Layout& layout) {
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE,
                                  (layout.source.recipe + " - drawing set").c_str());
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "curdle");
+  // A fixed date instead of the clock's: the same run writes the same bytes.
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, "2000-01-01T00:00:00Z");
   cairo_t* cr = cairo_create(surface);
   cairo_scale(cr, kPointsPerMm, kPointsPerMm);
   draw_overview(cr, layout, overview, total, nullptr);
