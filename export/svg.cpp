@@ -16,13 +16,7 @@ namespace {
 // All text in the drawing goes through the one XML escaper (curdle/text.h).
 std::string escape(const std::string& s) { return xml_escape(s); }
 
-// Millimetres, short: 0.001 mm is below any tolerance and keeps files small.
-std::string mm(double v) {
-  std::string s = fmt::format("{:.3f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s == "-0" ? "0" : s;
-}
+std::string mm(double v) { return drawing_mm(v); }
 
 const char* kind_name(LayoutKind kind) {
   switch (kind) {

@@ -5,13 +5,7 @@
 namespace curdle {
 namespace {
 
-// Millimetres as layout.svg writes them: to the micrometre, trailing zeros dropped.
-std::string mm(double v) {
-  std::string s = fmt::format("{:.3f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s == "-0" ? "0" : s;
-}
+std::string mm(double v) { return drawing_mm(v); }
 
 std::string sheet_line(const Layout& layout) {
   const LayoutSpec& spec = layout.spec;
@@ -30,6 +24,13 @@ std::string sheet_line(const Layout& layout) {
 }
 
 }  // namespace
+
+std::string drawing_mm(double v) {
+  std::string s = fmt::format("{:.3f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
 
 std::vector<std::string> title_lines(const Layout& layout) {
   const double W = layout.width, H = layout.height;

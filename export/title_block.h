@@ -10,6 +10,10 @@
 
 namespace curdle {
 
+// Millimetres as the drawings write them: 0.001 mm is below any tolerance and keeps files
+// small; trailing zeros dropped.
+std::string drawing_mm(double v);
+
 std::vector<std::string> title_lines(const Layout& layout);
 
 // What a legend entry counts: "tile", "panel", "cell" (perforation, park), "bay", "voxel".
