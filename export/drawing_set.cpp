@@ -28,14 +28,19 @@ void colour(cairo_t* cr, const Rgb& c, double alpha = 1) {
   cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
 }
 
+// The sheets' font, its capitals `height` mm high.
+void font(cairo_t* cr, double height, bool bold) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, height / kCapHeightEm);
+}
+
 // Text whose capitals are `height` mm, its left end (or centre, or right end) at x, its
 // baseline at y; turned to read bottom to top when `rotated`.
 enum class Align { left, centre, right };
 void text(cairo_t* cr, double x, double y, const std::string& s, double height,
           Align align = Align::left, bool rotated = false, bool bold = false) {
-  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, height / kCapHeightEm);
+  font(cr, height, bold);
   cairo_text_extents_t e;
   cairo_text_extents(cr, s.c_str(), &e);
   const double shift = align == Align::left     ? 0
@@ -50,8 +55,7 @@ void text(cairo_t* cr, double x, double y, const std::string& s, double height,
 }
 
 double text_width(cairo_t* cr, const std::string& s, double height) {
-  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, height / kCapHeightEm);
+  font(cr, height, false);
   cairo_text_extents_t e;
   cairo_text_extents(cr, s.c_str(), &e);
   return e.x_advance;
@@ -131,7 +135,7 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
   }
 }
 
-// The frame of an ISO sheet; returns the drawing area's top-left corner and size.
+// A white ISO sheet with its frame (ISO 5457 margins) and the line above the title strip.
 void frame(cairo_t* cr, double w, double h) {
   colour(cr, Rgb{255, 255, 255});
   cairo_paint(cr);
@@ -304,8 +308,37 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
 
 // An installer's sheet: the part of the layout in its window with every ID, match lines, row
 // and column numbers, a key plan and the start corner.
-void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerPlan& plan,
-                          size_t index, size_t total) {
+// What one installer's sheet holds: its pieces (those whose centre it shows) and their rows
+// and columns.
+struct SheetContents {
+  size_t pieces = 0;
+  int64_t row0 = INT64_MAX, row1 = INT64_MIN, column0 = INT64_MAX, column1 = INT64_MIN;
+};
+
+// The plan and what every sheet reads from the whole layout, worked out once for the set.
+struct InstallerSet {
+  const InstallerPlan& plan;
+  LayingExtents extents;
+  std::vector<SheetContents> contents;
+};
+
+InstallerSet installer_set(const Layout& layout, const InstallerPlan& plan) {
+  InstallerSet set{plan, laying_extents(layout), std::vector<SheetContents>(plan.sheets.size())};
+  const bool elements = layout.kind != LayoutKind::perforation;  // else the pieces are sheets
+  for (size_t i = 0; i < plan.labels.size(); ++i) {
+    SheetContents& c = set.contents[plan.labels[i].sheet];
+    ++c.pieces;
+    if (!elements) continue;
+    const Element& e = layout.elements[i];  // pieces are the elements, in order
+    c.row0 = std::min(c.row0, e.row), c.row1 = std::max(c.row1, e.row);
+    c.column0 = std::min(c.column0, e.column), c.column1 = std::max(c.column1, e.column);
+  }
+  return set;
+}
+
+void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet& set, size_t index,
+                          size_t total) {
+  const InstallerPlan& plan = set.plan;
   const double w = plan.landscape ? plan.paper.long_side : plan.paper.short_side;
   const double h = plan.landscape ? plan.paper.short_side : plan.paper.long_side;
   frame(cr, w, h);
@@ -321,7 +354,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerPlan
   draw_pieces(cr, layout, v, true);
   colour(cr, Rgb{85, 85, 85});
   cairo_set_line_width(cr, 0.1);
-  for (const InstallerPiece& p : installer_pieces(layout))
+  for (const InstallerPiece& p : plan.pieces)
     for (const Rect& r : p.parts) v.rect(cr, r), cairo_stroke(cr);
   // Labels: inside their piece, or beside it on white with a leader.
   for (const InstallerLabel& l : plan.labels) {
@@ -388,16 +421,9 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerPlan
 
   // Row numbers on the left, column numbers along the bottom, where their rows show.
   if (layout.kind != LayoutKind::perforation && layout.kind != LayoutKind::blocks) {
-    std::map<int64_t, std::pair<double, double>> rows, cols;  // index -> extent
-    for (const Element& e : layout.elements) {
-      auto& r = rows.try_emplace(e.row, 1e300, -1e300).first->second;
-      r.first = std::min(r.first, e.nominal.y), r.second = std::max(r.second, e.nominal.top());
-      auto& c = cols.try_emplace(e.column, 1e300, -1e300).first->second;
-      c.first = std::min(c.first, e.nominal.x), c.second = std::max(c.second, e.nominal.right());
-    }
     colour(cr, kRed);
     double last = -1e300;
-    for (const auto& [row, extent] : rows) {
+    for (const auto& [row, extent] : set.extents.rows) {
       const double mid = (extent.first + extent.second) / 2;
       if (mid < sheet.window.y || mid > sheet.window.top()) continue;
       const double y = v.y(mid);
@@ -406,7 +432,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerPlan
       text(cr, v.left - 1.5, y + 1.25, fmt::format("R{}", row), 2.5, Align::right);
     }
     last = -1e300;
-    for (const auto& [column, extent] : cols) {
+    for (const auto& [column, extent] : set.extents.columns) {
       const double mid = (extent.first + extent.second) / 2;
       if (mid < sheet.window.x || mid > sheet.window.right()) continue;
       const double x = v.x(mid);
@@ -452,26 +478,15 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerPlan
   cairo_fill(cr);
 
   // What the sheet holds, and the title block.
-  int64_t row0 = INT64_MAX, row1 = INT64_MIN, col0 = INT64_MAX, col1 = INT64_MIN;
-  size_t pieces = 0;
-  for (const InstallerLabel& l : plan.labels)
-    if (l.sheet == index) ++pieces;
-  for (const Element& e : layout.elements) {
-    const Rect b = laid_bounds(e);
-    const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
-    if (cx < sheet.window.x || cx >= sheet.window.right() || cy < sheet.window.y ||
-        cy >= sheet.window.top())
-      continue;
-    row0 = std::min(row0, e.row), row1 = std::max(row1, e.row);
-    col0 = std::min(col0, e.column), col1 = std::max(col1, e.column);
-  }
+  const SheetContents& held = set.contents[index];
+  const size_t pieces = held.pieces;
   colour(cr, kInk);
   const double info_x = kx + kw + 8, info_w = w - kMargin - title_width(w) - 4 - info_x;
   const std::string holds = pieces == 0 ? "no pieces"
                             : layout.kind == LayoutKind::perforation
                                 ? fmt::format("{} sheet{}", pieces, pieces == 1 ? "" : "s")
                                 : fmt::format("{} pieces: rows {} to {}, columns {} to {}", pieces,
-                                              row0, row1, col0, col1);
+                                              held.row0, held.row1, held.column0, held.column1);
   std::vector<std::string> info = {
       fmt::format("installer's sheet {} of {}: grid row {}, column {}", index + 2, total,
                   sheet.row + 1, sheet.column + 1),
@@ -534,10 +549,11 @@ void write_layout_pdf(std::ostream& out, const Layout& layout) {
   cairo_scale(cr, kPointsPerMm, kPointsPerMm);
   draw_overview(cr, layout, overview, total, nullptr);
   cairo_show_page(cr);
+  const InstallerSet set = installer_set(layout, plan);
   const auto next = size(plan.paper, plan.landscape);
   cairo_pdf_surface_set_size(surface, next[0], next[1]);
   for (size_t i = 0; i < plan.sheets.size(); ++i) {
-    draw_installer_sheet(cr, layout, plan, i, total);
+    draw_installer_sheet(cr, layout, set, i, total);
     cairo_show_page(cr);
   }
   cairo_destroy(cr);
@@ -580,13 +596,12 @@ PreviewImage render_layout_sheet(const Layout& layout) {
   return image;
 }
 
-uint64_t layout_sheet_pixels(const LayoutSpec& spec, const Box& view) {
+uint64_t layout_sheet_pixels(const LayoutSpec& spec) {
   const PaperSheet paper = paper_sheet(spec.paper).value_or(*paper_sheet("A3"));
   const double ppm = spec.dpi / 25.4;
-  // The sheet itself (at most A0 when a scale makes it grow) and the layout's picture.
+  // The sheet itself: A0 at most, when a given scale makes it grow.
   const double sheet =
       std::max(paper.long_side * paper.short_side, 841.0 * 1189.0 * (spec.scale > 0));
-  (void)view;
   return static_cast<uint64_t>(sheet * ppm * ppm);
 }
 

@@ -33,8 +33,8 @@ void write_layout_pdf(std::ostream& out, const Layout& layout);
 // the same), everything else as in layout.pdf.
 PreviewImage render_layout_sheet(const Layout& layout);
 
-// Pixels of the sheet for a layout `spec` makes of `view`, known before it is built (the
+// Pixels of the sheet layout.png is for a layout of `spec`, known before it is built (the
 // layout's own picture on it is render_layout's: layout_png_pixels).
-uint64_t layout_sheet_pixels(const LayoutSpec& spec, const Box& view);
+uint64_t layout_sheet_pixels(const LayoutSpec& spec);
 
 }  // namespace curdle

@@ -90,11 +90,7 @@ void write_install_svg(std::ostream& out, const Layout& layout) {
   if (layout.kind != LayoutKind::blocks) {
     const bool right = from_right(layout.origin);
     const bool top = from_top(layout.origin);
-    std::map<int64_t, std::pair<double, double>> rows;  // row -> y extent
-    for (const Element& e : layout.elements) {
-      auto& r = rows.try_emplace(e.row, 1e300, -1e300).first->second;
-      r.first = std::min(r.first, e.nominal.y), r.second = std::max(r.second, e.nominal.top());
-    }
+    const auto rows = laying_extents(layout).rows;
     out << fmt::format("<g id=\"rows\" font-size=\"{}\" fill=\"#c92a2a\">\n", num(unit * 0.6));
     for (const auto& [row, extent] : rows)
       out << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"{}\">row {}</text>\n",

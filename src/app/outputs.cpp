@@ -148,7 +148,7 @@ std::vector<Output> make_registry() {
              // The layout's own picture, and the sheet it is put on (cairo's 4 bytes a pixel,
              // then 3 for the PNG's rows).
              return layout_png_pixels(*run.recipe.layout, run.view) * kLayoutPngBytesPerPixel +
-                    layout_sheet_pixels(*run.recipe.layout, run.view) * 8;
+                    layout_sheet_pixels(*run.recipe.layout) * 8;
            },
        .write = write_layout_png});
   add({.name = "layout.pdf",

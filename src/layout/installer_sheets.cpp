@@ -179,7 +179,8 @@ InstallerPlan plan_installer_sheets(const Layout& layout) {
   plan.paper = paper_sheet(layout.spec.paper).value_or(*paper_sheet("A3"));
   plan.landscape = layout.width >= layout.height;
   plan.viewport = installer_viewport(plan.paper, plan.landscape);
-  const std::vector<InstallerPiece> pieces = installer_pieces(layout);
+  plan.pieces = installer_pieces(layout);
+  const std::vector<InstallerPiece>& pieces = plan.pieces;
   // The typical piece: the median by area. Its label must fit inside it, across or along.
   double typical_w = layout.width, typical_h = layout.height;
   size_t longest = 1;

@@ -30,6 +30,13 @@ inline constexpr double kCapHeightEm = 0.729;
 double label_width_mm(size_t characters, double text_mm);
 double label_height_mm(double text_mm);
 
+// The pieces an installer lays (their IDs and the rectangles they cover, layout mm).
+struct InstallerPiece {
+  std::string id;
+  std::vector<Rect> parts;
+  Rect bounds;
+};
+
 struct InstallerLabel {
   std::string text;                    // the piece's ID
   Rect box;                            // layout mm
@@ -52,16 +59,12 @@ struct InstallerPlan {
   std::array<double, 2> viewport{0, 0};  // the drawing's frame on paper, mm
   size_t grid_columns = 0, grid_rows = 0;
   std::vector<InstallerSheet> sheets;  // row by row from the bottom
+  std::vector<InstallerPiece> pieces;  // installer_pieces(layout)
   std::vector<InstallerLabel> labels;  // one per piece
   size_t unplaced = 0;                 // labels that found no free place (drawn at the centre)
 };
 
-// The pieces an installer lays (their IDs and the rectangles they cover, layout mm).
-struct InstallerPiece {
-  std::string id;
-  std::vector<Rect> parts;
-  Rect bounds;
-};
+// The fabrication sheets of a perforated surface, else the elements as laid, in layout order.
 std::vector<InstallerPiece> installer_pieces(const Layout& layout);
 
 InstallerPlan plan_installer_sheets(const Layout& layout);

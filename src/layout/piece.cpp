@@ -66,4 +66,15 @@ std::vector<ColouredRect> keep_stripes(const Layout& layout, const Element& e) {
   return out;
 }
 
+LayingExtents laying_extents(const Layout& layout) {
+  LayingExtents x;
+  for (const Element& e : layout.elements) {
+    auto& r = x.rows.try_emplace(e.row, 1e300, -1e300).first->second;
+    r.first = std::min(r.first, e.nominal.y), r.second = std::max(r.second, e.nominal.top());
+    auto& c = x.columns.try_emplace(e.column, 1e300, -1e300).first->second;
+    c.first = std::min(c.first, e.nominal.x), c.second = std::max(c.second, e.nominal.right());
+  }
+  return x;
+}
+
 }  // namespace curdle

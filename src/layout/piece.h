@@ -2,6 +2,7 @@
 // the glTF and the DXF share, so that no two files can describe the same piece differently.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,5 +33,12 @@ struct ColouredRect {
   Rgb colour;
 };
 std::vector<ColouredRect> keep_stripes(const Layout& layout, const Element& e);
+
+// Where each row of the laying order lies (y extent of its elements, mm) and each column (x
+// extent), for row and column numbers on drawings.
+struct LayingExtents {
+  std::map<int64_t, std::pair<double, double>> rows, columns;
+};
+LayingExtents laying_extents(const Layout& layout);
 
 }  // namespace curdle
