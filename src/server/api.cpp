@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -97,6 +99,15 @@ RunRequest read_run(const Params& params, const std::set<std::string>& own_names
     }
   }
   return r;
+}
+
+// The whole text as a whole number (a leading minus allowed); nullopt for anything else (a
+// plus sign, spaces, digits beyond 64 bits).
+std::optional<int64_t> whole_number(const std::string& text) {
+  int64_t v = 0;
+  auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || p != text.data() + text.size()) return std::nullopt;
+  return v;
 }
 
 std::string own(const RunRequest& r, const std::string& name, const std::string& fallback = "") {
@@ -327,12 +338,11 @@ ApiResponse api_search(const ApiContext& c, const Params& params) {
     auto integer = [&](const std::string& key, int64_t fallback, int64_t lo, int64_t hi) {
       const std::string text = own(r, key);
       if (text.empty()) return fallback;
-      int64_t v = 0;
-      auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-      if (ec != std::errc() || p != text.data() + text.size() || v < lo || v > hi)
+      const auto v = whole_number(text);
+      if (!v || *v < lo || *v > hi)
         throw InputError(parameter(key), "must be a whole number from " + std::to_string(lo) +
                                              " to " + std::to_string(hi));
-      return v;
+      return *v;
     };
     app::SearchRequest request;
     request.run = run_request(c, r);
@@ -366,11 +376,10 @@ ApiResponse api_measure(const ApiContext& c, const Params& params, const std::st
     auto integer = [&](const std::string& key, int fallback) {
       const std::string text = own(r, key);
       if (text.empty()) return fallback;
-      int v = 0;
-      auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-      if (ec != std::errc() || p != text.data() + text.size())
+      const auto v = whole_number(text);
+      if (!v || *v < std::numeric_limits<int>::min() || *v > std::numeric_limits<int>::max())
         throw InputError(parameter(key), "'" + text + "' is not a whole number");
-      return v;
+      return static_cast<int>(*v);
     };
     app::PictureStudyRequest request;
     request.bytes = body;
