@@ -85,8 +85,9 @@ function windowText() {
 let generation = 0;
 let wholeController = null;
 
-async function getJson(url, signal) {
-  const response = await fetch(url, { signal });
+// A request's JSON; its message thrown when it failed. `init` as fetch takes it (a POST's body).
+async function getJson(url, signal, init) {
+  const response = await fetch(url, { ...init, signal });
   let body;
   try {
     body = await response.json();

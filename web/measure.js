@@ -137,12 +137,8 @@ async function measurePicture(file) {
   const p = new URLSearchParams({ name: file.name, base: state.base, stages: state.stages, curds: state.curds.length });
   $("measure-status").textContent = `measuring ${file.name}…`;
   try {
-    const response = await fetch("/api/measure?" + p.toString(),
+    measured.result = await getJson("/api/measure?" + p.toString(), undefined,
       { method: "POST", body: file, headers: { "Content-Type": file.type || "application/octet-stream" } });
-    let body;
-    try { body = await response.json(); } catch (err) { body = { error: `the server answered ${response.status} with no JSON` }; }
-    if (!response.ok) throw new Error(body.error || `request failed (${response.status})`);
-    measured.result = body;
     showError("");
     $("measure-status").textContent = "";
     renderMeasure();
