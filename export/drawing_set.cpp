@@ -177,18 +177,19 @@ void start_corner(cairo_t* cr, const Layout& layout, const View& v) {
   const bool right = from_right(layout.origin), top = from_top(layout.origin);
   const double cx = v.x(right ? layout.width : 0), cy = v.y(top ? layout.height : 0);
   const double dx = right ? -1 : 1, dy = top ? 1 : -1;  // paper y runs down
-  const double ox = cx - dx * 3, oy = cy - dy * 3;
+  const double ox = cx - dx * kStartDotMm, oy = cy - dy * kStartDotMm;
   colour(cr, kRed);
   cairo_new_path(cr);  // no line from where the last text ended
   cairo_arc(cr, ox, oy, 1.2, 0, 2 * M_PI);
   cairo_fill(cr);
   cairo_set_line_width(cr, 0.35);
   cairo_move_to(cr, ox, oy);
-  cairo_line_to(cr, ox + dx * 14, oy);
+  cairo_line_to(cr, ox + dx * kStartArrowMm, oy);
   cairo_move_to(cr, ox, oy);
-  cairo_line_to(cr, ox, oy + dy * 14);
+  cairo_line_to(cr, ox, oy + dy * kStartArrowMm);
   cairo_stroke(cr);
-  text(cr, ox + dx * 16, oy + 1, "start: row 0, column 0", 2, right ? Align::right : Align::left);
+  text(cr, ox + dx * (kStartArrowMm + 2), oy + kStartTextMm / 2, kStartText, kStartTextMm,
+       right ? Align::right : Align::left);
 }
 
 std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,
@@ -356,20 +357,24 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   cairo_set_line_width(cr, 0.1);
   for (const InstallerPiece& p : plan.pieces)
     for (const Rect& r : p.parts) v.rect(cr, r), cairo_stroke(cr);
-  // Labels: inside their piece, or beside it on white with a leader.
+  // Labels: inside their piece, or beside it on white with a leader; every leader first, so
+  // that none crosses another's label.
+  colour(cr, kInk);
+  cairo_set_line_width(cr, 0.15);
+  for (const InstallerLabel& l : plan.labels) {
+    if (l.sheet != index || l.inside) continue;
+    const double ax = std::clamp(l.anchor[0], l.box.x, l.box.right());
+    const double ay = std::clamp(l.anchor[1], l.box.y, l.box.top());
+    cairo_move_to(cr, v.x(l.anchor[0]), v.y(l.anchor[1]));
+    cairo_line_to(cr, v.x(ax), v.y(ay));
+    cairo_stroke(cr);
+    cairo_new_path(cr);
+    cairo_arc(cr, v.x(l.anchor[0]), v.y(l.anchor[1]), 0.4, 0, 2 * M_PI);
+    cairo_fill(cr);
+  }
   for (const InstallerLabel& l : plan.labels) {
     if (l.sheet != index) continue;
     if (!l.inside) {
-      colour(cr, kInk);
-      cairo_set_line_width(cr, 0.15);
-      const double ax = std::clamp(l.anchor[0], l.box.x, l.box.right());
-      const double ay = std::clamp(l.anchor[1], l.box.y, l.box.top());
-      cairo_move_to(cr, v.x(l.anchor[0]), v.y(l.anchor[1]));
-      cairo_line_to(cr, v.x(ax), v.y(ay));
-      cairo_stroke(cr);
-      cairo_new_path(cr);
-      cairo_arc(cr, v.x(l.anchor[0]), v.y(l.anchor[1]), 0.4, 0, 2 * M_PI);
-      cairo_fill(cr);
       colour(cr, Rgb{255, 255, 255});
       v.rect(cr, l.box);
       cairo_fill_preserve(cr);
@@ -394,30 +399,31 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   colour(cr, kInk);
   box(cr, v.left, v.top, plan.viewport[0], plan.viewport[1], 0.35);
 
-  // Match lines: the edges shared with the next sheets, named.
-  const size_t columns = plan.grid_columns;
-  auto number_of = [&](size_t r, size_t c) { return 2 + r * columns + c; };
-  cairo_set_line_width(cr, 0.5);
+  // Match lines: the edges shared with the next sheets, each named in its caption's box.
+  const double L = v.left, T = v.top, R = v.left + plan.viewport[0], B = v.top + plan.viewport[1];
   const double dashes[] = {6, 1.5, 1, 1.5};
-  auto match = [&](double x0, double y0, double x1, double y1, size_t other, bool vertical) {
+  for (const MatchCaption& c : plan.captions) {
+    if (c.sheet != index) continue;
+    const InstallerSheet& other = plan.sheets[c.other];
     colour(cr, kBlue);
+    cairo_set_line_width(cr, 0.5);
     cairo_set_dash(cr, dashes, 4, 0);
-    cairo_move_to(cr, x0, y0);
-    cairo_line_to(cr, x1, y1);
+    if (other.column != sheet.column) {
+      const double x = other.column < sheet.column ? L : R;
+      cairo_move_to(cr, x, T), cairo_line_to(cr, x, B);
+    } else {
+      const double y = other.row < sheet.row ? B : T;
+      cairo_move_to(cr, L, y), cairo_line_to(cr, R, y);
+    }
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0);
-    const std::string t = fmt::format("match line: sheet {}", other);
-    if (vertical)
-      text(cr, x0 + (x0 > v.left + 1 ? -1.5 : 3.5), (y0 + y1) / 2, t, 2.5, Align::centre, true);
+    const std::string t = match_caption_text(c);
+    const double cx = v.x(c.box.x + c.box.w / 2), cy = v.y(c.box.y + c.box.h / 2);
+    if (c.vertical)
+      text(cr, cx + kMatchCaptionMm / 2, cy, t, kMatchCaptionMm, Align::centre, true);
     else
-      text(cr, (x0 + x1) / 2, y0 + (y0 > v.top + 1 ? -1.5 : 4), t, 2.5, Align::centre);
-  };
-  const double L = v.left, T = v.top, R = v.left + plan.viewport[0], B = v.top + plan.viewport[1];
-  if (sheet.column > 0) match(L, T, L, B, number_of(sheet.row, sheet.column - 1), true);
-  if (sheet.column + 1 < columns) match(R, T, R, B, number_of(sheet.row, sheet.column + 1), true);
-  if (sheet.row > 0) match(L, B, R, B, number_of(sheet.row - 1, sheet.column), false);
-  if (sheet.row + 1 < plan.grid_rows)
-    match(L, T, R, T, number_of(sheet.row + 1, sheet.column), false);
+      text(cr, cx, cy + kMatchCaptionMm / 2, t, kMatchCaptionMm, Align::centre);
+  }
 
   // Row numbers on the left, column numbers along the bottom, where their rows show.
   if (layout.kind != LayoutKind::perforation && layout.kind != LayoutKind::blocks) {
@@ -467,8 +473,8 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
     colour(cr, kInk);
     box(cr, kxf(r.x), kyf(r.top()), r.w * k, r.h * k, 0.15);
     if (r.w * k > 6 && r.h * k > 3)
-      text(cr, kxf(r.x + r.w / 2), kyf(r.y + r.h / 2) + 1, std::to_string(i + 2), 1.8,
-           Align::centre);
+      text(cr, kxf(r.x + r.w / 2), kyf(r.y + r.h / 2) + 1,
+           std::to_string(installer_sheet_number(i)), 1.8, Align::centre);
   }
   const double ox = from_right(layout.origin) ? layout.width : 0;
   const double oy = from_top(layout.origin) ? layout.height : 0;
@@ -488,8 +494,8 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
                                 : fmt::format("{} pieces: rows {} to {}, columns {} to {}", pieces,
                                               held.row0, held.row1, held.column0, held.column1);
   std::vector<std::string> info = {
-      fmt::format("installer's sheet {} of {}: grid row {}, column {}", index + 2, total,
-                  sheet.row + 1, sheet.column + 1),
+      fmt::format("installer's sheet {} of {}: grid row {}, column {}",
+                  installer_sheet_number(index), total, sheet.row + 1, sheet.column + 1),
       holds, fmt::format("IDs {:.1f} mm high; a label off its piece points to it", plan.text_mm)};
   if (plan.unplaced)
     info.push_back(fmt::format("{} labels found no room: use a larger sheet", plan.unplaced));
@@ -498,7 +504,8 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
     text(cr, info_x, strip + 8 + 5 * static_cast<double>(i), info[i], 2, Align::left, false,
          i == 0);
   scale_bar(cr, info_x, strip + 32, plan.scale, std::min(90.0, info_w));
-  title_block(cr, layout, w, h, "installer's sheet", plan.scale, index + 2, total, plan.paper.name);
+  title_block(cr, layout, w, h, "installer's sheet", plan.scale, installer_sheet_number(index),
+              total, plan.paper.name);
 }
 
 cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
@@ -530,9 +537,8 @@ OverviewSheet overview_sheet(const Layout& layout) {
                                s.scale, layout.width / s.scale, layout.height / s.scale));
 }
 
-void write_layout_pdf(std::ostream& out, const Layout& layout) {
+void write_layout_pdf(std::ostream& out, const Layout& layout, const InstallerPlan& plan) {
   const OverviewSheet overview = overview_sheet(layout);
-  const InstallerPlan plan = plan_installer_sheets(layout);
   const size_t total = 1 + plan.sheets.size();
   auto size = [](const PaperSheet& p, bool landscape) {
     return std::array<double, 2>{(landscape ? p.long_side : p.short_side) * kPointsPerMm,
@@ -564,7 +570,7 @@ void write_layout_pdf(std::ostream& out, const Layout& layout) {
     throw std::runtime_error(std::string("layout.pdf: ") + cairo_status_to_string(status));
 }
 
-PreviewImage render_layout_sheet(const Layout& layout) {
+PreviewImage render_layout_sheet(const Layout& layout, const InstallerPlan& plan) {
   const OverviewSheet overview = overview_sheet(layout);
   const PreviewImage raster = render_layout(layout);
   const double ppm = layout.spec.dpi / 25.4;
@@ -575,8 +581,7 @@ PreviewImage render_layout_sheet(const Layout& layout) {
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
   cairo_t* cr = cairo_create(surface);
   cairo_scale(cr, ppm, ppm);
-  // The sheet number needs the installer's sheets only for "of n": planned here too.
-  const size_t total = 1 + plan_installer_sheets(layout).sheets.size();
+  const size_t total = 1 + plan.sheets.size();  // "sheet 1 of n"
   draw_overview(cr, layout, overview, total, &raster);
   cairo_destroy(cr);
   cairo_surface_flush(surface);

@@ -12,6 +12,7 @@
 
 #include "export/image.h"
 #include "layout/drawing_sheet.h"
+#include "layout/installer_sheets.h"
 #include "layout/layout.h"
 
 namespace curdle {
@@ -26,12 +27,12 @@ struct OverviewSheet {
 };
 OverviewSheet overview_sheet(const Layout& layout);
 
-// The drawing set as PDF 1.5: sheet 1 and the installer's sheets.
-void write_layout_pdf(std::ostream& out, const Layout& layout);
+// The drawing set as PDF 1.5: sheet 1 and the installer's sheets of `plan`.
+void write_layout_pdf(std::ostream& out, const Layout& layout, const InstallerPlan& plan);
 
 // Sheet 1 at layout.dpi, the layout itself as render_layout draws it (so that its pixels are
-// the same), everything else as in layout.pdf.
-PreviewImage render_layout_sheet(const Layout& layout);
+// the same), everything else as in layout.pdf (whose sheets `plan` gives).
+PreviewImage render_layout_sheet(const Layout& layout, const InstallerPlan& plan);
 
 // Pixels of the sheet layout.png is for a layout of `spec`, known before it is built (the
 // layout's own picture on it is render_layout's: layout_png_pixels).

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <map>
+#include <cmath>
 
 #include "curdle/text.h"
 #include "export/wkt.h"
@@ -15,100 +15,182 @@ namespace {
 // Positions to the micrometre, as in the schedule and the DXF.
 std::string num(double v) { return mm_text(v); }
 
+constexpr double kRowStripMm = 14, kColumnStripMm = 8, kHeadingMm = 8;  // paper mm
+const char* const kRed = "#c92a2a";
+const char* const kBlue = "#1864ab";
+
+// Layout millimetres to the drawing's: x from the left of the row strip, y down from the top.
+struct Frame {
+  double left = 0, top = 0;  // layout mm at the drawing's top-left corner
+  double x(double v) const { return v - left; }
+  double y(double v) const { return top - v; }
+};
+
+// Text whose capitals are `cap` paper mm at 1 : scale, centred on (x, y) drawing units.
+std::string centred_text(double x, double y, double cap, double scale, const std::string& s,
+                         bool rotated, const char* fill = "#222") {
+  const double size = cap / kCapHeightEm * scale;
+  const std::string at =
+      rotated ? fmt::format(" transform=\"rotate(-90 {} {})\"", num(x), num(y)) : std::string();
+  return fmt::format(
+      "<text x=\"{}\" y=\"{}\" font-size=\"{}\" text-anchor=\"middle\" fill=\"{}\"{}>{}</text>",
+      num(x), num(y + cap * scale / 2), num(size), fill, at, xml_escape(s));
+}
+
+void write_element(std::ostream& out, const Layout& layout, const Element& e, const Frame& f) {
+  const Rgb& c = piece_colour(layout, e);
+  const std::string fill = fmt::format("rgb({},{},{})", c.r, c.g, c.b);
+  out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">",
+                     xml_escape(e.id), e.row, e.column);
+  if (e.circle) {
+    out << fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>", num(f.x(e.circle->cx)),
+                       num(f.y(e.circle->cy)), num(e.circle->d / 2), fill);
+  } else if (e.outline) {  // merged openings, cut as their union
+    std::string d;
+    for (const Ring& ring : e.outline->rings)
+      for (size_t i = 0; i < ring.size(); ++i)
+        d += fmt::format("{}{} {}{}", i ? "L" : "M", num(f.x(ring[i][0])), num(f.y(ring[i][1])),
+                         i + 1 == ring.size() ? "z" : "");
+    out << fmt::format("<path d=\"{}\" fill=\"{}\" fill-rule=\"evenodd\"/>", d, fill);
+  } else {
+    for (const Rect& r : e.shape.empty() ? std::vector<Rect>{e.nominal} : e.shape)
+      out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
+                         num(f.x(r.x)), num(f.y(r.top())), num(r.w), num(r.h), fill);
+  }
+  out << "</g>\n";
+}
+
 }  // namespace
 
-void write_install_svg(std::ostream& out, const Layout& layout) {
+void write_install_svg(std::ostream& out, const Layout& layout, const InstallerPlan& plan) {
   const Provenance& title = layout.source;
-  const double W = layout.width, H = layout.height;
-  const double unit = std::max(W, H) / 60, margin = unit * 3;
-  auto x = [&](double v) { return margin + v; };
-  auto y = [&](double v) { return margin + H - v; };  // the layout's y runs up
+  const double s = plan.scale, W = layout.width, H = layout.height;
+  const Rect& first = plan.sheets.front().window;
+  const Rect& last = plan.sheets.back().window;
+  // The sheets' grid, the row strip on its left, column numbers under it and a heading above.
+  const Frame f{first.x - kRowStripMm * s, last.top() + kHeadingMm * s};
+  const double width = last.right() + 2 * s - f.left;
+  const double height = f.top - (first.y - kColumnStripMm * s);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out << fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}mm\" height=\"{1}mm\" "
-      "viewBox=\"0 0 {0} {1}\" font-family=\"Helvetica, Arial, sans-serif\">\n",
-      num(W + 2 * margin), num(H + 2 * margin));
-  out << fmt::format("<title>{} - installation map, seed {}</title>\n", xml_escape(title.recipe),
-                     title.seed);
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}mm\" height=\"{}mm\" "
+      "viewBox=\"0 0 {} {}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
+      num(width / s), num(height / s), num(width), num(height));
+  out << fmt::format("<title>{} - installation map at 1 : {:g}, seed {}</title>\n",
+                     xml_escape(title.recipe), s, title.seed);
+  // The surface (the first rectangle: readers find the layout's frame by it).
   out << fmt::format(
-      "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#ffffff\" stroke=\"#000\" "
+      "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"#222\" "
       "stroke-width=\"{}\"/>\n",
-      num(x(0)), num(y(H)), num(W), num(H), num(unit * 0.05));
-  for (const auto& sheet : layout.sheets)
+      num(f.x(0)), num(f.y(H)), num(W), num(H), num(0.35 * s));
+  out << fmt::format(
+      "<text x=\"{}\" y=\"{}\" font-size=\"{}\" fill=\"#222\">{}: installation map at 1 : {:g}, "
+      "IDs {:.1f} mm high; the grid and its numbers are the installer's sheets of "
+      "layout.pdf</text>\n",
+      num(f.x(first.x)), num(4 * s), num(3 / kCapHeightEm * s), xml_escape(title.recipe), s,
+      plan.text_mm);
+  out << "<g id=\"openings\" fill=\"#dfeaf2\">\n";
+  for (const Rect& o : layout.openings)
+    out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(f.x(o.x)),
+                       num(f.y(o.top())), num(o.w), num(o.h));
+  out << "</g>\n";
+  for (const auto& sheet : layout.sheets)  // a perforated surface's fabrication sheets
     out << fmt::format(
-        "<g class=\"sheet\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
-        "stroke=\"#1864ab\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\" font-size=\"{}\" "
-        "fill=\"#1864ab\">{}</text></g>\n",
-        num(x(sheet.area.x)), num(y(sheet.area.top())), num(sheet.area.w), num(sheet.area.h),
-        num(unit * 0.1), num(x(sheet.area.x) + unit * 0.3), num(y(sheet.area.top()) + unit),
-        num(unit * 0.8), sheet.id);
-  out << "<g id=\"elements\" fill=\"none\" stroke=\"#555\" stroke-width=\"" << num(unit * 0.02)
-      << "\">\n";
-  for (const Element& e : layout.elements) {
-    const Rgb& c = piece_colour(layout, e);
-    const std::string fill = fmt::format("rgb({},{},{})", c.r, c.g, c.b);
-    double cx, cy, w;
-    out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">",
-                       xml_escape(e.id), e.row, e.column);
-    if (e.circle) {
-      cx = e.circle->cx, cy = e.circle->cy, w = e.circle->d;
-      out << fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" fill-opacity=\"0.35\"/>",
-                         num(x(cx)), num(y(cy)), num(e.circle->d / 2), fill);
-    } else if (e.outline) {  // merged openings, cut as their union
-      std::string d;
-      for (const Ring& ring : e.outline->rings)
-        for (size_t i = 0; i < ring.size(); ++i)
-          d += fmt::format("{}{} {}{}", i ? "L" : "M", num(x(ring[i][0])), num(y(ring[i][1])),
-                           i + 1 == ring.size() ? "z" : "");
-      out << fmt::format("<path d=\"{}\" fill=\"{}\" fill-opacity=\"0.35\" fill-rule=\"evenodd\"/>",
-                         d, fill);
-      const Rect b = laid_bounds(e);
-      cx = b.x + b.w / 2, cy = b.y + b.h / 2, w = std::min(b.w, b.h * 3);
-    } else {
-      const auto& rects = e.shape.empty() ? std::vector<Rect>{e.nominal} : e.shape;
-      double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-      for (const Rect& r : rects) {
-        out << fmt::format(
-            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\" "
-            "fill-opacity=\"0.35\"/>",
-            num(x(r.x)), num(y(r.top())), num(r.w), num(r.h), fill);
-        x0 = std::min(x0, r.x), x1 = std::max(x1, r.right()), y0 = std::min(y0, r.y),
-        y1 = std::max(y1, r.top());
-      }
-      cx = (x0 + x1) / 2, cy = (y0 + y1) / 2, w = std::min(x1 - x0, (y1 - y0) * 3);
+        "<rect class=\"sheet\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#c9cdd2\" "
+        "stroke=\"#555\" stroke-width=\"{}\"/>\n",
+        num(f.x(sheet.area.x)), num(f.y(sheet.area.top())), num(sheet.area.w), num(sheet.area.h),
+        num(0.1 * s));
+  out << fmt::format(
+      "<g id=\"elements\" fill-opacity=\"0.35\" stroke=\"#555\" stroke-width=\"{}\">\n",
+      num(0.1 * s));
+  for (const Element& e : layout.elements) write_element(out, layout, e, f);
+  out << "</g>\n";
+
+  // The installer's sheets, each named in its match-line captions.
+  if (plan.sheets.size() > 1) {
+    out << fmt::format(
+        "<g id=\"installer-sheets\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" "
+        "stroke-dasharray=\"{} {} {} {}\">\n",
+        kBlue, num(0.5 * s), num(6 * s), num(1.5 * s), num(s), num(1.5 * s));
+    for (size_t i = 0; i < plan.sheets.size(); ++i) {
+      const Rect& w = plan.sheets[i].window;
+      out << fmt::format(
+          "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"><title>sheet {}</title></rect>\n",
+          num(f.x(w.x)), num(f.y(w.top())), num(w.w), num(w.h), installer_sheet_number(i));
     }
-    // The label fits the element: about 0.6 em a character.
-    const double size = std::max(0.1, w / (0.62 * static_cast<double>(e.id.size()) + 1));
-    out << fmt::format(
-        "<text x=\"{}\" y=\"{}\" font-size=\"{}\" text-anchor=\"middle\" fill=\"#000\" "
-        "stroke=\"none\">{}</text></g>\n",
-        num(x(cx)), num(y(cy) + size * 0.35), num(size), xml_escape(e.id));
+    out << "</g>\n<g id=\"sheet-numbers\">\n";
+    for (const MatchCaption& c : plan.captions)
+      out << centred_text(f.x(c.box.x + c.box.w / 2), f.y(c.box.y + c.box.h / 2), kMatchCaptionMm,
+                          s, fmt::format("sheet {}", installer_sheet_number(c.sheet)), c.vertical,
+                          kBlue)
+          << "\n";
+    out << "</g>\n";
+  }
+
+  // Labels as planned: leaders first, so that none crosses another's label.
+  out << fmt::format("<g id=\"leaders\" stroke=\"#222\" stroke-width=\"{}\" fill=\"#222\">\n",
+                     num(0.15 * s));
+  for (const InstallerLabel& l : plan.labels) {
+    if (l.inside) continue;
+    const double ax = std::clamp(l.anchor[0], l.box.x, l.box.right());
+    const double ay = std::clamp(l.anchor[1], l.box.y, l.box.top());
+    out << fmt::format("<path d=\"M{} {}L{} {}\"/><circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>\n",
+                       num(f.x(l.anchor[0])), num(f.y(l.anchor[1])), num(f.x(ax)), num(f.y(ay)),
+                       num(f.x(l.anchor[0])), num(f.y(l.anchor[1])), num(0.4 * s));
+  }
+  out << "</g>\n<g id=\"labels\">\n";
+  for (const InstallerLabel& l : plan.labels) {
+    if (!l.inside)
+      out << fmt::format(
+          "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"#222\" "
+          "stroke-width=\"{}\"/>",
+          num(f.x(l.box.x)), num(f.y(l.box.top())), num(l.box.w), num(l.box.h), num(0.1 * s));
+    out << centred_text(f.x(l.box.x + l.box.w / 2), f.y(l.box.y + l.box.h / 2), plan.text_mm, s,
+                        l.text, l.rotated)
+        << "\n";
   }
   out << "</g>\n";
 
-  // Row numbers beside the origin side, and where laying starts.
-  if (layout.kind != LayoutKind::blocks) {
-    const bool right = from_right(layout.origin);
-    const bool top = from_top(layout.origin);
-    const auto rows = laying_extents(layout).rows;
-    out << fmt::format("<g id=\"rows\" font-size=\"{}\" fill=\"#c92a2a\">\n", num(unit * 0.6));
-    for (const auto& [row, extent] : rows)
-      out << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"{}\">row {}</text>\n",
-                         num(right ? x(W) + unit * 0.3 : x(0) - unit * 0.3),
-                         num(y((extent.first + extent.second) / 2) + unit * 0.2),
-                         right ? "start" : "end", row);
+  // Row numbers in the strip on the left, column numbers under the grid, where they read.
+  if (layout.kind != LayoutKind::perforation && layout.kind != LayoutKind::blocks) {
+    const LayingExtents extents = laying_extents(layout);
+    const double cap = 2.5;
+    out << fmt::format("<g id=\"rows\" font-size=\"{}\" fill=\"{}\">\n",
+                       num(cap / kCapHeightEm * s), kRed);
+    double last_at = -1e300;
+    for (const auto& [row, extent] : extents.rows) {
+      const double mid = (extent.first + extent.second) / 2;
+      if (std::fabs(mid - last_at) < 3.2 * s) continue;
+      last_at = mid;
+      out << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">R{}</text>\n",
+                         num(f.x(first.x) - 1.5 * s), num(f.y(mid) + cap / 2 * s), row);
+    }
+    last_at = -1e300;
+    for (const auto& [column, extent] : extents.columns) {
+      const double mid = (extent.first + extent.second) / 2;
+      const std::string t = fmt::format("C{}", column);
+      if (std::fabs(mid - last_at) < (label_width_mm(t.size(), cap) + 1.5) * s) continue;
+      last_at = mid;
+      out << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
+                         num(f.x(mid)), num(f.y(first.y) + 4.5 * s), t);
+    }
     out << "</g>\n";
-    const double sx = right ? W : 0, sy = top ? H : 0;
-    const double dx = right ? -1 : 1, dy = top ? -1 : 1;
+
+    // Where laying starts, as on the drawing set's sheets.
+    const bool right = from_right(layout.origin), top = from_top(layout.origin);
+    const double dx = right ? -1 : 1, dy = top ? 1 : -1;  // drawing y runs down
+    const double ox = f.x(right ? W : 0) - dx * kStartDotMm * s;
+    const double oy = f.y(top ? H : 0) - dy * kStartDotMm * s;
     out << fmt::format(
-        "<g id=\"laying-order\" stroke=\"#c92a2a\" stroke-width=\"{0}\" fill=\"#c92a2a\">"
-        "<circle cx=\"{1}\" cy=\"{2}\" r=\"{3}\"/>"
-        "<path fill=\"none\" d=\"M{1} {2}l{4} 0M{1} {2}l0 {5}\"/>"
-        "<text x=\"{6}\" y=\"{7}\" stroke=\"none\" font-size=\"{8}\">start: row 0, column 0; "
-        "rows run this way, columns along each row</text></g>\n",
-        num(unit * 0.12), num(x(sx)), num(y(sy)), num(unit * 0.4), num(dx * unit * 4),
-        num(-dy * unit * 4), num(x(sx) + dx * unit * 0.8 - (right ? unit * 20 : 0)),
-        num(y(sy) + (top ? -unit : unit * 1.6)), num(unit * 0.6));
+        "<g id=\"laying-order\" stroke=\"{0}\" stroke-width=\"{1}\" fill=\"{0}\">"
+        "<circle cx=\"{2}\" cy=\"{3}\" r=\"{4}\"/>"
+        "<path fill=\"none\" d=\"M{2} {3}l{5} 0M{2} {3}l0 {6}\"/>"
+        "<text x=\"{7}\" y=\"{8}\" stroke=\"none\" font-size=\"{9}\" text-anchor=\"{10}\">{11}"
+        "</text></g>\n",
+        kRed, num(0.35 * s), num(ox), num(oy), num(1.2 * s), num(dx * kStartArrowMm * s),
+        num(dy * kStartArrowMm * s), num(ox + dx * (kStartArrowMm + 2) * s),
+        num(oy + kStartTextMm / 2 * s), num(kStartTextMm / kCapHeightEm * s),
+        right ? "end" : "start", kStartText);
   }
   out << "</svg>\n";
 }

@@ -93,10 +93,26 @@ TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
         if (++overlapping <= 5) ADD_FAILURE() << order[i]->text << " overlaps " << order[j]->text;
       }
   EXPECT_EQ(overlapping, 0u);
+  // Nor does any label lie on a match line's caption or the start corner.
+  std::vector<Rect> reserved = plan.start_corner;
+  for (const MatchCaption& c : plan.captions) {
+    reserved.push_back(c.box);
+    EXPECT_TRUE(within(plan.sheets.at(c.sheet).window, c.box)) << match_caption_text(c);
+    EXPECT_LE(set_width(match_caption_text(c), kMatchCaptionMm),
+              (c.vertical ? c.box.h : c.box.w) / plan.scale);
+  }
+  EXPECT_EQ(plan.start_corner.empty(), layout.kind == LayoutKind::blocks);
+  size_t covered = 0;
+  for (const InstallerLabel& l : plan.labels)
+    for (const Rect& r : reserved)
+      if (overlaps(l.box, r) && ++covered <= 5)
+        ADD_FAILURE() << l.text << " lies on a caption or the start corner";
+  EXPECT_EQ(covered, 0u);
+  if (plan.grid_columns * plan.grid_rows > 1) EXPECT_FALSE(plan.captions.empty());
 
   // layout.pdf: sheet 1 and one page per installer's sheet, each an ISO sheet.
   std::ostringstream pdf;
-  write_layout_pdf(pdf, layout);
+  write_layout_pdf(pdf, layout, plan);
   const std::string bytes = pdf.str();
   ASSERT_EQ(bytes.rfind("%PDF-", 0), 0u);
   size_t pages = 0;
@@ -116,7 +132,7 @@ TEST(LayoutSheet, IsSheetOneWithTheLayoutsOwnPixels) {
   layout.spec.dpi = 50;  // small and quick
   const OverviewSheet sheet = overview_sheet(layout);
   EXPECT_EQ(sheet.paper.name, "A3");
-  const PreviewImage png = render_layout_sheet(layout);
+  const PreviewImage png = render_layout_sheet(layout, plan_installer_sheets(layout));
   EXPECT_EQ(png.width, static_cast<int>(std::lround(420 * 50 / 25.4)));
   EXPECT_EQ(png.height, static_cast<int>(std::lround(297 * 50 / 25.4)));
   // Every pixel of the layout's own picture is somewhere on the sheet, unchanged: find its

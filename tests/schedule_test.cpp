@@ -147,7 +147,7 @@ TEST(Install, TheMapNamesEveryElementAndWhereLayingStarts) {
   d.field.size = {cells[0], cells[1], 1};
   const Layout layout = make_layout(d, curdle(d, 6, d.field), d.field, spec);
   std::ostringstream out;
-  write_install_svg(out, layout);
+  write_install_svg(out, layout, plan_installer_sheets(layout));
   const std::string svg = out.str();
   std::set<std::string> labelled, ids;
   const std::regex label("<g id=\"(F-R[0-9]+-C[0-9]+)\" class=\"element\"");
@@ -156,7 +156,7 @@ TEST(Install, TheMapNamesEveryElementAndWhereLayingStarts) {
   for (const Element& e : layout.elements) ids.insert(e.id);
   EXPECT_EQ(labelled, ids);
   EXPECT_NE(svg.find("id=\"laying-order\""), std::string::npos);
-  EXPECT_NE(svg.find(">row 0<"), std::string::npos);
+  EXPECT_NE(svg.find(">R0<"), std::string::npos);
 }
 
 }  // namespace curdle

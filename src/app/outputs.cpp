@@ -67,12 +67,14 @@ void write_layout_svg_output(const OutputContext& c, OutputSink& sink) {
 }
 
 void write_layout_png(const OutputContext& c, OutputSink& sink) {
-  const std::string png = encode_png(render_layout_sheet(*c.layout), c.layout->spec.dpi);
+  const std::string png =
+      encode_png(render_layout_sheet(*c.layout, c.installer_plan()), c.layout->spec.dpi);
   sink.write("layout.png", [&](std::ostream& o) { o << png; });
 }
 
 void write_layout_pdf_output(const OutputContext& c, OutputSink& sink) {
-  sink.write("layout.pdf", [&](std::ostream& o) { write_layout_pdf(o, *c.layout); });
+  sink.write("layout.pdf",
+             [&](std::ostream& o) { write_layout_pdf(o, *c.layout, c.installer_plan()); });
 }
 
 void write_layout_glb(const OutputContext& c, OutputSink& sink) {
@@ -103,7 +105,8 @@ void write_lots(const OutputContext& c, OutputSink& sink) {
 }
 
 void write_install(const OutputContext& c, OutputSink& sink) {
-  sink.write("install.svg", [&](std::ostream& o) { write_install_svg(o, *c.layout); });
+  sink.write("install.svg",
+             [&](std::ostream& o) { write_install_svg(o, *c.layout, c.installer_plan()); });
 }
 
 void write_sheets(const OutputContext& c, OutputSink& sink) {

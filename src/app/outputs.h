@@ -13,6 +13,7 @@
 #include "app/output_sink.h"
 #include "app/run.h"
 #include "curdle/report.h"
+#include "layout/installer_sheets.h"
 #include "layout/layout.h"
 
 namespace curdle::app {
@@ -24,6 +25,12 @@ struct OutputContext {
   const Report& report;
   const Layout* layout;   // null without a [layout]; it holds the spec it was built from
   RunObserver* observer;  // may be null
+  // The installer's sheets, planned once for install.svg, layout.pdf and layout.png.
+  const InstallerPlan& installer_plan() const {
+    if (!plan_) plan_ = plan_installer_sheets(*layout);
+    return *plan_;
+  }
+  mutable std::optional<InstallerPlan> plan_{};
 };
 
 struct Output {

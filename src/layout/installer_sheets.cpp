@@ -1,7 +1,10 @@
 #include "layout/installer_sheets.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <unordered_map>
 
 #include "layout/piece.h"
@@ -54,6 +57,52 @@ class PlacedLabels {
 
 Rect centred(double cx, double cy, double w, double h) { return {cx - w / 2, cy - h / 2, w, h}; }
 
+Rect spanning(double xa, double ya, double xb, double yb) {
+  return {std::min(xa, xb), std::min(ya, yb), std::fabs(xb - xa), std::fabs(yb - ya)};
+}
+
+constexpr double kCaptionBandMm = 4.5;  // match-line captions' strip inside the sheet's edge
+
+// Both sides of every edge two sheets share carry a caption naming the sheet beyond.
+std::vector<MatchCaption> match_captions(const InstallerPlan& plan) {
+  std::vector<MatchCaption> captions;
+  const double band = kCaptionBandMm * plan.scale;
+  auto index = [&](size_t r, size_t c) { return r * plan.grid_columns + c; };
+  for (size_t i = 0; i < plan.sheets.size(); ++i) {
+    const InstallerSheet& s = plan.sheets[i];
+    const Rect& w = s.window;
+    auto add = [&](size_t other, bool vertical, double edge_x, double edge_y) {
+      MatchCaption c{i, other, {}, vertical};
+      const double length =
+          label_width_mm(match_caption_text(c).size(), kMatchCaptionMm) * plan.scale;
+      c.box = centred(edge_x, edge_y, vertical ? band : length, vertical ? length : band);
+      captions.push_back(c);
+    };
+    const double mx = w.x + w.w / 2, my = w.y + w.h / 2;
+    if (s.column > 0) add(index(s.row, s.column - 1), true, w.x + band / 2, my);
+    if (s.column + 1 < plan.grid_columns)
+      add(index(s.row, s.column + 1), true, w.right() - band / 2, my);
+    if (s.row > 0) add(index(s.row - 1, s.column), false, mx, w.y + band / 2);
+    if (s.row + 1 < plan.grid_rows) add(index(s.row + 1, s.column), false, mx, w.top() - band / 2);
+  }
+  return captions;
+}
+
+// The start corner's dot, arrows and words (kStartDotMm...), as two strips outside the corner.
+std::vector<Rect> start_corner_area(const Layout& layout, double scale) {
+  if (layout.kind == LayoutKind::blocks) return {};
+  const double X = from_right(layout.origin) ? layout.width : 0;
+  const double Y = from_top(layout.origin) ? layout.height : 0;
+  const double sx = from_right(layout.origin) ? -1 : 1;  // into the layout
+  const double sy = from_top(layout.origin) ? -1 : 1;
+  const double near = (kStartDotMm - 1.5) * scale, far = (kStartDotMm + 2) * scale;
+  const double words = label_width_mm(std::string_view(kStartText).size(), kStartTextMm);
+  const double along = (kStartDotMm + kStartArrowMm + 2 + words) * scale;
+  const double up = (kStartArrowMm + 1) * scale;
+  return {spanning(X - sx * far, Y - sy * far, X + sx * along, Y - sy * near),
+          spanning(X - sx * far, Y - sy * far, X - sx * near, Y + sy * up)};
+}
+
 // Places every label at 1 : scale; false when some label found no place.
 bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
            InstallerPlan& plan) {
@@ -82,10 +131,14 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
 
   const double lh = label_height_mm(plan.text_mm) * scale;
   PlacedLabels placed(lh * 4);
+  plan.captions = match_captions(plan);
+  plan.start_corner = start_corner_area(layout, scale);
+  for (const MatchCaption& c : plan.captions) placed.add(c.box);
+  for (const Rect& r : plan.start_corner) placed.add(r);
   plan.labels.assign(pieces.size(), {});
   plan.unplaced = 0;
   std::vector<size_t> beside;
-  // Inside first: a label in its own piece cannot meet another piece's.
+  // Inside first: a label in its own piece cannot meet another piece's, only what is reserved.
   for (size_t i = 0; i < pieces.size(); ++i) {
     const InstallerPiece& p = pieces[i];
     InstallerLabel& label = plan.labels[i];
@@ -103,7 +156,7 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
       for (const bool rotated : {false, true}) {
         const Rect box = centred(part->x + part->w / 2, part->y + part->h / 2, rotated ? lh : lw,
                                  rotated ? lw : lh);
-        if (contains(*part, box) && contains(window, box)) {
+        if (contains(*part, box) && contains(window, box) && !placed.collides(box)) {
           label.box = box, label.rotated = rotated, label.inside = true;
           placed.add(box);
           done = true;
@@ -147,6 +200,10 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
 }
 
 }  // namespace
+
+std::string match_caption_text(const MatchCaption& caption) {
+  return fmt::format("match line: sheet {}", installer_sheet_number(caption.other));
+}
 
 double label_width_mm(size_t characters, double text_mm) {
   return (0.96 * static_cast<double>(characters) + 0.8) * text_mm;

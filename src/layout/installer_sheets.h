@@ -51,6 +51,22 @@ struct InstallerSheet {
   Rect window;                 // the part of the layout it shows, layout mm
 };
 
+// A match line's caption ("match line: sheet 7"), inside its sheet along the shared edge; no
+// label is placed on it.
+struct MatchCaption {
+  size_t sheet = 0, other = 0;  // indices into InstallerPlan::sheets
+  Rect box;                     // layout mm
+  bool vertical = false;        // on a left or right edge, reading bottom to top
+};
+inline constexpr double kMatchCaptionMm = 2.5;  // its text
+std::string match_caption_text(const MatchCaption& caption);
+
+// Where laying starts, drawn just outside the origin corner: a dot 3 mm out, arrows 14 mm
+// along the first row and up the rows, and the words beyond the first arrow (paper mm). No
+// label is placed on it.
+inline constexpr double kStartDotMm = 3, kStartArrowMm = 14, kStartTextMm = 2;
+inline constexpr const char* kStartText = "start: row 0, column 0";
+
 struct InstallerPlan {
   PaperSheet paper;
   bool landscape = true;
@@ -61,6 +77,8 @@ struct InstallerPlan {
   std::vector<InstallerSheet> sheets;  // row by row from the bottom
   std::vector<InstallerPiece> pieces;  // installer_pieces(layout)
   std::vector<InstallerLabel> labels;  // one per piece
+  std::vector<MatchCaption> captions;  // both sides of every edge two sheets share
+  std::vector<Rect> start_corner;      // what the start corner covers, layout mm (none: blocks)
   size_t unplaced = 0;                 // labels that found no free place (drawn at the centre)
 };
 
@@ -68,6 +86,10 @@ struct InstallerPlan {
 std::vector<InstallerPiece> installer_pieces(const Layout& layout);
 
 InstallerPlan plan_installer_sheets(const Layout& layout);
+
+// The sheet numbers of the drawing set: sheet 1 is the whole layout, the installer's sheets
+// follow from 2.
+inline size_t installer_sheet_number(size_t index) { return index + 2; }
 
 // The frame of the drawing on an installer's sheet of `paper`: its drawing area less a strip
 // for row numbers on the left and column numbers along the bottom.

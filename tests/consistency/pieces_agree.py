@@ -87,21 +87,24 @@ def has_box(boxes, b):
 
 
 def install_boxes(path):
+    """Each element's extent in install.svg, layout millimetres: the drawing's units are layout
+    millimetres (drawn at the installer's scale through its size), the layout's frame its first
+    rectangle, y running down."""
     text = open(path, encoding="utf-8").read()
     outline = re.search(r'<rect x="([-\d.]+)" y="([-\d.]+)" width="([-\d.]+)" height="([-\d.]+)"', text)
-    margin, height = float(outline.group(1)), float(outline.group(4))
+    left, top = float(outline.group(1)), float(outline.group(2)) + float(outline.group(4))
     out = {}
     for m in re.finditer(r'<g id="([^"]+)" class="element"[^>]*>(.*?)</g>', text):
         pts = []
         for r in re.finditer(r'<rect x="([-\d.]+)" y="([-\d.]+)" width="([-\d.]+)" height="([-\d.]+)"', m.group(2)):
             x, y, w, h = map(float, r.groups())
-            pts += [(x - margin, margin + height - y - h), (x - margin + w, margin + height - y)]
+            pts += [(x - left, top - y - h), (x - left + w, top - y)]
         for path in re.finditer(r'<path d="([^"]+)"', m.group(2)):
             for px, py in re.findall(r'[ML]([-\d.]+) ([-\d.]+)', path.group(1)):
-                pts.append((float(px) - margin, margin + height - float(py)))
+                pts.append((float(px) - left, top - float(py)))
         for c in re.finditer(r'<circle cx="([-\d.]+)" cy="([-\d.]+)" r="([-\d.]+)"', m.group(2)):
             cx, cy, r = map(float, c.groups())
-            x, y = cx - margin, margin + height - cy
+            x, y = cx - left, top - cy
             pts += [(x - r, y - r), (x + r, y + r)]
         out[m.group(1)] = box_of_points(pts)
     return out
