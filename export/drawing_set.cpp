@@ -350,7 +350,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   v.left = kLeftMargin + 14;  // the row-number strip (installer_sheets.cpp)
   v.top = kMargin;
   cairo_save(cr);
-  cairo_rectangle(cr, v.left, v.top, plan.viewport[0], plan.viewport[1]);
+  v.rect(cr, sheet.window);  // the window is the viewport, or less where it ends at a joint
   cairo_clip(cr);
   draw_pieces(cr, layout, v, true);
   colour(cr, Rgb{85, 85, 85});
@@ -400,7 +400,9 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   box(cr, v.left, v.top, plan.viewport[0], plan.viewport[1], 0.35);
 
   // Match lines: the edges shared with the next sheets, each named in its caption's box.
-  const double L = v.left, T = v.top, R = v.left + plan.viewport[0], B = v.top + plan.viewport[1];
+  const double B = v.top + plan.viewport[1];  // column numbers go under the viewport
+  const double wl = v.x(sheet.window.x), wr = v.x(sheet.window.right());
+  const double wt = v.y(sheet.window.top()), wb = v.y(sheet.window.y);
   const double dashes[] = {6, 1.5, 1, 1.5};
   for (const MatchCaption& c : plan.captions) {
     if (c.sheet != index) continue;
@@ -409,11 +411,11 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
     cairo_set_line_width(cr, 0.5);
     cairo_set_dash(cr, dashes, 4, 0);
     if (other.column != sheet.column) {
-      const double x = other.column < sheet.column ? L : R;
-      cairo_move_to(cr, x, T), cairo_line_to(cr, x, B);
+      const double x = other.column < sheet.column ? wl : wr;
+      cairo_move_to(cr, x, wt), cairo_line_to(cr, x, wb);
     } else {
-      const double y = other.row < sheet.row ? B : T;
-      cairo_move_to(cr, L, y), cairo_line_to(cr, R, y);
+      const double y = other.row < sheet.row ? wb : wt;
+      cairo_move_to(cr, wl, y), cairo_line_to(cr, wr, y);
     }
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0);

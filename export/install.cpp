@@ -15,7 +15,7 @@ namespace {
 // Positions to the micrometre, as in the schedule and the DXF.
 std::string num(double v) { return mm_text(v); }
 
-constexpr double kRowStripMm = 14, kColumnStripMm = 8, kHeadingMm = 8;  // paper mm
+constexpr double kRowStripMm = 14, kColumnStripMm = 8, kHeadingMm = 11;  // paper mm
 const char* const kRed = "#c92a2a";
 const char* const kBlue = "#1864ab";
 
@@ -83,12 +83,14 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
       "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"#222\" "
       "stroke-width=\"{}\"/>\n",
       num(f.x(0)), num(f.y(H)), num(W), num(H), num(0.35 * s));
+  // The heading, two short lines so that it fits over the narrowest map.
+  const double heading = 2.5 / kCapHeightEm * s;
   out << fmt::format(
-      "<text x=\"{}\" y=\"{}\" font-size=\"{}\" fill=\"#222\">{}: installation map at 1 : {:g}, "
-      "IDs {:.1f} mm high; the grid and its numbers are the installer's sheets of "
-      "layout.pdf</text>\n",
-      num(f.x(first.x)), num(4 * s), num(3 / kCapHeightEm * s), xml_escape(title.recipe), s,
-      plan.text_mm);
+      "<g id=\"heading\" font-size=\"{}\" fill=\"#222\"><text x=\"{}\" y=\"{}\" "
+      "font-weight=\"bold\">{}</text><text x=\"{}\" y=\"{}\">installation map 1 : {:g}, IDs "
+      "{:.1f} mm; the grid: the sheets of layout.pdf</text></g>\n",
+      num(heading), num(f.x(first.x)), num(3.5 * s), xml_escape(title.recipe), num(f.x(first.x)),
+      num(8 * s), s, plan.text_mm);
   out << "<g id=\"openings\" fill=\"#dfeaf2\">\n";
   for (const Rect& o : layout.openings)
     out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(f.x(o.x)),
@@ -138,7 +140,11 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
                        num(f.x(l.anchor[0])), num(f.y(l.anchor[1])), num(f.x(ax)), num(f.y(ay)),
                        num(f.x(l.anchor[0])), num(f.y(l.anchor[1])), num(0.4 * s));
   }
-  out << "</g>\n<g id=\"labels\">\n";
+  // A white halo keeps every ID clear of the lines and openings under it.
+  out << fmt::format(
+      "</g>\n<g id=\"labels\" paint-order=\"stroke\" stroke=\"#fff\" stroke-width=\"{}\" "
+      "stroke-linejoin=\"round\">\n",
+      num(0.5 * s));
   for (const InstallerLabel& l : plan.labels) {
     if (!l.inside)
       out << fmt::format(

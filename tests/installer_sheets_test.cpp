@@ -109,6 +109,21 @@ TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
         ADD_FAILURE() << l.text << " lies on a caption or the start corner";
   EXPECT_EQ(covered, 0u);
   if (plan.grid_columns * plan.grid_rows > 1) EXPECT_FALSE(plan.captions.empty());
+  // Sheets meet at joints: no match line runs through a piece, so each holds its own label.
+  size_t split = 0;
+  for (const InstallerPiece& p : pieces)
+    for (const InstallerSheet& sheet : plan.sheets) {
+      const Rect& w = sheet.window;
+      const bool across_x =
+          p.bounds.x < w.x - 1e-6 && p.bounds.right() > w.x + 1e-6 && sheet.column > 0;
+      const bool across_y = p.bounds.y < w.y - 1e-6 && p.bounds.top() > w.y + 1e-6 && sheet.row > 0;
+      if ((across_x && p.bounds.y < w.top() && p.bounds.top() > w.y) ||
+          (across_y && p.bounds.x < w.right() && p.bounds.right() > w.x))
+        if (++split <= 5)
+          ADD_FAILURE() << p.id << " is split by the edge of sheet " << sheet.row << ","
+                        << sheet.column;
+    }
+  EXPECT_EQ(split, 0u);
 
   // layout.pdf: sheet 1 and one page per installer's sheet, each an ISO sheet.
   std::ostringstream pdf;

@@ -15,6 +15,7 @@ namespace {
 constexpr double kRowStripMm = 14;    // row numbers, left of the frame
 constexpr double kColumnStripMm = 8;  // column numbers, under the frame
 constexpr double kBandMm = 16;        // paper around the layout for labels beside edge pieces
+constexpr double kNarrowBandMm = 8;   // at least a label's height and its gap
 constexpr size_t kScalesTried = 6;    // smaller scales tried when labels do not all find room
 
 bool contains(const Rect& outer, const Rect& inner) {
@@ -103,30 +104,82 @@ std::vector<Rect> start_corner_area(const Layout& layout, double scale) {
           spanning(X - sx * far, Y - sy * far, X - sx * near, Y + sy * up)};
 }
 
+// Where sheets meet along one axis, covering [from, to] with as few sheets as `length` allows:
+// each edge, within the slack the sheets leave, where the fewest pieces cross (a joint, so that
+// pieces are not split by a match line and hold their own labels), nearest the even spacing.
+struct SheetEdges {
+  std::vector<double> at;
+  std::ptrdiff_t crossing = 0;  // pieces split by the edges between sheets
+};
+SheetEdges edges_between(const std::vector<std::pair<double, double>>& spans, double from,
+                         double to, double length) {
+  const double e = 1e-6;
+  const auto count =
+      std::max<size_t>(1, static_cast<size_t>(std::ceil((to - from) / length - 1e-9)));
+  std::vector<double> lows, highs;
+  for (const auto& [lo, hi] : spans) lows.push_back(lo), highs.push_back(hi);
+  std::sort(lows.begin(), lows.end());
+  std::sort(highs.begin(), highs.end());
+  auto crossing = [&](double c) {  // pieces that start before c and end after it
+    return (std::lower_bound(lows.begin(), lows.end(), c - e) - lows.begin()) -
+           (std::upper_bound(highs.begin(), highs.end(), c + e) - highs.begin());
+  };
+  std::vector<double> edges{from};
+  std::ptrdiff_t split = 0;
+  for (size_t i = 1; i < count; ++i) {
+    const double even = from + (to - from) * static_cast<double>(i) / static_cast<double>(count);
+    const double lo = to - static_cast<double>(count - i) * length;  // the rest must still fit
+    const double hi = edges.back() + length;
+    double best = std::clamp(even, lo, hi);
+    auto best_count = crossing(best);
+    for (auto it = std::lower_bound(highs.begin(), highs.end(), lo); it != highs.end() && *it <= hi;
+         ++it) {
+      if (it != highs.begin() && *it == *(it - 1)) continue;
+      const auto n = crossing(*it);
+      if (n < best_count || (n == best_count && std::fabs(*it - even) < std::fabs(best - even)))
+        best = *it, best_count = n;
+    }
+    edges.push_back(best);
+    split += best_count;
+  }
+  edges.push_back(to);
+  return {edges, split};
+}
+
+// The edges along one axis: with the full band of paper around the layout, or a narrower one
+// where that lets the sheets meet at joints.
+std::vector<double> sheet_edges(const std::vector<std::pair<double, double>>& spans, double size,
+                                double length, double scale) {
+  SheetEdges wide = edges_between(spans, -kBandMm * scale, size + kBandMm * scale, length);
+  if (wide.crossing == 0) return wide.at;
+  SheetEdges narrow =
+      edges_between(spans, -kNarrowBandMm * scale, size + kNarrowBandMm * scale, length);
+  return narrow.crossing < wide.crossing && narrow.at.size() <= wide.at.size() ? narrow.at
+                                                                               : wide.at;
+}
+
+size_t interval_of(const std::vector<double>& edges, double v) {
+  const auto it = std::upper_bound(edges.begin() + 1, edges.end() - 1, v);
+  return static_cast<size_t>(it - (edges.begin() + 1));
+}
+
 // Places every label at 1 : scale; false when some label found no place.
 bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
            InstallerPlan& plan) {
   plan.scale = scale;
-  const double band = kBandMm * scale;
-  const double win_w = plan.viewport[0] * scale, win_h = plan.viewport[1] * scale;
-  const double x0 = -band, y0 = -band;
-  plan.grid_columns =
-      std::max<size_t>(1, static_cast<size_t>(std::ceil((layout.width + 2 * band) / win_w - 1e-9)));
-  plan.grid_rows = std::max<size_t>(
-      1, static_cast<size_t>(std::ceil((layout.height + 2 * band) / win_h - 1e-9)));
+  std::vector<std::pair<double, double>> across, up;
+  for (const InstallerPiece& p : pieces)
+    across.emplace_back(p.bounds.x, p.bounds.right()), up.emplace_back(p.bounds.y, p.bounds.top());
+  const std::vector<double> xs = sheet_edges(across, layout.width, plan.viewport[0] * scale, scale);
+  const std::vector<double> ys = sheet_edges(up, layout.height, plan.viewport[1] * scale, scale);
+  plan.grid_columns = xs.size() - 1;
+  plan.grid_rows = ys.size() - 1;
   plan.sheets.clear();
   for (size_t r = 0; r < plan.grid_rows; ++r)
     for (size_t c = 0; c < plan.grid_columns; ++c)
-      plan.sheets.push_back({r,
-                             c,
-                             {x0 + static_cast<double>(c) * win_w,
-                              y0 + static_cast<double>(r) * win_h, win_w, win_h}});
+      plan.sheets.push_back({r, c, {xs[c], ys[r], xs[c + 1] - xs[c], ys[r + 1] - ys[r]}});
   auto sheet_of = [&](double x, double y) {
-    const auto c = std::clamp<int64_t>(static_cast<int64_t>(std::floor((x - x0) / win_w)), 0,
-                                       static_cast<int64_t>(plan.grid_columns) - 1);
-    const auto r = std::clamp<int64_t>(static_cast<int64_t>(std::floor((y - y0) / win_h)), 0,
-                                       static_cast<int64_t>(plan.grid_rows) - 1);
-    return static_cast<size_t>(r) * plan.grid_columns + static_cast<size_t>(c);
+    return interval_of(ys, y) * plan.grid_columns + interval_of(xs, x);
   };
 
   const double lh = label_height_mm(plan.text_mm) * scale;
