@@ -204,7 +204,8 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
     else
       grid[i] = static_cast<int>(e.value);
   }
-  const std::vector<GridRect> merged = merge_runs(grid, layout.rows, layout.columns);
+  const bool bonded = layout.spec.bond > 0;  // courses do not line up
+  const std::vector<GridRect> merged = merge_runs(grid, layout.rows, layout.columns, !bonded);
   size_t next = 0;
   for (const LegendEntry& entry : layout.legend) {
     const std::string fill = layout.combine == Combine::keep
@@ -229,9 +230,18 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
   // Joints over the merged fills: one path of strips.
   if (layout.joint > 0) {
     std::string d;
-    for (int64_t c = 1; c < layout.columns; ++c) {
-      const double x = layout.cell_edge_x(layout.view.origin[0] + c) - layout.joint / 2;
-      d += rect_path(s, Rect{x, 0, layout.joint, H});
+    if (bonded) {  // each course's own: after every element but the last along the course
+      for (const Element& e : layout.elements) {
+        const bool right = from_right(layout.origin);
+        const double x = right ? e.nominal.x - layout.joint : e.nominal.right();
+        const Rect joint = clip(Rect{x, e.nominal.y, layout.joint, e.nominal.h}, W, H);
+        if (joint.area() > 0) d += rect_path(s, joint);
+      }
+    } else {
+      for (int64_t c = 1; c < layout.columns; ++c) {
+        const double x = layout.cell_edge_x(layout.view.origin[0] + c) - layout.joint / 2;
+        d += rect_path(s, Rect{x, 0, layout.joint, H});
+      }
     }
     for (int64_t r = 1; r < layout.rows; ++r) {
       const double y = layout.cell_edge_y(layout.view.origin[1] + r) - layout.joint / 2;

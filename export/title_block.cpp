@@ -9,13 +9,19 @@ std::string mm(double v) { return drawing_mm(v); }
 
 std::string sheet_line(const Layout& layout) {
   const LayoutSpec& spec = layout.spec;
-  if (layout.kind != LayoutKind::perforation)
-    return "origin " +
-           std::string(layout.origin == Corner::bottom_left    ? "bottom-left"
-                       : layout.origin == Corner::bottom_right ? "bottom-right"
-                       : layout.origin == Corner::top_left     ? "top-left"
-                                                               : "top-right") +
-           "; element IDs count rows and columns from it";
+  if (layout.kind != LayoutKind::perforation) {
+    const std::string corner = layout.origin == Corner::bottom_left    ? "bottom-left"
+                               : layout.origin == Corner::bottom_right ? "bottom-right"
+                               : layout.origin == Corner::top_left     ? "top-left"
+                                                                       : "top-right";
+    const std::string bond = spec.bond == 0.5    ? "; half bond"
+                             : spec.bond == 0.25 ? "; quarter bond"
+                             : spec.bond > 0     ? "; third bond"
+                                                 : "";
+    return (spec.centred ? "grid centred, laid from the " + corner + " corner"
+                         : "origin " + corner) +
+           bond + "; element IDs count rows and columns from it";
+  }
   return fmt::format(
       "sheet {} mm thick, {} openings, open area {:.2f} %, {} rule violations{}",
       mm(spec.perforation().thickness), layout.elements.size(), 100 * layout.open_area,

@@ -108,7 +108,9 @@ TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
       if (overlaps(l.box, r) && ++covered <= 5)
         ADD_FAILURE() << l.text << " lies on a caption or the start corner";
   EXPECT_EQ(covered, 0u);
-  if (plan.grid_columns * plan.grid_rows > 1) EXPECT_FALSE(plan.captions.empty());
+  if (plan.grid_columns * plan.grid_rows > 1) {
+    EXPECT_FALSE(plan.captions.empty());
+  }
   // Sheets meet at joints: no match line runs through a piece, so each holds its own label.
   size_t split = 0;
   for (const InstallerPiece& p : pieces)

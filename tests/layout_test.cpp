@@ -157,53 +157,119 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
   const Design d = design(4, 2, {{"3/4", "1/2", "2/3"}});
   for (Corner corner :
        {Corner::bottom_left, Corner::bottom_right, Corner::top_left, Corner::top_right}) {
-    for (LayoutKind kind : {LayoutKind::paving, LayoutKind::facade}) {
-      const std::array<double, 2> shift =
-          kind == LayoutKind::facade ? std::array<double, 2>{130, 80} : std::array<double, 2>{0, 0};
+    for (LayoutKind kind : {LayoutKind::paving, LayoutKind::facade})
+      for (double bond : {0.0, 0.5, 1.0 / 3, 0.25}) {
+        const std::array<double, 2> shift = kind == LayoutKind::facade
+                                                ? std::array<double, 2>{130, 80}
+                                                : std::array<double, 2>{0, 0};
+        LayoutSpec spec;
+        spec.set_kind(kind);
+        spec.origin = corner;
+        spec.shift = shift;
+        spec.bond = bond;
+        spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
+        spec.size = std::array<double, 2>{18000, 15600};
+        if (kind == LayoutKind::facade)
+          spec.facade().openings = {{1200, 0, 7200, 2700},
+                                    {1500, 3900, 1200, 1500},
+                                    {16200, 12900, 1200, 1500},
+                                    {17500, 14000, 500, 1600}};
+        Design sized = d;
+        const auto cells = elements_to_cover(spec);
+        sized.field.size = {cells[0], cells[1], 1};
+        const CurdField f = curdle(sized, 9, sized.field);
+        const Layout layout = make_layout(sized, f, sized.field, spec);
+        double elements = 0, openings = 0;
+        for (const Element& e : layout.elements) {
+          elements += e.area();
+          for (const Rect& r : e.shape) {
+            EXPECT_NEAR(intersection(r, e.nominal), r.area(), 1e-6) << e.id;  // inside its module
+            EXPECT_NEAR(intersection(r, Rect{0, 0, 18000, 15600}), r.area(), 1e-6) << e.id;
+            for (const Rect& o : layout.openings) EXPECT_NEAR(intersection(r, o), 0, 1e-6) << e.id;
+          }
+          EXPECT_EQ(e.cut, e.area() < 600 * 300 - 1e-6);
+        }
+        for (const Rect& o : layout.openings) openings += o.area();
+        EXPECT_NEAR(elements + joint_area(layout) + openings, 18000.0 * 15600.0, 1e-3)
+            << static_cast<int>(corner) << " " << static_cast<int>(kind) << " bond " << bond;
+        EXPECT_EQ(layout.elements.size() + layout.omitted,
+                  static_cast<size_t>(cells[0] * cells[1]));
+        // The element IDs follow the laying order from the origin corner: row 0, column 0 sits
+        // there.
+        const Element& first = layout.elements.front();
+        EXPECT_EQ(first.row, 0);
+        const bool right = corner == Corner::bottom_right || corner == Corner::top_right;
+        const bool top = corner == Corner::top_left || corner == Corner::top_right;
+        if (first.column == 0) {  // the grid starts the shift back from the corner
+          EXPECT_NEAR(right ? 18000 - first.nominal.right() : first.nominal.x, -shift[0], 1e-6);
+          EXPECT_NEAR(top ? 15600 - first.nominal.top() : first.nominal.y, -shift[1], 1e-6);
+        }
+        SvgSummary svg = parse_svg(svg_of(layout));
+        uint64_t drawn = 0;
+        for (auto& [v, n] : svg.counts) drawn += n;
+        EXPECT_EQ(drawn, layout.elements.size());
+      }
+  }
+}
+
+// Each course is moved along by the bond's share of the pitch from the course below, counted
+// from the origin corner; every element still stands for its own cell.
+TEST(Layout, CoursesAreOffsetByTheBond) {
+  const Design d = design(4, 2, {{"3/4", "1/2", "2/3"}});
+  for (Corner corner : {Corner::bottom_left, Corner::top_right})
+    for (double bond : {0.5, 1.0 / 3, 0.25}) {
       LayoutSpec spec;
-      spec.set_kind(kind);
+      spec.set_kind(LayoutKind::facade);
       spec.origin = corner;
-      spec.shift = shift;
-      spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
-      spec.size = std::array<double, 2>{18000, 15600};
-      if (kind == LayoutKind::facade)
-        spec.facade().openings = {{1200, 0, 7200, 2700},
-                                  {1500, 3900, 1200, 1500},
-                                  {16200, 12900, 1200, 1500},
-                                  {17500, 14000, 500, 1600}};
+      spec.bond = bond;
+      spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
+      spec.size = std::array<double, 2>{5000, 3000};
       Design sized = d;
       const auto cells = elements_to_cover(spec);
       sized.field.size = {cells[0], cells[1], 1};
-      const CurdField f = curdle(sized, 9, sized.field);
-      const Layout layout = make_layout(sized, f, sized.field, spec);
-      double elements = 0, openings = 0;
+      const Layout layout = make_layout(sized, curdle(sized, 3, sized.field), sized.field, spec);
+      const bool right = from_right(corner);
+      std::map<int64_t, double> start;  // per course: where its column 1 begins, from the corner
+      std::set<std::pair<int64_t, int64_t>> cells_used;
       for (const Element& e : layout.elements) {
-        elements += e.area();
-        for (const Rect& r : e.shape) {
-          EXPECT_NEAR(intersection(r, e.nominal), r.area(), 1e-6) << e.id;  // inside its module
-          EXPECT_NEAR(intersection(r, Rect{0, 0, 18000, 15600}), r.area(), 1e-6) << e.id;
-          for (const Rect& o : layout.openings) EXPECT_NEAR(intersection(r, o), 0, 1e-6) << e.id;
-        }
-        EXPECT_EQ(e.cut, e.area() < 600 * 300 - 1e-6);
+        EXPECT_TRUE(cells_used.insert({e.cell_x, e.cell_y}).second) << e.id;
+        if (e.column == 1) start[e.row] = right ? 5000 - e.nominal.right() : e.nominal.x;
       }
-      for (const Rect& o : layout.openings) openings += o.area();
-      EXPECT_NEAR(elements + joint_area(layout) + openings, 18000.0 * 15600.0, 1e-3)
-          << static_cast<int>(corner) << " " << static_cast<int>(kind);
-      EXPECT_EQ(layout.elements.size() + layout.omitted, static_cast<size_t>(cells[0] * cells[1]));
-      // The element IDs follow the laying order from the origin corner: row 0, column 0 sits there.
-      const Element& first = layout.elements.front();
-      EXPECT_EQ(first.row, 0);
-      const bool right = corner == Corner::bottom_right || corner == Corner::top_right;
-      const bool top = corner == Corner::top_left || corner == Corner::top_right;
-      if (first.column == 0) {  // the grid starts the shift back from the corner
-        EXPECT_NEAR(right ? 18000 - first.nominal.right() : first.nominal.x, -shift[0], 1e-6);
-        EXPECT_NEAR(top ? 15600 - first.nominal.top() : first.nominal.y, -shift[1], 1e-6);
+      ASSERT_GT(start.size(), 10u);
+      for (const auto& [row, at] : start) {
+        if (!start.count(row + 1)) continue;
+        const double moved = at - start.at(row + 1);  // the course above starts this much earlier
+        const double share = moved / 225 - std::floor(moved / 225 + 1e-9);  // of the pitch
+        EXPECT_NEAR(share, bond, 1e-9) << "bond " << bond << " row " << row;
       }
-      SvgSummary svg = parse_svg(svg_of(layout));
-      uint64_t drawn = 0;
-      for (auto& [v, n] : svg.counts) drawn += n;
-      EXPECT_EQ(drawn, layout.elements.size());
     }
+}
+
+// layout.origin = "centre": the cut pieces at opposite edges are equal.
+TEST(Layout, ACentredGridCutsOppositeEdgesEqually) {
+  const Design d = design(4, 2, {{"3/4", "1/2", "2/3"}});
+  for (const auto& [w, h] : {std::pair{7000.0, 4330.0}, {12000.0, 8000.0}, {6000.0, 3010.0}}) {
+    LayoutSpec spec;
+    spec.set_kind(LayoutKind::paving);
+    spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
+    spec.size = std::array<double, 2>{w, h};
+    spec.centred = true;
+    spec.shift = {centring_shift(w, 600, 10), centring_shift(h, 300, 10)};
+    Design sized = d;
+    const auto cells = elements_to_cover(spec);
+    sized.field.size = {cells[0], cells[1], 1};
+    const Layout layout = make_layout(sized, curdle(sized, 3, sized.field), sized.field, spec);
+    double left = 1e9, right = 1e9, bottom = 1e9, top = 1e9;
+    for (const Element& e : layout.elements) {
+      const Rect& r = e.shape.front();
+      if (r.x < 1e-6) left = std::min(left, r.w);
+      if (r.right() > w - 1e-6) right = std::min(right, r.w);
+      if (r.y < 1e-6) bottom = std::min(bottom, r.h);
+      if (r.top() > h - 1e-6) top = std::min(top, r.h);
+    }
+    EXPECT_NEAR(left, right, 1e-6) << w;
+    EXPECT_NEAR(bottom, top, 1e-6) << h;
+    EXPECT_GE(left, 300 - 1e-6) << "centred, no end piece is less than half an element";
   }
 }
 

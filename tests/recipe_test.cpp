@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "curdle/error.h"
+#include "layout/builder.h"
 
 namespace curdle {
 namespace {
@@ -115,6 +116,40 @@ TEST(Recipe, Windows) {
   EXPECT_THROW(parse_window("60,0,10,10", r.design), InputError);
   EXPECT_THROW(parse_window("1,2,3", r.design), InputError);
   EXPECT_THROW(parse_window("a,b,c,d", r.design), InputError);
+}
+
+}  // namespace curdle
+
+namespace curdle {
+
+// layout.bond and layout.origin = "centre": read as written, and refused clearly where they
+// cannot hold.
+TEST(Recipe, BondAndCentredOrigin) {
+  const std::string wall = std::string(kGood).substr(0, std::string(kGood).find("[field]")) +
+                           R"([[curds]]
+probabilities = ["1/2", "1/2"]
+[layout]
+kind = "facade"
+panel = [215, 65]
+joint = 10
+wall = [4000, 2000]
+)";
+  Recipe r = parse_recipe(wall + "bond = \"half\"\norigin = \"centre\"\n", "r.toml");
+  EXPECT_DOUBLE_EQ(r.layout->bond, 0.5);
+  EXPECT_TRUE(r.layout->centred);
+  EXPECT_NEAR(r.layout->shift[0], centring_shift(4000, 215, 10), 1e-9);
+  EXPECT_GT(r.layout->shift[0], 0);
+  EXPECT_DOUBLE_EQ(parse_recipe(wall + "bond = \"third\"\n", "r.toml").layout->bond, 1.0 / 3);
+  EXPECT_DOUBLE_EQ(parse_recipe(wall + "bond = \"quarter\"\n", "r.toml").layout->bond, 0.25);
+  std::string e = error_of(wall + "bond = \"flemish\"\n");
+  EXPECT_NE(e.find("layout.bond"), std::string::npos) << e;
+  EXPECT_NE(e.find("\"stack\""), std::string::npos) << e;
+  e = error_of(wall + "origin = \"centre\"\nshift = [10, 10]\n");
+  EXPECT_NE(e.find("layout.shift"), std::string::npos) << e;
+  e = error_of(wall + "bond = \"half\"\ncombine = \"keep\"\n");
+  EXPECT_NE(e.find("mix"), std::string::npos) << e;
+  e = error_of(wall + "origin = \"middle\"\n");
+  EXPECT_NE(e.find("\"centre\""), std::string::npos) << e;
 }
 
 }  // namespace curdle

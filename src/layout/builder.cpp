@@ -59,11 +59,41 @@ const char* element_type(LayoutKind kind) {
   return "element";
 }
 
+double course_offset(const LayoutSpec& spec, int64_t row) {
+  if (spec.bond <= 0) return 0;
+  const double share = static_cast<double>(row) * spec.bond;
+  return (share - std::floor(share + 1e-9)) * (spec.module_w + spec.joint);
+}
+
+namespace {
+
+// The most any of `rows` courses is moved back by the bond.
+double largest_offset(const LayoutSpec& spec, int64_t rows) {
+  double most = 0;
+  for (int64_t r = 0; r < std::min<int64_t>(rows, 8); ++r)
+    most = std::max(most, course_offset(spec, r));
+  return most;
+}
+
+}  // namespace
+
+double centring_shift(double extent, double module, double joint) {
+  const double pitch = module + joint;
+  const double whole = std::ceil((extent + joint) / pitch - 1e-9) * pitch - joint;
+  const double shift = (whole - extent) / 2;
+  return shift < 1e-6 ? 0 : shift;
+}
+
 std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec) {
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
-  // Element i starts at i * pitch - shift: every element that starts inside the floor is laid.
-  return {static_cast<int64_t>(std::ceil((spec.size->at(0) + spec.shift[0]) / pitch_w - 1e-9)),
-          static_cast<int64_t>(std::ceil((spec.size->at(1) + spec.shift[1]) / pitch_h - 1e-9))};
+  // Element i starts at i * pitch - shift (less the course's bond offset): every element that
+  // starts inside the floor is laid.
+  const auto rows =
+      static_cast<int64_t>(std::ceil((spec.size->at(1) + spec.shift[1]) / pitch_h - 1e-9));
+  const double offset = largest_offset(spec, rows);
+  return {
+      static_cast<int64_t>(std::ceil((spec.size->at(0) + spec.shift[0] + offset) / pitch_w - 1e-9)),
+      rows};
 }
 
 std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spec) {
@@ -123,7 +153,8 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
     layout.width = (*spec.size)[0];
     layout.height = (*spec.size)[1];
   } else {
-    layout.width = layout.columns * pitch_w - spec.joint - spec.shift[0];
+    layout.width =
+        layout.columns * pitch_w - spec.joint - spec.shift[0] - largest_offset(spec, layout.rows);
     layout.height = layout.rows * pitch_h - spec.joint - spec.shift[1];
   }
   for (const Rect& o : spec.openings()) {
@@ -141,7 +172,8 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
     for (int64_t column = 0; column < layout.columns; ++column) {
       const int64_t i = right ? layout.columns - 1 - column : column;
       const int64_t j = top ? layout.rows - 1 - row : row;
-      const double along = column * pitch_w - spec.shift[0], up = row * pitch_h - spec.shift[1];
+      const double along = column * pitch_w - spec.shift[0] - course_offset(spec, row);
+      const double up = row * pitch_h - spec.shift[1];
       Element e;
       e.row = row;
       e.column = column;
@@ -212,12 +244,50 @@ double Layout::cell_edge_y(int64_t cell_y) const {
   return std::max(0.0, edge(cell_y - view.origin[1], rows, module_h, joint, shift[1], height, top));
 }
 
+namespace {
+
+// The part of r laid: on the surface, off its openings.
+double laid_area(const Layout& layout, const Rect& r) {
+  double area = 0;
+  const Rect c = clip(r, layout.width, layout.height);
+  if (c.area() > 0)
+    for (const Rect& piece : subtract(c, layout.openings)) area += piece.area();
+  return area;
+}
+
+// Under a bond the vertical joints move from course to course: each course's own, as high as
+// the course, beside the horizontal joints between courses.
+double bonded_joint_area(const Layout& layout) {
+  const bool right = from_right(layout.origin), top = from_top(layout.origin);
+  const double pitch_w = layout.module_w + layout.joint, pitch_h = layout.module_h + layout.joint;
+  double area = 0;
+  for (int64_t r = 0; r < layout.rows; ++r) {
+    const double up = r * pitch_h - layout.shift[1];
+    const double y = top ? layout.height - up - layout.module_h : up;
+    for (int64_t c = 0; c < layout.columns; ++c) {
+      const double along =
+          c * pitch_w + layout.module_w - layout.shift[0] - course_offset(layout.spec, r);
+      area += laid_area(layout, Rect{right ? layout.width - along - layout.joint : along, y,
+                                     layout.joint, layout.module_h});
+    }
+    if (r + 1 < layout.rows) {
+      const double joint_up = up + layout.module_h;
+      area += laid_area(layout, Rect{0, top ? layout.height - joint_up - layout.joint : joint_up,
+                                     layout.width, layout.joint});
+    }
+  }
+  return area;
+}
+
+}  // namespace
+
 double joint_area(const Layout& layout) {
   if (layout.joint <= 0) return 0;
   const bool right = from_right(layout.origin);
   const bool top = from_top(layout.origin);
   // Joints follow each module, counted from the origin corner.
   std::vector<Rect> vertical, horizontal;
+  if (layout.spec.bond > 0) return bonded_joint_area(layout);
   for (int64_t c = 0; c + 1 < layout.columns; ++c) {
     const double along = c * (layout.module_w + layout.joint) + layout.module_w - layout.shift[0];
     vertical.push_back(

@@ -13,8 +13,16 @@ namespace curdle {
 // What one element of a layout of this kind is called: "paving tile", "panel", "bay".
 const char* element_type(LayoutKind kind);
 
-// Elements along x and y that cover the spec's floor or wall: those that start inside it.
+// Elements along x and y that cover the spec's floor or wall: those that start inside it, in
+// every course of the bond.
 std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec);
+
+// How far course `row` (counted from the origin corner) is moved back along x by the bond, mm.
+double course_offset(const LayoutSpec& spec, int64_t row);
+
+// The shift that centres the grid on a surface of `extent` mm along one axis: the cut pieces
+// at both ends equal (0 when whole elements fill it).
+double centring_shift(double extent, double module, double joint);
 
 // One legend entry per value: label, colour (the spec's, or the blend of the curds'), and in
 // keep mode the colours shown side by side. Counts are left at zero.

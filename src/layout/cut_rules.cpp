@@ -161,7 +161,13 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec) {
   if (!slivers) return;
   std::string note = fmt::format("{} cut {}{} narrower than {} (see the rule violations)", slivers,
                                  layout.element_type, slivers == 1 ? " is" : "s are", rule);
-  const ShiftAdvice x = best_shift(layout, spec, 0), y = best_shift(layout, spec, 1);
+  // No shift to advise when the grid is centred by choice; along x, none under a bond, whose
+  // courses are cut at the ends by design.
+  ShiftAdvice x{spec.shift[0]}, y{spec.shift[1]};  // no change
+  if (!spec.centred) {
+    if (spec.bond <= 0) x = best_shift(layout, spec, 0);
+    y = best_shift(layout, spec, 1);
+  }
   if (x.slivers + y.slivers < x.now + y.now) {
     note += fmt::format(
         "; layout.shift = [{:g}, {:g}] leaves {} instead of {}, counted along "

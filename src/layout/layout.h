@@ -142,6 +142,14 @@ struct LayoutSpec {
   // column and row are cut to module - shift (tile, paving, facade): how slivers are avoided.
   std::array<double, 2> shift{0, 0};
   double min_cut = 0;  // narrowest cut piece allowed, mm; 0: a quarter of the element each way
+  // The bond: each course (row) shifted along x by this share of the element pitch from the
+  // course below, counted from the origin corner: 0 stack, 1/2 stretcher or running bond, 1/3,
+  // 1/4. Every element still stands for one cell; courses are cut at the ends.
+  double bond = 0;
+  // layout.origin = "centre": the grid centred on the surface so that the cut pieces at
+  // opposite edges are equal (the shift is worked out from the size); laying still starts at
+  // the bottom-left.
+  bool centred = false;
   std::optional<std::array<double, 2>> size;      // floor or wall, mm; default: the field's cells
   Corner origin = Corner::bottom_left;            // where cell (0, 0) and the laying order start
   std::vector<std::optional<Rgb>> value_colours;  // per value, overriding the blend (mix)

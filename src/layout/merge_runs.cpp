@@ -6,7 +6,8 @@
 
 namespace curdle {
 
-std::vector<GridRect> merge_runs(const std::vector<int>& grid, int64_t rows, int64_t columns) {
+std::vector<GridRect> merge_runs(const std::vector<int>& grid, int64_t rows, int64_t columns,
+                                 bool across_rows) {
   std::vector<GridRect> done;
   std::map<std::pair<int64_t, int64_t>, GridRect> open;  // by (column0, column1)
   for (int64_t r = 0; r < rows; ++r) {
@@ -17,7 +18,7 @@ std::vector<GridRect> merge_runs(const std::vector<int>& grid, int64_t rows, int
       while (end + 1 < columns && grid[r * columns + end + 1] == v) ++end;
       if (v >= 0) {
         auto it = open.find({c, end});
-        if (it != open.end() && it->second.value == v) {
+        if (across_rows && it != open.end() && it->second.value == v) {
           GridRect g = it->second;
           g.row1 = r;
           next[{c, end}] = g;

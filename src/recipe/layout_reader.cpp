@@ -25,15 +25,15 @@ struct KindKeys {
 
 const std::vector<KindKeys>& kinds() {
   static const std::vector<KindKeys> table = {
-      {"tile", LayoutKind::tile, "tile", "size", false, true, {"min_cut", "shift"}},
-      {"paving", LayoutKind::paving, "tile", "floor", true, true, {"min_cut", "shift"}},
+      {"tile", LayoutKind::tile, "tile", "size", false, true, {"min_cut", "shift", "bond"}},
+      {"paving", LayoutKind::paving, "tile", "floor", true, true, {"min_cut", "shift", "bond"}},
       {"facade",
        LayoutKind::facade,
        "panel",
        "wall",
        true,
        true,
-       {"openings", "mask", "min_cut", "shift"}},
+       {"openings", "mask", "min_cut", "shift", "bond"}},
       {"perforation",
        LayoutKind::perforation,
        "cell",
@@ -80,13 +80,21 @@ void read_materials(TableReader& r, const Design& design, LayoutSpec& spec) {
 const std::vector<std::string> kSurface = {"combine", "origin", "joint_colour", "stage_grid",
                                            "highlight"};
 
-Corner read_corner(TableReader& r) {
+// layout.origin: a corner, or (where the grid can move: tile, paving, facade) "centre".
+Corner read_corner(TableReader& r, bool centre_allowed, LayoutSpec& spec) {
   const auto origin = read_string(r, "origin", "a corner").value_or("bottom-left");
   if (origin == "bottom-left") return Corner::bottom_left;
   if (origin == "bottom-right") return Corner::bottom_right;
   if (origin == "top-left") return Corner::top_left;
   if (origin == "top-right") return Corner::top_right;
-  r.fail("origin", "must be \"bottom-left\", \"bottom-right\", \"top-left\" or \"top-right\"");
+  if ((origin == "centre" || origin == "center") && centre_allowed) {
+    spec.centred = true;
+    return Corner::bottom_left;  // laying starts there; the grid is centred (read_cut_rules)
+  }
+  r.fail("origin", std::string("must be \"bottom-left\", \"bottom-right\", \"top-left\" or "
+                               "\"top-right\"") +
+                       (centre_allowed ? ", or \"centre\" to centre the grid on the surface"
+                                       : " (\"centre\" is for tile, paving and facade layouts)"));
 }
 
 std::optional<Box> read_highlight(TableReader& r) {
@@ -122,7 +130,9 @@ void read_surface(TableReader& r, const KindKeys& k, const Design& design, Layou
                         std::to_string(static_cast<int>(std::min(spec.module_w, spec.module_h))) +
                         " mm)");
   spec.size = read_mm_pair(r, k.size_key, k.size_required);
-  spec.origin = read_corner(r);
+  spec.origin = read_corner(
+      r, k.kind == LayoutKind::tile || k.kind == LayoutKind::paving || k.kind == LayoutKind::facade,
+      spec);
   read_value_colours(r, design, spec);
   if (const auto colour = read_colour(r, "joint_colour")) spec.joint_colour = *colour;
   spec.stage_grid = read_bool(r, "stage_grid", false);
@@ -130,12 +140,41 @@ void read_surface(TableReader& r, const KindKeys& k, const Design& design, Layou
   read_drawing_scale(r, spec);
 }
 
+// layout.bond: how far each course moves along from the one below.
+void read_bond(TableReader& r, LayoutSpec& spec) {
+  const auto bond = read_string(r, "bond", "a bond").value_or("stack");
+  if (bond == "stack")
+    spec.bond = 0;
+  else if (bond == "half" || bond == "stretcher" || bond == "running")
+    spec.bond = 0.5;
+  else if (bond == "third")
+    spec.bond = 1.0 / 3;
+  else if (bond == "quarter")
+    spec.bond = 0.25;
+  else
+    r.fail("bond",
+           "must be \"stack\" (joints in line), \"half\" (stretcher or running bond), "
+           "\"third\" or \"quarter\": the share of an element each course moves along from the "
+           "one below");
+  if (spec.bond > 0 && spec.combine == Combine::keep)
+    r.fail("bond", "needs combine = \"mix\": kept curds are drawn as stripes of a stacked grid");
+}
+
 // layout.min_cut and layout.shift: the narrowest cut piece, and the grid moved to avoid slivers.
 void read_cut_rules(TableReader& r, LayoutSpec& spec) {
+  read_bond(r, spec);
   spec.min_cut = read_mm(r, "min_cut", 0, 0);
   if (spec.min_cut > std::max(spec.module_w, spec.module_h))
     r.fail("min_cut", "must be at most the element's size; e.g. 50 for pieces of at least 50 mm");
   const toml::node* n = r.get("shift");
+  if (spec.centred) {
+    if (n) r.fail("shift", "cannot be given with origin = \"centre\", which works the shift out");
+    if (spec.size)
+      for (int i = 0; i < 2; ++i)
+        spec.shift[static_cast<size_t>(i)] = centring_shift(
+            (*spec.size)[static_cast<size_t>(i)], i ? spec.module_h : spec.module_w, spec.joint);
+    return;
+  }
   if (!n) return;
   const toml::array* a = n->as_array();
   const std::string allowed = fmt::format(
