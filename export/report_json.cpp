@@ -112,6 +112,30 @@ json report_to_json(const Report& report, const Layout& layout) {
     }
     j["layout"]["sheets"] = sheets;
   }
+  if (!layout.zones.empty()) {
+    // Per zone: its area and the elements whose centre it holds, by value (all of its own
+    // value for a value zone); an excluded zone also the pieces cut along it.
+    json zones = json::array();
+    for (const ZoneCount& z : layout.zones) {
+      json by_value = json::array();
+      uint64_t total = 0;
+      for (uint32_t v = 0; v < z.by_value.size(); ++v) {
+        total += z.by_value[v];
+        by_value.push_back({{"value", v},
+                            {"label", v < layout.legend.size() ? layout.legend[v].label : ""},
+                            {"elements", z.by_value[v]}});
+      }
+      json zone = {{"name", z.name},
+                   {"rule", z.rule == ZoneRule::exclude ? "exclude" : "value"},
+                   {"area_m2", z.area / 1e6},
+                   {"elements", total},
+                   {"by_value", by_value}};
+      if (z.rule == ZoneRule::value) zone["value"] = z.value;
+      if (z.rule == ZoneRule::exclude) zone["cut_along_it"] = z.cut;
+      zones.push_back(zone);
+    }
+    j["layout"]["zones"] = zones;
+  }
   return j;
 }
 

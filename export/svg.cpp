@@ -311,6 +311,30 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
         w.origin[0], w.origin[1], w.size[0], w.size[1]);
   }
 
+  // Zones: each outlined and named, value zones dashed in their value's colour.
+  if (!spec.zones.empty()) {
+    out << fmt::format("<g id=\"zones\" class=\"overlay\" fill=\"none\" font-size=\"{}\">\n",
+                       mm(unit * 0.8));
+    for (size_t i = 0; i < spec.zones.size(); ++i) {
+      const Zone& z = spec.zones[i];
+      std::string d;
+      for (size_t k = 0; k < z.polygon.size(); ++k)
+        d += fmt::format("{}{} {}", k ? "L" : "M", mm(s.x(z.polygon[k][0])),
+                         mm(s.y(z.polygon[k][1])));
+      const bool value = z.rule == ZoneRule::value;
+      const std::string ink = value ? hex_colour(layout.legend[z.value].colour) : "#44515c";
+      out << fmt::format(
+          "<g class=\"zone\" data-name=\"{}\" data-rule=\"{}\"><path d=\"{}z\" stroke=\"{}\" "
+          "stroke-width=\"{}\"{}/><text x=\"{}\" y=\"{}\" fill=\"#222\" stroke=\"#fff\" "
+          "stroke-width=\"{}\" paint-order=\"stroke\">{}</text></g>\n",
+          escape(z.name), value ? "value" : "exclude", d, value ? "#222" : ink, mm(unit * 0.12),
+          value ? fmt::format(" stroke-dasharray=\"{} {}\"", mm(unit * 0.6), mm(unit * 0.4)) : "",
+          mm(s.x(z.polygon[0][0]) + unit * 0.4), mm(s.y(z.polygon[0][1]) - unit * 0.4),
+          mm(unit * 0.2), escape(value ? fmt::format("{} (value {})", z.name, z.value) : z.name));
+    }
+    out << "</g>\n";
+  }
+
   // Legend and title block, under the drawing.
   const double top = margin * 1.5 + H;
   out << fmt::format("<g id=\"legend\" font-size=\"{}\" fill=\"#222\">\n", mm(unit));

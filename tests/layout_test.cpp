@@ -16,6 +16,8 @@
 #include "export/svg.h"
 #include "layout/builder.h"
 #include "layout/perforation.h"
+#include "layout/piece.h"
+#include "layout/zone.h"
 #include "test_support.h"
 
 namespace curdle {
@@ -609,6 +611,72 @@ TEST(Blocks, PlanAndElevationShowTheFirstBlockSeen) {
   SvgSummary svg = parse_svg(svg_of(layout));
   for (uint32_t v = 1; v < 4; ++v)
     EXPECT_EQ(svg.counts[v], 0u);  // views are drawings, not elements
+}
+
+}  // namespace curdle
+
+namespace curdle {
+
+// Zones: no piece lies in an excluded zone and the areas still add up to the surface; every
+// element whose laid centre a value zone holds takes its value, and the counts say so.
+TEST(Layout, ZonesExcludeOrSetTheirValue) {
+  const Design d = design(2, 2, {{"3/4", "3/4", "2/3", "2/3"}, {"1/2", "3/4", "3/4", "2/3"}});
+  LayoutSpec spec;
+  spec.set_kind(LayoutKind::paving);
+  spec.module_w = 600, spec.module_h = 300, spec.joint = 5;
+  spec.size = std::array<double, 2>{12000, 8000};
+  spec.bond = 0.5;
+  const Polygon planter = rect_polygon(Rect{7000, 3000, 2000, 3000});
+  const Polygon plinth = {{1000, 5000}, {4000, 5000}, {4000, 6000},
+                          {2000, 6000}, {2000, 7000}, {1000, 7000}};
+  const Polygon band = rect_polygon(Rect{0, 0, 12000, 900});
+  const Polygon corner = {{9500, 6500}, {11500, 6500}, {11500, 7800}};
+  spec.zones = {{"planter", ZoneRule::exclude, 0, planter, *as_rectangles(planter)},
+                {"plinth", ZoneRule::exclude, 0, plinth, *as_rectangles(plinth)},
+                {"entrance", ZoneRule::value, 3, band, {}},
+                {"corner", ZoneRule::value, 2, corner, {}}};
+  Design sized = d;
+  const auto cells = elements_to_cover(spec);
+  sized.field.size = {cells[0], cells[1], 1};
+  const Layout layout = make_layout(sized, curdle(sized, 11, sized.field), sized.field, spec);
+  double elements = 0, openings = 0;
+  std::map<std::string, std::vector<uint64_t>> held;
+  for (const auto& z : spec.zones) held[z.name].assign(4, 0);
+  for (const Element& e : layout.elements) {
+    elements += e.area();
+    for (const Rect& r : e.shape)
+      for (const auto& z : spec.zones)
+        for (const Rect& x : z.rects) EXPECT_NEAR(intersection(r, x), 0, 1e-6) << e.id << z.name;
+    const Rect b = laid_bounds(e);
+    const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
+    if (contains(band, cx, cy)) EXPECT_EQ(e.value, 3u) << e.id;
+    if (contains(corner, cx, cy) && !contains(band, cx, cy)) EXPECT_EQ(e.value, 2u) << e.id;
+    for (const auto& z : spec.zones)
+      if (contains(z.polygon, cx, cy)) ++held[z.name][e.value];
+  }
+  for (const Rect& o : layout.openings) openings += o.area();
+  EXPECT_NEAR(openings, 6e6 + 4e6, 1e-3);
+  EXPECT_NEAR(elements + joint_area(layout) + openings, 12000.0 * 8000.0, 1e-3);
+  ASSERT_EQ(layout.zones.size(), 4u);
+  for (const ZoneCount& z : layout.zones) EXPECT_EQ(z.by_value, held[z.name]) << z.name;
+  EXPECT_GT(layout.zones[2].by_value[3], 30u);  // the band holds two courses' worth
+  EXPECT_NEAR(layout.zones[1].area, 4e6, 1e-6);
+  EXPECT_GT(layout.zones[0].cut, 0u);
+}
+
+// Rectilinear polygons become rectangles that cover exactly their area.
+TEST(Geometry, RectilinearPolygonsBecomeRectangles) {
+  const Polygon l = {{0, 0}, {3000, 0}, {3000, 1000}, {1000, 1000}, {1000, 2500}, {0, 2500}};
+  const auto rects = as_rectangles(l);
+  ASSERT_TRUE(rects);
+  double area = 0;
+  for (const Rect& r : *rects) area += r.area();
+  EXPECT_NEAR(area, polygon_area(l), 1e-9);
+  EXPECT_FALSE(as_rectangles({{0, 0}, {10, 0}, {10, 10}}));
+  EXPECT_TRUE(is_simple(l));
+  EXPECT_FALSE(is_simple({{0, 0}, {10, 10}, {10, 0}, {0, 10}}));  // a bow tie
+  EXPECT_TRUE(contains(l, 500, 2000));
+  EXPECT_FALSE(contains(l, 2000, 2000));
 }
 
 }  // namespace curdle

@@ -152,4 +152,39 @@ wall = [4000, 2000]
   EXPECT_NE(e.find("\"centre\""), std::string::npos) << e;
 }
 
+// [[layout.zones]]: read in millimetres; every way to get one wrong is named.
+TEST(Recipe, Zones) {
+  const std::string floor = std::string(kGood).substr(0, std::string(kGood).find("[field]")) +
+                            R"([[curds]]
+probabilities = ["1/2", "1/2"]
+[layout]
+kind = "paving"
+tile = [600, 300]
+floor = [12000, 8000]
+)";
+  const std::string planter = "[[layout.zones]]\nname = \"planter\"\nrule = \"exclude\"\n";
+  Recipe r = parse_recipe(floor + planter + "rect = [7000, 3000, 2000, 3000]\n" +
+                              "[[layout.zones]]\nname = \"band\"\nrule = \"value\"\nvalue = 1\n"
+                              "polygon = [[0, 0], [12000, 0], [6000, 900]]\n",
+                          "r.toml");
+  ASSERT_EQ(r.layout->zones.size(), 2u);
+  EXPECT_EQ(r.layout->zones[0].rects.size(), 1u);
+  EXPECT_EQ(r.layout->zones[1].rule, ZoneRule::value);
+  EXPECT_EQ(r.layout->zones[1].value, 1u);
+  const std::vector<std::pair<std::string, std::string>> wrong = {
+      {planter + "rect = [7000, 3000, 9000, 3000]\n", "outside the surface"},
+      {planter + "polygon = [[0, 0], [1000, 0], [500, 900]]\n", "sloping edge"},
+      {planter + "polygon = [[0, 0], [1000, 1000], [1000, 0], [0, 1000]]\n", "simple polygon"},
+      {planter + "rect = [0, 0, nan, 10]\n", "layout.zones.0.rect"},
+      {planter, "either rect"},
+      {"[[layout.zones]]\nname = \"x\"\nrule = \"value\"\nvalue = 9\nrect = [0, 0, 10, 10]\n",
+       "layout.zones.0.value"},
+      {"[[layout.zones]]\nname = \"x\"\nrule = \"hide\"\nrect = [0, 0, 10, 10]\n", "\"exclude\""},
+  };
+  for (const auto& [zone, said] : wrong) {
+    const std::string e = error_of(floor + zone);
+    EXPECT_NE(e.find(said), std::string::npos) << zone << "\n" << e;
+  }
+}
+
 }  // namespace curdle

@@ -11,6 +11,7 @@
 #include "layout/park.h"
 #include "layout/perforation.h"
 #include "layout/rhythm.h"
+#include "layout/zone.h"
 
 namespace curdle {
 namespace {
@@ -116,6 +117,39 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
 
 namespace {
 
+// Value zones give their value to the elements whose centre they hold (the first zone listed
+// that holds it decides); every zone counts what it holds, and an excluded zone the pieces cut
+// along it.
+void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
+  for (const Zone& z : spec.zones)
+    layout.zones.push_back(
+        {z.name, z.rule, z.value, polygon_area(z.polygon), std::vector<uint64_t>(values, 0), 0});
+  if (spec.zones.empty()) return;
+  for (Element& e : layout.elements) {
+    // The laid piece's centre: an end piece cut at the edge has its centre on the surface.
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const Rect& r : e.shape)
+      x0 = std::min(x0, r.x), y0 = std::min(y0, r.y), x1 = std::max(x1, r.right()),
+      y1 = std::max(y1, r.top());
+    const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    std::vector<size_t> holding;
+    for (size_t i = 0; i < spec.zones.size(); ++i) {
+      const Zone& z = spec.zones[i];
+      if (z.rule == ZoneRule::exclude && e.cut &&
+          std::any_of(z.rects.begin(), z.rects.end(),
+                      [&](const Rect& r) { return overlaps(r, e.nominal); }))
+        ++layout.zones[i].cut;
+      if (contains(z.polygon, cx, cy)) holding.push_back(i);
+    }
+    for (const size_t i : holding)
+      if (spec.zones[i].rule == ZoneRule::value) {
+        e.value = spec.zones[i].value;
+        break;
+      }
+    for (const size_t i : holding) ++layout.zones[i].by_value[e.value];
+  }
+}
+
 Layout lay_out(const Design& design, const CurdField& field, const Box& view,
                const LayoutSpec& spec) {
   // A fixed floor, wall, sheet or line is laid from the view's corner: the view is the segment
@@ -161,6 +195,12 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
     const Rect c = clip(o, layout.width, layout.height);
     if (c.area() > 0) layout.openings.push_back(c);
   }
+  const size_t facade_openings = layout.openings.size();
+  for (const Zone& z : spec.zones)
+    if (z.rule == ZoneRule::exclude)
+      for (const Rect& r : z.rects)
+        if (const Rect c = clip(r, layout.width, layout.height); c.area() > 0)
+          layout.openings.push_back(c);
 
   const bool right = from_right(spec.origin);
   const bool top = from_top(spec.origin);
@@ -195,7 +235,8 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
       layout.elements.push_back(std::move(e));
     }
   }
-  if (spec.kind() == LayoutKind::facade) report_open_area(layout);
+  apply_zones(layout, spec, size_t{1} << design.curds.size());
+  if (spec.kind() == LayoutKind::facade) report_open_area(layout, facade_openings);
   check_cut_widths(layout, spec);
 
   layout.legend = make_legend(design, spec);

@@ -183,11 +183,13 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec) {
   layout.notes.push_back(note);
 }
 
-void report_open_area(Layout& layout) {
+void report_open_area(Layout& layout, size_t openings) {
   const double wall = layout.width * layout.height;
-  if (wall <= 0 || layout.openings.empty()) return;
+  if (wall <= 0 || openings == 0) return;
+  const std::vector<Rect> windows(layout.openings.begin(),
+                                  layout.openings.begin() + static_cast<std::ptrdiff_t>(openings));
   double solid = 0;
-  for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, layout.openings))
+  for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, windows))
     solid += r.area();
   layout.open_area = (wall - solid) / wall;
   layout.notes.push_back(fmt::format("openings {:.2f} m2, {:.1f} % of the wall",

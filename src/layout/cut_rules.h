@@ -32,7 +32,8 @@ struct ShiftAdvice {
 };
 ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis);
 
-// Facade: the share of the wall its openings take, as layout.open_area and a note.
-void report_open_area(Layout& layout);
+// Facade: the share of the wall its openings (the first `openings` of layout.openings; excluded
+// zones follow them) take, as layout.open_area and a note.
+void report_open_area(Layout& layout, size_t openings);
 
 }  // namespace curdle

@@ -5,6 +5,7 @@
 // Coordinates are millimetres from the layout's origin, x to the right and y up.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -49,6 +50,31 @@ using Ring =
 struct Outline {
   std::vector<Ring> rings;
   double area = 0;
+};
+
+using Polygon = std::vector<std::array<double, 2>>;  // simple, closed implicitly
+
+// A zone of a surface ([[layout.zones]]): a rectangle or simple polygon in millimetres from the
+// surface's bottom-left corner that either keeps elements out (planters, drains, columns:
+// pieces are cut along it as at an opening) or gives its value to every element whose centre
+// it holds (entrance bands, borders). Where zones overlap, the first listed decides.
+enum class ZoneRule { exclude, value };
+struct Zone {
+  std::string name;
+  ZoneRule rule = ZoneRule::exclude;
+  uint32_t value = 0;       // rule value: what its elements take
+  Polygon polygon;          // a rect is kept as its four corners
+  std::vector<Rect> rects;  // exclude: the polygon as rectangles (its edges run along x and y)
+};
+
+// What a zone holds once laid, for the report.
+struct ZoneCount {
+  std::string name;
+  ZoneRule rule = ZoneRule::exclude;
+  uint32_t value = 0;
+  double area = 0;                 // of the zone on the surface, mm²
+  std::vector<uint64_t> by_value;  // elements whose centre it holds, per value
+  uint64_t cut = 0;                // exclude: elements cut along it
 };
 
 // Perforation: the opening each curd makes in its cells.
@@ -142,6 +168,7 @@ struct LayoutSpec {
   // column and row are cut to module - shift (tile, paving, facade): how slivers are avoided.
   std::array<double, 2> shift{0, 0};
   double min_cut = 0;  // narrowest cut piece allowed, mm; 0: a quarter of the element each way
+  std::vector<Zone> zones;  // tile, paving, facade
   // The bond: each course (row) shifted along x by this share of the element pitch from the
   // course below, counted from the origin corner: 0 stack, 1/2 stretcher or running bond, 1/3,
   // 1/4. Every element still stands for one cell; courses are cut at the ends.
@@ -219,7 +246,9 @@ struct Layout {
   double module_w = 0, module_h = 0;
   std::array<double, 2> shift{0, 0};  // the grid moved back from the origin corner, mm
   std::vector<Element> elements;
+  // Every hole in the surface: a façade's openings, then the excluded zones' rectangles.
   std::vector<Rect> openings;
+  std::vector<ZoneCount> zones;     // one per [[layout.zones]], in order
   std::vector<LegendEntry> legend;  // one per value
   uint64_t omitted = 0;             // cells wholly inside openings: no element
   // The open share of the surface (perforation: the openings; facade: its windows and doors),

@@ -11,10 +11,10 @@ namespace curdle {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using Polygon = CGAL::Polygon_2<Kernel>;
+using ExactPolygon = CGAL::Polygon_2<Kernel>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
 
-Ring ring_of(const Polygon& p) {
+Ring ring_of(const ExactPolygon& p) {
   Ring r;
   for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v)
     r.push_back({CGAL::to_double(v->x()), CGAL::to_double(v->y())});
@@ -41,7 +41,7 @@ std::vector<Outline> outlines_of(const CGAL::Polygon_set_2<Kernel>& set);
 std::vector<Outline> union_of_circles(const std::vector<Circle>& circles, double tolerance) {
   CGAL::Polygon_set_2<Kernel> set;
   for (const Circle& c : circles) {
-    Polygon p;
+    ExactPolygon p;
     for (const auto& v : polygonise(c, tolerance)) p.push_back(Kernel::Point_2(v[0], v[1]));
     set.join(p);
   }
@@ -52,7 +52,7 @@ std::vector<Outline> union_of_rects(const std::vector<Rect>& rects) {
   CGAL::Polygon_set_2<Kernel> set;
   for (const Rect& r : rects) {
     if (r.w <= 0 || r.h <= 0) continue;
-    Polygon p;
+    ExactPolygon p;
     p.push_back(Kernel::Point_2(r.x, r.y));
     p.push_back(Kernel::Point_2(r.right(), r.y));
     p.push_back(Kernel::Point_2(r.right(), r.top()));

@@ -25,15 +25,27 @@ struct KindKeys {
 
 const std::vector<KindKeys>& kinds() {
   static const std::vector<KindKeys> table = {
-      {"tile", LayoutKind::tile, "tile", "size", false, true, {"min_cut", "shift", "bond"}},
-      {"paving", LayoutKind::paving, "tile", "floor", true, true, {"min_cut", "shift", "bond"}},
+      {"tile",
+       LayoutKind::tile,
+       "tile",
+       "size",
+       false,
+       true,
+       {"min_cut", "shift", "bond", "zones"}},
+      {"paving",
+       LayoutKind::paving,
+       "tile",
+       "floor",
+       true,
+       true,
+       {"min_cut", "shift", "bond", "zones"}},
       {"facade",
        LayoutKind::facade,
        "panel",
        "wall",
        true,
        true,
-       {"openings", "mask", "min_cut", "shift", "bond"}},
+       {"openings", "mask", "min_cut", "shift", "bond", "zones"}},
       {"perforation",
        LayoutKind::perforation,
        "cell",
@@ -161,8 +173,9 @@ void read_bond(TableReader& r, LayoutSpec& spec) {
 }
 
 // layout.min_cut and layout.shift: the narrowest cut piece, and the grid moved to avoid slivers.
-void read_cut_rules(TableReader& r, LayoutSpec& spec) {
+void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec) {
   read_bond(r, spec);
+  read_zones(r, design, spec);
   spec.min_cut = read_mm(r, "min_cut", 0, 0);
   if (spec.min_cut > std::max(spec.module_w, spec.module_h))
     r.fail("min_cut", "must be at most the element's size; e.g. 50 for pieces of at least 50 mm");
@@ -258,7 +271,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     case LayoutKind::facade:
       read_surface(r, *k, design, spec);
       read_facade(r, spec);
-      read_cut_rules(r, spec);
+      read_cut_rules(r, design, spec);
       break;
     case LayoutKind::perforation:
       read_surface(r, *k, design, spec);
@@ -271,7 +284,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
     case LayoutKind::tile:
     case LayoutKind::paving:
       read_surface(r, *k, design, spec);
-      read_cut_rules(r, spec);
+      read_cut_rules(r, design, spec);
       break;
   }
 

@@ -20,6 +20,8 @@ void read_drawing_scale(TableReader& r, LayoutSpec& spec);
 
 // The kinds' own keys, each in its own file.
 void read_facade(TableReader& r, LayoutSpec& spec);
+// [[layout.zones]], after the surface's size (tile, paving, facade).
+void read_zones(TableReader& r, const Design& design, LayoutSpec& spec);
 void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec);
 void read_park(TableReader& r, const Design& design, LayoutSpec& spec);
 void read_rhythm(TableReader& r, Design& design, LayoutSpec& spec, bool field_given);

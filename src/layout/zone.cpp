@@ -1,0 +1,98 @@
+#include "layout/zone.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace curdle {
+namespace {
+
+constexpr double kEps = 1e-9;
+
+double cross(const std::array<double, 2>& o, const std::array<double, 2>& a,
+             const std::array<double, 2>& b) {
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+bool on_segment(const std::array<double, 2>& p, const std::array<double, 2>& a,
+                const std::array<double, 2>& b) {
+  return std::min(a[0], b[0]) - kEps <= p[0] && p[0] <= std::max(a[0], b[0]) + kEps &&
+         std::min(a[1], b[1]) - kEps <= p[1] && p[1] <= std::max(a[1], b[1]) + kEps;
+}
+
+bool segments_meet(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                   const std::array<double, 2>& c, const std::array<double, 2>& d) {
+  const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
+  if (((d1 > kEps && d2 < -kEps) || (d1 < -kEps && d2 > kEps)) &&
+      ((d3 > kEps && d4 < -kEps) || (d3 < -kEps && d4 > kEps)))
+    return true;
+  return (std::fabs(d1) <= kEps && on_segment(a, c, d)) ||
+         (std::fabs(d2) <= kEps && on_segment(b, c, d)) ||
+         (std::fabs(d3) <= kEps && on_segment(c, a, b)) ||
+         (std::fabs(d4) <= kEps && on_segment(d, a, b));
+}
+
+}  // namespace
+
+Polygon rect_polygon(const Rect& r) {
+  return {{r.x, r.y}, {r.right(), r.y}, {r.right(), r.top()}, {r.x, r.top()}};
+}
+
+bool contains(const Polygon& polygon, double x, double y) {
+  bool in = false;
+  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const auto& a = polygon[i];
+    const auto& b = polygon[j];
+    if ((a[1] > y) != (b[1] > y) && x < (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
+  }
+  return in;
+}
+
+double polygon_area(const Polygon& polygon) {
+  double twice = 0;
+  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+    twice += polygon[j][0] * polygon[i][1] - polygon[i][0] * polygon[j][1];
+  return std::fabs(twice) / 2;
+}
+
+bool is_simple(const Polygon& polygon) {
+  const size_t n = polygon.size();
+  if (n < 3 || polygon_area(polygon) <= kEps) return false;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      const bool neighbours = j == i + 1 || (i == 0 && j == n - 1);
+      if (neighbours) continue;
+      if (segments_meet(polygon[i], polygon[(i + 1) % n], polygon[j], polygon[(j + 1) % n]))
+        return false;
+    }
+  return true;
+}
+
+std::optional<std::vector<Rect>> as_rectangles(const Polygon& polygon) {
+  const size_t n = polygon.size();
+  std::vector<double> ys;
+  for (size_t i = 0; i < n; ++i) {
+    const auto& a = polygon[i];
+    const auto& b = polygon[(i + 1) % n];
+    if (std::fabs(a[0] - b[0]) > kEps && std::fabs(a[1] - b[1]) > kEps) return std::nullopt;
+    ys.push_back(a[1]);
+  }
+  std::sort(ys.begin(), ys.end());
+  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+  std::vector<Rect> rects;
+  for (size_t k = 0; k + 1 < ys.size(); ++k) {
+    // Across the band's middle, the vertical edges pair up into spans inside the polygon.
+    const double mid = (ys[k] + ys[k + 1]) / 2;
+    std::vector<double> xs;
+    for (size_t i = 0; i < n; ++i) {
+      const auto& a = polygon[i];
+      const auto& b = polygon[(i + 1) % n];
+      if ((a[1] > mid) != (b[1] > mid)) xs.push_back(a[0]);
+    }
+    std::sort(xs.begin(), xs.end());
+    for (size_t i = 0; i + 1 < xs.size(); i += 2)
+      rects.push_back({xs[i], ys[k], xs[i + 1] - xs[i], ys[k + 1] - ys[k]});
+  }
+  return rects;
+}
+
+}  // namespace curdle

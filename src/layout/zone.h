@@ -1,0 +1,26 @@
+// The geometry of zones (layout.h: Zone) and other polygons in layout millimetres.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace curdle {
+
+Polygon rect_polygon(const Rect& r);
+
+// Whether (x, y) lies inside the polygon (even-odd; a point on an edge may go either way).
+bool contains(const Polygon& polygon, double x, double y);
+
+// The polygon's area, mm² (any orientation).
+double polygon_area(const Polygon& polygon);
+
+// Whether no two edges of the polygon cross or touch, other than neighbours at their vertex.
+bool is_simple(const Polygon& polygon);
+
+// A polygon whose edges all run along x or y as disjoint rectangles (bands between its
+// vertices' heights); nullopt when some edge slopes.
+std::optional<std::vector<Rect>> as_rectangles(const Polygon& polygon);
+
+}  // namespace curdle
