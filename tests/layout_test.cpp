@@ -680,3 +680,29 @@ TEST(Geometry, RectilinearPolygonsBecomeRectangles) {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+// A first-stage cell larger than a third of the floor's shorter side is warned of, with the
+// bases and stage counts that fit; one that fits is not.
+TEST(Layout, LargeFirstStageCellsAreWarnedOf) {
+  auto notes_for = [](int base, int stages) {
+    std::vector<std::string> probabilities(static_cast<size_t>(stages), "3/4");
+    const Design d = design(base, 2, {probabilities});
+    LayoutSpec spec;
+    spec.set_kind(LayoutKind::paving);
+    spec.module_w = 300, spec.module_h = 300;
+    spec.size = std::array<double, 2>{9700, 4900};
+    Design sized = d;
+    const auto cells = elements_to_cover(spec);
+    sized.field.size = {cells[0], cells[1], 1};
+    return make_layout(sized, curdle(sized, 2, sized.field), sized.field, spec).notes;
+  };
+  const auto warned = notes_for(4, 3);  // first-stage cells 16 elements, 4.8 m, on a 4.9 m floor
+  ASSERT_EQ(warned.size(), 1u);
+  EXPECT_NE(warned[0].find("4.80 x 4.80 m"), std::string::npos) << warned[0];
+  EXPECT_NE(warned[0].find("base 2 and at most 3 stages"), std::string::npos) << warned[0];
+  EXPECT_TRUE(notes_for(2, 3).empty());  // 4 elements, 1.2 m: fits
+}
+
+}  // namespace curdle

@@ -8,6 +8,7 @@
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
 #include "layout/cut_rules.h"
+#include "layout/guidance.h"
 #include "layout/park.h"
 #include "layout/perforation.h"
 #include "layout/rhythm.h"
@@ -238,6 +239,8 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
   apply_zones(layout, spec, size_t{1} << design.curds.size());
   if (spec.kind() == LayoutKind::facade) report_open_area(layout, facade_openings);
   check_cut_widths(layout, spec);
+
+  advise_lattice(layout, design.lattice);
 
   layout.legend = make_legend(design, spec);
   for (const Element& e : layout.elements) ++layout.legend[e.value].count;
