@@ -3,7 +3,7 @@
 # message naming what is wrong and leaves no output, threads do not change a byte, and the
 # golden outputs still come out. Each section is its own ctest entry, so that they run side by
 # side. Usage: CURDLE=path/to/curdle cli_test.sh SOURCE_DIR SECTION [ARGUMENT]
-#   sections: pattern RECIPE, bad_recipe RECIPE, bad_options, segments, overrides, threads,
+#   sections: pattern RECIPE, bad_recipes, bad_options, segments, overrides, threads,
 #             golden, report, search, measure, fit, serve
 set -u
 src=${1:?source dir}
@@ -61,14 +61,17 @@ section_pattern() {
 
 # A bad recipe exits 2, names the file and what is allowed (its "# expect:" line), and writes
 # nothing.
-section_bad_recipe() {
-  local recipe=$1
-  want=$(sed -n 's/^# expect: //p' "$recipe")
-  [ -n "$want" ] && pass || fail "$recipe has no '# expect:' line"
-  out="$work/bad/$(basename "$recipe" .toml)"
-  expect 2 "$want" generate "$recipe" --out "$out"
-  grep -qF "$(basename "$recipe")" "$work/stderr" && pass || fail "$recipe: message does not name the file"
-  [ ! -e "$out" ] && pass || fail "$recipe: a failed run left a new directory: $(ls -A "$out")"
+# Every recipe in tests/bad_recipes: exit 2 with its '# expect:' words and the file's name, and
+# no output directory. One entry for all of them: each is a start of the program, not a test.
+section_bad_recipes() {
+  for recipe in "$src"/tests/bad_recipes/*.toml; do
+    want=$(sed -n 's/^# expect: //p' "$recipe")
+    [ -n "$want" ] && pass || fail "$recipe has no '# expect:' line"
+    out="$work/bad/$(basename "$recipe" .toml)"
+    expect 2 "$want" generate "$recipe" --out "$out"
+    grep -qF "$(basename "$recipe")" "$work/stderr" && pass || fail "$recipe: message does not name the file"
+    [ ! -e "$out" ] && pass || fail "$recipe: a failed run left a new directory: $(ls -A "$out")"
+  done
 }
 
 # Bad command lines exit 2 with a message naming the option, and no output.

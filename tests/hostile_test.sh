@@ -83,7 +83,7 @@ section_options() {
 # that finishes replaces the set whole.
 section_kills() {
   f7="$p/paper/fig7-paving-20m.toml"
-  "$curdle" generate "$f7" --seed 1 --out "$work/kill/out" > /dev/null || fail "first run failed"
+  "$curdle" generate "$f7" --seed 1 --outputs report.json,schedule.csv,layout.svg --out "$work/kill/out" > /dev/null || fail "first run failed"
   (cd "$work/kill/out" && md5sum ./* > "$work/before.md5")
   local interrupted=0
   for delay in 0.02 0.05 0.1 0.2 0.3 0.5; do
@@ -104,14 +104,14 @@ section_kills() {
         elif grep -q '"seed": 2' "$work/kill/out/report.json" 2> /dev/null \
           && [ "$(ls "$work/kill/out" | tr '\n' ' ')" = "cells.csv preview.png report.json " ]; then
           pass
-          "$curdle" generate "$f7" --seed 1 --out "$work/kill/out" > /dev/null
+          "$curdle" generate "$f7" --seed 1 --outputs report.json,schedule.csv,layout.svg --out "$work/kill/out" > /dev/null
         else
           fail "an interrupted run ($signal after ${delay}s) left a mixed set: $(ls "$work/kill/out")"
         fi
       elif [ "$code" -eq 0 ]; then
         grep -q '"seed": 2' "$work/kill/out/report.json" && [ ! -e "$work/kill/out/schedule.csv" ] \
           && pass || fail "a finished run did not replace the set whole"
-        "$curdle" generate "$f7" --seed 1 --out "$work/kill/out" > /dev/null
+        "$curdle" generate "$f7" --seed 1 --outputs report.json,schedule.csv,layout.svg --out "$work/kill/out" > /dev/null
       else
         fail "an interrupted run exited $code"
       fi

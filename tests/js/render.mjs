@@ -44,7 +44,7 @@ try {
   const page = await browser.newPage({ viewport: { width: 800, height: 600 } });
   for (const [name, model] of byName) {
     await page.goto(`http://127.0.0.1:${port}/?model=${name}`);
-    await page.waitForFunction(() => window.result !== undefined, null, { timeout: 60000 });
+    await page.waitForFunction(() => window.result !== undefined, null, { timeout: 60000, polling: 50 });
     const result = await page.evaluate(() => window.result);
     const shot = path.join(shots, path.basename(path.dirname(model)) + '.png');
     await page.screenshot({ path: shot });
