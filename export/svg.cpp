@@ -337,7 +337,18 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
 
   // Legend and title block, under the drawing.
   const double top = margin * 1.5 + H;
-  out << fmt::format("<g id=\"legend\" font-size=\"{}\" fill=\"#222\">\n", mm(unit));
+  const double tx = margin + W * 0.42;  // the title block's left edge
+  // The legend's text shrinks, when its longest line would run into the title block, to about
+  // 0.6 em a character.
+  size_t longest_entry = 0;
+  for (const LegendEntry& e : layout.legend)
+    longest_entry =
+        std::max(longest_entry,
+                 fmt::format("{} {}: {}", e.value, e.label, legend_count(layout, e.count)).size());
+  const double legend_room = tx - unit * 1.2 - (margin + unit * 2.6);
+  const double legend_font =
+      std::min(unit, legend_room / (0.6 * static_cast<double>(std::max<size_t>(longest_entry, 1))));
+  out << fmt::format("<g id=\"legend\" font-size=\"{}\" fill=\"#222\">\n", mm(legend_font));
   size_t shown = 0;
   for (const LegendEntry& e : layout.legend) {
     if (values > 16 && e.count == 0) continue;
@@ -354,7 +365,6 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
         escape(legend_count(layout, e.count)));
   }
   out << "</g>\n";
-  const double tx = margin + W * 0.42;
   const std::vector<std::string> lines = title_lines(layout);
   // Sized to fit the longest line at about half an em per character.
   std::vector<std::string> all = lines;
