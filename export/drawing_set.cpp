@@ -93,6 +93,8 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
   cairo_fill(cr);
   colour(cr, Rgb{223, 234, 242});
   for (const Rect& o : layout.openings) v.rect(cr, o), cairo_fill(cr);
+  colour(cr, Rgb{255, 255, 255});  // beyond the outline: paper
+  for (const Rect& o : layout.outside) v.rect(cr, o), cairo_fill(cr);
   for (const Layout::ViewCell& c : layout.views) {
     colour(cr, layout.legend[c.value].colour, alpha);
     v.rect(cr, c.rect);

@@ -91,6 +91,11 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
       "{:.1f} mm; the grid: the sheets of layout.pdf</text></g>\n",
       num(heading), num(f.x(first.x)), num(3.5 * s), xml_escape(title.recipe), num(f.x(first.x)),
       num(8 * s), s, plan.text_mm);
+  out << "<g id=\"outside\" fill=\"#fff\">\n";  // beyond the outline: paper
+  for (const Rect& o : layout.outside)
+    out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(f.x(o.x)),
+                       num(f.y(o.top())), num(o.w), num(o.h));
+  out << "</g>\n";
   out << "<g id=\"openings\" fill=\"#dfeaf2\">\n";
   for (const Rect& o : layout.openings)
     out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(f.x(o.x)),

@@ -42,7 +42,10 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
   const Rect extents{0, 0, layout.width, layout.height};
   DxfDocument dxf(path, layers, extents);
 
-  if (layout.kind != LayoutKind::blocks) dxf.rect("OUTLINE", extents);
+  if (!layout.outline.empty())
+    dxf.polygon("OUTLINE", layout.outline);
+  else if (layout.kind != LayoutKind::blocks)
+    dxf.rect("OUTLINE", extents);
   for (const Rect& o : layout.openings) dxf.rect("OPENINGS", o);
   for (const Element& e : layout.elements) {
     const std::string layer = layer_of(layout, e);

@@ -251,6 +251,21 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
       out << fmt::format("<path id=\"joints\" class=\"joint\" fill=\"{}\" d=\"{}\"/>\n",
                          hex_colour(layout.joint_colour), d);
   }
+  // Beyond the outline is paper, not surface: white over the joints, and the outline drawn.
+  if (!layout.outside.empty()) {
+    out << "<g id=\"outside\" class=\"outside\" fill=\"#ffffff\">\n";
+    for (const Rect& o : layout.outside)
+      out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", mm(s.x(o.x)),
+                         mm(s.y(o.y, o.h)), mm(o.w), mm(o.h));
+    std::string d;
+    for (size_t k = 0; k < layout.outline.size(); ++k)
+      d += fmt::format("{}{} {}", k ? "L" : "M", mm(s.x(layout.outline[k][0])),
+                       mm(s.y(layout.outline[k][1])));
+    out << fmt::format(
+        "</g>\n<path id=\"outline\" class=\"outline\" d=\"{}z\" fill=\"none\" stroke=\"#222\" "
+        "stroke-width=\"{}\"/>\n",
+        d, mm(unit * 0.08));
+  }
   if (!layout.openings.empty()) {
     out << fmt::format(
         "<g id=\"openings\" class=\"opening\" fill=\"#dfeaf2\" stroke=\"#44515c\" "

@@ -706,3 +706,43 @@ TEST(Layout, LargeFirstStageCellsAreWarnedOf) {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+// layout.outline: no piece lies outside it, and the pieces, joints and excluded zones add up
+// to the outline's area, for a centred, bonded grid as for a cornered stack.
+TEST(Layout, AnOutlineIsCoveredExactly) {
+  const Design d = design(2, 2, {{"3/4", "3/4", "2/3"}});
+  const Polygon l = {{0, 0}, {12000, 0}, {12000, 5000}, {8000, 5000}, {8000, 8000}, {0, 8000}};
+  for (const bool centred : {false, true}) {
+    LayoutSpec spec;
+    spec.set_kind(LayoutKind::paving);
+    spec.module_w = 600, spec.module_h = 300, spec.joint = 5;
+    spec.size = std::array<double, 2>{12000, 8000};
+    spec.outline = l;
+    spec.origin = centred ? Corner::bottom_left : Corner::top_right;
+    spec.bond = centred ? 0.5 : 0;
+    if (centred) spec.centred = true, spec.shift = {centring_shift(12000, 600, 5), 0};
+    const Polygon planter = rect_polygon(Rect{3000, 3500, 2000, 3000});
+    spec.zones = {{"planter", ZoneRule::exclude, 0, planter, *as_rectangles(planter)}};
+    Design sized = d;
+    const auto cells = elements_to_cover(spec);
+    sized.field.size = {cells[0], cells[1], 1};
+    const Layout layout = make_layout(sized, curdle(sized, 5, sized.field), sized.field, spec);
+    ASSERT_FALSE(layout.outside.empty());
+    double elements = 0;
+    for (const Element& e : layout.elements) {
+      elements += e.area();
+      for (const Rect& r : e.shape) {
+        for (const Rect& o : layout.outside) EXPECT_NEAR(intersection(r, o), 0, 1e-6) << e.id;
+        EXPECT_TRUE(contains(l, r.x + r.w / 2, r.y + r.h / 2)) << e.id;
+      }
+    }
+    EXPECT_NEAR(elements + joint_area(layout) + 6e6, polygon_area(l), 1e-3) << centred;
+    std::ostringstream svg;
+    write_layout_svg(svg, layout);
+    EXPECT_NE(svg.str().find("id=\"outline\""), std::string::npos);
+  }
+}
+
+}  // namespace curdle

@@ -187,4 +187,36 @@ floor = [12000, 8000]
   }
 }
 
+// layout.outline stands for the floor's size, and is refused where it cannot be cut.
+TEST(Recipe, Outline) {
+  const std::string head = std::string(kGood).substr(0, std::string(kGood).find("[field]")) +
+                           R"([[curds]]
+probabilities = ["1/2", "1/2"]
+[layout]
+kind = "paving"
+tile = [600, 300]
+)";
+  const Recipe r = parse_recipe(
+      head +
+          "outline = [[0, 0], [12000, 0], [12000, 5000], [8000, 5000], [8000, 8000], [0, 8000]]\n",
+      "r.toml");
+  ASSERT_TRUE(r.layout->size);
+  EXPECT_EQ(*r.layout->size, (std::array<double, 2>{12000, 8000}));
+  EXPECT_EQ(r.layout->outline.size(), 6u);
+  const std::vector<std::pair<std::string, std::string>> wrong = {
+      {"outline = [[0, 0], [1000, 0], [500, 900]]\n", "sloping edge"},
+      {"outline = [[-10, 0], [1000, 0], [1000, 900], [-10, 900]]\n", "from 0"},
+      {"floor = [500, 500]\noutline = [[0, 0], [1000, 0], [1000, 900], [0, 900]]\n",
+       "outside the surface"},
+      {"outline = [[0, 0], [1000, 0]]\n", "at least 3 corners"},
+  };
+  for (const auto& [text, said] : wrong) {
+    const std::string e = error_of(head + text);
+    EXPECT_NE(e.find("layout.outline"), std::string::npos) << text << "\n" << e;
+    EXPECT_NE(e.find(said), std::string::npos) << text << "\n" << e;
+  }
+  const std::string e = error_of(head);  // neither a floor nor an outline
+  EXPECT_NE(e.find("layout.floor"), std::string::npos) << e;
+}
+
 }  // namespace curdle

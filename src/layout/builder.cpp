@@ -202,6 +202,13 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
       for (const Rect& r : z.rects)
         if (const Rect c = clip(r, layout.width, layout.height); c.area() > 0)
           layout.openings.push_back(c);
+  if (!spec.outline.empty()) {
+    layout.outline = spec.outline;
+    const auto inside = as_rectangles(spec.outline);  // the reader allows no sloping edge
+    for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, inside.value()))
+      if (r.area() > kEps) layout.outside.push_back(r);
+  }
+  const std::vector<Rect> holes = layout.holes();
 
   const bool right = from_right(spec.origin);
   const bool top = from_top(spec.origin);
@@ -225,9 +232,9 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
                        top ? layout.height - up - spec.module_h : up, spec.module_w, spec.module_h};
       e.stock_w = spec.module_w, e.stock_h = spec.module_h;
       const Rect laid = clip(e.nominal, layout.width, layout.height);
-      e.shape = subtract(laid, layout.openings);
+      e.shape = subtract(laid, holes);
       if (e.shape.empty() || e.area() < kEps) {
-        ++layout.omitted;  // wholly over an opening, or outside the floor
+        ++layout.omitted;  // wholly over an opening or zone, or outside the floor or outline
         continue;
       }
       e.cut = e.area() < e.nominal.area() - kEps;
@@ -295,7 +302,7 @@ double laid_area(const Layout& layout, const Rect& r) {
   double area = 0;
   const Rect c = clip(r, layout.width, layout.height);
   if (c.area() > 0)
-    for (const Rect& piece : subtract(c, layout.openings)) area += piece.area();
+    for (const Rect& piece : subtract(c, layout.holes())) area += piece.area();
   return area;
 }
 
@@ -342,13 +349,7 @@ double joint_area(const Layout& layout) {
     horizontal.push_back(
         Rect{0, top ? layout.height - up - layout.joint : up, layout.width, layout.joint});
   }
-  auto laid = [&](const Rect& r) {
-    double area = 0;
-    const Rect c = clip(r, layout.width, layout.height);
-    if (c.area() > 0)
-      for (const Rect& piece : subtract(c, layout.openings)) area += piece.area();
-    return area;
-  };
+  auto laid = [&](const Rect& r) { return laid_area(layout, r); };
   double area = 0;
   for (const Rect& v : vertical) area += laid(v);
   for (const Rect& h : horizontal) area += laid(h);

@@ -86,8 +86,8 @@ ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis) {
   // Bands across the surface between openings' edges; in each, the material is the surface
   // less the openings that span the band, and every row (or column) in it meets the same cuts.
   std::vector<double> edges{0, across};
-  for (const Rect& o : layout.openings)
-    edges.push_back(lo(o, other)), edges.push_back(hi(o, other));
+  const std::vector<Rect> holes = layout.holes();
+  for (const Rect& o : holes) edges.push_back(lo(o, other)), edges.push_back(hi(o, other));
   std::sort(edges.begin(), edges.end());
   struct Band {
     uint64_t lines = 0;
@@ -103,11 +103,11 @@ ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis) {
       const double s0 = other_high ? across - start - other_module : start;
       if (std::min(b1, s0 + other_module) - std::max(b0, s0) > kEps) ++band.lines;
     }
-    std::vector<Span> holes;
-    for (const Rect& o : layout.openings)
-      if (lo(o, other) < mid && mid < hi(o, other)) holes.push_back({lo(o, axis), hi(o, axis)});
+    std::vector<Span> spans;
+    for (const Rect& o : holes)
+      if (lo(o, other) < mid && mid < hi(o, other)) spans.push_back({lo(o, axis), hi(o, axis)});
     double at = 0;
-    for (const Span& h : joined(std::move(holes))) {
+    for (const Span& h : joined(std::move(spans))) {
       if (h.first > at + kEps) band.material.push_back({at, h.first});
       at = std::max(at, h.second);
     }

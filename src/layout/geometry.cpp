@@ -102,4 +102,10 @@ const std::vector<Rect>& LayoutSpec::openings() const {
   return kind() == LayoutKind::facade ? facade().openings : none;
 }
 
+std::vector<Rect> Layout::holes() const {
+  std::vector<Rect> all = openings;
+  all.insert(all.end(), outside.begin(), outside.end());
+  return all;
+}
+
 }  // namespace curdle

@@ -169,6 +169,10 @@ struct LayoutSpec {
   std::array<double, 2> shift{0, 0};
   double min_cut = 0;  // narrowest cut piece allowed, mm; 0: a quarter of the element each way
   std::vector<Zone> zones;  // tile, paving, facade
+  // layout.outline: the surface to cover, a simple polygon whose edges run along x and y, in mm
+  // from the origin of `size` (which is then its bounding rectangle's far corner); empty: the
+  // whole rectangle. Tile, paving, facade.
+  Polygon outline;
   // The bond: each course (row) shifted along x by this share of the element pitch from the
   // course below, counted from the origin corner: 0 stack, 1/2 stretcher or running bond, 1/3,
   // 1/4. Every element still stands for one cell; courses are cut at the ends.
@@ -249,6 +253,12 @@ struct Layout {
   // Every hole in the surface: a façade's openings, then the excluded zones' rectangles.
   std::vector<Rect> openings;
   std::vector<ZoneCount> zones;     // one per [[layout.zones]], in order
+  // With layout.outline: the polygon, and the parts of the width x height rectangle outside it
+  // (no elements; drawn as paper, not as openings).
+  Polygon outline;
+  std::vector<Rect> outside;
+  // What is not laid: openings, excluded zones and what lies outside the outline.
+  std::vector<Rect> holes() const;
   std::vector<LegendEntry> legend;  // one per value
   uint64_t omitted = 0;             // cells wholly inside openings: no element
   // The open share of the surface (perforation: the openings; facade: its windows and doors),

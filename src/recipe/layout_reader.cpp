@@ -31,21 +31,21 @@ const std::vector<KindKeys>& kinds() {
        "size",
        false,
        true,
-       {"min_cut", "shift", "bond", "zones"}},
+       {"min_cut", "shift", "bond", "zones", "outline"}},
       {"paving",
        LayoutKind::paving,
        "tile",
        "floor",
        true,
        true,
-       {"min_cut", "shift", "bond", "zones"}},
+       {"min_cut", "shift", "bond", "zones", "outline"}},
       {"facade",
        LayoutKind::facade,
        "panel",
        "wall",
        true,
        true,
-       {"openings", "mask", "min_cut", "shift", "bond", "zones"}},
+       {"openings", "mask", "min_cut", "shift", "bond", "zones", "outline"}},
       {"perforation",
        LayoutKind::perforation,
        "cell",
@@ -141,7 +141,9 @@ void read_surface(TableReader& r, const KindKeys& k, const Design& design, Layou
     r.fail("joint", std::string("must be narrower than the ") + k.module_key + " (" +
                         std::to_string(static_cast<int>(std::min(spec.module_w, spec.module_h))) +
                         " mm)");
-  spec.size = read_mm_pair(r, k.size_key, k.size_required);
+  // An outline can stand for the size (its bounding rectangle, read_outline).
+  spec.size = read_mm_pair(r, k.size_key, k.size_required && !r.get("outline"));
+  read_outline(r, spec);  // only the kinds that take one let the key through
   spec.origin = read_corner(
       r, k.kind == LayoutKind::tile || k.kind == LayoutKind::paving || k.kind == LayoutKind::facade,
       spec);

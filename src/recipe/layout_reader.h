@@ -20,6 +20,9 @@ void read_drawing_scale(TableReader& r, LayoutSpec& spec);
 
 // The kinds' own keys, each in its own file.
 void read_facade(TableReader& r, LayoutSpec& spec);
+// layout.outline (tile, paving, facade): the surface as a polygon; its bounding rectangle is
+// the size when the size key is left out.
+void read_outline(TableReader& r, LayoutSpec& spec);
 // [[layout.zones]], after the surface's size (tile, paving, facade).
 void read_zones(TableReader& r, const Design& design, LayoutSpec& spec);
 void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec);

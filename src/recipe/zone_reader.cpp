@@ -1,5 +1,5 @@
-// [[layout.zones]]: name, rect = [x, y, w, h] or polygon = [[x, y], ...] in millimetres, and
-// rule = "exclude" or rule = "value" with value = N.
+// layout.outline = [[x, y], ...], and [[layout.zones]]: name, rect = [x, y, w, h] or
+// polygon = [[x, y], ...] in millimetres, and rule = "exclude" or rule = "value" with value = N.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -37,22 +37,22 @@ Polygon read_rect(TableReader& r) {
   return rect_polygon(Rect{v[0], v[1], v[2], v[3]});
 }
 
-Polygon read_polygon(TableReader& r) {
-  const toml::array* a = r.get("polygon")->as_array();
+Polygon read_polygon(TableReader& r, const std::string& key = "polygon") {
+  const toml::array* a = r.get(key)->as_array();
   const std::string allowed =
       "must be at least 3 corners [[x, y], ...] in millimetres (at most 10000), a simple polygon "
       "whose edges do not cross";
-  if (!a || a->size() < 3 || a->size() > kMostVertices) r.fail("polygon", allowed);
+  if (!a || a->size() < 3 || a->size() > kMostVertices) r.fail(key, allowed);
   Polygon polygon;
   for (const toml::node& item : *a) {
     const toml::array* p = item.as_array();
     const auto x = p && p->size() == 2 ? finite_number(p->get(0)) : std::nullopt;
     const auto y = p && p->size() == 2 ? finite_number(p->get(1)) : std::nullopt;
-    if (!x || !y) r.fail("polygon", allowed);
+    if (!x || !y) r.fail(key, allowed);
     polygon.push_back({*x, *y});
   }
   if (polygon.front() == polygon.back()) polygon.pop_back();  // closed by repeating the first
-  if (polygon.size() < 3 || !is_simple(polygon)) r.fail("polygon", allowed);
+  if (polygon.size() < 3 || !is_simple(polygon)) r.fail(key, allowed);
   return polygon;
 }
 
@@ -93,6 +93,29 @@ Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size)
 }
 
 }  // namespace
+
+void read_outline(TableReader& r, LayoutSpec& spec) {
+  if (!r.get("outline")) return;
+  Polygon outline = read_polygon(r, "outline");
+  double x1 = 0, y1 = 0;
+  for (const auto& p : outline) {
+    if (p[0] < 0 || p[1] < 0)
+      r.fail("outline", fmt::format("has the corner [{:g}, {:g}]: corners are in mm from the "
+                                    "surface's origin, x and y from 0",
+                                    p[0], p[1]));
+    x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+  }
+  if (!as_rectangles(outline))
+    r.fail("outline",
+           "has a sloping edge: elements are cut along outlines whose edges run along x and y "
+           "(an L, a U, a stepped floor); sloping and curved edges are not cut yet");
+  if (x1 > 1e7 || y1 > 1e7) r.fail("outline", "must lie within 10 km of the origin");
+  if (spec.size)
+    check_on_surface(r, "outline", outline, *spec.size);
+  else
+    spec.size = std::array<double, 2>{x1, y1};
+  spec.outline = std::move(outline);
+}
 
 void read_zones(TableReader& r, const Design& design, LayoutSpec& spec) {
   const toml::node* n = r.get("zones");
