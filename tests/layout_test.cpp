@@ -613,10 +613,6 @@ TEST(Blocks, PlanAndElevationShowTheFirstBlockSeen) {
     EXPECT_EQ(svg.counts[v], 0u);  // views are drawings, not elements
 }
 
-}  // namespace curdle
-
-namespace curdle {
-
 // Zones: no piece lies in an excluded zone and the areas still add up to the surface; every
 // element whose laid centre a value zone holds takes its value, and the counts say so.
 TEST(Layout, ZonesExcludeOrSetTheirValue) {
@@ -679,10 +675,6 @@ TEST(Geometry, RectilinearPolygonsBecomeRectangles) {
   EXPECT_FALSE(contains(l, 2000, 2000));
 }
 
-}  // namespace curdle
-
-namespace curdle {
-
 // A first-stage cell larger than a third of the floor's shorter side is warned of, with the
 // bases and stage counts that fit; one that fits is not.
 TEST(Layout, LargeFirstStageCellsAreWarnedOf) {
@@ -704,10 +696,6 @@ TEST(Layout, LargeFirstStageCellsAreWarnedOf) {
   EXPECT_NE(warned[0].find("base 2 and at most 3 stages"), std::string::npos) << warned[0];
   EXPECT_TRUE(notes_for(2, 3).empty());  // 4 elements, 1.2 m: fits
 }
-
-}  // namespace curdle
-
-namespace curdle {
 
 // layout.outline: no piece lies outside it, and the pieces, joints and excluded zones add up
 // to the outline's area, for a centred, bonded grid as for a cornered stack.

@@ -34,6 +34,12 @@ std::string error_of(const std::string& text, const std::vector<std::string>& se
   return "no error";
 }
 
+// kGood's lattice with one curd of two stages, and a [layout] of `keys`.
+std::string with_layout(const std::string& keys) {
+  return std::string(kGood).substr(0, std::string(kGood).find("[field]")) +
+         "[[curds]]\nprobabilities = [\"1/2\", \"1/2\"]\n[layout]\n" + keys;
+}
+
 }  // namespace
 
 TEST(Recipe, ReadsEveryKey) {
@@ -118,22 +124,11 @@ TEST(Recipe, Windows) {
   EXPECT_THROW(parse_window("a,b,c,d", r.design), InputError);
 }
 
-}  // namespace curdle
-
-namespace curdle {
-
 // layout.bond and layout.origin = "centre": read as written, and refused clearly where they
 // cannot hold.
 TEST(Recipe, BondAndCentredOrigin) {
-  const std::string wall = std::string(kGood).substr(0, std::string(kGood).find("[field]")) +
-                           R"([[curds]]
-probabilities = ["1/2", "1/2"]
-[layout]
-kind = "facade"
-panel = [215, 65]
-joint = 10
-wall = [4000, 2000]
-)";
+  const std::string wall =
+      with_layout("kind = \"facade\"\npanel = [215, 65]\njoint = 10\nwall = [4000, 2000]\n");
   Recipe r = parse_recipe(wall + "bond = \"half\"\norigin = \"centre\"\n", "r.toml");
   EXPECT_DOUBLE_EQ(r.layout->bond, 0.5);
   EXPECT_TRUE(r.layout->centred);
@@ -154,14 +149,8 @@ wall = [4000, 2000]
 
 // [[layout.zones]]: read in millimetres; every way to get one wrong is named.
 TEST(Recipe, Zones) {
-  const std::string floor = std::string(kGood).substr(0, std::string(kGood).find("[field]")) +
-                            R"([[curds]]
-probabilities = ["1/2", "1/2"]
-[layout]
-kind = "paving"
-tile = [600, 300]
-floor = [12000, 8000]
-)";
+  const std::string floor =
+      with_layout("kind = \"paving\"\ntile = [600, 300]\nfloor = [12000, 8000]\n");
   const std::string planter = "[[layout.zones]]\nname = \"planter\"\nrule = \"exclude\"\n";
   Recipe r = parse_recipe(floor + planter + "rect = [7000, 3000, 2000, 3000]\n" +
                               "[[layout.zones]]\nname = \"band\"\nrule = \"value\"\nvalue = 1\n"
@@ -189,13 +178,7 @@ floor = [12000, 8000]
 
 // layout.outline stands for the floor's size, and is refused where it cannot be cut.
 TEST(Recipe, Outline) {
-  const std::string head = std::string(kGood).substr(0, std::string(kGood).find("[field]")) +
-                           R"([[curds]]
-probabilities = ["1/2", "1/2"]
-[layout]
-kind = "paving"
-tile = [600, 300]
-)";
+  const std::string head = with_layout("kind = \"paving\"\ntile = [600, 300]\n");
   const Recipe r = parse_recipe(
       head +
           "outline = [[0, 0], [12000, 0], [12000, 5000], [8000, 5000], [8000, 8000], [0, 8000]]\n",

@@ -11,6 +11,7 @@
 #include "layout/guidance.h"
 #include "layout/park.h"
 #include "layout/perforation.h"
+#include "layout/piece.h"
 #include "layout/rhythm.h"
 #include "layout/zone.h"
 
@@ -128,11 +129,8 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
   if (spec.zones.empty()) return;
   for (Element& e : layout.elements) {
     // The laid piece's centre: an end piece cut at the edge has its centre on the surface.
-    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-    for (const Rect& r : e.shape)
-      x0 = std::min(x0, r.x), y0 = std::min(y0, r.y), x1 = std::max(x1, r.right()),
-      y1 = std::max(y1, r.top());
-    const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    const Rect laid = laid_bounds(e);
+    const double cx = laid.x + laid.w / 2, cy = laid.y + laid.h / 2;
     std::vector<size_t> holding;
     for (size_t i = 0; i < spec.zones.size(); ++i) {
       const Zone& z = spec.zones[i];

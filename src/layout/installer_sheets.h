@@ -4,7 +4,9 @@
 // A label sits inside its piece when it fits there, across or along it; otherwise (a sliver at
 // an edge or an opening) beside it with a leader, at the nearest free place on the same sheet.
 // The scale is the largest standard one at which a typical piece holds its label and every
-// label finds a place; each sheet keeps the labels of the pieces whose centre it holds.
+// label finds a place; each sheet keeps the labels of the pieces whose centre it holds. Sheets
+// meet where the fewest pieces cross (at joints), so that match lines do not split pieces; no
+// label lies on a match line's caption or on the start corner.
 // Perforated surfaces are installed as panels: their pieces are the fabrication sheets (the
 // openings are cut from the sheets' DXFs by their own IDs).
 #pragma once
