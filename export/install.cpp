@@ -79,10 +79,11 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
   out << fmt::format("<title>{} - installation map at 1 : {:g}, seed {}</title>\n",
                      xml_escape(title.recipe), s, title.seed);
   // The surface (the first rectangle: readers find the layout's frame by it).
+  const bool outlined = !layout.outline.empty();  // then the outline is drawn, not the frame
   out << fmt::format(
-      "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"#222\" "
+      "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"{}\" "
       "stroke-width=\"{}\"/>\n",
-      num(f.x(0)), num(f.y(H)), num(W), num(H), num(0.35 * s));
+      num(f.x(0)), num(f.y(H)), num(W), num(H), outlined ? "none" : "#222", num(0.35 * s));
   // The heading, two short lines so that it fits over the narrowest map.
   const double heading = 2.5 / kCapHeightEm * s;
   out << fmt::format(
@@ -96,6 +97,15 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
     out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(f.x(o.x)),
                        num(f.y(o.top())), num(o.w), num(o.h));
   out << "</g>\n";
+  if (outlined) {
+    std::string d;
+    for (size_t k = 0; k < layout.outline.size(); ++k)
+      d += fmt::format("{}{} {}", k ? "L" : "M", num(f.x(layout.outline[k][0])),
+                       num(f.y(layout.outline[k][1])));
+    out << fmt::format(
+        "<path id=\"outline\" d=\"{}z\" fill=\"none\" stroke=\"#222\" stroke-width=\"{}\"/>\n", d,
+        num(0.35 * s));
+  }
   out << "<g id=\"openings\" fill=\"#dfeaf2\">\n";
   for (const Rect& o : layout.openings)
     out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(f.x(o.x)),
