@@ -7,7 +7,7 @@ packages=(
   cmake g++ make pkg-config
   libcgal-dev libopenimageio-dev libtinygltf-dev libtomlplusplus-dev libcli11-dev
   libfmt-dev nlohmann-json3-dev libexpat1-dev libdxflib-dev librandom123-dev libtbb-dev libcpp-httplib-dev libgtest-dev libbenchmark-dev
-  libcairo2-dev fonts-dejavu-core
+  libcairo2-dev fonts-dejavu-core zlib1g-dev
   python3 python3-numpy python3-ezdxf librsvg2-bin libxml2-utils poppler-utils chromium
 )
 # Node.js and npm for the glTF validator and the browser checks, when the machine has none.

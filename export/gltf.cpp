@@ -244,9 +244,9 @@ tinygltf::Model build(const Layout& layout) {
     // The bed the tiles lie in shows in the joints.
     const int bed =
         b.add_material("joint", layout.joint > 0 ? layout.joint_colour : Rgb{200, 200, 200}, 0, 1);
-    // Under the outline only, when there is one (its rectangles).
-    std::vector<Rect> beds{Rect{0, 0, layout.width, layout.height}};
-    if (!layout.outline.empty()) beds = subtract(beds[0], layout.outside);
+    // Under the surface only: not beyond an outline, nor under an excluded zone or opening.
+    const std::vector<Rect> beds =
+        subtract(Rect{0, 0, layout.width, layout.height}, layout.holes());
     for (size_t i = 0; i < beds.size(); ++i) {
       tinygltf::Node n = box_node(beds[i], -5, t * 0.8 + 5, bed);
       n.name = i ? "bed-" + std::to_string(i) : "bed";

@@ -12,7 +12,6 @@ namespace curdle {
 namespace {
 
 struct ImageModule {
-  EncodePngFn encode_png = nullptr;
   ReadLuminanceFn read_luminance = nullptr;
   ReadSizeFn read_size = nullptr;
 };
@@ -48,11 +47,10 @@ const ImageModule& module() {
         failure = std::string("cannot load the image module: ") + ::dlerror();
         return;
       }
-      loaded.encode_png = reinterpret_cast<EncodePngFn>(::dlsym(handle, "curdle_image_encode_png"));
       loaded.read_luminance =
           reinterpret_cast<ReadLuminanceFn>(::dlsym(handle, "curdle_image_read_luminance"));
       loaded.read_size = reinterpret_cast<ReadSizeFn>(::dlsym(handle, "curdle_image_read_size"));
-      if (!loaded.encode_png || !loaded.read_luminance || !loaded.read_size)
+      if (!loaded.read_luminance || !loaded.read_size)
         failure = "the image module " + path.string() + " lacks its entry points";
       return;
     }
@@ -64,13 +62,6 @@ const ImageModule& module() {
 }
 
 }  // namespace
-
-std::string encode_png(const PreviewImage& image, double dpi) {
-  std::string png, error;
-  if (!module().encode_png(&image, dpi, &png, &error))
-    throw std::runtime_error("cannot encode a PNG: " + error);
-  return png;
-}
 
 LuminanceImage read_luminance(const fs::path& path) {
   LuminanceImage image;

@@ -1,6 +1,7 @@
-// Images in and out: PNG encoding and reading any image OpenImageIO reads. OpenImageIO (and the
-// codecs it brings, over 250 shared libraries) lives in a module, libcurdle_image.so, loaded the
-// first time an image is read or written, so that commands that write no image start at once.
+// Images in and out: PNG encoding (zlib, png_encoder.cpp) and reading any image OpenImageIO
+// reads. OpenImageIO (and the codecs it brings, over 250 shared libraries) lives in a module,
+// libcurdle_image.so, loaded the first time an image is read, so that commands that read no
+// image start at once.
 #pragma once
 
 #include <cstdint>
@@ -34,8 +35,6 @@ ImageSize read_image_size(const std::filesystem::path& path);
 
 // The module's entry points (C linkage so that dlsym finds them by name).
 extern "C" {
-using EncodePngFn = bool (*)(const PreviewImage* image, double dpi, std::string* png,
-                             std::string* error);
 using ReadLuminanceFn = bool (*)(const char* path, LuminanceImage* image, std::string* error);
 using ReadSizeFn = bool (*)(const char* path, ImageSize* size, std::string* error);
 }

@@ -6,33 +6,6 @@
 
 using curdle::ImageSize;
 using curdle::LuminanceImage;
-using curdle::PreviewImage;
-
-extern "C" __attribute__((visibility("default"))) bool curdle_image_encode_png(
-    const PreviewImage* image, double dpi, std::string* png, std::string* error) {
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  auto out = OIIO::ImageOutput::create("png");
-  if (!out) {
-    *error = "OpenImageIO has no PNG writer: " + OIIO::geterror();
-    return false;
-  }
-  OIIO::ImageSpec spec(image->width, image->height, 3, OIIO::TypeDesc::UINT8);
-  if (dpi > 0) {
-    spec.attribute("XResolution", static_cast<float>(dpi));
-    spec.attribute("YResolution", static_cast<float>(dpi));
-    spec.attribute("ResolutionUnit", "inch");
-  }
-  OIIO::ImageOutput* raw = out.get();
-  raw->set_ioproxy(&memory);
-  if (!raw->open("memory.png", spec) ||
-      !raw->write_image(OIIO::TypeDesc::UINT8, image->rgb.data()) || !raw->close()) {
-    *error = raw->geterror();
-    return false;
-  }
-  png->assign(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  return true;
-}
 
 extern "C" __attribute__((visibility("default"))) bool curdle_image_read_luminance(
     const char* path, LuminanceImage* image, std::string* error) {

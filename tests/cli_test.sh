@@ -59,8 +59,6 @@ section_pattern() {
   fi
 }
 
-# A bad recipe exits 2, names the file and what is allowed (its "# expect:" line), and writes
-# nothing.
 # Every recipe in tests/bad_recipes: exit 2 with its '# expect:' words and the file's name, and
 # no output directory. One entry for all of them: each is a start of the program, not a test.
 section_bad_recipes() {

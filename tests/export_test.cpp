@@ -148,7 +148,7 @@ TEST(Preview, StripsAndSheetsAndLargeFields) {
   EXPECT_EQ(preview_memory(big, big.field), uint64_t(down.width) * down.height * 19);
 }
 
-// Encoded through the image module, read back with OpenImageIO directly.
+// Encoded with zlib, read back with OpenImageIO directly: every pixel and the resolution.
 TEST(Preview, EncodesAPngThatReadsBackWithItsResolution) {
   const fs::path dir = temp_dir("png");
   Design d = design(4, 2, {{"3/4", "2/3"}});

@@ -20,7 +20,7 @@ while IFS= read -r recipe; do
   models+=("$out/layout.glb")
   case "$recipe" in
     */paper/fig3-*|*/paper/fig5a-*|*/brick-facade-*|*/perforated-aluminium-*|*/fins-facade-*|\
-    */stacked-blocks*|*/courtyard-exact-*) shown+=("$out/layout.glb") ;;
+    */stacked-blocks*|*/courtyard-l-shaped*) shown+=("$out/layout.glb") ;;
   esac
 done < <(find "$src/patterns" -name '*.toml' | sort)
 "$curdle" generate "$src/patterns/paper/fig3-two-curds.toml" --out "$work/as-gltf" --outputs layout.gltf > /dev/null
