@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/reproduce.h"
+#include "app/zone_in_cells.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
 #include "export/csv_field.h"
@@ -71,7 +72,11 @@ SearchRun resolve_search(const SearchRequest& request) {
             " cell-stages of work (seeds x " + std::to_string(d.field.cells()) + " cells x " +
             std::to_string(d.lattice.stages) + " stages), above the budget of " +
             std::to_string(request.max_work) + "; search fewer seeds or a smaller field");
-  for (const std::string& t : request.targets) s.spec.targets.push_back(parse_target(t, d));
+  for (const std::string& t : request.targets) {
+    Target target = parse_target(zone_in_cells(t, s.run), d);
+    target.text = t;  // reports show it as written, in mm or cells
+    s.spec.targets.push_back(target);
+  }
   if (!request.segment.empty())
     s.spec.window = parse_segment_size(request.segment, d.lattice.dimension, "segment");
   else if (s.run.recipe.window)
