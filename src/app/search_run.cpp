@@ -72,6 +72,23 @@ SearchRun resolve_search(const SearchRequest& request) {
             " cell-stages of work (seeds x " + std::to_string(d.field.cells()) + " cells x " +
             std::to_string(d.lattice.stages) + " stages), above the budget of " +
             std::to_string(request.max_work) + "; search fewer seeds or a smaller field");
+  // Each thread holds one seed's curds and, for segments, the grid of values with its sums:
+  // the grid is 2 bytes a cell, and each target reads one prefix-sum table of 4 bytes a cell.
+  const uint64_t threads = request.threads > 0
+                               ? static_cast<uint64_t>(request.threads)
+                               : static_cast<uint64_t>(tbb::info::default_concurrency());
+  const uint64_t tables =
+      (request.targets.empty() ? default_targets(d).size() : request.targets.size()) + 1;
+  const uint64_t per_thread =
+      estimate_memory(d, generation_box(d, d.field)) + d.field.cells() * (2 + 4 * tables);
+  if (per_thread * threads > s.run.generate.max_memory_bytes)
+    throw ResourceLimitError(
+        "a search over this field needs about " + std::to_string((per_thread * threads) >> 20) +
+        " MiB, above the memory limit of " + std::to_string(s.run.generate.max_memory_bytes >> 20) +
+        " MiB; use a smaller field.cells" +
+        (s.run.generate.memory_limit_hint.empty() ? ""
+                                                  : ", or " + s.run.generate.memory_limit_hint));
+  // After the memory check: a zone in mm lays the floor out once.
   for (const std::string& t : request.targets) {
     Target target = parse_target(zone_in_cells(t, s.run), d);
     target.text = t;  // reports show it as written, in mm or cells
@@ -86,23 +103,6 @@ SearchRun resolve_search(const SearchRequest& request) {
   s.spec.top = request.top;
   s.spec.lacunarity_box = request.lacunarity_box;
   check_search(d, d.field, s.spec);
-
-  // Each thread holds one seed's curds and, for segments, the grid of values with its sums:
-  // the grid is 2 bytes a cell, and each target reads one prefix-sum table of 4 bytes a cell.
-  const uint64_t threads = request.threads > 0
-                               ? static_cast<uint64_t>(request.threads)
-                               : static_cast<uint64_t>(tbb::info::default_concurrency());
-  const uint64_t tables =
-      (s.spec.targets.empty() ? default_targets(d).size() : s.spec.targets.size()) + 1;
-  const uint64_t per_thread =
-      estimate_memory(d, generation_box(d, d.field)) + d.field.cells() * (2 + 4 * tables);
-  if (per_thread * threads > s.run.generate.max_memory_bytes)
-    throw ResourceLimitError(
-        "a search over this field needs about " + std::to_string((per_thread * threads) >> 20) +
-        " MiB, above the memory limit of " + std::to_string(s.run.generate.max_memory_bytes >> 20) +
-        " MiB; use a smaller field.cells" +
-        (s.run.generate.memory_limit_hint.empty() ? ""
-                                                  : ", or " + s.run.generate.memory_limit_hint));
   return s;
 }
 
