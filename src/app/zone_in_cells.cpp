@@ -23,7 +23,7 @@ bool ends_with(const std::string& s, const std::string& tail) {
 std::string zone_in_cells(const std::string& target, const Run& run) {
   if (target.rfind("empty", 0) != 0 || !ends_with(target, "mm")) return target;
   const size_t equals = target.find('=');
-  auto fail = [&](const std::string& what) -> std::string {
+  auto fail = [&](const std::string& what) {  // throws: nothing after it runs
     throw InputError(parameter("target"), "'" + target + "': " + what);
   };
   if (equals == std::string::npos) fail("write empty[:CURD]=X,Y,W,H mm");
