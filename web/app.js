@@ -444,6 +444,8 @@ function typedWindow() {
   const box = oneD ? [numbers[0], 0, numbers[1], 1] : numbers;
   const whole = numbers.every((n) => Number.isInteger(n)) && numbers.length === (oneD ? 2 : 4);
   if (!whole || box[0] < 0 || box[1] < 0 || box[2] < 1 || box[3] < 1 || box[0] + box[2] > w || box[1] + box[3] > h) {
+    // A segment still loading would clear the message when it arrives: it is stale now.
+    if (segmentController) segmentController.abort();
     showError(`Window '${text}': write ${oneD ? "X,W" : "X,Y,W,H"} in whole cells, inside the field of ${w} × ${h} cells`);
     return;
   }

@@ -84,6 +84,9 @@ try {
   check(true, 'a typed window selects that segment');
   await page.fill('#window-text', '250,0,30,20');
   await page.dispatchEvent('#window-text', 'change');
+  // The message may come after the change event returns: wait for it, then check its words.
+  await page.waitForFunction(() => document.querySelector('#error').textContent.includes('inside the field'),
+                             null, { timeout: 10000 }).catch(() => {});
   check((await page.textContent('#error')).includes('inside the field of 256 × 256 cells'), 'a window outside the field is refused');
 
   // A free drag, snapped to cells.
