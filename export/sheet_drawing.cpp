@@ -1,0 +1,203 @@
+#include "export/sheet_drawing.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "export/svg.h"
+#include "export/title_block.h"
+#include "layout/installer_sheets.h"
+#include "layout/piece.h"
+
+namespace curdle::sheet_drawing {
+namespace {
+
+constexpr const char* kFont = "DejaVu Sans";
+
+// The sheets' font, its capitals `height` mm high.
+void font(cairo_t* cr, double height, bool bold) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, height / kCapHeightEm);
+}
+
+}  // namespace
+
+void colour(cairo_t* cr, const Rgb& c, double alpha) {
+  cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
+}
+
+void text(cairo_t* cr, double x, double y, const std::string& s, double height, Align align,
+          bool rotated, bool bold) {
+  font(cr, height, bold);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  const double shift = align == Align::left     ? 0
+                       : align == Align::centre ? e.x_advance / 2
+                                                : e.x_advance;
+  cairo_save(cr);
+  cairo_translate(cr, x, y);
+  if (rotated) cairo_rotate(cr, -M_PI / 2);
+  cairo_move_to(cr, -shift, 0);
+  cairo_show_text(cr, s.c_str());
+  cairo_restore(cr);
+}
+
+double text_width(cairo_t* cr, const std::string& s, double height) {
+  font(cr, height, false);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  return e.x_advance;
+}
+
+void box(cairo_t* cr, double x, double y, double w, double h, double line) {
+  cairo_rectangle(cr, x, y, w, h);
+  cairo_set_line_width(cr, line);
+  cairo_stroke(cr);
+}
+
+// The layout's pieces as vectors; `faint` washes the colours out so that labels read over them.
+void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
+  const double alpha = faint ? 0.35 : 1;
+  const Rect all{0, 0, layout.width, layout.height};
+  const bool sheet = layout.kind == LayoutKind::perforation;
+  colour(cr,
+         sheet              ? Rgb{201, 205, 210}
+         : layout.joint > 0 ? layout.joint_colour
+                            : seamless_background(layout),
+         faint ? 0.25 : 1);
+  v.rect(cr, all);
+  cairo_fill(cr);
+  colour(cr, Rgb{223, 234, 242});
+  for (const Rect& o : layout.openings) v.rect(cr, o), cairo_fill(cr);
+  colour(cr, Rgb{255, 255, 255});  // beyond the outline: paper
+  for (const Rect& o : layout.outside) v.rect(cr, o), cairo_fill(cr);
+  for (const Layout::ViewCell& c : layout.views) {
+    colour(cr, layout.legend[c.value].colour, alpha);
+    v.rect(cr, c.rect);
+    cairo_fill(cr);
+  }
+  if (!layout.views.empty()) return;  // blocks are drawn as their views
+  auto visible = [&](const Rect& r) {
+    return r.right() >= v.window.x && r.x <= v.window.right() && r.top() >= v.window.y &&
+           r.y <= v.window.top();
+  };
+  for (const Element& e : layout.elements) {
+    if (!visible(laid_bounds(e))) continue;
+    const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
+    if (e.circle) {
+      colour(cr, c, alpha);
+      cairo_new_path(cr);
+      cairo_arc(cr, v.x(e.circle->cx), v.y(e.circle->cy), e.circle->d / 2 / v.scale, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
+    if (e.outline) {
+      colour(cr, c, alpha);
+      for (const Ring& ring : e.outline->rings)
+        for (size_t i = 0; i < ring.size(); ++i)
+          (i ? cairo_line_to : cairo_move_to)(cr, v.x(ring[i][0]), v.y(ring[i][1]));
+      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+      cairo_fill(cr);
+      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    }
+    if (e.circle || e.outline) continue;
+    if (!e.type.empty()) {
+      colour(cr, c, alpha);
+      for (const Rect& r : e.shape) v.rect(cr, r), cairo_fill(cr);
+      continue;
+    }
+    for (const ColouredRect& stripe : keep_stripes(layout, e)) {
+      colour(cr, stripe.colour, alpha);
+      v.rect(cr, stripe.rect);
+      cairo_fill(cr);
+    }
+  }
+}
+
+// A white ISO sheet with its frame (ISO 5457 margins) and the line above the title strip.
+void frame(cairo_t* cr, double w, double h) {
+  colour(cr, Rgb{255, 255, 255});
+  cairo_paint(cr);
+  colour(cr, kInk);
+  box(cr, kLeftMargin, kMargin, w - kLeftMargin - kMargin, h - 2 * kMargin, 0.5);
+  cairo_move_to(cr, kLeftMargin, h - kMargin - kTitleStrip);
+  cairo_line_to(cr, w - kMargin, h - kMargin - kTitleStrip);
+  cairo_set_line_width(cr, 0.35);
+  cairo_stroke(cr);
+}
+
+// A scale bar of whole metres (or tenths) that reads at 1 : scale, at most `room` mm long.
+void scale_bar(cairo_t* cr, double x, double y, double scale, double room) {
+  double step = 1;  // mm of the layout per division
+  for (const double s : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0, 2000.0,
+                         5000.0, 10000.0, 20000.0, 50000.0, 100000.0})
+    if (4 * s / scale <= room) step = s;
+  const double d = step / scale;
+  for (int i = 0; i < 4; ++i) {
+    cairo_rectangle(cr, x + i * d, y, d, 1.6);
+    colour(cr, i % 2 ? Rgb{255, 255, 255} : kInk);
+    cairo_fill_preserve(cr);
+    colour(cr, kInk);
+    cairo_set_line_width(cr, 0.2);
+    cairo_stroke(cr);
+  }
+  auto label = [&](double v) {
+    return v == 0      ? std::string("0")
+           : v >= 1000 ? fmt::format("{:g} m", v / 1000)
+                       : fmt::format("{:g} mm", v);
+  };
+  for (int i = 0; i <= 4; i += 2) text(cr, x + i * d, y - 1.2, label(i * step), 2, Align::centre);
+}
+
+// Where laying starts: a red dot just outside the origin corner, and arrows along the first
+// row and up the rows, clear of the first element.
+void start_corner(cairo_t* cr, const Layout& layout, const View& v) {
+  if (layout.kind == LayoutKind::blocks) return;
+  const bool right = from_right(layout.origin), top = from_top(layout.origin);
+  const double cx = v.x(right ? layout.width : 0), cy = v.y(top ? layout.height : 0);
+  const double dx = right ? -1 : 1, dy = top ? 1 : -1;  // paper y runs down
+  const double ox = cx - dx * kStartDotMm, oy = cy - dy * kStartDotMm;
+  colour(cr, kRed);
+  cairo_new_path(cr);  // no line from where the last text ended
+  cairo_arc(cr, ox, oy, 1.2, 0, 2 * M_PI);
+  cairo_fill(cr);
+  cairo_set_line_width(cr, 0.35);
+  cairo_move_to(cr, ox, oy);
+  cairo_line_to(cr, ox + dx * kStartArrowMm, oy);
+  cairo_move_to(cr, ox, oy);
+  cairo_line_to(cr, ox, oy + dy * kStartArrowMm);
+  cairo_stroke(cr);
+  text(cr, ox + dx * (kStartArrowMm + 2), oy + kStartTextMm / 2, kStartText, kStartTextMm,
+       right ? Align::right : Align::left);
+}
+
+std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,
+                                   double height) {
+  for (std::string& l : lines)
+    while (l.size() > 4 && text_width(cr, l, height) > width) l = l.substr(0, l.size() - 4) + "...";
+  return lines;
+}
+
+double title_width(double w) { return std::min(150.0, (w - kLeftMargin - kMargin) * 0.55); }
+
+void title_block(cairo_t* cr, const Layout& layout, double w, double h, const std::string& what,
+                 double scale, size_t number, size_t total, const std::string& paper) {
+  const double tw = title_width(w);
+  const double x = w - kMargin - tw, y = h - kMargin - kTitleStrip;
+  colour(cr, kInk);
+  box(cr, x, y, tw, kTitleStrip, 0.35);
+  std::vector<std::string> lines = title_lines(layout);
+  lines.insert(lines.begin() + 1, what);
+  lines = fit_lines(cr, lines, tw - 6, 2);
+  // The first is bold at 2.5 mm: about 1.4 times as wide as the same at 2 mm.
+  lines[0] = fit_lines(cr, {lines[0]}, (tw - 6) / 1.4, 2)[0];
+  for (size_t i = 0; i < lines.size() && i < 8; ++i)
+    text(cr, x + 3, y + 5 + 4.2 * static_cast<double>(i), lines[i], i == 0 ? 2.5 : 2, Align::left,
+         false, i == 0);
+  text(cr, x + 3, y + kTitleStrip - 3, fmt::format("scale 1 : {:g} on {}", scale, paper), 2.5);
+  text(cr, x + tw - 3, y + kTitleStrip - 3, fmt::format("sheet {} of {}", number, total), 3.5,
+       Align::right, false, true);
+}
+
+}  // namespace curdle::sheet_drawing

@@ -1,0 +1,66 @@
+// Drawing on an ISO sheet with cairo, in millimetres: the pen (colours, the sheets' font, text
+// set by its capital height), the view that places layout millimetres on paper, and the parts
+// every sheet of the drawing set shares: the frame, the pieces, the scale bar, the start corner
+// and the title block.
+#pragma once
+
+#include <cairo.h>
+
+#include <string>
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace curdle::sheet_drawing {
+
+inline constexpr double kPointsPerMm = 72 / 25.4;
+inline constexpr double kLeftMargin = 20, kMargin = 10, kTitleStrip = 50;  // drawing_sheet.h
+inline const Rgb kInk{34, 34, 34}, kRed{201, 42, 42}, kBlue{24, 100, 171};
+
+void colour(cairo_t* cr, const Rgb& c, double alpha = 1);
+
+// Text whose capitals are `height` mm, its left end (or centre, or right end) at x, its
+// baseline at y; turned to read bottom to top when `rotated`.
+enum class Align { left, centre, right };
+void text(cairo_t* cr, double x, double y, const std::string& s, double height,
+          Align align = Align::left, bool rotated = false, bool bold = false);
+double text_width(cairo_t* cr, const std::string& s, double height);
+// Each line cut short with "..." where it is wider than `width` mm at `height`.
+std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,
+                                   double height);
+
+void box(cairo_t* cr, double x, double y, double w, double h, double line);
+
+// Where layout millimetres land on paper: the window's top-left corner at (left, top).
+struct View {
+  Rect window;
+  double scale = 1;
+  double left = 0, top = 0;
+  double x(double v) const { return left + (v - window.x) / scale; }
+  double y(double v) const { return top + (window.top() - v) / scale; }
+  void rect(cairo_t* cr, const Rect& r) const {
+    cairo_rectangle(cr, x(r.x), y(r.top()), r.w / scale, r.h / scale);
+  }
+};
+
+// The layout's pieces as vectors; `faint` washes the colours out so that labels read over them.
+void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint);
+
+// A white ISO sheet with its frame (ISO 5457 margins) and the line above the title strip.
+void frame(cairo_t* cr, double w, double h);
+
+// A scale bar of whole metres (or tenths) that reads at 1 : scale, at most `room` mm long.
+void scale_bar(cairo_t* cr, double x, double y, double scale, double room);
+
+// Where laying starts: a red dot just outside the origin corner, and arrows along the first
+// row and up the rows, clear of the first element.
+void start_corner(cairo_t* cr, const Layout& layout, const View& v);
+
+// The title block's width on a sheet `w` mm wide: 150 mm, less on narrow portrait sheets.
+double title_width(double w);
+// The title block at the right of the strip: the title lines, what the sheet shows, the scale
+// and the sheet number.
+void title_block(cairo_t* cr, const Layout& layout, double w, double h, const std::string& what,
+                 double scale, size_t number, size_t total, const std::string& paper);
+
+}  // namespace curdle::sheet_drawing
