@@ -295,12 +295,12 @@ double Layout::cell_edge_y(int64_t cell_y) const {
 
 namespace {
 
-// The part of r laid: on the surface, off its openings.
-double laid_area(const Layout& layout, const Rect& r) {
+// The part of r laid: on the surface, off its `holes` (layout.holes(), gathered once).
+double laid_area(const Layout& layout, const std::vector<Rect>& holes, const Rect& r) {
   double area = 0;
   const Rect c = clip(r, layout.width, layout.height);
   if (c.area() > 0)
-    for (const Rect& piece : subtract(c, layout.holes())) area += piece.area();
+    for (const Rect& piece : subtract(c, holes)) area += piece.area();
   return area;
 }
 
@@ -309,6 +309,7 @@ double laid_area(const Layout& layout, const Rect& r) {
 double bonded_joint_area(const Layout& layout) {
   const bool right = from_right(layout.origin), top = from_top(layout.origin);
   const double pitch_w = layout.module_w + layout.joint, pitch_h = layout.module_h + layout.joint;
+  const std::vector<Rect> holes = layout.holes();
   double area = 0;
   for (int64_t r = 0; r < layout.rows; ++r) {
     const double up = r * pitch_h - layout.shift[1];
@@ -316,13 +317,15 @@ double bonded_joint_area(const Layout& layout) {
     for (int64_t c = 0; c < layout.columns; ++c) {
       const double along =
           c * pitch_w + layout.module_w - layout.shift[0] - course_offset(layout.spec, r);
-      area += laid_area(layout, Rect{right ? layout.width - along - layout.joint : along, y,
-                                     layout.joint, layout.module_h});
+      area += laid_area(layout, holes,
+                        Rect{right ? layout.width - along - layout.joint : along, y, layout.joint,
+                             layout.module_h});
     }
     if (r + 1 < layout.rows) {
       const double joint_up = up + layout.module_h;
-      area += laid_area(layout, Rect{0, top ? layout.height - joint_up - layout.joint : joint_up,
-                                     layout.width, layout.joint});
+      area += laid_area(layout, holes,
+                        Rect{0, top ? layout.height - joint_up - layout.joint : joint_up,
+                             layout.width, layout.joint});
     }
   }
   return area;
@@ -347,7 +350,8 @@ double joint_area(const Layout& layout) {
     horizontal.push_back(
         Rect{0, top ? layout.height - up - layout.joint : up, layout.width, layout.joint});
   }
-  auto laid = [&](const Rect& r) { return laid_area(layout, r); };
+  const std::vector<Rect> holes = layout.holes();
+  auto laid = [&](const Rect& r) { return laid_area(layout, holes, r); };
   double area = 0;
   for (const Rect& v : vertical) area += laid(v);
   for (const Rect& h : horizontal) area += laid(h);
