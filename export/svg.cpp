@@ -62,6 +62,14 @@ void write_merged(std::ostream& out, const Sheet& s, const Layout& layout,
       count > 1 ? ":" + b.id : std::string(), count);
 }
 
+// A closed polygon (an outline, a zone) as path data.
+std::string polygon_path(const Sheet& s, const Polygon& polygon) {
+  std::string d;
+  for (size_t k = 0; k < polygon.size(); ++k)
+    d += fmt::format("{}{} {}", k ? "L" : "M", mm(s.x(polygon[k][0])), mm(s.y(polygon[k][1])));
+  return d + "z";
+}
+
 std::string rect_path(const Sheet& s, const Rect& r) {
   return fmt::format("M{} {}h{}v{}h{}z", mm(s.x(r.x)), mm(s.y(r.y, r.h)), mm(r.w), mm(r.h),
                      mm(-r.w));
@@ -257,14 +265,10 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
     for (const Rect& o : layout.outside)
       out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", mm(s.x(o.x)),
                          mm(s.y(o.y, o.h)), mm(o.w), mm(o.h));
-    std::string d;
-    for (size_t k = 0; k < layout.outline.size(); ++k)
-      d += fmt::format("{}{} {}", k ? "L" : "M", mm(s.x(layout.outline[k][0])),
-                       mm(s.y(layout.outline[k][1])));
     out << fmt::format(
-        "</g>\n<path id=\"outline\" class=\"outline\" d=\"{}z\" fill=\"none\" stroke=\"#222\" "
+        "</g>\n<path id=\"outline\" class=\"outline\" d=\"{}\" fill=\"none\" stroke=\"#222\" "
         "stroke-width=\"{}\"/>\n",
-        d, mm(unit * 0.08));
+        polygon_path(s, layout.outline), mm(unit * 0.08));
   }
   if (!layout.openings.empty()) {
     out << fmt::format(
@@ -326,23 +330,19 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
         w.origin[0], w.origin[1], w.size[0], w.size[1]);
   }
 
-  // Zones: each outlined and named, value zones dashed in their value's colour.
+  // Zones: each outlined and named, value zones dashed.
   if (!spec.zones.empty()) {
     out << fmt::format("<g id=\"zones\" class=\"overlay\" fill=\"none\" font-size=\"{}\">\n",
                        mm(unit * 0.8));
     for (size_t i = 0; i < spec.zones.size(); ++i) {
       const Zone& z = spec.zones[i];
-      std::string d;
-      for (size_t k = 0; k < z.polygon.size(); ++k)
-        d += fmt::format("{}{} {}", k ? "L" : "M", mm(s.x(z.polygon[k][0])),
-                         mm(s.y(z.polygon[k][1])));
       const bool value = z.rule == ZoneRule::value;
-      const std::string ink = value ? hex_colour(layout.legend[z.value].colour) : "#44515c";
       out << fmt::format(
-          "<g class=\"zone\" data-name=\"{}\" data-rule=\"{}\"><path d=\"{}z\" stroke=\"{}\" "
+          "<g class=\"zone\" data-name=\"{}\" data-rule=\"{}\"><path d=\"{}\" stroke=\"{}\" "
           "stroke-width=\"{}\"{}/><text x=\"{}\" y=\"{}\" fill=\"#222\" stroke=\"#fff\" "
           "stroke-width=\"{}\" paint-order=\"stroke\">{}</text></g>\n",
-          escape(z.name), value ? "value" : "exclude", d, value ? "#222" : ink, mm(unit * 0.12),
+          escape(z.name), value ? "value" : "exclude", polygon_path(s, z.polygon),
+          value ? "#222" : "#44515c", mm(unit * 0.12),
           value ? fmt::format(" stroke-dasharray=\"{} {}\"", mm(unit * 0.6), mm(unit * 0.4)) : "",
           mm(s.x(z.polygon[0][0]) + unit * 0.4), mm(s.y(z.polygon[0][1]) - unit * 0.4),
           mm(unit * 0.2), escape(value ? fmt::format("{} (value {})", z.name, z.value) : z.name));
