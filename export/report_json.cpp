@@ -67,6 +67,8 @@ json report_to_json(const Report& r) {
       fit["share_weighted"] = nullptr;
     curds.push_back({{"name", c.name},
                      {"final_probability", rounded(c.final_probability, 6)},
+                     // A cell's final survival is min(1, P_K g), g the field at its centre.
+                     {"density", c.density.empty() ? json(nullptr) : json(c.density)},
                      {"roots", c.roots},
                      {"root_box_count", c.root_box_count},
                      {"stages", stages},

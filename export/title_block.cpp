@@ -45,6 +45,7 @@ std::vector<std::string> title_lines(const Layout& layout) {
     std::string p;
     for (const Probability& q : c.probabilities) p += (p.empty() ? "" : ", ") + q.text();
     probabilities += (probabilities.empty() ? "" : "; ") + c.name + " " + p;
+    if (c.density) probabilities += " x " + describe(*c.density);
   }
   uint64_t cut_count = 0;
   for (const Element& e : layout.elements) cut_count += e.cut;

@@ -58,6 +58,16 @@ open(sys.argv[1], 'wb').write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack(
 PY
   sed 's|^mask = .*|mask = "big.png"|' "$p/gallery-facade-mask.toml" > "$work/big.toml"
   refused "12000 x 12000 pixels" generate "$work/big.toml" --max-memory 128M
+  # A density image: a device, and a picture over the 4096 x 4096 pixels a field may have.
+  density_image() {
+    printf '%s\n' "$(sed '/^\[curds.density\]/,/^$/d' "$p/plaza-radial-density.toml")" | sed "/^colour = \"#3f3e3b\"/a [curds.density]\nkind = \"image\"\npath = \"$1\"\nvalues = [0, 2]"
+  }
+  density_image /dev/zero > "$work/plaza-zero.toml"
+  refused "not a regular file" generate "$work/plaza-zero.toml"
+  density_image big.png > "$work/plaza-big.toml"
+  refused "12000 x 12000 pixels" generate "$work/plaza-big.toml"
+  refused "lattice.mode = \"canonical\"" generate "$p/plaza-radial-density.toml" --set lattice.mode=quota
+  refused "values" generate "$p/plaza-radial-density.toml" --set 'curds.0.density.values=[nan,1]'
   # Markup in a name is text in every drawing, never markup.
   timeout 60 "$curdle" generate "$p/brick-facade-five-storeys.toml" --set 'name=Smith & Sons <script>' \
     --outputs layout.svg,install.svg --out "$work/named" > /dev/null 2>&1 && pass || fail "a name with & and < was refused"
@@ -147,6 +157,7 @@ cases = [
     ("/api/generate?window=", 400),
     ("/api/search?seeds=1..268435456", 413),
     ("/api/export?file=layout.svg&layout.mask=%22%2Fdev%2Fzero%22", 400),
+    ("/api/generate?curds.0.density=%7Bkind%3D%22image%22%2Cpath%3D%22%2Fdev%2Fzero%22%2Cvalues%3D%5B0%2C1%5D%7D", 400),
 ]
 for path, status in cases:
     got, body = get(path)

@@ -221,7 +221,7 @@ TEST(SearchZones, MillimetresBecomeTheCellsLaidThere) {
   run = resolve_run(request);  // laid from the top right: the 200 mm cut pieces are at x, y = 0
   EXPECT_EQ(zone_in_cells("empty=0,0,900,600mm", run), "empty=0,0,4,3");
   EXPECT_EQ(zone_in_cells("empty=200,200,900,600mm", run), "empty=1,1,3,2");
-  for (const std::string& bad :
+  for (const char* bad :
        {"empty=0,0,0,600mm", "empty=0,0,nan,600mm", "empty=0,0,600mm", "empty=30000,0,100,100mm"}) {
     try {
       zone_in_cells(bad, run);

@@ -9,17 +9,36 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
 
 #include "curdle/error.h"
+#include "export/bounded_image.h"
 
 namespace curdle::app {
 
 namespace {
 constexpr uint64_t kMaxRecipeBytes = uint64_t{1} << 20;
+constexpr uint64_t kMaxDensityPixels = uint64_t{1} << 24;  // 4096 x 4096
+
+// Reads the pictures of image density fields, relative to the recipe, as hostile files.
+void load_density_images(Run& run) {
+  for (size_t c = 0; c < run.recipe.design.curds.size(); ++c) {
+    auto& density = run.recipe.design.curds[c].density;
+    if (!density || density->kind != DensityKind::image) continue;
+    const std::string key = "curds." + std::to_string(c) + ".density.path";
+    const auto path = std::filesystem::path(run.recipe_path).parent_path() / density->path;
+    LuminanceImage image = read_bounded_luminance(path, "the density image",
+                                                  SourceLocation{run.recipe_path, 0, 0, key, ""},
+                                                  run.generate.max_memory_bytes, kMaxDensityPixels);
+    density->width = image.width;
+    density->height = image.height;
+    density->luminance = std::make_shared<const std::vector<float>>(std::move(image.luminance));
+  }
 }
+}  // namespace
 
 uint64_t default_memory_limit() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGE_SIZE);
@@ -103,6 +122,7 @@ Run resolve_run(const RunRequest& request) {
   }
   run.generate.max_memory_bytes = request.max_memory ? request.max_memory : default_memory_limit();
   run.generate.memory_limit_hint = request.memory_limit_hint;
+  load_density_images(run);
   return run;
 }
 

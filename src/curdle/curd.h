@@ -8,6 +8,7 @@
 #include "curdle/bitset.h"
 #include "curdle/box.h"
 #include "curdle/cell_index.h"
+#include "curdle/density.h"
 #include "curdle/lattice.h"
 #include "curdle/probability.h"
 
@@ -22,6 +23,7 @@ struct CurdSpec {
   std::string name;
   std::vector<Probability> probabilities;  // one per stage
   std::optional<Rgb> colour;
+  std::optional<DensityField> density;  // [curds.density]; canonical mode only (density.h)
 };
 
 // Everything the engine needs besides the seed: the recipe without its file.

@@ -44,6 +44,8 @@ struct StageWork {
   int stage;
   const Probability& p;
   uint64_t children;  // b^E
+  const DensityField* density;     // null: every child survives with p
+  double product_before, product;  // P_(k-1) and P_k, for a density field
 };
 
 // Which children of a parent meet the box: one bit per child digit along each axis.
@@ -364,10 +366,53 @@ void for_each_parent(const StageWork& w, const Bitset& parents, uint64_t begin, 
   });
 }
 
+// A density field (density.h): each child survives with its own q = S_k(child) / S_(k-1)(parent),
+// drawn from the same bytes and tie breaks as a plain stage, so that P(survive) = q exactly.
+void density_children(const StageWork& w, uint64_t index, uint64_t path, uint32_t root,
+                      Bitset& children) {
+  const DensityField& field = *w.density;
+  const Lattice& l = w.index.lattice();
+  const Coord parent = w.index.decode(w.stage - 1, index);
+  const double before = field.survival(l, w.stage - 1, parent, w.product_before);
+  if (!(before > 0)) return;  // a parent that could not survive has no children
+  const ChildFilter filter = filter_children(w, index);
+  const uint64_t B = w.children;
+  const auto& digits = w.index.child_digits();
+  RandomStream::Block draw{};
+  uint64_t drawn = UINT64_MAX;
+  for (uint64_t c = 0; c < B; ++c) {
+    if (!filter.all && !filter.allows(digits[c])) continue;
+    Coord child{};
+    for (int d = 0; d < 3; ++d) child[d] = d < l.dimension ? parent[d] * l.base + digits[c][d] : 0;
+    const Threshold t = threshold_of(field.survival(l, w.stage, child, w.product) / before);
+    bool survives = t.certain;
+    if (!survives && t.value != 0) {
+      const uint64_t at = path * B + c;
+      if (at >> 4 != drawn) {
+        draw = w.rng.draw(at >> 4, root, w.curd, w.stage, DrawKind::survival, 0);
+        drawn = at >> 4;
+      }
+      const unsigned byte = static_cast<unsigned>(at & 15);
+      const uint32_t mine = draw[byte / 4] >> (8 * (byte % 4)) & 0xff;
+      const auto top = static_cast<uint32_t>(t.value >> 56);
+      survives = mine < top;
+      if (mine == top && (t.value & kLow56) != 0) {
+        const auto tie = w.rng.draw(at, root, w.curd, w.stage, DrawKind::tie_break, 0);
+        survives = (RandomStream::high_word(tie) >> 8) < (t.value & kLow56);
+      }
+    }
+    if (survives) children.set(index * B + c);
+  }
+}
+
 void canonical_or_exact_stage(const StageWork& w, const Bitset& parents, Bitset& children) {
   const uint64_t B = w.children;
   auto run = [&](uint64_t begin, uint64_t end) {
-    if (w.mode == Mode::exact) {
+    if (w.density) {
+      for_each_parent(w, parents, begin, end, [&](uint64_t i, uint64_t path, uint32_t code) {
+        density_children(w, i, path, code, children);
+      });
+    } else if (w.mode == Mode::exact) {
       const uint64_t keep = w.p.round_times(B);
       std::vector<std::pair<uint64_t, uint32_t>> keys;
       std::vector<uint64_t> chosen;
@@ -534,7 +579,10 @@ void curdle_into(const Design& design, uint64_t seed, const Box& view, CurdField
                            static_cast<uint32_t>(c),
                            k,
                            design.curds[c].probabilities[k - 1],
-                           lattice.children()};
+                           lattice.children(),
+                           design.curds[c].density ? &*design.curds[c].density : nullptr,
+                           survival_probability(design.curds[c].probabilities, k - 1),
+                           survival_probability(design.curds[c].probabilities, k)};
       if (lattice.mode == Mode::quota)
         quota_stage(work,
                     quota_target(design.curds[c].probabilities, k, cells_meeting(lattice, k, box)),

@@ -1,7 +1,9 @@
 #include "curdle/report.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "curdle/density_theory.h"
 #include "curdle/extinction.h"
 #include "curdle/overlay.h"
 #include "curdle/theory.h"
@@ -12,6 +14,32 @@ namespace {
 std::optional<double> finite(double x) {
   if (std::isfinite(x)) return x;
   return std::nullopt;
+}
+
+// With a density field, each finest cell has its own chances: the values' expected counts are
+// summed cell by cell (curds are independent). Empty when no curd has a field.
+std::vector<double> expected_values_with_density(const Design& design, const Box& view) {
+  const auto& curds = design.curds;
+  if (std::none_of(curds.begin(), curds.end(), [](const CurdSpec& c) { return c.density; }))
+    return {};
+  const Lattice& l = design.lattice;
+  std::vector<double> P(curds.size());
+  for (size_t c = 0; c < curds.size(); ++c)
+    P[c] = survival_probability(curds[c].probabilities, l.stages);
+  std::vector<double> expected(size_t{1} << curds.size(), 0.0), alive(curds.size());
+  for (int64_t z = 0; z < view.size[2]; ++z)
+    for (int64_t y = 0; y < view.size[1]; ++y)
+      for (int64_t x = 0; x < view.size[0]; ++x) {
+        const Coord cell{view.origin[0] + x, view.origin[1] + y, view.origin[2] + z};
+        for (size_t c = 0; c < curds.size(); ++c)
+          alive[c] = curds[c].density ? curds[c].density->survival(l, l.stages, cell, P[c]) : P[c];
+        for (size_t v = 0; v < expected.size(); ++v) {
+          double p = 1;
+          for (size_t c = 0; c < curds.size(); ++c) p *= (v >> c & 1) ? alive[c] : 1 - alive[c];
+          expected[v] += p;
+        }
+      }
+  return expected;
 }
 
 }  // namespace
@@ -56,7 +84,13 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     cr.roots = curd.stages[0].count();
     cr.root_box_count = cr.box_counts[0];
     uint64_t previous = cr.roots;
-    cr.expected_box_counts = expected_box_counts(l, spec.probabilities, view);
+    // A density field changes every expectation (density_theory.h).
+    const bool dense = spec.density.has_value();
+    const DensityExpectation density =
+        dense ? expect_with_density(l, spec.probabilities, *spec.density, view)
+              : DensityExpectation{};
+    cr.expected_box_counts =
+        dense ? density.box_counts : expected_box_counts(l, spec.probabilities, view);
     // Per root cell meeting the view: N_k <= R b^(E k), so the ratio never exceeds E.
     const double roots = static_cast<double>(cells_meeting(l, 0, view));
     for (int k = 1; k <= l.stages; ++k) {
@@ -66,9 +100,12 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
       row.cells = cells_meeting(l, k, view);
       // The finest level's box count is its survivors: no second pass over the largest stage.
       row.survivors = k == l.stages ? cr.box_counts[k] : count_survivors(curd, k, l.children());
-      row.expected = expected_survivors(l, spec.probabilities, k, view);
-      row.expected_sd =
-          quota && !report.sd_is_approximate ? 0.0 : survivors_sd(l, spec.probabilities, k, view);
+      row.expected = dense ? density.survivors[static_cast<size_t>(k)]
+                           : expected_survivors(l, spec.probabilities, k, view);
+      row.expected_sd = dense ? density.survivors_sd[static_cast<size_t>(k)]
+                        : quota && !report.sd_is_approximate
+                            ? 0.0
+                            : survivors_sd(l, spec.probabilities, k, view);
       row.box_count = cr.box_counts[k];
       row.expected_box_count = cr.expected_box_counts[static_cast<size_t>(k)];
       if (row.survivors > 0 && previous > 0)
@@ -88,10 +125,13 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
       std::vector<bool> cells(values.size());
       for (size_t i = 0; i < values.size(); ++i) cells[i] = values[i] >> c & 1;
       cr.share_weighted_fit = fit_box_dimension(share_weighted_box_counts(l, view, cells), l.base);
-      cr.expected_share_weighted_fit = fit_box_dimension(
-          expected_share_weighted_box_counts(l, spec.probabilities, view), l.base);
+      // Its expectation is known for a plain curd only; a density field leaves it out.
+      if (!dense)
+        cr.expected_share_weighted_fit = fit_box_dimension(
+            expected_share_weighted_box_counts(l, spec.probabilities, view), l.base);
     }
     cr.final_probability = survival_probability(spec.probabilities, l.stages);
+    if (spec.density) cr.density = describe(*spec.density);
     cr.theory_dimension =
         finite(theory_dimension(l, std::pow(cr.final_probability, 1.0 / l.stages)));
     report.curds.push_back(std::move(cr));
@@ -104,6 +144,7 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
                                   report.curds[0].box_counts.back()}
           : value_counts(field);
   const double cells = static_cast<double>(cells_meeting(l, l.stages, view));
+  const std::vector<double> expected_by_value = expected_values_with_density(design, view);
   for (uint32_t v = 0; v < counts.size(); ++v) {
     ValueRow row;
     row.value = v;
@@ -114,7 +155,7 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
       const double P = report.curds[c].final_probability;
       p *= (v >> c & 1) ? P : 1 - P;
     }
-    row.expected = cells * p;
+    row.expected = expected_by_value.empty() ? cells * p : expected_by_value[v];
     report.values.push_back(std::move(row));
   }
   return report;

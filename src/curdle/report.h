@@ -41,6 +41,7 @@ struct CurdReport {
   std::optional<LineFit> expected_share_weighted_fit;
   std::optional<double> theory_dimension;   // E + log(P_K^(1/K)) / log b, the limit K -> inf
   double final_probability = 0;            // P_K
+  std::string density;  // the curd's density field (density.h, describe()); empty: none
 };
 
 struct ValueRow {

@@ -68,17 +68,12 @@ double course_offset(const LayoutSpec& spec, int64_t row) {
   return (share - std::floor(share + 1e-9)) * (spec.module_w + spec.joint);
 }
 
-namespace {
-
-// The most any of `rows` courses is moved back by the bond.
 double largest_offset(const LayoutSpec& spec, int64_t rows) {
   double most = 0;
   for (int64_t r = 0; r < std::min<int64_t>(rows, 8); ++r)
     most = std::max(most, course_offset(spec, r));
   return most;
 }
-
-}  // namespace
 
 double centring_shift(double extent, double module, double joint) {
   const double pitch = module + joint;

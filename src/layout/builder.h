@@ -19,6 +19,8 @@ std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec);
 
 // How far course `row` (counted from the origin corner) is moved back along x by the bond, mm.
 double course_offset(const LayoutSpec& spec, int64_t row);
+// The most any of `rows` courses is moved back by the bond.
+double largest_offset(const LayoutSpec& spec, int64_t rows);
 
 // The shift that centres the grid on a surface of `extent` mm along one axis: the cut pieces
 // at both ends equal (0 when whole elements fill it).

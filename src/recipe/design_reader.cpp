@@ -3,6 +3,7 @@
 #include <cmath>
 #include <set>
 
+#include "recipe/density_reader.h"
 #include "recipe/recipe.h"
 
 namespace curdle::reading {
@@ -44,7 +45,7 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
   for (size_t i = 0; i < arr->size(); ++i) {
     const std::string path = "curds." + std::to_string(i);
     TableReader r(*arr->get(i)->as_table(), path, top.source(),
-                  {"name", "probabilities", "colour"});
+                  {"name", "probabilities", "colour", "density"});
     CurdSpec curd;
     curd.name = read_string(r, "name").value_or("curd" + std::to_string(i));
     if (curd.name.empty() || curd.name.find_first_of(",\"\n\r+") != std::string::npos)
@@ -71,6 +72,7 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
       curd.colour = parse_colour(*c);
       if (!curd.colour) r.fail("colour", "must be a colour written \"#rrggbb\", e.g. \"#c0392b\"");
     }
+    if (r.get("density")) curd.density = read_density(r, path, lattice, density_units(top));
     curds.push_back(std::move(curd));
   }
   if (stated_stages != 0 && stated_stages != stages)

@@ -3,6 +3,7 @@
 #include "recipe/recipe.h"
 
 #include "layout/builder.h"
+#include "recipe/density_reader.h"
 #include "recipe/design_reader.h"
 #include "recipe/layout_reader.h"
 #include "recipe/overrides.h"
@@ -58,6 +59,10 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
                     "must be " + std::to_string(need[0]) + " x " + std::to_string(need[1]) +
                         " cells, the elements of the layout's floor, wall, sheet or line");
   }
+  for (CurdSpec& curd : recipe.design.curds)
+    if (curd.density)
+      place_density(*curd.density, recipe.layout, recipe.window.value_or(recipe.design.field),
+                    recipe.design.field);
   return recipe;
 }
 
