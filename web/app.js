@@ -6,15 +6,19 @@
 const $ = (id) => document.getElementById(id);
 
 const state = {
-  recipe: null,      // /api/recipe, as loaded: the base every override is measured against
+  recipe: null,  // /api/recipe, as loaded: the base every override is measured against
   seed: 1,
-  base: 2, dimension: 2, stages: 1, mode: "canonical",
+  base: 2,
+  dimension: 2,
+  stages: 1,
+  mode: 'canonical',
   field: [1, 1],
   curds: [],         // {name, colour, probabilities: [text]}
   valueColours: [],  // layout.colours, when the recipe has them
   whole: null,       // the last /api/generate of the whole field
   segment: null,     // [x, y, w, h] in cells, or null for the whole field
   segmentReport: null,
+  zones: [],  // the layout's zones: the recipe's, then those added on the page
 };
 
 // ---- overrides: what differs from the recipe, as KEY=VALUE in TOML ----
@@ -56,6 +60,8 @@ function overrides() {
   }
   if (state.valueColours.length && state.valueColours.join() !== originalValueColours().join())
     sets.push(`layout.colours=${tomlArray(state.valueColours.map(tomlString))}`);
+  const zones = zonesOverride();
+  if (zones) sets.push(zones);
   return sets;
 }
 
@@ -162,6 +168,7 @@ function readRecipeIntoState(r) {
   state.fieldTouched = false;
   state.curds = r.curds.map((c) => ({ name: c.name, colour: c.colour, probabilities: c.probabilities.slice() }));
   state.valueColours = originalValueColours();
+  state.zones = JSON.parse(JSON.stringify(recipeZones()));
   state.segment = r.default_window && r.lattice.dimension === 2 ? r.default_window.slice() : null;
   const floor = r.layout && r.layout.segment_cells;
   $("fix-floor-label").hidden = !floor;
@@ -431,6 +438,7 @@ function wireControls() {
   $("search-results").addEventListener("click", pickHit);
   window.addEventListener("resize", () => state.whole && draw());
   wireCanvas();
+  wireZones();
   wireMeasure();
 }
 

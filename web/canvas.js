@@ -56,7 +56,11 @@ function draw() {
 
 function placeSelection() {
   const box = $("selection");
-  if (!state.segment || !state.whole) { box.hidden = true; return; }
+  if (!state.segment || !state.whole) {
+    box.hidden = true;
+    if (state.whole) drawSurface();
+    return;
+  }
   const [w, h] = fieldSize();
   const canvas = $("curd");
   const sx = canvas.clientWidth / w, sy = canvas.clientHeight / h;
@@ -74,6 +78,7 @@ function placeSelection() {
     size = ` · ${(sw * layout.cell_mm[0] / 1000).toFixed(2)} × ${(sh * layout.cell_mm[1] / 1000).toFixed(2)} m`;
   $("segment-text").textContent = `Segment ${windowText()} (x, y, width, height in cells)${size}`;
   if (document.activeElement !== $("window-text")) $("window-text").value = windowText();
+  drawSurface();
 }
 
 // ---- selection ----
@@ -140,6 +145,10 @@ function wireCanvas() {
   canvas.addEventListener("pointerdown", (e) => {
     if (!state.whole || !state.whole.values) return;
     canvas.setPointerCapture(e.pointerId);
+    if ($('zone-draw').checked) {
+      zoneDrag(e, 'start');
+      return;
+    }  // a zone, not a segment
     dragFrom = cellAt(e);
     state.segment = segmentFrom(dragFrom, dragFrom);
     placeSelection();
@@ -149,11 +158,19 @@ function wireCanvas() {
     const cell = cellAt(e);
     const v = decodeValueAt(cell);
     $("hover").textContent = `cell ${cell[0]}, ${cell[1]}: ${v === null ? "" : state.whole.legend[v].label}`;
+    if (zoneFrom) {
+      zoneDrag(e, 'move');
+      return;
+    }
     if (!dragFrom) return;
     state.segment = segmentFrom(dragFrom, cell);
     placeSelection();
   });
   const end = (e) => {
+    if (zoneFrom) {
+      zoneDrag(e, 'end');
+      return;
+    }
     if (!dragFrom) return;
     state.segment = segmentFrom(dragFrom, cellAt(e));
     dragFrom = null;

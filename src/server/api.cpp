@@ -25,6 +25,7 @@
 #include "export/measure_files.h"
 #include "export/report_json.h"
 #include "layout/builder.h"
+#include "layout/cell_placement.h"
 
 namespace fs = std::filesystem;
 using nlohmann::ordered_json;
@@ -152,6 +153,39 @@ ordered_json box_json(const Box& b, int dimension) {
   return j;
 }
 
+ordered_json polygon_json(const Polygon& polygon) {
+  ordered_json points = ordered_json::array();
+  for (const auto& p : polygon) points.push_back({p[0], p[1]});
+  return points;
+}
+
+// The surface the page draws over the floor's segment: its outline and zones in mm, and where
+// the segment's cells lie (mm = origin_mm + cell_mm * u, u in cells from the segment's corner,
+// without a bond's course shifts).
+ordered_json surface_json(const LayoutSpec& spec) {
+  const auto need = elements_to_cover(spec);
+  Box segment;
+  segment.size = {need[0], need[1], 1};
+  const CellPlacement placement = cell_placement(spec, segment);
+  const auto extent = surface_extent(spec, segment);
+  ordered_json zones = ordered_json::array();
+  for (const Zone& z : spec.zones) {
+    ordered_json zone = {{"name", z.name},
+                         {"rule", z.rule == ZoneRule::exclude ? "exclude" : "value"},
+                         {"polygon", polygon_json(z.polygon)}};
+    if (z.rule == ZoneRule::value) zone["value"] = z.value;
+    zones.push_back(zone);
+  }
+  return {
+      {"origin_mm", {placement.origin[0], placement.origin[1]}},
+      {"cell_mm", {placement.scale[0], placement.scale[1]}},
+      {"outline_mm",
+       polygon_json(spec.outline.empty()
+                        ? Polygon{{0, 0}, {extent[0], 0}, {extent[0], extent[1]}, {0, extent[1]}}
+                        : spec.outline)},
+      {"zones", zones}};
+}
+
 // What the page draws and edits: the design, layout facts and the legend.
 ordered_json describe(const app::Run& s) {
   const Design& d = s.recipe.design;
@@ -191,6 +225,7 @@ ordered_json describe(const app::Run& s) {
       const auto need = elements_to_cover(spec);
       j["layout"]["size_mm"] = {(*spec.size)[0], (*spec.size)[1]};
       j["layout"]["segment_cells"] = {need[0], need[1]};
+      if (!line && spec.kind() != LayoutKind::blocks) j["layout"]["surface"] = surface_json(spec);
     }
   } else {
     const auto colours = value_colours(d.curds);

@@ -18,18 +18,23 @@ const check = (ok, what) => {
   if (!ok) failures++;
 };
 
-// The server, on any free port of the loopback address.
-const server = spawn(curdle, ['serve', '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
-const url = await new Promise((resolve, reject) => {
-  let text = '';
-  server.stdout.on('data', (d) => {
-    text += d;
-    const m = /open (http:\/\/127\.0\.0\.1:\d+\/)/.exec(text);
-    if (m) resolve(m[1]);
+// A server, on any free port of the loopback address.
+async function serve(args) {
+  const server = spawn(curdle, ['serve', '--port', '0', ...args], { stdio: ['ignore', 'pipe', 'inherit'] });
+  const url = await new Promise((resolve, reject) => {
+    let text = '';
+    server.stdout.on('data', (d) => {
+      text += d;
+      const m = /open (http:\/\/127\.0\.0\.1:\d+\/)/.exec(text);
+      if (m) resolve(m[1]);
+    });
+    server.on('exit', (code) => reject(new Error(`curdle serve exited ${code}: ${text}`)));
+    setTimeout(() => reject(new Error(`curdle serve printed no address: ${text}`)), 20000);
   });
-  server.on('exit', (code) => reject(new Error(`curdle serve exited ${code}: ${text}`)));
-  setTimeout(() => reject(new Error(`curdle serve printed no address: ${text}`)), 20000);
-});
+  return { server, url };
+}
+const { server, url } = await serve([]);
+const source = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 
 const browser = await chromium.launch({
   executablePath: '/usr/bin/chromium',
@@ -204,6 +209,57 @@ try {
   await page.setInputFiles('#measure-file', notPicture);
   await page.waitForFunction(() => document.querySelector('#error').textContent.includes('cannot read the picture not-a-picture.png'));
   check(true, 'a file that is no picture shows the server\'s message');
+
+  // A floor that is not a rectangle: the L-shaped courtyard's outline and zones are drawn over
+  // the curd, and zones drawn or typed in metres go to the layout and to the search.
+  const yard = await serve([path.join(source, 'patterns/courtyard-l-shaped.toml')]);
+  try {
+    await page.goto(yard.url);
+    await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+    const overlay = page.locator('#surface-overlay');
+    check(await overlay.locator('polygon.outline').count() === 1 &&
+          (await overlay.locator('polygon.outline').getAttribute('points')).split(' ').length === 6,
+          'the courtyard\'s L-shaped outline (6 corners) is drawn over the curd');
+    check(await overlay.locator('polygon.zone.exclude').count() === 1 && await overlay.locator('polygon.zone.value').count() === 1,
+          'its planter (kept free) and entrance band (one value) are drawn');
+    // A drag from beyond the floor's bottom-left to beyond its top-right is clamped to the floor.
+    await page.check('#zone-draw');
+    const segmentBefore = await page.inputValue('#window-text');
+    const box = await page.locator('#curd').boundingBox();
+    await page.mouse.move(box.x + 1, box.y + box.height - 1);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width - 1, box.y + 1, { steps: 4 });
+    await page.mouse.up();
+    const drawn = await Promise.all(['#zone-x', '#zone-y', '#zone-w', '#zone-h'].map((id) => page.inputValue(id)));
+    check(drawn.join() === '0,0,12,8', `a zone dragged over the whole floor is 0, 0, 12 x 8 m (${drawn.join(', ')})`);
+    check(await page.inputValue('#window-text') === segmentBefore && await overlay.locator('polygon.zone.drawn').count() === 1,
+          'the drawn zone is shown, and the segment is left as it was');
+    // A zone typed in metres: a drain kept free, then a search that keeps it empty.
+    for (const [id, v] of [['#zone-x', '9'], ['#zone-y', '1'], ['#zone-w', '2'], ['#zone-h', '1.5']]) await page.fill(id, v);
+    await page.fill('#zone-name', 'drain');
+    const zoned = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+    await page.click('#zone-add');
+    const zonedUrl = decodeURIComponent((await zoned).url()).replace(/\+/g, ' ');
+    check(zonedUrl.includes('{name="drain",polygon=[[9000,1000],[11000,1000],[11000,2500],[9000,2500]],rule="exclude"}'),
+          'the typed zone is sent as a layout zone in mm');
+    await page.waitForFunction(() => document.querySelectorAll('#surface-overlay polygon.zone.exclude').length === 2);
+    check(await page.locator('#error').isHidden(), 'the layout with the added zone generates without error');
+    await page.locator('#canvas-wrap').screenshot({ path: path.join(shots, '6-courtyard-zones.png') });
+    await page.click('#zone-target');
+    check((await page.inputValue('#search-targets')).trim() === 'empty=9000,1000,2000,1500 mm', 'the zone becomes a search target in mm');
+    await page.fill('#search-seeds', '1..6');
+    const searched = page.waitForResponse((r) => r.url().includes('/api/search'));
+    await page.click('#search-run');
+    check((await searched).status() === 200, 'the search accepts the zone in mm');
+    await page.click('button[aria-label="Remove zone drain"]');
+    await page.waitForFunction(() => document.querySelectorAll('#surface-overlay polygon.zone.exclude').length === 1);
+    check(true, 'a removed zone leaves the layout');
+    await page.fill('#zone-w', '40');
+    await page.click('#zone-add');
+    check((await page.textContent('#error')).includes('inside the floor of 12 × 8 m'), 'a zone beyond the floor is refused, naming the floor');
+  } finally {
+    yard.server.kill('SIGINT');
+  }
   check(pageErrors.length === 0, `no script errors on the page ${pageErrors.join('; ')}`);
 } finally {
   await browser.close();
