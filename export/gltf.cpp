@@ -198,6 +198,40 @@ tinygltf::Value element_extras(const Element& e, const Provenance& design) {
   return tinygltf::Value(o);
 }
 
+// A solid from `base` to `top` over rings with the material on their left (outer rings
+// counter-clockwise, islands clockwise, as union.h makes them): its top and bottom faces
+// (triangulated with CGAL) and a wall along every edge.
+void add_prism(const Layout& layout, const std::vector<Ring>& rings, double base, double top,
+               std::vector<Vec3>& p, std::vector<Vec3>& n, std::vector<uint32_t>& idx) {
+  for (const auto& tri : triangulate(rings)) {
+    for (int face = 0; face < 2; ++face) {  // top, then bottom facing down
+      const uint32_t first = static_cast<uint32_t>(p.size());
+      for (int k = 0; k < 3; ++k) {
+        const auto& v = tri[face ? 2 - k : k];
+        p.push_back(to_gltf(layout, v[0], v[1], face ? base : top));
+        n.push_back(face ? Vec3{0, -1, 0} : Vec3{0, 1, 0});
+      }
+      idx.insert(idx.end(), {first, first + 1, first + 2});
+    }
+  }
+  for (const Ring& ring : rings)
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const auto a = ring[i], c = ring[(i + 1) % ring.size()];
+      const double dx = c[0] - a[0], dy = c[1] - a[1], len = std::hypot(dx, dy);
+      if (len == 0) continue;
+      const Vec3 normal = to_gltf(layout, dy / len * 1000, -dx / len * 1000, 0);
+      const uint32_t first = static_cast<uint32_t>(p.size());
+      for (const auto& [x, y, up] : {std::array<double, 3>{a[0], a[1], base},
+                                     {c[0], c[1], base},
+                                     {c[0], c[1], top},
+                                     {a[0], a[1], top}}) {
+        p.push_back(to_gltf(layout, x, y, up));
+        n.push_back(normal);
+      }
+      idx.insert(idx.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+    }
+}
+
 tinygltf::Model build(const Layout& layout) {
   const Provenance& design = layout.source;
   const LayoutSpec& spec = layout.spec;
@@ -245,12 +279,23 @@ tinygltf::Model build(const Layout& layout) {
     const int bed =
         b.add_material("joint", layout.joint > 0 ? layout.joint_colour : Rgb{200, 200, 200}, 0, 1);
     // Under the surface only: not beyond an outline, nor under an excluded zone or opening.
-    const std::vector<Rect> beds =
-        subtract(Rect{0, 0, layout.width, layout.height}, layout.holes());
-    for (size_t i = 0; i < beds.size(); ++i) {
-      tinygltf::Node n = box_node(beds[i], -5, t * 0.8 + 5, bed);
-      n.name = i ? "bed-" + std::to_string(i) : "bed";
-      roots.push_back(b.add_node(std::move(n)));
+    const Rect surface{0, 0, layout.width, layout.height};
+    if (layout.cut_away.empty()) {
+      const std::vector<Rect> beds = subtract(surface, layout.holes());
+      for (size_t i = 0; i < beds.size(); ++i) {
+        tinygltf::Node n = box_node(beds[i], -5, t * 0.8 + 5, bed);
+        n.name = i ? "bed-" + std::to_string(i) : "bed";
+        roots.push_back(b.add_node(std::move(n)));
+      }
+    } else {  // sloping or curved edges: one solid along them
+      std::vector<Vec3> p, n;
+      std::vector<uint32_t> idx;
+      for (const Outline& o : surfaced(surface, layout.holes(), layout.cut_away))
+        add_prism(layout, o.rings, -5, t * 0.8, p, n, idx);
+      tinygltf::Node node;
+      node.name = "bed";
+      node.mesh = b.add_mesh("bed", {b.primitive(p, n, idx, bed)});
+      roots.push_back(b.add_node(std::move(node)));
     }
   }
 
@@ -418,6 +463,15 @@ tinygltf::Model build(const Layout& layout) {
       return part_material[key] = b.add_material(name, colour, metallic, 0.8);
     };
     for (const Element& e : layout.elements) {
+      if (e.outline) {  // cut along a sloping or curved edge: its own solid
+        std::vector<Vec3> p, n;
+        std::vector<uint32_t> idx;
+        add_prism(layout, e.outline->rings, 0, t, p, n, idx);
+        tinygltf::Node node;
+        node.mesh = b.add_mesh("piece " + e.id, {b.primitive(p, n, idx, material[e.value])});
+        roots.push_back(named(e, std::move(node)));
+        continue;
+      }
       const std::vector<ColouredRect> parts = keep_stripes(layout, e);
       if (parts.size() == 1) {
         roots.push_back(named(e, box_node(parts[0].rect, 0, t, material_of(e, parts[0].colour))));

@@ -37,6 +37,16 @@ std::string centred_text(double x, double y, double cap, double scale, const std
       num(x), num(y + cap * scale / 2), num(size), fill, at, xml_escape(s));
 }
 
+// Closed rings as path data, for an even-odd fill.
+std::string rings_path(const std::vector<Ring>& rings, const Frame& f) {
+  std::string d;
+  for (const Ring& ring : rings)
+    for (size_t i = 0; i < ring.size(); ++i)
+      d += fmt::format("{}{} {}{}", i ? "L" : "M", num(f.x(ring[i][0])), num(f.y(ring[i][1])),
+                       i + 1 == ring.size() ? "z" : "");
+  return d;
+}
+
 void write_element(std::ostream& out, const Layout& layout, const Element& e, const Frame& f) {
   const Rgb& c = piece_colour(layout, e);
   const std::string fill = fmt::format("rgb({},{},{})", c.r, c.g, c.b);
@@ -45,13 +55,9 @@ void write_element(std::ostream& out, const Layout& layout, const Element& e, co
   if (e.circle) {
     out << fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>", num(f.x(e.circle->cx)),
                        num(f.y(e.circle->cy)), num(e.circle->d / 2), fill);
-  } else if (e.outline) {  // merged openings, cut as their union
-    std::string d;
-    for (const Ring& ring : e.outline->rings)
-      for (size_t i = 0; i < ring.size(); ++i)
-        d += fmt::format("{}{} {}{}", i ? "L" : "M", num(f.x(ring[i][0])), num(f.y(ring[i][1])),
-                         i + 1 == ring.size() ? "z" : "");
-    out << fmt::format("<path d=\"{}\" fill=\"{}\" fill-rule=\"evenodd\"/>", d, fill);
+  } else if (e.outline) {  // merged openings, or a piece cut along a sloping edge
+    out << fmt::format("<path d=\"{}\" fill=\"{}\" fill-rule=\"evenodd\"/>",
+                       rings_path(e.outline->rings, f), fill);
   } else {
     for (const Rect& r : e.shape.empty() ? std::vector<Rect>{e.nominal} : e.shape)
       out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
@@ -96,6 +102,8 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
   for (const Rect& o : layout.outside)
     out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(f.x(o.x)),
                        num(f.y(o.top())), num(o.w), num(o.h));
+  for (const Outline& o : layout.cut_away)  // beyond sloping edges, in sloping zones
+    out << fmt::format("<path fill-rule=\"evenodd\" d=\"{}\"/>\n", rings_path(o.rings, f));
   out << "</g>\n";
   if (outlined) {
     std::string d;

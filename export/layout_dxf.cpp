@@ -16,7 +16,7 @@ constexpr Rgb kInk{0, 0, 0};
 
 std::string layer_of(const Layout& layout, const Element& e) {
   if (e.circle && layout.kind == LayoutKind::perforation) return hole_layer(e.circle->d);
-  if (e.outline) return "OPENING_OUTLINE";
+  if (e.outline && is_opening(layout, e)) return "OPENING_OUTLINE";
   const std::string& material = piece_material(layout, e);
   if (layout.kind == LayoutKind::blocks)
     return fmt::format("L{} {}", e.cell_z - layout.view.origin[2], material);

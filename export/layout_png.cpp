@@ -139,6 +139,7 @@ PreviewImage render_layout(const Layout& layout) {
     canvas.rgb[i + 2] = background.b;
   for (const Rect& o : layout.openings) canvas.fill(o, Rgb{223, 234, 242});
   for (const Rect& o : layout.outside) canvas.fill(o, Rgb{255, 255, 255});  // not the surface
+  for (const Outline& o : layout.cut_away) canvas.fill(o, Rgb{255, 255, 255});
   for (const Layout::ViewCell& v : layout.views) canvas.fill(v.rect, layout.legend[v.value].colour);
   for (const Element& e : layout.elements) {
     if (!layout.views.empty()) break;  // blocks are drawn as their views

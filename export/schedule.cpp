@@ -16,7 +16,7 @@ namespace {
 
 std::string type_of(const Layout& layout, const Element& e) {
   if (!e.type.empty()) return e.type;
-  if (e.circle || e.outline) return "opening";
+  if (is_opening(layout, e)) return "opening";
   return layout.element_type;
 }
 
@@ -29,7 +29,7 @@ std::string size_of(const Layout& layout, const Element& e) {
     s += mm_text(e.circle->d);
     return s;
   }
-  if (e.outline) return "merged opening";
+  if (e.outline && is_opening(layout, e)) return "merged opening";
   const double h = is_blocks(layout) ? layout.spec.blocks().voxel_h : e.stock_h;
   std::string s = mm_text(e.stock_w) + " x " + mm_text(h);
   if (is_blocks(layout)) s += " x " + mm_text(e.stock_h);
@@ -94,7 +94,7 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
     if (e.circle)
       fmt::format_to(std::back_inserter(buffer), ",{},{},{}", mm_text(e.circle->cx),
                      mm_text(e.circle->cy), mm_text(e.circle->d));
-    else if (e.outline)
+    else if (e.outline && is_opening(layout, e))
       fmt::format_to(std::back_inserter(buffer), ",{},{},", mm_text(b.x + b.w / 2),
                      mm_text(b.y + b.h / 2));
     else

@@ -73,6 +73,16 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
   for (const Rect& o : layout.openings) v.rect(cr, o), cairo_fill(cr);
   colour(cr, Rgb{255, 255, 255});  // beyond the outline: paper
   for (const Rect& o : layout.outside) v.rect(cr, o), cairo_fill(cr);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);  // beyond sloping edges, in sloping zones
+  for (const Outline& o : layout.cut_away) {
+    for (const Ring& ring : o.rings) {
+      for (size_t i = 0; i < ring.size(); ++i)
+        (i ? cairo_line_to : cairo_move_to)(cr, v.x(ring[i][0]), v.y(ring[i][1]));
+      cairo_close_path(cr);
+    }
+    cairo_fill(cr);
+  }
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
   for (const Layout::ViewCell& c : layout.views) {
     colour(cr, layout.legend[c.value].colour, alpha);
     v.rect(cr, c.rect);

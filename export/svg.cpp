@@ -230,7 +230,10 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
     for (const Element* e : cut[entry.value]) {
       std::string d;
       for (const Rect& r : e->shape) d += rect_path(s, r);
-      out << fmt::format("<path id=\"{}\" class=\"cut\" d=\"{}\" data-count=\"1\"/>\n", e->id, d);
+      if (e->outline)  // cut along a sloping or curved edge
+        for (const Ring& ring : e->outline->rings) d += polygon_path(s, ring);
+      out << fmt::format("<path id=\"{}\" class=\"cut\" d=\"{}\"{} data-count=\"1\"/>\n", e->id, d,
+                         e->outline ? " fill-rule=\"evenodd\"" : "");
     }
     out << "</g>\n";
   }
@@ -260,13 +263,21 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
                          hex_colour(layout.joint_colour), d);
   }
   // Beyond the outline is paper, not surface: white over the joints, and the outline drawn.
-  if (!layout.outside.empty()) {
+  if (!layout.outside.empty() || !layout.cut_away.empty()) {
     out << "<g id=\"outside\" class=\"outside\" fill=\"#ffffff\">\n";
     for (const Rect& o : layout.outside)
       out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", mm(s.x(o.x)),
                          mm(s.y(o.y, o.h)), mm(o.w), mm(o.h));
+    for (const Outline& o : layout.cut_away) {  // beyond sloping edges, in sloping zones
+      std::string d;
+      for (const Ring& ring : o.rings) d += polygon_path(s, ring);
+      out << fmt::format("<path fill-rule=\"evenodd\" d=\"{}\"/>\n", d);
+    }
+    out << "</g>\n";
+  }
+  if (!layout.outline.empty()) {
     out << fmt::format(
-        "</g>\n<path id=\"outline\" class=\"outline\" d=\"{}\" fill=\"none\" stroke=\"#222\" "
+        "<path id=\"outline\" class=\"outline\" d=\"{}\" fill=\"none\" stroke=\"#222\" "
         "stroke-width=\"{}\"/>\n",
         polygon_path(s, layout.outline), mm(unit * 0.08));
   }

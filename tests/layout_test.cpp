@@ -736,4 +736,75 @@ TEST(Layout, AnOutlineIsCoveredExactly) {
   }
 }
 
+// Sloping and curved edges: a terrace with a chamfered corner and an arched edge (a polyline),
+// and a round tree pit kept free. No piece reaches beyond the outline or into the pit, pieces
+// crossing them are cut to their exact shapes, and pieces, joints and the pit add up to the
+// outline's area, stacked and in running bond.
+TEST(Layout, SlopingAndCurvedEdgesCutPiecesExactly) {
+  const Design d = design(3, 2, {{"3/4", "1/2"}});
+  Polygon terrace = {{0, 0}, {8500, 0}, {10000, 1500}, {10000, 5000}};
+  for (int i = 1; i < 24; ++i) {  // the arc through (5000, 6000), radius 13 m
+    const double a0 = std::atan2(5000 + 7000.0, 5000.0), a1 = std::atan2(12000.0, -5000.0);
+    const double a = a0 + (a1 - a0) * i / 24;
+    terrace.push_back({5000 + 13000 * std::cos(a), -7000 + 13000 * std::sin(a)});
+  }
+  terrace.push_back({0, 5000});
+  Polygon pit;
+  for (int i = 0; i < 32; ++i)
+    pit.push_back({3000 + 700 * std::cos(i * M_PI / 16), 2500 + 700 * std::sin(i * M_PI / 16)});
+  auto on_edge = [](const Polygon& p, const std::array<double, 2>& v) {  // to a rounding error
+    for (size_t i = 0; i < p.size(); ++i) {
+      const auto& a = p[i];
+      const auto& b = p[(i + 1) % p.size()];
+      const double dx = b[0] - a[0], dy = b[1] - a[1];
+      const double t =
+          std::clamp(((v[0] - a[0]) * dx + (v[1] - a[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      if (std::hypot(a[0] + t * dx - v[0], a[1] + t * dy - v[1]) < 1e-6) return true;
+    }
+    return false;
+  };
+  auto on_or_inside = [&](const Polygon& p, const std::array<double, 2>& v) {
+    return contains(p, v[0], v[1]) || on_edge(p, v);
+  };
+  auto strictly_inside = [&](const Polygon& p, const std::array<double, 2>& v) {
+    return contains(p, v[0], v[1]) && !on_edge(p, v);
+  };
+  for (const double bond : {0.0, 0.5}) {
+    LayoutSpec spec;
+    spec.set_kind(LayoutKind::paving);
+    spec.module_w = 500, spec.module_h = 250, spec.joint = 6;
+    spec.size = std::array<double, 2>{10000, 6000};
+    spec.outline = terrace;
+    spec.bond = bond;
+    spec.zones = {{"tree pit", ZoneRule::exclude, 0, pit, {}}};
+    Design sized = d;
+    const auto cells = elements_to_cover(spec);
+    sized.field.size = {cells[0], cells[1], 1};
+    const Layout layout = make_layout(sized, curdle(sized, 5, sized.field), sized.field, spec);
+    ASSERT_FALSE(layout.cut_away.empty());
+    double elements = 0;
+    size_t shaped = 0;
+    for (const Element& e : layout.elements) {
+      elements += e.area();
+      std::vector<std::array<double, 2>> corners;
+      if (e.outline) {
+        ++shaped;
+        EXPECT_TRUE(e.cut) << e.id;
+        for (const Ring& ring : e.outline->rings)
+          corners.insert(corners.end(), ring.begin(), ring.end());
+      }
+      for (const Rect& r : e.shape)
+        corners.insert(corners.end(),
+                       {{r.x, r.y}, {r.right(), r.y}, {r.right(), r.top()}, {r.x, r.top()}});
+      for (const auto& v : corners) {
+        EXPECT_TRUE(on_or_inside(terrace, v)) << e.id << " has a corner beyond the outline";
+        EXPECT_FALSE(strictly_inside(pit, v)) << e.id << " has a corner in the pit";
+      }
+    }
+    EXPECT_GT(shaped, 40u) << "pieces along the arc, the chamfer and the pit are cut to shape";
+    EXPECT_NEAR(elements + joint_area(layout) + polygon_area(pit), polygon_area(terrace), 1e-2)
+        << "bond " << bond;
+  }
+}
+
 }  // namespace curdle

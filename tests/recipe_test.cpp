@@ -162,7 +162,6 @@ TEST(Recipe, Zones) {
   EXPECT_EQ(r.layout->zones[1].value, 1u);
   const std::vector<std::pair<std::string, std::string>> wrong = {
       {planter + "rect = [7000, 3000, 9000, 3000]\n", "outside the surface"},
-      {planter + "polygon = [[0, 0], [1000, 0], [500, 900]]\n", "sloping edge"},
       {planter + "polygon = [[0, 0], [1000, 1000], [1000, 0], [0, 1000]]\n", "simple polygon"},
       {planter + "rect = [0, 0, nan, 10]\n", "layout.zones.0.rect"},
       {planter, "either rect"},
@@ -186,8 +185,14 @@ TEST(Recipe, Outline) {
   ASSERT_TRUE(r.layout->size);
   EXPECT_EQ(*r.layout->size, (std::array<double, 2>{12000, 8000}));
   EXPECT_EQ(r.layout->outline.size(), 6u);
+  // Sloping and curved edges are cut along (a triangle here), but not in keep mode.
+  EXPECT_EQ(parse_recipe(head + "outline = [[0, 0], [1000, 0], [500, 900]]\n", "r.toml")
+                .layout->outline.size(),
+            3u);
+  EXPECT_NE(error_of(head + "combine = \"keep\"\noutline = [[0, 0], [1000, 0], [500, 900]]\n")
+                .find("combine = \"mix\""),
+            std::string::npos);
   const std::vector<std::pair<std::string, std::string>> wrong = {
-      {"outline = [[0, 0], [1000, 0], [500, 900]]\n", "sloping edge"},
       {"outline = [[-10, 0], [1000, 0], [1000, 900], [-10, 900]]\n", "from 0"},
       {"floor = [500, 500]\noutline = [[0, 0], [1000, 0], [1000, 900], [0, 900]]\n",
        "outside the surface"},

@@ -13,6 +13,7 @@
 #include "layout/perforation.h"
 #include "layout/piece.h"
 #include "layout/rhythm.h"
+#include "layout/union.h"
 #include "layout/zone.h"
 
 namespace curdle {
@@ -114,6 +115,38 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
 
 namespace {
 
+// Where a piece crosses a sloping or curved edge (of the outline or an excluded zone), its
+// exact shape: the rectangles give way to one outline (of one or more parts). Pieces wholly
+// inside keep their rectangles; pieces wholly outside are left with nothing.
+void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
+  const Rect b = laid_bounds(e);
+  bool crosses = false;
+  auto meet = [&](const Polygon& p) {
+    const Crossing c = crossing(b, p);
+    crosses |= c == Crossing::boundary;
+    return c;
+  };
+  if (!cuts.outline.empty() && meet(cuts.outline) == Crossing::outside) {
+    e.shape.clear();
+    return;
+  }
+  for (const Polygon& hole : cuts.holes)
+    if (meet(hole) == Crossing::inside) {
+      e.shape.clear();
+      return;
+    }
+  if (!crosses) return;
+  Outline piece;
+  for (Outline& part : cut_along(e.shape, cuts)) {
+    piece.rings.insert(piece.rings.end(), part.rings.begin(), part.rings.end());
+    piece.area += part.area;
+  }
+  e.shape.clear();
+  if (piece.area < kEps) return;
+  e.outline = std::move(piece);
+  e.cut = true;
+}
+
 // Value zones give their value to the elements whose centre they hold (the first zone listed
 // that holds it decides); every zone counts what it holds, and an excluded zone the pieces cut
 // along it.
@@ -130,8 +163,9 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
     for (size_t i = 0; i < spec.zones.size(); ++i) {
       const Zone& z = spec.zones[i];
       if (z.rule == ZoneRule::exclude && e.cut &&
-          std::any_of(z.rects.begin(), z.rects.end(),
-                      [&](const Rect& r) { return overlaps(r, e.nominal); }))
+          (z.rects.empty() ? crossing(e.nominal, z.polygon) == Crossing::boundary
+                           : std::any_of(z.rects.begin(), z.rects.end(),
+                                         [&](const Rect& r) { return overlaps(r, e.nominal); })))
         ++layout.zones[i].cut;
       if (contains(z.polygon, cx, cy)) holding.push_back(i);
     }
@@ -195,12 +229,20 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
       for (const Rect& r : z.rects)
         if (const Rect c = clip(r, layout.width, layout.height); c.area() > 0)
           layout.openings.push_back(c);
+  // Edges along x and y cut pieces as rectangles; sloping or curved ones as polygons.
+  PolygonCuts cuts;
   if (!spec.outline.empty()) {
     layout.outline = spec.outline;
-    const auto inside = as_rectangles(spec.outline);  // the reader allows no sloping edge
-    for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, inside.value()))
-      if (r.area() > kEps) layout.outside.push_back(r);
+    if (const auto inside = as_rectangles(spec.outline)) {
+      for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, *inside))
+        if (r.area() > kEps) layout.outside.push_back(r);
+    } else {
+      cuts.outline = spec.outline;
+    }
   }
+  for (const Zone& z : spec.zones)
+    if (z.rule == ZoneRule::exclude && z.rects.empty()) cuts.holes.push_back(z.polygon);
+  if (!cuts.empty()) layout.cut_away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
   const std::vector<Rect> holes = layout.holes();
 
   const bool right = from_right(spec.origin);
@@ -226,11 +268,12 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
       e.stock_w = spec.module_w, e.stock_h = spec.module_h;
       const Rect laid = clip(e.nominal, layout.width, layout.height);
       e.shape = subtract(laid, holes);
-      if (e.shape.empty() || e.area() < kEps) {
+      if (!cuts.empty() && !e.shape.empty()) cut_along_polygons(e, cuts);
+      if ((e.shape.empty() && !e.outline) || e.area() < kEps) {
         ++layout.omitted;  // wholly over an opening or zone, or outside the floor or outline
         continue;
       }
-      e.cut = e.area() < e.nominal.area() - kEps;
+      e.cut = e.cut || e.area() < e.nominal.area() - kEps;
       e.key = ElementId{id_kind(spec.kind()), digits, std::nullopt, row, column, ""};
       e.id = e.key.text();
       layout.elements.push_back(std::move(e));
@@ -295,7 +338,8 @@ double laid_area(const Layout& layout, const std::vector<Rect>& holes, const Rec
   double area = 0;
   const Rect c = clip(r, layout.width, layout.height);
   if (c.area() > 0)
-    for (const Rect& piece : subtract(c, holes)) area += piece.area();
+    for (const Rect& piece : subtract(c, holes))
+      area += piece.area() - area_within(piece, layout.cut_away);
   return area;
 }
 

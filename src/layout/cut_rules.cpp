@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "layout/builder.h"
+#include "layout/piece.h"
 
 namespace curdle {
 namespace {
@@ -145,7 +146,9 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec) {
     if (!e.cut) continue;
     const Rect laid = clip(e.nominal, layout.width, layout.height);
     for (int axis = 0; axis < 2; ++axis) {
-      const double run = narrowest_run(e.shape, axis == 0);
+      // A piece cut along a sloping edge: its extent along each axis.
+      const double run =
+          narrowest_run(e.outline ? std::vector<Rect>{laid_bounds(e)} : e.shape, axis == 0);
       const double least = least_cut(spec, axis);
       if (run >= least - kEps) continue;
       const double laid_extent = axis == 0 ? laid.w : laid.h;

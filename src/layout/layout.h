@@ -257,6 +257,9 @@ struct Layout {
   // (no elements; drawn as paper, not as openings).
   Polygon outline;
   std::vector<Rect> outside;
+  // What of the surface a sloping or curved outline leaves out, and excluded zones with sloping
+  // or curved edges, as exact polygons (union.h's cut_away): pieces are cut along them.
+  std::vector<Outline> cut_away;
   // What is not laid: openings, excluded zones and what lies outside the outline.
   std::vector<Rect> holes() const;
   std::vector<LegendEntry> legend;  // one per value

@@ -24,6 +24,10 @@ Rect laid_bounds(const Element& e) {
   return Rect{x0, y0, x1 - x0, y1 - y0};
 }
 
+bool is_opening(const Layout& layout, const Element& e) {
+  return layout.kind == LayoutKind::perforation && (e.circle || e.outline);
+}
+
 bool is_rectangle(const Element& e) {
   if (e.circle || e.outline) return false;
   if (e.shape.size() <= 1) return true;
@@ -33,8 +37,33 @@ bool is_rectangle(const Element& e) {
   return area >= b.area() - 1e-6;  // disjoint pieces that fill their box
 }
 
+namespace {
+
+double signed_area(const Ring& ring) {
+  double twice = 0;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const auto& a = ring[i];
+    const auto& b = ring[(i + 1) % ring.size()];
+    twice += a[0] * b[1] - b[0] * a[1];
+  }
+  return twice / 2;
+}
+
+}  // namespace
+
 std::vector<Outline> piece_outlines(const Element& e) {
-  if (e.outline) return {*e.outline};
+  if (e.outline) {
+    // Its rings as union.h lists them: each part's outer ring (counter-clockwise), then that
+    // part's islands (clockwise). A piece cut in two is two parts.
+    std::vector<Outline> parts;
+    for (const Ring& ring : e.outline->rings) {
+      const double area = signed_area(ring);
+      if (area > 0 || parts.empty()) parts.emplace_back();
+      parts.back().rings.push_back(ring);
+      parts.back().area += area;
+    }
+    return parts;
+  }
   if (e.circle || is_rectangle(e)) return {};
   return union_of_rects(e.shape);
 }

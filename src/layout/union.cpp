@@ -4,6 +4,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_set_2.h>
 
+#include <algorithm>
 #include <cmath>
 #include <list>
 
@@ -13,6 +14,33 @@ namespace {
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using ExactPolygon = CGAL::Polygon_2<Kernel>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
+
+ExactPolygon exact(const std::vector<std::array<double, 2>>& points) {
+  ExactPolygon p;
+  for (const auto& v : points) p.push_back(Kernel::Point_2(v[0], v[1]));
+  if (p.size() >= 3 && p.is_clockwise_oriented()) p.reverse_orientation();
+  return p;
+}
+
+ExactPolygon exact(const Rect& r) {
+  return exact(Ring{{r.x, r.y}, {r.right(), r.y}, {r.right(), r.top()}, {r.x, r.top()}});
+}
+
+// Outlines (an outer ring and its islands each, as outlines_of makes them) as a polygon set.
+CGAL::Polygon_set_2<Kernel> set_of(const std::vector<Outline>& outlines) {
+  CGAL::Polygon_set_2<Kernel> set;
+  for (const Outline& o : outlines) {
+    if (o.rings.empty()) continue;
+    PolygonWithHoles part(exact(o.rings[0]));
+    for (size_t i = 1; i < o.rings.size(); ++i) {
+      ExactPolygon hole = exact(o.rings[i]);
+      hole.reverse_orientation();  // islands run clockwise
+      part.add_hole(hole);
+    }
+    set.join(part);
+  }
+  return set;
+}
 
 Ring ring_of(const ExactPolygon& p) {
   Ring r;
@@ -75,6 +103,54 @@ std::vector<Outline> union_of_rects(const std::vector<Rect>& rects) {
       ring = std::move(kept);
     }
   return out;
+}
+
+std::vector<Outline> cut_along(const std::vector<Rect>& rects, const PolygonCuts& cuts) {
+  CGAL::Polygon_set_2<Kernel> set;
+  for (const Rect& r : rects)
+    if (r.w > 0 && r.h > 0) set.join(exact(r));
+  if (!cuts.outline.empty()) set.intersection(exact(cuts.outline));
+  for (const Polygon& hole : cuts.holes) set.difference(exact(hole));
+  return outlines_of(set);
+}
+
+std::vector<Outline> cut_away(const Rect& surface, const PolygonCuts& cuts) {
+  CGAL::Polygon_set_2<Kernel> set;
+  if (!cuts.outline.empty()) {
+    set.join(exact(surface));
+    set.difference(exact(cuts.outline));
+  }
+  for (const Polygon& hole : cuts.holes) set.join(exact(hole));
+  set.intersection(exact(surface));
+  return outlines_of(set);
+}
+
+std::vector<Outline> surfaced(const Rect& surface, const std::vector<Rect>& holes,
+                              const std::vector<Outline>& cut_away) {
+  CGAL::Polygon_set_2<Kernel> set;
+  set.join(exact(surface));
+  for (const Rect& h : holes)
+    if (h.w > 0 && h.h > 0) set.difference(exact(h));
+  set.difference(set_of(cut_away));
+  return outlines_of(set);
+}
+
+double area_within(const Rect& r, const std::vector<Outline>& outlines) {
+  if (r.w <= 0 || r.h <= 0) return 0;
+  std::vector<Outline> near;  // only those whose box meets r: most strips meet none
+  for (const Outline& o : outlines) {
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const auto& v : o.rings.empty() ? Ring{} : o.rings[0])
+      x0 = std::min(x0, v[0]), y0 = std::min(y0, v[1]), x1 = std::max(x1, v[0]),
+      y1 = std::max(y1, v[1]);
+    if (x0 < r.right() && x1 > r.x && y0 < r.top() && y1 > r.y) near.push_back(o);
+  }
+  if (near.empty()) return 0;
+  CGAL::Polygon_set_2<Kernel> set = set_of(near);
+  set.intersection(exact(r));
+  double area = 0;
+  for (const Outline& o : outlines_of(set)) area += o.area;
+  return area;
 }
 
 std::vector<Outline> outlines_of(const CGAL::Polygon_set_2<Kernel>& set) {

@@ -19,4 +19,25 @@ std::vector<Outline> union_of_circles(const std::vector<Circle>& circles, double
 // connected part, exact.
 std::vector<Outline> union_of_rects(const std::vector<Rect>& rects);
 
+// A surface's sloping or curved edges: an outline that is not a union of rectangles, and
+// excluded zones that are not. Pieces crossing them are cut along them.
+struct PolygonCuts {
+  Polygon outline;             // empty: the surface's own rectangle bounds it
+  std::vector<Polygon> holes;  // kept free of pieces
+  bool empty() const { return outline.empty() && holes.empty(); }
+};
+
+// (the union of `rects`) within the outline and off the holes, exact; one Outline per part.
+std::vector<Outline> cut_along(const std::vector<Rect>& rects, const PolygonCuts& cuts);
+
+// What of `surface` is not surfaced: beyond the outline, or in a hole.
+std::vector<Outline> cut_away(const Rect& surface, const PolygonCuts& cuts);
+
+// The surface less rectangular holes and the outlines cut away (the bed under the pieces).
+std::vector<Outline> surfaced(const Rect& surface, const std::vector<Rect>& holes,
+                              const std::vector<Outline>& cut_away);
+
+// The area of r inside the outlines (as cut_away gives them).
+double area_within(const Rect& r, const std::vector<Outline>& outlines);
+
 }  // namespace curdle

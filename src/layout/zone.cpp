@@ -95,4 +95,37 @@ std::optional<std::vector<Rect>> as_rectangles(const Polygon& polygon) {
   return rects;
 }
 
+namespace {
+
+// Whether the segment a-b passes through the open rectangle (Liang-Barsky clipping).
+bool passes_through(const std::array<double, 2>& a, const std::array<double, 2>& b, const Rect& r) {
+  constexpr double kInset = 1e-7;  // touching a side is not passing through
+  const double x0 = r.x + kInset, x1 = r.right() - kInset, y0 = r.y + kInset, y1 = r.top() - kInset;
+  if (x0 >= x1 || y0 >= y1) return false;
+  double t0 = 0, t1 = 1;
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  for (const auto& [p, q] : {std::pair{-dx, a[0] - x0}, std::pair{dx, x1 - a[0]},
+                             std::pair{-dy, a[1] - y0}, std::pair{dy, y1 - a[1]}}) {
+    if (p == 0) {
+      if (q < 0) return false;
+      continue;
+    }
+    const double t = q / p;
+    if (p < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+Crossing crossing(const Rect& r, const Polygon& polygon) {
+  for (size_t i = 0; i < polygon.size(); ++i)
+    if (passes_through(polygon[i], polygon[(i + 1) % polygon.size()], r)) return Crossing::boundary;
+  return contains(polygon, r.x + r.w / 2, r.y + r.h / 2) ? Crossing::inside : Crossing::outside;
+}
+
 }  // namespace curdle

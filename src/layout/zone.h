@@ -19,6 +19,11 @@ double polygon_area(const Polygon& polygon);
 // Whether no two edges of the polygon cross or touch, other than neighbours at their vertex.
 bool is_simple(const Polygon& polygon);
 
+// Where a rectangle lies against a polygon: wholly inside, wholly outside, or crossed by one of
+// its edges (an edge along the rectangle's side does not cross it).
+enum class Crossing { inside, outside, boundary };
+Crossing crossing(const Rect& r, const Polygon& polygon);
+
 // A polygon whose edges all run along x or y as disjoint rectangles (bands between its
 // vertices' heights); nullopt when some edge slopes.
 std::optional<std::vector<Rect>> as_rectangles(const Polygon& polygon);

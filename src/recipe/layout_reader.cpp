@@ -8,6 +8,7 @@
 #include "curdle/text.h"
 #include "layout/builder.h"
 #include "layout/drawing_sheet.h"
+#include "layout/zone.h"
 
 namespace curdle::reading {
 namespace {
@@ -178,6 +179,14 @@ void read_bond(TableReader& r, LayoutSpec& spec) {
 void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec) {
   read_bond(r, spec);
   read_zones(r, design, spec);
+  const bool sloping_zone = std::any_of(spec.zones.begin(), spec.zones.end(), [](const Zone& z) {
+    return z.rule == ZoneRule::exclude && z.rects.empty();
+  });
+  if (spec.combine == Combine::keep &&
+      (sloping_zone || (!spec.outline.empty() && !as_rectangles(spec.outline))))
+    r.fail(sloping_zone ? "zones" : "outline",
+           "has sloping or curved edges, which need combine = \"mix\": kept curds are drawn as "
+           "stripes of whole rectangles");
   spec.min_cut = read_mm(r, "min_cut", 0, 0);
   if (spec.min_cut > std::max(spec.module_w, spec.module_h))
     r.fail("min_cut", "must be at most the element's size; e.g. 50 for pieces of at least 50 mm");

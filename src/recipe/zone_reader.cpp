@@ -74,12 +74,8 @@ Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size)
     z.rule = ZoneRule::exclude;
     if (r.get("value"))
       r.fail("value", "is for rule = \"value\"; an excluded zone has no elements");
-    const auto rects = as_rectangles(z.polygon);
-    if (!rects)
-      r.fail("polygon",
-             "has a sloping edge: an excluded zone is cut from the elements along edges that run "
-             "along x and y (use a rect, or a polygon of such edges)");
-    z.rects = *rects;
+    // Edges along x and y cut as rectangles; sloping or curved ones as polygons (union.h).
+    if (const auto rects = as_rectangles(z.polygon)) z.rects = *rects;
   } else if (rule == "value") {
     z.rule = ZoneRule::value;
     z.value = static_cast<uint32_t>(
@@ -105,10 +101,6 @@ void read_outline(TableReader& r, LayoutSpec& spec) {
                                     p[0], p[1]));
     x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
   }
-  if (!as_rectangles(outline))
-    r.fail("outline",
-           "has a sloping edge: elements are cut along outlines whose edges run along x and y "
-           "(an L, a U, a stepped floor); sloping and curved edges are not cut yet");
   if (x1 > 1e7 || y1 > 1e7) r.fail("outline", "must lie within 10 km of the origin");
   if (spec.size)
     check_on_surface(r, "outline", outline, *spec.size);

@@ -86,6 +86,18 @@ def has_box(boxes, b):
     return False
 
 
+def has_parts(boxes, b):
+    """A piece in parts (a MULTIPOLYGON: a sett cut in two by a tree pit) is one polyline a
+    part: the parts lying in its extent must span it exactly."""
+    inside = [c for cs in boxes.values() for c in cs
+              if c[0] > b[0] - 0.01 and c[1] > b[1] - 0.01 and c[2] < b[2] + 0.01 and c[3] < b[3] + 0.01]
+    if len(inside) < 2:
+        return False
+    span = (min(c[0] for c in inside), min(c[1] for c in inside),
+            max(c[2] for c in inside), max(c[3] for c in inside))
+    return all(near(u, v) for u, v in zip(b, span))
+
+
 def install_boxes(path):
     """Each element's extent in install.svg, layout millimetres: the drawing's units are layout
     millimetres (drawn at the installer's scale through its size), the layout's frame its first
@@ -213,7 +225,8 @@ def check(curdle, recipe, out, corner):
         h = float(row["depth_mm"]) if row["depth_mm"] else float(row["height_mm"])
         b = (x, y, x + w, y + h)
         area += float(row["area_m2"])
-        if not has_box(boxes, b):
+        parts = row["shape_wkt"].startswith("MULTIPOLYGON")
+        if not (has_parts(boxes, b) if parts else has_box(boxes, b)):
             fail(f"{where}: {eid} at {b} has no piece of that extent in layout.dxf")
         p = ids.get(eid)
         if p is None or not (near(p[0], x + w / 2) and near(p[1], y + h / 2)):
