@@ -53,6 +53,35 @@ void BM_Cube_b4_K5_p08(benchmark::State& state) {
 }
 BENCHMARK(BM_Cube_b4_K5_p08)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
+// A radial density field (curds.density) on a 4096 x 4096 plane (b = 2, K = 12, p = 0.7): each
+// child of a survivor is drawn against its own threshold, and the report walks every cell for
+// the field's exact expectations. Beside the same plane without a field, engine alone and with
+// the report.
+curdle::Design radial_plane(bool dense) {
+  curdle::Design d = make(2, 2, std::vector<std::string>(12, "0.7"));
+  if (dense) {
+    curdle::DensityField f;
+    f.kind = curdle::DensityKind::radial;
+    f.centre = {2048, 2048, 0};
+    f.radius = 2048;
+    f.values = {3, 0.2};
+    d.curds[0].density = f;
+  }
+  return d;
+}
+void BM_Density_Engine_4096(benchmark::State& state) {
+  const curdle::Design d = radial_plane(state.range(0) != 0);
+  for (auto _ : state) {
+    const curdle::CurdField f = curdle::curdle(d, 1, d.field);
+    benchmark::DoNotOptimize(f.curds.data());
+  }
+}
+BENCHMARK(BM_Density_Engine_4096)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+void BM_Density_Report_4096(benchmark::State& state) {
+  generate_and_report(state, radial_plane(state.range(0) != 0));
+}
+BENCHMARK(BM_Density_Report_4096)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // Seed search as the peer does it: 64 x 64 curds (b = 4; 2/3, 1/2, 1/3), each scored by
 // |survivor ratio - target| + |box dimension - target|, through search_seeds, which is what
 // `curdle search` runs.
