@@ -25,6 +25,14 @@ using test::design;
 
 namespace {
 
+// The floor or wall of `spec` laid from a field of exactly its elements, curdled with `seed`.
+Layout lay_floor(const Design& d, const LayoutSpec& spec, uint64_t seed) {
+  Design sized = d;
+  const auto cells = elements_to_cover(spec);
+  sized.field.size = {cells[0], cells[1], 1};
+  return make_layout(sized, curdle(sized, seed, sized.field), sized.field, spec);
+}
+
 double intersection(const Rect& a, const Rect& b) {
   const double w = std::min(a.right(), b.right()) - std::max(a.x, b.x);
   const double h = std::min(a.top(), b.top()) - std::max(a.y, b.y);
@@ -176,11 +184,7 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
                                     {1500, 3900, 1200, 1500},
                                     {16200, 12900, 1200, 1500},
                                     {17500, 14000, 500, 1600}};
-        Design sized = d;
-        const auto cells = elements_to_cover(spec);
-        sized.field.size = {cells[0], cells[1], 1};
-        const CurdField f = curdle(sized, 9, sized.field);
-        const Layout layout = make_layout(sized, f, sized.field, spec);
+        const Layout layout = lay_floor(d, spec, 9);
         double elements = 0, openings = 0;
         for (const Element& e : layout.elements) {
           elements += e.area();
@@ -195,7 +199,7 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
         EXPECT_NEAR(elements + joint_area(layout) + openings, 18000.0 * 15600.0, 1e-3)
             << static_cast<int>(corner) << " " << static_cast<int>(kind) << " bond " << bond;
         EXPECT_EQ(layout.elements.size() + layout.omitted,
-                  static_cast<size_t>(cells[0] * cells[1]));
+                  static_cast<size_t>(layout.columns * layout.rows));
         // The element IDs follow the laying order from the origin corner: row 0, column 0 sits
         // there.
         const Element& first = layout.elements.front();
@@ -226,10 +230,7 @@ TEST(Layout, CoursesAreOffsetByTheBond) {
       spec.bond = bond;
       spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
       spec.size = std::array<double, 2>{5000, 3000};
-      Design sized = d;
-      const auto cells = elements_to_cover(spec);
-      sized.field.size = {cells[0], cells[1], 1};
-      const Layout layout = make_layout(sized, curdle(sized, 3, sized.field), sized.field, spec);
+      const Layout layout = lay_floor(d, spec, 3);
       const bool right = from_right(corner);
       std::map<int64_t, double> start;  // per course: where its column 1 begins, from the corner
       std::set<std::pair<int64_t, int64_t>> cells_used;
@@ -257,10 +258,7 @@ TEST(Layout, ACentredGridCutsOppositeEdgesEqually) {
     spec.size = std::array<double, 2>{w, h};
     spec.centred = true;
     spec.shift = {centring_shift(w, 600, 10), centring_shift(h, 300, 10)};
-    Design sized = d;
-    const auto cells = elements_to_cover(spec);
-    sized.field.size = {cells[0], cells[1], 1};
-    const Layout layout = make_layout(sized, curdle(sized, 3, sized.field), sized.field, spec);
+    const Layout layout = lay_floor(d, spec, 3);
     double left = 1e9, right = 1e9, bottom = 1e9, top = 1e9;
     for (const Element& e : layout.elements) {
       const Rect& r = e.shape.front();
@@ -631,10 +629,7 @@ TEST(Layout, ZonesExcludeOrSetTheirValue) {
                 {"plinth", ZoneRule::exclude, 0, plinth, *as_rectangles(plinth)},
                 {"entrance", ZoneRule::value, 3, band, {}},
                 {"corner", ZoneRule::value, 2, corner, {}}};
-  Design sized = d;
-  const auto cells = elements_to_cover(spec);
-  sized.field.size = {cells[0], cells[1], 1};
-  const Layout layout = make_layout(sized, curdle(sized, 11, sized.field), sized.field, spec);
+  const Layout layout = lay_floor(d, spec, 11);
   double elements = 0, openings = 0;
   std::map<std::string, std::vector<uint64_t>> held;
   for (const auto& z : spec.zones) held[z.name].assign(4, 0);
@@ -688,10 +683,7 @@ TEST(Layout, LargeFirstStageCellsAreWarnedOf) {
     spec.set_kind(LayoutKind::paving);
     spec.module_w = 300, spec.module_h = 300;
     spec.size = std::array<double, 2>{9700, 4900};
-    Design sized = d;
-    const auto cells = elements_to_cover(spec);
-    sized.field.size = {cells[0], cells[1], 1};
-    return make_layout(sized, curdle(sized, 2, sized.field), sized.field, spec).notes;
+    return lay_floor(d, spec, 2).notes;
   };
   const auto warned = notes_for(4, 3);  // first-stage cells 16 elements, 4.8 m, on a 4.9 m floor
   ASSERT_EQ(warned.size(), 1u);
@@ -716,10 +708,7 @@ TEST(Layout, AnOutlineIsCoveredExactly) {
     if (centred) spec.centred = true, spec.shift = {centring_shift(12000, 600, 5), 0};
     const Polygon planter = rect_polygon(Rect{3000, 3500, 2000, 3000});
     spec.zones = {{"planter", ZoneRule::exclude, 0, planter, *as_rectangles(planter)}};
-    Design sized = d;
-    const auto cells = elements_to_cover(spec);
-    sized.field.size = {cells[0], cells[1], 1};
-    const Layout layout = make_layout(sized, curdle(sized, 5, sized.field), sized.field, spec);
+    const Layout layout = lay_floor(d, spec, 5);
     ASSERT_FALSE(layout.outside.empty());
     double elements = 0;
     for (const Element& e : layout.elements) {
@@ -777,10 +766,7 @@ TEST(Layout, SlopingAndCurvedEdgesCutPiecesExactly) {
     spec.outline = terrace;
     spec.bond = bond;
     spec.zones = {{"tree pit", ZoneRule::exclude, 0, pit, {}}};
-    Design sized = d;
-    const auto cells = elements_to_cover(spec);
-    sized.field.size = {cells[0], cells[1], 1};
-    const Layout layout = make_layout(sized, curdle(sized, 5, sized.field), sized.field, spec);
+    const Layout layout = lay_floor(d, spec, 5);
     ASSERT_FALSE(layout.cut_away.empty());
     double elements = 0;
     size_t shaped = 0;
