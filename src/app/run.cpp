@@ -33,6 +33,8 @@ void load_density_images(Run& run) {
     LuminanceImage image = read_bounded_luminance(path, "the density image",
                                                   SourceLocation{run.recipe_path, 0, 0, key, ""},
                                                   run.generate.max_memory_bytes, kMaxDensityPixels);
+    // Black to white: a high-dynamic-range or broken picture is held to [0, 1] (NaN as black).
+    for (float& l : image.luminance) l = l > 0 ? (l < 1 ? l : 1.0f) : 0.0f;
     density->width = image.width;
     density->height = image.height;
     density->luminance = std::make_shared<const std::vector<float>>(std::move(image.luminance));
