@@ -439,11 +439,22 @@ tinygltf::Model build(const Layout& layout) {
         const Vec3 c = to_gltf(layout, e.circle->cx, e.circle->cy, t);
         n.mesh = type_mesh[e.type];
         n.translation = {c[0], c[1], c[2]};
+      } else if (e.outline) {  // a surface cut along a sloping or curved edge
+        std::vector<Vec3> p, nr;
+        std::vector<uint32_t> idx;
+        add_prism(layout, e.outline->rings, 0, t, p, nr, idx);
+        n.mesh = b.add_mesh(
+            "piece " + e.id,
+            {b.primitive(p, nr, idx, b.model.meshes[type_mesh[e.type]].primitives[0].material)});
       } else {
+        const int mat = b.model.meshes[type_mesh[e.type]].primitives[0].material;
         const bool surface = e.shape.size() == 1 && e.shape[0].w >= e.nominal.w / 8 &&
                              std::fabs(e.shape[0].h - e.nominal.h) < 1e-6;
-        n = box_node(e.shape[0], surface ? 0 : t, surface ? t : 450,
-                     b.model.meshes[type_mesh[e.type]].primitives[0].material);
+        if (e.shape.size() == 1) {
+          n = box_node(e.shape[0], surface ? 0 : t, surface ? t : 450, mat);
+        } else {  // a surface cut to several rectangles by an outline along x and y
+          for (const Rect& r : e.shape) n.children.push_back(b.add_node(box_node(r, 0, t, mat)));
+        }
       }
       roots.push_back(named(e, std::move(n)));
     }

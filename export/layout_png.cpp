@@ -174,6 +174,7 @@ PreviewImage render_layout(const Layout& layout) {
     const LegendEntry& entry = layout.legend[e.value];
     if (!e.type.empty()) {  // park: each element in its own colour
       if (e.circle) canvas.fill(*e.circle, e.colour);
+      if (e.outline) canvas.fill(*e.outline, e.colour);
       for (const Rect& r : e.shape) canvas.fill(r, e.colour);
       continue;
     }

@@ -138,6 +138,28 @@ void draw_views(std::ostream& out, const Layout& layout, const Sheet& s, double 
 }
 
 // Park: one group per element type, surfaces first (whole-cell ones merged), objects on top.
+// Beyond the outline is paper, not surface: white over the joints, and the outline drawn.
+void draw_outside(std::ostream& out, const Layout& layout, const Sheet& s, double unit) {
+  if (!layout.outside.empty() || !layout.cut_away.empty()) {
+    out << "<g id=\"outside\" class=\"outside\" fill=\"#ffffff\">\n";
+    for (const Rect& o : layout.outside)
+      out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", mm(s.x(o.x)),
+                         mm(s.y(o.y, o.h)), mm(o.w), mm(o.h));
+    for (const Outline& o : layout.cut_away) {  // beyond sloping edges, in sloping zones
+      std::string d;
+      for (const Ring& ring : o.rings) d += polygon_path(s, ring);
+      out << fmt::format("<path fill-rule=\"evenodd\" d=\"{}\"/>\n", d);
+    }
+    out << "</g>\n";
+  }
+  if (!layout.outline.empty()) {
+    out << fmt::format(
+        "<path id=\"outline\" class=\"outline\" d=\"{}\" fill=\"none\" stroke=\"#222\" "
+        "stroke-width=\"{}\"/>\n",
+        polygon_path(s, layout.outline), mm(unit * 0.08));
+  }
+}
+
 void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double unit) {
   std::vector<std::string> types;
   std::map<std::string, std::vector<const Element*>> by_type;
@@ -183,8 +205,10 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
       }
       std::string d;
       for (const Rect& r : e->shape) d += rect_path(s, r);
+      if (e->outline)  // cut along a sloping or curved edge
+        for (const Ring& ring : e->outline->rings) d += polygon_path(s, ring);
       out << fmt::format(
-          "<path id=\"{}\" d=\"{}\"{}/>\n", e->id, d,
+          "<path id=\"{}\" d=\"{}\"{}{}/>\n", e->id, d, e->outline ? " fill-rule=\"evenodd\"" : "",
           e->shape.size() == 1 && e->shape[0].w < e->nominal.w - 1e-6 &&
                   e->shape[0].h < e->nominal.h - 1e-6
               ? fmt::format(" stroke=\"#3a2a1a\" stroke-width=\"{}\"", mm(unit * 0.04))
@@ -195,6 +219,7 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
     }
     out << "</g>\n";
   }
+  draw_outside(out, layout, s, unit);
 }
 
 void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, double unit) {
@@ -262,25 +287,7 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
       out << fmt::format("<path id=\"joints\" class=\"joint\" fill=\"{}\" d=\"{}\"/>\n",
                          hex_colour(layout.joint_colour), d);
   }
-  // Beyond the outline is paper, not surface: white over the joints, and the outline drawn.
-  if (!layout.outside.empty() || !layout.cut_away.empty()) {
-    out << "<g id=\"outside\" class=\"outside\" fill=\"#ffffff\">\n";
-    for (const Rect& o : layout.outside)
-      out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", mm(s.x(o.x)),
-                         mm(s.y(o.y, o.h)), mm(o.w), mm(o.h));
-    for (const Outline& o : layout.cut_away) {  // beyond sloping edges, in sloping zones
-      std::string d;
-      for (const Ring& ring : o.rings) d += polygon_path(s, ring);
-      out << fmt::format("<path fill-rule=\"evenodd\" d=\"{}\"/>\n", d);
-    }
-    out << "</g>\n";
-  }
-  if (!layout.outline.empty()) {
-    out << fmt::format(
-        "<path id=\"outline\" class=\"outline\" d=\"{}\" fill=\"none\" stroke=\"#222\" "
-        "stroke-width=\"{}\"/>\n",
-        polygon_path(s, layout.outline), mm(unit * 0.08));
-  }
+  draw_outside(out, layout, s, unit);
   if (!layout.openings.empty()) {
     out << fmt::format(
         "<g id=\"openings\" class=\"opening\" fill=\"#dfeaf2\" stroke=\"#44515c\" "

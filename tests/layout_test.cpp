@@ -492,6 +492,47 @@ TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
 
 namespace curdle {
 
+// A park on a site with a sloping edge: its surfaces cover exactly the outline (cut along it),
+// and every object stands whole inside it; those that would not are left out and counted.
+TEST(Park, AnOutlineIsCoveredAndObjectsStandWholeInsideIt) {
+  Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec;
+  spec.set_kind(LayoutKind::park);
+  spec.module_w = spec.module_h = 3000;
+  spec.park().clearance = 300;
+  spec.park().elements = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
+                          {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
+                          {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
+  // 48 x 48 m less a sloping cut across one corner and a step along x and y.
+  const Polygon site = {{0, 0},         {30000, 0},     {48000, 20000}, {48000, 48000},
+                        {20000, 48000}, {20000, 40000}, {0, 40000}};
+  spec.outline = site;
+  spec.size = std::array<double, 2>{48000, 48000};
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    const Layout layout = lay_floor(d, spec, seed);
+    double surfaces = 0;
+    size_t shaped = 0;
+    for (const Element& e : layout.elements) {
+      if (e.type == "grey paving" || e.type == "white paving") {
+        surfaces += e.area();
+        shaped += e.outline.has_value();
+        continue;
+      }
+      const Rect box = laid_bounds(e);
+      for (const auto& corner : {std::array<double, 2>{box.x, box.y},
+                                 {box.right(), box.y},
+                                 {box.right(), box.top()},
+                                 {box.x, box.top()}})
+        EXPECT_TRUE(contains(site, corner[0], corner[1])) << e.id << " stands beyond the site";
+    }
+    EXPECT_NEAR(surfaces, polygon_area(site), 1e-2) << "seed " << seed;
+    EXPECT_GT(shaped, 3u) << "surfaces along the sloping edge are cut to shape";
+    std::ostringstream svg;
+    write_layout_svg(svg, layout);
+    EXPECT_NE(svg.str().find("id=\"outline\""), std::string::npos);
+  }
+}
+
 TEST(Park, ElementsShareCellsWithoutOverlapAndSurfacesCoverTheArea) {
   Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
   LayoutSpec spec;

@@ -2,7 +2,54 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
+#include "layout/piece.h"
+#include "layout/union.h"
+
 namespace curdle {
+namespace {
+
+constexpr double kEps = 1e-6;
+
+// A cell as laid: whole, cut to rectangles at the area's edge or an outline along x and y, or
+// cut along a sloping or curved edge (an outline).
+struct Region {
+  std::vector<Rect> rects;
+  std::optional<Outline> outline;
+  double area() const {
+    if (outline) return outline->area;
+    double a = 0;
+    for (const Rect& r : rects) a += r.area();
+    return a;
+  }
+};
+
+Rect overlap(const Rect& a, const Rect& b) {
+  const double x0 = std::max(a.x, b.x), y0 = std::max(a.y, b.y);
+  const double x1 = std::min(a.right(), b.right()), y1 = std::min(a.top(), b.top());
+  return x1 > x0 && y1 > y0 ? Rect{x0, y0, x1 - x0, y1 - y0} : Rect{};
+}
+
+// The part of r the cell has.
+Region within(const Element& cell, const Rect& r) {
+  Region out;
+  if (cell.outline) {
+    Outline merged;
+    for (const Outline& part : clip_outline(r, *cell.outline)) {
+      merged.rings.insert(merged.rings.end(), part.rings.begin(), part.rings.end());
+      merged.area += part.area;
+    }
+    if (merged.area > kEps) out.outline = std::move(merged);
+    return out;
+  }
+  for (const Rect& c : cell.shape)
+    if (const Rect o = overlap(c, r); o.area() > kEps) out.rects.push_back(o);
+  return out;
+}
+
+}  // namespace
 
 std::vector<Rect> object_slots(const Rect& cell, size_t count, double clearance) {
   std::vector<Rect> slots;
@@ -26,49 +73,65 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
   std::vector<Element> cells = std::move(layout.elements);
   layout.elements.clear();
   layout.element_type = "element";
+  size_t left_out = 0;
   for (const Element& cell : cells) {
     std::vector<size_t> surfaces, objects;
     for (size_t c = 0; c < design.curds.size(); ++c)
       if (cell.value >> c & 1) (spec.park().elements[c].surface ? surfaces : objects).push_back(c);
-    auto add = [&](const ParkElement& kind, std::vector<Rect> shape, std::optional<Circle> circle,
-                   const std::string& suffix) {
+    auto add = [&](const ParkElement& kind, Region region, std::optional<Circle> circle,
+                   const std::string& suffix, const Rect& stock) {
       Element e = cell;
       e.key = cell.key.within('K', suffix);
       e.id = e.key.text();
       e.type = kind.type;
       e.colour = kind.colour;
-      e.shape = std::move(shape);
+      e.shape = std::move(region.rects);
+      e.outline = std::move(region.outline);
       e.circle = circle;
       // Surfaces are laid to their share of the cell; objects come whole.
-      if (circle)
-        e.stock_w = e.stock_h = circle->d;
-      else if (!e.shape.empty())
-        e.stock_w = e.shape.front().w, e.stock_h = e.shape.front().h;
-      e.cut = false;
+      e.stock_w = stock.w, e.stock_h = stock.h;
+      e.cut = e.outline.has_value();  // cut along a sloping or curved edge
       layout.elements.push_back(std::move(e));
     };
-    // The ground, or the surfaces of the curds present in strips side by side.
-    const Rect laid = cell.shape.empty() ? cell.nominal : cell.shape.front();
+    // The ground, or the surfaces of the curds present in strips side by side, as far as the
+    // cell is laid (an area's edge or an outline may cut it).
+    const Rect laid = laid_bounds(cell);
     if (surfaces.empty()) {
-      add(spec.park().ground, {laid}, std::nullopt, "ground");
+      add(spec.park().ground, within(cell, laid), std::nullopt, "ground", laid);
     } else {
       const double w = laid.w / static_cast<double>(surfaces.size());
-      for (size_t i = 0; i < surfaces.size(); ++i)
-        add(spec.park().elements[surfaces[i]], {Rect{laid.x + i * w, laid.y, w, laid.h}},
-            std::nullopt, design.curds[surfaces[i]].name);
+      for (size_t i = 0; i < surfaces.size(); ++i) {
+        const Rect strip{laid.x + i * w, laid.y, w, laid.h};
+        Region part = within(cell, strip);
+        if (part.area() > kEps)
+          add(spec.park().elements[surfaces[i]], std::move(part), std::nullopt,
+              design.curds[surfaces[i]].name, strip);
+      }
     }
+    // Objects stand whole on the cell as laid, or not at all.
     const std::vector<Rect> slots =
         object_slots(cell.nominal, objects.size(), spec.park().clearance);
     for (size_t i = 0; i < objects.size(); ++i) {
       const ParkElement& kind = spec.park().elements[objects[i]];
       const double cx = slots[i].x + slots[i].w / 2, cy = slots[i].y + slots[i].h / 2;
+      const Rect footprint = kind.round ? Rect{cx - kind.w / 2, cy - kind.w / 2, kind.w, kind.w}
+                                        : Rect{cx - kind.w / 2, cy - kind.h / 2, kind.w, kind.h};
+      if (within(cell, footprint).area() < footprint.area() - kEps) {
+        ++left_out;
+        continue;
+      }
       if (kind.round)
-        add(kind, {}, Circle{cx, cy, kind.w}, design.curds[objects[i]].name);
+        add(kind, {}, Circle{cx, cy, kind.w}, design.curds[objects[i]].name, footprint);
       else
-        add(kind, {Rect{cx - kind.w / 2, cy - kind.h / 2, kind.w, kind.h}}, std::nullopt,
-            design.curds[objects[i]].name);
+        add(kind, Region{{footprint}, std::nullopt}, std::nullopt, design.curds[objects[i]].name,
+            footprint);
     }
   }
+  if (left_out > 0)
+    layout.notes.push_back(fmt::format(
+        "{} object{} left out where the area's edge or outline cuts the cell and {} would not "
+        "stand whole",
+        left_out, left_out == 1 ? " is" : "s are", left_out == 1 ? "it" : "they"));
 }
 
 }  // namespace curdle

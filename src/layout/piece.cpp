@@ -37,33 +37,8 @@ bool is_rectangle(const Element& e) {
   return area >= b.area() - 1e-6;  // disjoint pieces that fill their box
 }
 
-namespace {
-
-double signed_area(const Ring& ring) {
-  double twice = 0;
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const auto& a = ring[i];
-    const auto& b = ring[(i + 1) % ring.size()];
-    twice += a[0] * b[1] - b[0] * a[1];
-  }
-  return twice / 2;
-}
-
-}  // namespace
-
 std::vector<Outline> piece_outlines(const Element& e) {
-  if (e.outline) {
-    // Its rings as union.h lists them: each part's outer ring (counter-clockwise), then that
-    // part's islands (clockwise). A piece cut in two is two parts.
-    std::vector<Outline> parts;
-    for (const Ring& ring : e.outline->rings) {
-      const double area = signed_area(ring);
-      if (area > 0 || parts.empty()) parts.emplace_back();
-      parts.back().rings.push_back(ring);
-      parts.back().area += area;
-    }
-    return parts;
-  }
+  if (e.outline) return outline_parts(*e.outline);  // a piece cut in two is two parts
   if (e.circle || is_rectangle(e)) return {};
   return union_of_rects(e.shape);
 }

@@ -26,19 +26,39 @@ ExactPolygon exact(const Rect& r) {
   return exact(Ring{{r.x, r.y}, {r.right(), r.y}, {r.right(), r.top()}, {r.x, r.top()}});
 }
 
-// Outlines (an outer ring and its islands each, as outlines_of makes them) as a polygon set.
+}  // namespace
+
+std::vector<Outline> outline_parts(const Outline& outline) {
+  std::vector<Outline> parts;
+  for (const Ring& ring : outline.rings) {
+    double twice = 0;
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const auto& a = ring[i];
+      const auto& b = ring[(i + 1) % ring.size()];
+      twice += a[0] * b[1] - b[0] * a[1];
+    }
+    if (twice > 0 || parts.empty()) parts.emplace_back();
+    parts.back().rings.push_back(ring);
+    parts.back().area += twice / 2;
+  }
+  return parts;
+}
+
+namespace {
+
+// Outlines (outer rings and their islands, as outlines_of makes them) as a polygon set.
 CGAL::Polygon_set_2<Kernel> set_of(const std::vector<Outline>& outlines) {
   CGAL::Polygon_set_2<Kernel> set;
-  for (const Outline& o : outlines) {
-    if (o.rings.empty()) continue;
-    PolygonWithHoles part(exact(o.rings[0]));
-    for (size_t i = 1; i < o.rings.size(); ++i) {
-      ExactPolygon hole = exact(o.rings[i]);
-      hole.reverse_orientation();  // islands run clockwise
-      part.add_hole(hole);
+  for (const Outline& whole : outlines)
+    for (const Outline& o : outline_parts(whole)) {
+      PolygonWithHoles part(exact(o.rings[0]));
+      for (size_t i = 1; i < o.rings.size(); ++i) {
+        ExactPolygon hole = exact(o.rings[i]);
+        hole.reverse_orientation();  // islands run clockwise
+        part.add_hole(hole);
+      }
+      set.join(part);
     }
-    set.join(part);
-  }
   return set;
 }
 
@@ -132,6 +152,14 @@ std::vector<Outline> surfaced(const Rect& surface, const std::vector<Rect>& hole
   for (const Rect& h : holes)
     if (h.w > 0 && h.h > 0) set.difference(exact(h));
   set.difference(set_of(cut_away));
+  return outlines_of(set);
+}
+
+std::vector<Outline> clip_outline(const Rect& r, const Outline& outline) {
+  if (r.w <= 0 || r.h <= 0) return {};
+  CGAL::Polygon_set_2<Kernel> set;
+  set.join(set_of({outline}));
+  set.intersection(exact(r));
   return outlines_of(set);
 }
 

@@ -19,6 +19,10 @@ std::vector<Outline> union_of_circles(const std::vector<Circle>& circles, double
 // connected part, exact.
 std::vector<Outline> union_of_rects(const std::vector<Rect>& rects);
 
+// An outline's parts: its rings as outlines_of lists them, each part's outer ring
+// (counter-clockwise) followed by that part's islands (clockwise).
+std::vector<Outline> outline_parts(const Outline& outline);
+
 // A surface's sloping or curved edges: an outline that is not a union of rectangles, and
 // excluded zones that are not. Pieces crossing them are cut along them.
 struct PolygonCuts {
@@ -36,6 +40,9 @@ std::vector<Outline> cut_away(const Rect& surface, const PolygonCuts& cuts);
 // The surface less rectangular holes and the outlines cut away (the bed under the pieces).
 std::vector<Outline> surfaced(const Rect& surface, const std::vector<Rect>& holes,
                               const std::vector<Outline>& cut_away);
+
+// The part of r inside the outline (a piece cut along a sloping edge), one Outline per part.
+std::vector<Outline> clip_outline(const Rect& r, const Outline& outline);
 
 // The area of r inside the outlines (as cut_away gives them).
 double area_within(const Rect& r, const std::vector<Outline>& outlines);
