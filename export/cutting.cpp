@@ -18,7 +18,11 @@ void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, in
   layers.push_back({"ID", Rgb{0, 0, 255}, false});
   layers.push_back({"TEXT", Rgb{0, 128, 0}, true});
   DxfDocument dxf(path, layers, Rect{0, 0, s.area.w, s.area.h});
-  dxf.rect("OUTLINE", Rect{0, 0, s.area.w, s.area.h});
+  if (s.outline.empty()) dxf.rect("OUTLINE", Rect{0, 0, s.area.w, s.area.h});
+  for (Ring ring : s.outline) {  // cut to layout.outline
+    for (auto& v : ring) v[0] -= s.area.x, v[1] -= s.area.y;
+    dxf.polygon("OUTLINE", ring);
+  }
   for (const Element& e : layout.elements) {
     if (e.sheet != sheet) continue;
     if (e.circle) {
@@ -54,10 +58,21 @@ void write_sheet_svg(std::ostream& out, const Layout& layout, int sheet) {
       "viewBox=\"0 0 {:.3f} {:.3f}\" fill=\"none\" stroke-width=\"0.1\">\n",
       W, H, W, H);
   out << fmt::format("<title>{}</title>\n", s.id);
-  out << fmt::format(
-      "<rect id=\"outline\" x=\"0\" y=\"0\" width=\"{:.3f}\" height=\"{:.3f}\" "
-      "stroke=\"#000000\"/>\n",
-      W, H);
+  if (s.outline.empty()) {
+    out << fmt::format(
+        "<rect id=\"outline\" x=\"0\" y=\"0\" width=\"{:.3f}\" height=\"{:.3f}\" "
+        "stroke=\"#000000\"/>\n",
+        W, H);
+  } else {  // cut to layout.outline
+    std::string d;
+    for (const Ring& ring : s.outline) {
+      for (size_t i = 0; i < ring.size(); ++i)
+        d += fmt::format("{}{:.3f} {:.3f}", i ? "L" : "M", ring[i][0] - s.area.x,
+                         y(ring[i][1] - s.area.y));
+      d += "z";
+    }
+    out << fmt::format("<path id=\"outline\" d=\"{}\" stroke=\"#000000\"/>\n", d);
+  }
   out << "<g id=\"openings\" stroke=\"#ff0000\">\n";
   for (const Element& e : layout.elements) {
     if (e.sheet != sheet) continue;

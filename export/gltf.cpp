@@ -300,52 +300,24 @@ tinygltf::Model build(const Layout& layout) {
   }
 
   if (sheet) {
-    // The sheet: one solid whose openings are its holes, triangulated with CGAL.
-    std::vector<Ring> rings{
-        {{0, 0}, {layout.width, 0}, {layout.width, layout.height}, {0, layout.height}}};
+    // The sheet: one solid over the surface (the rectangle, or its outline) whose openings are
+    // its holes, triangulated with CGAL. Openings run clockwise, so that material lies on the
+    // left of every ring, as add_prism takes it.
+    std::vector<Ring> rings;
+    for (const Outline& o :
+         surfaced(Rect{0, 0, layout.width, layout.height}, layout.outside, layout.cut_away))
+      rings.insert(rings.end(), o.rings.begin(), o.rings.end());
     for (const Element& e : layout.elements) {
       if (e.circle) rings.push_back(polygonise(*e.circle, spec.perforation().chord_tolerance));
       if (e.outline) rings.insert(rings.end(), e.outline->rings.begin(), e.outline->rings.end());
+      if (e.circle || e.outline)
+        for (size_t k = rings.size() - (e.outline ? e.outline->rings.size() : 1); k < rings.size();
+             ++k)
+          std::reverse(rings[k].begin(), rings[k].end());
     }
     std::vector<Vec3> p, n;
     std::vector<uint32_t> idx;
-    for (const auto& tri : triangulate(rings)) {
-      for (int face = 0; face < 2; ++face) {  // top, then bottom facing down
-        const uint32_t base = static_cast<uint32_t>(p.size());
-        for (int k = 0; k < 3; ++k) {
-          const auto& v = tri[face ? 2 - k : k];
-          p.push_back(to_gltf(layout, v[0], v[1], face ? 0 : t));
-          n.push_back(face ? Vec3{0, -1, 0} : Vec3{0, 1, 0});
-        }
-        idx.insert(idx.end(), {base, base + 1, base + 2});
-      }
-    }
-    // Walls along every ring: the sheet's edge and the openings' sides.
-    for (size_t r = 0; r < rings.size(); ++r) {
-      const Ring& ring = rings[r];
-      double area = 0;
-      for (size_t i = 0; i < ring.size(); ++i)
-        area += ring[i][0] * ring[(i + 1) % ring.size()][1] -
-                ring[(i + 1) % ring.size()][0] * ring[i][1];
-      const bool outer = r == 0;
-      const bool ccw = area > 0;
-      for (size_t i = 0; i < ring.size(); ++i) {
-        auto a = ring[i], c = ring[(i + 1) % ring.size()];
-        if (ccw != outer) std::swap(a, c);  // material on the left of each wall's edge
-        const double dx = c[0] - a[0], dy = c[1] - a[1], len = std::hypot(dx, dy);
-        if (len == 0) continue;
-        const Vec3 normal = to_gltf(layout, dy / len * 1000, -dx / len * 1000, 0);
-        const uint32_t base = static_cast<uint32_t>(p.size());
-        for (const auto& [x, y, up] : {std::array<double, 3>{a[0], a[1], 0},
-                                       {c[0], c[1], 0},
-                                       {c[0], c[1], t},
-                                       {a[0], a[1], t}}) {
-          p.push_back(to_gltf(layout, x, y, up));
-          n.push_back(normal);
-        }
-        idx.insert(idx.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-      }
-    }
+    add_prism(layout, rings, 0, t, p, n, idx);
     const int metal = b.add_material("aluminium sheet", Rgb{201, 205, 210}, 0.9, 0.4);
     tinygltf::Node node;
     node.name = "sheet";

@@ -495,6 +495,7 @@ void write_layout_svg(std::ostream& out, const Layout& layout) {
 
   if (layout.kind == LayoutKind::perforation || layout.kind == LayoutKind::rhythm) {
     draw_openings(out, layout, s);
+    draw_outside(out, layout, s, unit);
   } else if (layout.kind == LayoutKind::blocks) {
     draw_views(out, layout, s, unit);
   } else if (layout.kind == LayoutKind::park) {

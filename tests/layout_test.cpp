@@ -414,6 +414,46 @@ std::vector<Circle> circles_of(const Element& e, const LayoutSpec& spec) {
 
 }  // namespace
 
+// A gabled screen (layout.outline): every opening keeps the edge margin inside the outline,
+// the fabrication sheets are cut to it (one wholly beyond it is not cut at all), and the open
+// area is the openings over the outline's area.
+TEST(Perforation, AnOutlineBoundsTheOpeningsAndCutsTheSheets) {
+  Sheet s;
+  s.design = test::design(4, 2, {{"3/4", "3/4"}, {"1/2", "3/4"}});
+  s.spec.set_kind(LayoutKind::perforation);
+  s.spec.module_w = s.spec.module_h = 40;
+  s.spec.size = std::array<double, 2>{640, 640};
+  s.spec.outline = {{0, 0}, {640, 0}, {640, 400}, {320, 640}, {0, 400}};
+  s.spec.perforation().holes = {{16, 0, 0}, {24, 0, 0}};
+  s.spec.perforation().edge_margin = 5;
+  s.spec.perforation().fix = HoleFix::drop;
+  s.spec.perforation().sheet_size = std::array<double, 2>{320, 320};
+  const Layout layout =
+      make_layout(s.design, curdle(s.design, 3, s.design.field), s.design.field, s.spec);
+  ASSERT_GT(layout.elements.size(), 50u);
+  double open = 0;
+  for (const Element& e : layout.elements) {
+    const Circle& c = *e.circle;
+    open += e.area();
+    // At least the margin inside every edge of the outline.
+    EXPECT_TRUE(contains(s.spec.outline, c.cx, c.cy)) << e.id;
+    for (size_t i = 0; i < s.spec.outline.size(); ++i) {
+      const auto& a = s.spec.outline[i];
+      const auto& b = s.spec.outline[(i + 1) % s.spec.outline.size()];
+      const double dx = b[0] - a[0], dy = b[1] - a[1];
+      const double t =
+          std::clamp(((c.cx - a[0]) * dx + (c.cy - a[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      EXPECT_GE(std::hypot(a[0] + t * dx - c.cx, a[1] + t * dy - c.cy) - c.d / 2, 5 - 1e-9) << e.id;
+    }
+  }
+  ASSERT_EQ(layout.sheets.size(), 4u);  // 2 x 2 sheets of 320, all meeting the gable
+  double surface = 0;
+  for (const auto& sheet : layout.sheets) surface += sheet.surface;
+  EXPECT_NEAR(surface, polygon_area(s.spec.outline), 1e-6);
+  EXPECT_FALSE(layout.sheets[2].outline.empty());  // the upper sheets follow the gable
+  EXPECT_NEAR(layout.open_area, open / polygon_area(s.spec.outline), 1e-12);
+}
+
 TEST(Perforation, DroppingLeavesNoHoleTooCloseOrTooNearTheEdge) {
   for (Combine combine : {Combine::mix, Combine::keep})
     for (uint64_t seed = 1; seed <= 5; ++seed) {

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "layout/union.h"
+#include "layout/zone.h"
 
 namespace curdle {
 namespace {
@@ -20,11 +21,28 @@ struct Hole {
   bool dropped = false;
 };
 
-double edge_gap(const Hole& h, double width, double height) {
+// The least material between the opening and the sheet's edge: the rectangle's, or the
+// outline's (negative when the opening crosses it).
+double edge_gap(const Hole& h, const Layout& layout) {
   double gap = 1e300;
   for (const Circle& c : h.parts) {
     const double r = c.d / 2;
-    gap = std::min({gap, c.cx - r, width - c.cx - r, c.cy - r, height - c.cy - r});
+    if (layout.outline.empty()) {
+      gap = std::min({gap, c.cx - r, layout.width - c.cx - r, c.cy - r, layout.height - c.cy - r});
+      continue;
+    }
+    const Polygon& p = layout.outline;
+    double nearest = 1e300;
+    for (size_t i = 0; i < p.size(); ++i) {
+      const auto& a = p[i];
+      const auto& b = p[(i + 1) % p.size()];
+      const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
+      const double t =
+          length2 > 0 ? std::clamp(((c.cx - a[0]) * dx + (c.cy - a[1]) * dy) / length2, 0.0, 1.0)
+                      : 0.0;
+      nearest = std::min(nearest, std::hypot(a[0] + t * dx - c.cx, a[1] + t * dy - c.cy));
+    }
+    gap = std::min(gap, contains(p, c.cx, c.cy) ? nearest - r : -nearest - r);
   }
   return gap;
 }
@@ -97,7 +115,7 @@ void summarise_sheets(Layout& layout, const LayoutSpec& spec) {
   double least = 1, most = 0;
   for (size_t i = 0; i < layout.sheets.size(); ++i) {
     Layout::FabricationSheet& sheet = layout.sheets[i];
-    sheet.open_area = sheet.area.area() > 0 ? open[i] / sheet.area.area() : 0;
+    sheet.open_area = sheet.surface > 0 ? open[i] / sheet.surface : 0;
     sheet.tools.assign(tools[i].begin(), tools[i].end());
     least = std::min(least, sheet.open_area), most = std::max(most, sheet.open_area);
     const auto& range = spec.perforation().open_area;
@@ -132,6 +150,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
       Hole h;
       h.element = cell;
       h.element.shape.clear();
+      h.element.outline.reset();  // the cell's own cut along an outline is not the opening's
       h.element.cut = false;
       h.element.stock_w = h.element.stock_h = 0;  // punched or cut out: nothing is bought
       h.element.key = cell.key.within('H', std::to_string(++index));
@@ -170,8 +189,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
     if (h.element.circle && h.element.circle->d < spec.perforation().min_diameter - 1e-9)
       drop(h, fmt::format("diameter {:.2f} mm is below the minimum {:.2f} mm", h.element.circle->d,
                           spec.perforation().min_diameter));
-    else if (const double gap = edge_gap(h, layout.width, layout.height);
-             gap < spec.perforation().edge_margin - 1e-9)
+    else if (const double gap = edge_gap(h, layout); gap < spec.perforation().edge_margin - 1e-9)
       drop(h, fmt::format("{:.2f} mm from the sheet edge, below the margin {:.2f} mm", gap,
                           spec.perforation().edge_margin));
   }
@@ -238,14 +256,35 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
 
   if (layout.sheets.empty())
     layout.sheets.push_back({"S-R1-C1", {0, 0, layout.width, layout.height}});
-  double open = 0;
+  // An outline cuts the sheets to it; a sheet wholly beyond it is not cut at all.
+  std::vector<int> renumbered(layout.sheets.size(), -1);
+  std::vector<Layout::FabricationSheet> kept;
+  for (size_t i = 0; i < layout.sheets.size(); ++i) {
+    Layout::FabricationSheet& sheet = layout.sheets[i];
+    sheet.surface = sheet.area.area();
+    if (!layout.outline.empty()) {
+      sheet.surface = 0;
+      for (const Outline& part : cut_along({sheet.area}, PolygonCuts{layout.outline, {}})) {
+        sheet.outline.insert(sheet.outline.end(), part.rings.begin(), part.rings.end());
+        sheet.surface += part.area;
+      }
+      if (sheet.surface < 1e-6) continue;
+    }
+    renumbered[i] = static_cast<int>(kept.size());
+    kept.push_back(std::move(sheet));
+  }
+  layout.sheets = std::move(kept);
+  double open = 0, surface = 0;
+  for (const auto& sheet : layout.sheets) surface += sheet.surface;
   for (Hole& h : holes) {
     if (h.dropped) continue;
+    // One sheet: the whole surface.
+    h.element.sheet = h.element.sheet < 0 ? 0 : renumbered[static_cast<size_t>(h.element.sheet)];
+    if (h.element.sheet < 0) continue;  // on a sheet wholly beyond the outline: never laid
     open += h.element.area();
-    if (h.element.sheet < 0) h.element.sheet = 0;  // one sheet: the whole surface
     layout.elements.push_back(std::move(h.element));
   }
-  layout.open_area = open / (layout.width * layout.height);
+  layout.open_area = surface > 0 ? open / surface : 0;
   const size_t broken = layout.violations.size();
   summarise_sheets(layout, spec);
   // The legend keeps counting cells of each value (as the report does); value 0 is bare sheet.

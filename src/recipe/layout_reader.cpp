@@ -54,7 +54,7 @@ const std::vector<KindKeys>& kinds() {
        true,
        false,
        {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin", "fix", "chord_tolerance",
-        "sheet_size", "punches", "open_area"}},
+        "sheet_size", "punches", "open_area", "outline"}},
       {"park",
        LayoutKind::park,
        "cell",
