@@ -531,11 +531,10 @@ TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
 #include "layout/park.h"
 
 namespace curdle {
+namespace {
 
-// A park on a site with a sloping edge: its surfaces cover exactly the outline (cut along it),
-// and every object stands whole inside it; those that would not are left out and counted.
-TEST(Park, AnOutlineIsCoveredAndObjectsStandWholeInsideIt) {
-  Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+// The paper's park (fig. 5): trees, benches and grey paving on 3 x 3 m cells, 300 mm clear.
+LayoutSpec trees_and_benches() {
   LayoutSpec spec;
   spec.set_kind(LayoutKind::park);
   spec.module_w = spec.module_h = 3000;
@@ -543,6 +542,16 @@ TEST(Park, AnOutlineIsCoveredAndObjectsStandWholeInsideIt) {
   spec.park().elements = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
                           {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
                           {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
+  return spec;
+}
+
+}  // namespace
+
+// A park on a site with a sloping edge: its surfaces cover exactly the outline (cut along it),
+// and every object stands whole inside it; those that would not are left out and counted.
+TEST(Park, AnOutlineIsCoveredAndObjectsStandWholeInsideIt) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = trees_and_benches();
   // 48 x 48 m less a sloping cut across one corner and a step along x and y.
   const Polygon site = {{0, 0},         {30000, 0},     {48000, 20000}, {48000, 48000},
                         {20000, 48000}, {20000, 40000}, {0, 40000}};
@@ -574,14 +583,8 @@ TEST(Park, AnOutlineIsCoveredAndObjectsStandWholeInsideIt) {
 }
 
 TEST(Park, ElementsShareCellsWithoutOverlapAndSurfacesCoverTheArea) {
-  Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::park);
-  spec.module_w = spec.module_h = 3000;
-  spec.park().clearance = 300;
-  spec.park().elements = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
-                          {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
-                          {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = trees_and_benches();
   for (uint64_t seed = 1; seed <= 5; ++seed) {
     const CurdField f = curdle(d, seed, d.field);
     const Layout layout = make_layout(d, f, d.field, spec);
