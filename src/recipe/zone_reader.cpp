@@ -20,7 +20,7 @@ void check_on_surface(TableReader& r, const std::string& key, const Polygon& pol
   for (const auto& p : polygon)
     if (p[0] < -1e-6 || p[1] < -1e-6 || p[0] > size[0] + 1e-6 || p[1] > size[1] + 1e-6)
       r.fail(key, fmt::format("has the corner [{:g}, {:g}] outside the surface of {:g} x {:g} mm; "
-                              "zones lie on it, in mm from its bottom-left corner",
+                              "zones and outlines lie on it, in mm from its bottom-left corner",
                               p[0], p[1], size[0], size[1]));
 }
 
