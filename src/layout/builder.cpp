@@ -136,11 +136,7 @@ void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
       return;
     }
   if (!crosses) return;
-  Outline piece;
-  for (Outline& part : cut_along(e.shape, cuts)) {
-    piece.rings.insert(piece.rings.end(), part.rings.begin(), part.rings.end());
-    piece.area += part.area;
-  }
+  Outline piece = joined(cut_along(e.shape, cuts));
   e.shape.clear();
   if (piece.area < kEps) return;
   e.outline = std::move(piece);

@@ -36,12 +36,8 @@ Rect overlap(const Rect& a, const Rect& b) {
 Region within(const Element& cell, const Rect& r) {
   Region out;
   if (cell.outline) {
-    Outline merged;
-    for (const Outline& part : clip_outline(r, *cell.outline)) {
-      merged.rings.insert(merged.rings.end(), part.rings.begin(), part.rings.end());
-      merged.area += part.area;
-    }
-    if (merged.area > kEps) out.outline = std::move(merged);
+    Outline part = joined(clip_outline(r, *cell.outline));
+    if (part.area > kEps) out.outline = std::move(part);
     return out;
   }
   for (const Rect& c : cell.shape)

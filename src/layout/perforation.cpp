@@ -31,18 +31,8 @@ double edge_gap(const Hole& h, const Layout& layout) {
       gap = std::min({gap, c.cx - r, layout.width - c.cx - r, c.cy - r, layout.height - c.cy - r});
       continue;
     }
-    const Polygon& p = layout.outline;
-    double nearest = 1e300;
-    for (size_t i = 0; i < p.size(); ++i) {
-      const auto& a = p[i];
-      const auto& b = p[(i + 1) % p.size()];
-      const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
-      const double t =
-          length2 > 0 ? std::clamp(((c.cx - a[0]) * dx + (c.cy - a[1]) * dy) / length2, 0.0, 1.0)
-                      : 0.0;
-      nearest = std::min(nearest, std::hypot(a[0] + t * dx - c.cx, a[1] + t * dy - c.cy));
-    }
-    gap = std::min(gap, contains(p, c.cx, c.cy) ? nearest - r : -nearest - r);
+    const double nearest = distance_to_edges(layout.outline, c.cx, c.cy);
+    gap = std::min(gap, contains(layout.outline, c.cx, c.cy) ? nearest - r : -nearest - r);
   }
   return gap;
 }
@@ -263,11 +253,9 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
     Layout::FabricationSheet& sheet = layout.sheets[i];
     sheet.surface = sheet.area.area();
     if (!layout.outline.empty()) {
-      sheet.surface = 0;
-      for (const Outline& part : cut_along({sheet.area}, PolygonCuts{layout.outline, {}})) {
-        sheet.outline.insert(sheet.outline.end(), part.rings.begin(), part.rings.end());
-        sheet.surface += part.area;
-      }
+      const Outline cut = joined(cut_along({sheet.area}, PolygonCuts{layout.outline, {}}));
+      sheet.outline = cut.rings;
+      sheet.surface = cut.area;
       if (sheet.surface < 1e-6) continue;
     }
     renumbered[i] = static_cast<int>(kept.size());

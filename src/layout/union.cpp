@@ -44,6 +44,15 @@ std::vector<Outline> outline_parts(const Outline& outline) {
   return parts;
 }
 
+Outline joined(const std::vector<Outline>& parts) {
+  Outline all;
+  for (const Outline& part : parts) {
+    all.rings.insert(all.rings.end(), part.rings.begin(), part.rings.end());
+    all.area += part.area;
+  }
+  return all;
+}
+
 namespace {
 
 // Outlines (outer rings and their islands, as outlines_of makes them) as a polygon set.

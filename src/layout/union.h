@@ -23,6 +23,10 @@ std::vector<Outline> union_of_rects(const std::vector<Rect>& rects);
 // (counter-clockwise) followed by that part's islands (clockwise).
 std::vector<Outline> outline_parts(const Outline& outline);
 
+// The parts as one outline (all their rings, their areas summed): a piece in several parts;
+// outline_parts splits it again.
+Outline joined(const std::vector<Outline>& parts);
+
 // A surface's sloping or curved edges: an outline that is not a union of rectangles, and
 // excluded zones that are not. Pieces crossing them are cut along them.
 struct PolygonCuts {

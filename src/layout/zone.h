@@ -19,6 +19,9 @@ double polygon_area(const Polygon& polygon);
 // Whether no two edges of the polygon cross or touch, other than neighbours at their vertex.
 bool is_simple(const Polygon& polygon);
 
+// The distance from (x, y) to the polygon's nearest edge, inside or out.
+double distance_to_edges(const Polygon& polygon, double x, double y);
+
 // Where a rectangle lies against a polygon: wholly inside, wholly outside, or crossed by one of
 // its edges (an edge along the rectangle's side does not cross it).
 enum class Crossing { inside, outside, boundary };
