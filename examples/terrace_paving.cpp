@@ -5,6 +5,7 @@
 
 #include "curdle/curdling.h"
 #include "export/svg.h"
+#include "kinds/registry.h"
 #include "layout/builder.h"
 
 int main() {
@@ -18,7 +19,7 @@ int main() {
   design.curds.push_back(dark);
 
   curdle::LayoutSpec spec;
-  spec.set_kind(curdle::LayoutKind::paving);
+  spec.set_kind(curdle::layout_kind("paving"));
   spec.module_w = spec.module_h = 400;
   spec.joint = 8;
   spec.size = std::array<double, 2>{6000, 4000};

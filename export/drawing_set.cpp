@@ -40,7 +40,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   v.top = kMargin + (area[1] - layout.height / s.scale) / 2;
   if (raster) {
     // The picture's own pixels, on whole pixels of the sheet.
-    const double ppm = layout.spec.dpi / 25.4;
+    const double ppm = layout.drawing.dpi / 25.4;
     v.left = std::round(v.left * ppm) / ppm, v.top = std::round(v.top * ppm) / ppm;
     std::vector<uint32_t> argb(static_cast<size_t>(raster->width) * raster->height);
     for (size_t i = 0; i < argb.size(); ++i)
@@ -98,7 +98,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
     const Quantity q = quantities.count(e.value) ? quantities[e.value] : Quantity{};
     std::string line = fmt::format("{} {}: {}", e.value, e.label, legend_count(layout, e.count));
     if (q.cut) line += fmt::format(" ({} cut)", q.cut);
-    if (q.area > 0 && layout.kind != LayoutKind::perforation)
+    if (q.area > 0 && layout.kind->ground() != Ground::sheet)  // not a sheet's holes
       line += fmt::format(", {:.2f} m²", q.area);
     text(cr, x + 10, y + 3.4, fit_lines(cr, {line}, column_w - 12, 2)[0], 2);
   }
@@ -124,7 +124,7 @@ struct InstallerSet {
 
 InstallerSet installer_set(const Layout& layout, const InstallerPlan& plan) {
   InstallerSet set{plan, laying_extents(layout), std::vector<SheetContents>(plan.sheets.size())};
-  const bool elements = layout.kind != LayoutKind::perforation;  // else the pieces are sheets
+  const bool elements = layout.sheets.empty();  // else the pieces are fabrication sheets
   for (size_t i = 0; i < plan.labels.size(); ++i) {
     SheetContents& c = set.contents[plan.labels[i].sheet];
     ++c.pieces;
@@ -227,7 +227,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   }
 
   // Row numbers on the left, column numbers along the bottom, where their rows show.
-  if (layout.kind != LayoutKind::perforation && layout.kind != LayoutKind::blocks) {
+  if (layout.kind->laid_in_courses()) {
     colour(cr, kRed);
     double last = -1e300;
     for (const auto& [row, extent] : set.extents.rows) {
@@ -290,7 +290,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   colour(cr, kInk);
   const double info_x = kx + kw + 8, info_w = w - kMargin - title_width(w) - 4 - info_x;
   const std::string holds = pieces == 0 ? "no pieces"
-                            : layout.kind == LayoutKind::perforation
+                            : !layout.sheets.empty()
                                 ? fmt::format("{} sheet{}", pieces, pieces == 1 ? "" : "s")
                                 : fmt::format("{} pieces: rows {} to {}, columns {} to {}", pieces,
                                               held.row0, held.row1, held.column0, held.column1);
@@ -318,7 +318,7 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
 
 OverviewSheet overview_sheet(const Layout& layout) {
   OverviewSheet s;
-  s.paper = paper_sheet(layout.spec.paper).value_or(*paper_sheet("A3"));
+  s.paper = paper_sheet(layout.drawing.paper).value_or(*paper_sheet("A3"));
   s.scale = drawing_scale(layout);
   for (const char* name : {"A4", "A3", "A2", "A1", "A0"}) {
     const PaperSheet p = *paper_sheet(name);
@@ -374,7 +374,7 @@ void write_layout_pdf(std::ostream& out, const Layout& layout, const InstallerPl
 PreviewImage render_layout_sheet(const Layout& layout, const InstallerPlan& plan) {
   const OverviewSheet overview = overview_sheet(layout);
   const PreviewImage raster = render_layout(layout);
-  const double ppm = layout.spec.dpi / 25.4;
+  const double ppm = layout.drawing.dpi / 25.4;
   const int w = static_cast<int>(std::lround(
       (overview.landscape ? overview.paper.long_side : overview.paper.short_side) * ppm));
   const int h = static_cast<int>(std::lround(
@@ -403,11 +403,11 @@ PreviewImage render_layout_sheet(const Layout& layout, const InstallerPlan& plan
 }
 
 uint64_t layout_sheet_pixels(const LayoutSpec& spec) {
-  const PaperSheet paper = paper_sheet(spec.paper).value_or(*paper_sheet("A3"));
-  const double ppm = spec.dpi / 25.4;
+  const PaperSheet paper = paper_sheet(spec.drawing.paper).value_or(*paper_sheet("A3"));
+  const double ppm = spec.drawing.dpi / 25.4;
   // The sheet itself: A0 at most, when a given scale makes it grow.
   const double sheet =
-      std::max(paper.long_side * paper.short_side, 841.0 * 1189.0 * (spec.scale > 0));
+      std::max(paper.long_side * paper.short_side, 841.0 * 1189.0 * (spec.drawing.scale > 0));
   return static_cast<uint64_t>(sheet * ppm * ppm);
 }
 

@@ -21,30 +21,7 @@ namespace {
 
 using Vec3 = std::array<float, 3>;
 
-// Thickness of what is laid, in mm: what a viewer needs to read the layout as built.
-double thickness_of(const Layout& l, const LayoutSpec& spec) {
-  switch (l.kind) {
-    case LayoutKind::paving:
-      return 30;
-    case LayoutKind::tile:
-      return 10;
-    case LayoutKind::facade:
-      return 20;
-    case LayoutKind::rhythm:
-      return 300;  // fins stand out of the wall
-    case LayoutKind::perforation:
-      return spec.perforation().thickness;
-    case LayoutKind::park:
-      return 30;
-    case LayoutKind::blocks:
-      return spec.blocks().voxel_h;
-  }
-  return 10;
-}
-
-bool upright(const Layout& l) {
-  return l.kind == LayoutKind::facade || l.kind == LayoutKind::rhythm;
-}
+bool upright(const Layout& l) { return l.kind->upright(); }
 
 // Layout millimetres (x, y in the plane; up out of it) to glTF metres.
 Vec3 to_gltf(const Layout& l, double x, double y, double up) {
@@ -232,21 +209,28 @@ void add_prism(const Layout& layout, const std::vector<Ring>& rings, double base
     }
 }
 
-tinygltf::Model build(const Layout& layout) {
-  const Provenance& design = layout.source;
-  const LayoutSpec& spec = layout.spec;
+// A glTF scene of a layout under construction: the model, the value materials, and the
+// unit boxes every box-shaped element shares.
+struct Scene {
+  const Layout& layout;
+  const Provenance& design;
   ModelBuilder b;
   std::vector<int>& roots = b.model.scenes[0].nodes;
-  const double t = thickness_of(layout, spec);
-  const bool sheet = layout.kind == LayoutKind::perforation;
-  const double metallic = sheet || layout.kind == LayoutKind::rhythm ? 0.9 : 0.0;
-  std::vector<int> material(layout.legend.size());
-  for (const LegendEntry& e : layout.legend)
-    material[e.value] = b.add_material(fmt_value_name(e), e.colour, metallic, sheet ? 0.4 : 0.8);
+  double t;  // the thickness of what is laid, mm
+  double metallic;
+  std::vector<int> material;  // per value
+  std::map<int, int> box_mesh;
+
+  explicit Scene(const Layout& l)
+      : layout(l), design(l.source), t(l.thickness), metallic(l.kind->finish().metallic) {
+    material.resize(layout.legend.size());
+    for (const LegendEntry& e : layout.legend)
+      material[e.value] =
+          b.add_material(fmt_value_name(e), e.colour, metallic, l.kind->finish().roughness);
+  }
 
   // Unit boxes, one mesh per material, placed by each node's translation and scale.
-  std::map<int, int> box_mesh;
-  auto unit_box = [&](int mat) {
+  int unit_box(int mat) {
     auto it = box_mesh.find(mat);
     if (it != box_mesh.end()) return it->second;
     std::vector<Vec3> p, n;
@@ -254,220 +238,256 @@ tinygltf::Model build(const Layout& layout) {
     add_box(p, n, i, {-0.5f, -0.5f, -0.5f}, {1, 1, 1});
     return box_mesh[mat] =
                b.add_mesh("box " + b.model.materials[mat].name, {b.primitive(p, n, i, mat)});
-  };
+  }
   // A node that carries a unit box to the rect, `base` to `base + height` out of the plane.
-  auto placed = [&](const Rect& r, double base, double height) {
+  tinygltf::Node placed(const Rect& r, double base, double height) const {
     const auto [lo, size] = box_of(layout, r, base, height);
     tinygltf::Node n;
     n.translation = {lo[0] + size[0] / 2.0, lo[1] + size[1] / 2.0, lo[2] + size[2] / 2.0};
     n.scale = {size[0], size[1], size[2]};
     return n;
-  };
-  auto box_node = [&](const Rect& r, double base, double height, int mat) {
+  }
+  tinygltf::Node box_node(const Rect& r, double base, double height, int mat) {
     tinygltf::Node n = placed(r, base, height);
     n.mesh = unit_box(mat);
     return n;
-  };
-  auto named = [&](const Element& e, tinygltf::Node n) {
+  }
+  // A root node named by the element's ID, carrying its value and curds.
+  void add_named(const Element& e, tinygltf::Node n) {
     n.name = e.id;
     n.extras = element_extras(e, design);
-    return b.add_node(std::move(n));
-  };
-
-  if (layout.kind == LayoutKind::paving || layout.kind == LayoutKind::tile) {
-    // The bed the tiles lie in shows in the joints.
-    const int bed =
-        b.add_material("joint", layout.joint > 0 ? layout.joint_colour : Rgb{200, 200, 200}, 0, 1);
-    // Under the surface only: not beyond an outline, nor under an excluded zone or opening.
-    const Rect surface{0, 0, layout.width, layout.height};
-    if (layout.cut_away.empty()) {
-      const std::vector<Rect> beds = subtract(surface, layout.holes());
-      for (size_t i = 0; i < beds.size(); ++i) {
-        tinygltf::Node n = box_node(beds[i], -5, t * 0.8 + 5, bed);
-        n.name = i ? "bed-" + std::to_string(i) : "bed";
-        roots.push_back(b.add_node(std::move(n)));
-      }
-    } else {  // sloping or curved edges: one solid along them
-      std::vector<Vec3> p, n;
-      std::vector<uint32_t> idx;
-      for (const Outline& o : surfaced(surface, layout.holes(), layout.cut_away))
-        add_prism(layout, o.rings, -5, t * 0.8, p, n, idx);
-      tinygltf::Node node;
-      node.name = "bed";
-      node.mesh = b.add_mesh("bed", {b.primitive(p, n, idx, bed)});
-      roots.push_back(b.add_node(std::move(node)));
-    }
+    roots.push_back(b.add_node(std::move(n)));
   }
+};
 
-  if (sheet) {
-    // The sheet: one solid over the surface (the rectangle, or its outline) whose openings are
-    // its holes, triangulated with CGAL. Openings run clockwise, so that material lies on the
-    // left of every ring, as add_prism takes it.
-    std::vector<Ring> rings;
-    for (const Outline& o :
-         surfaced(Rect{0, 0, layout.width, layout.height}, layout.outside, layout.cut_away))
-      rings.insert(rings.end(), o.rings.begin(), o.rings.end());
-    for (const Element& e : layout.elements) {
-      if (e.circle) rings.push_back(polygonise(*e.circle, spec.perforation().chord_tolerance));
-      if (e.outline) rings.insert(rings.end(), e.outline->rings.begin(), e.outline->rings.end());
-      if (e.circle || e.outline)
-        for (size_t k = rings.size() - (e.outline ? e.outline->rings.size() : 1); k < rings.size();
-             ++k)
-          std::reverse(rings[k].begin(), rings[k].end());
+// The bed tiles and paving lie in, showing in the joints.
+void add_bed(Scene& sc) {
+  const Layout& layout = sc.layout;
+  ModelBuilder& b = sc.b;
+  std::vector<int>& roots = sc.roots;
+  const double t = sc.t;
+  // The bed the tiles lie in shows in the joints.
+  const int bed =
+      b.add_material("joint", layout.joint > 0 ? layout.joint_colour : Rgb{200, 200, 200}, 0, 1);
+  // Under the surface only: not beyond an outline, nor under an excluded zone or opening.
+  const Rect surface{0, 0, layout.width, layout.height};
+  if (layout.cut_away.empty()) {
+    const std::vector<Rect> beds = subtract(surface, layout.holes());
+    for (size_t i = 0; i < beds.size(); ++i) {
+      tinygltf::Node n = sc.box_node(beds[i], -5, t * 0.8 + 5, bed);
+      n.name = i ? "bed-" + std::to_string(i) : "bed";
+      roots.push_back(b.add_node(std::move(n)));
     }
+  } else {  // sloping or curved edges: one solid along them
     std::vector<Vec3> p, n;
     std::vector<uint32_t> idx;
-    add_prism(layout, rings, 0, t, p, n, idx);
-    const int metal = b.add_material("aluminium sheet", Rgb{201, 205, 210}, 0.9, 0.4);
+    for (const Outline& o : surfaced(surface, layout.holes(), layout.cut_away))
+      add_prism(layout, o.rings, -5, t * 0.8, p, n, idx);
     tinygltf::Node node;
-    node.name = "sheet";
-    node.mesh = b.add_mesh("sheet", {b.primitive(p, n, idx, metal)});
+    node.name = "bed";
+    node.mesh = b.add_mesh("bed", {b.primitive(p, n, idx, bed)});
     roots.push_back(b.add_node(std::move(node)));
-    for (const Element& e : layout.elements) {  // each opening, named, at its centre
-      tinygltf::Node h;
-      const Rect r = laid_bounds(e);
-      const Vec3 c = to_gltf(layout, r.x + r.w / 2, r.y + r.h / 2, t / 2);
-      h.translation = {c[0], c[1], c[2]};
-      roots.push_back(named(e, std::move(h)));
+  }
+}
+
+// A perforated sheet: one solid with its openings as holes, and a named node per opening.
+void add_sheet(Scene& sc) {
+  const Layout& layout = sc.layout;
+  ModelBuilder& b = sc.b;
+  std::vector<int>& roots = sc.roots;
+  const double t = sc.t;
+  // The sheet: one solid over the surface (the rectangle, or its outline) whose openings are
+  // its holes, triangulated with CGAL. Openings run clockwise, so that material lies on the
+  // left of every ring, as add_prism takes it.
+  std::vector<Ring> rings;
+  for (const Outline& o :
+       surfaced(Rect{0, 0, layout.width, layout.height}, layout.outside, layout.cut_away))
+    rings.insert(rings.end(), o.rings.begin(), o.rings.end());
+  for (const Element& e : layout.elements) {
+    if (e.circle) rings.push_back(polygonise(*e.circle, layout.chord_tolerance));
+    if (e.outline) rings.insert(rings.end(), e.outline->rings.begin(), e.outline->rings.end());
+    if (e.circle || e.outline)
+      for (size_t k = rings.size() - (e.outline ? e.outline->rings.size() : 1); k < rings.size();
+           ++k)
+        std::reverse(rings[k].begin(), rings[k].end());
+  }
+  std::vector<Vec3> p, n;
+  std::vector<uint32_t> idx;
+  add_prism(layout, rings, 0, t, p, n, idx);
+  const int metal = b.add_material("aluminium sheet", Rgb{201, 205, 210}, 0.9, 0.4);
+  tinygltf::Node node;
+  node.name = "sheet";
+  node.mesh = b.add_mesh("sheet", {b.primitive(p, n, idx, metal)});
+  roots.push_back(b.add_node(std::move(node)));
+  for (const Element& e : layout.elements) {  // each opening, named, at its centre
+    tinygltf::Node h;
+    const Rect r = laid_bounds(e);
+    const Vec3 c = to_gltf(layout, r.x + r.w / 2, r.y + r.h / 2, t / 2);
+    h.translation = {c[0], c[1], c[2]};
+    sc.add_named(e, std::move(h));
+  }
+}
+
+// Blocks: a node per block, its box showing only the faces that are not against another.
+void add_blocks(Scene& sc) {
+  const Layout& layout = sc.layout;
+  ModelBuilder& b = sc.b;
+  const std::vector<int>& material = sc.material;
+  // A node per block, named by its ID: a unit box in its value's material with only the
+  // faces that show (a face between two blocks is inside), shared by the blocks whose
+  // value and shown faces agree.
+  std::set<std::array<int64_t, 3>> solid;
+  for (const Element& e : layout.elements) solid.insert({e.cell_x, e.cell_y, e.cell_z});
+  // add_box's faces are +X, -X, +Y (up), -Y, +Z, -Z in glTF; as lattice steps (glTF +Z is
+  // lattice -y):
+  static const int step[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 0, 1},
+                                 {0, 0, -1}, {0, -1, 0}, {0, 1, 0}};
+  std::map<std::pair<uint32_t, int>, int> block_mesh;
+  auto mesh_for = [&](uint32_t value, int shown) {
+    auto it = block_mesh.find({value, shown});
+    if (it != block_mesh.end()) return it->second;
+    std::vector<Vec3> bp, bn, p, n;
+    std::vector<uint32_t> bi, idx;
+    add_box(bp, bn, bi, {-0.5f, -0.5f, -0.5f}, {1, 1, 1});
+    for (int f = 0; f < 6; ++f) {
+      if (!(shown >> f & 1)) continue;
+      const uint32_t base = static_cast<uint32_t>(p.size());
+      for (int v = 0; v < 4; ++v) p.push_back(bp[f * 4 + v]), n.push_back(bn[f * 4 + v]);
+      for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) idx.push_back(base + i);
     }
-  } else if (layout.kind == LayoutKind::blocks) {
-    // A node per block, named by its ID: a unit box in its value's material with only the
-    // faces that show (a face between two blocks is inside), shared by the blocks whose
-    // value and shown faces agree.
-    std::set<std::array<int64_t, 3>> solid;
-    for (const Element& e : layout.elements) solid.insert({e.cell_x, e.cell_y, e.cell_z});
-    // add_box's faces are +X, -X, +Y (up), -Y, +Z, -Z in glTF; as lattice steps (glTF +Z is
-    // lattice -y):
-    static const int step[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 0, 1},
-                                   {0, 0, -1}, {0, -1, 0}, {0, 1, 0}};
-    std::map<std::pair<uint32_t, int>, int> block_mesh;
-    auto mesh_for = [&](uint32_t value, int shown) {
-      auto it = block_mesh.find({value, shown});
-      if (it != block_mesh.end()) return it->second;
-      std::vector<Vec3> bp, bn, p, n;
-      std::vector<uint32_t> bi, idx;
-      add_box(bp, bn, bi, {-0.5f, -0.5f, -0.5f}, {1, 1, 1});
-      for (int f = 0; f < 6; ++f) {
-        if (!(shown >> f & 1)) continue;
-        const uint32_t base = static_cast<uint32_t>(p.size());
-        for (int v = 0; v < 4; ++v) p.push_back(bp[f * 4 + v]), n.push_back(bn[f * 4 + v]);
-        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) idx.push_back(base + i);
-      }
-      return block_mesh[{value, shown}] =
-                 b.add_mesh("block " + b.model.materials[material[value]].name + " faces " +
-                                std::to_string(shown),
-                            {b.primitive(p, n, idx, material[value])});
-    };
-    const double w = spec.module_w, d = spec.module_h, h = spec.blocks().voxel_h;
-    for (const Element& e : layout.elements) {
-      const Rect plan{(e.cell_x - layout.view.origin[0]) * w,
-                      (e.cell_y - layout.view.origin[1]) * d, w, d};
-      tinygltf::Node node = placed(plan, (e.cell_z - layout.view.origin[2]) * h, h);
-      int shown = 0;
-      for (int f = 0; f < 6; ++f)
-        if (!solid.count({e.cell_x + step[f][0], e.cell_y + step[f][1], e.cell_z + step[f][2]}))
-          shown |= 1 << f;
-      node.mesh = shown ? mesh_for(e.value, shown) : -1;  // a block wholly inside shows nothing
-      roots.push_back(named(e, std::move(node)));
-    }
-  } else if (layout.kind == LayoutKind::park) {
-    // One mesh per element type, shared by every element of the type.
-    std::map<std::string, int> type_mesh;
-    for (const Element& e : layout.elements) {
-      if (type_mesh.count(e.type)) continue;
-      const int mat = b.add_material(e.type, e.colour, 0, 0.9);
-      std::vector<Vec3> p, n;
-      std::vector<uint32_t> i;
-      if (e.circle) {  // a tree: trunk and canopy, the canopy's diameter that of the element
-        const float r = static_cast<float>(e.circle->d / 2000);
-        add_box(p, n, i, {-0.1f, 0, -0.1f}, {0.2f, 2.2f, 0.2f});
-        const int trunk = b.add_material(e.type + " trunk", Rgb{92, 64, 44}, 0, 0.9);
-        std::vector<Vec3> cp, cn;
-        std::vector<uint32_t> ci;
-        const int rings = 8, segments = 12;
-        for (int a = 0; a <= rings; ++a)
-          for (int s2 = 0; s2 <= segments; ++s2) {
-            const double th = 3.14159265358979 * a / rings,
-                         ph = 2 * 3.14159265358979 * s2 / segments;
-            const Vec3 dir{float(std::sin(th) * std::cos(ph)), float(std::cos(th)),
-                           float(std::sin(th) * std::sin(ph))};
-            cp.push_back({dir[0] * r, 2.2f + r + dir[1] * r, dir[2] * r});
-            cn.push_back(dir);
-          }
-        for (int a = 0; a < rings; ++a)
-          for (int s2 = 0; s2 < segments; ++s2) {
-            const uint32_t q = a * (segments + 1) + s2, q2 = q + segments + 1;
-            ci.insert(ci.end(), {q, q + 1, q2, q + 1, q2 + 1, q2});
-          }
-        type_mesh[e.type] =
-            b.add_mesh(e.type, {b.primitive(p, n, i, trunk), b.primitive(cp, cn, ci, mat)});
-      } else {
-        type_mesh[e.type] = unit_box(mat);
-      }
-    }
-    for (const Element& e : layout.elements) {
-      tinygltf::Node n;
-      if (e.circle) {
-        const Vec3 c = to_gltf(layout, e.circle->cx, e.circle->cy, t);
-        n.mesh = type_mesh[e.type];
-        n.translation = {c[0], c[1], c[2]};
-      } else if (e.outline) {  // a surface cut along a sloping or curved edge
-        std::vector<Vec3> p, nr;
-        std::vector<uint32_t> idx;
-        add_prism(layout, e.outline->rings, 0, t, p, nr, idx);
-        n.mesh = b.add_mesh(
-            "piece " + e.id,
-            {b.primitive(p, nr, idx, b.model.meshes[type_mesh[e.type]].primitives[0].material)});
-      } else {
-        const int mat = b.model.meshes[type_mesh[e.type]].primitives[0].material;
-        const bool surface = e.shape.size() == 1 && e.shape[0].w >= e.nominal.w / 8 &&
-                             std::fabs(e.shape[0].h - e.nominal.h) < 1e-6;
-        if (e.shape.size() == 1) {
-          n = box_node(e.shape[0], surface ? 0 : t, surface ? t : 450, mat);
-        } else {  // a surface cut to several rectangles by an outline along x and y
-          for (const Rect& r : e.shape) n.children.push_back(b.add_node(box_node(r, 0, t, mat)));
+    return block_mesh[{value, shown}] =
+               b.add_mesh("block " + b.model.materials[material[value]].name + " faces " +
+                              std::to_string(shown),
+                          {b.primitive(p, n, idx, material[value])});
+  };
+  const double w = layout.module_w, d = layout.module_h, h = layout.level_height;
+  for (const Element& e : layout.elements) {
+    const Rect plan{(e.cell_x - layout.view.origin[0]) * w,
+                    (e.cell_y - layout.view.origin[1]) * d, w, d};
+    tinygltf::Node node = sc.placed(plan, (e.cell_z - layout.view.origin[2]) * h, h);
+    int shown = 0;
+    for (int f = 0; f < 6; ++f)
+      if (!solid.count({e.cell_x + step[f][0], e.cell_y + step[f][1], e.cell_z + step[f][2]}))
+        shown |= 1 << f;
+    node.mesh = shown ? mesh_for(e.value, shown) : -1;  // a block wholly inside shows nothing
+    sc.add_named(e, std::move(node));
+  }
+}
+
+// Park elements: a mesh per element type (a tree's trunk and canopy), shared.
+void add_park(Scene& sc) {
+  const Layout& layout = sc.layout;
+  ModelBuilder& b = sc.b;
+  const double t = sc.t;
+  // One mesh per element type, shared by every element of the type.
+  std::map<std::string, int> type_mesh;
+  for (const Element& e : layout.elements) {
+    if (type_mesh.count(e.type)) continue;
+    const int mat = b.add_material(e.type, e.colour, 0, 0.9);
+    std::vector<Vec3> p, n;
+    std::vector<uint32_t> i;
+    if (e.circle) {  // a tree: trunk and canopy, the canopy's diameter that of the element
+      const float r = static_cast<float>(e.circle->d / 2000);
+      add_box(p, n, i, {-0.1f, 0, -0.1f}, {0.2f, 2.2f, 0.2f});
+      const int trunk = b.add_material(e.type + " trunk", Rgb{92, 64, 44}, 0, 0.9);
+      std::vector<Vec3> cp, cn;
+      std::vector<uint32_t> ci;
+      const int rings = 8, segments = 12;
+      for (int a = 0; a <= rings; ++a)
+        for (int s2 = 0; s2 <= segments; ++s2) {
+          const double th = 3.14159265358979 * a / rings,
+                       ph = 2 * 3.14159265358979 * s2 / segments;
+          const Vec3 dir{float(std::sin(th) * std::cos(ph)), float(std::cos(th)),
+                         float(std::sin(th) * std::sin(ph))};
+          cp.push_back({dir[0] * r, 2.2f + r + dir[1] * r, dir[2] * r});
+          cn.push_back(dir);
         }
-      }
-      roots.push_back(named(e, std::move(n)));
-    }
-  } else {
-    // Tiles, paving, panels, fins: a node per element, named by its ID, sharing one unit box
-    // per material, so that any importer keeps every element's identity at any size. In keep
-    // mode each curd's stripe is a child in the curd's own colour, as the drawings show it.
-    std::map<std::array<uint8_t, 3>, int> part_material;
-    auto material_of = [&](const Element& e, const Rgb& colour) {
-      if (colour == layout.legend[e.value].colour) return material[e.value];
-      const std::array<uint8_t, 3> key{colour.r, colour.g, colour.b};
-      auto it = part_material.find(key);
-      if (it != part_material.end()) return it->second;
-      std::string name = "part " + hex_colour(colour);
-      for (size_t c = 0; c < design.curds.size(); ++c)
-        if (curd_colour(design.curds, c) == colour) name = "curd " + design.curds[c].name;
-      return part_material[key] = b.add_material(name, colour, metallic, 0.8);
-    };
-    for (const Element& e : layout.elements) {
-      if (e.outline) {  // cut along a sloping or curved edge: its own solid
-        std::vector<Vec3> p, n;
-        std::vector<uint32_t> idx;
-        add_prism(layout, e.outline->rings, 0, t, p, n, idx);
-        tinygltf::Node node;
-        node.mesh = b.add_mesh("piece " + e.id, {b.primitive(p, n, idx, material[e.value])});
-        roots.push_back(named(e, std::move(node)));
-        continue;
-      }
-      const std::vector<ColouredRect> parts = keep_stripes(layout, e);
-      if (parts.size() == 1) {
-        roots.push_back(named(e, box_node(parts[0].rect, 0, t, material_of(e, parts[0].colour))));
-        continue;
-      }
-      tinygltf::Node parent;  // a cut element in pieces, or a kept element in stripes
-      for (const ColouredRect& part : parts)
-        parent.children.push_back(
-            b.add_node(box_node(part.rect, 0, t, material_of(e, part.colour))));
-      roots.push_back(named(e, std::move(parent)));
+      for (int a = 0; a < rings; ++a)
+        for (int s2 = 0; s2 < segments; ++s2) {
+          const uint32_t q = a * (segments + 1) + s2, q2 = q + segments + 1;
+          ci.insert(ci.end(), {q, q + 1, q2, q + 1, q2 + 1, q2});
+        }
+      type_mesh[e.type] =
+          b.add_mesh(e.type, {b.primitive(p, n, i, trunk), b.primitive(cp, cn, ci, mat)});
+    } else {
+      type_mesh[e.type] = sc.unit_box(mat);
     }
   }
+  for (const Element& e : layout.elements) {
+    tinygltf::Node n;
+    if (e.circle) {
+      const Vec3 c = to_gltf(layout, e.circle->cx, e.circle->cy, t);
+      n.mesh = type_mesh[e.type];
+      n.translation = {c[0], c[1], c[2]};
+    } else if (e.outline) {  // a surface cut along a sloping or curved edge
+      std::vector<Vec3> p, nr;
+      std::vector<uint32_t> idx;
+      add_prism(layout, e.outline->rings, 0, t, p, nr, idx);
+      n.mesh = b.add_mesh(
+          "piece " + e.id,
+          {b.primitive(p, nr, idx, b.model.meshes[type_mesh[e.type]].primitives[0].material)});
+    } else {
+      const int mat = b.model.meshes[type_mesh[e.type]].primitives[0].material;
+      const bool surface = e.shape.size() == 1 && e.shape[0].w >= e.nominal.w / 8 &&
+                           std::fabs(e.shape[0].h - e.nominal.h) < 1e-6;
+      if (e.shape.size() == 1) {
+        n = sc.box_node(e.shape[0], surface ? 0 : t, surface ? t : 450, mat);
+      } else {  // a surface cut to several rectangles by an outline along x and y
+        for (const Rect& r : e.shape) n.children.push_back(b.add_node(sc.box_node(r, 0, t, mat)));
+      }
+    }
+    sc.add_named(e, std::move(n));
+  }
+}
 
+// Pieces: tiles, paving, panels, fins.
+void add_pieces(Scene& sc) {
+  const Layout& layout = sc.layout;
+  const Provenance& design = sc.design;
+  ModelBuilder& b = sc.b;
+  const std::vector<int>& material = sc.material;
+  const double t = sc.t, metallic = sc.metallic;
+  // Tiles, paving, panels, fins: a node per element, named by its ID, sharing one unit box
+  // per material, so that any importer keeps every element's identity at any size. In keep
+  // mode each curd's stripe is a child in the curd's own colour, as the drawings show it.
+  std::map<std::array<uint8_t, 3>, int> part_material;
+  auto material_of = [&](const Element& e, const Rgb& colour) {
+    if (colour == layout.legend[e.value].colour) return material[e.value];
+    const std::array<uint8_t, 3> key{colour.r, colour.g, colour.b};
+    auto it = part_material.find(key);
+    if (it != part_material.end()) return it->second;
+    std::string name = "part " + hex_colour(colour);
+    for (size_t c = 0; c < design.curds.size(); ++c)
+      if (curd_colour(design.curds, c) == colour) name = "curd " + design.curds[c].name;
+    return part_material[key] = b.add_material(name, colour, metallic, 0.8);
+  };
+  for (const Element& e : layout.elements) {
+    if (e.outline) {  // cut along a sloping or curved edge: its own solid
+      std::vector<Vec3> p, n;
+      std::vector<uint32_t> idx;
+      add_prism(layout, e.outline->rings, 0, t, p, n, idx);
+      tinygltf::Node node;
+      node.mesh = b.add_mesh("piece " + e.id, {b.primitive(p, n, idx, material[e.value])});
+      sc.add_named(e, std::move(node));
+      continue;
+    }
+    const std::vector<ColouredRect> parts = keep_stripes(layout, e);
+    if (parts.size() == 1) {
+      sc.add_named(e, sc.box_node(parts[0].rect, 0, t, material_of(e, parts[0].colour)));
+      continue;
+    }
+    tinygltf::Node parent;  // a cut element in pieces, or a kept element in stripes
+    for (const ColouredRect& part : parts)
+      parent.children.push_back(
+          b.add_node(sc.box_node(part.rect, 0, t, material_of(e, part.colour))));
+    sc.add_named(e, std::move(parent));
+  }
+}
+
+// The scene's extras: how to reproduce it.
+void add_provenance(Scene& sc) {
+  const Provenance& design = sc.design;
+  ModelBuilder& b = sc.b;
   tinygltf::Value::Object scene;
   scene["recipe"] = tinygltf::Value(design.recipe);
   scene["seed"] = tinygltf::Value(std::to_string(design.seed));
@@ -480,7 +500,29 @@ tinygltf::Model build(const Layout& layout) {
   scene["units"] = tinygltf::Value(std::string("metres, +Y up"));
   b.model.scenes[0].name = design.recipe;
   b.model.scenes[0].extras = tinygltf::Value(scene);
-  return b.model;
+}
+
+tinygltf::Model build(const Layout& layout) {
+  Scene sc(layout);
+  if (layout.kind->bedded()) add_bed(sc);
+  if (layout.kind->ground() == Ground::sheet) {
+    add_sheet(sc);
+  } else {
+    switch (layout.kind->depiction()) {
+      case Depiction::views:
+        add_blocks(sc);
+        break;
+      case Depiction::objects:
+        add_park(sc);
+        break;
+      case Depiction::grid:
+      case Depiction::shapes:
+        add_pieces(sc);
+        break;
+    }
+  }
+  add_provenance(sc);
+  return std::move(sc.b.model);
 }
 
 }  // namespace

@@ -181,7 +181,7 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
   out << "</g>\n";
 
   // Row numbers in the strip on the left, column numbers under the grid, where they read.
-  if (layout.kind != LayoutKind::perforation && layout.kind != LayoutKind::blocks) {
+  if (layout.kind->laid_in_courses()) {
     const LayingExtents extents = laying_extents(layout);
     const double cap = 2.5;
     out << fmt::format("<g id=\"rows\" font-size=\"{}\" fill=\"{}\">\n",

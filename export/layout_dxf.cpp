@@ -15,10 +15,10 @@ namespace {
 constexpr Rgb kInk{0, 0, 0};
 
 std::string layer_of(const Layout& layout, const Element& e) {
-  if (e.circle && layout.kind == LayoutKind::perforation) return hole_layer(e.circle->d);
-  if (e.outline && is_opening(layout, e)) return "OPENING_OUTLINE";
+  if (e.circle && e.form == ElementForm::opening) return hole_layer(e.circle->d);
+  if (e.outline && e.form == ElementForm::opening) return "OPENING_OUTLINE";
   const std::string& material = piece_material(layout, e);
-  if (layout.kind == LayoutKind::blocks)
+  if (e.form == ElementForm::block)
     return fmt::format("L{} {}", e.cell_z - layout.view.origin[2], material);
   return material;
 }
@@ -44,7 +44,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
 
   if (!layout.outline.empty())
     dxf.polygon("OUTLINE", layout.outline);
-  else if (layout.kind != LayoutKind::blocks)
+  else if (layout.views.empty())  // blocks are drawn as views, not a surface
     dxf.rect("OUTLINE", extents);
   for (const Rect& o : layout.openings) dxf.rect("OPENINGS", o);
   for (const Element& e : layout.elements) {

@@ -122,33 +122,30 @@ struct Canvas {
 }  // namespace
 
 double drawing_scale(const Layout& layout) {
-  if (layout.spec.scale > 0) return layout.spec.scale;
-  const auto sheet = paper_sheet(layout.spec.paper).value_or(*paper_sheet("A3"));
+  if (layout.drawing.scale > 0) return layout.drawing.scale;
+  const auto sheet = paper_sheet(layout.drawing.paper).value_or(*paper_sheet("A3"));
   return fit_to_sheet(layout.width, layout.height, sheet).scale;
 }
 
 Layout layout_extent(const LayoutSpec& spec, const Box& view) {
   Layout outline;
-  outline.spec = spec;
-  outline.width = spec.size ? (*spec.size)[0] : view.size[0] * (spec.module_w + spec.joint);
-  outline.height = spec.size ? (*spec.size)[1] : view.size[1] * (spec.module_h + spec.joint);
-  if (spec.kind() == LayoutKind::blocks) {
-    outline.width = 2 * view.size[0] * spec.module_w + 2 * std::max(spec.module_w, spec.module_h);
-    outline.height = std::max(view.size[1] * spec.module_h, view.size[2] * spec.blocks().voxel_h);
-  }
+  outline.kind = spec.kind;
+  outline.drawing = spec.drawing;
+  const auto extent = spec.kind->drawing_extent(spec, view);
+  outline.width = extent[0];
+  outline.height = extent[1];
   return outline;
 }
 
 uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view) {
   const Layout outline = layout_extent(spec, view);
-  const double ppm = spec.dpi / 25.4 / drawing_scale(outline);
+  const double ppm = spec.drawing.dpi / 25.4 / drawing_scale(outline);
   return static_cast<uint64_t>(std::ceil(outline.width * ppm) * std::ceil(outline.height * ppm));
 }
 
 PreviewImage render_layout(const Layout& layout) {
-  const LayoutSpec& spec = layout.spec;
   Canvas canvas;
-  canvas.px_per_mm = spec.dpi / 25.4 / drawing_scale(layout);
+  canvas.px_per_mm = layout.drawing.dpi / 25.4 / drawing_scale(layout);
   canvas.layout_height = layout.height;
   canvas.width = std::max(1, static_cast<int>(std::ceil(layout.width * canvas.px_per_mm)));
   canvas.height = std::max(1, static_cast<int>(std::ceil(layout.height * canvas.px_per_mm)));
@@ -157,7 +154,7 @@ PreviewImage render_layout(const Layout& layout) {
                      std::to_string(canvas.height) + " pixels, above " +
                      std::to_string(kMaxPixels) +
                      " a side; use a larger layout.scale or lower layout.dpi");
-  const bool sheet = layout.kind == LayoutKind::perforation;
+  const bool sheet = layout.kind->ground() == Ground::sheet;
   const Rgb background = sheet              ? Rgb{201, 205, 210}
                          : layout.joint > 0 ? layout.joint_colour
                                             : seamless_background(layout);

@@ -16,11 +16,10 @@ namespace {
 
 std::string type_of(const Layout& layout, const Element& e) {
   if (!e.type.empty()) return e.type;
-  if (is_opening(layout, e)) return "opening";
+  if (e.form == ElementForm::opening) return "opening";
   return layout.element_type;
 }
 
-bool is_blocks(const Layout& layout) { return layout.kind == LayoutKind::blocks; }
 
 // What an order line is bought as: the stock size, or the opening's diameter.
 std::string size_of(const Layout& layout, const Element& e) {
@@ -29,10 +28,11 @@ std::string size_of(const Layout& layout, const Element& e) {
     s += mm_text(e.circle->d);
     return s;
   }
-  if (e.outline && is_opening(layout, e)) return "merged opening";
-  const double h = is_blocks(layout) ? layout.spec.blocks().voxel_h : e.stock_h;
+  if (e.outline && e.form == ElementForm::opening) return "merged opening";
+  const bool block = e.form == ElementForm::block;  // its plan, then its storey
+  const double h = block ? layout.level_height : e.stock_h;
   std::string s = mm_text(e.stock_w) + " x " + mm_text(h);
-  if (is_blocks(layout)) s += " x " + mm_text(e.stock_h);
+  if (block) s += " x " + mm_text(e.stock_h);
   return s;
 }
 
@@ -41,20 +41,19 @@ double stock_area(const Element& e) { return e.stock_w * e.stock_h; }
 std::string lot_text(const Layout& layout, const Element& e, size_t index) {
   // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in.
   return e.sheet >= 0 ? layout.sheets[static_cast<size_t>(e.sheet)].id
-                      : std::to_string(lot_of(e, index, layout.spec));
+                      : std::to_string(lot_of(e, index, layout.ordering));
 }
 
 }  // namespace
 
-int64_t lot_of(const Element& e, size_t index, const LayoutSpec& spec) {
-  if (spec.lot_rows > 0) return e.row / spec.lot_rows + 1;
-  if (spec.lot_size > 0) return static_cast<int64_t>(index) / spec.lot_size + 1;
+int64_t lot_of(const Element& e, size_t index, const OrderingKeys& ordering) {
+  if (ordering.lot_rows > 0) return e.row / ordering.lot_rows + 1;
+  if (ordering.lot_size > 0) return static_cast<int64_t>(index) / ordering.lot_size + 1;
   return 1;
 }
 
 void write_schedule_csv(std::ostream& out, const Layout& layout) {
   const Provenance& design = layout.source;
-  const LayoutSpec& spec = layout.spec;
   std::string header = kUtf8Mark;
   header +=
       "element_id,lot,level,row,column,x_mm,y_mm,z_mm,width_mm,height_mm,depth_mm,area_m2,"
@@ -69,16 +68,16 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
   out << header;
   std::string buffer;
   buffer.reserve(1 << 20);
-  const bool blocks = is_blocks(layout);
   for (size_t i = 0; i < layout.elements.size(); ++i) {
     const Element& e = layout.elements[i];
     const Rect b = laid_bounds(e);
     std::string level, z = "0", height = mm_text(b.h), depth;
-    if (blocks) {
+    const bool block = e.form == ElementForm::block;
+    if (block) {
       const int64_t l = e.cell_z - layout.view.origin[2];
       level = std::to_string(l);
-      z = mm_text(static_cast<double>(l) * spec.blocks().voxel_h);
-      height = mm_text(spec.blocks().voxel_h);
+      z = mm_text(static_cast<double>(l) * layout.level_height);
+      height = mm_text(layout.level_height);
       depth = mm_text(b.h);
     }
     const bool bought = stock_area(e) > 0;
@@ -86,7 +85,7 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
                    lot_text(layout, e, i), level, e.row, e.column, mm_text(b.x), mm_text(b.y), z,
                    mm_text(b.w), height, depth, fmt::format("{:.6f}", e.area() / 1e6),
                    bought ? mm_text(e.stock_w) : "",
-                   bought ? mm_text(blocks ? spec.blocks().voxel_h : e.stock_h) : "", e.value);
+                   bought ? mm_text(block ? layout.level_height : e.stock_h) : "", e.value);
     for (size_t c = 0; c < design.curds.size(); ++c) buffer += (e.value >> c & 1) ? ",1" : ",0";
     fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{}", csv_field(type_of(layout, e)),
                    hex_colour(piece_colour(layout, e)), csv_field(piece_material(layout, e)),
@@ -94,7 +93,7 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
     if (e.circle)
       fmt::format_to(std::back_inserter(buffer), ",{},{},{}", mm_text(e.circle->cx),
                      mm_text(e.circle->cy), mm_text(e.circle->d));
-    else if (e.outline && is_opening(layout, e))
+    else if (e.outline && e.form == ElementForm::opening)
       fmt::format_to(std::back_inserter(buffer), ",{},{},", mm_text(b.x + b.w / 2),
                      mm_text(b.y + b.h / 2));
     else
@@ -151,7 +150,7 @@ std::string order_fields(const OrderKey& key, const OrderLine& l) {
 }  // namespace
 
 void write_quantities_csv(std::ostream& out, const Layout& layout) {
-  const LayoutSpec& spec = layout.spec;
+  const OrderingKeys& spec = layout.ordering;
   std::map<OrderKey, OrderLine> lines;
   for (const Element& e : layout.elements) add_to(lines[order_key(layout, e)], e);
   out << kUtf8Mark
@@ -173,7 +172,7 @@ void write_lots_csv(std::ostream& out, const Layout& layout) {
   for (size_t i = 0; i < layout.elements.size(); ++i) {
     const Element& e = layout.elements[i];
     std::string lot = lot_text(layout, e, i);
-    if (layout.kind == LayoutKind::blocks)
+    if (e.form == ElementForm::block)
       lot = "level " + std::to_string(e.cell_z - layout.view.origin[2]);
     if (!lots.count(lot)) order.push_back(lot);
     add_to(lots[lot][order_key(layout, e)], e);

@@ -23,7 +23,7 @@
 namespace curdle {
 
 // The lot an element belongs to, counted from 1 in laying order.
-int64_t lot_of(const Element& element, size_t index, const LayoutSpec& spec);
+int64_t lot_of(const Element& element, size_t index, const OrderingKeys& ordering);
 
 void write_schedule_csv(std::ostream& out, const Layout& layout);
 void write_quantities_csv(std::ostream& out, const Layout& layout);

@@ -61,7 +61,7 @@ void box(cairo_t* cr, double x, double y, double w, double h, double line) {
 void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
   const double alpha = faint ? 0.35 : 1;
   const Rect all{0, 0, layout.width, layout.height};
-  const bool sheet = layout.kind == LayoutKind::perforation;
+  const bool sheet = layout.kind->ground() == Ground::sheet;
   colour(cr,
          sheet              ? Rgb{201, 205, 210}
          : layout.joint > 0 ? layout.joint_colour
@@ -163,7 +163,7 @@ void scale_bar(cairo_t* cr, double x, double y, double scale, double room) {
 // Where laying starts: a red dot just outside the origin corner, and arrows along the first
 // row and up the rows, clear of the first element.
 void start_corner(cairo_t* cr, const Layout& layout, const View& v) {
-  if (layout.kind == LayoutKind::blocks) return;
+  if (!layout.kind->laid_from_corner()) return;
   const bool right = from_right(layout.origin), top = from_top(layout.origin);
   const double cx = v.x(right ? layout.width : 0), cy = v.y(top ? layout.height : 0);
   const double dx = right ? -1 : 1, dy = top ? 1 : -1;  // paper y runs down

@@ -18,25 +18,6 @@ std::string escape(const std::string& s) { return xml_escape(s); }
 
 std::string mm(double v) { return drawing_mm(v); }
 
-const char* kind_name(LayoutKind kind) {
-  switch (kind) {
-    case LayoutKind::tile:
-      return "tile";
-    case LayoutKind::paving:
-      return "paving";
-    case LayoutKind::facade:
-      return "facade";
-    case LayoutKind::perforation:
-      return "perforation";
-    case LayoutKind::park:
-      return "park";
-    case LayoutKind::rhythm:
-      return "rhythm";
-    case LayoutKind::blocks:
-      return "blocks";
-  }
-  return "layout";
-}
 
 // SVG's y runs down; the layout's runs up from the bottom of the drawing area.
 struct Sheet {
@@ -237,7 +218,7 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
     else
       grid[i] = static_cast<int>(e.value);
   }
-  const bool bonded = layout.spec.bond > 0;  // courses do not line up
+  const bool bonded = layout.bond > 0;  // courses do not line up
   const std::vector<GridRect> merged = merge_runs(grid, layout.rows, layout.columns, !bonded);
   size_t next = 0;
   for (const LegendEntry& entry : layout.legend) {
@@ -305,11 +286,11 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
 void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Sheet& s, double unit,
                              double margin) {
   const Provenance& source = layout.source;
-  const LayoutSpec& spec = layout.spec;
+  const DrawingKeys& drawing = layout.drawing;
   const double W = layout.width, H = layout.height;
   const size_t values = layout.legend.size();
   // Overlays.
-  if (spec.stage_grid) {
+  if (drawing.stage_grid) {
     out << "<g id=\"stage-grid\" class=\"overlay\" fill=\"none\" stroke=\"#d6336c\">\n";
     const Lattice& l = source.lattice;
     for (int k = 0; k < l.stages; ++k) {
@@ -333,8 +314,8 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
     }
     out << "</g>\n";
   }
-  if (spec.highlight) {
-    const Box& w = *spec.highlight;
+  if (drawing.highlight) {
+    const Box& w = *drawing.highlight;
     const double x0 = layout.cell_edge_x(w.origin[0]),
                  x1 = layout.cell_edge_x(w.origin[0] + w.size[0]);
     const double y0 = layout.cell_edge_y(w.origin[1]),
@@ -349,11 +330,10 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
   }
 
   // Zones: each outlined and named, value zones dashed.
-  if (!spec.zones.empty()) {
+  if (!layout.zones.empty()) {
     out << fmt::format("<g id=\"zones\" class=\"overlay\" fill=\"none\" font-size=\"{}\">\n",
                        mm(unit * 0.8));
-    for (size_t i = 0; i < spec.zones.size(); ++i) {
-      const Zone& z = spec.zones[i];
+    for (const ZoneCount& z : layout.zones) {
       const bool value = z.rule == ZoneRule::value;
       out << fmt::format(
           "<g class=\"zone\" data-name=\"{}\" data-rule=\"{}\"><path d=\"{}\" stroke=\"{}\" "
@@ -387,7 +367,7 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
     if (values > 16 && e.count == 0) continue;
     if (shown == 16) break;
     const double y = top + unit * 1.6 * static_cast<double>(shown++);
-    const bool striped = layout.combine == Combine::keep && layout.kind != LayoutKind::perforation;
+    const bool striped = layout.combine == Combine::keep && layout.kind->ground() != Ground::sheet;
     const std::string fill = striped ? fmt::format("url(#parts-{})", e.value) : hex_colour(e.colour);
     out << fmt::format(
         "<g class=\"legend-entry\" data-value=\"{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" "
@@ -425,8 +405,7 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
 Rgb seamless_background(const Layout& layout) {
   // With no joints, adjacent shapes meet edge to edge and antialiasing can let the background
   // through the seam: the most common value's colour hides it. Lines and blocks stay on white.
-  if (layout.combine != Combine::mix || layout.kind == LayoutKind::rhythm ||
-      layout.kind == LayoutKind::blocks || layout.kind == LayoutKind::park)
+  if (layout.combine != Combine::mix || layout.kind->ground() == Ground::paper)
     return Rgb{255, 255, 255};
   const LegendEntry* most = nullptr;
   for (const LegendEntry& e : layout.legend)
@@ -457,7 +436,8 @@ void write_layout_svg(std::ostream& out, const Layout& layout) {
 
   // Patterns for keep mode: each curd present keeps its own stripe of the element, counted
   // from the side laying starts from (as keep_stripes gives them to the PNG and the glTF).
-  const bool striped = layout.combine == Combine::keep && layout.kind != LayoutKind::perforation;
+  // (A sheet's openings in keep mode are their union, not stripes.)
+  const bool striped = layout.combine == Combine::keep && layout.kind->ground() != Ground::sheet;
   if (striped) {
     out << "<defs>\n";
     const double pw = layout.module_w + layout.joint, ph = layout.module_h + layout.joint;
@@ -482,8 +462,8 @@ void write_layout_svg(std::ostream& out, const Layout& layout) {
   }
 
   out << fmt::format("<g id=\"layout\" class=\"{}\" data-element-type=\"{}\">\n",
-                     kind_name(layout.kind), escape(layout.element_type));
-  const bool sheet = layout.kind == LayoutKind::perforation;
+                     escape(std::string(layout.kind->name())), escape(layout.element_type));
+  const bool sheet = layout.kind->ground() == Ground::sheet;
   out << fmt::format(
       "<rect id=\"background\" class=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" "
       "height=\"{}\" fill=\"{}\"{}/>\n",
@@ -493,15 +473,20 @@ void write_layout_svg(std::ostream& out, const Layout& layout) {
                          : hex_colour(seamless_background(layout)),
       sheet ? fmt::format(" stroke=\"#222\" stroke-width=\"{}\"", mm(unit * 0.05)) : "");
 
-  if (layout.kind == LayoutKind::perforation || layout.kind == LayoutKind::rhythm) {
-    draw_openings(out, layout, s);
-    draw_outside(out, layout, s, unit);
-  } else if (layout.kind == LayoutKind::blocks) {
-    draw_views(out, layout, s, unit);
-  } else if (layout.kind == LayoutKind::park) {
-    draw_park(out, layout, s, unit);
-  } else {
-    draw_modules(out, layout, s, unit);
+  switch (layout.kind->depiction()) {
+    case Depiction::shapes:
+      draw_openings(out, layout, s);
+      draw_outside(out, layout, s, unit);
+      break;
+    case Depiction::views:
+      draw_views(out, layout, s, unit);
+      break;
+    case Depiction::objects:
+      draw_park(out, layout, s, unit);
+      break;
+    case Depiction::grid:
+      draw_modules(out, layout, s, unit);
+      break;
   }
   out << "</g>\n";
   draw_overlays_and_sheet(out, layout, s, unit, margin);

@@ -6,13 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "layout/drawing_sheet.h"
 #include "layout/layout.h"
 
 namespace curdle {
-
-// Millimetres as the drawings write them: 0.001 mm is below any tolerance and keeps files
-// small; trailing zeros dropped.
-std::string drawing_mm(double v);
 
 std::vector<std::string> title_lines(const Layout& layout);
 

@@ -16,16 +16,20 @@
 namespace curdle {
 namespace {
 
-Layout facade(const std::array<double, 2>& shift, double min_cut) {
-  Design d = test::design(4, 2, {{"3/4", "1/2", "2/3"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::facade);
+LayoutSpec facade_spec(const std::array<double, 2>& shift, double min_cut) {
+  LayoutSpec spec = test::layout_spec("facade");
   spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
   spec.size = std::array<double, 2>{6000, 3000};
   spec.shift = shift;
   spec.min_cut = min_cut;
   // A window whose head is 15 mm above a course and whose sides cut bricks near their ends.
-  spec.facade().openings = {{1000, 900, 1200, 1475}, {4000, 0, 900, 2100}};
+  spec.own<FacadeKeys>().openings = {{1000, 900, 1200, 1475}, {4000, 0, 900, 2100}};
+  return spec;
+}
+
+Layout facade(const std::array<double, 2>& shift, double min_cut) {
+  Design d = test::design(4, 2, {{"3/4", "1/2", "2/3"}});
+  const LayoutSpec spec = facade_spec(shift, min_cut);
   const auto cells = elements_to_cover(spec);
   d.field.size = {cells[0], cells[1], 1};
   const CurdField f = curdle(d, 5, d.field);
@@ -67,7 +71,7 @@ TEST(CutRules, SliversAtOpeningsAreReportedAndTheAdvisedShiftLeavesFewer) {
   }
   EXPECT_EQ(reported, found);
   EXPECT_GT(at_openings, 0u);  // the window head's course, not only the wall's edges
-  LayoutSpec spec = plain.spec;
+  const LayoutSpec spec = facade_spec({0, 0}, 50);
   const ShiftAdvice x = best_shift(plain, spec, 0), y = best_shift(plain, spec, 1);
   EXPECT_LT(x.slivers + y.slivers, x.now + y.now);
   const Layout moved = facade({x.shift, y.shift}, 50);
@@ -88,17 +92,17 @@ namespace {
 Layout screen(Combine combine, std::vector<double> punches,
               std::optional<std::array<double, 2>> open_area, uint64_t seed) {
   const Design d = test::design(4, 2, {{"1/2", "1/2"}, {"1/2", "1/2"}, {"1/2", "1/2"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::perforation);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("perforation"));
   spec.combine = combine;
   spec.module_w = spec.module_h = 40;
   spec.size = std::array<double, 2>{640, 640};
-  spec.perforation().thickness = 2;
+  spec.own<PerforationKeys>().thickness = 2;
   // The third opening lies inside the first: their union is the first circle.
-  spec.perforation().holes = {{16, -7, 6}, {16, 7, 6}, {8, -7, 6}};
-  spec.perforation().punches = std::move(punches);
-  spec.perforation().open_area = open_area;
-  spec.perforation().sheet_size = std::array<double, 2>{300, 640};
+  spec.own<PerforationKeys>().holes = {{16, -7, 6}, {16, 7, 6}, {8, -7, 6}};
+  spec.own<PerforationKeys>().punches = std::move(punches);
+  spec.own<PerforationKeys>().open_area = open_area;
+  spec.own<PerforationKeys>().sheet_size = std::array<double, 2>{300, 640};
   const CurdField f = curdle(d, seed, d.field);
   return make_layout(d, f, d.field, spec);
 }

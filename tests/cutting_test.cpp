@@ -13,7 +13,7 @@
 
 #include "curdle/curdling.h"
 #include "layout/builder.h"
-#include "layout/perforation.h"
+#include "kinds/perforation.h"
 #include "test_support.h"
 
 namespace curdle {
@@ -42,17 +42,17 @@ TEST(Cutting, SheetsKeepMarginsAndBridgesAndTheirDxfHoldsTheirOpenings) {
   const Design d = test::design(
       2, 2,
       {{"0.9", "0.9", "0.8", "0.8", "0.8", "0.7"}, {"0.8", "0.7", "0.8", "0.7", "0.7", "0.8"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::perforation);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("perforation"));
   spec.combine = Combine::mix;
   spec.module_w = spec.module_h = 50;
   spec.size = std::array<double, 2>{3200, 3200};
-  spec.perforation().thickness = 3;
-  spec.perforation().holes = {{12, -8, 8}, {20, 4, -4}};
-  spec.perforation().min_bridge = 4;
-  spec.perforation().edge_margin = 20;
-  spec.perforation().fix = HoleFix::drop;
-  spec.perforation().sheet_size = std::array<double, 2>{1250, 2500};
+  spec.own<PerforationKeys>().thickness = 3;
+  spec.own<PerforationKeys>().holes = {{12, -8, 8}, {20, 4, -4}};
+  spec.own<PerforationKeys>().min_bridge = 4;
+  spec.own<PerforationKeys>().edge_margin = 20;
+  spec.own<PerforationKeys>().fix = HoleFix::drop;
+  spec.own<PerforationKeys>().sheet_size = std::array<double, 2>{1250, 2500};
   const Layout layout = make_layout(d, curdle(d, 9, d.field), d.field, spec);
   ASSERT_EQ(layout.sheets.size(), 6u);  // 3 x 2 sheets, the last column and row narrower
   std::map<int, std::vector<const Element*>> by_sheet;

@@ -72,8 +72,8 @@ Totals totals(const tinygltf::Model& m) {
 
 TEST(Gltf, PavingReadsBackWithItsElementsMaterialsAndExtent) {
   Design d = test::design(4, 2, {{"3/4", "2/3", "1/2"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::paving);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("paving"));
   spec.module_w = spec.module_h = 300, spec.joint = 5;
   spec.size = std::array<double, 2>{6000, 4500};
   const auto cells = elements_to_cover(spec);
@@ -120,11 +120,11 @@ TEST(Gltf, PavingReadsBackWithItsElementsMaterialsAndExtent) {
 
 TEST(Gltf, FacadeStandsUpWithItsOpeningsLeftOpen) {
   Design d = test::design(4, 2, {{"3/4", "2/3"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::facade);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("facade"));
   spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
   spec.size = std::array<double, 2>{6000, 3000};
-  spec.facade().openings = {{1000, 0, 1200, 2100}};
+  spec.own<FacadeKeys>().openings = {{1000, 0, 1200, 2100}};
   const auto cells = elements_to_cover(spec);
   d.field.size = {cells[0], cells[1], 1};
   const Layout layout = make_layout(d, curdle(d, 2, d.field), d.field, spec);
@@ -138,14 +138,14 @@ TEST(Gltf, FacadeStandsUpWithItsOpeningsLeftOpen) {
 
 TEST(Gltf, PerforatedSheetIsASolidWithItsOpenings) {
   Design d = test::design(4, 2, {{"1/2", "1/2"}, {"1/2", "1/2"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::perforation);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("perforation"));
   spec.combine = Combine::keep;
   spec.module_w = spec.module_h = 40;
   spec.size = std::array<double, 2>{640, 640};
-  spec.perforation().thickness = 3;
-  spec.perforation().holes = {{16, -6, 0}, {16, 6, 0}};
-  spec.perforation().chord_tolerance = 0.1;
+  spec.own<PerforationKeys>().thickness = 3;
+  spec.own<PerforationKeys>().holes = {{16, -6, 0}, {16, 6, 0}};
+  spec.own<PerforationKeys>().chord_tolerance = 0.1;
   const Layout layout = make_layout(d, curdle(d, 3, d.field), d.field, spec);
   const tinygltf::Model m = read_back(layout);
   const Totals t = totals(m);
@@ -176,7 +176,7 @@ TEST(Gltf, PerforatedSheetIsASolidWithItsOpenings) {
   double open = 0, slack = 0;
   for (const Element& e : layout.elements) {
     open += e.area();
-    slack += 3.14159265358979 * 16 * spec.perforation().chord_tolerance * (e.circle ? 1 : 2);
+    slack += 3.14159265358979 * 16 * spec.own<PerforationKeys>().chord_tolerance * (e.circle ? 1 : 2);
   }
   EXPECT_GE(top * 1e6, 640.0 * 640.0 - open - 1e-3);
   EXPECT_LE(top * 1e6, 640.0 * 640.0 - open + slack);
@@ -184,9 +184,9 @@ TEST(Gltf, PerforatedSheetIsASolidWithItsOpenings) {
 
 TEST(Gltf, BlocksLeaveOutTheFacesBetweenNeighbours) {
   const Design d = test::design(2, 3, {{"7/8", "3/4", "3/4"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::blocks);
-  spec.module_w = spec.module_h = 6000, spec.blocks().voxel_h = 3000;
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("blocks"));
+  spec.module_w = spec.module_h = 6000, spec.own<BlocksKeys>().voxel_h = 3000;
   const CurdField f = curdle(d, 3, d.field);
   const Layout layout = make_layout(d, f, d.field, spec);
   std::set<std::array<int64_t, 3>> solid;
@@ -207,8 +207,8 @@ TEST(Gltf, EveryElementKeepsItsNodeAtAnySizeAndKeptStripesTakeTheCurdsColours) {
   Design d = test::design(
       2, 2, {std::vector<std::string>(8, "9/10"), std::vector<std::string>(8, "9/10")});
   d.curds[0].colour = Rgb{200, 40, 40}, d.curds[1].colour = Rgb{40, 40, 200};
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::tile);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("tile"));
   spec.combine = Combine::keep;
   spec.module_w = spec.module_h = 100;
   d.field.size = {144, 144, 1};  // 20,736 tiles

@@ -102,7 +102,7 @@ TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
     EXPECT_LE(set_width(match_caption_text(c), kMatchCaptionMm),
               (c.vertical ? c.box.h : c.box.w) / plan.scale);
   }
-  EXPECT_EQ(plan.start_corner.empty(), layout.kind == LayoutKind::blocks);
+  EXPECT_EQ(plan.start_corner.empty(), !layout.kind->laid_from_corner());
   size_t covered = 0;
   for (const InstallerLabel& l : plan.labels)
     for (const Rect& r : reserved)
@@ -117,7 +117,7 @@ TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
   // piece of each course, and no more.
   std::map<std::pair<size_t, int64_t>, size_t> split_per_course;  // (sheet, row) -> pieces
   size_t split = 0;
-  const bool bonded = layout.spec.bond > 0;
+  const bool bonded = layout.bond > 0;
   for (size_t i = 0; i < pieces.size(); ++i) {
     const InstallerPiece& p = pieces[i];
     for (size_t k = 0; k < plan.sheets.size(); ++k) {
@@ -155,7 +155,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(LayoutSheet, IsSheetOneWithTheLayoutsOwnPixels) {
   Layout layout = pattern_layout("brick-facade-five-storeys.toml");
-  layout.spec.dpi = 50;  // small and quick
+  layout.drawing.dpi = 50;  // small and quick
   const OverviewSheet sheet = overview_sheet(layout);
   EXPECT_EQ(sheet.paper.name, "A3");
   const PreviewImage png = render_layout_sheet(layout, plan_installer_sheets(layout));
@@ -178,7 +178,7 @@ TEST(LayoutSheet, IsSheetOneWithTheLayoutsOwnPixels) {
     }
   EXPECT_TRUE(found);
   // A scale that makes the drawing larger than A0 is refused, naming the key.
-  layout.spec.scale = 1;
+  layout.drawing.scale = 1;
   EXPECT_THROW(
       {
         try {

@@ -15,7 +15,7 @@
 #include "export/layout_png.h"
 #include "export/svg.h"
 #include "layout/builder.h"
-#include "layout/perforation.h"
+#include "kinds/perforation.h"
 #include "layout/piece.h"
 #include "layout/zone.h"
 #include "test_support.h"
@@ -150,7 +150,7 @@ TEST(Geometry, MergedRunsCoverEveryCellOnce) {
 TEST(Layout, CountsPerValueMatchTheOverlay) {
   const Design d = design(4, 2, {{"3/4", "2/3"}, {"1/2", "1/2"}});
   const CurdField f = curdle(d, 4, d.field);
-  LayoutSpec spec;
+  LayoutSpec spec = test::layout_spec();
   spec.joint = 5;
   const Layout layout = make_layout(d, f, d.field, spec);
   ASSERT_EQ(layout.elements.size(), 256u);
@@ -167,20 +167,20 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
   const Design d = design(4, 2, {{"3/4", "1/2", "2/3"}});
   for (Corner corner :
        {Corner::bottom_left, Corner::bottom_right, Corner::top_left, Corner::top_right}) {
-    for (LayoutKind kind : {LayoutKind::paving, LayoutKind::facade})
+    for (const std::string kind : {"paving", "facade"})
       for (double bond : {0.0, 0.5, 1.0 / 3, 0.25}) {
-        const std::array<double, 2> shift = kind == LayoutKind::facade
+        const std::array<double, 2> shift = kind == "facade"
                                                 ? std::array<double, 2>{130, 80}
                                                 : std::array<double, 2>{0, 0};
-        LayoutSpec spec;
-        spec.set_kind(kind);
+        LayoutSpec spec = test::layout_spec();
+        spec.set_kind(layout_kind(kind));
         spec.origin = corner;
         spec.shift = shift;
         spec.bond = bond;
         spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
         spec.size = std::array<double, 2>{18000, 15600};
-        if (kind == LayoutKind::facade)
-          spec.facade().openings = {{1200, 0, 7200, 2700},
+        if (kind == "facade")
+          spec.own<FacadeKeys>().openings = {{1200, 0, 7200, 2700},
                                     {1500, 3900, 1200, 1500},
                                     {16200, 12900, 1200, 1500},
                                     {17500, 14000, 500, 1600}};
@@ -197,7 +197,7 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
         }
         for (const Rect& o : layout.openings) openings += o.area();
         EXPECT_NEAR(elements + joint_area(layout) + openings, 18000.0 * 15600.0, 1e-3)
-            << static_cast<int>(corner) << " " << static_cast<int>(kind) << " bond " << bond;
+            << static_cast<int>(corner) << " " << kind << " bond " << bond;
         EXPECT_EQ(layout.elements.size() + layout.omitted,
                   static_cast<size_t>(layout.columns * layout.rows));
         // The element IDs follow the laying order from the origin corner: row 0, column 0 sits
@@ -224,8 +224,8 @@ TEST(Layout, CoursesAreOffsetByTheBond) {
   const Design d = design(4, 2, {{"3/4", "1/2", "2/3"}});
   for (Corner corner : {Corner::bottom_left, Corner::top_right})
     for (double bond : {0.5, 1.0 / 3, 0.25}) {
-      LayoutSpec spec;
-      spec.set_kind(LayoutKind::facade);
+      LayoutSpec spec = test::layout_spec();
+      spec.set_kind(layout_kind("facade"));
       spec.origin = corner;
       spec.bond = bond;
       spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
@@ -252,8 +252,8 @@ TEST(Layout, CoursesAreOffsetByTheBond) {
 TEST(Layout, ACentredGridCutsOppositeEdgesEqually) {
   const Design d = design(4, 2, {{"3/4", "1/2", "2/3"}});
   for (const auto& [w, h] : {std::pair{7000.0, 4330.0}, {12000.0, 8000.0}, {6000.0, 3010.0}}) {
-    LayoutSpec spec;
-    spec.set_kind(LayoutKind::paving);
+    LayoutSpec spec = test::layout_spec();
+    spec.set_kind(layout_kind("paving"));
     spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
     spec.size = std::array<double, 2>{w, h};
     spec.centred = true;
@@ -278,7 +278,7 @@ TEST(Layout, MixBlendsOrTakesTheGivenColoursAndKeepShowsEachCurd) {
   d.curds[0].colour = Rgb{200, 0, 0};
   d.curds[1].colour = Rgb{0, 0, 200};
   const CurdField f = curdle(d, 2, d.field);
-  LayoutSpec mix;
+  LayoutSpec mix = test::layout_spec();
   mix.module_w = mix.module_h = 100;
   const Layout mixed = make_layout(d, f, d.field, mix);
   EXPECT_EQ(mixed.legend[3].colour, (Rgb{100, 0, 100}));  // red and blue give purple
@@ -300,7 +300,7 @@ TEST(Layout, MixBlendsOrTakesTheGivenColoursAndKeepShowsEachCurd) {
   EXPECT_EQ(svg.fills[3], "url(#parts-3)");
   // The PNG shows both curds in a cell of value 3: red on the left, blue on the right.
   Layout drawn = kept;
-  drawn.spec.scale = 1, drawn.spec.dpi = 25.4;  // one pixel per millimetre
+  drawn.drawing.scale = 1, drawn.drawing.dpi = 25.4;  // one pixel per millimetre
   const PreviewImage png = render_layout(drawn);
   for (const Element& e : kept.elements) {
     if (e.value != 3) continue;
@@ -318,11 +318,11 @@ TEST(Layout, MixBlendsOrTakesTheGivenColoursAndKeepShowsEachCurd) {
 TEST(Layout, PngColoursEachElementAndRecordsItsScale) {
   const Design d = design(4, 2, {{"3/4", "2/3"}});
   const CurdField f = curdle(d, 8, d.field);
-  LayoutSpec spec;
+  LayoutSpec spec = test::layout_spec();
   spec.joint = 20;
   Layout layout = make_layout(d, f, d.field, spec);
   EXPECT_EQ(drawing_scale(layout), 20);           // 5.1 m fits an A3 sheet at 1:20
-  layout.spec.scale = 10, layout.spec.dpi = 254;  // 1 px = 1 mm / (254 / 25.4 / 10) = 1 mm
+  layout.drawing.scale = 10, layout.drawing.dpi = 254;  // 1 px = 1 mm / (254 / 25.4 / 10) = 1 mm
   const PreviewImage png = render_layout(layout);
   EXPECT_EQ(png.width, static_cast<int>(std::ceil(layout.width)));
   for (const Element& e : layout.elements) {
@@ -336,10 +336,10 @@ TEST(Layout, PngColoursEachElementAndRecordsItsScale) {
 TEST(Layout, OverlaysDrawTheStageGridInTheJointsAndTheWindow) {
   const Design d = design(4, 2, {{"3/4", "2/3"}});
   const CurdField f = curdle(d, 8, d.field);
-  LayoutSpec spec;
+  LayoutSpec spec = test::layout_spec();
   spec.joint = 10;
-  spec.stage_grid = true;
-  spec.highlight = Box{{4, 4, 0}, {8, 4, 1}};
+  spec.drawing.stage_grid = true;
+  spec.drawing.highlight = Box{{4, 4, 0}, {8, 4, 1}};
   const Layout layout = make_layout(d, f, d.field, spec);
   // The stage-1 boundary between cells 3 and 4 runs in the middle of their joint.
   EXPECT_NEAR(layout.cell_edge_x(4), 4 * 310 - 5, 1e-9);
@@ -359,8 +359,8 @@ TEST(Layout, ALargePavingStaysSmallAsSvg) {
   Design d = design(2, 2, {std::vector<std::string>(10, "0.9")});
   d.field.size = {400, 600, 1};
   const CurdField f = curdle(d, 1, d.field);
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::paving);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("paving"));
   spec.joint = 3;
   const Layout layout = make_layout(d, f, d.field, spec);
   const std::string svg = svg_of(layout);
@@ -376,24 +376,24 @@ namespace {
 
 struct Sheet {
   Design design;
-  LayoutSpec spec;
+  LayoutSpec spec = test::layout_spec();
   Layout layout;
 };
 
 Sheet perforated(Combine combine, HoleFix fix, double bridge, uint64_t seed) {
   Sheet s;
   s.design = test::design(4, 2, {{"1/2", "1/2"}, {"1/2", "1/2"}, {"1/2", "1/2"}});
-  s.spec.set_kind(LayoutKind::perforation);
+  s.spec.set_kind(layout_kind("perforation"));
   s.spec.combine = combine;
   s.spec.module_w = s.spec.module_h = 40;
   s.spec.size = std::array<double, 2>{640, 640};
-  s.spec.perforation().thickness = 2;
-  s.spec.perforation().holes = {{16, -7, 6}, {16, 7, 6}, {16, 0, -7}};
-  s.spec.perforation().min_diameter = 5;
-  s.spec.perforation().min_bridge = bridge;
-  s.spec.perforation().edge_margin = 5;
-  s.spec.perforation().fix = fix;
-  s.spec.perforation().chord_tolerance = 0.01;
+  s.spec.own<PerforationKeys>().thickness = 2;
+  s.spec.own<PerforationKeys>().holes = {{16, -7, 6}, {16, 7, 6}, {16, 0, -7}};
+  s.spec.own<PerforationKeys>().min_diameter = 5;
+  s.spec.own<PerforationKeys>().min_bridge = bridge;
+  s.spec.own<PerforationKeys>().edge_margin = 5;
+  s.spec.own<PerforationKeys>().fix = fix;
+  s.spec.own<PerforationKeys>().chord_tolerance = 0.01;
   const CurdField f = curdle(s.design, seed, s.design.field);
   s.layout = make_layout(s.design, f, s.design.field, s.spec);
   return s;
@@ -404,11 +404,11 @@ std::vector<Circle> circles_of(const Element& e, const LayoutSpec& spec) {
   if (e.circle) return {*e.circle};
   std::vector<Circle> parts;
   const double cx = e.nominal.x + e.nominal.w / 2, cy = e.nominal.y + e.nominal.h / 2;
-  for (size_t c = 0; c < spec.perforation().holes.size(); ++c)
+  for (size_t c = 0; c < spec.own<PerforationKeys>().holes.size(); ++c)
     if (e.value >> c & 1)
-      parts.push_back({cx + spec.perforation().holes[c].offset_x,
-                       cy + spec.perforation().holes[c].offset_y,
-                       spec.perforation().holes[c].diameter});
+      parts.push_back({cx + spec.own<PerforationKeys>().holes[c].offset_x,
+                       cy + spec.own<PerforationKeys>().holes[c].offset_y,
+                       spec.own<PerforationKeys>().holes[c].diameter});
   return parts;
 }
 
@@ -420,14 +420,14 @@ std::vector<Circle> circles_of(const Element& e, const LayoutSpec& spec) {
 TEST(Perforation, AnOutlineBoundsTheOpeningsAndCutsTheSheets) {
   Sheet s;
   s.design = test::design(4, 2, {{"3/4", "3/4"}, {"1/2", "3/4"}});
-  s.spec.set_kind(LayoutKind::perforation);
+  s.spec.set_kind(layout_kind("perforation"));
   s.spec.module_w = s.spec.module_h = 40;
   s.spec.size = std::array<double, 2>{640, 640};
   s.spec.outline = {{0, 0}, {640, 0}, {640, 400}, {320, 640}, {0, 400}};
-  s.spec.perforation().holes = {{16, 0, 0}, {24, 0, 0}};
-  s.spec.perforation().edge_margin = 5;
-  s.spec.perforation().fix = HoleFix::drop;
-  s.spec.perforation().sheet_size = std::array<double, 2>{320, 320};
+  s.spec.own<PerforationKeys>().holes = {{16, 0, 0}, {24, 0, 0}};
+  s.spec.own<PerforationKeys>().edge_margin = 5;
+  s.spec.own<PerforationKeys>().fix = HoleFix::drop;
+  s.spec.own<PerforationKeys>().sheet_size = std::array<double, 2>{320, 320};
   const Layout layout =
       make_layout(s.design, curdle(s.design, 3, s.design.field), s.design.field, s.spec);
   ASSERT_GT(layout.elements.size(), 50u);
@@ -511,7 +511,7 @@ TEST(Perforation, MixMakesOneOpeningOfTheSummedAreaAndKeepCutsTheUnion) {
 TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
   for (Combine combine : {Combine::mix, Combine::keep}) {
     Sheet s = perforated(combine, HoleFix::drop, 2, 4);
-    s.layout.spec.scale = 1, s.layout.spec.dpi = 127;  // 5 px a millimetre
+    s.layout.drawing.scale = 1, s.layout.drawing.dpi = 127;  // 5 px a millimetre
     const PreviewImage png = render_layout(s.layout);
     const Rgb metal{201, 205, 210};
     double open = 0;
@@ -528,18 +528,18 @@ TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
 
 }  // namespace curdle
 
-#include "layout/park.h"
+#include "kinds/park.h"
 
 namespace curdle {
 namespace {
 
 // The paper's park (fig. 5): trees, benches and grey paving on 3 x 3 m cells, 300 mm clear.
 LayoutSpec trees_and_benches() {
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::park);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("park"));
   spec.module_w = spec.module_h = 3000;
-  spec.park().clearance = 300;
-  spec.park().elements = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
+  spec.own<ParkKeys>().clearance = 300;
+  spec.own<ParkKeys>().elements = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
                           {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
                           {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
   return spec;
@@ -632,16 +632,16 @@ TEST(Park, ElementsShareCellsWithoutOverlapAndSurfacesCoverTheArea) {
 
 }  // namespace curdle
 
-#include "layout/rhythm.h"
+#include "kinds/rhythm.h"
 
 namespace curdle {
 
 TEST(Rhythm, FinWidthsFollowTheValuesCentredInTheirBays) {
   const Design d = test::design(4, 1, {{"3/4", "3/4", "2/3"}, {"1/2", "3/4", "3/4"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::rhythm);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("rhythm"));
   spec.module_w = 600, spec.module_h = 4200;
-  spec.rhythm().widths = {0, 100, 180, 300};
+  spec.own<RhythmKeys>().widths = {0, 100, 180, 300};
   const CurdField f = curdle(d, 64, d.field);
   const Layout layout = make_layout(d, f, d.field, spec);
   const auto counts = value_counts(f);
@@ -649,7 +649,7 @@ TEST(Rhythm, FinWidthsFollowTheValuesCentredInTheirBays) {
   for (uint32_t v = 0; v < 4; ++v) EXPECT_EQ(layout.legend[v].count, counts[v]);
   for (const Element& e : layout.elements) {
     EXPECT_EQ(e.value, f.value_at({e.cell_x, 0, 0}));
-    EXPECT_NEAR(e.shape[0].w, spec.rhythm().widths[e.value], 1e-9);
+    EXPECT_NEAR(e.shape[0].w, spec.own<RhythmKeys>().widths[e.value], 1e-9);
     EXPECT_NEAR(e.shape[0].x + e.shape[0].w / 2, e.cell_x * 600 + 300, 1e-9);
     EXPECT_NEAR(e.shape[0].h, 4200, 1e-9);
   }
@@ -660,9 +660,9 @@ TEST(Rhythm, FinWidthsFollowTheValuesCentredInTheirBays) {
 
 TEST(Blocks, PlanAndElevationShowTheFirstBlockSeen) {
   const Design d = test::design(2, 3, {{"7/8", "3/4", "3/4"}, {"3/4", "1/2", "3/4"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::blocks);
-  spec.module_w = spec.module_h = 6000, spec.blocks().voxel_h = 3000;
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("blocks"));
+  spec.module_w = spec.module_h = 6000, spec.own<BlocksKeys>().voxel_h = 3000;
   const CurdField f = curdle(d, 3, d.field);
   const Layout layout = make_layout(d, f, d.field, spec);
   const auto counts = value_counts(f);
@@ -701,8 +701,8 @@ TEST(Blocks, PlanAndElevationShowTheFirstBlockSeen) {
 // element whose laid centre a value zone holds takes its value, and the counts say so.
 TEST(Layout, ZonesExcludeOrSetTheirValue) {
   const Design d = design(2, 2, {{"3/4", "3/4", "2/3", "2/3"}, {"1/2", "3/4", "3/4", "2/3"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::paving);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("paving"));
   spec.module_w = 600, spec.module_h = 300, spec.joint = 5;
   spec.size = std::array<double, 2>{12000, 8000};
   spec.bond = 0.5;
@@ -765,8 +765,8 @@ TEST(Layout, LargeFirstStageCellsAreWarnedOf) {
   auto notes_for = [](int base, int stages) {
     std::vector<std::string> probabilities(static_cast<size_t>(stages), "3/4");
     const Design d = design(base, 2, {probabilities});
-    LayoutSpec spec;
-    spec.set_kind(LayoutKind::paving);
+    LayoutSpec spec = test::layout_spec();
+    spec.set_kind(layout_kind("paving"));
     spec.module_w = 300, spec.module_h = 300;
     spec.size = std::array<double, 2>{9700, 4900};
     return lay_floor(d, spec, 2).notes;
@@ -784,8 +784,8 @@ TEST(Layout, AnOutlineIsCoveredExactly) {
   const Design d = design(2, 2, {{"3/4", "3/4", "2/3"}});
   const Polygon l = {{0, 0}, {12000, 0}, {12000, 5000}, {8000, 5000}, {8000, 8000}, {0, 8000}};
   for (const bool centred : {false, true}) {
-    LayoutSpec spec;
-    spec.set_kind(LayoutKind::paving);
+    LayoutSpec spec = test::layout_spec();
+    spec.set_kind(layout_kind("paving"));
     spec.module_w = 600, spec.module_h = 300, spec.joint = 5;
     spec.size = std::array<double, 2>{12000, 8000};
     spec.outline = l;
@@ -845,8 +845,8 @@ TEST(Layout, SlopingAndCurvedEdgesCutPiecesExactly) {
     return contains(p, v[0], v[1]) && !on_edge(p, v);
   };
   for (const double bond : {0.0, 0.5}) {
-    LayoutSpec spec;
-    spec.set_kind(LayoutKind::paving);
+    LayoutSpec spec = test::layout_spec();
+    spec.set_kind(layout_kind("paving"));
     spec.module_w = 500, spec.module_h = 250, spec.joint = 6;
     spec.size = std::array<double, 2>{10000, 6000};
     spec.outline = terrace;

@@ -57,12 +57,12 @@ std::vector<std::vector<std::string>> strict_csv(const std::string& text) {
 TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
   Design d = test::design(4, 2, {{"3/4", "1/2", "1/2"}, {"1/2", "1/2", "1/2"}});
   d.curds[0].name = "grey, light";  // a comma, to be quoted
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::paving);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("paving"));
   spec.module_w = spec.module_h = 400, spec.joint = 5;
   spec.size = std::array<double, 2>{12000, 8100};  // cut edge tiles
   spec.value_colours = {Rgb{200, 200, 200}, Rgb{100, 100, 100}, Rgb{40, 40, 40}, Rgb{40, 40, 40}};
-  spec.spare = 0.05, spec.pack = 20, spec.lot_rows = 5;
+  spec.ordering.spare = 0.05, spec.ordering.pack = 20, spec.ordering.lot_rows = 5;
   const auto cells = elements_to_cover(spec);
   d.field.size = {cells[0], cells[1], 1};
   const CurdField f = curdle(d, 4, d.field);
@@ -137,12 +137,12 @@ namespace curdle {
 
 TEST(Install, TheMapNamesEveryElementAndWhereLayingStarts) {
   Design d = test::design(4, 2, {{"3/4", "1/2"}});
-  LayoutSpec spec;
-  spec.set_kind(LayoutKind::facade);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("facade"));
   spec.module_w = 600, spec.module_h = 300, spec.joint = 10;
   spec.size = std::array<double, 2>{6000, 3000};
   spec.origin = Corner::top_right;
-  spec.facade().openings = {{1000, 0, 1200, 2100}};
+  spec.own<FacadeKeys>().openings = {{1000, 0, 1200, 2100}};
   const auto cells = elements_to_cover(spec);
   d.field.size = {cells[0], cells[1], 1};
   const Layout layout = make_layout(d, curdle(d, 6, d.field), d.field, spec);

@@ -5,9 +5,22 @@
 #include <vector>
 
 #include "curdle/curd.h"
+#include "kinds/blocks.h"
+#include "kinds/facade.h"
+#include "kinds/park.h"
+#include "kinds/perforation.h"
+#include "kinds/registry.h"
+#include "kinds/rhythm.h"
 #include "recipe/recipe.h"
 
 namespace curdle::test {
+
+// A [layout] of the kind called `kind` with every key at its default.
+inline LayoutSpec layout_spec(const char* kind = "tile") {
+  LayoutSpec spec;
+  spec.set_kind(layout_kind(kind));
+  return spec;
+}
 
 inline Design design(int base, int dimension, const std::vector<std::vector<std::string>>& curds,
                      Mode mode = Mode::canonical) {

@@ -17,6 +17,7 @@
 #include "export/report_json.h"
 #include "export/schedule.h"
 #include "export/svg.h"
+#include "kinds/facade.h"
 #include "layout/builder.h"
 
 namespace fs = std::filesystem;
@@ -68,7 +69,7 @@ void write_layout_svg_output(const OutputContext& c, OutputSink& sink) {
 
 void write_layout_png(const OutputContext& c, OutputSink& sink) {
   const std::string png =
-      encode_png(render_layout_sheet(*c.layout, c.installer_plan()), c.layout->spec.dpi);
+      encode_png(render_layout_sheet(*c.layout, c.installer_plan()), c.layout->drawing.dpi);
   sink.write("layout.png", [&](std::ostream& o) { o << png; });
 }
 
@@ -308,13 +309,15 @@ RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outpu
   const Design& d = run.recipe.design;
   const bool needs_layout = builds_layout(run, outputs);
   std::optional<LayoutSpec> spec = run.recipe.layout;
-  if (spec && spec->kind() == LayoutKind::facade && !spec->facade().mask.empty() && needs_layout) {
-    const fs::path mask = fs::path(run.recipe_path).parent_path() / spec->facade().mask;
+  // A façade's mask is a file beside the recipe: the application reads it (the kind does no IO).
+  FacadeKeys* facade = spec ? spec->keys.find<FacadeKeys>() : nullptr;
+  if (facade && !facade->mask.empty() && needs_layout) {
+    const fs::path mask = fs::path(run.recipe_path).parent_path() / facade->mask;
     for (const Rect& r :
          read_mask_openings(mask, (*spec->size)[0], (*spec->size)[1],
                             SourceLocation{run.recipe_path, 0, 0, "layout.mask", ""},
                             run.generate.max_memory_bytes))
-      spec->facade().openings.push_back(r);
+      facade->openings.push_back(r);
   }
   check_run_memory(run, outputs);
 
@@ -326,8 +329,6 @@ RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outpu
   std::optional<Layout> layout;
   if (spec && needs_layout) {
     layout = make_layout(d, field, run.view, *spec);
-    layout->source.description = run.recipe.description;
-    layout->source.seed = run.seed;
   }
   const OutputContext context{run, field, summary.report, layout ? &*layout : nullptr, observer};
   // report.json last: it describes the layout the other files drew.
@@ -347,7 +348,7 @@ RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outpu
     s.width = layout->width;
     s.height = layout->height;
     s.drawing_scale = drawing_scale(*layout);
-    s.dpi = spec->dpi;
+    s.dpi = layout->drawing.dpi;
     s.notes = layout->notes;
     s.violations = layout->violations;
     summary.layout = std::move(s);

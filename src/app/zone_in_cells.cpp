@@ -28,9 +28,7 @@ std::string zone_in_cells(const std::string& target, const Run& run) {
   };
   if (equals == std::string::npos) fail("write empty[:CURD]=X,Y,W,H mm");
   const std::optional<LayoutSpec>& spec = run.recipe.layout;
-  if (!spec || !spec->size ||
-      (spec->kind() != LayoutKind::tile && spec->kind() != LayoutKind::paving &&
-       spec->kind() != LayoutKind::facade))
+  if (!spec || !spec->size || !spec->kind->takes_zones())
     fail(
         "a zone in mm needs a tile, paving or facade [layout] with its floor or wall size; "
         "give the zone in cells");

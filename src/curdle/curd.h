@@ -29,6 +29,7 @@ struct CurdSpec {
 // Everything the engine needs besides the seed: the recipe without its file.
 struct Design {
   std::string name;
+  std::string description;  // the recipe's, for title blocks
   Lattice lattice;
   std::vector<CurdSpec> curds;
   Box field;  // in finest cells, origin at the lattice origin
@@ -42,6 +43,7 @@ struct Curd {
 struct CurdField {
   CellIndex index;
   Box generated;  // cells outside it were never visited and read as dead
+  uint64_t seed = 0;  // the stream it was drawn from
   std::vector<Curd> curds;
 
   const Bitset& finest(size_t curd) const { return curds[curd].stages.back(); }

@@ -558,6 +558,7 @@ void curdle_into(const Design& design, uint64_t seed, const Box& view, CurdField
         !out.curds.empty()))
     out.index = CellIndex(lattice, box);
   out.generated = box;
+  out.seed = seed;
   out.curds.resize(design.curds.size());
 
   const RandomStream rng(seed);

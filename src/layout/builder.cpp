@@ -3,16 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
 #include "layout/cut_rules.h"
 #include "layout/guidance.h"
-#include "layout/park.h"
-#include "layout/perforation.h"
 #include "layout/piece.h"
-#include "layout/rhythm.h"
 #include "layout/union.h"
 #include "layout/zone.h"
 
@@ -21,52 +19,16 @@ namespace {
 
 constexpr double kEps = 1e-6;
 
-char id_kind(LayoutKind kind) {
-  switch (kind) {
-    case LayoutKind::tile:
-      return 'T';
-    case LayoutKind::paving:
-      return 'P';
-    case LayoutKind::facade:
-      return 'F';
-    case LayoutKind::perforation:
-      return 'C';  // cells; their openings become "H-..."
-    case LayoutKind::park:
-      return 'C';  // cells; their elements become "K-..."
-    case LayoutKind::rhythm:
-      return 'B';  // bays; their elements become "R-..."
-    case LayoutKind::blocks:
-      return 'B';  // "B-L..-R..-C.."
-  }
-  return 'E';
-}
-
 }  // namespace
 
-const char* element_type(LayoutKind kind) {
-  switch (kind) {
-    case LayoutKind::tile:
-      return "tile";
-    case LayoutKind::paving:
-      return "paving tile";
-    case LayoutKind::facade:
-      return "panel";
-    case LayoutKind::perforation:
-      return "cell";
-    case LayoutKind::park:
-      return "cell";
-    case LayoutKind::rhythm:
-      return "bay";
-    case LayoutKind::blocks:
-      return "block";
-  }
-  return "element";
+double course_offset(double bond, double pitch, int64_t row) {
+  if (bond <= 0) return 0;
+  const double share = static_cast<double>(row) * bond;
+  return (share - std::floor(share + 1e-9)) * pitch;
 }
 
 double course_offset(const LayoutSpec& spec, int64_t row) {
-  if (spec.bond <= 0) return 0;
-  const double share = static_cast<double>(row) * spec.bond;
-  return (share - std::floor(share + 1e-9)) * (spec.module_w + spec.joint);
+  return course_offset(spec.bond, spec.module_w + spec.joint, row);
 }
 
 double largest_offset(const LayoutSpec& spec, int64_t rows) {
@@ -148,8 +110,8 @@ void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
 // along it.
 void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
   for (const Zone& z : spec.zones)
-    layout.zones.push_back(
-        {z.name, z.rule, z.value, polygon_area(z.polygon), std::vector<uint64_t>(values, 0), 0});
+    layout.zones.push_back({z.name, z.rule, z.value, z.polygon, polygon_area(z.polygon),
+                            std::vector<uint64_t>(values, 0), 0});
   if (spec.zones.empty()) return;
   for (Element& e : layout.elements) {
     // The laid piece's centre: an end piece cut at the edge has its centre on the surface.
@@ -174,79 +136,18 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
   }
 }
 
-Layout lay_out(const Design& design, const CurdField& field, const Box& view,
-               const LayoutSpec& spec) {
-  // A fixed floor, wall, sheet or line is laid from the view's corner: the view is the segment
-  // of the curd that becomes the floor, so it must have the floor's number of elements.
-  if (spec.size) {
-    const auto need = elements_to_cover(spec);
-    if (view.size[0] != need[0] || view.size[1] != need[1])
-      throw InputError("this layout's floor, wall, sheet or line takes exactly " +
-                       std::to_string(need[0]) + " x " + std::to_string(need[1]) +
-                       " cells, but the window is " + std::to_string(view.size[0]) + " x " +
-                       std::to_string(view.size[1]) +
-                       ": give a window of that size (a segment of a larger field.cells), or "
-                       "leave out the layout's size and give field.cells instead");
-  }
-  if (spec.kind() == LayoutKind::blocks) return stack_blocks(design, field, view, spec);
-  const int dimension = layout_dimension(spec.kind());
-  if (design.lattice.dimension != dimension)
-    throw InputError("this layout needs a " + std::to_string(dimension) + "-D lattice, not " +
-                     std::to_string(design.lattice.dimension) + "-D");
-  Layout layout;
-  layout.kind = spec.kind();
-  layout.combine = spec.combine;
-  layout.element_type = element_type(spec.kind());
-  layout.joint = spec.joint;
-  layout.joint_colour = spec.joint_colour;
-  layout.origin = spec.origin;
-  layout.view = view;
-  layout.columns = view.size[0];
-  layout.rows = view.size[1];
-  layout.module_w = spec.module_w;
-  layout.module_h = spec.module_h;
-  layout.shift = spec.shift;
-  const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
-  if (spec.size) {
-    layout.width = (*spec.size)[0];
-    layout.height = (*spec.size)[1];
-  } else {
-    layout.width =
-        layout.columns * pitch_w - spec.joint - spec.shift[0] - largest_offset(spec, layout.rows);
-    layout.height = layout.rows * pitch_h - spec.joint - spec.shift[1];
-  }
-  for (const Rect& o : spec.openings()) {
-    const Rect c = clip(o, layout.width, layout.height);
-    if (c.area() > 0) layout.openings.push_back(c);
-  }
-  const size_t facade_openings = layout.openings.size();
-  for (const Zone& z : spec.zones)
-    if (z.rule == ZoneRule::exclude)
-      for (const Rect& r : z.rects)
-        if (const Rect c = clip(r, layout.width, layout.height); c.area() > 0)
-          layout.openings.push_back(c);
-  // Edges along x and y cut pieces as rectangles; sloping or curved ones as polygons.
-  PolygonCuts cuts;
-  if (!spec.outline.empty()) {
-    layout.outline = spec.outline;
-    if (const auto inside = as_rectangles(spec.outline)) {
-      for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, *inside))
-        if (r.area() > kEps) layout.outside.push_back(r);
-    } else {
-      cuts.outline = spec.outline;
-    }
-  }
-  for (const Zone& z : spec.zones)
-    if (z.rule == ZoneRule::exclude && z.rects.empty()) cuts.holes.push_back(z.polygon);
-  if (!cuts.empty()) layout.cut_away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
+// The elements of the grid in laying order: rows from the origin corner, and along each row
+// away from it; each cut at the surface's edges, its holes and `cuts`.
+void lay_elements(Layout& layout, const CurdField& field, const LayoutSpec& spec,
+                  const PolygonCuts& cuts) {
   const std::vector<Rect> holes = layout.holes();
-
+  const Box& view = layout.view;
+  const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
   const bool right = from_right(spec.origin);
   const bool top = from_top(spec.origin);
   const int digits = static_cast<int>(std::to_string(std::max(layout.columns, layout.rows)).size());
   const std::vector<uint16_t> values = values_in(field, view);
   layout.elements.reserve(values.size());
-  // Laying order: rows from the origin corner, and along each row away from it.
   for (int64_t row = 0; row < layout.rows; ++row) {
     for (int64_t column = 0; column < layout.columns; ++column) {
       const int64_t i = right ? layout.columns - 1 - column : column;
@@ -270,32 +171,102 @@ Layout lay_out(const Design& design, const CurdField& field, const Box& view,
         continue;
       }
       e.cut = e.cut || e.area() < e.nominal.area() - kEps;
-      e.key = ElementId{id_kind(spec.kind()), digits, std::nullopt, row, column, ""};
+      e.key = ElementId{spec.kind->id_letter(), digits, std::nullopt, row, column, ""};
       e.id = e.key.text();
       layout.elements.push_back(std::move(e));
     }
   }
-  apply_zones(layout, spec, size_t{1} << design.curds.size());
-  if (spec.kind() == LayoutKind::facade) report_open_area(layout, facade_openings);
-  check_cut_widths(layout, spec);
-
-  advise_lattice(layout, design.lattice);
-
-  layout.legend = make_legend(design, spec);
-  for (const Element& e : layout.elements) ++layout.legend[e.value].count;
-  if (spec.kind() == LayoutKind::perforation) perforate(layout, design, spec);
-  if (spec.kind() == LayoutKind::park) plant(layout, design, spec);
-  if (spec.kind() == LayoutKind::rhythm) set_rhythm(layout, spec);
-  return layout;
 }
 
 }  // namespace
 
+Layout lay_grid(const Design& design, const CurdField& field, const Box& view,
+                const LayoutSpec& spec, const std::vector<Rect>& openings) {
+  Layout layout;
+  layout.kind = spec.kind;
+  layout.combine = spec.combine;
+  layout.element_type = std::string(spec.kind->element_noun());
+  layout.joint = spec.joint;
+  layout.joint_colour = spec.joint_colour;
+  layout.origin = spec.origin;
+  layout.view = view;
+  layout.columns = view.size[0];
+  layout.rows = view.size[1];
+  layout.module_w = spec.module_w;
+  layout.module_h = spec.module_h;
+  layout.shift = spec.shift;
+  layout.bond = spec.bond;
+  const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
+  if (spec.size) {
+    layout.width = (*spec.size)[0];
+    layout.height = (*spec.size)[1];
+  } else {
+    layout.width =
+        layout.columns * pitch_w - spec.joint - spec.shift[0] - largest_offset(spec, layout.rows);
+    layout.height = layout.rows * pitch_h - spec.joint - spec.shift[1];
+  }
+  for (const Rect& o : openings) {
+    const Rect c = clip(o, layout.width, layout.height);
+    if (c.area() > 0) layout.openings.push_back(c);
+  }
+  for (const Zone& z : spec.zones)
+    if (z.rule == ZoneRule::exclude)
+      for (const Rect& r : z.rects)
+        if (const Rect c = clip(r, layout.width, layout.height); c.area() > 0)
+          layout.openings.push_back(c);
+  // Edges along x and y cut pieces as rectangles; sloping or curved ones as polygons.
+  PolygonCuts cuts;
+  if (!spec.outline.empty()) {
+    layout.outline = spec.outline;
+    if (const auto inside = as_rectangles(spec.outline)) {
+      for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, *inside))
+        if (r.area() > kEps) layout.outside.push_back(r);
+    } else {
+      cuts.outline = spec.outline;
+    }
+  }
+  for (const Zone& z : spec.zones)
+    if (z.rule == ZoneRule::exclude && z.rects.empty()) cuts.holes.push_back(z.polygon);
+  if (!cuts.empty()) layout.cut_away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
+  lay_elements(layout, field, spec, cuts);
+  apply_zones(layout, spec, size_t{1} << design.curds.size());
+  return layout;
+}
+
+void count_values(Layout& layout, const Design& design, const LayoutSpec& spec) {
+  advise_lattice(layout, design.lattice);
+  layout.legend = make_legend(design, spec);
+  for (const Element& e : layout.elements) ++layout.legend[e.value].count;
+}
+
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec) {
-  Layout layout = lay_out(design, field, view, spec);
-  layout.spec = spec;
+  if (!spec.kind) throw std::logic_error("make_layout: the spec names no layout kind");
+  // A fixed floor, wall, sheet or line is laid from the view's corner: the view is the segment
+  // of the curd that becomes the floor, so it must have the floor's number of elements.
+  if (spec.size) {
+    const auto need = elements_to_cover(spec);
+    if (view.size[0] != need[0] || view.size[1] != need[1])
+      throw InputError("this layout's floor, wall, sheet or line takes exactly " +
+                       std::to_string(need[0]) + " x " + std::to_string(need[1]) +
+                       " cells, but the window is " + std::to_string(view.size[0]) + " x " +
+                       std::to_string(view.size[1]) +
+                       ": give a window of that size (a segment of a larger field.cells), or "
+                       "leave out the layout's size and give field.cells instead");
+  }
+  const int dimension = spec.kind->dimension();
+  if (design.lattice.dimension != dimension)
+    throw InputError("this layout needs a " + std::to_string(dimension) + "-D lattice, not " +
+                     std::to_string(design.lattice.dimension) + "-D");
+  Layout layout = spec.kind->build(design, field, view, spec);
+  layout.kind = spec.kind;
+  layout.thickness = spec.kind->thickness(spec);
+  layout.centred = spec.centred;
+  layout.drawing = spec.drawing;
+  layout.ordering = spec.ordering;
   layout.source.recipe = design.name;
+  layout.source.description = design.description;
+  layout.source.seed = field.seed;
   layout.source.lattice = design.lattice;
   layout.source.curds = design.curds;
   return layout;
@@ -351,7 +322,7 @@ double bonded_joint_area(const Layout& layout) {
     const double y = top ? layout.height - up - layout.module_h : up;
     for (int64_t c = 0; c < layout.columns; ++c) {
       const double along =
-          c * pitch_w + layout.module_w - layout.shift[0] - course_offset(layout.spec, r);
+          c * pitch_w + layout.module_w - layout.shift[0] - course_offset(layout.bond, layout.module_w + layout.joint, r);
       area += laid_area(layout, holes,
                         Rect{right ? layout.width - along - layout.joint : along, y, layout.joint,
                              layout.module_h});
@@ -374,7 +345,7 @@ double joint_area(const Layout& layout) {
   const bool top = from_top(layout.origin);
   // Joints follow each module, counted from the origin corner.
   std::vector<Rect> vertical, horizontal;
-  if (layout.spec.bond > 0) return bonded_joint_area(layout);
+  if (layout.bond > 0) return bonded_joint_area(layout);
   for (int64_t c = 0; c + 1 < layout.columns; ++c) {
     const double along = c * (layout.module_w + layout.joint) + layout.module_w - layout.shift[0];
     vertical.push_back(

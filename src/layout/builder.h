@@ -10,15 +10,13 @@
 
 namespace curdle {
 
-// What one element of a layout of this kind is called: "paving tile", "panel", "bay".
-const char* element_type(LayoutKind kind);
-
 // Elements along x and y that cover the spec's floor or wall: those that start inside it, in
 // every course of the bond.
 std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec);
 
 // How far course `row` (counted from the origin corner) is moved back along x by the bond, mm.
 double course_offset(const LayoutSpec& spec, int64_t row);
+double course_offset(double bond, double pitch, int64_t row);
 // The most any of `rows` courses is moved back by the bond.
 double largest_offset(const LayoutSpec& spec, int64_t rows);
 
@@ -30,9 +28,18 @@ double centring_shift(double extent, double module, double joint);
 // keep mode the colours shown side by side. Counts are left at zero.
 std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spec);
 
-// The layout of `view` (a 2-D box of cells). A fixed floor, wall, sheet or line is laid from
-// the view's corner, so its view (a segment of a larger curd) must be exactly
-// elements_to_cover cells. Throws InputError for specs that cannot be laid.
+// A grid of modules and joints laid from the origin corner over `view` (a 2-D box of cells),
+// one element per cell, cut at the surface's edges, its outline, `openings` (a façade's windows
+// and doors) and excluded zones; value zones applied. For kinds to build on.
+Layout lay_grid(const Design& design, const CurdField& field, const Box& view,
+                const LayoutSpec& spec, const std::vector<Rect>& openings);
+// The notes on the lattice's first stage, the legend and its counts of the elements laid.
+void count_values(Layout& layout, const Design& design, const LayoutSpec& spec);
+
+// The layout of `view` by the spec's kind, with its provenance (recipe, description, the
+// field's seed, lattice and curds). A fixed floor, wall, sheet or line is laid from the view's
+// corner, so its view (a segment of a larger curd) must be exactly elements_to_cover cells.
+// Throws InputError for specs that cannot be laid.
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec);
 

@@ -15,17 +15,12 @@ std::array<double, 2> surface_extent(const LayoutSpec& spec, const Box& view) {
 }
 
 CellPlacement cell_placement(const LayoutSpec& spec, const Box& view) {
+  return spec.kind->cell_placement(spec, view);
+}
+
+CellPlacement grid_cell_placement(const LayoutSpec& spec, const Box& view) {
   CellPlacement p;
   const auto vx = static_cast<double>(view.origin[0]), vy = static_cast<double>(view.origin[1]);
-  if (spec.kind() == LayoutKind::rhythm) return p;
-  if (spec.kind() == LayoutKind::blocks) {  // voxel (x, y, z) at x w, y d, z h from the view
-    const std::array<double, 3> size{spec.module_w, spec.module_h, spec.blocks().voxel_h};
-    for (int d = 0; d < 3; ++d) {
-      p.scale[d] = size[d];
-      p.origin[d] = -static_cast<double>(view.origin[d]) * size[d];
-    }
-    return p;
-  }
   // builder.cpp: column c (from the origin corner) starts at c pitch - shift - course offset.
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
   const auto extent = surface_extent(spec, view);

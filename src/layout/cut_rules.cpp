@@ -138,8 +138,6 @@ ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis) {
 }
 
 void check_cut_widths(Layout& layout, const LayoutSpec& spec) {
-  const LayoutKind kind = spec.kind();
-  if (kind != LayoutKind::tile && kind != LayoutKind::paving && kind != LayoutKind::facade) return;
   const char* rule = spec.min_cut > 0 ? "layout.min_cut" : "a quarter of the element";
   uint64_t slivers = 0;
   for (const Element& e : layout.elements) {

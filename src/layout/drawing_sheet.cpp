@@ -1,5 +1,7 @@
 #include "layout/drawing_sheet.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 namespace curdle {
@@ -37,6 +39,13 @@ SheetFit fit_to_sheet(double width, double height, const PaperSheet& sheet) {
       if (width / n <= area[0] + 1e-9 && height / n <= area[1] + 1e-9) return {n, landscape};
     }
   return {1e9, true};
+}
+
+std::string drawing_mm(double v) {
+  std::string s = fmt::format("{:.3f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
 }
 
 }  // namespace curdle

@@ -22,6 +22,10 @@ struct PaperSheet {
 // A0..A4; nullopt for any other name.
 std::optional<PaperSheet> paper_sheet(std::string_view name);
 
+// Millimetres as the drawings write them: 0.001 mm is below any tolerance and keeps files
+// small; trailing zeros dropped.
+std::string drawing_mm(double v);
+
 // The drawing area inside the sheet, portrait or landscape: ISO 5457 margins (20 mm at the
 // binding edge, 10 mm elsewhere) less a 50 mm strip along the bottom for the title block.
 std::array<double, 2> drawing_area(const PaperSheet& sheet, bool landscape);

@@ -71,37 +71,6 @@ double Element::area() const {
 
 namespace curdle {
 
-void LayoutSpec::set_kind(LayoutKind kind) {
-  switch (kind) {
-    case LayoutKind::tile:
-      keys = TileKeys{};
-      break;
-    case LayoutKind::paving:
-      keys = PavingKeys{};
-      break;
-    case LayoutKind::facade:
-      keys = FacadeKeys{};
-      break;
-    case LayoutKind::perforation:
-      keys = PerforationKeys{};
-      break;
-    case LayoutKind::park:
-      keys = ParkKeys{};
-      break;
-    case LayoutKind::rhythm:
-      keys = RhythmKeys{};
-      break;
-    case LayoutKind::blocks:
-      keys = BlocksKeys{};
-      break;
-  }
-}
-
-const std::vector<Rect>& LayoutSpec::openings() const {
-  static const std::vector<Rect> none;
-  return kind() == LayoutKind::facade ? facade().openings : none;
-}
-
 std::vector<Rect> Layout::holes() const {
   std::vector<Rect> all = openings;
   all.insert(all.end(), outside.begin(), outside.end());

@@ -8,8 +8,7 @@
 namespace curdle {
 
 void advise_lattice(Layout& layout, const Lattice& lattice) {
-  const LayoutKind kind = layout.kind;
-  if (layout_dimension(kind) != 2 || lattice.stages < 1 || layout.module_w <= 0) return;
+  if (layout.kind->dimension() != 2 || lattice.stages < 1 || layout.module_w <= 0) return;
   const double pitch_w = layout.module_w + layout.joint, pitch_h = layout.module_h + layout.joint;
   const double shorter = std::min(layout.width, layout.height);
   const double room = shorter / 3;

@@ -91,7 +91,7 @@ std::vector<MatchCaption> match_captions(const InstallerPlan& plan) {
 
 // The start corner's dot, arrows and words (kStartDotMm...), as two strips outside the corner.
 std::vector<Rect> start_corner_area(const Layout& layout, double scale) {
-  if (layout.kind == LayoutKind::blocks) return {};
+  if (!layout.kind->laid_from_corner()) return {};
   const double X = from_right(layout.origin) ? layout.width : 0;
   const double Y = from_top(layout.origin) ? layout.height : 0;
   const double sx = from_right(layout.origin) ? -1 : 1;  // into the layout
@@ -270,7 +270,7 @@ std::array<double, 2> installer_viewport(const PaperSheet& paper, bool landscape
 
 std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
   std::vector<InstallerPiece> pieces;
-  if (layout.kind == LayoutKind::perforation) {
+  if (!layout.sheets.empty()) {  // installed as fabrication sheets
     for (const auto& sheet : layout.sheets) pieces.push_back({sheet.id, {sheet.area}, sheet.area});
     return pieces;
   }
@@ -286,7 +286,7 @@ std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
 
 InstallerPlan plan_installer_sheets(const Layout& layout) {
   InstallerPlan plan;
-  plan.paper = paper_sheet(layout.spec.paper).value_or(*paper_sheet("A3"));
+  plan.paper = paper_sheet(layout.drawing.paper).value_or(*paper_sheet("A3"));
   plan.landscape = layout.width >= layout.height;
   plan.viewport = installer_viewport(plan.paper, plan.landscape);
   plan.pieces = installer_pieces(layout);

@@ -9,11 +9,14 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <variant>
+#include <memory>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "curdle/curd.h"
 #include "layout/element_id.h"
+#include "layout/layout_kind.h"
 
 namespace curdle {
 
@@ -31,13 +34,6 @@ bool overlaps(const Rect& a, const Rect& b);
 std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes);
 // The part of r on the surface [0, width] x [0, height] (empty: zero width or height).
 Rect clip(const Rect& r, double width, double height);
-
-enum class LayoutKind { tile, paving, facade, perforation, park, rhythm, blocks };
-
-// The lattice dimension a kind lays out: rhythm a line (1-D), blocks voxels (3-D), the rest 2-D.
-constexpr int layout_dimension(LayoutKind kind) {
-  return kind == LayoutKind::rhythm ? 1 : kind == LayoutKind::blocks ? 3 : 2;
-}
 
 struct Circle {
   double cx = 0, cy = 0, d = 0;
@@ -72,31 +68,12 @@ struct ZoneCount {
   std::string name;
   ZoneRule rule = ZoneRule::exclude;
   uint32_t value = 0;
+  Polygon polygon;                 // as the zone was given
   double area = 0;                 // of the zone on the surface, mm²
   std::vector<uint64_t> by_value;  // elements whose centre it holds, per value
   uint64_t cut = 0;                // exclude: elements cut along it
 };
 
-// Perforation: the opening each curd makes in its cells.
-struct HoleSpec {
-  double diameter = 0;
-  double offset_x = 0, offset_y = 0;  // from the cell centre, mm
-};
-
-// Park: what each curd places in its cells (Cirovic 2014, fig. 5).
-struct ParkElement {
-  std::string type;      // "tree", "bench", "grey paving", ...
-  bool surface = false;  // fills its share of the cell (paving), or stands in it (object)
-  bool round = false;    // objects: a circle of diameter size[0] (a canopy), or a rectangle
-  double w = 0, h = 0;   // objects: footprint, mm
-  Rgb colour;
-};
-
-enum class HoleFix {
-  none,  // report violations of the fabrication rules, change nothing
-  drop,  // drop holes that break a rule: too small, too near the edge, or the smaller of two
-         // holes too close together
-};
 enum class Combine {
   mix,   // a + b = c: a cell where curds overlap takes a new value, its own colour
   keep,  // a + b = ab: every curd that survived in the cell stays visible, side by side
@@ -107,59 +84,75 @@ enum class Corner { bottom_left, bottom_right, top_left, top_right };
 constexpr bool from_right(Corner c) { return c == Corner::bottom_right || c == Corner::top_right; }
 constexpr bool from_top(Corner c) { return c == Corner::top_left || c == Corner::top_right; }
 
-// What only one kind of layout has, one type per kind, in LayoutKind's order.
-struct TileKeys {};
-struct PavingKeys {};
-struct FacadeKeys {
-  std::vector<Rect> openings;  // windows and doors, mm from the wall's origin
-  std::string mask;            // image whose dark pixels are openings (read by the application)
+// The recipe's drawing keys: layout.png's scale, sheet and resolution, and what it overlays.
+struct DrawingKeys {
+  double scale = 0;          // layout.png drawing scale 1 : scale; 0 picks one
+  std::string paper = "A3";  // the ISO sheet a scale is picked for (drawing_sheet.h)
+  double dpi = 150;
+  bool stage_grid = false;       // draw lines at each stage's cell boundaries
+  std::optional<Box> highlight;  // a window of cells to outline on the drawing
 };
-struct PerforationKeys {
-  std::vector<HoleSpec> holes;  // one per curd
-  double thickness = 0;         // sheet thickness, mm
-  double min_diameter = 0;      // smallest hole the tool cuts
-  double min_bridge = 0;        // least material between two holes
-  double edge_margin = 0;       // least material between a hole and the sheet edge
-  HoleFix fix = HoleFix::none;
-  double chord_tolerance = 0.05;                    // how far polygonised circles may stray, mm
-  std::optional<std::array<double, 2>> sheet_size;  // fabrication sheets at most this size
-  std::vector<double> punches;  // the tools' diameters: every opening is one of them; empty: any
-  std::optional<std::array<double, 2>> open_area;  // [min, max] share each sheet must be open
-};
-struct ParkKeys {
-  std::vector<ParkElement> elements;  // one per curd (Cirovic 2014, fig. 5)
-  ParkElement ground{"white paving", true, false, 0, 0, Rgb{242, 240, 234}};  // no surface
-  double clearance = 0;  // between objects, and from objects to the cell's edge
-};
-struct RhythmKeys {            // E = 1: a line of bays, each holding an element whose width
-  std::vector<double> widths;  // follows the value: per value, mm; 0: no element
-};
-struct BlocksKeys {  // E = 3: voxels of module_w x module_h (plan) x voxel_h (storey)
-  double voxel_h = 3000;
-};
-using KindKeys = std::variant<TileKeys, PavingKeys, FacadeKeys, PerforationKeys, ParkKeys,
-                              RhythmKeys, BlocksKeys>;
 
-// The recipe's [layout] section: the keys every kind has, and its own kind's (`keys`, whose
-// alternative is the kind: there is no second record of it to disagree).
+// Ordering: spare share added to each quantity, elements per pack, and lots in laying order
+// (a number of elements, e.g. a pallet, or a number of rows, e.g. a floor; 0: one lot).
+struct OrderingKeys {
+  double spare = 0;
+  int64_t pack = 1;
+  int64_t lot_size = 0;
+  int64_t lot_rows = 0;
+};
+
+// A kind's own keys, copied with the spec that holds them.
+class OwnKeys {
+ public:
+  OwnKeys() = default;
+  explicit OwnKeys(std::unique_ptr<KindKeys> keys) : keys_(std::move(keys)) {}
+  OwnKeys(const OwnKeys& o) : keys_(o.keys_ ? o.keys_->clone() : nullptr) {}
+  OwnKeys& operator=(const OwnKeys& o) {
+    keys_ = o.keys_ ? o.keys_->clone() : nullptr;
+    return *this;
+  }
+  OwnKeys(OwnKeys&&) = default;
+  OwnKeys& operator=(OwnKeys&&) = default;
+
+  // The record as its kind's type; asking for another kind's is a programming error.
+  template <class K>
+  const K& as() const {
+    const K* k = dynamic_cast<const K*>(keys_.get());
+    if (!k) throw std::logic_error("a layout spec asked for another kind's keys");
+    return *k;
+  }
+  template <class K>
+  K& as() {
+    return const_cast<K&>(std::as_const(*this).as<K>());
+  }
+  // The record as K, or nullptr when it is another kind's (or the kind has none).
+  template <class K>
+  K* find() {
+    return dynamic_cast<K*>(keys_.get());
+  }
+  template <class K>
+  const K* find() const {
+    return dynamic_cast<const K*>(keys_.get());
+  }
+
+ private:
+  std::unique_ptr<KindKeys> keys_;
+};
+
+// The recipe's [layout] section: the keys every kind has, its kind, and its kind's own keys.
 struct LayoutSpec {
-  KindKeys keys;
-  LayoutKind kind() const { return static_cast<LayoutKind>(keys.index()); }
-  void set_kind(LayoutKind kind);  // the kind's own keys take their defaults
-
-  // A kind's own keys; asking the wrong kind is a programming error (std::bad_variant_access).
-  const FacadeKeys& facade() const { return std::get<FacadeKeys>(keys); }
-  FacadeKeys& facade() { return std::get<FacadeKeys>(keys); }
-  const PerforationKeys& perforation() const { return std::get<PerforationKeys>(keys); }
-  PerforationKeys& perforation() { return std::get<PerforationKeys>(keys); }
-  const ParkKeys& park() const { return std::get<ParkKeys>(keys); }
-  ParkKeys& park() { return std::get<ParkKeys>(keys); }
-  const RhythmKeys& rhythm() const { return std::get<RhythmKeys>(keys); }
-  RhythmKeys& rhythm() { return std::get<RhythmKeys>(keys); }
-  const BlocksKeys& blocks() const { return std::get<BlocksKeys>(keys); }
-  BlocksKeys& blocks() { return std::get<BlocksKeys>(keys); }
-  // A façade's openings; none for other kinds.
-  const std::vector<Rect>& openings() const;
+  const LayoutKind* kind = nullptr;  // never null once read; set_kind sets it
+  OwnKeys keys;
+  void set_kind(const LayoutKind& k);  // the kind's own keys take their defaults
+  template <class K>
+  const K& own() const {
+    return keys.as<K>();
+  }
+  template <class K>
+  K& own() {
+    return keys.as<K>();
+  }
 
   Combine combine = Combine::mix;
   double module_w = 300, module_h = 300;          // element size (tile, panel) in mm
@@ -185,18 +178,9 @@ struct LayoutSpec {
   Corner origin = Corner::bottom_left;            // where cell (0, 0) and the laying order start
   std::vector<std::optional<Rgb>> value_colours;  // per value, overriding the blend (mix)
   Rgb joint_colour{150, 150, 150};
-  bool stage_grid = false;       // draw lines at each stage's cell boundaries
-  std::optional<Box> highlight;  // a window of cells to outline on the drawing
-  // Ordering: spare share added to each quantity, elements per pack, and lots in laying order
-  // (a number of elements, e.g. a pallet, or a number of rows, e.g. a floor; 0: one lot).
-  double spare = 0;
-  int64_t pack = 1;
-  int64_t lot_size = 0;
-  int64_t lot_rows = 0;
   std::vector<std::string> materials;  // per value, the product's name; empty: the curds' names
-  double scale = 0;                    // layout.png drawing scale 1 : scale; 0 picks one
-  std::string paper = "A3";            // the ISO sheet a scale is picked for (drawing_sheet.h)
-  double dpi = 150;
+  DrawingKeys drawing;
+  OrderingKeys ordering;
 };
 
 // Where a layout came from, for title blocks and the files' metadata.
@@ -208,7 +192,17 @@ struct Provenance {
   std::vector<CurdSpec> curds;
 };
 
+// What an element is, so that writers draw it without asking its layout's kind.
+enum class ElementForm {
+  piece,    // material laid: its rectangles (`shape`), or its polygon (`outline`) when cut along
+            // a sloping or curved edge
+  opening,  // a hole in a sheet: round (`circle`) or merged openings (`outline`)
+  object,   // a park's surface or object, in its own colour (`type`, `colour`)
+  block,    // a voxel of a stack (`cell_z` its level)
+};
+
 struct Element {
+  ElementForm form = ElementForm::piece;
   ElementId key;                    // stable and readable: kind, row and column in laying order
   std::string id;                   // key.text(), formatted once
   uint32_t value = 0;               // the overlay value of its cell
@@ -237,18 +231,23 @@ struct LegendEntry {
 
 // A built layout: everything an exporter reads, so that writers take a Layout and nothing else.
 struct Layout {
-  LayoutSpec spec;    // what it was built from: drawing scale, ordering, sheet thickness, ...
-  Provenance source;  // recipe, seed, lattice and curds
-  LayoutKind kind = LayoutKind::tile;
+  const LayoutKind* kind = nullptr;  // what was laid; never null once built
+  Provenance source;                 // recipe, seed, lattice and curds
   Combine combine = Combine::mix;
   std::string element_type;      // "tile", "paving tile", "panel"
   double width = 0, height = 0;  // mm
+  double thickness = 0;          // of what is laid, mm (the kind's, for 3-D)
+  double level_height = 0;       // blocks: a storey, mm; 0 for surfaces and lines
   double joint = 0;
   Rgb joint_colour;
   Corner origin = Corner::bottom_left;
   int64_t columns = 0, rows = 0;  // elements along x and y
   double module_w = 0, module_h = 0;
   std::array<double, 2> shift{0, 0};  // the grid moved back from the origin corner, mm
+  double bond = 0;                    // each course's move along x, a share of the pitch
+  bool centred = false;               // the grid centred on the surface
+  DrawingKeys drawing;                // the drawing's scale, sheet, resolution and overlays
+  OrderingKeys ordering;              // spare, packs and lots of the schedules
   std::vector<Element> elements;
   // Every hole in the surface: a façade's openings, then the excluded zones' rectangles.
   std::vector<Rect> openings;
@@ -268,6 +267,8 @@ struct Layout {
   // and what the fabrication rules found or changed.
   double open_area = 0;
   std::vector<std::string> violations;
+  bool drops_violations = false;    // openings that break a fabrication rule are dropped
+  double chord_tolerance = 0.05;    // how far polygonised round openings may stray, mm
   // Perforation: the fabrication sheets the surface is cut into, row by row from the origin
   // (one, the whole surface, when no sheet size is given).
   struct FabricationSheet {

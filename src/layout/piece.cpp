@@ -24,10 +24,6 @@ Rect laid_bounds(const Element& e) {
   return Rect{x0, y0, x1 - x0, y1 - y0};
 }
 
-bool is_opening(const Layout& layout, const Element& e) {
-  return layout.kind == LayoutKind::perforation && (e.circle || e.outline);
-}
-
 bool is_rectangle(const Element& e) {
   if (e.circle || e.outline) return false;
   if (e.shape.size() <= 1) return true;

@@ -14,10 +14,6 @@ namespace curdle {
 // merged outline); the nominal element when it has neither.
 Rect laid_bounds(const Element& e);
 
-// Whether the element is an opening (a perforated sheet's hole, round or merged) rather than a
-// piece of material; a module cut along a sloping edge has an outline too, and is a piece.
-bool is_opening(const Layout& layout, const Element& e);
-
 // Whether the piece is one axis-aligned rectangle (whole, or cut straight at an edge).
 bool is_rectangle(const Element& e);
 

@@ -124,7 +124,7 @@ DensityField read_density(TableReader& curd, const std::string& path, const Latt
 
 void place_density(DensityField& field, const std::optional<LayoutSpec>& layout, const Box& view,
                    const Box& whole_field) {
-  const bool on_surface = layout && layout->kind() != LayoutKind::rhythm;
+  const bool on_surface = layout && layout->kind->dimension() != 1;
   field.placement = on_surface ? cell_placement(*layout, view) : CellPlacement{};
   if (field.kind == DensityKind::image && !field.rect_given) {
     if (on_surface) {  // the picture covers the surface

@@ -9,70 +9,10 @@
 #include "layout/builder.h"
 #include "layout/drawing_sheet.h"
 #include "layout/zone.h"
+#include "kinds/registry.h"
 
 namespace curdle::reading {
 namespace {
-
-// What a kind is called in recipes, and the keys it owns beyond the ones every kind takes.
-struct KindKeys {
-  const char* name;
-  LayoutKind kind;
-  const char* module_key;  // the element's size; empty for lines and voxels
-  const char* size_key;    // the surface's size
-  bool size_required;
-  bool joint;
-  std::vector<std::string> own;
-};
-
-const std::vector<KindKeys>& kinds() {
-  static const std::vector<KindKeys> table = {
-      {"tile",
-       LayoutKind::tile,
-       "tile",
-       "size",
-       false,
-       true,
-       {"min_cut", "shift", "bond", "zones", "outline"}},
-      {"paving",
-       LayoutKind::paving,
-       "tile",
-       "floor",
-       true,
-       true,
-       {"min_cut", "shift", "bond", "zones", "outline"}},
-      {"facade",
-       LayoutKind::facade,
-       "panel",
-       "wall",
-       true,
-       true,
-       {"openings", "mask", "min_cut", "shift", "bond", "zones", "outline"}},
-      {"perforation",
-       LayoutKind::perforation,
-       "cell",
-       "sheet",
-       true,
-       false,
-       {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin", "fix", "chord_tolerance",
-        "sheet_size", "punches", "open_area", "outline"}},
-      {"park",
-       LayoutKind::park,
-       "cell",
-       "area",
-       false,
-       false,
-       {"elements", "ground", "clearance", "outline"}},
-      {"rhythm",
-       LayoutKind::rhythm,
-       "",
-       "",
-       false,
-       false,
-       {"bay", "height", "length", "widths", "origin", "highlight"}},
-      {"blocks", LayoutKind::blocks, "", "", false, false, {"voxel"}},
-  };
-  return table;
-}
 
 const std::vector<std::string> kEveryKind = {"kind",     "colours", "materials", "scale",
                                              "dpi",      "paper",   "spare",     "pack",
@@ -96,8 +36,6 @@ void read_materials(TableReader& r, const Design& design, LayoutSpec& spec) {
     spec.materials.push_back(*name);
   }
 }
-const std::vector<std::string> kSurface = {"combine", "origin", "joint_colour", "stage_grid",
-                                           "highlight"};
 
 // layout.origin: a corner, or (where the grid can move: tile, paving, facade) "centre".
 Corner read_corner(TableReader& r, bool centre_allowed, LayoutSpec& spec) {
@@ -131,8 +69,17 @@ std::optional<Box> read_highlight(TableReader& r) {
   return Box{{v[0], v[1], 0}, {v[2], v[3], 1}};
 }
 
-// The keys of the 2-D surface kinds: element, joint, surface size, corner and drawing.
-void read_surface(TableReader& r, const KindKeys& k, const Design& design, LayoutSpec& spec) {
+}  // namespace
+
+std::vector<std::string> surface_keys(const SurfaceKeys& k) {
+  std::vector<std::string> keys = {"combine",    "origin",    "joint_colour", "stage_grid",
+                                   "highlight",  k.module_key, k.size_key};
+  if (k.joint) keys.push_back("joint");
+  if (k.size_key != std::string("sheet")) keys.push_back("sheet");  // the paper, by name
+  return keys;
+}
+
+void read_surface(TableReader& r, const SurfaceKeys& k, const Design& design, LayoutSpec& spec) {
   const auto combine = read_string(r, "combine", "\"mix\" or \"keep\"").value_or("mix");
   if (combine == "mix")
     spec.combine = Combine::mix;
@@ -151,15 +98,15 @@ void read_surface(TableReader& r, const KindKeys& k, const Design& design, Layou
   // An outline can stand for the size (its bounding rectangle, read_outline).
   spec.size = read_mm_pair(r, k.size_key, k.size_required && !r.get("outline"));
   read_outline(r, spec);  // only the kinds that take one let the key through
-  spec.origin = read_corner(
-      r, k.kind == LayoutKind::tile || k.kind == LayoutKind::paving || k.kind == LayoutKind::facade,
-      spec);
+  spec.origin = read_corner(r, k.grid_moves, spec);
   read_value_colours(r, design, spec);
   if (const auto colour = read_colour(r, "joint_colour")) spec.joint_colour = *colour;
-  spec.stage_grid = read_bool(r, "stage_grid", false);
-  spec.highlight = read_highlight(r);
+  spec.drawing.stage_grid = read_bool(r, "stage_grid", false);
+  spec.drawing.highlight = read_highlight(r);
   read_drawing_scale(r, spec);
 }
+
+namespace {
 
 // layout.bond: how far each course moves along from the one below.
 void read_bond(TableReader& r, LayoutSpec& spec) {
@@ -180,6 +127,8 @@ void read_bond(TableReader& r, LayoutSpec& spec) {
   if (spec.bond > 0 && spec.combine == Combine::keep)
     r.fail("bond", "needs combine = \"mix\": kept curds are drawn as stripes of a stacked grid");
 }
+
+}  // namespace
 
 // layout.min_cut and layout.shift: the narrowest cut piece, and the grid moved to avoid slivers.
 void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec) {
@@ -220,22 +169,20 @@ void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
 }
 
-}  // namespace
-
 void read_drawing_scale(TableReader& r, LayoutSpec& spec) {
   // layout.paper, or layout.sheet written as a name where the sheet is not the kind's surface.
-  const bool sheet_is_paper = spec.kind() != LayoutKind::perforation && r.get("sheet");
+  const bool sheet_is_paper = spec.kind->ground() != Ground::sheet && r.get("sheet");
   const char* key = sheet_is_paper ? "sheet" : "paper";
   if (const auto paper = read_string(r, key, "an ISO sheet name such as \"A3\"")) {
     if (!paper_sheet(*paper))
       r.fail(key,
              "must be \"A0\", \"A1\", \"A2\", \"A3\" or \"A4\": the sheet layout.png is "
              "scaled to fit");
-    spec.paper = *paper;
+    spec.drawing.paper = *paper;
   }
-  spec.scale = read_mm(r, "scale", 0, 1);
-  spec.dpi = read_mm(r, "dpi", 150, 10);
-  if (spec.dpi > 1200) r.fail("dpi", "must be from 10 to 1200");
+  spec.drawing.scale = read_mm(r, "scale", 0, 1);
+  spec.drawing.dpi = read_mm(r, "dpi", 150, 10);
+  if (spec.drawing.dpi > 1200) r.fail("dpi", "must be from 10 to 1200");
 }
 
 std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool field_given) {
@@ -245,81 +192,45 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   if (const toml::node* n = t->get("kind")) {
     if (!n->is_string()) top.fail_node(*n, "layout.kind", "must be a string such as \"paving\"");
     name = *n->value<std::string>();
-    if (name == "façade") name = "facade";
   }
-  const auto& table = kinds();
-  const auto k =
-      std::find_if(table.begin(), table.end(), [&](const KindKeys& x) { return name == x.name; });
-  if (k == table.end())
+  const LayoutKind* kind = find_layout_kind(name);
+  if (!kind)
     top.fail_node(*t->get("kind"), "layout.kind",
-                  "unknown element kind \"" + name +
-                      "\"; allowed: \"tile\", \"paving\", \"facade\", \"perforation\", \"park\", "
-                      "\"rhythm\", \"blocks\"");
-  const bool surface = *k->module_key != '\0';
+                  "unknown element kind \"" + name + "\"; allowed: " + layout_kind_names());
   std::vector<std::string> keys = kEveryKind;
-  if (std::string(k->size_key) != "sheet") keys.push_back("sheet");  // the paper, by name
-  if (surface) {
-    keys.insert(keys.end(), kSurface.begin(), kSurface.end());
-    keys.push_back(k->module_key);
-    keys.push_back(k->size_key);
-    if (k->joint) keys.push_back("joint");
-  }
-  keys.insert(keys.end(), k->own.begin(), k->own.end());
+  const std::vector<std::string> own = kind->keys();
+  keys.insert(keys.end(), own.begin(), own.end());
   TableReader r(*t, "layout", top.source(), keys);
 
   LayoutSpec spec;
-  spec.set_kind(k->kind);
+  spec.set_kind(*kind);
+  r.get("kind");  // read above
   read_ordering(r, spec);
   read_materials(r, design, spec);
-  const int dimension = layout_dimension(spec.kind());
+  const int dimension = kind->dimension();
   if (design.lattice.dimension != dimension)
     r.fail("kind", "a " + name + " layout needs a " + std::to_string(dimension) +
                        "-D lattice; this one is " + std::to_string(design.lattice.dimension) +
                        "-D");
-  switch (spec.kind()) {
-    case LayoutKind::rhythm:
-      read_rhythm(r, design, spec, field_given);
-      return spec;
-    case LayoutKind::blocks:
-      read_value_colours(r, design, spec);
-      read_drawing_scale(r, spec);
-      read_blocks(r, spec);
-      return spec;
-    case LayoutKind::facade:
-      read_surface(r, *k, design, spec);
-      read_facade(r, spec);
-      read_cut_rules(r, design, spec);
-      break;
-    case LayoutKind::perforation:
-      read_surface(r, *k, design, spec);
-      read_perforation(r, design, spec);
-      break;
-    case LayoutKind::park:
-      read_surface(r, *k, design, spec);
-      read_park(r, design, spec);
-      break;
-    case LayoutKind::tile:
-    case LayoutKind::paving:
-      read_surface(r, *k, design, spec);
-      read_cut_rules(r, design, spec);
-      break;
-  }
-
-  if (spec.size) {
-    const auto cells = elements_to_cover(spec);
-    // A larger field is a curd from which a segment of `cells` becomes the floor or wall.
-    if (field_given && (design.field.size[0] < cells[0] || design.field.size[1] < cells[1]))
-      r.fail(k->size_key, "needs " + std::to_string(cells[0]) + " x " + std::to_string(cells[1]) +
-                              " elements but field.cells is " +
-                              std::to_string(design.field.size[0]) + " x " +
-                              std::to_string(design.field.size[1]) +
-                              "; leave field.cells out, or make it at least that large");
-    if (!field_given) {
-      design.field.size[0] = cells[0];
-      design.field.size[1] = cells[1];
-    }
-  }
+  kind->read(r, design, spec, field_given);
+  r.report_unused("is not read by a " + std::string(kind->name()) + " layout");
   return spec;
+}
+
+void size_field(TableReader& r, const std::string& size_key, Design& design,
+                const LayoutSpec& spec, bool field_given) {
+  if (!spec.size) return;
+  const auto cells = elements_to_cover(spec);
+  // A larger field is a curd from which a segment of `cells` becomes the floor or wall.
+  if (field_given && (design.field.size[0] < cells[0] || design.field.size[1] < cells[1]))
+    r.fail(size_key, "needs " + std::to_string(cells[0]) + " x " + std::to_string(cells[1]) +
+                         " elements but field.cells is " + std::to_string(design.field.size[0]) +
+                         " x " + std::to_string(design.field.size[1]) +
+                         "; leave field.cells out, or make it at least that large");
+  if (!field_given) {
+    design.field.size[0] = cells[0];
+    design.field.size[1] = cells[1];
+  }
 }
 
 // Ordering: the spare share, pack size and lots of the schedules.
@@ -328,12 +239,13 @@ void read_ordering(TableReader& r, LayoutSpec& spec) {
     const auto v = finite_number(n);
     if (!v || !std::isfinite(*v) || *v < 0 || *v > 10)
       r.fail("spare", "must be a share from 0 to 10, e.g. 0.05 for 5 % spare; not negative");
-    spec.spare = *v;
+    spec.ordering.spare = *v;
   }
-  spec.pack = read_int(r, "pack", 1, 1, 1000000);
-  spec.lot_size = read_int(r, "lot_size", 0, 0, INT64_MAX);
-  spec.lot_rows = read_int(r, "lot_rows", 0, 0, INT64_MAX);
-  if (spec.lot_size && spec.lot_rows)
+  OrderingKeys& o = spec.ordering;
+  o.pack = read_int(r, "pack", 1, 1, 1000000);
+  o.lot_size = read_int(r, "lot_size", 0, 0, INT64_MAX);
+  o.lot_rows = read_int(r, "lot_rows", 0, 0, INT64_MAX);
+  if (o.lot_size && o.lot_rows)
     r.fail("lot_rows", "give lots either by size (lot_size) or by rows (lot_rows), not both");
 }
 

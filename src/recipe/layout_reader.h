@@ -9,8 +9,9 @@
 
 namespace curdle::reading {
 
-// The [layout] table, or std::nullopt when there is none. A fixed floor, wall, sheet or line
-// sizes the field when `field_given` is false, and must fit in it when true.
+// The [layout] table, or std::nullopt when there is none: its kind (kinds/registry.h) reads
+// its own keys, and a key present that no reader read is refused. A fixed floor, wall, sheet or
+// line sizes the field when `field_given` is false, and must fit in it when true.
 std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool field_given);
 
 // Keys every kind takes: the schedules' ordering and the drawing's colours and scale.
@@ -18,16 +19,26 @@ void read_ordering(TableReader& r, LayoutSpec& spec);
 void read_value_colours(TableReader& r, const Design& design, LayoutSpec& spec);
 void read_drawing_scale(TableReader& r, LayoutSpec& spec);
 
-// The kinds' own keys, each in its own file.
-void read_facade(TableReader& r, LayoutSpec& spec);
-// layout.outline (tile, paving, facade): the surface as a polygon; its bounding rectangle is
-// the size when the size key is left out.
+// What the surface kinds (tile, paving, facade, perforation, park) call their keys.
+struct SurfaceKeys {
+  const char* module_key;  // the element: "tile", "panel", "cell"
+  const char* size_key;    // the surface: "size", "floor", "wall", "sheet", "area"
+  bool size_required;
+  bool joint;       // takes layout.joint
+  bool grid_moves;  // origin = "centre" allowed: the grid is centred on the surface
+};
+// Their keys: element, joint, surface size, corner, colours and drawing.
+std::vector<std::string> surface_keys(const SurfaceKeys& k);
+void read_surface(TableReader& r, const SurfaceKeys& k, const Design& design, LayoutSpec& spec);
+// layout.bond, zones, min_cut and shift (tile, paving, facade), after the surface.
+void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec);
+// The field a fixed surface needs: sized by it, or checked to hold it.
+void size_field(TableReader& r, const std::string& size_key, Design& design,
+                const LayoutSpec& spec, bool field_given);
+// layout.outline (tile, paving, facade, perforation, park): the surface as a polygon; its
+// bounding rectangle is the size when the size key is left out.
 void read_outline(TableReader& r, LayoutSpec& spec);
 // [[layout.zones]], after the surface's size (tile, paving, facade).
 void read_zones(TableReader& r, const Design& design, LayoutSpec& spec);
-void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec);
-void read_park(TableReader& r, const Design& design, LayoutSpec& spec);
-void read_rhythm(TableReader& r, Design& design, LayoutSpec& spec, bool field_given);
-void read_blocks(TableReader& r, LayoutSpec& spec);
 
 }  // namespace curdle::reading

@@ -26,7 +26,7 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
                   {"name", "description", "seed", "lattice", "field", "curds", "layout"});
   Recipe recipe;
   recipe.design.name = read_string(top, "name").value_or("untitled");
-  recipe.description = read_string(top, "description").value_or("");
+  recipe.design.description = read_string(top, "description").value_or("");
   recipe.seed = static_cast<uint64_t>(read_int(top, "seed", 1, 0, INT64_MAX));
   Lattice lattice = read_lattice(top);
   recipe.design.curds = read_curds(top, lattice);

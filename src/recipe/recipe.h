@@ -15,7 +15,6 @@ namespace curdle {
 
 struct Recipe {
   Design design;
-  std::string description;
   uint64_t seed = 1;
   std::optional<Box> window;         // [field] window
   std::optional<LayoutSpec> layout;  // [layout]; its mask path is relative to the recipe

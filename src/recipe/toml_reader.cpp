@@ -181,4 +181,14 @@ void TableReader::reject_unknown() const {
   }
 }
 
+void TableReader::report_unused(const std::string& why) const {
+  for (auto&& [k, v] : table_) {
+    const std::string key(k.str());
+    if (!asked_.count(key))
+      throw InputError(locate(source_, v.source(), key_path(key)),
+                       "'" + key + "' " + why + ". Read here: " +
+                           join(std::vector<std::string>(asked_.begin(), asked_.end())) + ".");
+  }
+}
+
 }  // namespace curdle::reading

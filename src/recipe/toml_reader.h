@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,7 +40,11 @@ class TableReader {
     reject_unknown();
   }
 
-  const toml::node* get(const std::string& key) const { return table_.get(key); }
+  // The key's node, or nullptr; either way the key counts as read (report_unused).
+  const toml::node* get(const std::string& key) const {
+    asked_.insert(key);
+    return table_.get(key);
+  }
   std::string key_path(const std::string& key) const {
     return path_.empty() ? key : path_ + "." + key;
   }
@@ -54,6 +59,9 @@ class TableReader {
 
   // Every key not asked for is an error, with the closest known key as a suggestion.
   void reject_unknown() const;
+  // After the readers have run: a key present that none of them asked for is an error, `why`
+  // (as pbrt's ReportUnused), so that no key is accepted and then silently ignored.
+  void report_unused(const std::string& why) const;
 
   const Source& source() const { return source_; }
 
@@ -62,6 +70,7 @@ class TableReader {
   std::string path_;
   const Source& source_;
   std::vector<std::string> known_;
+  mutable std::set<std::string> asked_;
 };
 
 int64_t read_int(TableReader& r, const std::string& key, int64_t fallback, int64_t lo, int64_t hi,

@@ -192,7 +192,7 @@ ordered_json describe(const app::Run& s) {
   const int E = d.lattice.dimension;
   ordered_json j;
   j["name"] = d.name;
-  j["description"] = s.recipe.description;
+  j["description"] = s.recipe.design.description;
   j["recipe_path"] = s.recipe_path;
   j["lattice"] = {{"base", d.lattice.base},
                   {"dimension", E},
@@ -215,9 +215,9 @@ ordered_json describe(const app::Run& s) {
     const auto entries = make_legend(d, spec);
     for (const LegendEntry& e : entries)
       legend.push_back({{"value", e.value}, {"label", e.label}, {"colour", hex_colour(e.colour)}});
-    const bool line = spec.kind() == LayoutKind::rhythm;
+    const bool line = spec.kind->dimension() == 1;
     j["layout"] = {
-        {"element", element_type(spec.kind())},
+        {"element", std::string(spec.kind->element_noun())},
         {"cell_mm",
          {spec.module_w + spec.joint, line ? spec.module_h : spec.module_h + spec.joint}},
         {"has_value_colours", !spec.value_colours.empty()}};
@@ -225,7 +225,7 @@ ordered_json describe(const app::Run& s) {
       const auto need = elements_to_cover(spec);
       j["layout"]["size_mm"] = {(*spec.size)[0], (*spec.size)[1]};
       j["layout"]["segment_cells"] = {need[0], need[1]};
-      if (!line && spec.kind() != LayoutKind::blocks) j["layout"]["surface"] = surface_json(spec);
+      if (spec.kind->dimension() == 2) j["layout"]["surface"] = surface_json(spec);
     }
   } else {
     const auto colours = value_colours(d.curds);

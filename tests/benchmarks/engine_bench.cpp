@@ -13,6 +13,7 @@
 #include "curdle/report.h"
 #include "curdle/search.h"
 #include "export/schedule.h"
+#include "kinds/registry.h"
 #include "layout/builder.h"
 #include "recipe/recipe.h"
 #include "server/api.h"
@@ -107,9 +108,9 @@ void BM_Schedule_1M_elements(benchmark::State& state) {
   curdle::Design d = make(2, 2, std::vector<std::string>(10, "0.9"));
   d.field.size = {1000, 1000, 1};
   curdle::LayoutSpec spec;
-  spec.set_kind(curdle::LayoutKind::paving);
+  spec.set_kind(curdle::layout_kind("paving"));
   spec.module_w = spec.module_h = 297, spec.joint = 3;
-  spec.spare = 0.05, spec.pack = 20, spec.lot_size = 5000;
+  spec.ordering = {0.05, 20, 5000, 0};
   const curdle::Layout layout =
       curdle::make_layout(d, curdle::curdle(d, 1, d.field), d.field, spec);
   const std::string path = "/tmp/curdle-bench-schedule.csv";

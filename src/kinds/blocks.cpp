@@ -1,35 +1,74 @@
-#include "layout/rhythm.h"
+// The blocks kind (a 3-D curd as architecture): a stack of voxels, drawn as a plan and an
+// elevation, each block a box in 3-D.
+#include "kinds/blocks.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "curdle/overlay.h"
 #include "layout/builder.h"
+#include "layout/drawing_sheet.h"
+#include "recipe/layout_reader.h"
 
 namespace curdle {
 
-void set_rhythm(Layout& layout, const LayoutSpec& spec) {
-  std::vector<Element> bays = std::move(layout.elements);
-  layout.elements.clear();
-  layout.element_type = "fin";
-  for (LegendEntry& e : layout.legend) e.count = 0;
-  for (Element& e : bays) {
-    const double w = spec.rhythm().widths[e.value];
-    ++layout.legend[e.value].count;  // bays of each value, as the report counts cells
-    if (w <= 0) continue;
-    const Rect bay = e.nominal;
-    e.shape = {Rect{bay.x + (bay.w - w) / 2, bay.y, w, bay.h}};
-    e.stock_w = w, e.stock_h = bay.h;
-    e.cut = false;
-    e.key = e.key.as('R');
-    e.id = e.key.text();
-    layout.elements.push_back(std::move(e));
-  }
+double BlocksKind::thickness(const LayoutSpec& spec) const {
+  return spec.own<BlocksKeys>().voxel_h;
 }
 
-Layout stack_blocks(const Design& design, const CurdField& field, const Box& view,
-                    const LayoutSpec& spec) {
+std::string BlocksKind::size_line(const Layout& layout) const {
+  return fmt::format("{} x {} x {} voxels of {} x {} x {} mm (w x d x h), {} blocks",
+                     layout.view.size[0], layout.view.size[1], layout.view.size[2],
+                     drawing_mm(layout.module_w), drawing_mm(layout.module_h),
+                     drawing_mm(layout.level_height), layout.elements.size());
+}
+
+std::vector<std::string> BlocksKind::keys() const { return {"sheet", "voxel"}; }
+
+std::unique_ptr<KindKeys> BlocksKind::default_keys() const {
+  return std::make_unique<BlocksKeys>();
+}
+
+CellPlacement BlocksKind::cell_placement(const LayoutSpec& spec, const Box& view) const {
+  CellPlacement p;  // voxel (x, y, z) at x w, y d, z h from the view
+  const std::array<double, 3> size{spec.module_w, spec.module_h, spec.own<BlocksKeys>().voxel_h};
+  for (int d = 0; d < 3; ++d) {
+    p.scale[d] = size[d];
+    p.origin[d] = -static_cast<double>(view.origin[d]) * size[d];
+  }
+  return p;
+}
+
+std::array<double, 2> BlocksKind::drawing_extent(const LayoutSpec& spec, const Box& view) const {
+  // The plan and the elevation side by side (build() lays them out).
+  return {2 * view.size[0] * spec.module_w + 2 * std::max(spec.module_w, spec.module_h),
+          std::max(view.size[1] * spec.module_h, view.size[2] * spec.own<BlocksKeys>().voxel_h)};
+}
+
+void BlocksKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec, bool) const {
+  using namespace reading;
+  read_value_colours(r, design, spec);
+  read_drawing_scale(r, spec);
+  const toml::node* n = r.get("voxel");
+  const toml::array* a = n ? n->as_array() : nullptr;
+  std::array<double, 3> v{3000, 3000, 3000};
+  if (n) {
+    bool ok = a && a->size() == 3;
+    for (size_t i = 0; ok && i < 3; ++i) {
+      const auto x = finite_number(a->get(i));
+      ok = x && *x > 0 && *x <= 1e6;
+      if (ok) v[i] = *x;
+    }
+    if (!ok) r.fail("voxel", "must be [width, depth, height] in millimetres, each above 0");
+  }
+  spec.module_w = v[0], spec.module_h = v[1], spec.own<BlocksKeys>().voxel_h = v[2];
+}
+
+Layout BlocksKind::build(const Design& design, const CurdField& field, const Box& view,
+                        const LayoutSpec& spec) const {
   Layout layout;
-  layout.kind = LayoutKind::blocks;
+  layout.kind = this;
   layout.combine = spec.combine;
   layout.element_type = "block";
   layout.view = view;
@@ -37,9 +76,10 @@ Layout stack_blocks(const Design& design, const CurdField& field, const Box& vie
   layout.rows = view.size[1];
   layout.module_w = spec.module_w;
   layout.module_h = spec.module_h;
-  const double w = spec.module_w, d = spec.module_h, h = spec.blocks().voxel_h;
+  const double w = spec.module_w, d = spec.module_h, h = spec.own<BlocksKeys>().voxel_h;
   const double plan_w = view.size[0] * w, plan_h = view.size[1] * d, elev_h = view.size[2] * h;
   const double gap = std::max(w, d) * 2;
+  layout.level_height = h;
   layout.width = plan_w * 2 + gap;
   layout.height = std::max(plan_h, elev_h);
 
@@ -55,6 +95,7 @@ Layout stack_blocks(const Design& design, const CurdField& field, const Box& vie
         const uint16_t v = at(x, y, z);
         if (!v) continue;
         Element e;
+        e.form = ElementForm::block;
         e.value = v;
         e.row = y, e.column = x;
         e.cell_x = view.origin[0] + x, e.cell_y = view.origin[1] + y, e.cell_z = view.origin[2] + z;

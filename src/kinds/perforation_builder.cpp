@@ -1,4 +1,4 @@
-#include "layout/perforation.h"
+#include "kinds/perforation.h"
 
 #include <fmt/format.h>
 
@@ -108,7 +108,7 @@ void summarise_sheets(Layout& layout, const LayoutSpec& spec) {
     sheet.open_area = sheet.surface > 0 ? open[i] / sheet.surface : 0;
     sheet.tools.assign(tools[i].begin(), tools[i].end());
     least = std::min(least, sheet.open_area), most = std::max(most, sheet.open_area);
-    const auto& range = spec.perforation().open_area;
+    const auto& range = spec.own<PerforationKeys>().open_area;
     if (range && (sheet.open_area < (*range)[0] - 1e-12 || sheet.open_area > (*range)[1] + 1e-12))
       layout.violations.push_back(
           fmt::format("{}: open area {:.2f} %, outside layout.open_area {:.2f} % to {:.2f} %",
@@ -132,9 +132,9 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
     std::vector<Circle> circles;
     for (size_t c = 0; c < design.curds.size(); ++c)
       if (cell.value >> c & 1)
-        circles.push_back(Circle{cx + spec.perforation().holes[c].offset_x,
-                                 cy + spec.perforation().holes[c].offset_y,
-                                 spec.perforation().holes[c].diameter});
+        circles.push_back(Circle{cx + spec.own<PerforationKeys>().holes[c].offset_x,
+                                 cy + spec.own<PerforationKeys>().holes[c].offset_y,
+                                 spec.own<PerforationKeys>().holes[c].diameter});
     int index = 0;
     for (const std::vector<Circle>& group : overlapping_groups(circles)) {
       Hole h;
@@ -143,6 +143,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
       h.element.outline.reset();  // the cell's own cut along an outline is not the opening's
       h.element.cut = false;
       h.element.stock_w = h.element.stock_h = 0;  // punched or cut out: nothing is bought
+      h.element.form = ElementForm::opening;
       h.element.key = cell.key.within('H', std::to_string(++index));
       h.element.id = h.element.key.text();
       if (group.size() == 1) {
@@ -154,7 +155,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         double area = 0, mx = 0, my = 0;
         for (const Circle& c : group)
           area += c.area(), mx += c.area() * c.cx, my += c.area() * c.cy;
-        const double d = nearest_punch(spec.perforation().punches, area);
+        const double d = nearest_punch(spec.own<PerforationKeys>().punches, area);
         const Circle merged{mx / area, my / area, d};
         h.element.circle = merged;
         h.parts = {merged};
@@ -162,7 +163,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         h.element.circle = *whole;  // the others lie inside it: the union is that circle
         h.parts = {*whole};
       } else {
-        h.element.outline = union_of_circles(group, spec.perforation().chord_tolerance).front();
+        h.element.outline = union_of_circles(group, spec.own<PerforationKeys>().chord_tolerance).front();
         h.parts = group;
       }
       holes.push_back(std::move(h));
@@ -170,18 +171,20 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
   }
 
   // Fabrication rules, in laying order so that reports and fixes are reproducible.
-  const bool fix = spec.perforation().fix == HoleFix::drop;
+  const bool fix = spec.own<PerforationKeys>().fix == HoleFix::drop;
+  layout.drops_violations = fix;
+  layout.chord_tolerance = spec.own<PerforationKeys>().chord_tolerance;
   auto drop = [&](Hole& h, const std::string& why) {
     layout.violations.push_back(h.element.id + ": " + why + (fix ? "; dropped" : ""));
     if (fix) h.dropped = true;
   };
   for (Hole& h : holes) {
-    if (h.element.circle && h.element.circle->d < spec.perforation().min_diameter - 1e-9)
+    if (h.element.circle && h.element.circle->d < spec.own<PerforationKeys>().min_diameter - 1e-9)
       drop(h, fmt::format("diameter {:.2f} mm is below the minimum {:.2f} mm", h.element.circle->d,
-                          spec.perforation().min_diameter));
-    else if (const double gap = edge_gap(h, layout); gap < spec.perforation().edge_margin - 1e-9)
+                          spec.own<PerforationKeys>().min_diameter));
+    else if (const double gap = edge_gap(h, layout); gap < spec.own<PerforationKeys>().edge_margin - 1e-9)
       drop(h, fmt::format("{:.2f} mm from the sheet edge, below the margin {:.2f} mm", gap,
-                          spec.perforation().edge_margin));
+                          spec.own<PerforationKeys>().edge_margin));
   }
   std::map<std::pair<int64_t, int64_t>, std::vector<size_t>> by_cell;
   for (size_t i = 0; i < holes.size(); ++i)
@@ -195,12 +198,12 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         for (size_t j : it->second) {
           if (j <= i || holes[j].dropped) continue;
           const double gap = bridge(holes[i].parts, holes[j].parts);
-          if (gap >= spec.perforation().min_bridge - 1e-9) continue;
+          if (gap >= spec.own<PerforationKeys>().min_bridge - 1e-9) continue;
           // The smaller opening goes (the later one on a tie), so the larger keeps its place.
           Hole& loser = holes[i].element.area() < holes[j].element.area() ? holes[i] : holes[j];
           const Hole& other = &loser == &holes[i] ? holes[j] : holes[i];
           drop(loser, fmt::format("bridge {:.2f} mm to {} is below {:.2f} mm", gap,
-                                  other.element.id, spec.perforation().min_bridge));
+                                  other.element.id, spec.own<PerforationKeys>().min_bridge));
           if (holes[i].dropped) break;
         }
       }
@@ -208,8 +211,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
 
   // Fabrication sheets: every opening keeps the edge margin inside its own sheet, so one that
   // crosses a seam or comes within the margin of it is dropped (the stated rule), and reported.
-  if (spec.perforation().sheet_size) {
-    const double sw = (*spec.perforation().sheet_size)[0], sh = (*spec.perforation().sheet_size)[1];
+  if (spec.own<PerforationKeys>().sheet_size) {
+    const double sw = (*spec.own<PerforationKeys>().sheet_size)[0], sh = (*spec.own<PerforationKeys>().sheet_size)[1];
     const int nx = static_cast<int>(std::ceil(layout.width / sw - 1e-9));
     const int ny = static_cast<int>(std::ceil(layout.height / sh - 1e-9));
     for (int j = 0; j < ny; ++j)
@@ -231,7 +234,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
             {gap, c.cx - r - a.x, a.right() - c.cx - r, c.cy - r - a.y, a.top() - c.cy - r});
       }
       // A seam keeps the edge margin on each side, and never less than a bridge.
-      const double clear = std::max(spec.perforation().edge_margin, spec.perforation().min_bridge);
+      const double clear = std::max(spec.own<PerforationKeys>().edge_margin, spec.own<PerforationKeys>().min_bridge);
       if (gap < clear - 1e-9) {
         layout.violations.push_back(
             fmt::format("{}: {:.2f} mm from the edge of sheet {}, below {:.2f} mm; dropped "
@@ -288,7 +291,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
                         ? std::string("1 sheet is")
                         : fmt::format("{} sheets are", layout.violations.size() - broken)));
   layout.notes.push_back(fmt::format("open area {:.2f} % of the sheet; sheet {} mm thick",
-                                     100 * layout.open_area, spec.perforation().thickness));
+                                     100 * layout.open_area, spec.own<PerforationKeys>().thickness));
 }
 
 }  // namespace curdle

@@ -1,6 +1,6 @@
 // [layout] of kind "park": what each curd places in its cells, the ground and the clearance
 // (Cirovic 2014, fig. 5).
-#include "layout/park.h"
+#include "kinds/park.h"
 #include "recipe/layout_reader.h"
 
 namespace curdle::reading {
@@ -38,12 +38,12 @@ ParkElement read_park_element(TableReader& r, bool ground) {
 }  // namespace
 
 void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
-  spec.park().clearance = read_mm(r, "clearance", 0, 0);
+  spec.own<ParkKeys>().clearance = read_mm(r, "clearance", 0, 0);
   if (const toml::node* g = r.get("ground")) {
     if (!g->as_table())
       r.fail("ground", "must be a table {type = \"white paving\", colour = \"#f2f0ea\"}");
     TableReader gr(*g->as_table(), "layout.ground", r.source(), {"type", "colour"});
-    spec.park().ground = read_park_element(gr, true);
+    spec.own<ParkKeys>().ground = read_park_element(gr, true);
   }
   const toml::node* n = r.get("elements");
   const toml::array* a = n ? n->as_array() : nullptr;
@@ -58,14 +58,14 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
       r.fail_node(*a->get(i), path, "must be a table {type = ..., form = ...}");
     TableReader er(*a->get(i)->as_table(), path, r.source(),
                    {"type", "form", "shape", "size", "colour"});
-    spec.park().elements.push_back(read_park_element(er, false));
-    objects += !spec.park().elements.back().surface;
+    spec.own<ParkKeys>().elements.push_back(read_park_element(er, false));
+    objects += !spec.own<ParkKeys>().elements.back().surface;
   }
   // Every object must fit in its slot when all the objects share one cell.
   const Rect cell{0, 0, spec.module_w, spec.module_h};
-  const std::vector<Rect> slots = object_slots(cell, objects, spec.park().clearance);
-  for (size_t i = 0; i < spec.park().elements.size(); ++i) {
-    const ParkElement& e = spec.park().elements[i];
+  const std::vector<Rect> slots = object_slots(cell, objects, spec.own<ParkKeys>().clearance);
+  for (size_t i = 0; i < spec.own<ParkKeys>().elements.size(); ++i) {
+    const ParkElement& e = spec.own<ParkKeys>().elements[i];
     if (e.surface || slots.empty()) continue;
     if (e.w > slots[0].w + 1e-9 || e.h > slots[0].h + 1e-9 || slots[0].w <= 0 || slots[0].h <= 0)
       r.fail_node(*a->get(i), "layout.elements." + std::to_string(i),
@@ -74,7 +74,7 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
                       std::to_string(objects) + " objects share a " +
                       std::to_string(static_cast<int>(spec.module_w)) + " x " +
                       std::to_string(static_cast<int>(spec.module_h)) + " mm cell with " +
-                      std::to_string(static_cast<int>(spec.park().clearance)) +
+                      std::to_string(static_cast<int>(spec.own<ParkKeys>().clearance)) +
                       " mm clearance (each gets " +
                       std::to_string(static_cast<int>(std::max(0.0, slots[0].w))) + " x " +
                       std::to_string(static_cast<int>(std::max(0.0, slots[0].h))) +

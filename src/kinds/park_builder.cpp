@@ -1,4 +1,4 @@
-#include "layout/park.h"
+#include "kinds/park.h"
 
 #include <fmt/format.h>
 
@@ -73,10 +73,11 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
   for (const Element& cell : cells) {
     std::vector<size_t> surfaces, objects;
     for (size_t c = 0; c < design.curds.size(); ++c)
-      if (cell.value >> c & 1) (spec.park().elements[c].surface ? surfaces : objects).push_back(c);
+      if (cell.value >> c & 1) (spec.own<ParkKeys>().elements[c].surface ? surfaces : objects).push_back(c);
     auto add = [&](const ParkElement& kind, Region region, std::optional<Circle> circle,
                    const std::string& suffix, const Rect& stock) {
       Element e = cell;
+      e.form = ElementForm::object;
       e.key = cell.key.within('K', suffix);
       e.id = e.key.text();
       e.type = kind.type;
@@ -93,22 +94,22 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
     // cell is laid (an area's edge or an outline may cut it).
     const Rect laid = laid_bounds(cell);
     if (surfaces.empty()) {
-      add(spec.park().ground, within(cell, laid), std::nullopt, "ground", laid);
+      add(spec.own<ParkKeys>().ground, within(cell, laid), std::nullopt, "ground", laid);
     } else {
       const double w = laid.w / static_cast<double>(surfaces.size());
       for (size_t i = 0; i < surfaces.size(); ++i) {
         const Rect strip{laid.x + i * w, laid.y, w, laid.h};
         Region part = within(cell, strip);
         if (part.area() > kEps)
-          add(spec.park().elements[surfaces[i]], std::move(part), std::nullopt,
+          add(spec.own<ParkKeys>().elements[surfaces[i]], std::move(part), std::nullopt,
               design.curds[surfaces[i]].name, strip);
       }
     }
     // Objects stand whole on the cell as laid, or not at all.
     const std::vector<Rect> slots =
-        object_slots(cell.nominal, objects.size(), spec.park().clearance);
+        object_slots(cell.nominal, objects.size(), spec.own<ParkKeys>().clearance);
     for (size_t i = 0; i < objects.size(); ++i) {
-      const ParkElement& kind = spec.park().elements[objects[i]];
+      const ParkElement& kind = spec.own<ParkKeys>().elements[objects[i]];
       const double cx = slots[i].x + slots[i].w / 2, cy = slots[i].y + slots[i].h / 2;
       const Rect footprint = kind.round ? Rect{cx - kind.w / 2, cy - kind.w / 2, kind.w, kind.w}
                                         : Rect{cx - kind.w / 2, cy - kind.h / 2, kind.w, kind.h};

@@ -1,11 +1,31 @@
-// [layout] of kind "facade": windows and doors as rectangles in millimetres, or a mask image.
+// The façade kind: windows and doors as rectangles in millimetres, or a mask image, cut out of
+// the wall's grid; its open share reported.
+#include "kinds/facade.h"
+
 #include <cmath>
 
-#include "recipe/layout_reader.h"
+#include "layout/cut_rules.h"
 
-namespace curdle::reading {
+namespace curdle {
 
-void read_facade(TableReader& r, LayoutSpec& spec) {
+std::unique_ptr<KindKeys> FacadeKind::default_keys() const {
+  return std::make_unique<FacadeKeys>();
+}
+
+std::vector<Rect> FacadeKind::openings(const LayoutSpec& spec) const {
+  return spec.own<FacadeKeys>().openings;
+}
+
+void FacadeKind::after_laying(Layout& layout, const LayoutSpec& spec) const {
+  // The façade's own openings come first in layout.openings, as far as they lie on the wall.
+  size_t on_wall = 0;
+  for (const Rect& o : spec.own<FacadeKeys>().openings)
+    on_wall += clip(o, layout.width, layout.height).area() > 0;
+  report_open_area(layout, on_wall);
+}
+
+void FacadeKind::read_own(reading::TableReader& r, LayoutSpec& spec) const {
+  using namespace reading;
   if (const toml::node* n = r.get("openings")) {
     const toml::array* a = n->as_array();
     if (!a) r.fail("openings", "must be an array of [x, y, width, height] in millimetres");
@@ -29,10 +49,10 @@ void read_facade(TableReader& r, LayoutSpec& spec) {
                     "lies outside the wall of " +
                         std::to_string(static_cast<int>((*spec.size)[0])) + " x " +
                         std::to_string(static_cast<int>((*spec.size)[1])) + " mm");
-      spec.facade().openings.push_back(rect);
+      spec.own<FacadeKeys>().openings.push_back(rect);
     }
   }
-  spec.facade().mask = read_string(r, "mask", "the path of an image").value_or("");
+  spec.own<FacadeKeys>().mask = read_string(r, "mask", "the path of an image").value_or("");
 }
 
-}  // namespace curdle::reading
+}  // namespace curdle

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kinds/perforation.h"
 #include "recipe/layout_reader.h"
 
 namespace curdle::reading {
@@ -17,7 +18,7 @@ void read_punches(TableReader& r, LayoutSpec& spec) {
   const std::string allowed =
       "must be the punches' diameters in millimetres, e.g. [16, 22.6, 27.7], each above 0";
   if (!a || a->empty() || a->size() > 100) r.fail("punches", allowed + ", at most 100");
-  std::vector<double>& punches = spec.perforation().punches;
+  std::vector<double>& punches = spec.own<PerforationKeys>().punches;
   for (const toml::node& item : *a) {
     const auto d = finite_number(&item);
     if (!d || *d <= 0 || *d > 1e7) r.fail("punches", allowed);
@@ -25,8 +26,8 @@ void read_punches(TableReader& r, LayoutSpec& spec) {
   }
   std::sort(punches.begin(), punches.end());
   punches.erase(std::unique(punches.begin(), punches.end()), punches.end());
-  for (size_t i = 0; i < spec.perforation().holes.size(); ++i) {
-    const double d = spec.perforation().holes[i].diameter;
+  for (size_t i = 0; i < spec.own<PerforationKeys>().holes.size(); ++i) {
+    const double d = spec.own<PerforationKeys>().holes[i].diameter;
     if (std::none_of(punches.begin(), punches.end(),
                      [&](double p) { return std::fabs(p - d) < 1e-9; }))
       r.fail("punches", "has no punch for layout.holes." + std::to_string(i) + " (diameter " +
@@ -40,32 +41,37 @@ void read_open_area(TableReader& r, LayoutSpec& spec) {
   const toml::node* n = r.get("open_area");
   if (!n) return;
   const toml::array* a = n->as_array();
-  const auto lo = a && a->size() == 2 ? finite_number(a->get(0)) : std::nullopt;
-  const auto hi = a && a->size() == 2 ? finite_number(a->get(1)) : std::nullopt;
-  if (!lo || !hi || *lo < 0 || *hi > 1 || *lo > *hi)
+  double lo = 0, hi = 0;
+  bool ok = a && a->size() == 2;
+  if (ok) {
+    const auto l = finite_number(a->get(0)), h = finite_number(a->get(1));
+    ok = l && h;
+    if (ok) lo = *l, hi = *h;
+  }
+  if (!ok || lo < 0 || hi > 1 || lo > hi)
     r.fail("open_area",
            "must be [min, max], shares of each sheet from 0 to 1, min not above max; e.g. "
            "[0.15, 0.30] for 15 % to 30 % open");
-  spec.perforation().open_area = std::array<double, 2>{*lo, *hi};
+  spec.own<PerforationKeys>().open_area = std::array<double, 2>{lo, hi};
 }
 
 }  // namespace
 
 void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
-  spec.perforation().thickness = read_mm(r, "thickness", 0, 0, true);
-  if (spec.perforation().thickness <= 0) r.fail("thickness", "must be above 0 mm");
-  spec.perforation().min_diameter = read_mm(r, "min_diameter", 0, 0);
-  spec.perforation().min_bridge = read_mm(r, "min_bridge", 0, 0);
-  spec.perforation().edge_margin = read_mm(r, "edge_margin", 0, 0);
-  spec.perforation().chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
+  spec.own<PerforationKeys>().thickness = read_mm(r, "thickness", 0, 0, true);
+  if (spec.own<PerforationKeys>().thickness <= 0) r.fail("thickness", "must be above 0 mm");
+  spec.own<PerforationKeys>().min_diameter = read_mm(r, "min_diameter", 0, 0);
+  spec.own<PerforationKeys>().min_bridge = read_mm(r, "min_bridge", 0, 0);
+  spec.own<PerforationKeys>().edge_margin = read_mm(r, "edge_margin", 0, 0);
+  spec.own<PerforationKeys>().chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
   // Finer than a micrometre no cutter follows, and the polygons would grow without bound.
-  if (spec.perforation().chord_tolerance < 0.001)
+  if (spec.own<PerforationKeys>().chord_tolerance < 0.001)
     r.fail("chord_tolerance", "must be from 0.001 mm (a micrometre), e.g. 0.05");
   const auto fix = read_string(r, "fix", "\"none\" or \"drop\"").value_or("none");
   if (fix == "none")
-    spec.perforation().fix = HoleFix::none;
+    spec.own<PerforationKeys>().fix = HoleFix::none;
   else if (fix == "drop")
-    spec.perforation().fix = HoleFix::drop;
+    spec.own<PerforationKeys>().fix = HoleFix::drop;
   else
     r.fail("fix",
            "must be \"none\" (report only) or \"drop\" (drop the openings that break a rule)");
@@ -102,20 +108,20 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
               std::to_string(static_cast<int>(spec.module_w)) + " x " +
               std::to_string(static_cast<int>(spec.module_h)) +
               " mm cell; holes must lie inside their cells (smaller, or nearer the centre)");
-    spec.perforation().holes.push_back(hole);
+    spec.own<PerforationKeys>().holes.push_back(hole);
   }
   read_punches(r, spec);
   read_open_area(r, spec);
-  spec.perforation().sheet_size = read_mm_pair(r, "sheet_size");
-  if (spec.perforation().sheet_size) {
+  spec.own<PerforationKeys>().sheet_size = read_mm_pair(r, "sheet_size");
+  if (spec.own<PerforationKeys>().sheet_size) {
     double largest = 0;
-    for (const HoleSpec& h : spec.perforation().holes) largest = std::max(largest, h.diameter);
-    if ((*spec.perforation().sheet_size)[0] < largest + 2 * spec.perforation().edge_margin ||
-        (*spec.perforation().sheet_size)[1] < largest + 2 * spec.perforation().edge_margin)
+    for (const HoleSpec& h : spec.own<PerforationKeys>().holes) largest = std::max(largest, h.diameter);
+    if ((*spec.own<PerforationKeys>().sheet_size)[0] < largest + 2 * spec.own<PerforationKeys>().edge_margin ||
+        (*spec.own<PerforationKeys>().sheet_size)[1] < largest + 2 * spec.own<PerforationKeys>().edge_margin)
       r.fail("sheet_size", "a sheet must hold the largest opening (" +
                                std::to_string(static_cast<int>(largest)) +
                                " mm) within its margins (2 x " +
-                               std::to_string(static_cast<int>(spec.perforation().edge_margin)) +
+                               std::to_string(static_cast<int>(spec.own<PerforationKeys>().edge_margin)) +
                                " mm); give a larger sheet_size");
   }
 }
