@@ -178,6 +178,38 @@ TEST(Outputs, TheReproducingRecipeNeedsNoOptions) {
             "--window 2,2,4,4");
 }
 
+// Seeds run from 0 to 2^64 - 1 on the command line, the API and in recipes alike: the
+// reproducing recipe of every seed reads back to it.
+TEST(Outputs, TheReproducingRecipeKeepsEverySeed) {
+  for (const char* seed : {"0", "9223372036854775807", "9223372036854775808",
+                           "18446744073709551615"}) {
+    RunRequest request;
+    request.recipe_text = kTiles;
+    request.recipe_path = "tiles.toml";
+    request.seed = seed;
+    const app::Run run = resolve_run(request);
+    RunRequest again;
+    again.recipe_text = reproducing_recipe(run);
+    again.recipe_path = "again.toml";
+    EXPECT_EQ(std::to_string(resolve_run(again).seed), seed);
+    RunRequest set;  // a recipe's seed set as --set seed=N or seed = "N"
+    set.recipe_text = kTiles;
+    set.recipe_path = "tiles.toml";
+    set.overrides = {std::string("seed=") + seed};
+    EXPECT_EQ(std::to_string(resolve_run(set).seed), seed);
+    set.overrides = {std::string("seed=\"") + seed + "\""};
+    EXPECT_EQ(std::to_string(resolve_run(set).seed), seed);
+  }
+  for (const char* bad : {"-1", "18446744073709551616", "\"-1\"", "\"+5\"", "\"\"", "\"1e3\"",
+                          "2.5", "\" 7\""}) {
+    RunRequest request;
+    request.recipe_text = kTiles;
+    request.recipe_path = "tiles.toml";
+    request.overrides = {std::string("seed=") + bad};
+    EXPECT_THROW(resolve_run(request), InputError) << bad;
+  }
+}
+
 TEST(Outputs, SeedsAndWindowsAreCheckedAsParameters) {
   RunRequest request;
   request.recipe_text = kTiles;

@@ -48,7 +48,9 @@ std::string generate_command(const Run& run) {
 
 std::string reproducing_recipe(const Run& run) {
   std::vector<std::string> sets = run.overrides;
-  sets.push_back("seed=" + std::to_string(run.seed));
+  // TOML integers stop at 2^63 - 1: larger seeds are written as text, which recipes take too.
+  sets.push_back(run.seed > INT64_MAX ? "seed=\"" + std::to_string(run.seed) + "\""
+                                      : "seed=" + std::to_string(run.seed));
   if (run.window_given || run.recipe.window)
     sets.push_back("field.window=[" + window_text(run.view, run.recipe.design.lattice.dimension) +
                    "]");

@@ -27,7 +27,7 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
   Recipe recipe;
   recipe.design.name = read_string(top, "name").value_or("untitled");
   recipe.design.description = read_string(top, "description").value_or("");
-  recipe.seed = static_cast<uint64_t>(read_int(top, "seed", 1, 0, INT64_MAX));
+  recipe.seed = read_seed(top);
   Lattice lattice = read_lattice(top);
   recipe.design.curds = read_curds(top, lattice);
   check_size(top, lattice);

@@ -1,6 +1,7 @@
 #include "recipe/toml_reader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -57,6 +58,27 @@ int64_t read_int(TableReader& r, const std::string& key, int64_t fallback, int64
   if (!n->is_integer() || !v || *v < lo || *v > hi)
     r.fail(key, "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
   return *v;
+}
+
+uint64_t read_seed(TableReader& r) {
+  const toml::node* n = r.get("seed");
+  if (!n) return 1;
+  const std::string allowed =
+      "must be a whole number from 0 to 18446744073709551615 (2^64 - 1); above "
+      "9223372036854775807 write it in quotes, seed = \"18446744073709551615\"";
+  if (n->is_integer()) {
+    const int64_t v = *n->value<int64_t>();
+    if (v < 0) r.fail("seed", allowed);
+    return static_cast<uint64_t>(v);
+  }
+  if (!n->is_string()) r.fail("seed", allowed);
+  const std::string text = *n->value<std::string>();
+  uint64_t seed = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), seed);
+  if (text.empty() || !std::isdigit(static_cast<unsigned char>(text[0])) || ec != std::errc() ||
+      end != text.data() + text.size())
+    r.fail("seed", allowed);
+  return seed;
 }
 
 std::optional<std::string> read_string(TableReader& r, const std::string& key,

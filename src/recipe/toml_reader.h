@@ -91,6 +91,9 @@ double read_mm(TableReader& r, const std::string& key, double fallback, double l
 std::optional<std::array<double, 2>> read_mm_pair(TableReader& r, const std::string& key,
                                                   bool required = false);
 bool read_bool(TableReader& r, const std::string& key, bool fallback);
+// The recipe's seed, 0 to 2^64 - 1 (1 when absent). TOML integers stop at 2^63 - 1, so a larger
+// seed is written as text: seed = "18446744073709551615"; text is taken for any seed.
+uint64_t read_seed(TableReader& r);
 // The text as TOML, or InputError at the first syntax error.
 toml::table parse_toml(std::string_view text, const std::string& source);
 
