@@ -8,6 +8,7 @@
 #include "app/run.h"
 #include "curdle/error.h"
 #include "curdle/measure.h"
+#include "export/atomic_file.h"
 #include "export/cells_csv_reader.h"
 #include "export/measure_files.h"
 
@@ -119,6 +120,14 @@ FittedRecipe fit_picture(const LuminanceImage& image, const FitRequest& r) {
     f.curds.push_back(std::move(curd));
   }
   return finish(f, r.source);
+}
+
+std::string write_fitted_recipe(const FittedRecipe& fitted, const std::string& out) {
+  namespace fs = std::filesystem;
+  const fs::path path = out.empty() ? fs::path("curdle-out") / (fitted.name + ".toml") : fs::path(out);
+  if (path.has_parent_path()) make_output_dir(path.parent_path());
+  write_file(path, [&](std::ostream& s) { s << fitted.toml; });
+  return fs::absolute(path).lexically_normal().string();
 }
 
 }  // namespace curdle::app

@@ -43,6 +43,10 @@ std::string probability_text(double probability);
 void check_fit_options(const FitRequest& request);
 
 FittedRecipe run_fit(const FitRequest& request);
+
+// Writes the fitted recipe to `out` (empty: curdle-out/<name>.toml), whole or not at all, making
+// its folder; returns where it went.
+std::string write_fitted_recipe(const FittedRecipe& fitted, const std::string& out);
 // A picture already read (request.source is only its name, for the recipe's name and note).
 FittedRecipe fit_picture(const LuminanceImage& image, const FitRequest& request);
 

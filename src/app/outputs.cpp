@@ -15,6 +15,7 @@
 #include "export/mask_image.h"
 #include "export/preview_png.h"
 #include "export/report_json.h"
+#include "export/report_table.h"
 #include "export/schedule.h"
 #include "export/svg.h"
 #include "kinds/facade.h"
@@ -354,6 +355,10 @@ RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outpu
     summary.layout = std::move(s);
   }
   return summary;
+}
+
+std::string report_table(const Run& run, const CurdField& field) {
+  return format_report_table(make_report(run.recipe.design, run.seed, field, run.view));
 }
 
 }  // namespace curdle::app

@@ -83,6 +83,9 @@ struct RunSummary {
 
 // Runs the engine and writes the outputs to `sink`. Throws InputError for bad input and
 // ResourceLimitError above the run's memory limit, before anything is written.
+// The run's per-stage report of `field` as the terminal table `curdle report` prints.
+std::string report_table(const Run& run, const CurdField& field);
+
 RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outputs,
                          OutputSink& sink, int threads, RunObserver* observer);
 

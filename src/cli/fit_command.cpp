@@ -1,14 +1,11 @@
 #include "cli/fit_command.h"
 
 #include <cstdio>
-#include <filesystem>
 
 #include "app/fit_run.h"
 #include "app/run.h"
 #include "cli/options.h"
-#include "export/atomic_file.h"
 
-namespace fs = std::filesystem;
 
 namespace curdle::cli {
 
@@ -36,10 +33,7 @@ int run_fit(const FitOptions& o) {
   request.curds = o.curds;
   if (!o.max_memory.empty()) request.max_memory = app::parse_bytes(o.max_memory, "max_memory");
   const app::FittedRecipe f = app::run_fit(request);
-  const fs::path out =
-      o.out.empty() ? fs::path("curdle-out") / (f.name + ".toml") : fs::path(o.out);
-  if (out.has_parent_path()) make_output_dir(out.parent_path());
-  write_file(out, [&](std::ostream& s) { s << f.toml; });
+  const std::string written = app::write_fitted_recipe(f, o.out);
 
   std::string size;
   for (int d = 0; d < f.lattice.dimension; ++d)
@@ -57,7 +51,7 @@ int run_fit(const FitOptions& o) {
                   std::max(0.0, s.probability - 1.96 * s.sd),
                   std::min(1.0, s.probability + 1.96 * s.sd));
   }
-  std::printf("recipe in %s\n", fs::absolute(out).lexically_normal().c_str());
+  std::printf("recipe in %s\n", written.c_str());
   return 0;
 }
 

@@ -6,7 +6,6 @@
 
 #include "app/outputs.h"
 #include "cli/progress.h"
-#include "export/report_table.h"
 
 namespace fs = std::filesystem;
 
@@ -93,8 +92,7 @@ int run_report(const CommonOptions& common) {
   auto task = observer.begin("curdling");
   const CurdField field = app::run_engine(run, common.threads, [&](double f) { task->update(f); });
   task.reset();
-  std::fputs(format_report_table(make_report(run.recipe.design, run.seed, field, run.view)).c_str(),
-             stdout);
+  std::fputs(app::report_table(run, field).c_str(), stdout);
   return 0;
 }
 

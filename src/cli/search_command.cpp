@@ -10,7 +10,6 @@
 #include "app/search_run.h"
 #include "cli/options.h"
 #include "cli/progress.h"
-#include "curdle/search.h"
 
 namespace fs = std::filesystem;
 

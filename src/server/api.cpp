@@ -13,19 +13,12 @@
 #include <sstream>
 
 #include "app/outputs.h"
+#include "app/page.h"
 #include "app/picture_study.h"
 #include "app/reproduce.h"
 #include "app/run.h"
 #include "app/search_run.h"
-#include "curdle/curdling.h"
 #include "curdle/error.h"
-#include "curdle/overlay.h"
-#include "curdle/palette.h"
-#include "curdle/report.h"
-#include "export/measure_files.h"
-#include "export/report_json.h"
-#include "layout/builder.h"
-#include "layout/cell_placement.h"
 
 namespace fs = std::filesystem;
 using nlohmann::ordered_json;
@@ -33,35 +26,9 @@ using nlohmann::ordered_json;
 namespace curdle::server {
 namespace {
 
-// The files the page may download: the registry's single-file outputs (those of a layout only
-// when there is one), and the recipe.
-std::vector<std::string> downloads(bool with_layout) {
-  std::vector<std::string> names;
-  for (const app::Output& o : app::output_registry())
-    if (o.download && (with_layout || !o.needs_layout)) names.push_back(o.name);
-  names.push_back("recipe.toml");
-  return names;
-}
-
 // The API spells a run parameter as its query key; an override is named by its recipe key.
 std::string query_key(const std::string& parameter) {
   return parameter == "set" ? std::string() : parameter + "=";
-}
-
-std::string base64(const uint8_t* data, size_t size) {
-  static const char* kAlphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((size + 2) / 3 * 4);
-  for (size_t i = 0; i < size; i += 3) {
-    const uint32_t n = uint32_t{data[i]} << 16 | (i + 1 < size ? uint32_t{data[i + 1]} << 8 : 0) |
-                       (i + 2 < size ? data[i + 2] : 0);
-    out += kAlphabet[n >> 18 & 63];
-    out += kAlphabet[n >> 12 & 63];
-    out += i + 1 < size ? kAlphabet[n >> 6 & 63] : '=';
-    out += i + 2 < size ? kAlphabet[n & 63] : '=';
-  }
-  return out;
 }
 
 // The parameters of a run: recipe keys become overrides, as --set does.
@@ -137,108 +104,6 @@ app::Run run_for(const ApiContext& c, const RunRequest& r) {
   return app::resolve_run(run_request(c, r));
 }
 
-void check_cells(const Design& d, const Box& view, uint64_t limit, const char* what) {
-  const uint64_t cells = generation_box(d, view).cells();
-  if (cells > limit)
-    throw ResourceLimitError(std::string(what) + " " + std::to_string(cells) +
-                             " cells; the server allows " + std::to_string(limit) +
-                             ": choose a smaller field.cells or window, or start it with a larger "
-                             "--max-cells");
-}
-
-ordered_json box_json(const Box& b, int dimension) {
-  ordered_json j = ordered_json::array();
-  for (int d = 0; d < dimension; ++d) j.push_back(b.origin[d]);
-  for (int d = 0; d < dimension; ++d) j.push_back(b.size[d]);
-  return j;
-}
-
-ordered_json polygon_json(const Polygon& polygon) {
-  ordered_json points = ordered_json::array();
-  for (const auto& p : polygon) points.push_back({p[0], p[1]});
-  return points;
-}
-
-// The surface the page draws over the floor's segment: its outline and zones in mm, and where
-// the segment's cells lie (mm = origin_mm + cell_mm * u, u in cells from the segment's corner,
-// without a bond's course shifts).
-ordered_json surface_json(const LayoutSpec& spec) {
-  const auto need = elements_to_cover(spec);
-  Box segment;
-  segment.size = {need[0], need[1], 1};
-  const CellPlacement placement = cell_placement(spec, segment);
-  const auto extent = surface_extent(spec, segment);
-  ordered_json zones = ordered_json::array();
-  for (const Zone& z : spec.zones) {
-    ordered_json zone = {{"name", z.name},
-                         {"rule", z.rule == ZoneRule::exclude ? "exclude" : "value"},
-                         {"polygon", polygon_json(z.polygon)}};
-    if (z.rule == ZoneRule::value) zone["value"] = z.value;
-    zones.push_back(zone);
-  }
-  return {
-      {"origin_mm", {placement.origin[0], placement.origin[1]}},
-      {"cell_mm", {placement.scale[0], placement.scale[1]}},
-      {"outline_mm",
-       polygon_json(spec.outline.empty()
-                        ? Polygon{{0, 0}, {extent[0], 0}, {extent[0], extent[1]}, {0, extent[1]}}
-                        : spec.outline)},
-      {"zones", zones}};
-}
-
-// What the page draws and edits: the design, layout facts and the legend.
-ordered_json describe(const app::Run& s) {
-  const Design& d = s.recipe.design;
-  const int E = d.lattice.dimension;
-  ordered_json j;
-  j["name"] = d.name;
-  j["description"] = s.recipe.design.description;
-  j["recipe_path"] = s.recipe_path;
-  j["lattice"] = {{"base", d.lattice.base},
-                  {"dimension", E},
-                  {"stages", d.lattice.stages},
-                  {"mode", std::string(to_string(d.lattice.mode))}};
-  j["curds"] = ordered_json::array();
-  for (size_t c = 0; c < d.curds.size(); ++c) {
-    ordered_json p = ordered_json::array();
-    for (const Probability& q : d.curds[c].probabilities) p.push_back(q.text());
-    j["curds"].push_back(
-        {{"name", d.curds[c].name}, {"probabilities", p}, {"colour", hex_colour(curd_colour(d.curds, c))}});
-  }
-  ordered_json field = ordered_json::array();
-  for (int k = 0; k < E; ++k) field.push_back(d.field.size[k]);
-  j["field"] = field;
-  j["default_window"] = s.recipe.window ? box_json(*s.recipe.window, E) : ordered_json(nullptr);
-  ordered_json legend = ordered_json::array();
-  if (s.recipe.layout) {
-    const LayoutSpec& spec = *s.recipe.layout;
-    const auto entries = make_legend(d, spec);
-    for (const LegendEntry& e : entries)
-      legend.push_back({{"value", e.value}, {"label", e.label}, {"colour", hex_colour(e.colour)}});
-    const bool line = spec.kind->dimension() == 1;
-    j["layout"] = {
-        {"element", std::string(spec.kind->element_noun())},
-        {"cell_mm",
-         {spec.module_w + spec.joint, line ? spec.module_h : spec.module_h + spec.joint}},
-        {"has_value_colours", !spec.value_colours.empty()}};
-    if (spec.size) {
-      const auto need = elements_to_cover(spec);
-      j["layout"]["size_mm"] = {(*spec.size)[0], (*spec.size)[1]};
-      j["layout"]["segment_cells"] = {need[0], need[1]};
-      if (spec.kind->dimension() == 2) j["layout"]["surface"] = surface_json(spec);
-    }
-  } else {
-    const auto colours = value_colours(d.curds);
-    for (uint32_t v = 0; v < colours.size(); ++v)
-      legend.push_back({{"value", v}, {"label", value_label(v, d.curds)}, {"colour", hex_colour(colours[v])}});
-    j["layout"] = nullptr;
-  }
-  j["legend"] = legend;
-  // What this recipe can download, from the registry: the page lists no names of its own.
-  j["downloads"] = downloads(s.recipe.layout.has_value());
-  return j;
-}
-
 ApiResponse json_response(const ordered_json& j) {
   ApiResponse r;
   r.body = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -286,7 +151,7 @@ ApiResponse api_error(int status, const std::string& message) {
 ApiResponse api_recipe(const ApiContext& c) {
   return guarded([&] {
     const app::Run s = run_for(c, RunRequest{});
-    ordered_json j = describe(s);
+    ordered_json j = app::describe_run(s);
     j["seed"] = std::to_string(s.seed);
     j["recipe_toml"] = c.recipe_text;
     j["max_upload_bytes"] = c.limits.max_upload_bytes;
@@ -302,27 +167,10 @@ ApiResponse api_generate(const ApiContext& c, const Params& params) {
     if (cells != "0" && cells != "1") throw InputError(parameter("cells"), "must be 0 or 1");
     const app::Run s = run_for(c, r);
     const Design& d = s.recipe.design;
-    const int E = d.lattice.dimension;
     // The page sees the whole field unless it asks for a window.
     const Box view = r.window.empty() ? d.field : s.view;
-    check_cells(d, view, c.limits.max_cells, "this request would generate");
-    const CurdField field = curdle(d, s.seed, view, s.generate);
-    const Report report = make_report(d, s.seed, field, view);
-    ordered_json j = describe(s);
-    j["seed"] = std::to_string(s.seed);
-    j["view"] = box_json(view, E);
-    j["report"] = report_to_json(report);
-    if (cells == "1" && E <= 2) {
-      const std::vector<uint16_t> values = values_in(field, view);
-      if (d.curds.size() <= 8) {
-        std::vector<uint8_t> bytes(values.begin(), values.end());
-        j["values"] = base64(bytes.data(), bytes.size());
-        j["value_bytes"] = 1;
-      } else {
-        j["values"] = base64(reinterpret_cast<const uint8_t*>(values.data()), values.size() * 2);
-        j["value_bytes"] = 2;
-      }
-    }
+    app::check_cells(d, view, c.limits.max_cells, "this request would generate");
+    ordered_json j = app::segment_json(s, view, cells == "1");
     j["command"] = app::generate_command(s);
     j["server_ms"] =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -335,7 +183,7 @@ ApiResponse api_export(const ApiContext& c, const Params& params) {
     const RunRequest r = read_run(params, {"file"});
     const std::string name = own(r, "file");
     // Every download is named here; one a layout-less recipe lacks is refused as such below.
-    const std::vector<std::string> allowed = downloads(true);
+    const std::vector<std::string> allowed = app::page_downloads(true);
     if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
       std::string list;
       for (const auto& n : allowed) list += (list.empty() ? "" : ", ") + n;
@@ -345,7 +193,7 @@ ApiResponse api_export(const ApiContext& c, const Params& params) {
     const Design& d = s.recipe.design;
     const app::Output* output = app::find_output(name);
     const bool layout_file = output && output->needs_layout;
-    check_cells(d, s.view, layout_file ? c.limits.max_layout_cells : c.limits.max_cells,
+    app::check_cells(d, s.view, layout_file ? c.limits.max_layout_cells : c.limits.max_cells,
                 layout_file ? "this layout would have" : "this request would generate");
     ApiResponse out;
     out.filename = name;
@@ -391,7 +239,7 @@ ApiResponse api_search(const ApiContext& c, const Params& params) {
     const app::SearchRun search = app::resolve_search(request);
     const Design& d = search.run.recipe.design;
     const uint64_t first = search.first, last = search.last;
-    check_cells(d, d.field, c.limits.max_cells, "each seed would generate");
+    app::check_cells(d, d.field, c.limits.max_cells, "each seed would generate");
     const auto hits = app::run_search(search, {}, c.stopping);
     ordered_json j = app::search_hits_json(search, hits);
     j["seeds"] = {std::to_string(first), std::to_string(last)};
@@ -426,56 +274,19 @@ ApiResponse api_measure(const ApiContext& c, const Params& params, const std::st
     request.max_pixels = c.limits.max_cells;
     request.max_memory = memory_limit(c);
     const app::PictureStudy study = app::study_picture(request);
-    const app::FittedRecipe& f = study.fitted;
-    ordered_json curds = ordered_json::array();
-    for (const app::FittedCurd& curd : f.curds) {
-      ordered_json probabilities = ordered_json::array(), stages = ordered_json::array();
-      for (const StageFit& s : curd.stages) {
-        probabilities.push_back(app::probability_text(s.probability));
-        stages.push_back({{"stage", s.stage},
-                          {"measured", s.measured},
-                          {"expected", s.expected},
-                          {"probability", s.probability},
-                          {"sd", s.sd}});
-      }
-      curds.push_back({{"name", curd.name},
-                       {"colour", curd.colour},
-                       {"probabilities", probabilities},
-                       {"stages", stages}});
-    }
-    ordered_json j;
-    j["measure"] = measure_to_json(study.measured);
-    j["fit"] = {{"name", f.name},
-                {"lattice",
-                 {{"base", f.lattice.base},
-                  {"dimension", f.lattice.dimension},
-                  {"stages", f.lattice.stages},
-                  {"mode", std::string(to_string(f.lattice.mode))}}},
-                {"field", {f.size[0], f.size[1]}},
-                {"curds", curds},
-                {"recipe_toml", f.toml}};
-    return json_response(j);
+    return json_response(app::picture_study_json(study));
   });
 }
 
 ApiResponse api_colours(const Params& params) {
   return guarded([&] {
-    std::vector<CurdSpec> curds;
+    std::vector<std::string> colours;
     for (const auto& [key, value] : params) {
       if (key != "colour")
         throw InputError(parameter(key), "unknown parameter; allowed: colour (one per curd)");
-      const auto colour = parse_hex_colour(value);
-      if (!colour)
-        throw InputError(parameter("colour"), "'" + value + "' is not a colour written #rrggbb");
-      CurdSpec curd;
-      curd.colour = colour;
-      curds.push_back(curd);
+      colours.push_back(value);
     }
-    if (curds.empty() || curds.size() > 8)
-      throw InputError(parameter("colour"), "give from 1 to 8 curd colours");
-    ordered_json values = ordered_json::array();
-    for (const Rgb& c : value_colours(curds)) values.push_back(hex_colour(c));
-    return json_response({{"values", values}});
+    return json_response(app::value_colours_json(colours));
   });
 }
 

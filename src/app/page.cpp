@@ -1,0 +1,218 @@
+#include "app/page.h"
+
+#include "app/outputs.h"
+#include "curdle/curdling.h"
+#include "curdle/error.h"
+#include "curdle/overlay.h"
+#include "curdle/palette.h"
+#include "curdle/report.h"
+#include "export/measure_files.h"
+#include "export/report_json.h"
+#include "layout/builder.h"
+#include "layout/cell_placement.h"
+
+using nlohmann::ordered_json;
+
+namespace curdle::app {
+namespace {
+
+std::string base64(const uint8_t* data, size_t size) {
+  static const char* kAlphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((size + 2) / 3 * 4);
+  for (size_t i = 0; i < size; i += 3) {
+    const uint32_t n = uint32_t{data[i]} << 16 | (i + 1 < size ? uint32_t{data[i + 1]} << 8 : 0) |
+                       (i + 2 < size ? data[i + 2] : 0);
+    out += kAlphabet[n >> 18 & 63];
+    out += kAlphabet[n >> 12 & 63];
+    out += i + 1 < size ? kAlphabet[n >> 6 & 63] : '=';
+    out += i + 2 < size ? kAlphabet[n & 63] : '=';
+  }
+  return out;
+}
+
+ordered_json box_json(const Box& b, int dimension) {
+  ordered_json j = ordered_json::array();
+  for (int d = 0; d < dimension; ++d) j.push_back(b.origin[d]);
+  for (int d = 0; d < dimension; ++d) j.push_back(b.size[d]);
+  return j;
+}
+
+ordered_json polygon_json(const Polygon& polygon) {
+  ordered_json points = ordered_json::array();
+  for (const auto& p : polygon) points.push_back({p[0], p[1]});
+  return points;
+}
+
+// The surface the page draws over the floor's segment: its outline and zones in mm, and where
+// the segment's cells lie (mm = origin_mm + cell_mm * u, u in cells from the segment's corner,
+// without a bond's course shifts).
+ordered_json surface_json(const LayoutSpec& spec) {
+  const auto need = elements_to_cover(spec);
+  Box segment;
+  segment.size = {need[0], need[1], 1};
+  const CellPlacement placement = cell_placement(spec, segment);
+  const auto extent = surface_extent(spec, segment);
+  ordered_json zones = ordered_json::array();
+  for (const Zone& z : spec.zones) {
+    ordered_json zone = {{"name", z.name},
+                         {"rule", z.rule == ZoneRule::exclude ? "exclude" : "value"},
+                         {"polygon", polygon_json(z.polygon)}};
+    if (z.rule == ZoneRule::value) zone["value"] = z.value;
+    zones.push_back(zone);
+  }
+  return {
+      {"origin_mm", {placement.origin[0], placement.origin[1]}},
+      {"cell_mm", {placement.scale[0], placement.scale[1]}},
+      {"outline_mm",
+       polygon_json(spec.outline.empty()
+                        ? Polygon{{0, 0}, {extent[0], 0}, {extent[0], extent[1]}, {0, extent[1]}}
+                        : spec.outline)},
+      {"zones", zones}};
+}
+
+}  // namespace
+
+std::vector<std::string> page_downloads(bool with_layout) {
+  std::vector<std::string> names;
+  for (const Output& o : output_registry())
+    if (o.download && (with_layout || !o.needs_layout)) names.push_back(o.name);
+  names.push_back("recipe.toml");
+  return names;
+}
+
+void check_cells(const Design& d, const Box& view, uint64_t limit, const char* what) {
+  const uint64_t cells = generation_box(d, view).cells();
+  if (cells > limit)
+    throw ResourceLimitError(std::string(what) + " " + std::to_string(cells) +
+                             " cells; the server allows " + std::to_string(limit) +
+                             ": choose a smaller field.cells or window, or start it with a larger "
+                             "--max-cells");
+}
+
+ordered_json describe_run(const Run& s) {
+  const Design& d = s.recipe.design;
+  const int E = d.lattice.dimension;
+  ordered_json j;
+  j["name"] = d.name;
+  j["description"] = s.recipe.design.description;
+  j["recipe_path"] = s.recipe_path;
+  j["lattice"] = {{"base", d.lattice.base},
+                  {"dimension", E},
+                  {"stages", d.lattice.stages},
+                  {"mode", std::string(to_string(d.lattice.mode))}};
+  j["curds"] = ordered_json::array();
+  for (size_t c = 0; c < d.curds.size(); ++c) {
+    ordered_json p = ordered_json::array();
+    for (const Probability& q : d.curds[c].probabilities) p.push_back(q.text());
+    j["curds"].push_back(
+        {{"name", d.curds[c].name}, {"probabilities", p}, {"colour", hex_colour(curd_colour(d.curds, c))}});
+  }
+  ordered_json field = ordered_json::array();
+  for (int k = 0; k < E; ++k) field.push_back(d.field.size[k]);
+  j["field"] = field;
+  j["default_window"] = s.recipe.window ? box_json(*s.recipe.window, E) : ordered_json(nullptr);
+  ordered_json legend = ordered_json::array();
+  if (s.recipe.layout) {
+    const LayoutSpec& spec = *s.recipe.layout;
+    const auto entries = make_legend(d, spec);
+    for (const LegendEntry& e : entries)
+      legend.push_back({{"value", e.value}, {"label", e.label}, {"colour", hex_colour(e.colour)}});
+    const bool line = spec.kind->dimension() == 1;
+    j["layout"] = {
+        {"element", std::string(spec.kind->element_noun())},
+        {"cell_mm",
+         {spec.module_w + spec.joint, line ? spec.module_h : spec.module_h + spec.joint}},
+        {"has_value_colours", !spec.value_colours.empty()}};
+    if (spec.size) {
+      const auto need = elements_to_cover(spec);
+      j["layout"]["size_mm"] = {(*spec.size)[0], (*spec.size)[1]};
+      j["layout"]["segment_cells"] = {need[0], need[1]};
+      if (spec.kind->dimension() == 2) j["layout"]["surface"] = surface_json(spec);
+    }
+  } else {
+    const auto colours = value_colours(d.curds);
+    for (uint32_t v = 0; v < colours.size(); ++v)
+      legend.push_back({{"value", v}, {"label", value_label(v, d.curds)}, {"colour", hex_colour(colours[v])}});
+    j["layout"] = nullptr;
+  }
+  j["legend"] = legend;
+  // What this recipe can download, from the registry: the page lists no names of its own.
+  j["downloads"] = page_downloads(s.recipe.layout.has_value());
+  return j;
+}
+
+ordered_json segment_json(const Run& s, const Box& view, bool with_values) {
+  const Design& d = s.recipe.design;
+  const int E = d.lattice.dimension;
+    const CurdField field = curdle(d, s.seed, view, s.generate);
+    const Report report = make_report(d, s.seed, field, view);
+    ordered_json j = describe_run(s);
+    j["seed"] = std::to_string(s.seed);
+    j["view"] = box_json(view, E);
+    j["report"] = report_to_json(report);
+    if (with_values && E <= 2) {
+      const std::vector<uint16_t> values = values_in(field, view);
+      if (d.curds.size() <= 8) {
+        std::vector<uint8_t> bytes(values.begin(), values.end());
+        j["values"] = base64(bytes.data(), bytes.size());
+        j["value_bytes"] = 1;
+      } else {
+        j["values"] = base64(reinterpret_cast<const uint8_t*>(values.data()), values.size() * 2);
+        j["value_bytes"] = 2;
+      }
+    }
+  return j;
+}
+
+ordered_json picture_study_json(const PictureStudy& study) {
+    const FittedRecipe& f = study.fitted;
+    ordered_json curds = ordered_json::array();
+    for (const FittedCurd& curd : f.curds) {
+      ordered_json probabilities = ordered_json::array(), stages = ordered_json::array();
+      for (const StageFit& s : curd.stages) {
+        probabilities.push_back(probability_text(s.probability));
+        stages.push_back({{"stage", s.stage},
+                          {"measured", s.measured},
+                          {"expected", s.expected},
+                          {"probability", s.probability},
+                          {"sd", s.sd}});
+      }
+      curds.push_back({{"name", curd.name},
+                       {"colour", curd.colour},
+                       {"probabilities", probabilities},
+                       {"stages", stages}});
+    }
+    ordered_json j;
+    j["measure"] = measure_to_json(study.measured);
+    j["fit"] = {{"name", f.name},
+                {"lattice",
+                 {{"base", f.lattice.base},
+                  {"dimension", f.lattice.dimension},
+                  {"stages", f.lattice.stages},
+                  {"mode", std::string(to_string(f.lattice.mode))}}},
+                {"field", {f.size[0], f.size[1]}},
+                {"curds", curds},
+                {"recipe_toml", f.toml}};
+  return j;
+}
+
+ordered_json value_colours_json(const std::vector<std::string>& curd_colours) {
+  std::vector<CurdSpec> curds;
+  for (const std::string& value : curd_colours) {
+    const auto colour = parse_hex_colour(value);
+    if (!colour)
+      throw InputError(parameter("colour"), "'" + value + "' is not a colour written #rrggbb");
+    CurdSpec curd;
+    curd.colour = colour;
+    curds.push_back(curd);
+  }
+  if (curds.empty() || curds.size() > 8)
+    throw InputError(parameter("colour"), "give from 1 to 8 curd colours");
+  ordered_json values = ordered_json::array();
+  for (const Rgb& c : value_colours(curds)) values.push_back(hex_colour(c));
+  return {{"values", values}};
+}
+
+}  // namespace curdle::app
