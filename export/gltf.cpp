@@ -362,8 +362,8 @@ void add_blocks(Scene& sc) {
   };
   const double w = layout.module_w, d = layout.module_h, h = layout.level_height;
   for (const Element& e : layout.elements) {
-    const Rect plan{(e.cell_x - layout.view.origin[0]) * w,
-                    (e.cell_y - layout.view.origin[1]) * d, w, d};
+    const Rect plan{(e.cell_x - layout.view.origin[0]) * w, (e.cell_y - layout.view.origin[1]) * d,
+                    w, d};
     tinygltf::Node node = sc.placed(plan, (e.cell_z - layout.view.origin[2]) * h, h);
     int shown = 0;
     for (int f = 0; f < 6; ++f)
@@ -395,8 +395,7 @@ void add_park(Scene& sc) {
       const int rings = 8, segments = 12;
       for (int a = 0; a <= rings; ++a)
         for (int s2 = 0; s2 <= segments; ++s2) {
-          const double th = 3.14159265358979 * a / rings,
-                       ph = 2 * 3.14159265358979 * s2 / segments;
+          const double th = 3.14159265358979 * a / rings, ph = 2 * 3.14159265358979 * s2 / segments;
           const Vec3 dir{float(std::sin(th) * std::cos(ph)), float(std::cos(th)),
                          float(std::sin(th) * std::sin(ph))};
           cp.push_back({dir[0] * r, 2.2f + r + dir[1] * r, dir[2] * r});

@@ -20,7 +20,6 @@ std::string type_of(const Layout& layout, const Element& e) {
   return layout.element_type;
 }
 
-
 // What an order line is bought as: the stock size, or the opening's diameter.
 std::string size_of(const Layout& layout, const Element& e) {
   if (e.circle) {

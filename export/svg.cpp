@@ -18,7 +18,6 @@ std::string escape(const std::string& s) { return xml_escape(s); }
 
 std::string mm(double v) { return drawing_mm(v); }
 
-
 // SVG's y runs down; the layout's runs up from the bottom of the drawing area.
 struct Sheet {
   double margin, height;
@@ -368,7 +367,8 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
     if (shown == 16) break;
     const double y = top + unit * 1.6 * static_cast<double>(shown++);
     const bool striped = layout.combine == Combine::keep && layout.kind->ground() != Ground::sheet;
-    const std::string fill = striped ? fmt::format("url(#parts-{})", e.value) : hex_colour(e.colour);
+    const std::string fill =
+        striped ? fmt::format("url(#parts-{})", e.value) : hex_colour(e.colour);
     out << fmt::format(
         "<g class=\"legend-entry\" data-value=\"{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" "
         "height=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\">"

@@ -12,8 +12,8 @@
 #include <set>
 
 #include "curdle/curdling.h"
-#include "layout/builder.h"
 #include "kinds/perforation.h"
+#include "layout/builder.h"
 #include "test_support.h"
 
 namespace curdle {

@@ -176,7 +176,8 @@ TEST(Gltf, PerforatedSheetIsASolidWithItsOpenings) {
   double open = 0, slack = 0;
   for (const Element& e : layout.elements) {
     open += e.area();
-    slack += 3.14159265358979 * 16 * spec.own<PerforationKeys>().chord_tolerance * (e.circle ? 1 : 2);
+    slack +=
+        3.14159265358979 * 16 * spec.own<PerforationKeys>().chord_tolerance * (e.circle ? 1 : 2);
   }
   EXPECT_GE(top * 1e6, 640.0 * 640.0 - open - 1e-3);
   EXPECT_LE(top * 1e6, 640.0 * 640.0 - open + slack);

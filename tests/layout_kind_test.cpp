@@ -33,9 +33,7 @@ class SteppingStones : public LayoutKind {
   Ground ground() const override { return Ground::paper; }
   Depiction depiction() const override { return Depiction::shapes; }
   std::vector<std::string> keys() const override { return {"cell", "inset"}; }
-  std::unique_ptr<KindKeys> default_keys() const override {
-    return std::make_unique<StoneKeys>();
-  }
+  std::unique_ptr<KindKeys> default_keys() const override { return std::make_unique<StoneKeys>(); }
   void read(reading::TableReader& r, Design& design, LayoutSpec& spec, bool) const override {
     const auto cell = reading::read_mm_pair(r, "cell", true);
     spec.module_w = (*cell)[0], spec.module_h = (*cell)[1];
@@ -96,10 +94,10 @@ TEST(LayoutKind, AKindDefinedInATestGetsEveryLayoutOutput) {
   ASSERT_TRUE(registered);
   const app::Run run = run_of(kStones, {"seed=3"});
   app::MemorySink sink;
-  app::write_outputs(run,
-                     app::select_outputs(
-                         run, {"layout.svg", "schedule.csv", "layout.dxf", "layout.glb"}, nullptr),
-                     sink, 1, nullptr);
+  app::write_outputs(
+      run,
+      app::select_outputs(run, {"layout.svg", "schedule.csv", "layout.dxf", "layout.glb"}, nullptr),
+      sink, 1, nullptr);
   const auto& files = sink.files();
   const std::string &svg = files.at("layout.svg"), &csv = files.at("schedule.csv"),
                     &dxf = files.at("layout.dxf"), &glb = files.at("layout.glb");
@@ -123,7 +121,7 @@ TEST(LayoutKind, AKindDefinedInATestGetsEveryLayoutOutput) {
   }
   EXPECT_NE(svg.find("class=\"stepping-stones\" data-element-type=\"stone\""), std::string::npos);
   EXPECT_NE(svg.find(std::to_string(ids.size()) + " stones"), std::string::npos);  // legend
-  EXPECT_NE(dxf.find("$INSUNITS\n 70\n4\n"), std::string::npos);                 // millimetres
+  EXPECT_NE(dxf.find("$INSUNITS\n 70\n4\n"), std::string::npos);                   // millimetres
   EXPECT_GE(count(dxf, "\nGranite\n"), ids.size());  // every stone on its material's layer
 
   // The glTF: a node per stone, named by its ID, 40 mm thick (glTF is in metres).
@@ -146,8 +144,7 @@ TEST(LayoutKind, AKindDefinedInATestGetsEveryLayoutOutput) {
 }
 
 TEST(LayoutKind, TheRegistryNamesEveryKindAndRefusesASecondOfOneName) {
-  for (const char* name :
-       {"tile", "paving", "facade", "perforation", "park", "rhythm", "blocks"}) {
+  for (const char* name : {"tile", "paving", "facade", "perforation", "park", "rhythm", "blocks"}) {
     const LayoutKind* k = find_layout_kind(name);
     ASSERT_NE(k, nullptr) << name;
     EXPECT_EQ(k->name(), name);

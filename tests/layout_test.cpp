@@ -14,8 +14,8 @@
 #include "curdle/palette.h"
 #include "export/layout_png.h"
 #include "export/svg.h"
-#include "layout/builder.h"
 #include "kinds/perforation.h"
+#include "layout/builder.h"
 #include "layout/piece.h"
 #include "layout/zone.h"
 #include "test_support.h"
@@ -169,9 +169,8 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
        {Corner::bottom_left, Corner::bottom_right, Corner::top_left, Corner::top_right}) {
     for (const std::string kind : {"paving", "facade"})
       for (double bond : {0.0, 0.5, 1.0 / 3, 0.25}) {
-        const std::array<double, 2> shift = kind == "facade"
-                                                ? std::array<double, 2>{130, 80}
-                                                : std::array<double, 2>{0, 0};
+        const std::array<double, 2> shift =
+            kind == "facade" ? std::array<double, 2>{130, 80} : std::array<double, 2>{0, 0};
         LayoutSpec spec = test::layout_spec();
         spec.set_kind(layout_kind(kind));
         spec.origin = corner;
@@ -181,9 +180,9 @@ TEST(Layout, AreasAddUpForEveryOriginCornerWithCutsAndOpenings) {
         spec.size = std::array<double, 2>{18000, 15600};
         if (kind == "facade")
           spec.own<FacadeKeys>().openings = {{1200, 0, 7200, 2700},
-                                    {1500, 3900, 1200, 1500},
-                                    {16200, 12900, 1200, 1500},
-                                    {17500, 14000, 500, 1600}};
+                                             {1500, 3900, 1200, 1500},
+                                             {16200, 12900, 1200, 1500},
+                                             {17500, 14000, 500, 1600}};
         const Layout layout = lay_floor(d, spec, 9);
         double elements = 0, openings = 0;
         for (const Element& e : layout.elements) {
@@ -321,7 +320,7 @@ TEST(Layout, PngColoursEachElementAndRecordsItsScale) {
   LayoutSpec spec = test::layout_spec();
   spec.joint = 20;
   Layout layout = make_layout(d, f, d.field, spec);
-  EXPECT_EQ(drawing_scale(layout), 20);           // 5.1 m fits an A3 sheet at 1:20
+  EXPECT_EQ(drawing_scale(layout), 20);                 // 5.1 m fits an A3 sheet at 1:20
   layout.drawing.scale = 10, layout.drawing.dpi = 254;  // 1 px = 1 mm / (254 / 25.4 / 10) = 1 mm
   const PreviewImage png = render_layout(layout);
   EXPECT_EQ(png.width, static_cast<int>(std::ceil(layout.width)));
@@ -540,8 +539,8 @@ LayoutSpec trees_and_benches() {
   spec.module_w = spec.module_h = 3000;
   spec.own<ParkKeys>().clearance = 300;
   spec.own<ParkKeys>().elements = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
-                          {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
-                          {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
+                                   {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
+                                   {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
   return spec;
 }
 

@@ -181,8 +181,8 @@ TEST(Outputs, TheReproducingRecipeNeedsNoOptions) {
 // Seeds run from 0 to 2^64 - 1 on the command line, the API and in recipes alike: the
 // reproducing recipe of every seed reads back to it.
 TEST(Outputs, TheReproducingRecipeKeepsEverySeed) {
-  for (const char* seed : {"0", "9223372036854775807", "9223372036854775808",
-                           "18446744073709551615"}) {
+  for (const char* seed :
+       {"0", "9223372036854775807", "9223372036854775808", "18446744073709551615"}) {
     RunRequest request;
     request.recipe_text = kTiles;
     request.recipe_path = "tiles.toml";
@@ -200,8 +200,8 @@ TEST(Outputs, TheReproducingRecipeKeepsEverySeed) {
     set.overrides = {std::string("seed=\"") + seed + "\""};
     EXPECT_EQ(std::to_string(resolve_run(set).seed), seed);
   }
-  for (const char* bad : {"-1", "18446744073709551616", "\"-1\"", "\"+5\"", "\"\"", "\"1e3\"",
-                          "2.5", "\" 7\""}) {
+  for (const char* bad :
+       {"-1", "18446744073709551616", "\"-1\"", "\"+5\"", "\"\"", "\"1e3\"", "2.5", "\" 7\""}) {
     RunRequest request;
     request.recipe_text = kTiles;
     request.recipe_path = "tiles.toml";

@@ -21,8 +21,9 @@ namespace curdle {
 namespace {
 
 Design two_curds_128() {
-  Design d = test::design(2, 2, {{"0.8", "0.8", "0.7", "0.7", "0.7", "0.7", "0.7"},
-                                 {"0.9", "0.6", "0.8", "0.7", "0.8", "0.7", "0.8"}});
+  Design d = test::design(2, 2,
+                          {{"0.8", "0.8", "0.7", "0.7", "0.7", "0.7", "0.7"},
+                           {"0.9", "0.6", "0.8", "0.7", "0.8", "0.7", "0.8"}});
   d.field.size = {200, 150, 1};  // two by two roots, cropped
   return d;
 }
@@ -39,8 +40,8 @@ TEST(SegmentMeasures, CountsAndBoxCountsMatchTheReportOfTheWindow) {
   const CurdField field = curdle(d, 5, d.field);
   SegmentMeasures m;
   m.reset(d, d.field, values_in(field, d.field));
-  for (const Box& w : {box(0, 0, 200, 150), box(37, 11, 67, 67), box(120, 100, 80, 50),
-                       box(127, 127, 3, 2)}) {
+  for (const Box& w :
+       {box(0, 0, 200, 150), box(37, 11, 67, 67), box(120, 100, 80, 50), box(127, 127, 3, 2)}) {
     const Report r = make_report(d, 5, field, w);
     for (uint32_t v = 0; v < 4; ++v) EXPECT_EQ(m.value_count(v, w), r.values[v].count);
     for (size_t c = 0; c < 2; ++c) {
@@ -108,9 +109,9 @@ TEST(SearchTargets, ParseNamesAndComparisons) {
   EXPECT_EQ(e.subject, 0);
   EXPECT_EQ(e.zone, box(1, 2, 3, 4));
   EXPECT_EQ(parse_target("empty=0,0,5,5", d).subject, -1);
-  for (const char* bad : {"ratio:c0=1.5", "ratio=0.1", "ratio:nope=0.1", "size:c0=3",
-                          "dimension:c9=1", "empty=1,2,3", "empty=0,0,0,4", "cluster:c0<4",
-                          "ratio:c0=-1", "ratio:c0=x", "count:4=1"}) {
+  for (const char* bad :
+       {"ratio:c0=1.5", "ratio=0.1", "ratio:nope=0.1", "size:c0=3", "dimension:c9=1", "empty=1,2,3",
+        "empty=0,0,0,4", "cluster:c0<4", "ratio:c0=-1", "ratio:c0=x", "count:4=1"}) {
     EXPECT_THROW(parse_target(bad, d), InputError) << bad;
   }
   try {

@@ -124,7 +124,8 @@ FittedRecipe fit_picture(const LuminanceImage& image, const FitRequest& r) {
 
 std::string write_fitted_recipe(const FittedRecipe& fitted, const std::string& out) {
   namespace fs = std::filesystem;
-  const fs::path path = out.empty() ? fs::path("curdle-out") / (fitted.name + ".toml") : fs::path(out);
+  const fs::path path =
+      out.empty() ? fs::path("curdle-out") / (fitted.name + ".toml") : fs::path(out);
   if (path.has_parent_path()) make_output_dir(path.parent_path());
   write_file(path, [&](std::ostream& s) { s << fitted.toml; });
   return fs::absolute(path).lexically_normal().string();

@@ -17,8 +17,7 @@ namespace curdle::app {
 namespace {
 
 std::string base64(const uint8_t* data, size_t size) {
-  static const char* kAlphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   out.reserve((size + 2) / 3 * 4);
   for (size_t i = 0; i < size; i += 3) {
@@ -106,8 +105,9 @@ ordered_json describe_run(const Run& s) {
   for (size_t c = 0; c < d.curds.size(); ++c) {
     ordered_json p = ordered_json::array();
     for (const Probability& q : d.curds[c].probabilities) p.push_back(q.text());
-    j["curds"].push_back(
-        {{"name", d.curds[c].name}, {"probabilities", p}, {"colour", hex_colour(curd_colour(d.curds, c))}});
+    j["curds"].push_back({{"name", d.curds[c].name},
+                          {"probabilities", p},
+                          {"colour", hex_colour(curd_colour(d.curds, c))}});
   }
   ordered_json field = ordered_json::array();
   for (int k = 0; k < E; ++k) field.push_back(d.field.size[k]);
@@ -134,7 +134,8 @@ ordered_json describe_run(const Run& s) {
   } else {
     const auto colours = value_colours(d.curds);
     for (uint32_t v = 0; v < colours.size(); ++v)
-      legend.push_back({{"value", v}, {"label", value_label(v, d.curds)}, {"colour", hex_colour(colours[v])}});
+      legend.push_back(
+          {{"value", v}, {"label", value_label(v, d.curds)}, {"colour", hex_colour(colours[v])}});
     j["layout"] = nullptr;
   }
   j["legend"] = legend;
@@ -146,55 +147,55 @@ ordered_json describe_run(const Run& s) {
 ordered_json segment_json(const Run& s, const Box& view, bool with_values) {
   const Design& d = s.recipe.design;
   const int E = d.lattice.dimension;
-    const CurdField field = curdle(d, s.seed, view, s.generate);
-    const Report report = make_report(d, s.seed, field, view);
-    ordered_json j = describe_run(s);
-    j["seed"] = std::to_string(s.seed);
-    j["view"] = box_json(view, E);
-    j["report"] = report_to_json(report);
-    if (with_values && E <= 2) {
-      const std::vector<uint16_t> values = values_in(field, view);
-      if (d.curds.size() <= 8) {
-        std::vector<uint8_t> bytes(values.begin(), values.end());
-        j["values"] = base64(bytes.data(), bytes.size());
-        j["value_bytes"] = 1;
-      } else {
-        j["values"] = base64(reinterpret_cast<const uint8_t*>(values.data()), values.size() * 2);
-        j["value_bytes"] = 2;
-      }
+  const CurdField field = curdle(d, s.seed, view, s.generate);
+  const Report report = make_report(d, s.seed, field, view);
+  ordered_json j = describe_run(s);
+  j["seed"] = std::to_string(s.seed);
+  j["view"] = box_json(view, E);
+  j["report"] = report_to_json(report);
+  if (with_values && E <= 2) {
+    const std::vector<uint16_t> values = values_in(field, view);
+    if (d.curds.size() <= 8) {
+      std::vector<uint8_t> bytes(values.begin(), values.end());
+      j["values"] = base64(bytes.data(), bytes.size());
+      j["value_bytes"] = 1;
+    } else {
+      j["values"] = base64(reinterpret_cast<const uint8_t*>(values.data()), values.size() * 2);
+      j["value_bytes"] = 2;
     }
+  }
   return j;
 }
 
 ordered_json picture_study_json(const PictureStudy& study) {
-    const FittedRecipe& f = study.fitted;
-    ordered_json curds = ordered_json::array();
-    for (const FittedCurd& curd : f.curds) {
-      ordered_json probabilities = ordered_json::array(), stages = ordered_json::array();
-      for (const StageFit& s : curd.stages) {
-        probabilities.push_back(probability_text(s.probability));
-        stages.push_back({{"stage", s.stage},
-                          {"measured", s.measured},
-                          {"expected", s.expected},
-                          {"probability", s.probability},
-                          {"sd", s.sd}});
-      }
-      curds.push_back({{"name", curd.name},
-                       {"colour", curd.colour},
-                       {"probabilities", probabilities},
-                       {"stages", stages}});
+  const FittedRecipe& f = study.fitted;
+  ordered_json curds = ordered_json::array();
+  for (const FittedCurd& curd : f.curds) {
+    ordered_json probabilities = ordered_json::array(), stages = ordered_json::array();
+    for (const StageFit& s : curd.stages) {
+      probabilities.push_back(probability_text(s.probability));
+      stages.push_back({{"stage", s.stage},
+                        {"measured", s.measured},
+                        {"expected", s.expected},
+                        {"probability", s.probability},
+                        {"sd", s.sd}});
     }
-    ordered_json j;
-    j["measure"] = measure_to_json(study.measured);
-    j["fit"] = {{"name", f.name},
-                {"lattice",
-                 {{"base", f.lattice.base},
-                  {"dimension", f.lattice.dimension},
-                  {"stages", f.lattice.stages},
-                  {"mode", std::string(to_string(f.lattice.mode))}}},
-                {"field", {f.size[0], f.size[1]}},
-                {"curds", curds},
-                {"recipe_toml", f.toml}};
+    curds.push_back({{"name", curd.name},
+                     {"colour", curd.colour},
+                     {"probabilities", probabilities},
+                     {"stages", stages}});
+  }
+  ordered_json j;
+  j["measure"] = measure_to_json(study.measured);
+  j["fit"] = {{"name", f.name},
+              {"lattice",
+               {{"base", f.lattice.base},
+                {"dimension", f.lattice.dimension},
+                {"stages", f.lattice.stages},
+                {"mode", std::string(to_string(f.lattice.mode))}}},
+              {"field", {f.size[0], f.size[1]}},
+              {"curds", curds},
+              {"recipe_toml", f.toml}};
   return j;
 }
 

@@ -6,7 +6,6 @@
 #include "app/run.h"
 #include "cli/options.h"
 
-
 namespace curdle::cli {
 
 void add_fit_options(CLI::App& c, FitOptions& o) {

@@ -39,8 +39,7 @@ void add_search_options(CLI::App& c, SearchOptions& o) {
                "Where search.csv and the previews go (default: curdle-out/<recipe name>-search)")
       ->check(kNotEmpty);
   c.add_flag("!--no-previews", o.previews, "Write search.csv only, no preview images");
-  c.add_option("--set", o.sets, "Override a recipe key, as for generate")
-      ->allow_extra_args(false);
+  c.add_option("--set", o.sets, "Override a recipe key, as for generate")->allow_extra_args(false);
   c.add_option("--threads", o.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   c.add_option("--max-memory", o.max_memory, "Refuse work above this much memory, e.g. 8G")
@@ -95,15 +94,15 @@ int run_search(const SearchOptions& o) {
     for (const auto& [name, x] : h["measured"].items()) {
       char v[32];
       std::snprintf(v, sizeof v, "%.4g", x.is_null() ? NAN : x.get<double>());
-      measured += (measured.empty() ? "" : "  ") + name.substr(0, name.find_first_of("<>=")) + " " + v;
+      measured +=
+          (measured.empty() ? "" : "  ") + name.substr(0, name.find_first_of("<>=")) + " " + v;
     }
     std::printf("%4d %20s %16s %10.4f  %s%s\n", h["rank"].get<int>(),
                 h["seed"].get<std::string>().c_str(), h["window"].get<std::string>().c_str(),
                 h["score"].get<double>(), measured.c_str(),
                 h["meets_empty_zones"].get<bool>() ? "" : "  (an empty zone is occupied)");
   }
-  if (!hits.empty())
-    std::printf("best: %s\n", j["hits"][0]["command"].get<std::string>().c_str());
+  if (!hits.empty()) std::printf("best: %s\n", j["hits"][0]["command"].get<std::string>().c_str());
   std::printf("outputs in %s: search.csv%s\n", fs::absolute(dir).lexically_normal().c_str(),
               o.previews ? (", " + std::to_string(previews.size()) + " previews").c_str() : "");
   return 0;

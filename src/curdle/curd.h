@@ -42,7 +42,7 @@ struct Curd {
 // The generated curds of one design and seed, over the roots that meet `generated`.
 struct CurdField {
   CellIndex index;
-  Box generated;  // cells outside it were never visited and read as dead
+  Box generated;      // cells outside it were never visited and read as dead
   uint64_t seed = 0;  // the stream it was drawn from
   std::vector<Curd> curds;
 

@@ -43,7 +43,7 @@ struct StageWork {
   uint32_t curd;
   int stage;
   const Probability& p;
-  uint64_t children;  // b^E
+  uint64_t children;               // b^E
   const DensityField* density;     // null: every child survives with p
   double product_before, product;  // P_(k-1) and P_k, for a density field
 };

@@ -39,7 +39,7 @@ struct CurdReport {
   // a crop's largest boxes then weigh what they hold, and the fit is not pulled down by them.
   std::optional<LineFit> share_weighted_fit;
   std::optional<LineFit> expected_share_weighted_fit;
-  std::optional<double> theory_dimension;   // E + log(P_K^(1/K)) / log b, the limit K -> inf
+  std::optional<double> theory_dimension;  // E + log(P_K^(1/K)) / log b, the limit K -> inf
   double final_probability = 0;            // P_K
   std::string density;  // the curd's density field (density.h, describe()); empty: none
 };

@@ -175,9 +175,8 @@ Target parse_target(const std::string& text, const Design& d) {
   const std::string kind = head.substr(0, colon);
   const std::string subject = colon == std::string::npos ? "" : head.substr(colon + 1);
   static const std::pair<const char*, Measure> kinds[] = {
-      {"count", Measure::count},     {"ratio", Measure::ratio},
-      {"dimension", Measure::dimension}, {"cluster", Measure::cluster},
-      {"run", Measure::run},         {"lacunarity", Measure::lacunarity},
+      {"count", Measure::count},     {"ratio", Measure::ratio}, {"dimension", Measure::dimension},
+      {"cluster", Measure::cluster}, {"run", Measure::run},     {"lacunarity", Measure::lacunarity},
       {"empty", Measure::empty}};
   const auto k = std::find_if(std::begin(kinds), std::end(kinds),
                               [&](const auto& p) { return kind == p.first; });
@@ -193,8 +192,10 @@ Target parse_target(const std::string& text, const Design& d) {
     for (int i = 0; i < 4; ++i) {
       const size_t end = i < 3 ? goal.find(',', start) : goal.size();
       if (end == std::string::npos) fail(text, "the zone must be X,Y,W,H in cells");
-      auto [p, ec] = std::from_chars(goal.data() + start, goal.data() + end, v[static_cast<size_t>(i)]);
-      if (ec != std::errc() || p != goal.data() + end || v[static_cast<size_t>(i)] < (i < 2 ? 0 : 1))
+      auto [p, ec] =
+          std::from_chars(goal.data() + start, goal.data() + end, v[static_cast<size_t>(i)]);
+      if (ec != std::errc() || p != goal.data() + end ||
+          v[static_cast<size_t>(i)] < (i < 2 ? 0 : 1))
         fail(text, "the zone must be X,Y,W,H in whole cells, sizes at least 1");
       start = end + 1;
     }
@@ -242,7 +243,7 @@ std::vector<Target> default_targets(const Design& d) {
 double shortfall(const Target& t, double x) {
   if (t.measure == Measure::empty) return 100 * x / static_cast<double>(t.zone.cells());
   if (std::isnan(x)) return 1;
-  double miss = t.compare == Compare::equal   ? std::fabs(x - t.goal)
+  double miss = t.compare == Compare::equal     ? std::fabs(x - t.goal)
                 : t.compare == Compare::at_most ? std::max(0.0, x - t.goal)
                                                 : std::max(0.0, t.goal - x);
   const bool relative = t.measure != Measure::ratio && t.measure != Measure::dimension;
@@ -253,17 +254,20 @@ double measure(const Target& t, SegmentMeasures& m, const Design& d, const Box& 
                int64_t lacunarity_box) {
   const auto value = static_cast<uint32_t>(t.subject);
   switch (t.measure) {
-    case Measure::count: return static_cast<double>(m.value_count(value, segment));
+    case Measure::count:
+      return static_cast<double>(m.value_count(value, segment));
     case Measure::ratio:
       return static_cast<double>(m.value_count(value, segment)) /
              static_cast<double>(segment.cells());
     case Measure::dimension: {
-      const auto fit = fit_box_dimension(m.box_counts(static_cast<size_t>(t.subject), segment),
-                                         d.lattice.base);
+      const auto fit =
+          fit_box_dimension(m.box_counts(static_cast<size_t>(t.subject), segment), d.lattice.base);
       return fit ? fit->slope : std::numeric_limits<double>::quiet_NaN();
     }
-    case Measure::cluster: return static_cast<double>(m.largest_cluster(value, segment));
-    case Measure::run: return static_cast<double>(m.longest_run(value, segment));
+    case Measure::cluster:
+      return static_cast<double>(m.largest_cluster(value, segment));
+    case Measure::run:
+      return static_cast<double>(m.longest_run(value, segment));
     case Measure::lacunarity: {
       const auto l = m.lacunarity(value, segment, lacunarity_box);
       return l ? *l : std::numeric_limits<double>::quiet_NaN();

@@ -49,7 +49,7 @@ struct SearchSpec {
 struct SearchHit {
   uint64_t seed = 0;
   Box segment;
-  double score = 0;             // sum of the targets' shortfalls; 0 meets every target
+  double score = 0;              // sum of the targets' shortfalls; 0 meets every target
   std::vector<double> measured;  // per target (NaN when undefined, e.g. no survivor)
   bool meets_empty_zones = true;
 };
@@ -72,8 +72,8 @@ void check_search(const Design& design, const Box& view, const SearchSpec& spec)
 // seeds, best first (ties: lower seed, then lower segment corner). Runs on all TBB threads;
 // the result does not depend on their number. `cancel`, when set, stops early with what was
 // found so far.
-std::vector<SearchHit> search_seeds(const Design& design, const Box& view,
-                                    const SearchSpec& spec, uint64_t first, uint64_t last,
+std::vector<SearchHit> search_seeds(const Design& design, const Box& view, const SearchSpec& spec,
+                                    uint64_t first, uint64_t last,
                                     const std::function<void(double)>& progress = {},
                                     const std::atomic<bool>* cancel = nullptr);
 

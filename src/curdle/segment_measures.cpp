@@ -81,7 +81,8 @@ std::vector<uint64_t> SegmentMeasures::box_counts(size_t curd, const Box& segmen
       for (int64_t bx = first[0]; bx <= last[0]; ++bx) {
         Box clip = segment;
         clip.origin[0] = std::max(segment.origin[0], bx * side);
-        clip.size[0] = std::min(segment.origin[0] + segment.size[0], (bx + 1) * side) - clip.origin[0];
+        clip.size[0] =
+            std::min(segment.origin[0] + segment.size[0], (bx + 1) * side) - clip.origin[0];
         if (axes == 2) {
           clip.origin[1] = std::max(segment.origin[1], by * side);
           clip.size[1] =

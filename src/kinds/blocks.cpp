@@ -66,7 +66,7 @@ void BlocksKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
 }
 
 Layout BlocksKind::build(const Design& design, const CurdField& field, const Box& view,
-                        const LayoutSpec& spec) const {
+                         const LayoutSpec& spec) const {
   Layout layout;
   layout.kind = this;
   layout.combine = spec.combine;

@@ -1,10 +1,9 @@
-#include "kinds/park.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "kinds/park.h"
 #include "layout/piece.h"
 #include "layout/union.h"
 
@@ -73,7 +72,8 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
   for (const Element& cell : cells) {
     std::vector<size_t> surfaces, objects;
     for (size_t c = 0; c < design.curds.size(); ++c)
-      if (cell.value >> c & 1) (spec.own<ParkKeys>().elements[c].surface ? surfaces : objects).push_back(c);
+      if (cell.value >> c & 1)
+        (spec.own<ParkKeys>().elements[c].surface ? surfaces : objects).push_back(c);
     auto add = [&](const ParkElement& kind, Region region, std::optional<Circle> circle,
                    const std::string& suffix, const Rect& stock) {
       Element e = cell;

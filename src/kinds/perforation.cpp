@@ -27,16 +27,15 @@ std::string PerforationKind::size_line(const Layout& layout) const {
 
 std::string PerforationKind::laying_line(const Layout& layout) const {
   return fmt::format("sheet {} mm thick, {} openings, open area {:.2f} %, {} rule violations{}",
-                     drawing_mm(layout.thickness), layout.elements.size(),
-                     100 * layout.open_area, layout.violations.size(),
+                     drawing_mm(layout.thickness), layout.elements.size(), 100 * layout.open_area,
+                     layout.violations.size(),
                      layout.drops_violations && !layout.violations.empty() ? " (dropped)" : "");
 }
 
 std::vector<std::string> PerforationKind::keys() const {
   std::vector<std::string> keys = reading::surface_keys(kSurface);
-  keys.insert(keys.end(), {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin",
-                           "fix", "chord_tolerance", "sheet_size", "punches", "open_area",
-                           "outline"});
+  keys.insert(keys.end(), {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin", "fix",
+                           "chord_tolerance", "sheet_size", "punches", "open_area", "outline"});
   return keys;
 }
 

@@ -1,5 +1,3 @@
-#include "kinds/perforation.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -7,6 +5,7 @@
 #include <map>
 #include <numeric>
 
+#include "kinds/perforation.h"
 #include "layout/union.h"
 #include "layout/zone.h"
 
@@ -163,7 +162,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         h.element.circle = *whole;  // the others lie inside it: the union is that circle
         h.parts = {*whole};
       } else {
-        h.element.outline = union_of_circles(group, spec.own<PerforationKeys>().chord_tolerance).front();
+        h.element.outline =
+            union_of_circles(group, spec.own<PerforationKeys>().chord_tolerance).front();
         h.parts = group;
       }
       holes.push_back(std::move(h));
@@ -182,7 +182,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
     if (h.element.circle && h.element.circle->d < spec.own<PerforationKeys>().min_diameter - 1e-9)
       drop(h, fmt::format("diameter {:.2f} mm is below the minimum {:.2f} mm", h.element.circle->d,
                           spec.own<PerforationKeys>().min_diameter));
-    else if (const double gap = edge_gap(h, layout); gap < spec.own<PerforationKeys>().edge_margin - 1e-9)
+    else if (const double gap = edge_gap(h, layout);
+             gap < spec.own<PerforationKeys>().edge_margin - 1e-9)
       drop(h, fmt::format("{:.2f} mm from the sheet edge, below the margin {:.2f} mm", gap,
                           spec.own<PerforationKeys>().edge_margin));
   }
@@ -212,7 +213,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
   // Fabrication sheets: every opening keeps the edge margin inside its own sheet, so one that
   // crosses a seam or comes within the margin of it is dropped (the stated rule), and reported.
   if (spec.own<PerforationKeys>().sheet_size) {
-    const double sw = (*spec.own<PerforationKeys>().sheet_size)[0], sh = (*spec.own<PerforationKeys>().sheet_size)[1];
+    const double sw = (*spec.own<PerforationKeys>().sheet_size)[0],
+                 sh = (*spec.own<PerforationKeys>().sheet_size)[1];
     const int nx = static_cast<int>(std::ceil(layout.width / sw - 1e-9));
     const int ny = static_cast<int>(std::ceil(layout.height / sh - 1e-9));
     for (int j = 0; j < ny; ++j)
@@ -234,7 +236,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
             {gap, c.cx - r - a.x, a.right() - c.cx - r, c.cy - r - a.y, a.top() - c.cy - r});
       }
       // A seam keeps the edge margin on each side, and never less than a bridge.
-      const double clear = std::max(spec.own<PerforationKeys>().edge_margin, spec.own<PerforationKeys>().min_bridge);
+      const double clear =
+          std::max(spec.own<PerforationKeys>().edge_margin, spec.own<PerforationKeys>().min_bridge);
       if (gap < clear - 1e-9) {
         layout.violations.push_back(
             fmt::format("{}: {:.2f} mm from the edge of sheet {}, below {:.2f} mm; dropped "
@@ -291,7 +294,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
                         ? std::string("1 sheet is")
                         : fmt::format("{} sheets are", layout.violations.size() - broken)));
   layout.notes.push_back(fmt::format("open area {:.2f} % of the sheet; sheet {} mm thick",
-                                     100 * layout.open_area, spec.own<PerforationKeys>().thickness));
+                                     100 * layout.open_area,
+                                     spec.own<PerforationKeys>().thickness));
 }
 
 }  // namespace curdle

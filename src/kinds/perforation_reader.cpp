@@ -115,14 +115,17 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   spec.own<PerforationKeys>().sheet_size = read_mm_pair(r, "sheet_size");
   if (spec.own<PerforationKeys>().sheet_size) {
     double largest = 0;
-    for (const HoleSpec& h : spec.own<PerforationKeys>().holes) largest = std::max(largest, h.diameter);
-    if ((*spec.own<PerforationKeys>().sheet_size)[0] < largest + 2 * spec.own<PerforationKeys>().edge_margin ||
-        (*spec.own<PerforationKeys>().sheet_size)[1] < largest + 2 * spec.own<PerforationKeys>().edge_margin)
-      r.fail("sheet_size", "a sheet must hold the largest opening (" +
-                               std::to_string(static_cast<int>(largest)) +
-                               " mm) within its margins (2 x " +
-                               std::to_string(static_cast<int>(spec.own<PerforationKeys>().edge_margin)) +
-                               " mm); give a larger sheet_size");
+    for (const HoleSpec& h : spec.own<PerforationKeys>().holes)
+      largest = std::max(largest, h.diameter);
+    if ((*spec.own<PerforationKeys>().sheet_size)[0] <
+            largest + 2 * spec.own<PerforationKeys>().edge_margin ||
+        (*spec.own<PerforationKeys>().sheet_size)[1] <
+            largest + 2 * spec.own<PerforationKeys>().edge_margin)
+      r.fail("sheet_size",
+             "a sheet must hold the largest opening (" + std::to_string(static_cast<int>(largest)) +
+                 " mm) within its margins (2 x " +
+                 std::to_string(static_cast<int>(spec.own<PerforationKeys>().edge_margin)) +
+                 " mm); give a larger sheet_size");
   }
 }
 

@@ -321,8 +321,8 @@ double bonded_joint_area(const Layout& layout) {
     const double up = r * pitch_h - layout.shift[1];
     const double y = top ? layout.height - up - layout.module_h : up;
     for (int64_t c = 0; c < layout.columns; ++c) {
-      const double along =
-          c * pitch_w + layout.module_w - layout.shift[0] - course_offset(layout.bond, layout.module_w + layout.joint, r);
+      const double along = c * pitch_w + layout.module_w - layout.shift[0] -
+                           course_offset(layout.bond, layout.module_w + layout.joint, r);
       area += laid_area(layout, holes,
                         Rect{right ? layout.width - along - layout.joint : along, y, layout.joint,
                              layout.module_h});

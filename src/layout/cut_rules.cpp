@@ -154,7 +154,10 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec) {
       const bool at_edge = laid_extent < module - kEps && std::fabs(laid_extent - run) < kEps;
       layout.violations.push_back(fmt::format("{}: cut to {:.1f} mm {} at {}, below {:.1f} mm ({})",
                                               e.id, run, axis == 0 ? "wide" : "high",
-                                              e.outline ? "a sloping or curved edge" : at_edge ? "the edge" : "an opening", least, rule));
+                                              e.outline ? "a sloping or curved edge"
+                                              : at_edge ? "the edge"
+                                                        : "an opening",
+                                              least, rule));
       ++slivers;
       break;
     }

@@ -7,10 +7,10 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
-#include <string>
 #include <memory>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -155,12 +155,12 @@ struct LayoutSpec {
   }
 
   Combine combine = Combine::mix;
-  double module_w = 300, module_h = 300;          // element size (tile, panel) in mm
-  double joint = 0;                               // joint between elements, mm
+  double module_w = 300, module_h = 300;  // element size (tile, panel) in mm
+  double joint = 0;                       // joint between elements, mm
   // The grid moved this far back from the origin corner along x and y, so that the first
   // column and row are cut to module - shift (tile, paving, facade): how slivers are avoided.
   std::array<double, 2> shift{0, 0};
-  double min_cut = 0;  // narrowest cut piece allowed, mm; 0: a quarter of the element each way
+  double min_cut = 0;       // narrowest cut piece allowed, mm; 0: a quarter of the element each way
   std::vector<Zone> zones;  // tile, paving, facade
   // layout.outline: the surface to cover, a simple polygon whose edges run along x and y, in mm
   // from the origin of `size` (which is then its bounding rectangle's far corner); empty: the
@@ -251,7 +251,7 @@ struct Layout {
   std::vector<Element> elements;
   // Every hole in the surface: a façade's openings, then the excluded zones' rectangles.
   std::vector<Rect> openings;
-  std::vector<ZoneCount> zones;     // one per [[layout.zones]], in order
+  std::vector<ZoneCount> zones;  // one per [[layout.zones]], in order
   // With layout.outline: the polygon, and the parts of the width x height rectangle outside it
   // (no elements; drawn as paper, not as openings).
   Polygon outline;
@@ -267,8 +267,8 @@ struct Layout {
   // and what the fabrication rules found or changed.
   double open_area = 0;
   std::vector<std::string> violations;
-  bool drops_violations = false;    // openings that break a fabrication rule are dropped
-  double chord_tolerance = 0.05;    // how far polygonised round openings may stray, mm
+  bool drops_violations = false;  // openings that break a fabrication rule are dropped
+  double chord_tolerance = 0.05;  // how far polygonised round openings may stray, mm
   // Perforation: the fabrication sheets the surface is cut into, row by row from the origin
   // (one, the whole surface, when no sheet size is given).
   struct FabricationSheet {

@@ -13,8 +13,8 @@ std::string LayoutKind::size_line(const Layout& layout) const {
   for (const Element& e : layout.elements) cut += e.cut;
   return fmt::format("{} x {} mm: {} {}s of {} x {} mm, joint {} mm ({} cut)",
                      drawing_mm(layout.width), drawing_mm(layout.height), layout.elements.size(),
-                     layout.element_type, drawing_mm(layout.module_w),
-                     drawing_mm(layout.module_h), drawing_mm(layout.joint), cut);
+                     layout.element_type, drawing_mm(layout.module_w), drawing_mm(layout.module_h),
+                     drawing_mm(layout.joint), cut);
 }
 
 std::string LayoutKind::laying_line(const Layout& layout) const {

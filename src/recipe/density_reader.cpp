@@ -89,8 +89,8 @@ DensityField read_density(TableReader& curd, const std::string& path, const Latt
     const toml::node* radius = r.get("radius");
     const auto x = finite_number(radius);
     if (!x || *x <= 0 || *x > kMostCoordinate)
-      r.fail("radius", std::string(radius ? "must be" : "is required:") + " a distance above 0 in " +
-                           units + ", at most 10^13");
+      r.fail("radius", std::string(radius ? "must be" : "is required:") +
+                           " a distance above 0 in " + units + ", at most 10^13");
     f.radius = *x;
     f.values = read_values(r, "at the centre, at the radius and beyond");
   } else if (*kind == "image") {

@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "curdle/text.h"
+#include "kinds/registry.h"
 #include "layout/builder.h"
 #include "layout/drawing_sheet.h"
 #include "layout/zone.h"
-#include "kinds/registry.h"
 
 namespace curdle::reading {
 namespace {
@@ -72,8 +72,8 @@ std::optional<Box> read_highlight(TableReader& r) {
 }  // namespace
 
 std::vector<std::string> surface_keys(const SurfaceKeys& k) {
-  std::vector<std::string> keys = {"combine",    "origin",    "joint_colour", "stage_grid",
-                                   "highlight",  k.module_key, k.size_key};
+  std::vector<std::string> keys = {"combine",   "origin",     "joint_colour", "stage_grid",
+                                   "highlight", k.module_key, k.size_key};
   if (k.joint) keys.push_back("joint");
   if (k.size_key != std::string("sheet")) keys.push_back("sheet");  // the paper, by name
   return keys;
@@ -217,8 +217,8 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   return spec;
 }
 
-void size_field(TableReader& r, const std::string& size_key, Design& design,
-                const LayoutSpec& spec, bool field_given) {
+void size_field(TableReader& r, const std::string& size_key, Design& design, const LayoutSpec& spec,
+                bool field_given) {
   if (!spec.size) return;
   const auto cells = elements_to_cover(spec);
   // A larger field is a curd from which a segment of `cells` becomes the floor or wall.

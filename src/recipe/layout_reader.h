@@ -33,8 +33,8 @@ void read_surface(TableReader& r, const SurfaceKeys& k, const Design& design, La
 // layout.bond, zones, min_cut and shift (tile, paving, facade), after the surface.
 void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec);
 // The field a fixed surface needs: sized by it, or checked to hold it.
-void size_field(TableReader& r, const std::string& size_key, Design& design,
-                const LayoutSpec& spec, bool field_given);
+void size_field(TableReader& r, const std::string& size_key, Design& design, const LayoutSpec& spec,
+                bool field_given);
 // layout.outline (tile, paving, facade, perforation, park): the surface as a polygon; its
 // bounding rectangle is the size when the size key is left out.
 void read_outline(TableReader& r, LayoutSpec& spec);

@@ -194,7 +194,7 @@ ApiResponse api_export(const ApiContext& c, const Params& params) {
     const app::Output* output = app::find_output(name);
     const bool layout_file = output && output->needs_layout;
     app::check_cells(d, s.view, layout_file ? c.limits.max_layout_cells : c.limits.max_cells,
-                layout_file ? "this layout would have" : "this request would generate");
+                     layout_file ? "this layout would have" : "this request would generate");
     ApiResponse out;
     out.filename = name;
     out.content_type = content_type(name);

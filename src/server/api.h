@@ -14,10 +14,10 @@ namespace curdle::server {
 using Params = std::multimap<std::string, std::string>;
 
 struct ApiLimits {
-  uint64_t max_cells = uint64_t{1} << 22;         // cells generated for one request (2048^2)
-  uint64_t max_layout_cells = uint64_t{1} << 20;  // cells laid out for a layout download
-  uint64_t max_search_work = uint64_t{1} << 30;   // seeds x field cells x stages, one search
-  uint64_t max_memory = 0;                        // bytes a request may use; 0: a default
+  uint64_t max_cells = uint64_t{1} << 22;          // cells generated for one request (2048^2)
+  uint64_t max_layout_cells = uint64_t{1} << 20;   // cells laid out for a layout download
+  uint64_t max_search_work = uint64_t{1} << 30;    // seeds x field cells x stages, one search
+  uint64_t max_memory = 0;                         // bytes a request may use; 0: a default
   uint64_t max_upload_bytes = uint64_t{16} << 20;  // a picture's file sent to be measured
 };
 

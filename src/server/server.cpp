@@ -77,8 +77,7 @@ struct Server::Impl {
   int bound_port = 0;
   std::counting_semaphore<64> slots;
 
-  explicit Impl(ServerConfig c)
-      : config(std::move(c)), slots(std::clamp(config.workers, 1, 64)) {
+  explicit Impl(ServerConfig c) : config(std::move(c)), slots(std::clamp(config.workers, 1, 64)) {
     config.api.stopping = &stopping;
   }
 

@@ -13,8 +13,8 @@ namespace curdle::server {
 
 struct ServerConfig {
   ApiContext api;
-  std::filesystem::path web_root;  // index.html, app.js, style.css
-  int workers = 2;                 // generate, export and search requests at once
+  std::filesystem::path web_root;     // index.html, app.js, style.css
+  int workers = 2;                    // generate, export and search requests at once
   size_t max_body_bytes = 64 * 1024;  // any request's body but a picture's (api.limits)
 };
 

@@ -168,7 +168,8 @@ void BM_Serve_LayoutSvg_256x256(benchmark::State& state) {
   size_t bytes = 0;
   for (auto _ : state) {
     const auto r = curdle::server::api_export(
-        context, {{"seed", std::to_string(++seed)}, {"field.cells", "[256,256]"}, {"file", "layout.svg"}});
+        context,
+        {{"seed", std::to_string(++seed)}, {"field.cells", "[256,256]"}, {"file", "layout.svg"}});
     if (r.status != 200) state.SkipWithError(r.body.c_str());
     bytes = r.body.size();
   }

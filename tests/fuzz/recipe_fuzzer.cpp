@@ -9,8 +9,8 @@
 
 #include "app/outputs.h"
 #include "app/run.h"
-#include "kinds/facade.h"
 #include "curdle/error.h"
+#include "kinds/facade.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size > 64 * 1024) return 0;
@@ -33,7 +33,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const curdle::app::Run run = curdle::app::resolve_run(request);
     const auto& layout = run.recipe.layout;
     if (run.view.cells() > 20000 || !layout ||
-        (layout->keys.find<curdle::FacadeKeys>() && !layout->own<curdle::FacadeKeys>().mask.empty()))
+        (layout->keys.find<curdle::FacadeKeys>() &&
+         !layout->own<curdle::FacadeKeys>().mask.empty()))
       return 0;
     const auto outputs = curdle::app::select_outputs(
         run, {"report.json", "schedule.csv", "quantities.csv", "layout.svg", "install.svg"},
