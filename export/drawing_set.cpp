@@ -136,28 +136,9 @@ InstallerSet installer_set(const Layout& layout, const InstallerPlan& plan) {
   return set;
 }
 
-void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet& set, size_t index,
-                          size_t total) {
-  const InstallerPlan& plan = set.plan;
-  const double w = plan.landscape ? plan.paper.long_side : plan.paper.short_side;
-  const double h = plan.landscape ? plan.paper.short_side : plan.paper.long_side;
-  frame(cr, w, h);
-  const InstallerSheet& sheet = plan.sheets[index];
-  View v;
-  v.window = sheet.window;
-  v.scale = plan.scale;
-  v.left = kLeftMargin + 14;  // the row-number strip (installer_sheets.cpp)
-  v.top = kMargin;
-  cairo_save(cr);
-  v.rect(cr, sheet.window);  // the window is the viewport, or less where it ends at a joint
-  cairo_clip(cr);
-  draw_pieces(cr, layout, v, true);
-  colour(cr, Rgb{85, 85, 85});
-  cairo_set_line_width(cr, 0.1);
-  for (const InstallerPiece& p : plan.pieces)
-    for (const Rect& r : p.parts) v.rect(cr, r), cairo_stroke(cr);
-  // Labels: inside their piece, or beside it on white with a leader; every leader first, so
-  // that none crosses another's label.
+// Labels: inside their piece, or beside it on white with a leader; every leader first, so that
+// none crosses another's label.
+void draw_labels(cairo_t* cr, const InstallerPlan& plan, const View& v, size_t index) {
   colour(cr, kInk);
   cairo_set_line_width(cr, 0.15);
   for (const InstallerLabel& l : plan.labels) {
@@ -188,18 +169,11 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
     else
       text(cr, cx, cy + plan.text_mm / 2, l.text, plan.text_mm, Align::centre);
   }
-  cairo_restore(cr);
-  // The start corner, when it is on this sheet.
-  const double sx = from_right(layout.origin) ? layout.width : 0;
-  const double sy = from_top(layout.origin) ? layout.height : 0;
-  if (sx >= sheet.window.x && sx <= sheet.window.right() && sy >= sheet.window.y &&
-      sy <= sheet.window.top())
-    start_corner(cr, layout, v);
-  colour(cr, kInk);
-  box(cr, v.left, v.top, plan.viewport[0], plan.viewport[1], 0.35);
+}
 
-  // Match lines: the edges shared with the next sheets, each named in its caption's box.
-  const double B = v.top + plan.viewport[1];  // column numbers go under the viewport
+// Match lines: the edges shared with the next sheets, each named in its caption's box.
+void draw_match_lines(cairo_t* cr, const InstallerPlan& plan, const View& v, size_t index) {
+  const InstallerSheet& sheet = plan.sheets[index];
   const double wl = v.x(sheet.window.x), wr = v.x(sheet.window.right());
   const double wt = v.y(sheet.window.top()), wb = v.y(sheet.window.y);
   const double dashes[] = {6, 1.5, 1, 1.5};
@@ -225,42 +199,46 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
     else
       text(cr, cx, cy + kMatchCaptionMm / 2, t, kMatchCaptionMm, Align::centre);
   }
+}
 
-  // Row numbers on the left, column numbers along the bottom, where their rows show.
-  if (layout.kind->laid_in_courses()) {
-    colour(cr, kRed);
-    double last = -1e300;
-    for (const auto& [row, extent] : set.extents.rows) {
-      const double mid = (extent.first + extent.second) / 2;
-      if (mid < sheet.window.y || mid > sheet.window.top()) continue;
-      const double y = v.y(mid);
-      if (std::fabs(y - last) < 3.2) continue;
-      last = y;
-      text(cr, v.left - 1.5, y + 1.25, fmt::format("R{}", row), 2.5, Align::right);
-    }
-    last = -1e300;
-    for (const auto& [column, extent] : set.extents.columns) {
-      const double mid = (extent.first + extent.second) / 2;
-      if (mid < sheet.window.x || mid > sheet.window.right()) continue;
-      const double x = v.x(mid);
-      const std::string t = fmt::format("C{}", column);
-      if (std::fabs(x - last) < text_width(cr, t, 2.5) + 1.5) continue;
-      last = x;
-      text(cr, x, B + 4.5, t, 2.5, Align::centre);
-    }
+// Row numbers on the left, column numbers along the bottom (under the viewport), where their
+// rows show.
+void draw_course_numbers(cairo_t* cr, const InstallerSet& set, const InstallerSheet& sheet,
+                         const View& v) {
+  const double B = v.top + set.plan.viewport[1];
+  colour(cr, kRed);
+  double last = -1e300;
+  for (const auto& [row, extent] : set.extents.rows) {
+    const double mid = (extent.first + extent.second) / 2;
+    if (mid < sheet.window.y || mid > sheet.window.top()) continue;
+    const double y = v.y(mid);
+    if (std::fabs(y - last) < 3.2) continue;
+    last = y;
+    text(cr, v.left - 1.5, y + 1.25, fmt::format("R{}", row), 2.5, Align::right);
   }
+  last = -1e300;
+  for (const auto& [column, extent] : set.extents.columns) {
+    const double mid = (extent.first + extent.second) / 2;
+    if (mid < sheet.window.x || mid > sheet.window.right()) continue;
+    const double x = v.x(mid);
+    const std::string t = fmt::format("C{}", column);
+    if (std::fabs(x - last) < text_width(cr, t, 2.5) + 1.5) continue;
+    last = x;
+    text(cr, x, B + 4.5, t, 2.5, Align::centre);
+  }
+}
 
-  // Key plan: the whole grid in the strip, this sheet filled.
-  const double strip = h - kMargin - kTitleStrip;
-  const double kw = 70, kh = kTitleStrip - 12;
+// The key plan in the title strip: the whole grid of sheets, this one filled, and the start
+// corner's dot.
+void draw_key_plan(cairo_t* cr, const Layout& layout, const InstallerPlan& plan, size_t index,
+                   double kx, double ky, double kw, double kh) {
   const double gw = plan.sheets.back().window.right() - plan.sheets.front().window.x;
   const double gh = plan.sheets.back().window.top() - plan.sheets.front().window.y;
   const double k = std::min(kw / gw, kh / gh);
-  const double kx = kLeftMargin + 4, ky = strip + 8;
   auto kxf = [&](double x) { return kx + (x - plan.sheets.front().window.x) * k; };
   auto kyf = [&](double y) { return ky + kh - (y - plan.sheets.front().window.y) * k; };
   colour(cr, kInk);
-  text(cr, kx, strip + 5, "key plan", 2);
+  text(cr, kx, ky - 3, "key plan", 2);
   colour(cr, Rgb{220, 220, 220});
   cairo_rectangle(cr, kxf(0), kyf(layout.height), layout.width * k, layout.height * k);
   cairo_fill(cr);
@@ -283,6 +261,44 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   cairo_new_path(cr);
   cairo_arc(cr, kxf(ox), kyf(oy), 0.8, 0, 2 * M_PI);
   cairo_fill(cr);
+}
+
+void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet& set, size_t index,
+                          size_t total) {
+  const InstallerPlan& plan = set.plan;
+  const double w = plan.landscape ? plan.paper.long_side : plan.paper.short_side;
+  const double h = plan.landscape ? plan.paper.short_side : plan.paper.long_side;
+  frame(cr, w, h);
+  const InstallerSheet& sheet = plan.sheets[index];
+  View v;
+  v.window = sheet.window;
+  v.scale = plan.scale;
+  v.left = kLeftMargin + 14;  // the row-number strip (installer_sheets.cpp)
+  v.top = kMargin;
+  cairo_save(cr);
+  v.rect(cr, sheet.window);  // the window is the viewport, or less where it ends at a joint
+  cairo_clip(cr);
+  draw_pieces(cr, layout, v, true);
+  colour(cr, Rgb{85, 85, 85});
+  cairo_set_line_width(cr, 0.1);
+  for (const InstallerPiece& p : plan.pieces)
+    for (const Rect& r : p.parts) v.rect(cr, r), cairo_stroke(cr);
+  draw_labels(cr, plan, v, index);
+  cairo_restore(cr);
+  // The start corner, when it is on this sheet.
+  const double sx = from_right(layout.origin) ? layout.width : 0;
+  const double sy = from_top(layout.origin) ? layout.height : 0;
+  if (sx >= sheet.window.x && sx <= sheet.window.right() && sy >= sheet.window.y &&
+      sy <= sheet.window.top())
+    start_corner(cr, layout, v);
+  colour(cr, kInk);
+  box(cr, v.left, v.top, plan.viewport[0], plan.viewport[1], 0.35);
+
+  draw_match_lines(cr, plan, v, index);
+  if (layout.kind->laid_in_courses()) draw_course_numbers(cr, set, sheet, v);
+  const double strip = h - kMargin - kTitleStrip;
+  const double kx = kLeftMargin + 4, kw = 70;
+  draw_key_plan(cr, layout, plan, index, kx, strip + 8, kw, kTitleStrip - 12);
 
   // What the sheet holds, and the title block.
   const SheetContents& held = set.contents[index];

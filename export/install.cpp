@@ -66,38 +66,10 @@ void write_element(std::ostream& out, const Layout& layout, const Element& e, co
   out << "</g>\n";
 }
 
-}  // namespace
-
-void write_install_svg(std::ostream& out, const Layout& layout, const InstallerPlan& plan) {
-  const Provenance& title = layout.source;
-  const double s = plan.scale, W = layout.width, H = layout.height;
-  const Rect& first = plan.sheets.front().window;
-  const Rect& last = plan.sheets.back().window;
-  // The sheets' grid, the row strip on its left, column numbers under it and a heading above.
-  const Frame f{first.x - kRowStripMm * s, last.top() + kHeadingMm * s};
-  const double width = last.right() + 2 * s - f.left;
-  const double height = f.top - (first.y - kColumnStripMm * s);
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out << fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}mm\" height=\"{}mm\" "
-      "viewBox=\"0 0 {} {}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
-      num(width / s), num(height / s), num(width), num(height));
-  out << fmt::format("<title>{} - installation map at 1 : {:g}, seed {}</title>\n",
-                     xml_escape(title.recipe), s, title.seed);
-  // The surface (the first rectangle: readers find the layout's frame by it).
-  const bool outlined = !layout.outline.empty();  // then the outline is drawn, not the frame
-  out << fmt::format(
-      "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"{}\" "
-      "stroke-width=\"{}\"/>\n",
-      num(f.x(0)), num(f.y(H)), num(W), num(H), outlined ? "none" : "#222", num(0.35 * s));
-  // The heading, two short lines so that it fits over the narrowest map.
-  const double heading = 2.5 / kCapHeightEm * s;
-  out << fmt::format(
-      "<g id=\"heading\" font-size=\"{}\" fill=\"#222\"><text x=\"{}\" y=\"{}\" "
-      "font-weight=\"bold\">{}</text><text x=\"{}\" y=\"{}\">installation map 1 : {:g}, IDs "
-      "{:.1f} mm; the grid: the sheets of layout.pdf</text></g>\n",
-      num(heading), num(f.x(first.x)), num(3.5 * s), xml_escape(title.recipe), num(f.x(first.x)),
-      num(8 * s), s, plan.text_mm);
+// What is laid: paper beyond the outline, the outline, openings, fabrication sheets and the
+// elements.
+void write_surface(std::ostream& out, const Layout& layout, const Frame& f, double s) {
+  const bool outlined = !layout.outline.empty();
   out << "<g id=\"outside\" fill=\"#fff\">\n";  // beyond the outline: paper
   for (const Rect& o : layout.outside)
     out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(f.x(o.x)),
@@ -130,29 +102,30 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
       num(0.1 * s));
   for (const Element& e : layout.elements) write_element(out, layout, e, f);
   out << "</g>\n";
+}
 
-  // The installer's sheets, each named in its match-line captions.
-  if (plan.sheets.size() > 1) {
+// The installer's sheets, each named in its match-line captions.
+void write_sheet_grid(std::ostream& out, const InstallerPlan& plan, const Frame& f, double s) {
+  out << fmt::format(
+      "<g id=\"installer-sheets\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" "
+      "stroke-dasharray=\"{} {} {} {}\">\n",
+      kBlue, num(0.5 * s), num(6 * s), num(1.5 * s), num(s), num(1.5 * s));
+  for (size_t i = 0; i < plan.sheets.size(); ++i) {
+    const Rect& w = plan.sheets[i].window;
     out << fmt::format(
-        "<g id=\"installer-sheets\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" "
-        "stroke-dasharray=\"{} {} {} {}\">\n",
-        kBlue, num(0.5 * s), num(6 * s), num(1.5 * s), num(s), num(1.5 * s));
-    for (size_t i = 0; i < plan.sheets.size(); ++i) {
-      const Rect& w = plan.sheets[i].window;
-      out << fmt::format(
-          "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"><title>sheet {}</title></rect>\n",
-          num(f.x(w.x)), num(f.y(w.top())), num(w.w), num(w.h), installer_sheet_number(i));
-    }
-    out << "</g>\n<g id=\"sheet-numbers\">\n";
-    for (const MatchCaption& c : plan.captions)
-      out << centred_text(f.x(c.box.x + c.box.w / 2), f.y(c.box.y + c.box.h / 2), kMatchCaptionMm,
-                          s, fmt::format("sheet {}", installer_sheet_number(c.sheet)), c.vertical,
-                          kBlue)
-          << "\n";
-    out << "</g>\n";
+        "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"><title>sheet {}</title></rect>\n",
+        num(f.x(w.x)), num(f.y(w.top())), num(w.w), num(w.h), installer_sheet_number(i));
   }
+  out << "</g>\n<g id=\"sheet-numbers\">\n";
+  for (const MatchCaption& c : plan.captions)
+    out << centred_text(f.x(c.box.x + c.box.w / 2), f.y(c.box.y + c.box.h / 2), kMatchCaptionMm, s,
+                        fmt::format("sheet {}", installer_sheet_number(c.sheet)), c.vertical, kBlue)
+        << "\n";
+  out << "</g>\n";
+}
 
-  // Labels as planned: leaders first, so that none crosses another's label.
+// Labels as planned: leaders first, so that none crosses another's label.
+void write_labels(std::ostream& out, const InstallerPlan& plan, const Frame& f, double s) {
   out << fmt::format("<g id=\"leaders\" stroke=\"#222\" stroke-width=\"{}\" fill=\"#222\">\n",
                      num(0.15 * s));
   for (const InstallerLabel& l : plan.labels) {
@@ -179,48 +152,89 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
         << "\n";
   }
   out << "</g>\n";
+}
 
-  // Row numbers in the strip on the left, column numbers under the grid, where they read.
-  if (layout.kind->laid_in_courses()) {
-    const LayingExtents extents = laying_extents(layout);
-    const double cap = 2.5;
-    out << fmt::format("<g id=\"rows\" font-size=\"{}\" fill=\"{}\">\n",
-                       num(cap / kCapHeightEm * s), kRed);
-    double last_at = -1e300;
-    for (const auto& [row, extent] : extents.rows) {
-      const double mid = (extent.first + extent.second) / 2;
-      if (std::fabs(mid - last_at) < 3.2 * s) continue;
-      last_at = mid;
-      out << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">R{}</text>\n",
-                         num(f.x(first.x) - 1.5 * s), num(f.y(mid) + cap / 2 * s), row);
-    }
-    last_at = -1e300;
-    for (const auto& [column, extent] : extents.columns) {
-      const double mid = (extent.first + extent.second) / 2;
-      const std::string t = fmt::format("C{}", column);
-      if (std::fabs(mid - last_at) < (label_width_mm(t.size(), cap) + 1.5) * s) continue;
-      last_at = mid;
-      out << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                         num(f.x(mid)), num(f.y(first.y) + 4.5 * s), t);
-    }
-    out << "</g>\n";
-
-    // Where laying starts, as on the drawing set's sheets.
-    const bool right = from_right(layout.origin), top = from_top(layout.origin);
-    const double dx = right ? -1 : 1, dy = top ? 1 : -1;  // drawing y runs down
-    const double ox = f.x(right ? W : 0) - dx * kStartDotMm * s;
-    const double oy = f.y(top ? H : 0) - dy * kStartDotMm * s;
-    out << fmt::format(
-        "<g id=\"laying-order\" stroke=\"{0}\" stroke-width=\"{1}\" fill=\"{0}\">"
-        "<circle cx=\"{2}\" cy=\"{3}\" r=\"{4}\"/>"
-        "<path fill=\"none\" d=\"M{2} {3}l{5} 0M{2} {3}l0 {6}\"/>"
-        "<text x=\"{7}\" y=\"{8}\" stroke=\"none\" font-size=\"{9}\" text-anchor=\"{10}\">{11}"
-        "</text></g>\n",
-        kRed, num(0.35 * s), num(ox), num(oy), num(1.2 * s), num(dx * kStartArrowMm * s),
-        num(dy * kStartArrowMm * s), num(ox + dx * (kStartArrowMm + 2) * s),
-        num(oy + kStartTextMm / 2 * s), num(kStartTextMm / kCapHeightEm * s),
-        right ? "end" : "start", kStartText);
+// Row numbers in the strip on the left, column numbers under the grid where they read, and
+// where laying starts, as on the drawing set's sheets.
+void write_courses(std::ostream& out, const Layout& layout, const Rect& first, const Frame& f,
+                   double s) {
+  const double W = layout.width, H = layout.height;
+  const LayingExtents extents = laying_extents(layout);
+  const double cap = 2.5;
+  out << fmt::format("<g id=\"rows\" font-size=\"{}\" fill=\"{}\">\n", num(cap / kCapHeightEm * s),
+                     kRed);
+  double last_at = -1e300;
+  for (const auto& [row, extent] : extents.rows) {
+    const double mid = (extent.first + extent.second) / 2;
+    if (std::fabs(mid - last_at) < 3.2 * s) continue;
+    last_at = mid;
+    out << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">R{}</text>\n",
+                       num(f.x(first.x) - 1.5 * s), num(f.y(mid) + cap / 2 * s), row);
   }
+  last_at = -1e300;
+  for (const auto& [column, extent] : extents.columns) {
+    const double mid = (extent.first + extent.second) / 2;
+    const std::string t = fmt::format("C{}", column);
+    if (std::fabs(mid - last_at) < (label_width_mm(t.size(), cap) + 1.5) * s) continue;
+    last_at = mid;
+    out << fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", num(f.x(mid)),
+                       num(f.y(first.y) + 4.5 * s), t);
+  }
+  out << "</g>\n";
+
+  // Where laying starts, as on the drawing set's sheets.
+  const bool right = from_right(layout.origin), top = from_top(layout.origin);
+  const double dx = right ? -1 : 1, dy = top ? 1 : -1;  // drawing y runs down
+  const double ox = f.x(right ? W : 0) - dx * kStartDotMm * s;
+  const double oy = f.y(top ? H : 0) - dy * kStartDotMm * s;
+  out << fmt::format(
+      "<g id=\"laying-order\" stroke=\"{0}\" stroke-width=\"{1}\" fill=\"{0}\">"
+      "<circle cx=\"{2}\" cy=\"{3}\" r=\"{4}\"/>"
+      "<path fill=\"none\" d=\"M{2} {3}l{5} 0M{2} {3}l0 {6}\"/>"
+      "<text x=\"{7}\" y=\"{8}\" stroke=\"none\" font-size=\"{9}\" text-anchor=\"{10}\">{11}"
+      "</text></g>\n",
+      kRed, num(0.35 * s), num(ox), num(oy), num(1.2 * s), num(dx * kStartArrowMm * s),
+      num(dy * kStartArrowMm * s), num(ox + dx * (kStartArrowMm + 2) * s),
+      num(oy + kStartTextMm / 2 * s), num(kStartTextMm / kCapHeightEm * s), right ? "end" : "start",
+      kStartText);
+}
+
+}  // namespace
+
+void write_install_svg(std::ostream& out, const Layout& layout, const InstallerPlan& plan) {
+  const Provenance& title = layout.source;
+  const double s = plan.scale, W = layout.width, H = layout.height;
+  const Rect& first = plan.sheets.front().window;
+  const Rect& last = plan.sheets.back().window;
+  // The sheets' grid, the row strip on its left, column numbers under it and a heading above.
+  const Frame f{first.x - kRowStripMm * s, last.top() + kHeadingMm * s};
+  const double width = last.right() + 2 * s - f.left;
+  const double height = f.top - (first.y - kColumnStripMm * s);
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out << fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}mm\" height=\"{}mm\" "
+      "viewBox=\"0 0 {} {}\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
+      num(width / s), num(height / s), num(width), num(height));
+  out << fmt::format("<title>{} - installation map at 1 : {:g}, seed {}</title>\n",
+                     xml_escape(title.recipe), s, title.seed);
+  // The surface (the first rectangle: readers find the layout's frame by it).
+  const bool outlined = !layout.outline.empty();  // then the outline is drawn, not the frame
+  out << fmt::format(
+      "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"{}\" "
+      "stroke-width=\"{}\"/>\n",
+      num(f.x(0)), num(f.y(H)), num(W), num(H), outlined ? "none" : "#222", num(0.35 * s));
+  // The heading, two short lines so that it fits over the narrowest map.
+  const double heading = 2.5 / kCapHeightEm * s;
+  out << fmt::format(
+      "<g id=\"heading\" font-size=\"{}\" fill=\"#222\"><text x=\"{}\" y=\"{}\" "
+      "font-weight=\"bold\">{}</text><text x=\"{}\" y=\"{}\">installation map 1 : {:g}, IDs "
+      "{:.1f} mm; the grid: the sheets of layout.pdf</text></g>\n",
+      num(heading), num(f.x(first.x)), num(3.5 * s), xml_escape(title.recipe), num(f.x(first.x)),
+      num(8 * s), s, plan.text_mm);
+  write_surface(out, layout, f, s);
+  if (plan.sheets.size() > 1) write_sheet_grid(out, plan, f, s);
+  write_labels(out, plan, f, s);
+  if (layout.kind->laid_in_courses()) write_courses(out, layout, first, f, s);
   out << "</svg>\n";
 }
 

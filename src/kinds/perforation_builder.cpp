@@ -118,12 +118,11 @@ void summarise_sheets(Layout& layout, const LayoutSpec& spec) {
                                        layout.sheets.size(), 100 * least, 100 * most));
 }
 
-}  // namespace
-
-void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
-  std::vector<Element> cells = std::move(layout.elements);
-  layout.elements.clear();
-  layout.element_type = "opening";
+// The openings of each cell: its curds' circles, those that overlap merged (mix) or joined
+// (keep), in laying order.
+std::vector<Hole> make_holes(const std::vector<Element>& cells, const Design& design,
+                             const LayoutSpec& spec) {
+  const PerforationKeys& keys = spec.own<PerforationKeys>();
   std::vector<Hole> holes;
   for (const Element& cell : cells) {
     if (cell.value == 0) continue;
@@ -131,9 +130,8 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
     std::vector<Circle> circles;
     for (size_t c = 0; c < design.curds.size(); ++c)
       if (cell.value >> c & 1)
-        circles.push_back(Circle{cx + spec.own<PerforationKeys>().holes[c].offset_x,
-                                 cy + spec.own<PerforationKeys>().holes[c].offset_y,
-                                 spec.own<PerforationKeys>().holes[c].diameter});
+        circles.push_back(Circle{cx + keys.holes[c].offset_x, cy + keys.holes[c].offset_y,
+                                 keys.holes[c].diameter});
     int index = 0;
     for (const std::vector<Circle>& group : overlapping_groups(circles)) {
       Hole h;
@@ -154,7 +152,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         double area = 0, mx = 0, my = 0;
         for (const Circle& c : group)
           area += c.area(), mx += c.area() * c.cx, my += c.area() * c.cy;
-        const double d = nearest_punch(spec.own<PerforationKeys>().punches, area);
+        const double d = nearest_punch(keys.punches, area);
         const Circle merged{mx / area, my / area, d};
         h.element.circle = merged;
         h.parts = {merged};
@@ -162,30 +160,31 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         h.element.circle = *whole;  // the others lie inside it: the union is that circle
         h.parts = {*whole};
       } else {
-        h.element.outline =
-            union_of_circles(group, spec.own<PerforationKeys>().chord_tolerance).front();
+        h.element.outline = union_of_circles(group, keys.chord_tolerance).front();
         h.parts = group;
       }
       holes.push_back(std::move(h));
     }
   }
 
-  // Fabrication rules, in laying order so that reports and fixes are reproducible.
-  const bool fix = spec.own<PerforationKeys>().fix == HoleFix::drop;
-  layout.drops_violations = fix;
-  layout.chord_tolerance = spec.own<PerforationKeys>().chord_tolerance;
+  return holes;
+}
+
+// The fabrication rules, in laying order so that reports and fixes are reproducible: smallest
+// diameter, edge margin, then the bridge between neighbouring openings.
+void apply_rules(std::vector<Hole>& holes, Layout& layout, const PerforationKeys& keys) {
+  const bool fix = keys.fix == HoleFix::drop;
   auto drop = [&](Hole& h, const std::string& why) {
     layout.violations.push_back(h.element.id + ": " + why + (fix ? "; dropped" : ""));
     if (fix) h.dropped = true;
   };
   for (Hole& h : holes) {
-    if (h.element.circle && h.element.circle->d < spec.own<PerforationKeys>().min_diameter - 1e-9)
+    if (h.element.circle && h.element.circle->d < keys.min_diameter - 1e-9)
       drop(h, fmt::format("diameter {:.2f} mm is below the minimum {:.2f} mm", h.element.circle->d,
-                          spec.own<PerforationKeys>().min_diameter));
-    else if (const double gap = edge_gap(h, layout);
-             gap < spec.own<PerforationKeys>().edge_margin - 1e-9)
+                          keys.min_diameter));
+    else if (const double gap = edge_gap(h, layout); gap < keys.edge_margin - 1e-9)
       drop(h, fmt::format("{:.2f} mm from the sheet edge, below the margin {:.2f} mm", gap,
-                          spec.own<PerforationKeys>().edge_margin));
+                          keys.edge_margin));
   }
   std::map<std::pair<int64_t, int64_t>, std::vector<size_t>> by_cell;
   for (size_t i = 0; i < holes.size(); ++i)
@@ -199,57 +198,61 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
         for (size_t j : it->second) {
           if (j <= i || holes[j].dropped) continue;
           const double gap = bridge(holes[i].parts, holes[j].parts);
-          if (gap >= spec.own<PerforationKeys>().min_bridge - 1e-9) continue;
+          if (gap >= keys.min_bridge - 1e-9) continue;
           // The smaller opening goes (the later one on a tie), so the larger keeps its place.
           Hole& loser = holes[i].element.area() < holes[j].element.area() ? holes[i] : holes[j];
           const Hole& other = &loser == &holes[i] ? holes[j] : holes[i];
           drop(loser, fmt::format("bridge {:.2f} mm to {} is below {:.2f} mm", gap,
-                                  other.element.id, spec.own<PerforationKeys>().min_bridge));
+                                  other.element.id, keys.min_bridge));
           if (holes[i].dropped) break;
         }
       }
   }
+}
 
-  // Fabrication sheets: every opening keeps the edge margin inside its own sheet, so one that
-  // crosses a seam or comes within the margin of it is dropped (the stated rule), and reported.
-  if (spec.own<PerforationKeys>().sheet_size) {
-    const double sw = (*spec.own<PerforationKeys>().sheet_size)[0],
-                 sh = (*spec.own<PerforationKeys>().sheet_size)[1];
-    const int nx = static_cast<int>(std::ceil(layout.width / sw - 1e-9));
-    const int ny = static_cast<int>(std::ceil(layout.height / sh - 1e-9));
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        layout.sheets.push_back({fmt::format("S-R{}-C{}", j + 1, i + 1),
-                                 Rect{i * sw, j * sh, std::min(sw, layout.width - i * sw),
-                                      std::min(sh, layout.height - j * sh)}});
-    for (Hole& h : holes) {
-      if (h.dropped) continue;
-      const Circle& first = h.parts.front();
-      const int i = std::clamp(static_cast<int>(first.cx / sw), 0, nx - 1);
-      const int j = std::clamp(static_cast<int>(first.cy / sh), 0, ny - 1);
-      const int index = j * nx + i;
-      const Rect& a = layout.sheets[index].area;
-      double gap = 1e300;
-      for (const Circle& c : h.parts) {
-        const double r = c.d / 2;
-        gap = std::min(
-            {gap, c.cx - r - a.x, a.right() - c.cx - r, c.cy - r - a.y, a.top() - c.cy - r});
-      }
-      // A seam keeps the edge margin on each side, and never less than a bridge.
-      const double clear =
-          std::max(spec.own<PerforationKeys>().edge_margin, spec.own<PerforationKeys>().min_bridge);
-      if (gap < clear - 1e-9) {
-        layout.violations.push_back(
-            fmt::format("{}: {:.2f} mm from the edge of sheet {}, below {:.2f} mm; dropped "
-                        "(openings never cross a seam)",
-                        h.element.id, gap, layout.sheets[index].id, clear));
-        h.dropped = true;
-      } else {
-        h.element.sheet = index;
-      }
+// Fabrication sheets of at most `size`: every opening keeps the edge margin inside its own
+// sheet, so one that crosses a seam or comes within the margin of it is dropped (the stated
+// rule), and reported.
+void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const PerforationKeys& keys) {
+  if (!keys.sheet_size) return;
+  const double sw = (*keys.sheet_size)[0], sh = (*keys.sheet_size)[1];
+  const int nx = static_cast<int>(std::ceil(layout.width / sw - 1e-9));
+  const int ny = static_cast<int>(std::ceil(layout.height / sh - 1e-9));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      layout.sheets.push_back({fmt::format("S-R{}-C{}", j + 1, i + 1),
+                               Rect{i * sw, j * sh, std::min(sw, layout.width - i * sw),
+                                    std::min(sh, layout.height - j * sh)}});
+  for (Hole& h : holes) {
+    if (h.dropped) continue;
+    const Circle& first = h.parts.front();
+    const int i = std::clamp(static_cast<int>(first.cx / sw), 0, nx - 1);
+    const int j = std::clamp(static_cast<int>(first.cy / sh), 0, ny - 1);
+    const int index = j * nx + i;
+    const Rect& a = layout.sheets[index].area;
+    double gap = 1e300;
+    for (const Circle& c : h.parts) {
+      const double r = c.d / 2;
+      gap =
+          std::min({gap, c.cx - r - a.x, a.right() - c.cx - r, c.cy - r - a.y, a.top() - c.cy - r});
+    }
+    // A seam keeps the edge margin on each side, and never less than a bridge.
+    const double clear = std::max(keys.edge_margin, keys.min_bridge);
+    if (gap < clear - 1e-9) {
+      layout.violations.push_back(
+          fmt::format("{}: {:.2f} mm from the edge of sheet {}, below {:.2f} mm; dropped "
+                      "(openings never cross a seam)",
+                      h.element.id, gap, layout.sheets[index].id, clear));
+      h.dropped = true;
+    } else {
+      h.element.sheet = index;
     }
   }
+}
 
+// The sheets cut along an outline (a sheet wholly beyond it is not made), and the openings
+// kept on them; returns the open area.
+double keep_on_sheets(std::vector<Hole>& holes, Layout& layout) {
   if (layout.sheets.empty())
     layout.sheets.push_back({"S-R1-C1", {0, 0, layout.width, layout.height}});
   // An outline cuts the sheets to it; a sheet wholly beyond it is not cut at all.
@@ -278,7 +281,23 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
     open += h.element.area();
     layout.elements.push_back(std::move(h.element));
   }
-  layout.open_area = surface > 0 ? open / surface : 0;
+  return surface > 0 ? open / surface : 0;
+}
+
+}  // namespace
+
+void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
+  const PerforationKeys& keys = spec.own<PerforationKeys>();
+  std::vector<Element> cells = std::move(layout.elements);
+  layout.elements.clear();
+  layout.element_type = "opening";
+  std::vector<Hole> holes = make_holes(cells, design, spec);
+  const bool fix = keys.fix == HoleFix::drop;
+  layout.drops_violations = fix;
+  layout.chord_tolerance = keys.chord_tolerance;
+  apply_rules(holes, layout, keys);
+  cut_into_sheets(holes, layout, keys);
+  layout.open_area = keep_on_sheets(holes, layout);
   const size_t broken = layout.violations.size();
   summarise_sheets(layout, spec);
   // The legend keeps counting cells of each value (as the report does); value 0 is bare sheet.
@@ -294,8 +313,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
                         ? std::string("1 sheet is")
                         : fmt::format("{} sheets are", layout.violations.size() - broken)));
   layout.notes.push_back(fmt::format("open area {:.2f} % of the sheet; sheet {} mm thick",
-                                     100 * layout.open_area,
-                                     spec.own<PerforationKeys>().thickness));
+                                     100 * layout.open_area, keys.thickness));
 }
 
 }  // namespace curdle
