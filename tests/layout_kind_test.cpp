@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
+#include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -178,7 +180,8 @@ TEST(LayoutKind, AKeyTheKindDoesNotReadIsRefused) {
     return true;
   }();
   ASSERT_TRUE(registered);
-  EXPECT_NO_THROW(run_of(kStones, {"layout.kind=\"forgetful-stones\""}));
+  // Even when the recipe leaves it out: the reader must ask for every key its kind lists.
+  EXPECT_THROW(run_of(kStones, {"layout.kind=\"forgetful-stones\""}), std::logic_error);
   try {
     run_of(kStones, {"layout.kind=\"forgetful-stones\"", "layout.edging=\"steel\""});
     FAIL() << "layout.edging was accepted and never read";
@@ -206,6 +209,91 @@ highlight = [0, 0, 2, 1]
     FAIL() << "layout.highlight was accepted on a rhythm";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("highlight"), std::string::npos) << e.what();
+  }
+}
+
+// The [layout] keys patterns/README.md documents, each with the kinds it names: the key table
+// of "## Layouts" (its kinds column; "all" is every kind), the ordering table (every kind) and
+// each kind's own section ("### Park (`kind = "park"`)").
+std::map<std::string, std::set<std::string>> documented_layout_keys() {
+  const std::vector<std::string> all = {"tile", "paving", "facade", "perforation",
+                                        "park", "rhythm", "blocks"};
+  std::ifstream in(std::string(CURDLE_SOURCE_DIR) + "/patterns/README.md");
+  std::map<std::string, std::set<std::string>> keys;
+  std::string line, section;
+  bool kinds_column = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("## ", 0) == 0) section = line == "## Layouts" ? "all" : "";
+    if (line.rfind("### ", 0) == 0) {
+      const size_t q = line.find("kind = \"");
+      section = q == std::string::npos ? "" : line.substr(q + 8, line.find('"', q + 8) - q - 8);
+    }
+    if (line.rfind("| key | kinds |", 0) == 0) kinds_column = true;
+    if (line.rfind("| key | type |", 0) == 0) kinds_column = false;
+    if (section.empty() || line.rfind("| `layout.", 0) != 0) continue;
+    const std::string key = line.substr(10, line.find('`', 10) - 10);
+    std::set<std::string>& kinds = keys[key];
+    if (section != "all") {
+      kinds.insert(section);
+    } else if (!kinds_column) {  // the ordering table: every kind
+      kinds.insert(all.begin(), all.end());
+    } else {
+      const size_t a = line.find('|', 3) + 1, b = line.find('|', a);
+      std::string named = line.substr(a, b - a);
+      if (named.find("all") != std::string::npos || named.find_first_not_of(' ') == named.npos)
+        kinds.insert(all.begin(), all.end());
+      for (const std::string& k : all)
+        if (named.find(k) != std::string::npos) kinds.insert(k);
+    }
+  }
+  return keys;
+}
+
+// The smallest recipe of each kind that reads.
+std::string minimal_recipe(const std::string& kind) {
+  const int dimension = kind == "rhythm" ? 1 : kind == "blocks" ? 3 : 2;
+  std::string text =
+      "name = \"keys\"\n[lattice]\nbase = 2\ndimension = " + std::to_string(dimension) +
+      "\n[[curds]]\nname = \"c\"\nprobabilities = [\"3/4\", \"2/3\"]\n"
+      "[layout]\nkind = \"" +
+      kind + "\"\n";
+  if (kind == "paving") text += "floor = [3000, 3000]\n";
+  if (kind == "facade") text += "wall = [3000, 3000]\n";
+  if (kind == "perforation")
+    text += "sheet = [1200, 1200]\nthickness = 2\nholes = [{diameter = 100}]\n";
+  if (kind == "park")
+    text += "elements = [{type = \"tree\", form = \"object\", size = [200, 200]}]\n";
+  if (kind == "rhythm") text += "widths = [0, 100]\n";
+  return text;
+}
+
+// Each key of patterns/README.md's tables is taken by the kinds it names and refused by the
+// others; every key a kind takes is documented for it.
+TEST(LayoutKind, TheReadmesKeyTableIsWhatEachKindReads) {
+  const auto documented = documented_layout_keys();
+  ASSERT_GT(documented.size(), 40u);
+  for (const char* kind : {"tile", "paving", "facade", "perforation", "park", "rhythm", "blocks"}) {
+    ASSERT_NO_THROW(run_of(minimal_recipe(kind))) << kind;
+    for (const auto& [key, kinds] : documented) {
+      if (key == "kind") continue;
+      // A value no key takes: a key the kind reads is refused for its value, any other as
+      // unknown.
+      std::string message = "(accepted)";
+      try {
+        run_of(minimal_recipe(kind), {"layout." + key + "=[\"?\"]"});
+      } catch (const InputError& e) {
+        message = e.what();
+      }
+      const bool refused_as_unknown =
+          message.find("unknown key '" + key + "'") != std::string::npos ||
+          message.find("'" + key + "' is not read") != std::string::npos;
+      EXPECT_EQ(refused_as_unknown, !kinds.count(kind))
+          << "layout." << key << " on a " << kind << " layout: " << message;
+    }
+    for (const std::string& key : reading::layout_keys(layout_kind(kind)))
+      EXPECT_TRUE(documented.count(key) && documented.at(key).count(kind))
+          << "layout." << key << " is taken by a " << kind
+          << " layout but patterns/README.md does not say so";
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "curdle/text.h"
 #include "kinds/registry.h"
@@ -185,6 +186,13 @@ void read_drawing_scale(TableReader& r, LayoutSpec& spec) {
   if (spec.drawing.dpi > 1200) r.fail("dpi", "must be from 10 to 1200");
 }
 
+std::vector<std::string> layout_keys(const LayoutKind& kind) {
+  std::vector<std::string> keys = kEveryKind;
+  const std::vector<std::string> own = kind.keys();
+  keys.insert(keys.end(), own.begin(), own.end());
+  return keys;
+}
+
 std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool field_given) {
   const toml::table* t = read_table(top, "layout");
   if (!t) return std::nullopt;
@@ -197,9 +205,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   if (!kind)
     top.fail_node(*t->get("kind"), "layout.kind",
                   "unknown element kind \"" + name + "\"; allowed: " + layout_kind_names());
-  std::vector<std::string> keys = kEveryKind;
-  const std::vector<std::string> own = kind->keys();
-  keys.insert(keys.end(), own.begin(), own.end());
+  const std::vector<std::string> keys = layout_keys(*kind);
   TableReader r(*t, "layout", top.source(), keys);
 
   LayoutSpec spec;
@@ -214,6 +220,10 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
                        "-D");
   kind->read(r, design, spec, field_given);
   r.report_unused("is not read by a " + std::string(kind->name()) + " layout");
+  // A key the kind lists but its reader never asks for would pass unread: a programming error.
+  if (const auto unread = r.never_asked(); !unread.empty())
+    throw std::logic_error("the " + std::string(kind->name()) +
+                           " kind lists keys its reader never asks for: " + join(unread));
   return spec;
 }
 

@@ -14,6 +14,9 @@ namespace curdle::reading {
 // line sizes the field when `field_given` is false, and must fit in it when true.
 std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool field_given);
 
+// Every key a [layout] of this kind takes: those every kind takes, then the kind's own.
+std::vector<std::string> layout_keys(const LayoutKind& kind);
+
 // Keys every kind takes: the schedules' ordering and the drawing's colours and scale.
 void read_ordering(TableReader& r, LayoutSpec& spec);
 void read_value_colours(TableReader& r, const Design& design, LayoutSpec& spec);

@@ -203,6 +203,13 @@ void TableReader::reject_unknown() const {
   }
 }
 
+std::vector<std::string> TableReader::never_asked() const {
+  std::vector<std::string> keys;
+  for (const std::string& k : known_)
+    if (!asked_.count(k)) keys.push_back(k);
+  return keys;
+}
+
 void TableReader::report_unused(const std::string& why) const {
   for (auto&& [k, v] : table_) {
     const std::string key(k.str());

@@ -62,6 +62,8 @@ class TableReader {
   // After the readers have run: a key present that none of them asked for is an error, `why`
   // (as pbrt's ReportUnused), so that no key is accepted and then silently ignored.
   void report_unused(const std::string& why) const;
+  // The allowed keys no reader asked for: a reader that lists a key it never reads.
+  std::vector<std::string> never_asked() const;
 
   const Source& source() const { return source_; }
 
