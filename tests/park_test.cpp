@@ -1,0 +1,108 @@
+// Tests of park.h.
+#include "kinds/park.h"
+
+#include <gtest/gtest.h>
+
+#include "layout_support.h"
+
+namespace curdle {
+using test::design;
+
+namespace {
+
+// The paper's park (fig. 5): trees, benches and grey paving on 3 x 3 m cells, 300 mm clear.
+LayoutSpec trees_and_benches() {
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("park"));
+  spec.module_w = spec.module_h = 3000;
+  spec.own<ParkKeys>().clearance = 300;
+  spec.own<ParkKeys>().elements = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
+                                   {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
+                                   {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
+  return spec;
+}
+
+}  // namespace
+
+TEST(Park, AnOutlineIsCoveredAndObjectsStandWholeInsideIt) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = trees_and_benches();
+  // 48 x 48 m less a sloping cut across one corner and a step along x and y.
+  const Polygon site = {{0, 0},         {30000, 0},     {48000, 20000}, {48000, 48000},
+                        {20000, 48000}, {20000, 40000}, {0, 40000}};
+  spec.outline = site;
+  spec.size = std::array<double, 2>{48000, 48000};
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    const Layout layout = lay_floor(d, spec, seed);
+    double surfaces = 0;
+    size_t shaped = 0;
+    for (const Element& e : layout.elements) {
+      if (e.type == "grey paving" || e.type == "white paving") {
+        surfaces += e.area();
+        shaped += e.outline.has_value();
+        continue;
+      }
+      const Rect box = laid_bounds(e);
+      for (const auto& corner : {std::array<double, 2>{box.x, box.y},
+                                 {box.right(), box.y},
+                                 {box.right(), box.top()},
+                                 {box.x, box.top()}})
+        EXPECT_TRUE(contains(site, corner[0], corner[1])) << e.id << " stands beyond the site";
+    }
+    EXPECT_NEAR(surfaces, polygon_area(site), 1e-2) << "seed " << seed;
+    EXPECT_GT(shaped, 3u) << "surfaces along the sloping edge are cut to shape";
+    std::ostringstream svg;
+    write_layout_svg(svg, layout);
+    EXPECT_NE(svg.str().find("id=\"outline\""), std::string::npos);
+  }
+}
+
+TEST(Park, ElementsShareCellsWithoutOverlapAndSurfacesCoverTheArea) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = trees_and_benches();
+  for (uint64_t seed = 1; seed <= 5; ++seed) {
+    const CurdField f = curdle(d, seed, d.field);
+    const Layout layout = make_layout(d, f, d.field, spec);
+    std::map<std::pair<int64_t, int64_t>, std::vector<const Element*>> cells;
+    std::map<std::string, uint64_t> per_type;
+    double surfaces = 0;
+    for (const Element& e : layout.elements) {
+      cells[{e.row, e.column}].push_back(&e);
+      ++per_type[e.type];
+      if (e.type == "grey paving" || e.type == "white paving") surfaces += e.area();
+    }
+    EXPECT_NEAR(surfaces, layout.width * layout.height, 1e-3);  // surfaces tile the whole park
+    const auto counts = value_counts(f);
+    uint64_t trees = 0, benches = 0;
+    for (uint32_t v = 0; v < 8; ++v)
+      trees += (v & 1) ? counts[v] : 0, benches += (v & 2) ? counts[v] : 0;
+    EXPECT_EQ(per_type["tree"], trees);
+    EXPECT_EQ(per_type["bench"], benches);
+    for (const auto& [cell, list] : cells) {
+      std::vector<Rect> boxes;  // objects' footprints, to check clearances
+      for (const Element* e : list) {
+        if (e->type != "tree" && e->type != "bench") continue;
+        const Rect box = e->circle
+                             ? Rect{e->circle->cx - e->circle->d / 2,
+                                    e->circle->cy - e->circle->d / 2, e->circle->d, e->circle->d}
+                             : e->shape[0];
+        const Rect& n = e->nominal;  // at least the clearance inside the cell
+        EXPECT_GE(box.x - n.x, 300 - 1e-9);
+        EXPECT_GE(n.right() - box.right(), 300 - 1e-9);
+        EXPECT_GE(box.y - n.y, 300 - 1e-9);
+        EXPECT_GE(n.top() - box.top(), 300 - 1e-9);
+        for (const Rect& other : boxes) {  // and the clearance apart
+          const double gap = std::max({other.x - box.right(), box.x - other.right(),
+                                       other.y - box.top(), box.y - other.top()});
+          EXPECT_GE(gap, 300 - 1e-9) << e->id;
+        }
+        boxes.push_back(box);
+      }
+    }
+    SvgSummary svg = parse_svg(svg_of(layout));
+    EXPECT_TRUE(svg.ids.count("type-tree") && svg.ids.count("type-bench") &&
+                svg.ids.count("type-grey-paving"));
+  }
+}
+
+}  // namespace curdle

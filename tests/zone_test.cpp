@@ -1,0 +1,25 @@
+// Tests of zone.h.
+#include "layout/zone.h"
+
+#include <gtest/gtest.h>
+
+#include "layout_support.h"
+
+namespace curdle {
+using test::design;
+
+TEST(Geometry, RectilinearPolygonsBecomeRectangles) {
+  const Polygon l = {{0, 0}, {3000, 0}, {3000, 1000}, {1000, 1000}, {1000, 2500}, {0, 2500}};
+  const auto rects = as_rectangles(l);
+  ASSERT_TRUE(rects);
+  double area = 0;
+  for (const Rect& r : *rects) area += r.area();
+  EXPECT_NEAR(area, polygon_area(l), 1e-9);
+  EXPECT_FALSE(as_rectangles({{0, 0}, {10, 0}, {10, 10}}));
+  EXPECT_TRUE(is_simple(l));
+  EXPECT_FALSE(is_simple({{0, 0}, {10, 10}, {10, 0}, {0, 10}}));  // a bow tie
+  EXPECT_TRUE(contains(l, 500, 2000));
+  EXPECT_FALSE(contains(l, 2000, 2000));
+}
+
+}  // namespace curdle
