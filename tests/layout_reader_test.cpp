@@ -1,0 +1,88 @@
+// Tests of layout_reader.h.
+#include "recipe/layout_reader.h"
+
+#include <gtest/gtest.h>
+
+#include "recipe_support.h"
+
+namespace curdle {
+TEST(Recipe, BondAndCentredOrigin) {
+  const std::string wall =
+      with_layout("kind = \"facade\"\npanel = [215, 65]\njoint = 10\nwall = [4000, 2000]\n");
+  Recipe r = parse_recipe(wall + "bond = \"half\"\norigin = \"centre\"\n", "r.toml");
+  EXPECT_DOUBLE_EQ(r.layout->bond, 0.5);
+  EXPECT_TRUE(r.layout->centred);
+  EXPECT_NEAR(r.layout->shift[0], centring_shift(4000, 215, 10), 1e-9);
+  EXPECT_GT(r.layout->shift[0], 0);
+  EXPECT_DOUBLE_EQ(parse_recipe(wall + "bond = \"third\"\n", "r.toml").layout->bond, 1.0 / 3);
+  EXPECT_DOUBLE_EQ(parse_recipe(wall + "bond = \"quarter\"\n", "r.toml").layout->bond, 0.25);
+  std::string e = error_of(wall + "bond = \"flemish\"\n");
+  EXPECT_NE(e.find("layout.bond"), std::string::npos) << e;
+  EXPECT_NE(e.find("\"stack\""), std::string::npos) << e;
+  e = error_of(wall + "origin = \"centre\"\nshift = [10, 10]\n");
+  EXPECT_NE(e.find("layout.shift"), std::string::npos) << e;
+  e = error_of(wall + "bond = \"half\"\ncombine = \"keep\"\n");
+  EXPECT_NE(e.find("mix"), std::string::npos) << e;
+  e = error_of(wall + "origin = \"middle\"\n");
+  EXPECT_NE(e.find("\"centre\""), std::string::npos) << e;
+}
+
+TEST(Recipe, Zones) {
+  const std::string floor =
+      with_layout("kind = \"paving\"\ntile = [600, 300]\nfloor = [12000, 8000]\n");
+  const std::string planter = "[[layout.zones]]\nname = \"planter\"\nrule = \"exclude\"\n";
+  Recipe r = parse_recipe(floor + planter + "rect = [7000, 3000, 2000, 3000]\n" +
+                              "[[layout.zones]]\nname = \"band\"\nrule = \"value\"\nvalue = 1\n"
+                              "polygon = [[0, 0], [12000, 0], [6000, 900]]\n",
+                          "r.toml");
+  ASSERT_EQ(r.layout->zones.size(), 2u);
+  EXPECT_EQ(r.layout->zones[0].rects.size(), 1u);
+  EXPECT_EQ(r.layout->zones[1].rule, ZoneRule::value);
+  EXPECT_EQ(r.layout->zones[1].value, 1u);
+  const std::vector<std::pair<std::string, std::string>> wrong = {
+      {planter + "rect = [7000, 3000, 9000, 3000]\n", "outside the surface"},
+      {planter + "polygon = [[0, 0], [1000, 1000], [1000, 0], [0, 1000]]\n", "simple polygon"},
+      {planter + "rect = [0, 0, nan, 10]\n", "layout.zones.0.rect"},
+      {planter, "either rect"},
+      {"[[layout.zones]]\nname = \"x\"\nrule = \"value\"\nvalue = 9\nrect = [0, 0, 10, 10]\n",
+       "layout.zones.0.value"},
+      {"[[layout.zones]]\nname = \"x\"\nrule = \"hide\"\nrect = [0, 0, 10, 10]\n", "\"exclude\""},
+  };
+  for (const auto& [zone, said] : wrong) {
+    const std::string e = error_of(floor + zone);
+    EXPECT_NE(e.find(said), std::string::npos) << zone << "\n" << e;
+  }
+}
+
+TEST(Recipe, Outline) {
+  const std::string head = with_layout("kind = \"paving\"\ntile = [600, 300]\n");
+  const Recipe r = parse_recipe(
+      head +
+          "outline = [[0, 0], [12000, 0], [12000, 5000], [8000, 5000], [8000, 8000], [0, 8000]]\n",
+      "r.toml");
+  ASSERT_TRUE(r.layout->size);
+  EXPECT_EQ(*r.layout->size, (std::array<double, 2>{12000, 8000}));
+  EXPECT_EQ(r.layout->outline.size(), 6u);
+  // Sloping and curved edges are cut along (a triangle here), but not in keep mode.
+  EXPECT_EQ(parse_recipe(head + "outline = [[0, 0], [1000, 0], [500, 900]]\n", "r.toml")
+                .layout->outline.size(),
+            3u);
+  EXPECT_NE(error_of(head + "combine = \"keep\"\noutline = [[0, 0], [1000, 0], [500, 900]]\n")
+                .find("combine = \"mix\""),
+            std::string::npos);
+  const std::vector<std::pair<std::string, std::string>> wrong = {
+      {"outline = [[-10, 0], [1000, 0], [1000, 900], [-10, 900]]\n", "from 0"},
+      {"floor = [500, 500]\noutline = [[0, 0], [1000, 0], [1000, 900], [0, 900]]\n",
+       "outside the surface"},
+      {"outline = [[0, 0], [1000, 0]]\n", "at least 3 corners"},
+  };
+  for (const auto& [text, said] : wrong) {
+    const std::string e = error_of(head + text);
+    EXPECT_NE(e.find("layout.outline"), std::string::npos) << text << "\n" << e;
+    EXPECT_NE(e.find(said), std::string::npos) << text << "\n" << e;
+  }
+  const std::string e = error_of(head);  // neither a floor nor an outline
+  EXPECT_NE(e.find("layout.floor"), std::string::npos) << e;
+}
+
+}  // namespace curdle

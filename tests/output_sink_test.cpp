@@ -1,0 +1,37 @@
+// Tests of output_sink.h.
+#include "app/output_sink.h"
+
+#include <gtest/gtest.h>
+
+#include "outputs_support.h"
+
+namespace fs = std::filesystem;
+
+namespace curdle::app {
+TEST(Outputs, MemoryAndDirectorySinksHoldTheSameBytes) {
+  const app::Run run = run_of(kTiles);
+  std::vector<const Output*> outputs;
+  for (const Output& o : output_registry())
+    if (o.download) outputs.push_back(&o);
+  MemorySink memory;
+  write_outputs(run, outputs, memory, 0, nullptr);
+  const fs::path dir = fs::temp_directory_path() / "curdle-outputs-test";
+  fs::remove_all(dir);
+  {
+    StagingDirectory staging(dir);
+    write_outputs(run, outputs, staging, 0, nullptr);
+    EXPECT_FALSE(fs::exists(dir / "report.json"));  // nothing until commit
+    staging.commit();
+  }
+  for (const Output* o : outputs) {
+    std::ifstream in(dir / o->name, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    ASSERT_TRUE(memory.files().count(o->name)) << o->name;
+    EXPECT_EQ(bytes.str(), memory.files().at(o->name)) << o->name;
+    EXPECT_FALSE(bytes.str().empty()) << o->name;
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace curdle::app

@@ -1,0 +1,38 @@
+// Tests of overrides.h.
+#include "recipe/overrides.h"
+
+#include <gtest/gtest.h>
+
+#include "recipe_support.h"
+
+namespace curdle {
+TEST(Recipe, OverridesByDottedPath) {
+  const Recipe r =
+      parse_recipe(kGood, "r.toml",
+                   {"lattice.mode=exact", "curds.0.probabilities=[\"1/2\",\"1/4\"]",
+                    "curds.1.probabilities.1=1/4", "field.cells=[16,8]", "name=other"});
+  EXPECT_EQ(r.design.lattice.mode, Mode::exact);
+  EXPECT_EQ(r.design.curds[0].probabilities[1].text(), "1/4");
+  EXPECT_EQ(r.design.curds[1].probabilities[1].text(), "1/4");
+  EXPECT_EQ(r.design.field.size[1], 8);
+  EXPECT_EQ(r.design.name, "other");
+}
+
+TEST(Recipe, OverrideErrorsNameTheOverride) {
+  const std::string e = error_of(kGood, {"lattice.base=99"});
+  EXPECT_NE(e.find("set lattice.base: must be"), std::string::npos) << e;
+  EXPECT_NE(e.find("from 2 to 64"), std::string::npos) << e;
+  // Each shell names the override its own way: the command line's option, the API's key.
+  try {
+    parse_recipe(kGood, "good.toml", {"lattice.base=99"});
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_EQ(render_error(error, [](const std::string& p) { return "--" + p; }),
+              "--set lattice.base: must be a whole number from 2 to 64");
+    EXPECT_EQ(render_error(error, [](const std::string&) { return std::string(); }),
+              "key 'lattice.base': must be a whole number from 2 to 64");
+  }
+  EXPECT_NE(error_of(kGood, {"curds.5.name=x"}).find("out of range"), std::string::npos);
+}
+
+}  // namespace curdle
