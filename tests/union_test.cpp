@@ -1,0 +1,54 @@
+// Tests of union.h: polygonised circles stay within their tolerance, unions and cuts keep
+// their exact areas (CGAL's exact arithmetic).
+#include "layout/union.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace curdle {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(Union, PolygonisedCirclesStayWithinTheTolerance) {
+  const Circle c{50, 20, 30};
+  for (const double tolerance : {1.0, 0.05}) {
+    const Ring ring = polygonise(c, tolerance);
+    ASSERT_GE(ring.size(), 8u);
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const auto& a = ring[i];
+      const auto& b = ring[(i + 1) % ring.size()];
+      EXPECT_NEAR(std::hypot(a[0] - c.cx, a[1] - c.cy), 15, 1e-9);  // vertices on the circle
+      const double mx = (a[0] + b[0]) / 2 - c.cx, my = (a[1] + b[1]) / 2 - c.cy;
+      EXPECT_LE(15 - std::hypot(mx, my), tolerance + 1e-9);  // chords stray at most that far
+    }
+  }
+}
+
+TEST(Union, UnionsAndCutsKeepTheirAreas) {
+  // Two overlapping circles: the union is one outline, the sum less the lens.
+  const std::vector<Outline> two = union_of_circles({{0, 0, 20}, {10, 0, 20}}, 0.001);
+  ASSERT_EQ(two.size(), 1u);
+  const double r = 10, d = 10;
+  const double lens = 2 * r * r * std::acos(d / (2 * r)) - d / 2 * std::sqrt(4 * r * r - d * d);
+  // Chords cut off at most the tolerance along the perimeter (under both circles' 2 pi r).
+  EXPECT_LE(two[0].area, 2 * kPi * r * r - lens);
+  EXPECT_NEAR(two[0].area, 2 * kPi * r * r - lens, 0.001 * 2 * 2 * kPi * r);
+  // Adjacent rectangles join into one; apart they stay two.
+  EXPECT_EQ(union_of_rects({{0, 0, 10, 10}, {10, 0, 5, 10}}).size(), 1u);
+  EXPECT_EQ(union_of_rects({{0, 0, 10, 10}, {20, 0, 5, 10}}).size(), 2u);
+  // A square cut along a sloping edge keeps the part inside the triangle.
+  PolygonCuts cuts;
+  cuts.outline = {{0, 0}, {100, 0}, {0, 100}};
+  const Outline kept = joined(cut_along({Rect{0, 0, 60, 60}}, cuts));
+  EXPECT_NEAR(kept.area, 60 * 60 - 20 * 20 / 2.0, 1e-6);
+  const std::vector<Outline> away = cut_away(Rect{0, 0, 100, 100}, cuts);
+  double gone = 0;
+  for (const Outline& o : away) gone += o.area;
+  EXPECT_NEAR(gone, 100 * 100 / 2.0, 1e-6);
+  EXPECT_NEAR(area_within(Rect{50, 50, 50, 50}, away), 2500, 1e-6);
+}
+
+}  // namespace
+}  // namespace curdle

@@ -1,0 +1,23 @@
+// Tests of wkt.h: lengths to the micrometre, and outlines as WKT polygons that close.
+#include "export/wkt.h"
+
+#include <gtest/gtest.h>
+
+namespace curdle {
+namespace {
+
+TEST(Wkt, LengthsAndPolygons) {
+  EXPECT_EQ(mm_text(1.23456), "1.235");
+  EXPECT_EQ(mm_text(300), "300");
+  EXPECT_EQ(mm_text(-0.0001), "0");  // never "-0"
+  EXPECT_EQ(outlines_wkt({}), "");
+  const Outline square{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}}, 100};
+  const std::string one = outlines_wkt({square});
+  EXPECT_EQ(one.rfind("POLYGON ((0 0, 10 0, 10 10, 0 10", 0), 0u) << one;
+  EXPECT_NE(one.find("0 0))"), std::string::npos) << one;  // the ring closes on its start
+  const std::string two = outlines_wkt({square, square});
+  EXPECT_EQ(two.rfind("MULTIPOLYGON (((", 0), 0u) << two;
+}
+
+}  // namespace
+}  // namespace curdle
