@@ -1,0 +1,41 @@
+// Tests of bounded_image.h: a picture a user names is read only when it is a regular file whose
+// pixels fit the limits; otherwise the message names it and what is allowed.
+#include "export/bounded_image.h"
+
+#include <gtest/gtest.h>
+
+#include "curdle/error.h"
+#include "picture_support.h"
+
+namespace curdle {
+namespace {
+
+TEST(BoundedImage, ReadsRegularFilesWithinTheLimitsAndRefusesTheRest) {
+  const auto dir = test::scratch("bounded");
+  const auto png =
+      test::write_file(dir / "a.png", test::grey_png(8, 4, [](int x, int) { return x * 30; }));
+  const SourceLocation where{"r.toml", 3, 1, "layout.mask", ""};
+  const LuminanceImage image = read_bounded_luminance(png, "the mask image", where, 1 << 20);
+  EXPECT_EQ(image.width, 8);
+  EXPECT_EQ(image.height, 4);
+  EXPECT_THROW(read_bounded_luminance(png, "the mask image", where, 1 << 20, 31),
+               ResourceLimitError);  // 32 pixels
+  EXPECT_THROW(read_bounded_luminance(png, "the mask image", where, 10), ResourceLimitError);
+  for (const auto& bad : {dir / "missing.png", dir, std::filesystem::path("/dev/zero")}) {
+    try {
+      read_bounded_luminance(bad, "the mask image", where, 1 << 20);
+      ADD_FAILURE() << bad << " was read";
+    } catch (const ResourceLimitError& e) {
+      ADD_FAILURE() << bad << ": " << e.what();
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("the mask image"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("layout.mask"), std::string::npos) << e.what();
+    }
+  }
+  const auto junk = test::write_file(dir / "junk.png", "not a picture");
+  EXPECT_THROW(read_bounded_luminance(junk, "the mask image", where, 1 << 20), InputError);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace curdle

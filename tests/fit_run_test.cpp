@@ -1,0 +1,42 @@
+// Tests of fit_run.h: probabilities as recipes write them, options checked first, and a fitted
+// recipe written whole.
+#include "app/fit_run.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "curdle/error.h"
+#include "picture_support.h"
+
+namespace curdle::app {
+namespace {
+
+TEST(FitRun, OptionsProbabilitiesAndTheRecipeWritten) {
+  EXPECT_EQ(probability_text(0.5), "0.5000");
+  EXPECT_EQ(probability_text(0.61237), "0.6124");
+  FitRequest bad;
+  bad.stages = 0;
+  EXPECT_THROW(check_fit_options(bad), InputError);
+  bad.stages = 3, bad.curds = 0;
+  EXPECT_THROW(check_fit_options(bad), InputError);
+
+  const auto dir = test::scratch("fit-run");
+  FitRequest request;
+  request.source = test::write_file(dir / "checker.png", test::grey_png(8, 8, [](int x, int y) {
+                                      return (x / 4 + y / 4) % 2 ? 255 : 0;
+                                    }));
+  request.stages = 3;
+  const FittedRecipe fitted = run_fit(request);
+  EXPECT_EQ(fitted.size[0], 8);
+  const std::string where = write_fitted_recipe(fitted, (dir / "out" / "fitted.toml").string());
+  std::ifstream in(where);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), fitted.toml);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace curdle::app

@@ -1,0 +1,36 @@
+// Tests of sheet_drawing.h: the view places layout millimetres on paper at the scale, y down,
+// and lines too wide for their room are cut short.
+#include "export/sheet_drawing.h"
+
+#include <cairo.h>
+#include <gtest/gtest.h>
+
+namespace curdle::sheet_drawing {
+namespace {
+
+TEST(SheetDrawing, ViewsAndTextFitTheSheet) {
+  View v;
+  v.window = Rect{1000, 500, 2000, 1000};
+  v.scale = 20;
+  v.left = 10, v.top = 15;
+  EXPECT_DOUBLE_EQ(v.x(1000), 10);
+  EXPECT_DOUBLE_EQ(v.x(3000), 110);
+  EXPECT_DOUBLE_EQ(v.y(1500), 15);  // the window's top on the sheet's top
+  EXPECT_DOUBLE_EQ(v.y(500), 65);
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 100, 100);
+  cairo_t* cr = cairo_create(surface);
+  const double wide = text_width(cr, "installer's sheet 12 of 40", 2.5);
+  EXPECT_GT(wide, text_width(cr, "sheet", 2.5));
+  // Twice the height, about twice the width (the font's hinting rounds).
+  EXPECT_NEAR(text_width(cr, "sheet", 5) / text_width(cr, "sheet", 2.5), 2, 0.15);
+  const auto lines = fit_lines(cr, {"installer's sheet 12 of 40", "ok"}, wide / 2, 2.5);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[0].find("..."), std::string::npos);
+  EXPECT_LE(text_width(cr, lines[0], 2.5), wide / 2 + 1e-9);
+  EXPECT_EQ(lines[1], "ok");
+  cairo_destroy(cr);
+  cairo_surface_destroy(surface);
+}
+
+}  // namespace
+}  // namespace curdle::sheet_drawing
