@@ -266,7 +266,6 @@ void add_bed(Scene& sc) {
   ModelBuilder& b = sc.b;
   std::vector<int>& roots = sc.roots;
   const double t = sc.t;
-  // The bed the tiles lie in shows in the joints.
   const int bed =
       b.add_material("joint", layout.joint > 0 ? layout.joint_colour : Rgb{200, 200, 200}, 0, 1);
   // Under the surface only: not beyond an outline, nor under an excluded zone or opening.

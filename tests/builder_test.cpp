@@ -250,6 +250,8 @@ TEST(Layout, SlopingAndCurvedEdgesCutPiecesExactly) {
     for (const Element& e : layout.elements) {
       elements += e.area();
       std::vector<std::array<double, 2>> corners;
+      // A piece says it was cut to a polygon by its form, not by its layout's kind.
+      EXPECT_EQ(e.form == ElementForm::cut_piece, e.outline.has_value()) << e.id;
       if (e.outline) {
         ++shaped;
         EXPECT_TRUE(e.cut) << e.id;

@@ -24,7 +24,7 @@ void FacadeKind::after_laying(Layout& layout, const LayoutSpec& spec) const {
   report_open_area(layout, on_wall);
 }
 
-void FacadeKind::read_own(reading::TableReader& r, LayoutSpec& spec) const {
+void FacadeKind::read_own(reading::TableReader& r, const Design&, LayoutSpec& spec) const {
   using namespace reading;
   if (const toml::node* n = r.get("openings")) {
     const toml::array* a = n->as_array();

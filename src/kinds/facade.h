@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "kinds/grid_kind.h"
+#include "kinds/surface_kind.h"
 
 namespace curdle {
 
@@ -14,7 +14,7 @@ struct FacadeKeys : KindKeysOf<FacadeKeys> {
   std::string mask;            // image whose dark pixels are openings (read by the application)
 };
 
-class FacadeKind : public GridKind {
+class FacadeKind : public SurfaceKind {
  public:
   std::string_view name() const override { return "facade"; }
   std::string_view element_noun() const override { return "panel"; }
@@ -26,7 +26,7 @@ class FacadeKind : public GridKind {
  protected:
   reading::SurfaceKeys surface() const override { return {"panel", "wall", true, true, true}; }
   std::vector<std::string> own_keys() const override { return {"openings", "mask"}; }
-  void read_own(reading::TableReader& r, LayoutSpec& spec) const override;
+  void read_own(reading::TableReader& r, const Design& design, LayoutSpec& spec) const override;
   std::vector<Rect> openings(const LayoutSpec& spec) const override;
   void after_laying(Layout& layout, const LayoutSpec& spec) const override;
 };

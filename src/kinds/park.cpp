@@ -4,16 +4,9 @@
 
 #include <fmt/format.h>
 
-#include "layout/builder.h"
 #include "layout/drawing_sheet.h"
-#include "recipe/layout_reader.h"
 
 namespace curdle {
-namespace {
-
-const reading::SurfaceKeys kSurface{"cell", "area", false, false, false};
-
-}  // namespace
 
 std::string ParkKind::size_line(const Layout& layout) const {
   return fmt::format("{} x {} mm: {} x {} cells of {} x {} mm, {} elements",
@@ -22,27 +15,14 @@ std::string ParkKind::size_line(const Layout& layout) const {
                      layout.elements.size());
 }
 
-std::vector<std::string> ParkKind::keys() const {
-  std::vector<std::string> keys = reading::surface_keys(kSurface);
-  keys.insert(keys.end(), {"elements", "ground", "clearance", "outline"});
-  return keys;
-}
-
 std::unique_ptr<KindKeys> ParkKind::default_keys() const { return std::make_unique<ParkKeys>(); }
 
-void ParkKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
-                    bool field_given) const {
-  reading::read_surface(r, kSurface, design, spec);
+void ParkKind::read_own(reading::TableReader& r, const Design& design, LayoutSpec& spec) const {
   reading::read_park(r, design, spec);
-  reading::size_field(r, kSurface.size_key, design, spec, field_given);
 }
 
-Layout ParkKind::build(const Design& design, const CurdField& field, const Box& view,
-                       const LayoutSpec& spec) const {
-  Layout layout = lay_grid(design, field, view, spec, {});
-  count_values(layout, design, spec);
+void ParkKind::replace_cells(Layout& layout, const Design& design, const LayoutSpec& spec) const {
   plant(layout, design, spec);
-  return layout;
 }
 
 }  // namespace curdle

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "curdle/curd.h"
+#include "kinds/surface_kind.h"
 #include "layout/layout.h"
 
 namespace curdle {
@@ -28,7 +29,7 @@ struct ParkKeys : KindKeysOf<ParkKeys> {
   double clearance = 0;  // between objects, and from objects to the cell's edge
 };
 
-class ParkKind : public LayoutKind {
+class ParkKind : public SurfaceKind {
  public:
   std::string_view name() const override { return "park"; }
   std::string_view element_noun() const override { return "cell"; }
@@ -38,12 +39,16 @@ class ParkKind : public LayoutKind {
   Ground ground() const override { return Ground::paper; }
   Depiction depiction() const override { return Depiction::objects; }
   std::string size_line(const Layout& layout) const override;
-  std::vector<std::string> keys() const override;
   std::unique_ptr<KindKeys> default_keys() const override;
-  void read(reading::TableReader& r, Design& design, LayoutSpec& spec,
-            bool field_given) const override;
-  Layout build(const Design& design, const CurdField& field, const Box& view,
-               const LayoutSpec& spec) const override;
+
+ protected:
+  reading::SurfaceKeys surface() const override { return {"cell", "area", false, false, false}; }
+  bool laid_on_a_grid() const override { return false; }
+  std::vector<std::string> own_keys() const override {
+    return {"elements", "ground", "clearance", "outline"};
+  }
+  void read_own(reading::TableReader& r, const Design& design, LayoutSpec& spec) const override;
+  void replace_cells(Layout& layout, const Design& design, const LayoutSpec& spec) const override;
 };
 
 // Replaces the cells of `layout` by their surfaces and objects.

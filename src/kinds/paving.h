@@ -2,11 +2,11 @@
 // running bond, around planters, drains and tree pits.
 #pragma once
 
-#include "kinds/grid_kind.h"
+#include "kinds/surface_kind.h"
 
 namespace curdle {
 
-class PavingKind : public GridKind {
+class PavingKind : public SurfaceKind {
  public:
   std::string_view name() const override { return "paving"; }
   std::string_view element_noun() const override { return "paving tile"; }

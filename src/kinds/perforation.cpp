@@ -4,16 +4,9 @@
 
 #include <fmt/format.h>
 
-#include "layout/builder.h"
 #include "layout/drawing_sheet.h"
-#include "recipe/layout_reader.h"
 
 namespace curdle {
-namespace {
-
-const reading::SurfaceKeys kSurface{"cell", "sheet", true, false, false};
-
-}  // namespace
 
 double PerforationKind::thickness(const LayoutSpec& spec) const {
   return spec.own<PerforationKeys>().thickness;
@@ -32,30 +25,23 @@ std::string PerforationKind::laying_line(const Layout& layout) const {
                      layout.drops_violations && !layout.violations.empty() ? " (dropped)" : "");
 }
 
-std::vector<std::string> PerforationKind::keys() const {
-  std::vector<std::string> keys = reading::surface_keys(kSurface);
-  keys.insert(keys.end(), {"holes", "thickness", "min_diameter", "min_bridge", "edge_margin", "fix",
-                           "chord_tolerance", "sheet_size", "punches", "open_area", "outline"});
-  return keys;
+std::vector<std::string> PerforationKind::own_keys() const {
+  return {"holes",           "thickness",  "min_diameter", "min_bridge", "edge_margin", "fix",
+          "chord_tolerance", "sheet_size", "punches",      "open_area",  "outline"};
 }
 
 std::unique_ptr<KindKeys> PerforationKind::default_keys() const {
   return std::make_unique<PerforationKeys>();
 }
 
-void PerforationKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
-                           bool field_given) const {
-  reading::read_surface(r, kSurface, design, spec);
+void PerforationKind::read_own(reading::TableReader& r, const Design& design,
+                               LayoutSpec& spec) const {
   reading::read_perforation(r, design, spec);
-  reading::size_field(r, kSurface.size_key, design, spec, field_given);
 }
 
-Layout PerforationKind::build(const Design& design, const CurdField& field, const Box& view,
-                              const LayoutSpec& spec) const {
-  Layout layout = lay_grid(design, field, view, spec, {});
-  count_values(layout, design, spec);
+void PerforationKind::replace_cells(Layout& layout, const Design& design,
+                                    const LayoutSpec& spec) const {
   perforate(layout, design, spec);
-  return layout;
 }
 
 }  // namespace curdle

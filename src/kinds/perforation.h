@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "curdle/curd.h"
+#include "kinds/surface_kind.h"
 #include "layout/layout.h"
 
 namespace curdle {
@@ -39,7 +40,7 @@ struct PerforationKeys : KindKeysOf<PerforationKeys> {
   std::optional<std::array<double, 2>> open_area;  // [min, max] share each sheet must be open
 };
 
-class PerforationKind : public LayoutKind {
+class PerforationKind : public SurfaceKind {
  public:
   std::string_view name() const override { return "perforation"; }
   std::string_view element_noun() const override { return "cell"; }
@@ -52,12 +53,14 @@ class PerforationKind : public LayoutKind {
   bool laid_in_courses() const override { return false; }
   std::string size_line(const Layout& layout) const override;
   std::string laying_line(const Layout& layout) const override;
-  std::vector<std::string> keys() const override;
   std::unique_ptr<KindKeys> default_keys() const override;
-  void read(reading::TableReader& r, Design& design, LayoutSpec& spec,
-            bool field_given) const override;
-  Layout build(const Design& design, const CurdField& field, const Box& view,
-               const LayoutSpec& spec) const override;
+
+ protected:
+  reading::SurfaceKeys surface() const override { return {"cell", "sheet", true, false, false}; }
+  bool laid_on_a_grid() const override { return false; }
+  std::vector<std::string> own_keys() const override;
+  void read_own(reading::TableReader& r, const Design& design, LayoutSpec& spec) const override;
+  void replace_cells(Layout& layout, const Design& design, const LayoutSpec& spec) const override;
 };
 
 // Replaces the cells of `layout` (laid as elements on the sheet) by their openings.

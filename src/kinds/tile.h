@@ -2,11 +2,11 @@
 // given or what the field's cells fill.
 #pragma once
 
-#include "kinds/grid_kind.h"
+#include "kinds/surface_kind.h"
 
 namespace curdle {
 
-class TileKind : public GridKind {
+class TileKind : public SurfaceKind {
  public:
   std::string_view name() const override { return "tile"; }
   std::string_view element_noun() const override { return "tile"; }

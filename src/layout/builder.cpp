@@ -102,6 +102,7 @@ void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
   e.shape.clear();
   if (piece.area < kEps) return;
   e.outline = std::move(piece);
+  e.form = ElementForm::cut_piece;
   e.cut = true;
 }
 

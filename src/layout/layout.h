@@ -194,11 +194,11 @@ struct Provenance {
 
 // What an element is, so that writers draw it without asking its layout's kind.
 enum class ElementForm {
-  piece,    // material laid: its rectangles (`shape`), or its polygon (`outline`) when cut along
-            // a sloping or curved edge
-  opening,  // a hole in a sheet: round (`circle`) or merged openings (`outline`)
-  object,   // a park's surface or object, in its own colour (`type`, `colour`)
-  block,    // a voxel of a stack (`cell_z` its level)
+  piece,      // material laid as one or more rectangles (`shape`): whole, or cut straight
+  cut_piece,  // material cut along a sloping or curved edge: its exact polygon (`outline`)
+  opening,    // a hole in a sheet: round (`circle`) or merged openings (`outline`)
+  object,     // a park's surface or object, in its own colour (`type`, `colour`)
+  block,      // a voxel of a stack (`cell_z` its level)
 };
 
 struct Element {

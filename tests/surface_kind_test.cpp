@@ -1,6 +1,6 @@
-// Tests of grid_kind.h: the surface kinds laid on a grid share their keys and their laying,
+// Tests of surface_kind.h: the surface kinds laid on a grid share their keys and their laying,
 // and each tells the writers its own facts.
-#include "kinds/grid_kind.h"
+#include "kinds/surface_kind.h"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +11,10 @@
 namespace curdle {
 namespace {
 
-TEST(GridKind, TilePavingAndFacadeShareTheGridsKeysAndSayTheirOwnFacts) {
+TEST(SurfaceKind, TilePavingAndFacadeShareTheGridsKeysAndSayTheirOwnFacts) {
   for (const char* name : {"tile", "paving", "facade"}) {
     const LayoutKind& kind = layout_kind(name);
-    ASSERT_NE(dynamic_cast<const GridKind*>(&kind), nullptr) << name;
+    ASSERT_NE(dynamic_cast<const SurfaceKind*>(&kind), nullptr) << name;
     const std::vector<std::string> keys = kind.keys();
     for (const char* key : {"joint", "origin", "bond", "shift", "min_cut", "zones", "outline"})
       EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << name << " " << key;
@@ -30,7 +30,7 @@ TEST(GridKind, TilePavingAndFacadeShareTheGridsKeysAndSayTheirOwnFacts) {
   EXPECT_TRUE(layout_kind("facade").upright());
 }
 
-TEST(GridKind, SliversAreCheckedAndTheLayoutCarriesWhatWasBuilt) {
+TEST(SurfaceKind, SliversAreCheckedAndTheLayoutCarriesWhatWasBuilt) {
   Design d = test::design(2, 2, {{"3/4", "2/3"}});
   d.description = "a floor";
   LayoutSpec spec = test::layout_spec("tile");
