@@ -16,7 +16,6 @@
 
 namespace curdle {
 
-struct Design;
 struct Layout;
 struct LayoutSpec;
 namespace reading {

@@ -73,10 +73,11 @@ std::optional<Box> read_highlight(TableReader& r) {
 }  // namespace
 
 std::vector<std::string> surface_keys(const SurfaceKeys& k) {
-  std::vector<std::string> keys = {"combine",   "origin",     "joint_colour", "stage_grid",
-                                   "highlight", k.module_key, k.size_key};
-  if (k.joint) keys.push_back("joint");
+  std::vector<std::string> keys;
   if (k.size_key != std::string("sheet")) keys.push_back("sheet");  // the paper, by name
+  keys.insert(keys.end(), {"combine", "origin", "joint_colour", "stage_grid", "highlight",
+                           k.module_key, k.size_key});
+  if (k.joint) keys.push_back("joint");
   return keys;
 }
 
