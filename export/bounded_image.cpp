@@ -1,6 +1,10 @@
 #include "export/bounded_image.h"
 
 #include <algorithm>
+#include <fstream>
+#include <optional>
+
+#include "export/picture_gate.h"
 
 namespace curdle {
 namespace {
@@ -29,7 +33,20 @@ LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const s
   const uint64_t file_bytes = std::filesystem::file_size(path, ec);
   if (ec || file_bytes > kMaxFileBytes)
     throw InputError(where, what + " " + name + " is larger than 64 MiB");
-  const std::string readable = " (any image OpenImageIO reads: PNG, TIFF, JPEG, ...)";
+  const std::string readable = std::string(" (") + kPictureFormats + ")";
+  // The gate: only the formats curdle takes, sized by their own headers, reach a decoder.
+  std::string bytes(file_bytes, '\0');
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+    throw InputError(where, "cannot read " + what + " " + name);
+  std::string why;
+  const std::optional<PictureHeader> header = read_picture_header(bytes, why);
+  if (!header) throw InputError(where, "cannot read " + what + " " + name + ": " + why);
+  if (static_cast<uint64_t>(header->width) > max_pixels / static_cast<uint64_t>(header->height))
+    throw ResourceLimitError(where, what + " is " + std::to_string(header->width) + " x " +
+                                        std::to_string(header->height) + " pixels; at most " +
+                                        std::to_string(max_pixels) +
+                                        " pixels; use a smaller image");
   ImageSize size;
   try {
     size = read_image_size(path);

@@ -35,6 +35,10 @@ TEST(Api, EndpointsAnswerJsonAndNameBadParameters) {
   ASSERT_EQ(file.status, 200) << file.body;
   EXPECT_EQ(file.filename, "schedule.csv");
   EXPECT_EQ(file.content_type, "text/csv; charset=utf-8");
+  // A lattice too deep for 64 bits is a 400 naming stages, not a SIGFPE that ends the server.
+  const ApiResponse deep = api_measure(c, {{"base", "64"}, {"stages", "30"}}, "\x89PNG");
+  EXPECT_EQ(deep.status, 400) << deep.body;
+  EXPECT_NE(deep.body.find("stages"), std::string::npos) << deep.body;
   EXPECT_EQ(api_colours({{"colour", "#ff0000"}}).status, 200);
   EXPECT_EQ(api_colours({{"colour", "red"}}).status, 400);
   const auto error = nlohmann::json::parse(api_error(413, "too large").body);

@@ -34,6 +34,21 @@ TEST(BoundedImage, ReadsRegularFilesWithinTheLimitsAndRefusesTheRest) {
   }
   const auto junk = test::write_file(dir / "junk.png", "not a picture");
   EXPECT_THROW(read_bounded_luminance(junk, "the mask image", where, 1 << 20), InputError);
+  // An SGI picture named .png never reaches OpenImageIO's SGI reader, which aborted on it.
+  const auto sgi = test::write_file(
+      dir / "sgi.png", std::string("\x01\xDA\x01\x01\x00\x03", 6) + std::string(506, '\xff'));
+  try {
+    read_bounded_luminance(sgi, "the picture", where, 1 << 20);
+    ADD_FAILURE() << "an SGI picture was decoded";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("PNG, JPEG, TIFF or BMP"), std::string::npos) << e.what();
+  }
+  // A PNG header claiming more pixels than allowed is refused before it is decoded.
+  std::string huge = test::grey_png(2, 2, [](int, int) { return 0; });
+  huge[16] = '\x7f';  // width 2^30 and more
+  const auto big = test::write_file(dir / "big.png", huge);
+  EXPECT_THROW(read_bounded_luminance(big, "the picture", where, 1 << 20, 1 << 20),
+               ResourceLimitError);
   std::filesystem::remove_all(dir);
 }
 

@@ -227,7 +227,10 @@ PY
 expect 0 "(ground)" measure "$mask" --threshold 0.5 --base 3 --out "$work/measure3"
 expect 2 "is not a regular file" measure /dev/zero --out "$work/measure-bad"
 expect 2 "no such file" measure "$work/no-such.png" --out "$work/measure-bad"
-expect 2 "OpenImageIO" measure "$fig3" --out "$work/measure-bad"
+expect 2 "not a PNG, JPEG, TIFF or BMP" measure "$fig3" --out "$work/measure-bad"
+# Other formats never reach a decoder, whatever their name: an SGI picture once aborted one.
+printf '\001\332\001\001\000\003' > "$work/sgi.png" && head -c 600 /dev/zero >> "$work/sgi.png"
+expect 2 "not a PNG, JPEG, TIFF or BMP" measure "$work/sgi.png" --out "$work/measure-bad"
 expect 2 "must be from 2 to 16" measure "$mask" --values 40 --out "$work/measure-bad"
 expect 2 "must be a luminance" measure "$mask" --threshold 1.5 --out "$work/measure-bad"
 expect 2 "must be from 2 to 64" measure "$mask" --base 1 --out "$work/measure-bad"
@@ -237,17 +240,21 @@ expect 2 "must be from 2 to 64" measure "$mask" --base 1 --out "$work/measure-ba
 # Fit: a curd drawn here (canonical, p = 0.8 at every stage, its own generator) is fitted back,
 # and the recipe written reads back and curdles; bad options exit 2 and write nothing.
 section_fit() {
-/usr/bin/python3 - "$work/curd.pgm" <<'PY'
-import random, sys
+/usr/bin/python3 - "$work/curd.png" <<'PY'
+import random, struct, sys, zlib
 random.seed(5)
 alive = [[True]]
 for _ in range(8):
     n = len(alive) * 2
     alive = [[alive[y // 2][x // 2] and random.random() < 0.8 for x in range(n)] for y in range(n)]
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+rows = b"".join(b"\0" + bytes(0 if a else 255 for a in row) for row in alive)  # 8-bit grey
 with open(sys.argv[1], "wb") as f:
-    f.write(b"P5\n256 256\n255\n" + bytes(0 if a else 255 for row in alive for a in row))
+    f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 256, 256, 8, 0, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
 PY
-expect 0 "recipe in" fit "$work/curd.pgm" --base 2 --stages 8 --out "$work/fit/curd.toml"
+expect 0 "recipe in" fit "$work/curd.png" --base 2 --stages 8 --out "$work/fit/curd.toml"
 /usr/bin/python3 - "$work/fit/curd.toml" <<'PY' && pass || fail "the fitted probabilities are not near 0.8"
 import sys, tomllib
 r = tomllib.load(open(sys.argv[1], "rb"))
@@ -269,8 +276,10 @@ assert [c["name"] for c in r["curds"]] == ["red", "blue"], r
 for c in r["curds"]:
     assert abs(c["probabilities"][3] - 2 / 3) < 0.02 and abs(c["probabilities"][2] - 0.75) < 0.04, c
 PY
-expect 2 "must be from 1 to 30" fit "$work/curd.pgm" --stages 0 --out "$work/fit-bad/x.toml"
-expect 2 "must be from 1 to 4" fit "$work/curd.pgm" --stages 3 --curds 9 --out "$work/fit-bad/x.toml"
+expect 2 "must be from 1 to 30" fit "$work/curd.png" --stages 0 --out "$work/fit-bad/x.toml"
+expect 2 "must be from 1 to 4" fit "$work/curd.png" --stages 3 --curds 9 --out "$work/fit-bad/x.toml"
+# b^K past 64 bits wrapped to 0 and was divided by (SIGFPE): refused, naming --stages.
+expect 2 "stages with this base" fit "$work/curd.png" --stages 30 --base 64 --out "$work/fit-bad/x.toml"
 expect 2 "is not a regular file" fit /dev/zero --stages 3 --out "$work/fit-bad/x.toml"
 [ ! -e "$work/fit-bad" ] && pass || fail "a refused fit left $work/fit-bad"
 }

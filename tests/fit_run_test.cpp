@@ -21,6 +21,22 @@ TEST(FitRun, OptionsProbabilitiesAndTheRecipeWritten) {
   EXPECT_THROW(check_fit_options(bad), InputError);
   bad.stages = 3, bad.curds = 0;
   EXPECT_THROW(check_fit_options(bad), InputError);
+  // b^K past 64 bits once wrapped to 0 and was divided by (SIGFPE): refused, naming stages.
+  for (const auto& [base, stages] : {std::pair{64, 30}, {16, 16}, {8, 22}, {4, 20}}) {
+    FitRequest deep;
+    deep.base = base, deep.stages = stages;
+    try {
+      check_fit_options(deep);
+      ADD_FAILURE() << base << "^" << stages << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().parameter, "stages");
+      EXPECT_NE(e.message().find("stages with this base"), std::string::npos) << e.what();
+    }
+  }
+  FitRequest deepest_allowed;
+  deepest_allowed.base = 2, deepest_allowed.stages = 30;  // 2^60 cells to a root in 2-D
+  EXPECT_NO_THROW(check_fit_options(deepest_allowed));
+  EXPECT_THROW(check_fit_lattice(Lattice{2, 3, 30, Mode::canonical}), InputError);  // a 3-D csv
 
   const auto dir = test::scratch("fit-run");
   FitRequest request;

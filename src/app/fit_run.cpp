@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "app/measure_run.h"
@@ -68,6 +69,18 @@ void check_fit_options(const FitRequest& r) {
     throw InputError(parameter("curds"),
                      "must be from 1 to 4 (the picture is quantised to 2^n values), not " +
                          std::to_string(r.curds));
+  check_fit_lattice(Lattice{r.base, 2, r.stages, Mode::canonical});
+}
+
+void check_fit_lattice(const Lattice& l) {
+  // b^(E K) cells to a root must fit the recipe's limit, or the counts overflow.
+  if (l.path_bits() > kMaxPathBits + 1e-9)
+    throw InputError(
+        parameter("stages"),
+        fmt::format("with base {} in {}-D, {} stages make {:.0f} bits of cells to a "
+                    "root; at most {}: at most {} stages with this base",
+                    l.base, l.dimension, l.stages, l.path_bits(), kMaxPathBits,
+                    static_cast<int>(kMaxPathBits / (l.dimension * std::log2(l.base)))));
 }
 
 FittedRecipe run_fit(const FitRequest& r) {
@@ -81,6 +94,7 @@ FittedRecipe run_fit(const FitRequest& r) {
                                           "a cells.csv as curdle generate writes it", kMaxCsvBytes),
                         kMaxCells);
     f.lattice = Lattice{r.base, table.dimension, r.stages, Mode::canonical};
+    check_fit_lattice(f.lattice);  // the file's dimension is known only now
     f.size = table.box.size;
     const Box field{{0, 0, 0}, table.box.size};
     for (size_t c = 0; c < table.curds.size(); ++c) {

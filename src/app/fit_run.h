@@ -15,7 +15,7 @@
 namespace curdle::app {
 
 struct FitRequest {
-  std::string source;  // a picture OpenImageIO reads, or a cells.csv
+  std::string source;  // a PNG, JPEG, TIFF or BMP picture, or a cells.csv
   int base = 2;
   int stages = 0;
   int curds = 1;
@@ -41,6 +41,8 @@ std::string probability_text(double probability);
 
 // InputError for a base, stage count or curd count out of range (checked before any reading).
 void check_fit_options(const FitRequest& request);
+// InputError (naming `stages`) for a lattice whose b^(E K) cells to a root pass kMaxPathBits.
+void check_fit_lattice(const Lattice& lattice);
 
 FittedRecipe run_fit(const FitRequest& request);
 

@@ -11,7 +11,7 @@
 namespace curdle::app {
 
 struct MeasureRequest {
-  std::string image;                // any picture OpenImageIO reads
+  std::string image;                // a PNG, JPEG, TIFF or BMP picture
   int values = 2;                   // quantise to this many values, 2 to 16
   std::optional<double> threshold;  // or two values: darker than this (0 to 1) is value 1
   int base = 2;                     // boxes of side base^j

@@ -66,17 +66,17 @@ PictureStudy study_picture(const PictureStudyRequest& r) {
     throw InputError("the picture " + name + " is empty; send the picture's file");
   if (r.bytes.size() > kMaxUploadBytes)
     throw ResourceLimitError("the picture " + name + " is larger than 64 MiB");
-  MeasureRequest measure;
-  measure.image = name;
-  measure.values = 1 << r.curds;
-  measure.base = r.base;
   FitRequest fit;
   fit.source = name;
   fit.base = r.base;
   fit.stages = r.stages;
   fit.curds = r.curds;
-  // Options first: a wrong one is named before the picture is read.
+  // Options first: a wrong one is named before the picture is read (and before 2^curds).
   check_fit_options(fit);
+  MeasureRequest measure;
+  measure.image = name;
+  measure.values = 1 << r.curds;
+  measure.base = r.base;
   check_measure_options(measure);
   std::string extension = fs::path(name).extension().string();
   if (extension.size() > 6) extension.clear();

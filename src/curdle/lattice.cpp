@@ -1,5 +1,7 @@
 #include "curdle/lattice.h"
 
+#include <cmath>
+
 namespace curdle {
 namespace {
 uint64_t power(uint64_t b, int e) {
@@ -25,5 +27,9 @@ uint64_t Lattice::children() const { return power(base, dimension); }
 uint64_t Lattice::root_side() const { return power(base, stages); }
 uint64_t Lattice::cells_per_root(int stage) const { return power(children(), stage); }
 uint64_t Lattice::side_in_cells(int stage) const { return power(base, stages - stage); }
+
+double Lattice::path_bits() const {
+  return dimension * stages * std::log2(static_cast<double>(base));
+}
 
 }  // namespace curdle

@@ -26,6 +26,11 @@ struct Lattice {
   uint64_t root_side() const;                // b^K finest cells a side of one root cell
   uint64_t cells_per_root(int stage) const;  // b^(E k)
   uint64_t side_in_cells(int stage) const;   // side of a stage-k cell in finest cells: b^(K-k)
+  // E K log2 b, the bits of a cell's path within its root. Every count of a root's cells fits
+  // in 64-bit arithmetic while it is at most kMaxPathBits: lattices above it are refused.
+  double path_bits() const;
 };
+
+inline constexpr int kMaxPathBits = 62;
 
 }  // namespace curdle

@@ -84,8 +84,7 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
 }
 
 void check_size(TableReader& top, const Lattice& l) {
-  const double path_bits = l.dimension * l.stages * std::log2(static_cast<double>(l.base));
-  if (path_bits > kMaxPathBits + 1e-9)
+  if (l.path_bits() > kMaxPathBits + 1e-9)
     top.fail("curds", "b^(E K) = " + std::to_string(l.base) + "^(" + std::to_string(l.dimension) +
                           "*" + std::to_string(l.stages) +
                           ") cells per root is too many; at most 2^" +

@@ -37,6 +37,5 @@ Box parse_window(const std::string& text, const Design& design);
 // Largest sizes the engine accepts.
 inline constexpr int kMaxCurds = 16;
 inline constexpr int kMaxBase = 64;
-inline constexpr int kMaxPathBits = 62;  // E * K * log2(b): a cell's path within its root
 
 }  // namespace curdle

@@ -1,0 +1,30 @@
+// The gate every picture passes before a decoder sees it. OpenImageIO reads dozens of formats,
+// and some of its readers (SGI, Softimage, DPX among them) abort or crash on a crafted file:
+// curdle takes only PNG, JPEG, TIFF and BMP, known by their first bytes whatever the file's
+// name, and reads each one's size from its own header, so that a picture too large or not a
+// picture at all is refused before it is decoded.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace curdle {
+
+enum class PictureFormat { png, jpeg, tiff, bmp };
+
+struct PictureHeader {
+  PictureFormat format = PictureFormat::png;
+  int64_t width = 0, height = 0;
+};
+
+// "PNG, JPEG, TIFF or BMP": what messages say is allowed.
+inline constexpr const char* kPictureFormats = "PNG, JPEG, TIFF or BMP";
+
+// The format and size of the picture whose file is `bytes` (the whole file: a TIFF's size may
+// stand at its end), or std::nullopt with `why` saying what is wrong: not one of the formats,
+// or a header that is cut short or says a size of 0.
+std::optional<PictureHeader> read_picture_header(std::string_view bytes, std::string& why);
+
+}  // namespace curdle
