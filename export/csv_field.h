@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace curdle {
 
@@ -9,7 +10,12 @@ namespace curdle {
 // strict RFC 4180 readers that expect UTF-8 skip it.
 inline constexpr const char* kUtf8Mark = "\xEF\xBB\xBF";
 
-inline std::string csv_field(const std::string& s) {
+// A text field. One that begins with =, +, -, @, a tab or a carriage return is a formula to
+// Excel and LibreOffice: it gets a leading ' (OWASP's rule for CSV injection), shown as text.
+inline std::string csv_field(const std::string& text) {
+  const bool formula =
+      !text.empty() && std::string_view("=+-@\t\r").find(text[0]) != std::string::npos;
+  const std::string s = formula ? "'" + text : text;
   if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
   std::string q = "\"";
   for (char c : s) {

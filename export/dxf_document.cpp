@@ -28,28 +28,42 @@ int nearest_aci(const Rgb& c) {
 
 std::string hole_layer(double diameter) { return "HOLE_D" + mm_text(diameter); }
 
-std::string dxf_layer_name(const std::string& name) {
+namespace {
+
+// `text` for a DXF of AutoCAD 2000, which has no UTF-8: ASCII as it is, but `forbidden` and
+// control characters (a line break would start a group code of its own) as `instead`, and
+// every other character as DXF's \U+XXXX, which AutoCAD, ezdxf, GDAL and LibreCAD decode.
+std::string dxf_encoded(const std::string& text, std::string_view forbidden, char instead) {
   std::string out;
-  for (size_t i = 0; i < name.size();) {
-    const unsigned char c = static_cast<unsigned char>(name[i]);
-    if (c < 0x80) {  // no dots either: some CAD programs read one as a path separator
-      out += std::string_view("<>/\\\":;?*|=,`.").find(static_cast<char>(c)) == std::string::npos &&
-                     c >= 0x20
-                 ? static_cast<char>(c)
-                 : '_';
+  for (size_t i = 0; i < text.size();) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+      out += c < 0x20 || c == 0x7F || forbidden.find(static_cast<char>(c)) != std::string::npos
+                 ? instead
+                 : static_cast<char>(c);
       ++i;
       continue;
     }
-    // A UTF-8 sequence (validated when the recipe was read) as DXF's \U+XXXX.
+    // A UTF-8 sequence (validated when the recipe was read).
     const int length = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : 2;
     uint32_t code = c & (0x7F >> length);
-    for (int k = 1; k < length && i + k < name.size(); ++k)
-      code = code << 6 | (static_cast<unsigned char>(name[i + k]) & 0x3F);
+    for (int k = 1; k < length && i + k < text.size(); ++k)
+      code = code << 6 | (static_cast<unsigned char>(text[i + k]) & 0x3F);
     out += fmt::format("\\U+{:04X}", code);
     i += static_cast<size_t>(length);
   }
+  return out;
+}
+
+}  // namespace
+
+std::string dxf_layer_name(const std::string& name) {
+  // No dots either: some CAD programs read one as a path separator.
+  const std::string out = dxf_encoded(name, "<>/\\\":;?*|=,`.", '_');
   return out.empty() ? "_" : out;
 }
+
+std::string dxf_text(const std::string& text) { return dxf_encoded(text, "", ' '); }
 
 DxfDocument::DxfDocument(const std::filesystem::path& path, const std::vector<DxfLayer>& layers,
                          const Rect& extents) {
@@ -169,8 +183,8 @@ void DxfDocument::text(const std::string& layer, double x, double y, double heig
                        const std::string& text, bool centred) {
   // Centred text: horizontal 1 (centre), vertical 2 (middle) at the second alignment point.
   dxf_.writeText(*dw_,
-                 DL_TextData(x, y, 0, x, y, 0, height, 1, 0, centred ? 1 : 0, centred ? 2 : 0, text,
-                             "Standard", 0),
+                 DL_TextData(x, y, 0, x, y, 0, height, 1, 0, centred ? 1 : 0, centred ? 2 : 0,
+                             dxf_text(text), "Standard", 0),
                  on_layer(layer));
 }
 

@@ -22,6 +22,9 @@ struct DxfLayer {
 
 // A valid DXF layer name: characters DXF forbids become '_', non-ASCII letters \U+XXXX.
 std::string dxf_layer_name(const std::string& name);
+// Text as a DXF TEXT entity holds it: one line (control characters and line breaks become
+// spaces, so that no text can write group codes of its own), other than ASCII as \U+XXXX.
+std::string dxf_text(const std::string& text);
 
 // The layer of round openings of one diameter, in the layout's DXF and the sheets' alike:
 // "HOLE_D22.6", written HOLE_D22_6.

@@ -14,6 +14,9 @@ namespace {
 
 TEST(DxfDocument, MillimetresExtentsLayersAndClosedPolylines) {
   EXPECT_EQ(dxf_layer_name(hole_layer(22.6)), "HOLE_D22_6");
+  // Text is one line (a line break would start a group code of its own), non-ASCII escaped.
+  EXPECT_EQ(dxf_text("Grès\n  8\r\nINJECTED"), "Gr\\U+00E8s   8  INJECTED");
+  EXPECT_EQ(dxf_layer_name("Grès"), "Gr\\U+00E8s");
   const std::string layer = dxf_layer_name("Brick <red>/2");
   EXPECT_EQ(layer.find_first_of("<>/\\\":;?*|=`"), std::string::npos) << layer;
   const auto dir = test::scratch("dxf");

@@ -51,6 +51,14 @@ TEST(FitRun, OptionsProbabilitiesAndTheRecipeWritten) {
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str(), fitted.toml);
+  // A file name cannot write keys into the recipe: its comment stays one line.
+  FitRequest crafted = request;
+  crafted.source =
+      test::write_file(dir / "x\n[lattice]\nbase = 3\n.png",
+                       test::grey_png(8, 8, [](int x, int) { return x < 4 ? 0 : 255; }));
+  const FittedRecipe safe = run_fit(crafted);
+  EXPECT_EQ(safe.toml.find("\nbase = 3"), std::string::npos) << safe.toml;
+  EXPECT_NE(safe.toml.find("\nbase = 2\n"), std::string::npos) << safe.toml;
   std::filesystem::remove_all(dir);
 }
 

@@ -135,6 +135,29 @@ TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
 
 namespace curdle {
 
+// A name that begins like a formula is text in every CSV file (OWASP's rule): a spreadsheet
+// shows =HYPERLINK(...) instead of running it.
+TEST(Schedule, NamesThatLookLikeFormulasStayText) {
+  Design d = test::design(2, 2, {{"3/4", "2/3"}});
+  d.curds[0].name = "-dark";
+  LayoutSpec spec = test::layout_spec("paving");
+  spec.size = std::array<double, 2>{900, 600};
+  spec.materials = {"=HYPERLINK(\"http://x\",\"y\")", "@SUM(A1)"};
+  const auto cells = elements_to_cover(spec);
+  d.field.size = {cells[0], cells[1], 1};
+  const Layout layout = make_layout(d, curdle(d, 2, d.field), d.field, spec);
+  std::ostringstream schedule, quantities, lots;
+  write_schedule_csv(schedule, layout);
+  write_quantities_csv(quantities, layout);
+  write_lots_csv(lots, layout);
+  for (const std::string& csv : {schedule.str(), quantities.str(), lots.str()}) {
+    for (const char* formula : {",=", ",@", ",-dark", ",\"=", ",\"@"})
+      EXPECT_EQ(csv.find(formula), std::string::npos) << formula << " in\n" << csv.substr(0, 300);
+    EXPECT_NE(csv.find("'=HYPERLINK"), std::string::npos);
+  }
+  EXPECT_NE(schedule.str().find(",'-dark"), std::string::npos);  // the curd's column
+}
+
 TEST(Install, TheMapNamesEveryElementAndWhereLayingStarts) {
   Design d = test::design(4, 2, {{"3/4", "1/2"}});
   LayoutSpec spec = test::layout_spec();

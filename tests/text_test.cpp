@@ -24,5 +24,19 @@ TEST(Text, Utf8ControlCharactersAndXmlEscaping) {
             "ab");  // XML 1.0 forbids it
 }
 
+TEST(Text, NamesThatWouldNotShowAsTheyReadAreUnsafe) {
+  EXPECT_EQ(unsafe_text("Grès cérame, Ølstykke 3"), "");
+  EXPECT_EQ(unsafe_text("ABC xyz ~!"), "");  // every printable ASCII letter is safe
+  EXPECT_EQ(unsafe_text("a\nb"), "a line break or tab");
+  EXPECT_EQ(unsafe_text("a\x01"), "a control character");
+  EXPECT_EQ(unsafe_text("\xc3"), "bytes that are not UTF-8");
+  EXPECT_NE(unsafe_text("brick\u202Egpj.exe").find("bidirectional control (U+202E)"),
+            std::string::npos);
+  EXPECT_NE(unsafe_text("zero\u200Bwidth").find("invisible character (U+200B)"), std::string::npos);
+  EXPECT_NE(unsafe_text("end\xEF\xBF\xBF").find("non-character (U+FFFF)"), std::string::npos);
+  // XML forbids U+FFFE and U+FFFF: the escaper drops them as it drops control characters.
+  EXPECT_EQ(xml_escape("a\xEF\xBF\xBF" "b\xEF\xBF\xBE"), "ab");
+}
+
 }  // namespace
 }  // namespace curdle

@@ -32,3 +32,37 @@ probabilities = ["4/3"]
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+// Names are one line of text that shows as it reads: line breaks, bidirectional controls,
+// invisible characters and non-characters are refused where they are read, naming the key.
+TEST(Recipe, NamesThatWouldNotShowAsTheyReadAreRefused) {
+  const std::string head = "[lattice]\nbase = 2\ndimension = 2\n";
+  const std::string curd = "[[curds]]\nprobabilities = [\"3/4\"]\n";
+  const std::string layout = "[layout]\nkind = \"paving\"\nfloor = [900, 600]\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"name = \"yard\\n0\\nLAYER\"\n" + head + curd, "key 'name'"},
+      {head + "[[curds]]\nname = \"a\\u202Eb\"\nprobabilities = [\"3/4\"]\n", "curds.0.name"},
+      {head + curd + layout + "materials = [\"stone\", \"brick\\u200B\"]\n", "layout.materials.1"},
+      {head + curd + layout + "materials = [\"stone\", \"end\\uFFFF\"]\n", "layout.materials.1"},
+      {head + curd + layout +
+           "[[layout.zones]]\nname = \"pit\\u2066\"\nrect = [0, 0, 300, 300]\nrule = \"exclude\"\n",
+       "layout.zones.0.name"},
+      {"description = \"a \\u202Elie\"\n" + head + curd, "key 'description'"},
+  };
+  for (const auto& [text, key] : cases) {
+    try {
+      parse_recipe(text, "r.toml");
+      ADD_FAILURE() << "accepted:\n" << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+  // A description may run over lines; Unicode letters are welcome everywhere.
+  EXPECT_NO_THROW(parse_recipe("name = \"Grès\"\ndescription = \"two\\nlines\"\n" + head + curd +
+                                   layout + "materials = [\"pierre\", \"grès cérame\"]\n",
+                               "r.toml"));
+}
+
+}  // namespace curdle

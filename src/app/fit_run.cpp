@@ -18,6 +18,32 @@ namespace {
 constexpr uint64_t kMaxCells = uint64_t{1} << 26;  // a cells.csv's, as many as a picture's
 constexpr uint64_t kMaxCsvBytes = uint64_t{2} << 30;
 
+// A TOML basic string: quotes, backslashes and control characters escaped, so that no name
+// (a curd's, from a cells.csv) can end the string and write keys of its own.
+std::string toml_quoted(const std::string& s) {
+  std::string q = "\"";
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\')
+      q += '\\', q += ch;
+    else if (c < 0x20 || c == 0x7F)
+      q += fmt::format("\\u{:04X}", c);
+    else
+      q += ch;
+  }
+  return q + '"';
+}
+
+// A file's name as a comment's text: one line, whatever the name holds.
+std::string comment_text(const std::string& s) {
+  std::string line;
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    line += c < 0x20 || c == 0x7F || c >= 0x80 ? '?' : ch;
+  }
+  return line;
+}
+
 std::string recipe_text(const FittedRecipe& f, const std::string& source) {
   std::string cells;
   for (int d = 0; d < f.lattice.dimension; ++d)
@@ -25,15 +51,16 @@ std::string recipe_text(const FittedRecipe& f, const std::string& source) {
   std::string t = fmt::format(
       "# Fitted by `curdle fit` to {}: per-stage probabilities whose expected box counts, with\n"
       "# extinction, match the picture's occupied cells at every stage.\n"
-      "name = \"{}\"\nseed = 1\n\n[lattice]\nbase = {}\ndimension = {}\nstages = {}\n"
+      "name = {}\nseed = 1\n\n[lattice]\nbase = {}\ndimension = {}\nstages = {}\n"
       "mode = \"canonical\"\n\n[field]\ncells = [{}]\n",
-      source, f.name, f.lattice.base, f.lattice.dimension, f.lattice.stages, cells);
+      comment_text(source), toml_quoted(f.name), f.lattice.base, f.lattice.dimension,
+      f.lattice.stages, cells);
   for (const FittedCurd& c : f.curds) {
     std::string p;
     for (const StageFit& s : c.stages)
       p += (p.empty() ? "" : ", ") + probability_text(s.probability);
-    t += fmt::format("\n[[curds]]\nname = \"{}\"\nprobabilities = [{}]\n", c.name, p);
-    if (!c.colour.empty()) t += fmt::format("colour = \"{}\"\n", c.colour);
+    t += fmt::format("\n[[curds]]\nname = {}\nprobabilities = [{}]\n", toml_quoted(c.name), p);
+    if (!c.colour.empty()) t += fmt::format("colour = {}\n", toml_quoted(c.colour));
   }
   return t;
 }

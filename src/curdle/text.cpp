@@ -1,6 +1,7 @@
 #include "curdle/text.h"
 
 #include <cstdint>
+#include <cstdio>
 
 namespace curdle {
 namespace {
@@ -37,6 +38,25 @@ size_t sequence_length(std::string_view text, size_t i) {
   return n;
 }
 
+// The code point of the well-formed sequence of `n` bytes at text[i].
+uint32_t code_point(std::string_view text, size_t i, size_t n) {
+  if (n == 1) return static_cast<uint8_t>(text[i]);
+  uint32_t code = static_cast<uint8_t>(text[i]) & (0x7F >> n);
+  for (size_t k = 1; k < n; ++k) code = code << 6 | (static_cast<uint8_t>(text[i + k]) & 0x3F);
+  return code;
+}
+
+// Unicode's non-characters: U+FDD0..U+FDEF and the last two of every plane (XML forbids
+// U+FFFE and U+FFFF).
+bool is_noncharacter(uint32_t c) { return (c >= 0xFDD0 && c <= 0xFDEF) || (c & 0xFFFE) == 0xFFFE; }
+
+// "U+202E".
+std::string u_plus(uint32_t c) {
+  char text[16];
+  std::snprintf(text, sizeof text, "U+%04X", c);
+  return text;
+}
+
 bool is_control(uint8_t c) {
   return (c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7F;
 }
@@ -68,7 +88,7 @@ std::string xml_escape(std::string_view text) {
       continue;
     }
     if (n > 1) {
-      out.append(text.substr(i, n));
+      if (!is_noncharacter(code_point(text, i, n))) out.append(text.substr(i, n));
       i += n;
       continue;
     }
@@ -94,6 +114,24 @@ std::string xml_escape(std::string_view text) {
     }
   }
   return out;
+}
+
+std::string unsafe_text(std::string_view text) {
+  if (!valid_utf8(text)) return "bytes that are not UTF-8";
+  for (size_t i = 0; i < text.size();) {
+    const size_t n = sequence_length(text, i);
+    const uint32_t c = code_point(text, i, n);
+    i += n;
+    if (n == 1 && is_control(static_cast<uint8_t>(c))) return "a control character";
+    if (n == 1 && (c == '\n' || c == '\r' || c == '\t')) return "a line break or tab";
+    if ((c >= 0x202A && c <= 0x202E) || (c >= 0x2066 && c <= 0x2069) || c == 0x200E ||
+        c == 0x200F || c == 0x061C)
+      return "a bidirectional control (" + u_plus(c) + ") that reorders what is shown";
+    if ((c >= 0x200B && c <= 0x200D) || c == 0x2060 || c == 0xFEFF)
+      return "an invisible character (" + u_plus(c) + ")";
+    if (is_noncharacter(c)) return "a non-character (" + u_plus(c) + ")";
+  }
+  return {};
 }
 
 }  // namespace curdle

@@ -18,4 +18,10 @@ bool has_control_characters(std::string_view text);
 // XML forbids (controls, invalid UTF-8) dropped.
 std::string xml_escape(std::string_view text);
 
+// What makes `text` unsafe as a name that files and drawings show (a recipe's, a material's, a
+// zone's), or empty when nothing does: bytes that are not UTF-8, control characters, line
+// breaks and tabs, bidirectional controls (which reorder what a reader sees), invisible
+// characters (zero-width spaces and joiners) and non-characters (U+FFFF).
+std::string unsafe_text(std::string_view text);
+
 }  // namespace curdle

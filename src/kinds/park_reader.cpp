@@ -8,7 +8,7 @@ namespace {
 
 ParkElement read_park_element(TableReader& r, bool ground) {
   ParkElement e;
-  e.type = read_string(r, "type", "a name such as \"tree\"").value_or(ground ? "white paving" : "");
+  e.type = read_name(r, "type", "a name such as \"tree\"").value_or(ground ? "white paving" : "");
   if (e.type.empty())
     r.fail("type", "is required: what the curd places, e.g. \"tree\", \"bench\", \"grey paving\"");
   const std::string form =

@@ -47,7 +47,7 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
     TableReader r(*arr->get(i)->as_table(), path, top.source(),
                   {"name", "probabilities", "colour", "density"});
     CurdSpec curd;
-    curd.name = read_string(r, "name").value_or("curd" + std::to_string(i));
+    curd.name = read_name(r, "name").value_or("curd" + std::to_string(i));
     if (curd.name.empty() || curd.name.find_first_of(",\"\n\r+") != std::string::npos)
       r.fail("name", "must be a non-empty name without commas, quotes, '+' or line breaks");
     if (!names.insert(curd.name).second)

@@ -31,9 +31,11 @@ void read_materials(TableReader& r, const Design& design, LayoutSpec& spec) {
   if (!a || a->size() != values) r.fail("materials", allowed);
   for (const toml::node& item : *a) {
     const auto name = item.value<std::string>();
-    if (!name || name->empty() || name->size() > 200 || !valid_utf8(*name) ||
-        has_control_characters(*name))
+    if (!name || name->empty() || name->size() > 200)
       r.fail("materials", allowed + "; each a non-empty name of at most 200 characters");
+    if (const std::string unsafe = unsafe_text(*name); !unsafe.empty())
+      r.fail_node(item, "layout.materials." + std::to_string(spec.materials.size()),
+                  "holds " + unsafe + "; a product's name is one line of plain text");
     spec.materials.push_back(*name);
   }
 }

@@ -25,7 +25,7 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
   TableReader top(doc, "", where,
                   {"name", "description", "seed", "lattice", "field", "curds", "layout"});
   Recipe recipe;
-  recipe.design.name = read_string(top, "name").value_or("untitled");
+  recipe.design.name = read_name(top, "name").value_or("untitled");
   recipe.design.description = read_string(top, "description").value_or("");
   recipe.seed = read_seed(top);
   Lattice lattice = read_lattice(top);

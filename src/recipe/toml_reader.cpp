@@ -87,12 +87,24 @@ std::optional<std::string> read_string(TableReader& r, const std::string& key,
   if (!n) return std::nullopt;
   if (!n->is_string()) r.fail(key, "must be a string in double quotes: " + allowed);
   std::string text = *n->value<std::string>();
-  // Every string ends up in SVG, JSON and CSV: well-formed UTF-8 without control characters.
+  // Every string ends up in SVG, JSON, CSV and DXF: well-formed UTF-8 that shows as it reads.
   if (!valid_utf8(text)) r.fail(key, "is not valid UTF-8 text");
   if (has_control_characters(text))
     r.fail(key, "holds a control character; write plain text (tabs and line breaks allowed)");
+  if (const std::string unsafe = unsafe_text(text);
+      !unsafe.empty() && unsafe != "a line break or tab")
+    r.fail(key, "holds " + unsafe + "; write plain text");
   if (text.size() > 4096) r.fail(key, "is longer than 4096 bytes");
   return text;
+}
+
+std::optional<std::string> read_name(TableReader& r, const std::string& key,
+                                     const std::string& allowed) {
+  std::optional<std::string> name = read_string(r, key, allowed);
+  // A name is one line: in a DXF a line break would start a group code of its own.
+  if (name && name->find_first_of("\t\r\n") != std::string::npos)
+    r.fail(key, "holds a line break or tab; a name is one line of plain text");
+  return name;
 }
 
 const toml::table* read_table(TableReader& r, const std::string& key) {

@@ -79,6 +79,9 @@ int64_t read_int(TableReader& r, const std::string& key, int64_t fallback, int64
                  bool required = false);
 std::optional<std::string> read_string(TableReader& r, const std::string& key,
                                        const std::string& allowed = "text");
+// A name (a recipe's, a zone's, a park element's): a string of one line.
+std::optional<std::string> read_name(TableReader& r, const std::string& key,
+                                     const std::string& allowed = "text");
 const toml::table* read_table(TableReader& r, const std::string& key);
 std::optional<Rgb> parse_colour(std::string_view s);
 // A colour written "#rrggbb", or the fallback when the key is absent.

@@ -58,9 +58,8 @@ Polygon read_polygon(TableReader& r, const std::string& key = "polygon") {
 
 Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size) {
   Zone z;
-  z.name = read_string(r, "name", "a name").value_or("");
-  if (z.name.empty() || z.name.size() > 200 || !valid_utf8(z.name) ||
-      has_control_characters(z.name))
+  z.name = read_name(r, "name", "a name").value_or("");
+  if (z.name.empty() || z.name.size() > 200)
     r.fail("name", "must be a name of 1 to 200 characters, such as \"planter\"");
   const bool rect = r.get("rect"), polygon = r.get("polygon");
   if (rect == polygon)
