@@ -35,7 +35,9 @@ TEST(Text, NamesThatWouldNotShowAsTheyReadAreUnsafe) {
   EXPECT_NE(unsafe_text("zero\u200Bwidth").find("invisible character (U+200B)"), std::string::npos);
   EXPECT_NE(unsafe_text("end\xEF\xBF\xBF").find("non-character (U+FFFF)"), std::string::npos);
   // XML forbids U+FFFE and U+FFFF: the escaper drops them as it drops control characters.
-  EXPECT_EQ(xml_escape("a\xEF\xBF\xBF" "b\xEF\xBF\xBE"), "ab");
+  EXPECT_EQ(xml_escape("a\xEF\xBF\xBF"
+                       "b\xEF\xBF\xBE"),
+            "ab");
 }
 
 }  // namespace
