@@ -31,6 +31,12 @@ void StagedFile::check_replaceable() const {
   if (fs::is_directory(target_, ec))
     throw InputError("cannot write " + target_.string() +
                      ": a directory of that name is in the way");
+  // A device, a pipe or a socket is not ours to replace with a file.
+  const fs::file_status status = fs::symlink_status(target_, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw InputError("cannot write " + target_.string() +
+                     ": it is not a regular file (a device, pipe, socket or link); name a new "
+                     "file or a regular one to replace");
 }
 
 void StagedFile::commit() {
@@ -55,6 +61,7 @@ void StagedFile::write(const std::function<void(std::ostream&)>& write) {
 
 void write_file(const fs::path& target, const std::function<void(std::ostream&)>& write) {
   StagedFile staged(target);
+  staged.check_replaceable();
   staged.write(write);
   staged.commit();
 }

@@ -13,7 +13,8 @@ constexpr uint64_t kMaxFileBytes = uint64_t{64} << 20;
 
 LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const std::string& what,
                                       const SourceLocation& where, uint64_t max_bytes,
-                                      uint64_t max_pixels, const std::string& shown) {
+                                      uint64_t max_pixels, const std::string& shown,
+                                      int64_t max_side) {
   const std::string name = shown.empty() ? path.string() : shown;
   // The decoder's message may quote the path: shown by the same name.
   auto reason = [&](const std::runtime_error& e) {
@@ -42,11 +43,12 @@ LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const s
   std::string why;
   const std::optional<PictureHeader> header = read_picture_header(bytes, why);
   if (!header) throw InputError(where, "cannot read " + what + " " + name + ": " + why);
-  if (static_cast<uint64_t>(header->width) > max_pixels / static_cast<uint64_t>(header->height))
+  if (static_cast<uint64_t>(header->width) > max_pixels / static_cast<uint64_t>(header->height) ||
+      header->width > max_side || header->height > max_side)
     throw ResourceLimitError(where, what + " is " + std::to_string(header->width) + " x " +
                                         std::to_string(header->height) + " pixels; at most " +
-                                        std::to_string(max_pixels) +
-                                        " pixels; use a smaller image");
+                                        std::to_string(max_pixels) + " pixels and " +
+                                        std::to_string(max_side) + " a side; use a smaller image");
   ImageSize size;
   try {
     size = read_image_size(path);

@@ -19,6 +19,7 @@ namespace curdle {
 LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const std::string& what,
                                       const SourceLocation& where, uint64_t max_bytes,
                                       uint64_t max_pixels = uint64_t{1} << 32,
-                                      const std::string& shown = {});
+                                      const std::string& shown = {},
+                                      int64_t max_side = int64_t{1} << 31);
 
 }  // namespace curdle

@@ -39,6 +39,12 @@ TEST(Api, EndpointsAnswerJsonAndNameBadParameters) {
   const ApiResponse deep = api_measure(c, {{"base", "64"}, {"stages", "30"}}, "\x89PNG");
   EXPECT_EQ(deep.status, 400) << deep.body;
   EXPECT_NE(deep.body.find("stages"), std::string::npos) << deep.body;
+  // A request may not point a recipe's file at the server's disk, nor learn what is there.
+  for (const char* key : {"layout.mask", "curds.0.density.path"}) {
+    const ApiResponse path = api_generate(c, {{key, "\"/etc/passwd\""}});
+    EXPECT_EQ(path.status, 400) << key;
+    EXPECT_NE(path.body.find("names a file on the server"), std::string::npos) << path.body;
+  }
   EXPECT_EQ(api_colours({{"colour", "#ff0000"}}).status, 200);
   EXPECT_EQ(api_colours({{"colour", "red"}}).status, 400);
   const auto error = nlohmann::json::parse(api_error(413, "too large").body);

@@ -54,6 +54,15 @@ TEST(Recipe, Zones) {
   }
 }
 
+// The page sends layout.zones = [] when every zone is removed: no zones.
+TEST(Recipe, AnEmptyZoneListIsNoZones) {
+  const std::string text =
+      "[lattice]\nbase = 2\ndimension = 2\n[[curds]]\nprobabilities = [\"3/4\"]\n"
+      "[layout]\nkind = \"paving\"\nfloor = [900, 600]\n";
+  const Recipe r = parse_recipe(text, "r.toml", {"layout.zones=[]"});
+  EXPECT_TRUE(r.layout->zones.empty());
+}
+
 TEST(Recipe, Outline) {
   const std::string head = with_layout("kind = \"paving\"\ntile = [600, 300]\n");
   const Recipe r = parse_recipe(

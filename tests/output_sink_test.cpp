@@ -8,6 +8,26 @@
 namespace fs = std::filesystem;
 
 namespace curdle::app {
+// A run killed with SIGKILL leaves its hidden staging directory; the next run into the same
+// place removes it (its process is gone), and leaves those of running processes alone.
+TEST(StagingDirectory, RemovesWhatKilledRunsLeft) {
+  const fs::path parent = fs::temp_directory_path() / "curdle-staging-test";
+  fs::remove_all(parent);
+  fs::create_directories(parent / ".out.curdle-2147483646" / "sheets");  // no such process
+  fs::create_directories(parent / ".out.curdle-1");                      // init runs
+  fs::create_directories(parent / ".other.curdle-2147483646");           // another output
+  {
+    StagingDirectory sink(parent / "out");
+    sink.write("report.json", [](std::ostream& o) { o << "{}"; });
+    sink.commit();
+  }
+  EXPECT_FALSE(fs::exists(parent / ".out.curdle-2147483646"));
+  EXPECT_TRUE(fs::exists(parent / ".out.curdle-1"));
+  EXPECT_TRUE(fs::exists(parent / ".other.curdle-2147483646"));
+  EXPECT_TRUE(fs::exists(parent / "out" / "report.json"));
+  fs::remove_all(parent);
+}
+
 TEST(Outputs, MemoryAndDirectorySinksHoldTheSameBytes) {
   const app::Run run = run_of(kTiles);
   std::vector<const Output*> outputs;

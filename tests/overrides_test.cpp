@@ -36,3 +36,14 @@ TEST(Recipe, OverrideErrorsNameTheOverride) {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+TEST(Recipe, AnArrayIndexIsAWholeNumberAndNothingElse) {
+  for (const char* bad : {"curds.0.probabilities.0abc=\"1/2\"", "curds.0x.name=\"a\"",
+                          "curds.0.probabilities.9=\"1/2\"", "curds.-1.name=\"a\""})
+    EXPECT_THROW(parse_recipe(kGood, "r.toml", {bad}), InputError) << bad;
+  EXPECT_NO_THROW(parse_recipe(kGood, "r.toml", {"curds.0.probabilities.0=\"1/2\""}));
+}
+
+}  // namespace curdle

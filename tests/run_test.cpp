@@ -32,3 +32,15 @@ TEST(Outputs, SeedsAndWindowsAreCheckedAsParameters) {
 }
 
 }  // namespace curdle::app
+
+namespace curdle::app {
+
+TEST(Run, SizesAreWholeBytesOfAtLeastAKilobyte) {
+  EXPECT_EQ(parse_bytes("8G", "max_memory"), uint64_t{8} << 30);
+  EXPECT_EQ(parse_bytes("1.5K", "max_memory"), 1536u);
+  // 0.1 bytes read as 0, which means "the default": a limit that was no limit.
+  for (const char* bad : {"0.1", "1", "1023", "0", "-1G", "lots", "1e400", "", "5Q"})
+    EXPECT_THROW(parse_bytes(bad, "max_memory"), InputError) << bad;
+}
+
+}  // namespace curdle::app

@@ -22,7 +22,8 @@ TEST(SearchZones, MillimetresBecomeTheCellsLaidThere) {
   EXPECT_EQ(zone_in_cells("empty=0,0,900,600mm", run), "empty=0,0,4,3");
   EXPECT_EQ(zone_in_cells("empty=200,200,900,600mm", run), "empty=1,1,3,2");
   for (const char* bad :
-       {"empty=0,0,0,600mm", "empty=0,0,nan,600mm", "empty=0,0,600mm", "empty=30000,0,100,100mm"}) {
+       {"empty=0,0,0,600mm", "empty=0,0,nan,600mm", "empty=0,0,600mm", "empty=30000,0,100,100mm",
+        "empty=0,0,1e308,10 mm", "empty=-100,0,300,300 mm", "empty=19900,0,300,300 mm"}) {
     try {
       zone_in_cells(bad, run);
       ADD_FAILURE() << bad << " was accepted";

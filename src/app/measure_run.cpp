@@ -9,12 +9,14 @@
 namespace curdle::app {
 namespace {
 // 8192 x 8192: box counts and lacunarity take about 30 bytes a pixel.
-constexpr uint64_t kMaxPixels = uint64_t{1} << 26;
+constexpr int64_t kMaxSide = 8192;
+constexpr uint64_t kMaxPixels = uint64_t{kMaxSide} * kMaxSide;
 }  // namespace
 
 LuminanceImage read_picture(const std::string& path, uint64_t max_memory) {
   return read_bounded_luminance(path, "the picture", SourceLocation{path, 0, 0, "", ""},
-                                max_memory ? max_memory : default_memory_limit(), kMaxPixels);
+                                max_memory ? max_memory : default_memory_limit(), kMaxPixels, {},
+                                kMaxSide);
 }
 
 void check_base(int base) {

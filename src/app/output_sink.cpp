@@ -1,9 +1,11 @@
 #include "app/output_sink.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -55,6 +57,25 @@ void remove_staged_files_for_exit() {
   for (const fs::path& p : staged_paths()) fs::remove_all(p, ec);
 }
 
+namespace {
+
+// Staging directories of runs that were killed (SIGKILL leaves no time to remove them): named
+// `prefix` and the process's ID, and no process of that ID runs.
+void remove_abandoned_staging(const fs::path& parent, const std::string& prefix) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(parent, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0 || !entry.is_directory(ec)) continue;
+    const std::string id = name.substr(prefix.size());
+    pid_t pid = 0;
+    const auto [end, bad] = std::from_chars(id.data(), id.data() + id.size(), pid);
+    if (bad != std::errc() || end != id.data() + id.size() || pid <= 0) continue;
+    if (::kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), ec);
+  }
+}
+
+}  // namespace
+
 StagingDirectory::StagingDirectory(fs::path dir,
                                    std::function<bool(const std::string&, bool)> is_output)
     : dir_(std::move(dir)) {
@@ -91,6 +112,7 @@ StagingDirectory::StagingDirectory(fs::path dir,
     std::string hidden = ".";
     hidden += absolute.filename().string();
     hidden += ".curdle-";
+    remove_abandoned_staging(absolute.parent_path(), hidden);
     hidden += std::to_string(::getpid());
     staging_ = absolute.parent_path() / hidden;
   }

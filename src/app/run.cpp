@@ -21,7 +21,8 @@ namespace curdle::app {
 
 namespace {
 constexpr uint64_t kMaxRecipeBytes = uint64_t{1} << 20;
-constexpr uint64_t kMaxDensityPixels = uint64_t{1} << 24;  // 4096 x 4096
+constexpr int64_t kMaxDensitySide = 4096;
+constexpr uint64_t kMaxDensityPixels = uint64_t{kMaxDensitySide} * kMaxDensitySide;
 
 // Reads the pictures of image density fields, relative to the recipe, as hostile files.
 void load_density_images(Run& run) {
@@ -30,9 +31,9 @@ void load_density_images(Run& run) {
     if (!density || density->kind != DensityKind::image) continue;
     const std::string key = "curds." + std::to_string(c) + ".density.path";
     const auto path = std::filesystem::path(run.recipe_path).parent_path() / density->path;
-    LuminanceImage image = read_bounded_luminance(path, "the density image",
-                                                  SourceLocation{run.recipe_path, 0, 0, key, ""},
-                                                  run.generate.max_memory_bytes, kMaxDensityPixels);
+    LuminanceImage image = read_bounded_luminance(
+        path, "the density image", SourceLocation{run.recipe_path, 0, 0, key, ""},
+        run.generate.max_memory_bytes, kMaxDensityPixels, {}, kMaxDensitySide);
     // Black to white: a high-dynamic-range or broken picture is held to [0, 1] (NaN as black).
     for (float& l : image.luminance) l = l > 0 ? (l < 1 ? l : 1.0f) : 0.0f;
     density->width = image.width;
@@ -75,6 +76,10 @@ uint64_t parse_bytes(const std::string& text, const std::string& name) {
     throw InputError(parameter(name), "'" + text +
                                           "' is not a size; write a positive number with K, M, G "
                                           "or T, e.g. 8G (at most 2^60 bytes)");
+  // Less than a byte would read as 0, which means "the default": a limit is at least 1 K.
+  if (value * scale < 1024)
+    throw InputError(parameter(name),
+                     "'" + text + "' is under 1K; a limit is at least 1K, e.g. 8G");
   return static_cast<uint64_t>(value * scale);
 }
 

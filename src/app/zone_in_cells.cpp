@@ -47,6 +47,11 @@ std::string zone_in_cells(const std::string& target, const Run& run) {
     numbers = comma == std::string::npos ? "" : numbers.substr(comma + 1);
   }
   const Rect zone{v[0], v[1], v[2], v[3]};
+  const std::array<double, 2>& surface = *spec->size;
+  if (zone.x < 0 || zone.y < 0 || zone.right() > surface[0] + 1e-6 ||
+      zone.top() > surface[1] + 1e-6)
+    fail(fmt::format("the rectangle must lie on the {:g} x {:g} mm surface, from 0, 0", surface[0],
+                     surface[1]));
   // The elements' places do not depend on the curds: lay out the floor once, from any field.
   Design design = run.recipe.design;
   const auto cells = elements_to_cover(*spec);

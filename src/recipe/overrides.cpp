@@ -63,8 +63,11 @@ void apply_override(toml::table& doc, const std::string& assignment) {
   } else if (auto* a = at->as_array()) {
     size_t idx = 0;
     auto [p, ec] = std::from_chars(last.data(), last.data() + last.size(), idx);
-    if (ec != std::errc() || idx >= a->size())
-      throw InputError(parameter("set", key), "index '" + last + "' is out of range");
+    // The whole part is the index: "0abc" is no index.
+    if (ec != std::errc() || p != last.data() + last.size() || idx >= a->size())
+      throw InputError(parameter("set", key), "index '" + last +
+                                                  "' is not an entry; the array has " +
+                                                  std::to_string(a->size()) + " entries (from 0)");
     v.visit([&](auto&& x) { a->replace(a->cbegin() + static_cast<ptrdiff_t>(idx), x); });
   } else {
     throw InputError(parameter("set", key), "cannot set a key inside a value");

@@ -112,6 +112,7 @@ void read_zones(TableReader& r, const Design& design, LayoutSpec& spec) {
   const toml::node* n = r.get("zones");
   if (!n) return;
   const toml::array* a = n->as_array();
+  if (a && a->empty()) return;  // no zones (the page sends [] when all are removed)
   if (!a || !a->is_array_of_tables() || a->size() > kMostZones)
     r.fail("zones",
            "must be [[layout.zones]] tables (at most 1000), each with name, rect or "

@@ -66,6 +66,16 @@ RunRequest read_run(const Params& params, const std::set<std::string>& own_names
                                            "curds.0.probabilities=[\"1/2\",\"1/2\"]");
     }
   }
+  // Paths name files on the server's disk: a request may not point them elsewhere, and their
+  // messages would tell whether a path exists there. The recipe's own are used.
+  for (const std::string& set : r.sets) {
+    const std::string key = set.substr(0, set.find('='));
+    const std::string last = key.substr(key.rfind('.') + 1);
+    if (last == "mask" || last == "path")
+      throw InputError(parameter("set", key),
+                       "names a file on the server, which requests may not set; the recipe's "
+                       "own file is used");
+  }
   return r;
 }
 
