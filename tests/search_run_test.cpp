@@ -19,7 +19,7 @@ TEST(SearchRun, SeedsSegmentsAndTheBudgetAreChecked) {
   EXPECT_THROW(parse_segment_size("12", 2, "segment"), InputError);
   EXPECT_THROW(parse_segment_size("0,8", 2, "segment"), InputError);
   const Design d = test::design(2, 2, {{"3/4", "2/3"}});
-  EXPECT_EQ(search_work(d, 1, 10), 10u * 16 * 2);
+  EXPECT_EQ(search_work(d, 1, 10), 10u * (16 * 2 + kSeedWork));
   EXPECT_EQ(search_work(d, 0, UINT64_MAX), UINT64_MAX);  // saturates
   SearchRequest request;
   request.run.recipe_path = "r.toml";
@@ -28,6 +28,11 @@ TEST(SearchRun, SeedsSegmentsAndTheBudgetAreChecked) {
   request.seeds = "1..1000000";
   request.max_work = 1000;
   EXPECT_THROW(resolve_search(request), ResourceLimitError);
+  // Each seed pays its own cost: many seeds of a tiny field are work too.
+  request.seeds = "1..268435456";
+  request.max_work = uint64_t{1} << 30;
+  EXPECT_THROW(resolve_search(request), ResourceLimitError);
+  request.max_work = SearchRequest::kDefaultSearchWork;
   request.seeds = "1..20";
   const SearchRun search = resolve_search(request);
   EXPECT_EQ(search.first, 1u);

@@ -52,8 +52,10 @@ std::array<int64_t, 2> parse_segment_size(const std::string& text, int dimension
 }
 
 uint64_t search_work(const Design& d, uint64_t first, uint64_t last) {
-  const unsigned __int128 work = (static_cast<unsigned __int128>(last - first) + 1) *
-                                 d.field.cells() * static_cast<unsigned>(d.lattice.stages);
+  const unsigned __int128 per_seed =
+      static_cast<unsigned __int128>(d.field.cells()) * static_cast<unsigned>(d.lattice.stages) +
+      kSeedWork;
+  const unsigned __int128 work = (static_cast<unsigned __int128>(last - first) + 1) * per_seed;
   return work > UINT64_MAX ? UINT64_MAX : static_cast<uint64_t>(work);
 }
 
@@ -69,8 +71,9 @@ SearchRun resolve_search(const SearchRequest& request) {
     throw ResourceLimitError(
         parameter("seeds"),
         std::to_string(s.first) + ".." + std::to_string(s.last) + " is " + std::to_string(work) +
-            " cell-stages of work (seeds x " + std::to_string(d.field.cells()) + " cells x " +
-            std::to_string(d.lattice.stages) + " stages), above the budget of " +
+            " cell-stages of work (seeds x (" + std::to_string(d.field.cells()) + " cells x " +
+            std::to_string(d.lattice.stages) + " stages + " + std::to_string(kSeedWork) +
+            " for each seed's own drawing, scoring and ranking)), above the budget of " +
             std::to_string(request.max_work) + "; search fewer seeds or a smaller field");
   // Each thread holds one seed's curds and, for segments, the grid of values with its sums:
   // the grid is 2 bytes a cell, and each target reads one prefix-sum table of 4 bytes a cell.

@@ -37,7 +37,12 @@ struct SearchRun {
   uint64_t first = 0, last = 0;
 };
 
-// Cell-stages a search of these seeds does: seeds x field cells x stages (saturating).
+// What a seed costs beyond its cells, in cell-stages: drawing, scoring and ranking it. Without
+// it a search of 2^28 seeds of a one-cell field passed the budget and ran for minutes.
+inline constexpr uint64_t kSeedWork = 1024;
+
+// Cell-stages a search of these seeds does: seeds x (field cells x stages + kSeedWork),
+// saturating.
 uint64_t search_work(const Design& design, uint64_t first, uint64_t last);
 
 // Checks everything, the work budget and the memory the threads need together; InputError naming
