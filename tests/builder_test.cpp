@@ -273,3 +273,26 @@ TEST(Layout, SlopingAndCurvedEdgesCutPiecesExactly) {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+// Cutting tests every element against every corner of a sloping edge: a surface of 90,000
+// elements along a 4,000-corner circle is refused before anything is laid, with the figure.
+TEST(Layout, CuttingWorkIsBoundedBeforeLaying) {
+  const Design d = test::design(2, 2, {{"3/4"}});
+  LayoutSpec spec = test::layout_spec("paving");
+  spec.size = std::array<double, 2>{90000, 90000};
+  for (int i = 0; i < 4000; ++i) {
+    const double a = 2 * 3.14159265358979 * i / 4000;
+    spec.outline.push_back({45000 + 44000 * std::cos(a), 45000 + 44000 * std::sin(a)});
+  }
+  try {
+    lay_floor(d, spec, 1);
+    FAIL() << "90,000 elements along 4,000 corners were cut";
+  } catch (const ResourceLimitError& e) {
+    EXPECT_NE(std::string(e.what()).find("90000 elements along 4000 corners"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace curdle

@@ -28,6 +28,10 @@ double centring_shift(double extent, double module, double joint);
 // keep mode the colours shown side by side. Counts are left at zero.
 std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spec);
 
+// Elements x corners of sloping or curved edges that cutting may test: about ten seconds (90,000
+// elements along a 10,000-corner ellipse, 9e8, took 35 s).
+inline constexpr uint64_t kMaxCuttingWork = uint64_t{1} << 28;
+
 // A grid of modules and joints laid from the origin corner over `view` (a 2-D box of cells),
 // one element per cell, cut at the surface's edges, its outline, `openings` (a façade's windows
 // and doors) and excluded zones; value zones applied. For kinds to build on.
