@@ -1,4 +1,4 @@
-// Helpers that several test files share.
+// The radial density design the density tests share.
 #pragma once
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Helpers that several test files share.
+// Stepping stones, a layout kind defined in the tests alone, and a run of its recipe.
 #pragma once
 
 #include <gtest/gtest.h>

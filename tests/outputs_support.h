@@ -1,4 +1,4 @@
-// Helpers that several test files share.
+// A small tile recipe run through the application, which the application tests share.
 #pragma once
 
 #include <gtest/gtest.h>

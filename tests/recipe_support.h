@@ -1,4 +1,4 @@
-// Helpers that several test files share.
+// A recipe with every key, which the recipe reading tests share.
 #pragma once
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Helpers that several test files share.
+// The two-curd field the seed search and segment measure tests share.
 #pragma once
 
 #include <gtest/gtest.h>

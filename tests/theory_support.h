@@ -1,4 +1,4 @@
-// Helpers that several test files share.
+// What the theory and extinction tests share: their headers and the inline designs.
 #pragma once
 
 #include <gtest/gtest.h>
