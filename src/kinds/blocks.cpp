@@ -70,7 +70,7 @@ Layout BlocksKind::build(const Design& design, const CurdField& field, const Box
   Layout layout;
   layout.kind = this;
   layout.combine = spec.combine;
-  layout.element_type = "block";
+  layout.element_type = std::string(element_noun());
   layout.view = view;
   layout.columns = view.size[0];
   layout.rows = view.size[1];
@@ -102,14 +102,14 @@ Layout BlocksKind::build(const Design& design, const CurdField& field, const Box
         e.nominal = Rect{x * w, y * d, w, d};
         e.shape = {e.nominal};
         e.stock_w = w, e.stock_h = d;
-        e.key = ElementId{'B', digits, z, y, x, ""};
+        e.key = ElementId{id_letter(), digits, z, y, x, ""};
         e.id = e.key.text();
         layout.elements.push_back(std::move(e));
       }
   // Plan: each column shows its top-most block. Elevation from the front (y = 0 looking
   // towards +y): each position shows the first block met.
   auto id_at = [&](int64_t x, int64_t y, int64_t z) {
-    return ElementId{'B', digits, z, y, x, ""}.text();
+    return ElementId{id_letter(), digits, z, y, x, ""}.text();
   };
   for (int64_t y = 0; y < view.size[1]; ++y)
     for (int64_t x = 0; x < view.size[0]; ++x) {
