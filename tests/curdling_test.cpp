@@ -84,6 +84,22 @@ TEST(Curdling, ThreadCountDoesNotChangeAnyBit) {
   }
 }
 
+// The draws do not depend on the probabilities: under one seed, raising a stage's p only adds
+// cells (the README's promise for comparing variants).
+TEST(Curdling, RaisingAProbabilityUnderOneSeedOnlyAddsCells) {
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    const Design low = design(3, 2, {{"0.6", "0.3", "0.5"}});
+    const Design high = design(3, 2, {{"0.6", "0.7", "0.5"}});
+    const CurdField a = curdle(low, seed, low.field), b = curdle(high, seed, high.field);
+    const Bitset& small = a.finest(0);
+    const Bitset& large = b.finest(0);
+    uint64_t kept = 0;
+    for_each_set(small, 0, small.size, [&](uint64_t i) { kept += large.test(i); });
+    EXPECT_EQ(kept, small.count()) << "seed " << seed;
+    EXPECT_GE(large.count(), small.count());
+  }
+}
+
 TEST(Curdling, SeedsAndCurdsAreIndependentStreams) {
   const Design d = design(4, 2, {{"1/2", "1/2"}, {"1/2", "1/2"}});
   const CurdField a = curdle(d, 1, d.field), b = curdle(d, 2, d.field);
