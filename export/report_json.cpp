@@ -56,6 +56,8 @@ json report_to_json(const Report& r) {
                 {"expected_at_these_stages",
                  c.expected_fit ? rounded(c.expected_fit->slope) : json(nullptr)},
                 {"theory", rounded(c.theory_dimension)}};
+    // No limit dimension where the curd dies out almost surely: said, not a negative number.
+    if (c.dies_out) fit["theory_dies_out"] = true;
     // Boxes the view cuts weighted by the share it shows (null above 2^24 cells).
     if (c.share_weighted_fit)
       fit["share_weighted"] = {

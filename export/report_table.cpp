@@ -36,12 +36,14 @@ std::string format_report_table(const Report& r) {
                       number(s.mean_dimension), number(s.theory_dimension)));
     // The fit beside what the same fit gives on the expected counts at these stages and in this
     // view, and the limit of many stages: a crop or few stages move the first, not the last.
-    line(fmt::format(
-        "  box dimension: fit {} (R^2 {}, {} levels); expected at {} stages {}; "
-        "limit {}",
-        c.fit ? number(c.fit->slope) : "-", c.fit ? number(c.fit->r2, 4) : "-",
-        c.fit ? c.fit->points : 0, r.lattice.stages,
-        c.expected_fit ? number(c.expected_fit->slope) : "-", number(c.theory_dimension)));
+    line(
+        fmt::format("  box dimension: fit {} (R^2 {}, {} levels); expected at {} stages {}; "
+                    "limit {}",
+                    c.fit ? number(c.fit->slope) : "-", c.fit ? number(c.fit->r2, 4) : "-",
+                    c.fit ? c.fit->points : 0, r.lattice.stages,
+                    c.expected_fit ? number(c.expected_fit->slope) : "-",
+                    c.dies_out ? std::string("none: run on, the curd dies out almost surely")
+                               : number(c.theory_dimension)));
     // Shown when the view cuts boxes, so that the two fits differ.
     if (c.share_weighted_fit && c.fit &&
         std::fabs(c.share_weighted_fit->slope - c.fit->slope) > 1e-9)

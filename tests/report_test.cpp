@@ -1,5 +1,7 @@
 // Curdling against theory over many fixed seeds. Bounds are 4 standard errors (mean) or
 // 4 estimated standard errors of the sample variance, so a pass is the same on every run.
+#include "curdle/report.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -206,6 +208,28 @@ TEST(Statistics, BoxCountsMatchTheirFiniteStageExpectationWithExtinction) {
   expect_box_counts_match(exact, Box{{5, 9, 0}, {61, 40, 1}}, 1500);
   const Design cube = design(2, 3, {{"3/4", "1/2", "1/2", "1/2"}});
   expect_box_counts_match(cube, Box{{3, 0, 1}, {11, 13, 9}}, 1500);
+}
+
+}  // namespace curdle
+
+namespace curdle {
+
+// Where each cell's children survive one at a time on average or fewer (p b^E <= 1), run on the
+// curd dies out almost surely: the report says so instead of a negative dimension.
+TEST(Report, ACurdThatDiesOutHasNoLimitDimension) {
+  const Design dying = test::design(2, 2, {{"0.2", "0.2", "0.2"}});  // 0.2 x 4 = 0.8
+  const Report r = make_report(dying, 3, curdle(dying, 3, dying.field), dying.field);
+  EXPECT_TRUE(r.curds[0].dies_out);
+  EXPECT_FALSE(r.curds[0].theory_dimension);
+  const Design critical = test::design(2, 2, {{"1/4", "1/4"}});  // exactly 1: still dies out
+  EXPECT_TRUE(make_report(critical, 1, curdle(critical, 1, critical.field), critical.field)
+                  .curds[0]
+                  .dies_out);
+  const Design living = test::design(2, 2, {{"1/2", "1/2"}});
+  const Report l = make_report(living, 3, curdle(living, 3, living.field), living.field);
+  EXPECT_FALSE(l.curds[0].dies_out);
+  ASSERT_TRUE(l.curds[0].theory_dimension);
+  EXPECT_NEAR(*l.curds[0].theory_dimension, 1.0, 1e-12);  // 2 + log2(1/2)
 }
 
 }  // namespace curdle

@@ -132,8 +132,9 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     }
     cr.final_probability = survival_probability(spec.probabilities, l.stages);
     if (spec.density) cr.density = describe(*spec.density);
-    cr.theory_dimension =
-        finite(theory_dimension(l, std::pow(cr.final_probability, 1.0 / l.stages)));
+    const double mean_p = std::pow(cr.final_probability, 1.0 / l.stages);
+    cr.dies_out = mean_p * static_cast<double>(l.children()) <= 1 + 1e-12;
+    if (!cr.dies_out) cr.theory_dimension = finite(theory_dimension(l, mean_p));
     report.curds.push_back(std::move(cr));
   }
 

@@ -40,8 +40,11 @@ struct CurdReport {
   std::optional<LineFit> share_weighted_fit;
   std::optional<LineFit> expected_share_weighted_fit;
   std::optional<double> theory_dimension;  // E + log(P_K^(1/K)) / log b, the limit K -> inf
-  double final_probability = 0;            // P_K
-  std::string density;  // the curd's density field (density.h, describe()); empty: none
+  // Each cell's children survive P_K^(1/K) b^E at a time on average, 1 or fewer: run for many
+  // stages, the curd dies out almost surely (Galton-Watson), and there is no limit dimension.
+  bool dies_out = false;
+  double final_probability = 0;  // P_K
+  std::string density;           // the curd's density field (density.h, describe()); empty: none
 };
 
 struct ValueRow {
