@@ -49,6 +49,8 @@ json report_to_json(const Report& r) {
                         {"local_dimension", rounded(s.local_dimension)},
                         {"log_ratio_dimension", rounded(s.mean_dimension)},
                         {"theory_dimension", rounded(s.theory_dimension)}});
+      // Quota mode's target that the field could not hold: said, beside what was reached.
+      if (s.quota_missed) stages.back()["quota_target_missed"] = *s.quota_missed;
     }
     json fit = {{"fit", c.fit ? rounded(c.fit->slope) : json(nullptr)},
                 {"r2", c.fit ? rounded(c.fit->r2) : json(nullptr)},

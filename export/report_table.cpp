@@ -34,6 +34,12 @@ std::string format_report_table(const Report& r) {
                       s.stage, s.probability.text(), s.survivors, s.expected, s.expected_sd,
                       s.box_count, s.expected_box_count, number(s.local_dimension),
                       number(s.mean_dimension), number(s.theory_dimension)));
+    for (const StageRow& s : c.stages)
+      if (s.quota_missed)
+        line(
+            fmt::format("  stage {}: the quota of {} was not reached, {} survive: the children of "
+                        "the survivors inside the field are fewer",
+                        s.stage, *s.quota_missed, s.survivors));
     // The fit beside what the same fit gives on the expected counts at these stages and in this
     // view, and the limit of many stages: a crop or few stages move the first, not the last.
     line(

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "curdle/curdling.h"
 #include "curdle/density_theory.h"
 #include "curdle/extinction.h"
 #include "curdle/overlay.h"
@@ -106,6 +107,15 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
                         : quota && !report.sd_is_approximate
                             ? 0.0
                             : survivors_sd(l, spec.probabilities, k, view);
+      if (quota && !report.sd_is_approximate) {
+        const uint64_t target =
+            quota_target(spec.probabilities, k, cells_meeting(l, k, design.field));
+        if (row.survivors < target) {
+          // Not every target fits in the field: then the count varies, as canonical's does.
+          row.quota_missed = target;
+          row.expected_sd = survivors_sd(l, spec.probabilities, k, view);
+        }
+      }
       row.box_count = cr.box_counts[k];
       row.expected_box_count = cr.expected_box_counts[static_cast<size_t>(k)];
       if (row.survivors > 0 && previous > 0)

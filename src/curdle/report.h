@@ -19,6 +19,9 @@ struct StageRow {
   uint64_t survivors = 0;  // N_k
   double expected = 0;     // C_k * p_1 ... p_k
   double expected_sd = 0;
+  // Quota mode over the whole field: the stage's target when the survivors' children inside
+  // the field were fewer, so that it could not be met (survivors is what was reached).
+  std::optional<uint64_t> quota_missed;
   uint64_t box_count = 0;                  // stage-k cells keeping a final survivor
   double expected_box_count = 0;           // its expectation at this K, with extinction
   std::optional<double> local_dimension;   // log(N_k / N_(k-1)) / log b
