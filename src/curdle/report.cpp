@@ -43,6 +43,49 @@ std::vector<double> expected_values_with_density(const Design& design, const Box
   return expected;
 }
 
+// The report's row of every stage of one curd: survivors and box counts beside their
+// expectations (with the curd's density field when it has one), and the dimensions.
+void add_stage_rows(CurdReport& cr, const Design& design, const CurdSpec& spec, const Curd& curd,
+                    const DensityExpectation* density, const Box& view, bool sd_is_approximate) {
+  const Lattice& l = design.lattice;
+  const bool quota = l.mode == Mode::quota;
+  const double log_b = std::log(static_cast<double>(l.base));
+  uint64_t previous = cr.roots;
+  // Per root cell meeting the view: N_k <= R b^(E k), so the ratio never exceeds E.
+  const double roots = static_cast<double>(cells_meeting(l, 0, view));
+  for (int k = 1; k <= l.stages; ++k) {
+    StageRow row;
+    row.stage = k;
+    row.probability = spec.probabilities[k - 1];
+    row.cells = cells_meeting(l, k, view);
+    // The finest level's box count is its survivors: no second pass over the largest stage.
+    row.survivors = k == l.stages ? cr.box_counts[k] : count_survivors(curd, k, l.children());
+    row.expected = density ? density->survivors[static_cast<size_t>(k)]
+                           : expected_survivors(l, spec.probabilities, k, view);
+    row.expected_sd = density                       ? density->survivors_sd[static_cast<size_t>(k)]
+                      : quota && !sd_is_approximate ? 0.0
+                                                    : survivors_sd(l, spec.probabilities, k, view);
+    if (quota && !sd_is_approximate) {
+      const uint64_t target =
+          quota_target(spec.probabilities, k, cells_meeting(l, k, design.field));
+      if (row.survivors < target) {
+        // Not every target fits in the field: then the count varies, as canonical's does.
+        row.quota_missed = target;
+        row.expected_sd = survivors_sd(l, spec.probabilities, k, view);
+      }
+    }
+    row.box_count = cr.box_counts[k];
+    row.expected_box_count = cr.expected_box_counts[static_cast<size_t>(k)];
+    if (row.survivors > 0 && previous > 0)
+      row.local_dimension = std::log(static_cast<double>(row.survivors) / previous) / log_b;
+    if (row.survivors > 0)
+      row.mean_dimension = std::log(static_cast<double>(row.survivors) / roots) / (k * log_b);
+    row.theory_dimension = finite(theory_dimension(l, row.probability.value()));
+    previous = row.survivors;
+    cr.stages.push_back(row);
+  }
+}
+
 }  // namespace
 
 Report make_report(const Design& design, uint64_t seed, const CurdField& generated,
@@ -62,7 +105,6 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
   report.cells = view.cells();
   const bool quota = l.mode == Mode::quota;
   report.sd_is_approximate = quota && !(view == design.field);
-  const double log_b = std::log(static_cast<double>(l.base));
 
   std::vector<Bitset> scratch;
   // Share-weighted box counts, for views of up to 2^24 cells. A view of whole root cells cuts
@@ -84,7 +126,6 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     cr.box_counts = box_counts(curd, l.children(), scratch);
     cr.roots = curd.stages[0].count();
     cr.root_box_count = cr.box_counts[0];
-    uint64_t previous = cr.roots;
     // A density field changes every expectation (density_theory.h).
     const bool dense = spec.density.has_value();
     const DensityExpectation density =
@@ -92,40 +133,8 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
               : DensityExpectation{};
     cr.expected_box_counts =
         dense ? density.box_counts : expected_box_counts(l, spec.probabilities, view);
-    // Per root cell meeting the view: N_k <= R b^(E k), so the ratio never exceeds E.
-    const double roots = static_cast<double>(cells_meeting(l, 0, view));
-    for (int k = 1; k <= l.stages; ++k) {
-      StageRow row;
-      row.stage = k;
-      row.probability = spec.probabilities[k - 1];
-      row.cells = cells_meeting(l, k, view);
-      // The finest level's box count is its survivors: no second pass over the largest stage.
-      row.survivors = k == l.stages ? cr.box_counts[k] : count_survivors(curd, k, l.children());
-      row.expected = dense ? density.survivors[static_cast<size_t>(k)]
-                           : expected_survivors(l, spec.probabilities, k, view);
-      row.expected_sd = dense ? density.survivors_sd[static_cast<size_t>(k)]
-                        : quota && !report.sd_is_approximate
-                            ? 0.0
-                            : survivors_sd(l, spec.probabilities, k, view);
-      if (quota && !report.sd_is_approximate) {
-        const uint64_t target =
-            quota_target(spec.probabilities, k, cells_meeting(l, k, design.field));
-        if (row.survivors < target) {
-          // Not every target fits in the field: then the count varies, as canonical's does.
-          row.quota_missed = target;
-          row.expected_sd = survivors_sd(l, spec.probabilities, k, view);
-        }
-      }
-      row.box_count = cr.box_counts[k];
-      row.expected_box_count = cr.expected_box_counts[static_cast<size_t>(k)];
-      if (row.survivors > 0 && previous > 0)
-        row.local_dimension = std::log(static_cast<double>(row.survivors) / previous) / log_b;
-      if (row.survivors > 0)
-        row.mean_dimension = std::log(static_cast<double>(row.survivors) / roots) / (k * log_b);
-      row.theory_dimension = finite(theory_dimension(l, row.probability.value()));
-      previous = row.survivors;
-      cr.stages.push_back(row);
-    }
+    add_stage_rows(cr, design, spec, curd, dense ? &density : nullptr, view,
+                   report.sd_is_approximate);
     cr.fit = fit_box_dimension(cr.box_counts, l.base);
     cr.expected_fit = fit_box_dimension(cr.expected_box_counts, l.base);
     if (weighted && !cuts_boxes) {
