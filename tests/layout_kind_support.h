@@ -16,6 +16,7 @@
 #include "layout/builder.h"
 #include "layout/layout_kind.h"
 #include "recipe/layout_reader.h"
+#include "test_support.h"
 
 namespace curdle {
 
@@ -74,11 +75,7 @@ materials = ["lawn", "Granite"]
 )";
 
 inline app::Run run_of(const std::string& text, std::vector<std::string> overrides = {}) {
-  app::RunRequest request;
-  request.recipe_text = text;
-  request.recipe_path = "stones.toml";
-  request.overrides = std::move(overrides);
-  return app::resolve_run(request);
+  return test::run_recipe("stones.toml", text, std::move(overrides));
 }
 
 inline size_t count(const std::string& text, const std::string& what) {

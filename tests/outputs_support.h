@@ -12,6 +12,7 @@
 #include "app/reproduce.h"
 #include "app/zone_in_cells.h"
 #include "curdle/error.h"
+#include "test_support.h"
 
 namespace fs = std::filesystem;
 
@@ -33,11 +34,7 @@ joint = 5
 )";
 
 inline app::Run run_of(const std::string& text, std::vector<std::string> overrides = {}) {
-  RunRequest request;
-  request.recipe_text = text;
-  request.recipe_path = "tiles.toml";
-  request.overrides = std::move(overrides);
-  return resolve_run(request);
+  return test::run_recipe("tiles.toml", text, std::move(overrides));
 }
 
 inline std::vector<std::string> names(const std::vector<const Output*>& outputs) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "curdle/error.h"
+#include "test_support.h"
 
 namespace curdle::app {
 namespace {
@@ -26,15 +27,8 @@ rect = [0, 0, 300, 300]
 rule = "exclude"
 )";
 
-app::Run run_of(const char* text) {
-  RunRequest request;
-  request.recipe_text = text;
-  request.recipe_path = "yard.toml";
-  return resolve_run(request);
-}
-
 TEST(Page, TheRunDescribedItsSegmentAndTheColours) {
-  const app::Run run = run_of(kPaving);
+  const app::Run run = test::run_recipe("yard.toml", kPaving);
   const auto j = describe_run(run);
   EXPECT_EQ(j["name"], "yard");
   EXPECT_EQ(j["layout"]["element"], "paving tile");

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/run.h"
 #include "curdle/curd.h"
 #include "kinds/blocks.h"
 #include "kinds/facade.h"
@@ -14,6 +15,17 @@
 #include "recipe/recipe.h"
 
 namespace curdle::test {
+
+// The recipe `text`, named `path` in messages and commands, with `overrides`, resolved into a
+// run as the shells resolve theirs.
+inline app::Run run_recipe(const std::string& path, const std::string& text,
+                           std::vector<std::string> overrides = {}) {
+  app::RunRequest request;
+  request.recipe_path = path;
+  request.recipe_text = text;
+  request.overrides = std::move(overrides);
+  return app::resolve_run(request);
+}
 
 // A [layout] of the kind called `kind` with every key at its default.
 inline LayoutSpec layout_spec(const char* kind = "tile") {
