@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "curdle/error.h"
+#include "curdle/text.h"
 #include "export/wkt.h"
 
 namespace curdle {
@@ -36,21 +37,13 @@ namespace {
 std::string dxf_encoded(const std::string& text, std::string_view forbidden, char instead) {
   std::string out;
   for (size_t i = 0; i < text.size();) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (c < 0x80) {
-      out += c < 0x20 || c == 0x7F || forbidden.find(static_cast<char>(c)) != std::string::npos
-                 ? instead
-                 : static_cast<char>(c);
-      ++i;
-      continue;
-    }
-    // A UTF-8 sequence (validated when the recipe was read).
-    const int length = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : 2;
-    uint32_t code = c & (0x7F >> length);
-    for (int k = 1; k < length && i + k < text.size(); ++k)
-      code = code << 6 | (static_cast<unsigned char>(text[i + k]) & 0x3F);
-    out += fmt::format("\\U+{:04X}", code);
-    i += static_cast<size_t>(length);
+    const uint32_t c = next_code_point(text, i);
+    if (c >= 0x80)
+      out += fmt::format("\\U+{:04X}", c);
+    else if (c < 0x20 || c == 0x7F || forbidden.find(static_cast<char>(c)) != std::string::npos)
+      out += instead;
+    else
+      out += static_cast<char>(c);
   }
   return out;
 }

@@ -134,4 +134,15 @@ std::string unsafe_text(std::string_view text) {
   return {};
 }
 
+uint32_t next_code_point(std::string_view text, size_t& i) {
+  const size_t n = sequence_length(text, i);
+  if (n == 0) {
+    ++i;
+    return 0xFFFD;
+  }
+  const uint32_t c = code_point(text, i, n);
+  i += n;
+  return c;
+}
+
 }  // namespace curdle

@@ -2,6 +2,8 @@
 // and escaped once where it leaves as markup.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -17,6 +19,10 @@ bool has_control_characters(std::string_view text);
 // Text for XML character data and attribute values: &, <, >, " and ' escaped, and characters
 // XML forbids (controls, invalid UTF-8) dropped.
 std::string xml_escape(std::string_view text);
+
+// The code point of the character at text[i], moving i past it; a byte that does not begin
+// well-formed UTF-8 is U+FFFD and moves i by one.
+uint32_t next_code_point(std::string_view text, size_t& i);
 
 // What makes `text` unsafe as a name that files and drawings show (a recipe's, a material's, a
 // zone's), or empty when nothing does: bytes that are not UTF-8, control characters, line

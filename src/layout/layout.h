@@ -115,25 +115,25 @@ class OwnKeys {
   OwnKeys(OwnKeys&&) = default;
   OwnKeys& operator=(OwnKeys&&) = default;
 
+  // The record as K, or nullptr when it is another kind's (or the kind has none).
+  template <class K>
+  const K* find() const {
+    return dynamic_cast<const K*>(keys_.get());
+  }
+  template <class K>
+  K* find() {
+    return const_cast<K*>(std::as_const(*this).find<K>());
+  }
   // The record as its kind's type; asking for another kind's is a programming error.
   template <class K>
   const K& as() const {
-    const K* k = dynamic_cast<const K*>(keys_.get());
+    const K* k = find<K>();
     if (!k) throw std::logic_error("a layout spec asked for another kind's keys");
     return *k;
   }
   template <class K>
   K& as() {
     return const_cast<K&>(std::as_const(*this).as<K>());
-  }
-  // The record as K, or nullptr when it is another kind's (or the kind has none).
-  template <class K>
-  K* find() {
-    return dynamic_cast<K*>(keys_.get());
-  }
-  template <class K>
-  const K* find() const {
-    return dynamic_cast<const K*>(keys_.get());
   }
 
  private:
