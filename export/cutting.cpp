@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "curdle/stop.h"
 #include "export/dxf_document.h"
 #include "export/wkt.h"
 #include "layout/piece.h"
@@ -24,6 +25,7 @@ void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, in
     dxf.polygon("OUTLINE", ring);
   }
   for (const Element& e : layout.elements) {
+    stop_point();
     if (e.sheet != sheet) continue;
     if (e.circle) {
       dxf.circle(hole_layer(e.circle->d), e.circle->cx - s.area.x, e.circle->cy - s.area.y,
@@ -38,6 +40,7 @@ void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, in
   }
   // Element IDs on a layer of their own (not cut): the same IDs as the SVG, glTF and CSV.
   for (const Element& e : layout.elements) {
+    stop_point();
     if (e.sheet != sheet) continue;
     const Rect b = laid_bounds(e);
     dxf.text("ID", b.x + b.w / 2 - s.area.x, b.y + b.h / 2 - s.area.y, std::max(0.5, b.w / 8), e.id,
@@ -75,6 +78,7 @@ void write_sheet_svg(std::ostream& out, const Layout& layout, int sheet) {
   }
   out << "<g id=\"openings\" stroke=\"#ff0000\">\n";
   for (const Element& e : layout.elements) {
+    stop_point();
     if (e.sheet != sheet) continue;
     if (e.circle) {
       out << fmt::format("<circle id=\"{}\" cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3f}\"/>\n", e.id,

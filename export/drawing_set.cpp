@@ -10,6 +10,7 @@
 #include <map>
 
 #include "curdle/error.h"
+#include "curdle/stop.h"
 #include "export/layout_png.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
@@ -70,6 +71,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   const double strip = h - kMargin - kTitleStrip;
   std::map<uint32_t, Quantity> quantities;
   for (const Element& e : layout.elements) {
+    stop_point();
     Quantity& q = quantities[e.value];
     (e.cut ? q.cut : q.whole) += 1;
     q.area += e.area() / 1e6;

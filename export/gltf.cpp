@@ -12,6 +12,7 @@
 
 #include "curdle/error.h"
 #include "curdle/palette.h"
+#include "curdle/stop.h"
 #include "layout/piece.h"
 #include "layout/triangulation.h"
 #include "layout/union.h"
@@ -303,6 +304,7 @@ void add_sheet(Scene& sc) {
        surfaced(Rect{0, 0, layout.width, layout.height}, layout.outside, layout.cut_away))
     rings.insert(rings.end(), o.rings.begin(), o.rings.end());
   for (const Element& e : layout.elements) {
+    stop_point();
     if (e.circle) rings.push_back(polygonise(*e.circle, layout.chord_tolerance));
     if (e.outline) rings.insert(rings.end(), e.outline->rings.begin(), e.outline->rings.end());
     if (e.circle || e.outline)
@@ -319,6 +321,7 @@ void add_sheet(Scene& sc) {
   node.mesh = b.add_mesh("sheet", {b.primitive(p, n, idx, metal)});
   roots.push_back(b.add_node(std::move(node)));
   for (const Element& e : layout.elements) {  // each opening, named, at its centre
+    stop_point();
     tinygltf::Node h;
     const Rect r = laid_bounds(e);
     const Vec3 c = to_gltf(layout, r.x + r.w / 2, r.y + r.h / 2, t / 2);
@@ -361,6 +364,7 @@ void add_blocks(Scene& sc) {
   };
   const double w = layout.module_w, d = layout.module_h, h = layout.level_height;
   for (const Element& e : layout.elements) {
+    stop_point();
     const Rect plan{(e.cell_x - layout.view.origin[0]) * w, (e.cell_y - layout.view.origin[1]) * d,
                     w, d};
     tinygltf::Node node = sc.placed(plan, (e.cell_z - layout.view.origin[2]) * h, h);
@@ -381,6 +385,7 @@ void add_park(Scene& sc) {
   // One mesh per element type, shared by every element of the type.
   std::map<std::string, int> type_mesh;
   for (const Element& e : layout.elements) {
+    stop_point();
     if (type_mesh.count(e.type)) continue;
     const int mat = b.add_material(e.type, e.colour, 0, 0.9);
     std::vector<Vec3> p, n;
@@ -412,6 +417,7 @@ void add_park(Scene& sc) {
     }
   }
   for (const Element& e : layout.elements) {
+    stop_point();
     tinygltf::Node n;
     if (e.circle) {
       const Vec3 c = to_gltf(layout, e.circle->cx, e.circle->cy, t);
@@ -460,6 +466,7 @@ void add_pieces(Scene& sc) {
     return part_material[key] = b.add_material(name, colour, metallic, 0.8);
   };
   for (const Element& e : layout.elements) {
+    stop_point();
     if (e.outline) {  // cut along a sloping or curved edge: its own solid
       std::vector<Vec3> p, n;
       std::vector<uint32_t> idx;

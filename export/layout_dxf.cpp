@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 
+#include "curdle/stop.h"
 #include "export/dxf_document.h"
 #include "export/wkt.h"
 #include "layout/piece.h"
@@ -34,6 +35,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
   std::vector<DxfLayer> layers{{"OUTLINE", kInk, true}, {"OPENINGS", Rgb{90, 90, 90}, true}};
   std::map<std::string, bool> seen;
   for (const Element& e : layout.elements) {
+    stop_point();
     const std::string name = layer_of(layout, e);
     if (seen.emplace(name, true).second) layers.push_back({name, piece_colour(layout, e), true});
   }
@@ -48,6 +50,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
     dxf.rect("OUTLINE", extents);
   for (const Rect& o : layout.openings) dxf.rect("OPENINGS", o);
   for (const Element& e : layout.elements) {
+    stop_point();
     const std::string layer = layer_of(layout, e);
     if (e.circle) {
       dxf.circle(layer, e.circle->cx, e.circle->cy, e.circle->d);
@@ -62,6 +65,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
     dxf.rect(layer, laid_bounds(e));
   }
   for (const Element& e : layout.elements) {
+    stop_point();
     const Rect b = laid_bounds(e);
     dxf.text("ID", b.x + b.w / 2, b.y + b.h / 2, id_height(b, e.id), e.id, true);
   }

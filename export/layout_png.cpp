@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "curdle/error.h"
+#include "curdle/stop.h"
 #include "export/svg.h"
 #include "layout/drawing_sheet.h"
 #include "layout/piece.h"
@@ -167,6 +168,7 @@ PreviewImage render_layout(const Layout& layout) {
   for (const Outline& o : layout.cut_away) canvas.fill(o, Rgb{255, 255, 255});
   for (const Layout::ViewCell& v : layout.views) canvas.fill(v.rect, layout.legend[v.value].colour);
   for (const Element& e : layout.elements) {
+    stop_point();
     if (!layout.views.empty()) break;  // blocks are drawn as their views
     const LegendEntry& entry = layout.legend[e.value];
     if (!e.type.empty()) {  // park: each element in its own colour

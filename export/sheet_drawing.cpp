@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "curdle/stop.h"
 #include "export/svg.h"
 #include "export/title_block.h"
 #include "layout/installer_sheets.h"
@@ -94,6 +95,7 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
            r.y <= v.window.top();
   };
   for (const Element& e : layout.elements) {
+    stop_point();
     if (!visible(laid_bounds(e))) continue;
     const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
     if (e.circle) {

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "curdle/palette.h"
+#include "curdle/stop.h"
 #include "curdle/text.h"
 #include "export/title_block.h"
 
@@ -144,6 +145,7 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
   std::vector<std::string> types;
   std::map<std::string, std::vector<const Element*>> by_type;
   for (const Element& e : layout.elements) {
+    stop_point();
     if (!by_type.count(e.type)) types.push_back(e.type);
     by_type[e.type].push_back(&e);
   }
@@ -210,6 +212,7 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
   std::vector<std::vector<const Element*>> cut(values);
   std::vector<const Element*> at(grid.size(), nullptr);
   for (const Element& e : layout.elements) {
+    stop_point();
     const size_t i = static_cast<size_t>(e.row * layout.columns + e.column);
     at[i] = &e;
     if (e.cut)
@@ -248,6 +251,7 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
     std::string d;
     if (bonded) {  // each course's own: after every element but the last along the course
       for (const Element& e : layout.elements) {
+        stop_point();
         const bool right = from_right(layout.origin);
         const double x = right ? e.nominal.x - layout.joint : e.nominal.right();
         const Rect joint = clip(Rect{x, e.nominal.y, layout.joint, e.nominal.h}, W, H);

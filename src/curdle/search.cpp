@@ -14,6 +14,7 @@
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/segment_measures.h"
+#include "curdle/stop.h"
 #include "curdle/theory.h"
 
 namespace curdle {
@@ -344,6 +345,7 @@ std::vector<SearchHit> search_seeds(const Design& d, const Box& view, const Sear
   const uint64_t batch = grid ? 64 : 65536;
   for (uint64_t start = 0; start < total; start += batch) {
     if (cancel && cancel->load()) break;
+    stop_point_now();
     const uint64_t end = std::min(total, start + batch);
     tbb::parallel_for(tbb::blocked_range<uint64_t>(start, end, grid ? 1 : 256), [&](auto range) {
       Scorer& s = scorers.local();

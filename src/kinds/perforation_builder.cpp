@@ -5,6 +5,7 @@
 #include <map>
 #include <numeric>
 
+#include "curdle/stop.h"
 #include "kinds/perforation.h"
 #include "layout/union.h"
 #include "layout/zone.h"
@@ -98,6 +99,7 @@ void summarise_sheets(Layout& layout, const LayoutSpec& spec) {
   std::vector<std::map<std::string, uint64_t>> tools(layout.sheets.size());
   std::vector<double> open(layout.sheets.size(), 0.0);
   for (const Element& e : layout.elements) {
+    stop_point();
     ++tools[static_cast<size_t>(e.sheet)][tool_name(e)];
     open[static_cast<size_t>(e.sheet)] += e.area();
   }

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "curdle/overlay.h"
+#include "curdle/stop.h"
 #include "layout/builder.h"
 #include "layout/drawing_sheet.h"
 #include "recipe/layout_reader.h"
@@ -85,6 +86,7 @@ void set_rhythm(Layout& layout, const LayoutSpec& spec) {
   layout.element_type = "fin";
   for (LegendEntry& e : layout.legend) e.count = 0;
   for (Element& e : bays) {
+    stop_point();
     const double w = spec.own<RhythmKeys>().widths[e.value];
     ++layout.legend[e.value].count;  // bays of each value, as the report counts cells
     if (w <= 0) continue;

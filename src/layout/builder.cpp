@@ -8,6 +8,7 @@
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
+#include "curdle/stop.h"
 #include "layout/cut_rules.h"
 #include "layout/guidance.h"
 #include "layout/piece.h"
@@ -115,6 +116,7 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
                             std::vector<uint64_t>(values, 0), 0});
   if (spec.zones.empty()) return;
   for (Element& e : layout.elements) {
+    stop_point();
     // The laid piece's centre: an end piece cut at the edge has its centre on the surface.
     const Rect laid = laid_bounds(e);
     const double cx = laid.x + laid.w / 2, cy = laid.y + laid.h / 2;
@@ -151,6 +153,7 @@ void lay_elements(Layout& layout, const CurdField& field, const LayoutSpec& spec
   layout.elements.reserve(values.size());
   for (int64_t row = 0; row < layout.rows; ++row) {
     for (int64_t column = 0; column < layout.columns; ++column) {
+      stop_point();
       const int64_t i = right ? layout.columns - 1 - column : column;
       const int64_t j = top ? layout.rows - 1 - row : row;
       const double along = column * pitch_w - spec.shift[0] - course_offset(spec, row);
@@ -340,6 +343,7 @@ double bonded_joint_area(const Layout& layout) {
     const double up = r * pitch_h - layout.shift[1];
     const double y = top ? layout.height - up - layout.module_h : up;
     for (int64_t c = 0; c < layout.columns; ++c) {
+      stop_point();
       const double along = c * pitch_w + layout.module_w - layout.shift[0] -
                            course_offset(layout.bond, layout.module_w + layout.joint, r);
       area += laid_area(layout, holes,

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "curdle/stop.h"
 #include "layout/builder.h"
 #include "layout/piece.h"
 
@@ -141,6 +142,7 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec) {
   const char* rule = spec.min_cut > 0 ? "layout.min_cut" : "a quarter of the element";
   uint64_t slivers = 0;
   for (const Element& e : layout.elements) {
+    stop_point();
     if (!e.cut) continue;
     const Rect laid = clip(e.nominal, layout.width, layout.height);
     for (int axis = 0; axis < 2; ++axis) {

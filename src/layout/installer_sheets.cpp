@@ -7,6 +7,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "curdle/stop.h"
 #include "layout/piece.h"
 
 namespace curdle {
@@ -276,6 +277,7 @@ std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
   }
   pieces.reserve(layout.elements.size());
   for (const Element& e : layout.elements) {
+    stop_point();
     const Rect bounds = laid_bounds(e);
     pieces.push_back(
         {e.id, e.shape.empty() || e.circle || e.outline ? std::vector<Rect>{bounds} : e.shape,

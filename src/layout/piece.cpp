@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "curdle/stop.h"
 #include "layout/union.h"
 
 namespace curdle {
@@ -69,6 +70,7 @@ std::vector<ColouredRect> keep_stripes(const Layout& layout, const Element& e) {
 LayingExtents laying_extents(const Layout& layout) {
   LayingExtents x;
   for (const Element& e : layout.elements) {
+    stop_point();
     auto& r = x.rows.try_emplace(e.row, 1e300, -1e300).first->second;
     r.first = std::min(r.first, e.nominal.y), r.second = std::max(r.second, e.nominal.top());
     auto& c = x.columns.try_emplace(e.column, 1e300, -1e300).first->second;
