@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 #include <httplib.h>
+#include <poll.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -215,6 +217,32 @@ TEST_F(ServerTest, HeavyRequestsGiveTheirMemoryBack) {
   const long after = resident_kb();
   ASSERT_GT(before, 0);
   EXPECT_LT(after - before, 150 * 1024) << before << " kB before, " << after << " kB after";
+}
+
+// Forty clients that send their headers a byte at a time held all 32 threads of the server
+// that was: the page got no answer. Now they hold a connection each and the page is served.
+TEST_F(ServerTest, FortySlowClientsDoNotHoldUpThePage) {
+  std::vector<int> slow;
+  const std::string start =
+      "GET /api/recipe HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port_) + "\r\nX-Pad: ";
+  for (int i = 0; i < 40; ++i) {
+    slow.push_back(::socket(AF_INET, SOCK_STREAM, 0));
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<uint16_t>(port_));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(::connect(slow.back(), reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    ::send(slow.back(), start.data(), start.size(), MSG_NOSIGNAL);
+  }
+  for (int round = 0; round < 3; ++round) {
+    for (int fd : slow) ::send(fd, "a", 1, MSG_NOSIGNAL);
+    httplib::Client client("127.0.0.1", port_);
+    client.set_read_timeout(5, 0);
+    auto r = client.Get("/api/recipe");
+    ASSERT_TRUE(r) << "no answer within 5 s in round " << round;
+    EXPECT_EQ(r->status, 200);
+  }
+  for (int fd : slow) ::close(fd);
 }
 
 TEST_F(ServerTest, DownloadsAreTheFilesTheCommandLineWrites) {
@@ -477,6 +505,85 @@ TEST_F(ServerTest, ThePageIsServedFromItsFiles) {
   auto missing = get("/no-such-file.js");
   ASSERT_TRUE(missing);
   EXPECT_EQ(missing->status, 404);
+}
+
+// A server of its own on the rhythm façade, whose layout.pdf 3 km tall takes about 40 s.
+class RhythmServer {
+ public:
+  explicit RhythmServer(double request_seconds) {
+    const std::string recipe = std::string(CURDLE_SOURCE_DIR) + "/patterns/fins-facade-rhythm.toml";
+    ServerConfig config;
+    config.web_root = fs::path(CURDLE_SOURCE_DIR) / "web";
+    config.api.recipe_path = recipe;
+    config.api.recipe_text = slurp(recipe);
+    config.workers = 1;
+    config.request_seconds = request_seconds;
+    server = std::make_unique<Server>(config);
+    port = server->bind("127.0.0.1", 0);
+    thread = std::thread([this] { server->listen(); });
+  }
+  ~RhythmServer() {
+    server->stop();
+    thread.join();
+  }
+  // Sends a GET on a socket of its own and returns the socket, unread.
+  int send_get(const std::string& path) const {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<uint16_t>(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const std::string request =
+        "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n\r\n";
+    EXPECT_EQ(::send(fd, request.data(), request.size(), 0), static_cast<ssize_t>(request.size()));
+    return fd;
+  }
+  httplib::Result get(const std::string& path) const {
+    httplib::Client client("127.0.0.1", port);
+    client.set_read_timeout(120, 0);
+    return client.Get(path.c_str());
+  }
+
+  std::unique_ptr<Server> server;
+  int port = 0;
+  std::thread thread;
+};
+
+constexpr const char* kTallPdf = "/api/export?layout.height=3000000&file=layout.pdf";
+
+TEST(ServerWork, AHeavyRequestStopsAtItsBudgetWith503) {
+  RhythmServer rhythm(0.5);
+  auto r = rhythm.get(kTallPdf);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 503) << r->body.substr(0, 200);
+  EXPECT_NE(r->body.find("budget of 0.5 s"), std::string::npos) << r->body.substr(0, 200);
+  // The worker is free again: the next request is answered.
+  auto next = rhythm.get("/api/export?file=report.json");
+  ASSERT_TRUE(next);
+  EXPECT_EQ(next->status, 200);
+}
+
+TEST(ServerWork, WorkStopsWhenItsClientGoesAndThePagesGeneratePassesIt) {
+  RhythmServer rhythm(600);
+  const int abandoned = rhythm.send_get(kTallPdf);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  // The only worker is busy; a generate as small as the page's has its own slot.
+  auto small = rhythm.get("/api/generate");
+  ASSERT_TRUE(small);
+  EXPECT_EQ(small->status, 200);
+  pollfd p{abandoned, POLLIN, 0};
+  EXPECT_EQ(::poll(&p, 1, 0), 0) << "the tall drawing was already done; it proves nothing";
+  // Its client goes: the drawing stops and the worker takes the next export at once, not
+  // after the half minute the drawing would take.
+  ::close(abandoned);
+  const auto start = std::chrono::steady_clock::now();
+  auto next = rhythm.get("/api/export?file=report.json");
+  const double waited =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(next);
+  EXPECT_EQ(next->status, 200);
+  EXPECT_LT(waited, 15.0);
 }
 
 TEST(ServerSetup, RefusesAMissingPageOrABusyPort) {

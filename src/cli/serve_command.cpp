@@ -32,6 +32,7 @@ int run_serve(const ServeOptions& o) {
   server::ServerConfig config;
   config.web_root = web_root;
   config.workers = o.workers;
+  config.request_seconds = o.request_seconds;
   config.api.recipe_path = recipe_path;
   config.api.recipe_text = app::read_recipe_file(recipe_path);
   config.api.limits.max_cells = o.max_cells;

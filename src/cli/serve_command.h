@@ -14,6 +14,7 @@ struct ServeOptions {
   int port = 8080;
   std::string web_root;
   int workers = 2;
+  int request_seconds = 60;
   uint64_t max_cells = uint64_t{1} << 22;
   std::string max_memory;
 };

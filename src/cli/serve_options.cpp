@@ -25,6 +25,10 @@ void add_serve_options(CLI::App& c, ServeOptions& o) {
   c.add_option("--workers", o.workers,
                "Generate, export and search requests run at once (default 2)")
       ->check(CLI::Range(1, 64));
+  c.add_option("--request-seconds", o.request_seconds,
+               "Longest a generate, export, search or measure may run before it is stopped "
+               "and answered 503 (default 60)")
+      ->check(CLI::Range(1, 3600));
   c.add_option("--max-cells", o.max_cells,
                "Most cells one request may generate (default 4194304, 2048 x 2048)")
       ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 32));

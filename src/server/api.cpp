@@ -19,6 +19,7 @@
 #include "app/run.h"
 #include "app/search_run.h"
 #include "curdle/error.h"
+#include "curdle/stop.h"
 
 namespace fs = std::filesystem;
 using nlohmann::ordered_json;
@@ -124,6 +125,8 @@ template <class F>
 ApiResponse guarded(F&& f) {
   try {
     return f();
+  } catch (const WorkStopped& e) {
+    return api_error(503, e.what());
   } catch (const ResourceLimitError& e) {
     return api_error(413, render_error(e, query_key));
   } catch (const InputError& e) {
@@ -186,6 +189,17 @@ ApiResponse api_generate(const ApiContext& c, const Params& params) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return json_response(j);
   });
+}
+
+bool api_generate_is_light(const ApiContext& c, const Params& params) {
+  try {
+    const RunRequest r = read_run(params, {"cells"});
+    const app::Run s = run_for(c, r);
+    const Box view = r.window.empty() ? s.recipe.design.field : s.view;
+    return view.cells() <= kLightCells;
+  } catch (const std::exception&) {
+    return true;  // its error is answered at once
+  }
 }
 
 ApiResponse api_export(const ApiContext& c, const Params& params) {

@@ -41,6 +41,10 @@ ApiResponse api_recipe(const ApiContext& context);
 // GET /api/generate: seed, window, cells=0|1 and recipe keys (lattice.base=3, or
 // set=lattice.base=3): report, legend, values of the cells, command and recipe text.
 ApiResponse api_generate(const ApiContext& context, const Params& params);
+// Whether a generate is as light as the page's own (a field of at most kLightCells cells, or
+// a request refused at once): the server runs those in a slot of their own.
+inline constexpr uint64_t kLightCells = uint64_t{1} << 18;
+bool api_generate_is_light(const ApiContext& context, const Params& params);
 // GET /api/export: as generate, plus file=NAME; the file `curdle generate` writes.
 ApiResponse api_export(const ApiContext& context, const Params& params);
 // GET /api/search: seeds=A..B, window=W,H, target (repeatable), top, stride, recipe keys.

@@ -1,5 +1,6 @@
 // `curdle serve`: the page's files and the JSON API (api.h) over HTTP on one address.
-// Heavy requests run at most `workers` at a time; the rest wait their turn.
+// Heavy requests run at most `workers` at a time; the rest wait their turn. A generate of a
+// field as small as the page's has a slot of its own, so the page answers while exports run.
 #pragma once
 
 #include <atomic>
@@ -16,6 +17,13 @@ struct ServerConfig {
   std::filesystem::path web_root;     // index.html, app.js, style.css
   int workers = 2;                    // generate, export and search requests at once
   size_t max_body_bytes = 64 * 1024;  // any request's body but a picture's (api.limits)
+  // A heavy request that runs longer is stopped and answered 503; so is one whose client
+  // has gone away.
+  double request_seconds = 60;
+  // Time a request's line, headers and body may take to arrive, whole (not per read).
+  double arrival_seconds = 10;
+  // Connections served at once; more are answered 503 at once and closed.
+  int max_connections = 96;
 };
 
 class Server {
