@@ -432,8 +432,7 @@ void add_park(Scene& sc) {
           {b.primitive(p, nr, idx, b.model.meshes[type_mesh[e.type]].primitives[0].material)});
     } else {
       const int mat = b.model.meshes[type_mesh[e.type]].primitives[0].material;
-      const bool surface = e.shape.size() == 1 && e.shape[0].w >= e.nominal.w / 8 &&
-                           std::fabs(e.shape[0].h - e.nominal.h) < 1e-6;
+      const bool surface = !e.stands;
       if (e.shape.size() == 1) {
         n = sc.box_node(e.shape[0], surface ? 0 : t, surface ? t : 450, mat);
       } else {  // a surface cut to several rectangles by an outline along x and y

@@ -13,15 +13,17 @@
 
 namespace curdle {
 namespace {
+double stock_area(const Element& e) { return e.stock_w * e.stock_h; }
+}  // namespace
 
-std::string type_of(const Layout& layout, const Element& e) {
+std::string element_type_of(const Layout& layout, const Element& e) {
   if (!e.type.empty()) return e.type;
   if (e.form == ElementForm::opening) return "opening";
   return layout.element_type;
 }
 
 // What an order line is bought as: the stock size, or the opening's diameter.
-std::string size_of(const Layout& layout, const Element& e) {
+std::string stock_size_of(const Layout& layout, const Element& e) {
   if (e.circle) {
     std::string s = "D";  // appended: GCC 12 warns falsely on "D" + string
     s += mm_text(e.circle->d);
@@ -35,15 +37,11 @@ std::string size_of(const Layout& layout, const Element& e) {
   return s;
 }
 
-double stock_area(const Element& e) { return e.stock_w * e.stock_h; }
-
 std::string lot_text(const Layout& layout, const Element& e, size_t index) {
   // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in.
   return e.sheet >= 0 ? layout.sheets[static_cast<size_t>(e.sheet)].id
                       : std::to_string(lot_of(e, index, layout.ordering));
 }
-
-}  // namespace
 
 int64_t lot_of(const Element& e, size_t index, const OrderingKeys& ordering) {
   if (ordering.lot_rows > 0) return e.row / ordering.lot_rows + 1;
@@ -86,9 +84,10 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
                    bought ? mm_text(e.stock_w) : "",
                    bought ? mm_text(block ? layout.level_height : e.stock_h) : "", e.value);
     for (size_t c = 0; c < design.curds.size(); ++c) buffer += (e.value >> c & 1) ? ",1" : ",0";
-    fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{}", csv_field(type_of(layout, e)),
-                   hex_colour(piece_colour(layout, e)), csv_field(piece_material(layout, e)),
-                   e.cut ? 1 : 0, csv_field(outlines_wkt(piece_outlines(e))));
+    fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{}",
+                   csv_field(element_type_of(layout, e)), hex_colour(piece_colour(layout, e)),
+                   csv_field(piece_material(layout, e)), e.cut ? 1 : 0,
+                   csv_field(outlines_wkt(piece_outlines(e))));
     if (e.circle)
       fmt::format_to(std::back_inserter(buffer), ",{},{},{}", mm_text(e.circle->cx),
                      mm_text(e.circle->cy), mm_text(e.circle->d));
@@ -117,8 +116,8 @@ struct OrderLine {
 using OrderKey = std::tuple<std::string, std::string, std::string, std::string>;
 
 OrderKey order_key(const Layout& layout, const Element& e) {
-  return {type_of(layout, e), piece_material(layout, e), hex_colour(piece_colour(layout, e)),
-          size_of(layout, e)};
+  return {element_type_of(layout, e), piece_material(layout, e),
+          hex_colour(piece_colour(layout, e)), stock_size_of(layout, e)};
 }
 
 void add_to(OrderLine& l, const Element& e) {

@@ -24,6 +24,11 @@ namespace curdle {
 
 // The lot an element belongs to, counted from 1 in laying order.
 int64_t lot_of(const Element& element, size_t index, const OrderingKeys& ordering);
+// What the schedules call an element, its stock size ("600 x 300", "D12") and its lot ("1",
+// or the fabrication sheet "S-R1-C2"): the same words in every file that names the piece.
+std::string element_type_of(const Layout& layout, const Element& element);
+std::string stock_size_of(const Layout& layout, const Element& element);
+std::string lot_text(const Layout& layout, const Element& element, size_t index);
 
 void write_schedule_csv(std::ostream& out, const Layout& layout);
 void write_quantities_csv(std::ostream& out, const Layout& layout);

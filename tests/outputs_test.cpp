@@ -51,9 +51,11 @@ TEST(Outputs, LargeFilesAreSkippedByDefaultWithANoteButWrittenWhenNamed) {
   EXPECT_EQ(std::count(chosen.begin(), chosen.end(), "install.svg"), 0);
   EXPECT_EQ(std::count(chosen.begin(), chosen.end(), "schedule.csv"), 1);
   EXPECT_EQ(std::count(chosen.begin(), chosen.end(), "layout.pdf"), 0);
-  ASSERT_EQ(notes.notes.size(), 2u);
+  EXPECT_EQ(std::count(chosen.begin(), chosen.end(), "layout.ifc"), 0);
+  ASSERT_EQ(notes.notes.size(), 3u);
   EXPECT_NE(notes.notes[0].find("layout.pdf skipped: 360000 elements"), std::string::npos);
-  EXPECT_NE(notes.notes[1].find("install.svg skipped: 360000 elements"), std::string::npos);
+  EXPECT_NE(notes.notes[1].find("layout.ifc skipped: 360000 elements"), std::string::npos);
+  EXPECT_NE(notes.notes[2].find("install.svg skipped: 360000 elements"), std::string::npos);
   EXPECT_EQ(names(select_outputs(big, {"install.svg"}, &notes)),
             std::vector<std::string>{"install.svg"});
   const app::Run huge = run_of(kTiles, {"field.cells=[1500,1500]"});

@@ -164,8 +164,8 @@ TEST_F(ServerTest, RecipeDescribesTheDesignAndTheFloor) {
   // The downloads come from the registry of outputs: every single file, and the recipe.
   EXPECT_EQ(j["downloads"],
             json({"report.json", "cells.csv", "preview.png", "layout.svg", "layout.png",
-                  "layout.pdf", "layout.glb", "schedule.csv", "layout.dxf", "quantities.csv",
-                  "lots.csv", "install.svg", "recipe.toml"}));
+                  "layout.pdf", "layout.glb", "layout.ifc", "schedule.csv", "layout.dxf",
+                  "quantities.csv", "lots.csv", "install.svg", "recipe.toml"}));
   EXPECT_EQ(j["seed"], "8");  // the recipe's, as a string
 }
 

@@ -9,6 +9,7 @@
 #include "export/cutting.h"
 #include "export/drawing_set.h"
 #include "export/gltf.h"
+#include "export/ifc.h"
 #include "export/install.h"
 #include "export/layout_dxf.h"
 #include "export/layout_png.h"
@@ -87,6 +88,10 @@ void write_layout_gltf(const OutputContext& c, OutputSink& sink) {
   std::ostringstream bin;
   sink.write("layout.gltf", [&](std::ostream& o) { write_gltf(o, bin, "layout.bin", *c.layout); });
   sink.write("layout.bin", [&](std::ostream& o) { o << bin.str(); });
+}
+
+void write_layout_ifc_output(const OutputContext& c, OutputSink& sink) {
+  sink.write("layout.ifc", [&](std::ostream& o) { write_layout_ifc(o, *c.layout); });
 }
 
 void write_schedule(const OutputContext& c, OutputSink& sink) {
@@ -169,6 +174,14 @@ std::vector<Output> make_registry() {
        .needs_layout = true,
        .memory = [](const Run& run) { return run.view.cells() * kGltfBytesPerElement; },
        .write = write_layout_glb});
+  add({.name = "layout.ifc",
+       .description = "the layout as an IFC4 model in millimetres: an element per piece with "
+                      "its ID, value, material, properties and quantities",
+       .needs_layout = true,
+       .skip_above = 100'000,
+       .size_unit = "elements",
+       .size = view_cells,
+       .write = write_layout_ifc_output});
   add({.name = "layout.gltf",
        .description = "the same as glTF JSON with layout.bin beside it",
        .needs_layout = true,

@@ -85,6 +85,7 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
       e.shape = std::move(region.rects);
       e.outline = std::move(region.outline);
       e.circle = circle;
+      e.stands = !kind.surface;
       // Surfaces are laid to their share of the cell; objects come whole.
       e.stock_w = stock.w, e.stock_h = stock.h;
       e.cut = e.outline.has_value();  // cut along a sloping or curved edge

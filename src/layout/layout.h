@@ -218,6 +218,7 @@ struct Element {
   std::string type;                 // park: the element type; empty for modules
   int sheet = -1;                   // perforation: the fabrication sheet it is cut in
   Rgb colour;                       // park: the element's own colour
+  bool stands = false;              // park: an object standing on the ground (tree, bench)
   double area() const;
 };
 

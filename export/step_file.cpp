@@ -1,0 +1,99 @@
+#include "export/step_file.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+#include "curdle/text.h"
+
+namespace curdle {
+
+std::string step_string(std::string_view text) {
+  std::string s = "'";
+  for (size_t i = 0; i < text.size();) {
+    const uint32_t c = next_code_point(text, i);
+    if (c == '\'' || c == '\\') {
+      s += static_cast<char>(c);
+      s += static_cast<char>(c);
+    } else if (c >= 0x20 && c < 0x7F) {
+      s += static_cast<char>(c);
+    } else if (c < 0x20 || c == 0x7F) {
+      s += fmt::format("\\X2\\{:04X}\\X0\\", c);  // names are refused with these; never raw
+    } else if (c < 0x10000) {
+      s += fmt::format("\\X2\\{:04X}\\X0\\", c);
+    } else {
+      s += fmt::format("\\X4\\{:08X}\\X0\\", c);
+    }
+  }
+  return s + "'";
+}
+
+std::string step_real(double v) {
+  if (!std::isfinite(v)) throw std::logic_error("a STEP real must be finite");
+  if (v == 0) return "0.";
+  std::array<char, 32> buffer{};
+  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), v).ptr;
+  std::string s(buffer.data(), end);
+  const size_t e = s.find('e');
+  std::string mantissa = s.substr(0, e), exponent = e == std::string::npos ? "" : s.substr(e + 1);
+  if (mantissa.find('.') == std::string::npos) mantissa += '.';
+  if (exponent.empty()) return mantissa;
+  if (exponent[0] == '+') exponent.erase(0, 1);
+  return mantissa + "E" + exponent;
+}
+
+std::string step_refs(const std::vector<int64_t>& ids) {
+  std::string s = "(";
+  for (size_t i = 0; i < ids.size(); ++i) s += (i ? ",#" : "#") + std::to_string(ids[i]);
+  return s + ")";
+}
+
+namespace {
+// Two independent 64-bit hashes of the key (FNV-1a, then mixed as splitmix64 does).
+uint64_t mixed_hash(std::string_view key, uint64_t basis) {
+  uint64_t h = basis;
+  for (const char c : key) h = (h ^ static_cast<uint8_t>(c)) * 0x100000001b3ULL;
+  h += 0x9e3779b97f4a7c15ULL;
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+  return h ^ (h >> 31);
+}
+}  // namespace
+
+std::string ifc_guid(std::string_view key) {
+  static const char* kDigits = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_$";
+  const uint64_t hi = mixed_hash(key, 0xcbf29ce484222325ULL);
+  const uint64_t lo = mixed_hash(key, 0x84222325cbf29ce4ULL);
+  // 128 bits as 22 digits: the first holds 2 bits, the other 21 six each.
+  std::string guid(22, '0');
+  for (int d = 21; d >= 0; --d) {
+    const int bit = (21 - d) * 6;  // the digit's lowest bit, from the least significant end
+    uint64_t six = bit < 64 ? lo >> bit : hi >> (bit - 64);
+    if (bit < 64 && bit + 6 > 64) six |= hi << (64 - bit);
+    guid[static_cast<size_t>(d)] = kDigits[six & (d == 0 ? 3 : 63)];
+  }
+  return guid;
+}
+
+StepWriter::StepWriter(std::ostream& out, const std::string& file_name, const std::string& schema,
+                       const std::string& view)
+    : out_(out) {
+  // A fixed time stamp: the same recipe and seed give the same bytes.
+  out_ << "ISO-10303-21;\nHEADER;\n"
+       << "FILE_DESCRIPTION((" << step_string("ViewDefinition [" + view + "]") << "),'2;1');\n"
+       << "FILE_NAME(" << step_string(file_name)
+       << ",'2000-01-01T00:00:00',(''),(''),'curdle','curdle','');\n"
+       << "FILE_SCHEMA((" << step_string(schema) << "));\nENDSEC;\nDATA;\n";
+}
+
+int64_t StepWriter::add(std::string_view text) {
+  out_ << '#' << next_ << '=' << text << ";\n";
+  return next_++;
+}
+
+void StepWriter::finish() { out_ << "ENDSEC;\nEND-ISO-10303-21;\n"; }
+
+}  // namespace curdle

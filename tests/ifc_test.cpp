@@ -1,0 +1,110 @@
+// layout.ifc as written: one element per schedule row with its ID as Name and Tag, the right
+// IFC class and spatial structure per kind, openings voiding their sheets, names in 7-bit
+// STEP, and the same bytes for the same run. web-ifc reads every pattern's model back in
+// tests/js/ifc_check.mjs (ctest js.ifc_read_back).
+#include "export/ifc.h"
+
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "app/outputs.h"
+#include "test_support.h"
+
+namespace curdle {
+namespace {
+
+struct Written {
+  std::string ifc, schedule;
+};
+
+Written written(const std::string& pattern, const std::vector<std::string>& overrides = {}) {
+  const std::string path = std::string(CURDLE_SOURCE_DIR) + "/patterns/" + pattern;
+  const app::Run run = test::run_recipe(path, app::read_recipe_file(path), overrides);
+  app::MemorySink sink;
+  app::write_outputs(run, app::select_outputs(run, {"layout.ifc", "schedule.csv"}, nullptr), sink,
+                     0, nullptr);
+  return {sink.files().at("layout.ifc"), sink.files().at("schedule.csv")};
+}
+
+size_t count(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+std::vector<std::string> schedule_ids(const std::string& schedule) {
+  std::vector<std::string> ids;
+  std::istringstream in(schedule);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) ids.push_back(line.substr(0, line.find(',')));
+  return ids;
+}
+
+TEST(Ifc, EveryScheduleRowIsAnElementNamedAndTaggedByItsId) {
+  const Written w = written("courtyard-l-shaped.toml");
+  const auto ids = schedule_ids(w.schedule);
+  ASSERT_GT(ids.size(), 100u);
+  EXPECT_EQ(count(w.ifc, "=IFCCOVERING("), ids.size());
+  for (const std::string& id : ids)
+    EXPECT_NE(w.ifc.find("$,'" + id + "',$,'paving tile',"), std::string::npos) << id;
+  // Ground works: a site, no building.
+  EXPECT_EQ(count(w.ifc, "=IFCSITE("), 1u);
+  EXPECT_EQ(count(w.ifc, "=IFCBUILDING("), 0u);
+  EXPECT_NE(w.ifc.find(".FLOORING.);"), std::string::npos);
+  // Types per material and stock size, with Pset_Tiling.
+  EXPECT_EQ(count(w.ifc, "=IFCCOVERINGTYPE("), 2u);
+  EXPECT_NE(w.ifc.find("'TileLength',$,IFCPOSITIVELENGTHMEASURE(600.)"), std::string::npos);
+  EXPECT_NE(w.ifc.find("IFCMATERIAL('Basalt slab 600 x 300',$,$)"), std::string::npos);
+}
+
+TEST(Ifc, KindsBecomeTheClassesABimModellerWouldChoose) {
+  const Written facade = written("brick-facade-five-storeys.toml");
+  EXPECT_EQ(count(facade.ifc, "=IFCBUILDINGSTOREY("), 1u);
+  EXPECT_EQ(count(facade.ifc, "=IFCCOVERING("), schedule_ids(facade.schedule).size());
+  EXPECT_EQ(count(facade.ifc, ".FLOORING."), 0u);  // cladding, every one
+  const Written park = written("paper/fig5a-park.toml");
+  const auto ids = schedule_ids(park.schedule);
+  size_t trees = 0, benches = 0;
+  for (const std::string& id : ids)
+    trees += id.ends_with("-tree"), benches += id.ends_with("-bench");
+  ASSERT_GT(trees, 0u);
+  EXPECT_EQ(count(park.ifc, "=IFCGEOGRAPHICELEMENT("), trees);
+  EXPECT_EQ(count(park.ifc, "=IFCFURNITURE("), benches);
+  EXPECT_EQ(count(park.ifc, "=IFCCOVERING("), ids.size() - trees - benches);
+  const Written blocks = written("stacked-blocks.toml");
+  EXPECT_EQ(count(blocks.ifc, "=IFCBUILDINGELEMENTPROXY("), schedule_ids(blocks.schedule).size());
+}
+
+TEST(Ifc, OpeningsVoidTheSheetTheyAreCutIn) {
+  const Written w = written("paper/fig4-perforation.toml");
+  const size_t openings = schedule_ids(w.schedule).size();
+  EXPECT_EQ(count(w.ifc, "=IFCOPENINGELEMENT("), openings);
+  EXPECT_EQ(count(w.ifc, "=IFCRELVOIDSELEMENT("), openings);
+  EXPECT_EQ(count(w.ifc, "=IFCPLATE("), 1u);
+}
+
+TEST(Ifc, TheSameRunGivesTheSameBytesAndAnotherSeedOtherIds) {
+  const Written a = written("courtyard-l-shaped.toml"), b = written("courtyard-l-shaped.toml");
+  EXPECT_EQ(a.ifc, b.ifc);
+  const Written c = written("courtyard-l-shaped.toml", {"seed=9"});
+  const std::regex guid("IFCPROJECT\\('([^']{22})'");
+  std::smatch ma, mc;
+  ASSERT_TRUE(std::regex_search(a.ifc, ma, guid));
+  ASSERT_TRUE(std::regex_search(c.ifc, mc, guid));
+  EXPECT_NE(ma[1].str(), mc[1].str());
+  EXPECT_NE(a.ifc.find("IFCLABEL('8')"), std::string::npos);  // the seed, to reproduce it
+}
+
+TEST(Ifc, NamesInAnyScriptAreWrittenAsSevenBitStep) {
+  const Written w =
+      written("courtyard-l-shaped.toml", {"layout.materials=[\"Grès cérame\", \"O'Hare 瓦\"]"});
+  for (const char c : w.ifc) ASSERT_LT(static_cast<unsigned char>(c), 0x80u);
+  EXPECT_NE(w.ifc.find("IFCMATERIAL('Gr\\X2\\00E8\\X0\\s c\\X2\\00E9\\X0\\rame',$,$)"),
+            std::string::npos);
+  EXPECT_NE(w.ifc.find("IFCMATERIAL('O''Hare \\X2\\74E6\\X0\\',$,$)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace curdle
