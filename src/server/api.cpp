@@ -18,8 +18,8 @@
 #include "app/reproduce.h"
 #include "app/run.h"
 #include "app/search_run.h"
+#include "app/stopping.h"
 #include "curdle/error.h"
-#include "curdle/stop.h"
 
 namespace fs = std::filesystem;
 using nlohmann::ordered_json;
@@ -125,7 +125,7 @@ template <class F>
 ApiResponse guarded(F&& f) {
   try {
     return f();
-  } catch (const WorkStopped& e) {
+  } catch (const app::WorkStopped& e) {
     return api_error(503, e.what());
   } catch (const ResourceLimitError& e) {
     return api_error(413, render_error(e, query_key));

@@ -11,8 +11,8 @@
 #include <semaphore>
 #include <thread>
 
+#include "app/stopping.h"
 #include "curdle/error.h"
-#include "curdle/stop.h"
 #include "curdle/text.h"
 #include "server/http_connection.h"
 
@@ -82,7 +82,7 @@ ConnectionLimits connection_limits(const ServerConfig& c) {
 
 // A heavy request stops when it runs past its budget, when its client has gone (nobody would
 // read the answer) or when the server stops.
-class RequestStop : public StopRule {
+class RequestStop : public app::StopRule {
  public:
   RequestStop(double seconds, const std::atomic<bool>& stopping)
       : seconds_(seconds),
@@ -164,7 +164,7 @@ struct Server::Impl {
     ApiResponse answer;
     std::exception_ptr failure;
     std::thread worker([&] {
-      StopScope scope(rule);
+      app::StopScope scope(rule);
       try {
         answer = endpoint();
       } catch (...) {
