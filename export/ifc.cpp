@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -132,15 +133,18 @@ class IfcModel {
                     ref(project_), ref(set)));
   }
 
+  // A property of a set: its name and its typed value ("IFCINTEGER(3)").
+  int64_t property(const std::string& name, const std::string& value) {
+    return add(fmt::format("IFCPROPERTYSINGLEVALUE({},$,{},$)", text(name), value));
+  }
   int64_t label(const std::string& name, const std::string& value) {
-    return add(fmt::format("IFCPROPERTYSINGLEVALUE({},$,IFCLABEL({}),$)", text(name), text(value)));
+    return property(name, "IFCLABEL(" + text(value) + ")");
   }
   int64_t integer(const std::string& name, int64_t value) {
-    return add(fmt::format("IFCPROPERTYSINGLEVALUE({},$,IFCINTEGER({}),$)", text(name), value));
+    return property(name, fmt::format("IFCINTEGER({})", value));
   }
   int64_t length(const std::string& name, double value) {
-    return add(fmt::format("IFCPROPERTYSINGLEVALUE({},$,IFCPOSITIVELENGTHMEASURE({}),$)",
-                           text(name), real(value)));
+    return property(name, "IFCPOSITIVELENGTHMEASURE(" + real(value) + ")");
   }
 
   // Ground works stand on a site; façades, screens and blocks in a building's storey.
@@ -282,7 +286,6 @@ class IfcModel {
     const Rgb metal{201, 205, 210};
     const int64_t material =
         add(fmt::format("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {} mm", real(t)))));
-    std::vector<int64_t> plates;
     for (const Layout::FabricationSheet& s : l_.sheets) {
       std::vector<int64_t> items;
       if (s.outline.empty()) {
@@ -297,12 +300,11 @@ class IfcModel {
       const int64_t plate =
           add(fmt::format("IFCPLATE({},$,{},$,'perforated sheet',{},{},{},.SHEET.)",
                           guid("sheet " + s.id), text(s.id), ref(where), ref(body), text(s.id)));
-      plates.push_back(plate);
       contained_.push_back(plate);
       sheet_plates_.push_back(plate);
     }
     add(fmt::format("IFCRELASSOCIATESMATERIAL({},$,$,$,{},{})", guid("sheet-material"),
-                    step_refs(plates), ref(material)));
+                    step_refs(sheet_plates_), ref(material)));
   }
 
   int64_t placement() {
@@ -332,7 +334,11 @@ class IfcModel {
     }
     const std::string& material = piece_material(l_, e);
     materials_[material].push_back(id);
-    if (c.typed) types_[{material, stock_size_of(l_, e)}].push_back(id);
+    if (c.typed) {
+      CoveringType& covering = types_[{material, stock_size_of(l_, e)}];
+      covering.stock = {e.stock_w, e.stock_h};  // one stock size per type: the same for every piece
+      covering.elements.push_back(id);
+    }
     properties(e, index, id);
     quantities(e, id);
   }
@@ -340,15 +346,14 @@ class IfcModel {
   void properties(const Element& e, size_t index, int64_t id) {
     std::string bits;
     for (size_t k = 0; k < l_.source.curds.size(); ++k) bits += (e.value >> k & 1) ? '1' : '0';
-    std::vector<int64_t> props{
-        integer("Value", e.value),
-        label("CurdBits", bits),
-        integer("Row", e.row),
-        integer("Column", e.column),
-        label("Lot", lot_text(l_, e, index)),
-        add(fmt::format("IFCPROPERTYSINGLEVALUE('Cut',$,IFCBOOLEAN({}),$)", e.cut ? ".T." : ".F.")),
-        label("Material", piece_material(l_, e)),
-        label("StockSize", stock_size_of(l_, e))};
+    std::vector<int64_t> props{integer("Value", e.value),
+                               label("CurdBits", bits),
+                               integer("Row", e.row),
+                               integer("Column", e.column),
+                               label("Lot", lot_text(l_, e, index)),
+                               property("Cut", e.cut ? "IFCBOOLEAN(.T.)" : "IFCBOOLEAN(.F.)"),
+                               label("Material", piece_material(l_, e)),
+                               label("StockSize", stock_size_of(l_, e))};
     if (e.form == ElementForm::block)
       props.push_back(integer("Level", e.cell_z - l_.view.origin[2]));
     const int64_t set = add(fmt::format("IFCPROPERTYSET({},$,'Curdle_Element',$,{})",
@@ -382,19 +387,12 @@ class IfcModel {
                       step_refs(ids), ref(m)));
     }
     const char* predefined = l_.kind->upright() ? ".CLADDING." : ".FLOORING.";
-    for (const auto& [key, ids] : types_) {
+    for (const auto& [key, covering] : types_) {
       const auto& [material, size] = key;
-      // Pset_Tiling from the first element's stock size.
-      const Element* first = nullptr;
-      for (const Element& e : l_.elements)
-        if (piece_material(l_, e) == material && stock_size_of(l_, e) == size) {
-          first = &e;
-          break;
-        }
       std::vector<int64_t> sets;
-      if (first && first->stock_w > 0) {
-        const std::vector<int64_t> tiling{length("TileLength", first->stock_w),
-                                          length("TileWidth", first->stock_h)};
+      if (covering.stock[0] > 0) {
+        const std::vector<int64_t> tiling{length("TileLength", covering.stock[0]),
+                                          length("TileWidth", covering.stock[1])};
         sets.push_back(add(fmt::format("IFCPROPERTYSET({},$,'Pset_Tiling',$,{})",
                                        guid("tiling " + material + size), step_refs(tiling))));
       }
@@ -403,9 +401,15 @@ class IfcModel {
           fmt::format("IFCCOVERINGTYPE({},$,{},$,$,{},$,$,{},{})", guid("type " + name), text(name),
                       sets.empty() ? "$" : step_refs(sets), text(l_.element_type), predefined));
       add(fmt::format("IFCRELDEFINESBYTYPE({},$,$,$,{},{})", guid("type-rel " + name),
-                      step_refs(ids), ref(type)));
+                      step_refs(covering.elements), ref(type)));
     }
   }
+
+  // The pieces of one material and stock size, and that size.
+  struct CoveringType {
+    std::array<double, 2> stock{0, 0};
+    std::vector<int64_t> elements;
+  };
 
   StepWriter w_;
   const Layout& l_;
@@ -416,7 +420,7 @@ class IfcModel {
   std::map<uint32_t, int64_t> styles_;
   std::vector<int64_t> contained_, sheet_plates_;
   std::map<std::string, std::vector<int64_t>> materials_;
-  std::map<std::pair<std::string, std::string>, std::vector<int64_t>> types_;
+  std::map<std::pair<std::string, std::string>, CoveringType> types_;
 };
 
 }  // namespace
