@@ -13,6 +13,8 @@
 #include <thread>
 #include <vector>
 
+#include "socket_support.h"
+
 namespace curdle::server {
 namespace {
 
@@ -34,12 +36,8 @@ class Running {
     thread.join();
   }
   int connect() const {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const int fd = test::connect_loopback(port);
+    EXPECT_GE(fd, 0);
     timeval wait{10, 0};
     ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
     return fd;

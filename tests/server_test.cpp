@@ -23,6 +23,7 @@
 #include "curdle/overlay.h"
 #include "curdle/search.h"
 #include "export/image.h"
+#include "socket_support.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -127,13 +128,9 @@ class ServerTest : public ::testing::Test {
   // What the server answers to `request` sent as is on a socket of its own (a client library
   // would send a body first).
   std::string raw_request(const std::string& request) {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<uint16_t>(port_));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    const int fd = test::connect_loopback(port_);
     std::string answer;
-    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
+    if (fd >= 0 &&
         ::send(fd, request.data(), request.size(), 0) == static_cast<ssize_t>(request.size())) {
       timeval wait{10, 0};
       ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
@@ -226,12 +223,8 @@ TEST_F(ServerTest, FortySlowClientsDoNotHoldUpThePage) {
   const std::string start =
       "GET /api/recipe HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port_) + "\r\nX-Pad: ";
   for (int i = 0; i < 40; ++i) {
-    slow.push_back(::socket(AF_INET, SOCK_STREAM, 0));
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<uint16_t>(port_));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(::connect(slow.back(), reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    slow.push_back(test::connect_loopback(port_));
+    ASSERT_GE(slow.back(), 0);
     ::send(slow.back(), start.data(), start.size(), MSG_NOSIGNAL);
   }
   for (int round = 0; round < 3; ++round) {
@@ -528,12 +521,8 @@ class RhythmServer {
   }
   // Sends a GET on a socket of its own and returns the socket, unread.
   int send_get(const std::string& path) const {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const int fd = test::connect_loopback(port);
+    EXPECT_GE(fd, 0);
     const std::string request =
         "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n\r\n";
     EXPECT_EQ(::send(fd, request.data(), request.size(), 0), static_cast<ssize_t>(request.size()));
