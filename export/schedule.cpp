@@ -49,6 +49,66 @@ int64_t lot_of(const Element& e, size_t index, const OrderingKeys& ordering) {
   return 1;
 }
 
+ScheduleRow schedule_row(const Layout& layout, size_t index) {
+  const Element& e = layout.elements[index];
+  const Rect b = laid_bounds(e);
+  ScheduleRow r{.id = e.id,
+                .lot = lot_text(layout, e, index),
+                .row = e.row,
+                .column = e.column,
+                .x = b.x,
+                .y = b.y,
+                .width = b.w,
+                .height = b.h,
+                .area = e.area(),
+                .value = e.value,
+                .element_type = element_type_of(layout, e),
+                .colour = hex_colour(piece_colour(layout, e)),
+                .material = piece_material(layout, e),
+                .cut = e.cut};
+  const bool block = e.form == ElementForm::block;
+  if (block) {
+    const int64_t level = e.cell_z - layout.view.origin[2];
+    r.level = level;
+    r.z = static_cast<double>(level) * layout.level_height;
+    r.height = layout.level_height;
+    r.depth = b.h;
+  }
+  if (stock_area(e) > 0) {
+    r.stock_width = e.stock_w;
+    r.stock_height = block ? layout.level_height : e.stock_h;
+  }
+  r.outlines = piece_outlines(e);
+  if (e.circle) {
+    r.opening_x = e.circle->cx;
+    r.opening_y = e.circle->cy;
+    r.opening_diameter = e.circle->d;
+  } else if (e.outline && e.form == ElementForm::opening) {
+    r.opening_x = b.x + b.w / 2;
+    r.opening_y = b.y + b.h / 2;
+  }
+  return r;
+}
+
+namespace {
+
+std::string optional_mm(const std::optional<double>& v) { return v ? mm_text(*v) : ""; }
+
+void append_row(std::string& buffer, const ScheduleRow& r, size_t curds) {
+  fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{},{},{},{},{:.6f},{},{},{}",
+                 r.id, r.lot, r.level ? std::to_string(*r.level) : "", r.row, r.column,
+                 mm_text(r.x), mm_text(r.y), mm_text(r.z), mm_text(r.width), mm_text(r.height),
+                 optional_mm(r.depth), r.area / 1e6, optional_mm(r.stock_width),
+                 optional_mm(r.stock_height), r.value);
+  for (size_t c = 0; c < curds; ++c) buffer += (r.value >> c & 1) ? ",1" : ",0";
+  fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{},{},{},{}\r\n",
+                 csv_field(r.element_type), r.colour, csv_field(r.material), r.cut ? 1 : 0,
+                 csv_field(outlines_wkt(r.outlines)), optional_mm(r.opening_x),
+                 optional_mm(r.opening_y), optional_mm(r.opening_diameter));
+}
+
+}  // namespace
+
 void write_schedule_csv(std::ostream& out, const Layout& layout) {
   const Provenance& design = layout.source;
   std::string header = kUtf8Mark;
@@ -66,37 +126,7 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
   std::string buffer;
   buffer.reserve(1 << 20);
   for (size_t i = 0; i < layout.elements.size(); ++i) {
-    const Element& e = layout.elements[i];
-    const Rect b = laid_bounds(e);
-    std::string level, z = "0", height = mm_text(b.h), depth;
-    const bool block = e.form == ElementForm::block;
-    if (block) {
-      const int64_t l = e.cell_z - layout.view.origin[2];
-      level = std::to_string(l);
-      z = mm_text(static_cast<double>(l) * layout.level_height);
-      height = mm_text(layout.level_height);
-      depth = mm_text(b.h);
-    }
-    const bool bought = stock_area(e) > 0;
-    fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", e.id,
-                   lot_text(layout, e, i), level, e.row, e.column, mm_text(b.x), mm_text(b.y), z,
-                   mm_text(b.w), height, depth, fmt::format("{:.6f}", e.area() / 1e6),
-                   bought ? mm_text(e.stock_w) : "",
-                   bought ? mm_text(block ? layout.level_height : e.stock_h) : "", e.value);
-    for (size_t c = 0; c < design.curds.size(); ++c) buffer += (e.value >> c & 1) ? ",1" : ",0";
-    fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{}",
-                   csv_field(element_type_of(layout, e)), hex_colour(piece_colour(layout, e)),
-                   csv_field(piece_material(layout, e)), e.cut ? 1 : 0,
-                   csv_field(outlines_wkt(piece_outlines(e))));
-    if (e.circle)
-      fmt::format_to(std::back_inserter(buffer), ",{},{},{}", mm_text(e.circle->cx),
-                     mm_text(e.circle->cy), mm_text(e.circle->d));
-    else if (e.outline && e.form == ElementForm::opening)
-      fmt::format_to(std::back_inserter(buffer), ",{},{},", mm_text(b.x + b.w / 2),
-                     mm_text(b.y + b.h / 2));
-    else
-      buffer += ",,,";
-    buffer += "\r\n";
+    append_row(buffer, schedule_row(layout, i), design.curds.size());
     if (buffer.size() > (1 << 20) - 4096) {
       out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
       buffer.clear();

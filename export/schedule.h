@@ -14,6 +14,8 @@
 //                   blocks), in laying order.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -29,6 +31,24 @@ int64_t lot_of(const Element& element, size_t index, const OrderingKeys& orderin
 std::string element_type_of(const Layout& layout, const Element& element);
 std::string stock_size_of(const Layout& layout, const Element& element);
 std::string lot_text(const Layout& layout, const Element& element, size_t index);
+
+// One row of schedule.csv as numbers and words: what the CSV prints, and what a program or the
+// Python module reads without parsing it. Lengths in mm, unrounded.
+struct ScheduleRow {
+  std::string id, lot;
+  std::optional<int64_t> level;  // blocks: the storey from the view's lowest
+  int64_t row = 0, column = 0;
+  double x = 0, y = 0, z = 0, width = 0, height = 0;  // bounding box of the piece as laid
+  std::optional<double> depth;                        // blocks: depth in plan
+  double area = 0;                                    // mm², its own
+  std::optional<double> stock_width, stock_height;    // what it is cut from, when bought
+  uint32_t value = 0;
+  std::string element_type, colour, material;  // colour as "#rrggbb"
+  bool cut = false;
+  std::vector<Outline> outlines;  // when the piece is not one rectangle (shape_wkt)
+  std::optional<double> opening_x, opening_y, opening_diameter;
+};
+ScheduleRow schedule_row(const Layout& layout, size_t index);
 
 void write_schedule_csv(std::ostream& out, const Layout& layout);
 void write_quantities_csv(std::ostream& out, const Layout& layout);

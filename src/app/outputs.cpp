@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "app/generated_run.h"
 #include "curdle/error.h"
 #include "export/cells_csv.h"
 #include "export/cutting.h"
@@ -13,14 +14,11 @@
 #include "export/install.h"
 #include "export/layout_dxf.h"
 #include "export/layout_png.h"
-#include "export/mask_image.h"
 #include "export/preview_png.h"
 #include "export/report_json.h"
 #include "export/report_table.h"
 #include "export/schedule.h"
 #include "export/svg.h"
-#include "kinds/facade.h"
-#include "layout/builder.h"
 
 namespace fs = std::filesystem;
 
@@ -299,17 +297,26 @@ bool builds_layout(const Run& run, const std::vector<const Output*>& outputs) {
 }  // namespace
 
 uint64_t estimate_run_memory(const Run& run, const std::vector<const Output*>& outputs) {
+  return estimate_run_memory(run, outputs, builds_layout(run, outputs));
+}
+
+uint64_t estimate_run_memory(const Run& run, const std::vector<const Output*>& outputs,
+                             bool with_layout) {
   const Design& d = run.recipe.design;
   uint64_t need = estimate_memory(d, generation_box(d, run.view));
   for (const Output* o : outputs)
     if (o->memory) need += o->memory(run);
   // An element with its ID and shape is about 256 bytes.
-  if (builds_layout(run, outputs)) need += run.view.cells() * 256;
+  if (with_layout && run.recipe.layout) need += run.view.cells() * 256;
   return need;
 }
 
 void check_run_memory(const Run& run, const std::vector<const Output*>& outputs) {
-  const uint64_t need = estimate_run_memory(run, outputs);
+  check_run_memory(run, outputs, builds_layout(run, outputs));
+}
+
+void check_run_memory(const Run& run, const std::vector<const Output*>& outputs, bool with_layout) {
+  const uint64_t need = estimate_run_memory(run, outputs, with_layout);
   if (need > run.generate.max_memory_bytes)
     throw ResourceLimitError(
         "the curds and their outputs need about " + std::to_string(need >> 20) +
@@ -320,52 +327,14 @@ void check_run_memory(const Run& run, const std::vector<const Output*>& outputs)
 
 RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outputs,
                          OutputSink& sink, int threads, RunObserver* observer) {
-  const Design& d = run.recipe.design;
-  const bool needs_layout = builds_layout(run, outputs);
-  std::optional<LayoutSpec> spec = run.recipe.layout;
-  // A façade's mask is a file beside the recipe: the application reads it (the kind does no IO).
-  FacadeKeys* facade = spec ? spec->keys.find<FacadeKeys>() : nullptr;
-  if (facade && !facade->mask.empty() && needs_layout) {
-    const fs::path mask = fs::path(run.recipe_path).parent_path() / facade->mask;
-    for (const Rect& r :
-         read_mask_openings(mask, (*spec->size)[0], (*spec->size)[1],
-                            SourceLocation{run.recipe_path, 0, 0, "layout.mask", ""},
-                            run.generate.max_memory_bytes))
-      facade->openings.push_back(r);
-  }
   check_run_memory(run, outputs);
-
-  const CurdField field = with_progress(observer, "curdling", [&](const auto& progress) {
-    return run_engine(run, threads, progress);
-  });
-  RunSummary summary;
-  summary.report = make_report(d, run.seed, field, run.view);
-  std::optional<Layout> layout;
-  if (spec && needs_layout) {
-    layout = make_layout(d, field, run.view, *spec);
-  }
-  const OutputContext context{run, field, summary.report, layout ? &*layout : nullptr, observer};
-  // report.json last: it describes the layout the other files drew.
-  for (const Output* o : outputs)
-    if (o->name != "report.json") o->write(context, sink);
-  for (const Output* o : outputs)
-    if (o->name == "report.json") o->write(context, sink);
-
-  if (layout) {
-    LayoutSummary s;
-    s.element_type = layout->element_type;
-    s.elements = layout->elements.size();
-    s.cut = cut_elements(*layout);
-    s.omitted = layout->omitted;
-    for (const Output* o : outputs)
-      if (o->name == "sheets") s.sheets = layout->sheets.size();
-    s.width = layout->width;
-    s.height = layout->height;
-    s.drawing_scale = drawing_scale(*layout);
-    s.dpi = layout->drawing.dpi;
-    s.notes = layout->notes;
-    s.violations = layout->violations;
-    summary.layout = std::move(s);
+  const GeneratedRun generated = generate_run(run, builds_layout(run, outputs), threads, observer);
+  write_generated(generated, outputs, sink, observer);
+  RunSummary summary{.report = generated.report};
+  if (generated.layout) {
+    const bool sheets = std::any_of(outputs.begin(), outputs.end(),
+                                    [](const Output* o) { return o->name == "sheets"; });
+    summary.layout = summarize_layout(*generated.layout, sheets);
   }
   return summary;
 }

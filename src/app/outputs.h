@@ -61,10 +61,14 @@ const Output* find_output(const std::string& name);
 std::vector<const Output*> select_outputs(const Run& run, const std::vector<std::string>& named,
                                           RunObserver* observer);
 
-// Bytes the run and these outputs need at once, counted before anything is allocated.
+// Bytes the run and these outputs need at once, counted before anything is allocated: the
+// curds, the layout when the outputs need it (or when `with_layout` says so), and each output.
 uint64_t estimate_run_memory(const Run& run, const std::vector<const Output*>& outputs);
+uint64_t estimate_run_memory(const Run& run, const std::vector<const Output*>& outputs,
+                             bool with_layout);
 // ResourceLimitError when that is above the run's memory limit.
 void check_run_memory(const Run& run, const std::vector<const Output*>& outputs);
+void check_run_memory(const Run& run, const std::vector<const Output*>& outputs, bool with_layout);
 
 // What a run made, for the caller to tell the user.
 struct LayoutSummary {
@@ -81,11 +85,11 @@ struct RunSummary {
   std::optional<LayoutSummary> layout;
 };
 
-// Runs the engine and writes the outputs to `sink`. Throws InputError for bad input and
-// ResourceLimitError above the run's memory limit, before anything is written.
 // The run's per-stage report of `field` as the terminal table `curdle report` prints.
 std::string report_table(const Run& run, const CurdField& field);
 
+// Runs the engine and writes the outputs to `sink`. Throws InputError for bad input and
+// ResourceLimitError above the run's memory limit, before anything is written.
 RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outputs,
                          OutputSink& sink, int threads, RunObserver* observer);
 

@@ -1,0 +1,114 @@
+#include "app/generated_run.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "curdle/error.h"
+#include "export/layout_png.h"
+#include "export/mask_image.h"
+#include "export/report_json.h"
+#include "kinds/facade.h"
+#include "layout/builder.h"
+
+namespace fs = std::filesystem;
+
+namespace curdle::app {
+namespace {
+
+// The run's [layout] as it is laid: a façade's mask is a file beside the recipe, read here (the
+// kind does no IO) and added to its openings.
+LayoutSpec spec_with_mask(const Run& run) {
+  LayoutSpec spec = *run.recipe.layout;
+  FacadeKeys* facade = spec.keys.find<FacadeKeys>();
+  if (facade && !facade->mask.empty()) {
+    const fs::path mask = fs::path(run.recipe_path).parent_path() / facade->mask;
+    for (const Rect& r :
+         read_mask_openings(mask, (*spec.size)[0], (*spec.size)[1],
+                            SourceLocation{run.recipe_path, 0, 0, "layout.mask", ""},
+                            run.generate.max_memory_bytes))
+      facade->openings.push_back(r);
+  }
+  return spec;
+}
+
+std::string single_file_outputs() {
+  std::string names;
+  for (const Output& o : output_registry())
+    if (o.name != "sheets") names += (names.empty() ? "" : ", ") + o.name;
+  return names + ", layout.bin, sheets/<sheet>.dxf or .svg";
+}
+
+}  // namespace
+
+GeneratedRun generate_run(Run run, bool with_layout, int threads, RunObserver* observer) {
+  with_layout = with_layout && run.recipe.layout.has_value();
+  check_run_memory(run, {}, with_layout);
+  std::optional<LayoutSpec> spec;
+  if (with_layout) spec = spec_with_mask(run);
+  GeneratedRun g{.run = std::move(run)};
+  {
+    std::unique_ptr<ProgressTask> task = observer ? observer->begin("curdling") : nullptr;
+    g.field = run_engine(g.run, threads, [&](double f) {
+      if (task) task->update(f);
+    });
+  }
+  const Design& d = g.run.recipe.design;
+  g.report = make_report(d, g.run.seed, g.field, g.run.view);
+  if (spec) g.layout = make_layout(d, g.field, g.run.view, *spec);
+  return g;
+}
+
+void write_generated(const GeneratedRun& g, const std::vector<const Output*>& outputs,
+                     OutputSink& sink, RunObserver* observer) {
+  for (const Output* o : outputs)
+    if (o->needs_layout && !g.layout)
+      throw InputError(SourceLocation{g.run.recipe_path, 0, 0, "layout", ""},
+                       o->name + (g.run.recipe.layout
+                                      ? " needs the layout, and this run was generated without it"
+                                      : " needs a [layout] section in the recipe (see "
+                                        "patterns/README.md)"));
+  check_run_memory(g.run, outputs, g.layout.has_value());
+  const OutputContext context{g.run, g.field, g.report, g.layout ? &*g.layout : nullptr, observer};
+  for (const Output* o : outputs)
+    if (o->name != "report.json") o->write(context, sink);
+  for (const Output* o : outputs)
+    if (o->name == "report.json") o->write(context, sink);
+}
+
+std::string output_bytes(const GeneratedRun& g, const std::string& name) {
+  std::string writer = name;
+  if (name == "layout.bin") writer = "layout.gltf";
+  if (name.rfind("sheets/", 0) == 0) writer = "sheets";
+  const Output* o = find_output(writer);
+  if (!o || (o->name != writer && writer != "sheets"))
+    throw InputError(parameter("output"),
+                     "unknown output '" + name + "'; allowed: " + single_file_outputs());
+  MemorySink sink;
+  write_generated(g, {o}, sink, nullptr);
+  const auto file = sink.files().find(name);
+  if (file == sink.files().end())
+    throw InputError(parameter("output"),
+                     "this run wrote no '" + name + "'" +
+                         (writer == "sheets" && g.layout
+                              ? "; its sheets are " + std::to_string(g.layout->sheets.size())
+                              : std::string()));
+  return file->second;
+}
+
+LayoutSummary summarize_layout(const Layout& layout, bool with_sheets) {
+  LayoutSummary s;
+  s.element_type = layout.element_type;
+  s.elements = layout.elements.size();
+  s.cut = cut_elements(layout);
+  s.omitted = layout.omitted;
+  if (with_sheets) s.sheets = layout.sheets.size();
+  s.width = layout.width;
+  s.height = layout.height;
+  s.drawing_scale = drawing_scale(layout);
+  s.dpi = layout.drawing.dpi;
+  s.notes = layout.notes;
+  s.violations = layout.violations;
+  return s;
+}
+
+}  // namespace curdle::app
