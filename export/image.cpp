@@ -16,7 +16,19 @@ struct ImageModule {
   ReadSizeFn read_size = nullptr;
 };
 
-// Beside the program (build tree), in ../lib/curdle (installed), or where it was built.
+// The directory of the file this code was loaded from: the program, or libcurdle.so when a
+// program or the Python module links the installed library.
+fs::path own_directory() {
+  Dl_info info{};
+  if (::dladdr(reinterpret_cast<const void*>(&own_directory), &info) == 0 || !info.dli_fname)
+    return {};
+  std::error_code ec;
+  const fs::path file = fs::canonical(info.dli_fname, ec);
+  return ec ? fs::path() : file.parent_path();
+}
+
+// Beside the program (build tree), in ../lib/curdle (installed), in curdle/ beside the shared
+// library (installed, linked by another program), or where it was built.
 std::vector<fs::path> candidates() {
   std::vector<fs::path> paths;
   std::error_code ec;
@@ -26,6 +38,8 @@ std::vector<fs::path> candidates() {
     paths.push_back(exe.parent_path() / ".." / CURDLE_IMAGE_MODULE_INSTALL_DIR /
                     CURDLE_IMAGE_MODULE_NAME);
   }
+  if (const fs::path own = own_directory(); !own.empty())
+    paths.push_back(own / "curdle" / CURDLE_IMAGE_MODULE_NAME);
   paths.push_back(fs::path(CURDLE_IMAGE_MODULE_BUILD_DIR) / CURDLE_IMAGE_MODULE_NAME);
   return paths;
 }

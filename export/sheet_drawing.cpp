@@ -16,11 +16,26 @@ namespace {
 
 constexpr const char* kFont = "DejaVu Sans";
 
+// Text drawn unhinted with unrounded metrics on every surface. Left to the defaults, a PNG
+// drawn after a PDF in the same process reused the PDF's cached font and its glyphs came out a
+// pixel off, so layout.png's bytes depended on what the process had drawn before.
+const cairo_font_options_t* fixed_font_options() {
+  static cairo_font_options_t* options = [] {
+    cairo_font_options_t* o = cairo_font_options_create();
+    cairo_font_options_set_hint_style(o, CAIRO_HINT_STYLE_NONE);
+    cairo_font_options_set_hint_metrics(o, CAIRO_HINT_METRICS_OFF);
+    cairo_font_options_set_antialias(o, CAIRO_ANTIALIAS_GRAY);
+    return o;
+  }();
+  return options;
+}
+
 // The sheets' font, its capitals `height` mm high.
 void font(cairo_t* cr, double height, bool bold) {
   cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
                          bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, height / kCapHeightEm);
+  cairo_set_font_options(cr, fixed_font_options());
 }
 
 }  // namespace

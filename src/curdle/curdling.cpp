@@ -14,6 +14,7 @@
 #include "curdle/error.h"
 #include "curdle/philox_batch.h"
 #include "curdle/random_stream.h"
+#include "curdle/stop.h"
 #include "curdle/survival_bytes.h"
 #include "curdle/theory.h"
 
@@ -571,6 +572,7 @@ void curdle_into(const Design& design, uint64_t seed, const Box& view, CurdField
     curd.stages[0].assign_zero(out.index.roots());
     for (uint64_t r = 0; r < out.index.roots(); ++r) curd.stages[0].set(r);
     for (int k = 1; k <= lattice.stages; ++k) {
+      stop_point_now();  // a stage of a large field takes seconds: a caller may stop between
       curd.stages[k].assign_zero(out.index.roots() * lattice.cells_per_root(k));
       const StageWork work{out.index,
                            box,

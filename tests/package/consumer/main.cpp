@@ -1,0 +1,34 @@
+// consumer RECIPE SEED OUT: runs the recipe with that seed through the installed library and
+// writes its layout.svg and schedule.csv into OUT, as `curdle generate` would.
+#include <app/generated_run.h>
+#include <app/version.h>
+#include <curdle/error.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: consumer RECIPE SEED OUT\n");
+    return 2;
+  }
+  namespace app = curdle::app;
+  try {
+    const app::Run run = app::resolve_run(
+        {.recipe_text = app::read_recipe_file(argv[1]), .recipe_path = argv[1], .seed = argv[2]});
+    const app::GeneratedRun generated = app::generate_run(run, true, 0, nullptr);
+    std::filesystem::create_directories(argv[3]);
+    for (const char* name : {"layout.svg", "schedule.csv"}) {
+      std::ofstream(std::filesystem::path(argv[3]) / name, std::ios::binary)
+          << app::output_bytes(generated, name);
+    }
+    std::printf("curdle %s: %s, seed %llu, %zu elements\n", app::version(),
+                run.recipe.design.name.c_str(), static_cast<unsigned long long>(run.seed),
+                generated.layout->elements.size());
+  } catch (const curdle::InputError& e) {
+    std::fprintf(stderr, "consumer: %s\n", curdle::render_error(e).c_str());
+    return 2;
+  }
+  return 0;
+}

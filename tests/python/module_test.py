@@ -1,0 +1,240 @@
+"""The Python module against the command line: for four patterns (a curved-edge paving, a
+perforated sheet, a park, a 3-D stack) the module's values equal cells.csv, its report equals
+report.json, its elements equal schedule.csv row for row, and every output's bytes equal the
+file `curdle generate` writes. Then errors, overrides, windows, search, measure, fit, the GIL
+and Ctrl-C.
+
+Usage: module_test.py CURDLE_PROGRAM SOURCE_DIR   (with the module on PYTHONPATH)
+"""
+
+import csv
+import io
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import textwrap
+import unittest
+from pathlib import Path
+
+import numpy as np
+
+import curdle
+
+PROGRAM = sys.argv[1]
+SOURCE = Path(sys.argv[2])
+PATTERNS = ["patterns/terrace-curved-edge.toml", "patterns/paper/fig4-perforation.toml",
+            "patterns/paper/fig5a-park.toml", "patterns/stacked-blocks.toml"]
+SEED = 11
+ALL_OUTPUTS = [o["name"] for o in curdle.outputs()]
+
+
+def cli_generate(pattern, out, *extra):
+    subprocess.run([PROGRAM, "generate", str(SOURCE / pattern), "--out", str(out), "--seed",
+                    str(SEED), "--outputs", ",".join(ALL_OUTPUTS), "--threads", "2", *extra],
+                   check=True, stdout=subprocess.DEVNULL)
+
+
+def read_csv(path):
+    text = Path(path).read_text(encoding="utf-8-sig")
+    return list(csv.DictReader(io.StringIO(text, newline="")))
+
+
+def same_mm(csv_text, value):
+    """A CSV length (to the micrometre) against the module's unrounded one."""
+    if csv_text == "":
+        return value is None
+    return value is not None and abs(float(csv_text) - value) <= 0.0005 + 1e-9
+
+
+class AgainstTheCommandLine(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.runs = {}
+        for pattern in PATTERNS:
+            out = Path(cls.tmp.name) / Path(pattern).stem
+            cli_generate(pattern, out)
+            run = curdle.Recipe.from_file(SOURCE / pattern).generate(seed=SEED, threads=1)
+            cls.runs[pattern] = (run, out)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_values_equal_cells_csv(self):
+        for pattern, (run, out) in self.runs.items():
+            rows = read_csv(out / "cells.csv")
+            axes = [a for a in ("x", "y", "z") if a in rows[0]]
+            values = run.values
+            self.assertEqual(values.ndim, len(axes), pattern)
+            self.assertEqual(values.size, len(rows), pattern)
+            origin = run.origin
+            for r in rows:
+                at = tuple(int(r[a]) - origin[i] for i, a in enumerate(axes))[::-1]
+                self.assertEqual(values[at], int(r["value"]), (pattern, r))
+                for i, name in enumerate(run.curd_names):
+                    self.assertEqual(run.curd(name)[at], r[name] == "1", (pattern, name))
+
+    def test_report_equals_report_json(self):
+        for pattern, (run, out) in self.runs.items():
+            self.assertEqual(run.report, json.loads((out / "report.json").read_text()), pattern)
+
+    def test_elements_equal_schedule_csv_row_for_row(self):
+        lengths = ["x_mm", "y_mm", "z_mm", "width_mm", "height_mm", "depth_mm",
+                   "stock_width_mm", "stock_height_mm"]
+        for pattern, (run, out) in self.runs.items():
+            rows = read_csv(out / "schedule.csv")
+            elements = run.layout.elements
+            table = run.layout.table()
+            self.assertEqual(len(elements), len(rows), pattern)
+            self.assertEqual(len(table), len(rows), pattern)
+            for e, t, r in zip(elements, table, rows):
+                where = (pattern, r["element_id"])
+                for key in ("element_id", "lot", "element_type", "colour", "material",
+                            "shape_wkt"):
+                    self.assertEqual(getattr(e, key), r[key], where)
+                    self.assertEqual(str(t[key]), r[key], where)
+                self.assertEqual(e.level, int(r["level"]) if r["level"] else None, where)
+                self.assertEqual((e.row, e.column, e.value, e.cut),
+                                 (int(r["row"]), int(r["column"]), int(r["value"]),
+                                  r["cut"] == "1"), where)
+                for key in lengths:
+                    self.assertTrue(same_mm(r[key], getattr(e, key)), (where, key))
+                    self.assertTrue(same_mm(r[key], None if math.isnan(t[key]) else t[key]),
+                                    (where, key))
+                self.assertEqual(f"{e.area_m2:.6f}", r["area_m2"], where)
+                for name in run.curd_names:
+                    self.assertEqual(e.curds[name], int(r[name]), where)
+                    self.assertEqual(int(t[name]), int(r[name]), where)
+                centre = (r["opening_x_mm"], r["opening_y_mm"], r["opening_diameter_mm"])
+                if centre[0]:
+                    for text, value in zip(centre, e.opening):
+                        self.assertTrue(same_mm(text, value), where)
+                else:
+                    self.assertIsNone(e.opening, where)
+                self.assertEqual(e.polygon is not None, r["shape_wkt"] != "", where)
+
+    def test_every_outputs_bytes_equal_the_command_lines(self):
+        for pattern, (run, out) in self.runs.items():
+            files = sorted(p.relative_to(out).as_posix() for p in out.rglob("*") if p.is_file())
+            self.assertIn("layout.bin", files)
+            for name in files:
+                self.assertEqual(run.output_bytes(name), (out / name).read_bytes(),
+                                 (pattern, name))
+
+    def test_write_gives_the_same_files(self):
+        run, out = self.runs[PATTERNS[1]]
+        with tempfile.TemporaryDirectory() as tmp:
+            written = run.write(ALL_OUTPUTS, out=Path(tmp) / "screen")
+            self.assertTrue(any("sheets" in w for w in written), written)
+            for path in written:
+                name = Path(path).relative_to(Path(tmp) / "screen").as_posix()
+                self.assertEqual(Path(path).read_bytes(), (out / name).read_bytes(), name)
+
+
+class Calls(unittest.TestCase):
+    def test_overrides_seed_and_window_are_the_command_lines(self):
+        recipe = curdle.Recipe.from_file(SOURCE / "patterns/paper/fig7-three-stages.toml")
+        run = recipe.generate(seed=5, window=(10, 13, 40, 30),
+                              overrides={"curds.0.probabilities": ["3/4", "1/2", "1/2"]})
+        self.assertEqual(run.values.shape, (30, 40))
+        self.assertEqual(run.origin, (10, 13))
+        with tempfile.TemporaryDirectory() as tmp:
+            subprocess.run([PROGRAM, "generate", recipe.path, "--out", tmp, "--seed", "5",
+                            "--window", "10,13,40,30", "--set",
+                            'curds.0.probabilities=["3/4", "1/2", "1/2"]', "--outputs",
+                            "report.json,cells.csv"], check=True, stdout=subprocess.DEVNULL)
+            self.assertEqual(run.output_bytes("cells.csv"),
+                             (Path(tmp) / "cells.csv").read_bytes())
+        self.assertFalse(run.values.flags.writeable)
+        self.assertIsNone(run.layout)
+
+    def test_bad_input_raises_the_command_lines_message(self):
+        bad = "name = \"x\"\n[lattice]\nbase = 1\ndimension = 2\n"
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "bad.toml"
+            path.write_text(bad)
+            cli = subprocess.run([PROGRAM, "generate", str(path), "--out", tmp],
+                                 capture_output=True, text=True)
+            self.assertEqual(cli.returncode, 2)
+            with self.assertRaises(curdle.InputError) as caught:
+                curdle.generate(path)
+            self.assertEqual("curdle: error: " + str(caught.exception), cli.stderr.strip())
+            self.assertEqual((caught.exception.line, caught.exception.key), (3, "lattice.base"))
+        recipe = curdle.Recipe.from_file(SOURCE / "patterns/courtyard-l-shaped.toml")
+        cases = [({"overrides": {"lattice.base": 1}}, "overrides lattice.base: must be"),
+                 ({"overrides": {"lattice.base": object()}}, "not a recipe value"),
+                 ({"seed": 1.5}, "seed: must be a whole number"),
+                 ({"window": (0, 0, 99999, 5)}, "window"),
+                 ({"max_memory": 1000}, "memory limit")]
+        for kwargs, words in cases:
+            with self.assertRaises(curdle.InputError, msg=kwargs) as caught:
+                recipe.generate(**kwargs)
+            self.assertIn(words, str(caught.exception))
+        with self.assertRaises(curdle.ResourceLimitError):
+            recipe.generate(max_memory=1000)
+        with self.assertRaises(curdle.InputError) as caught:
+            recipe.generate().output_bytes("layout.txt")
+        self.assertIn("allowed: report.json", str(caught.exception))
+        with self.assertRaises(curdle.InputError):
+            curdle.Recipe.from_file(SOURCE / "patterns")  # a directory, not a recipe
+
+    def test_search_measure_and_fit(self):
+        recipe = curdle.Recipe.from_file(SOURCE / "patterns/paper/fig7-three-stages.toml")
+        hits = curdle.search(recipe, seeds=range(1, 41), targets=["ratio=0.12"], top=3)
+        self.assertEqual([h["rank"] for h in hits["hits"]], [1, 2, 3])
+        with tempfile.TemporaryDirectory() as tmp:
+            subprocess.run([PROGRAM, "search", recipe.path, "--seeds", "1..40", "--target",
+                            "ratio=0.12", "--top", "3", "--out", tmp, "--no-previews"],
+                           check=True, stdout=subprocess.DEVNULL)
+            seeds = [r["seed"] for r in read_csv(Path(tmp) / "search.csv")]
+        self.assertEqual([h["seed"] for h in hits["hits"]], seeds)
+        run = recipe.generate(seed=int(seeds[0]))
+        with tempfile.TemporaryDirectory() as tmp:
+            run.write(["preview.png", "cells.csv"], out=tmp)
+            measured = curdle.measure(Path(tmp) / "preview.png", base=2)
+            self.assertIn("values", measured)
+            fitted = curdle.fit(Path(tmp) / "cells.csv", base=4, stages=3)
+            self.assertEqual(fitted["lattice"], {"base": 4, "dimension": 2, "stages": 3})
+            again = curdle.Recipe.from_text(fitted["toml"], "fitted.toml").generate(seed=1)
+            self.assertEqual(again.values.shape, run.values.shape)
+
+
+class Interrupting(unittest.TestCase):
+    def test_ctrl_c_stops_a_long_search_and_the_gil_is_free_meanwhile(self):
+        child = textwrap.dedent(f"""
+            import sys, threading, time, curdle
+            recipe = curdle.Recipe.from_file({str(SOURCE / "patterns/courtyard-l-shaped.toml")!r})
+            ticks = 0
+            def tick():
+                global ticks
+                while True:
+                    ticks += 1
+                    time.sleep(0.01)
+            threading.Thread(target=tick, daemon=True).start()
+            print("started", flush=True)
+            try:
+                curdle.search(recipe, seeds="1..100000000", targets=["ratio=0.3"], threads=1)
+                print("finished")
+            except KeyboardInterrupt:
+                print("interrupted after", ticks, "ticks", flush=True)
+        """)
+        process = subprocess.Popen([sys.executable, "-c", child], stdout=subprocess.PIPE,
+                                   text=True, env=os.environ)
+        self.assertEqual(process.stdout.readline().strip(), "started")
+        import time
+        time.sleep(1.0)
+        process.send_signal(signal.SIGINT)
+        # Without the stop the search runs for hours: the bound only catches a hang.
+        out, _ = process.communicate(timeout=60)
+        self.assertIn("interrupted after", out)
+        ticks = int(out.split()[2])
+        self.assertGreater(ticks, 20, "the tick thread did not run while the search did")
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0], "-v"])
