@@ -1,40 +1,48 @@
-// A 6 x 4 m terrace of 400 x 400 mm slabs with 8 mm joints in two colours, drawn as SVG:
-// the library without the command line, and without a recipe file.
+// A 6 x 4 m terrace of 400 x 400 mm slabs with 8 mm joints in two colours, drawn as SVG: a
+// program over the installed library (curdle::curdle), with the recipe in its own text. A run
+// made with the application layer carries its seed and recipe into the title block.
 #include <cstdio>
 #include <fstream>
 
-#include "curdle/curdling.h"
-#include "export/svg.h"
-#include "kinds/registry.h"
-#include "layout/builder.h"
+#include "app/generated_run.h"
+#include "curdle/error.h"
 
 int main() {
-  curdle::Design design;
-  design.name = "terrace";
-  design.lattice = {4, 2, 3, curdle::Mode::canonical};
-  curdle::CurdSpec dark;
-  dark.name = "dark";
-  for (const char* p : {"3/4", "1/2", "1/2"})
-    dark.probabilities.push_back(*curdle::Probability::parse(p));
-  design.curds.push_back(dark);
+  namespace app = curdle::app;
+  const char* recipe = R"(
+    name = "terrace"
+    [lattice]
+    base = 4
+    dimension = 2
+    [[curds]]
+    name = "dark"
+    probabilities = ["3/4", "1/2", "1/2"]
+    [layout]
+    kind = "paving"
+    tile = [400, 400]
+    joint = 8
+    floor = [6000, 4000]
+  )";
+  try {
+    const app::Run run =
+        app::resolve_run({.recipe_text = recipe, .recipe_path = "terrace.toml", .seed = "11"});
+    const app::GeneratedRun terrace = app::generate_run(run, true, 0, nullptr);
+    std::ofstream("terrace.svg", std::ios::binary) << app::output_bytes(terrace, "layout.svg");
 
-  curdle::LayoutSpec spec;
-  spec.set_kind(curdle::layout_kind("paving"));
-  spec.module_w = spec.module_h = 400;
-  spec.joint = 8;
-  spec.size = std::array<double, 2>{6000, 4000};
-  const auto cells = curdle::elements_to_cover(spec);  // 15 x 10 slabs, the last cut
-  design.field.size = {cells[0], cells[1], 1};
-
-  const curdle::CurdField field = curdle::curdle(design, 11, design.field);
-  const curdle::Layout layout = curdle::make_layout(design, field, design.field, spec);
-  std::ofstream svg("terrace.svg");
-  curdle::write_layout_svg(svg, layout);
-
-  size_t cut = 0;
-  for (const auto& e : layout.elements) cut += e.cut;
-  std::printf("terrace: %zu slabs, %zu cut, %llu dark, joints %.2f m2\n", layout.elements.size(),
-              cut, static_cast<unsigned long long>(layout.legend[1].count),
-              curdle::joint_area(layout) / 1e6);
-  return svg ? 0 : 1;
+    const curdle::Layout& layout = *terrace.layout;
+    size_t cut = 0;
+    for (const auto& e : layout.elements) cut += e.cut;
+    const app::LayoutSummary summary = app::summarize_layout(layout, false);
+    double laid = 0;
+    for (const auto& e : layout.elements) laid += e.area();
+    std::printf("terrace: %llu slabs, %zu cut, %llu dark, joints %.2f m2, seed %llu\n",
+                static_cast<unsigned long long>(summary.elements), cut,
+                static_cast<unsigned long long>(layout.legend[1].count),
+                (layout.width * layout.height - laid) / 1e6,
+                static_cast<unsigned long long>(terrace.report.seed));
+  } catch (const curdle::InputError& e) {
+    std::fprintf(stderr, "terrace: %s\n", e.what());
+    return 2;
+  }
+  return 0;
 }

@@ -177,6 +177,9 @@ py::dict layout_facts(const app::GeneratedRun& g) {
   facts["width_mm"] = l.width;
   facts["height_mm"] = l.height;
   facts["thickness_mm"] = l.thickness;
+  facts["upright"] = l.kind->upright();  // a wall: y runs up, thickness into the wall
+  facts["dimension"] = l.kind->dimension();
+  facts["level_height_mm"] = l.level_height;
   facts["columns"] = l.columns;
   facts["rows"] = l.rows;
   facts["elements"] = l.elements.size();
