@@ -19,11 +19,16 @@ struct PreviewImage {
 // The PNG file's bytes; `dpi` > 0 records the resolution so that it prints at size.
 std::string encode_png(const PreviewImage& image, double dpi = 0);
 
-// An image's luminance (Rec. 709), row-major, top row first, from 0 (black) to 1 (white).
+// An image's luminance (Rec. 709), row-major, top row first, from 0 (black) to 1 (white). A
+// colour picture of at most kMostFlatColours colours (a preview, a drawing) also keeps them:
+// each pixel's index into `palette` (0xRRGGBB), so that colours of one luminance stay apart.
 struct LuminanceImage {
   int width = 0, height = 0;
   std::vector<float> luminance;
+  std::vector<uint8_t> colour;    // per pixel; empty: grey, or too many colours
+  std::vector<uint32_t> palette;  // the colours `colour` indexes
 };
+inline constexpr size_t kMostFlatColours = 16;
 // Throws std::runtime_error with OpenImageIO's message when the file cannot be read.
 LuminanceImage read_luminance(const std::filesystem::path& path);
 

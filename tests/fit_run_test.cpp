@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
+#include "curdle/curdling.h"
 #include "curdle/error.h"
 #include "picture_support.h"
 
@@ -44,6 +46,8 @@ TEST(FitRun, OptionsProbabilitiesAndTheRecipeWritten) {
                                       return (x / 4 + y / 4) % 2 ? 255 : 0;
                                     }));
   request.stages = 3;
+  EXPECT_EQ(run_fit(request).size[0], 2);  // its cells are found to be 4 x 4 pixels
+  request.cell_pixels = 1;                 // a pixel a cell, as asked
   const FittedRecipe fitted = run_fit(request);
   EXPECT_EQ(fitted.size[0], 8);
   const std::string where = write_fitted_recipe(fitted, (dir / "out" / "fitted.toml").string());
@@ -59,6 +63,59 @@ TEST(FitRun, OptionsProbabilitiesAndTheRecipeWritten) {
   const FittedRecipe safe = run_fit(crafted);
   EXPECT_EQ(safe.toml.find("\nbase = 3"), std::string::npos) << safe.toml;
   EXPECT_NE(safe.toml.find("\nbase = 2\n"), std::string::npos) << safe.toml;
+  std::filesystem::remove_all(dir);
+}
+
+// Pictures no curd explains get a warning naming the stages that fail and which way, in the
+// result and in the recipe's text; blank and full pictures are refused; a curd passes.
+TEST(FitRun, PicturesThatAreNotCurdsAreSaidSo) {
+  const auto dir = test::scratch("fit-run-not-curds");
+  auto fit = [&](const std::string& name, const std::function<uint8_t(int, int)>& grey) {
+    FitRequest r;
+    r.source = test::write_file(dir / (name + ".png"), test::grey_png(64, 64, grey)).string();
+    r.stages = 6;
+    return run_fit(r);
+  };
+  const std::vector<std::pair<std::string, std::function<uint8_t(int, int)>>> not_curds{
+      {"gradient", [](int x, int y) { return static_cast<uint8_t>(2 * x + y); }},
+      {"disk",
+       [](int x, int y) { return (x - 30) * (x - 30) + (y - 34) * (y - 34) < 400 ? 0 : 255; }},
+      {"checkerboard", [](int x, int y) { return (x + y) % 2 ? 255 : 0; }},
+      {"stripes", [](int x, int) { return x % 4 < 2 ? 0 : 255; }},
+  };
+  for (const auto& [name, grey] : not_curds) {
+    const FittedRecipe f = fit(name, grey);
+    ASSERT_EQ(f.warnings.size(), 1u) << name;
+    EXPECT_NE(f.warnings[0].find("no curd at these stages explains"), std::string::npos)
+        << name << ": " << f.warnings[0];
+    EXPECT_NE(f.warnings[0].find("at stage "), std::string::npos) << f.warnings[0];
+    EXPECT_NE(f.toml.find("# WARNING: no curd"), std::string::npos) << name;
+  }
+  EXPECT_NE(fit("checkerboard", not_curds[2].second).warnings[0].find("more evenly"),
+            std::string::npos);
+  EXPECT_NE(fit("disk", not_curds[1].second).warnings[0].find("more unevenly"), std::string::npos);
+  const FittedRecipe dot = fit("dot", [](int x, int y) { return x == 9 && y == 50 ? 0 : 255; });
+  ASSERT_EQ(dot.warnings.size(), 1u);
+  EXPECT_NE(dot.warnings[0].find("too few cells"), std::string::npos) << dot.warnings[0];
+  for (const uint8_t grey : {uint8_t{255}, uint8_t{0}}) {
+    try {
+      fit(grey ? "white" : "black", [grey](int, int) { return grey; });
+      ADD_FAILURE() << "a blank picture was fitted";
+    } catch (const InputError& e) {
+      EXPECT_NE(e.message().find("one shade in every pixel"), std::string::npos)
+          << int{grey} << ": " << e.what();
+    }
+  }
+  // A curd made by the engine passes.
+  Design d;
+  d.lattice = Lattice{2, 2, 6, Mode::canonical};
+  d.curds = {CurdSpec{"c", std::vector<Probability>(6, *Probability::parse("0.75"))}};
+  d.field = Box{{0, 0, 0}, {64, 64, 1}};
+  const CurdField field = curdle(d, 3, d.field);
+  const FittedRecipe curd = fit("curd", [&](int x, int y) {
+    return field.value_at(Coord{x, 63 - y, 0}) ? 0 : 255;  // rows from the top
+  });
+  EXPECT_TRUE(curd.warnings.empty()) << curd.warnings[0];
   std::filesystem::remove_all(dir);
 }
 

@@ -17,15 +17,16 @@ TEST(PictureStudy, UploadNamesAreSafeAndPicturesAreFittedInCells) {
   EXPECT_LE(upload_name(std::string(300, 'a')).size(), 64u);
 
   PictureStudyRequest request;
-  // A 16 x 16 picture whose left half is dark: every box of the left half is occupied.
-  request.bytes = test::grey_png(16, 16, [](int x, int) { return x < 8 ? 0 : 255; });
+  // A 16 x 16 picture whose left half is dark, its edge staggered so that it is not cells of
+  // several pixels: 8 dark pixels in even rows, 7 in odd ones.
+  request.bytes = test::grey_png(16, 16, [](int x, int y) { return x + y % 2 < 8 ? 0 : 255; });
   request.name = "half.png";
   request.base = 2, request.stages = 4, request.curds = 1;
   const PictureStudy study = study_picture(request);
   EXPECT_EQ(study.fitted.lattice.stages, 4);
   ASSERT_EQ(study.fitted.curds.size(), 1u);
-  ASSERT_EQ(study.fitted.curds[0].stages.size(), 4u);
-  EXPECT_EQ(study.fitted.curds[0].stages.back().measured, 128u);
+  ASSERT_EQ(study.fitted.curds[0].fit.stages.size(), 4u);
+  EXPECT_EQ(study.fitted.curds[0].fit.stages.back().measured, 120u);
   EXPECT_NE(study.fitted.toml.find("[lattice]"), std::string::npos);
   request.bytes = "not a picture";
   EXPECT_THROW(study_picture(request), InputError);

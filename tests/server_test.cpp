@@ -415,7 +415,8 @@ TEST_F(ServerTest, MeasureTakesAPictureAndFitsTheRecipeTheCommandLineFits) {
   EXPECT_EQ(j["fit"]["recipe_toml"], app::run_fit(fit).toml);
   ASSERT_EQ(j["fit"]["curds"].size(), 1u);
   EXPECT_EQ(j["fit"]["curds"][0]["probabilities"].size(), 5u);
-  EXPECT_EQ(j["fit"]["field"], json::array({240, 120}));
+  // The mask is drawn in cells of 2 x 2 pixels: fitted in cells, as `curdle fit` fits it.
+  EXPECT_EQ(j["fit"]["field"], json::array({120, 60}));
 
   // Without options, the served recipe's base and stages (fig. 8: base 4, 3 stages).
   auto plain = client.Post("/api/measure", bytes, "image/png");

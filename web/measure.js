@@ -117,7 +117,7 @@ function renderMeasure() {
   for (const c of fit.curds)
     for (const s of c.stages)
       fits += `<tr><td>${escapeHtml(c.name)}</td><td>${s.stage}</td><td>${s.measured}</td><td>${fmt(s.expected, 1)}</td>` +
-        `<td>${fmt(s.probability, 4)}</td><td>${fmt(Math.max(0, s.probability - 1.96 * s.sd), 3)} to ${fmt(Math.min(1, s.probability + 1.96 * s.sd), 3)}</td></tr>`;
+        `<td>${fmt(s.probability, 4)}</td><td>${fmt(s.low, 3)} to ${fmt(s.high, 3)}</td></tr>`;
   $("measure-fit").innerHTML = fits;
   if (measured.url) URL.revokeObjectURL(measured.url);
   measured.url = URL.createObjectURL(new Blob([fit.recipe_toml], { type: "application/toml" }));

@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include "app/measure_run.h"
+#include "app/picture_cells.h"
 #include "app/run.h"
 #include "curdle/error.h"
 #include "curdle/measure.h"
@@ -17,6 +19,8 @@ namespace curdle::app {
 namespace {
 constexpr uint64_t kMaxCells = uint64_t{1} << 26;  // a cells.csv's, as many as a picture's
 constexpr uint64_t kMaxCsvBytes = uint64_t{2} << 30;
+// Below this chance of a statistic as large under the fitted curd, no curd explains it.
+constexpr double kExplained = 1e-3;
 
 // A TOML basic string: quotes, backslashes and control characters escaped, so that no name
 // (a curd's, from a cells.csv) can end the string and write keys of its own.
@@ -49,15 +53,22 @@ std::string recipe_text(const FittedRecipe& f, const std::string& source) {
   for (int d = 0; d < f.lattice.dimension; ++d)
     cells += (d ? ", " : "") + std::to_string(f.size[static_cast<size_t>(d)]);
   std::string t = fmt::format(
-      "# Fitted by `curdle fit` to {}: per-stage probabilities whose expected box counts, with\n"
-      "# extinction, match the picture's occupied cells at every stage.\n"
+      "# Fitted by `curdle fit` to {}: per-stage probabilities under which each stage's\n"
+      "# occupied cells branch, from the stage before, as the picture's do (extinction and the\n"
+      "# survival of every occupied cell included).\n",
+      comment_text(source));
+  if (f.pixels_per_cell > 1)
+    t += fmt::format("# The picture's cells are {0} x {0} pixels: fitted in cells.\n",
+                     f.pixels_per_cell);
+  if (f.by_colour) t += "# Curds told apart by the picture's colours.\n";
+  for (const std::string& w : f.warnings) t += "# WARNING: " + comment_text(w) + "\n";
+  t += fmt::format(
       "name = {}\nseed = 1\n\n[lattice]\nbase = {}\ndimension = {}\nstages = {}\n"
       "mode = \"canonical\"\n\n[field]\ncells = [{}]\n",
-      comment_text(source), toml_quoted(f.name), f.lattice.base, f.lattice.dimension,
-      f.lattice.stages, cells);
+      toml_quoted(f.name), f.lattice.base, f.lattice.dimension, f.lattice.stages, cells);
   for (const FittedCurd& c : f.curds) {
     std::string p;
-    for (const StageFit& s : c.stages)
+    for (const StageFit& s : c.fit.stages)
       p += (p.empty() ? "" : ", ") + probability_text(s.probability);
     t += fmt::format("\n[[curds]]\nname = {}\nprobabilities = [{}]\n", toml_quoted(c.name), p);
     if (!c.colour.empty()) t += fmt::format("colour = {}\n", toml_quoted(c.colour));
@@ -65,9 +76,59 @@ std::string recipe_text(const FittedRecipe& f, const std::string& source) {
   return t;
 }
 
+// What the test says of a curd: a warning when no curd at these stages explains it, naming
+// the stages that fail and which way, or when it has too few cells to tell.
+std::vector<std::string> warnings_of(const FittedCurd& c) {
+  const CurdFit& fit = c.fit;
+  if (fit.degrees == 0)
+    return {
+        fmt::format("curd '{}' has too few cells ({} at the last stage) to test whether a "
+                    "curd explains it; its probabilities are a guess",
+                    c.name, fit.stages.back().measured)};
+  if (fit.p_value >= kExplained) return {};
+  std::string even, uneven;
+  for (const StageFit& s : fit.stages) {
+    if (s.degrees == 0 || s.p_value >= kExplained) continue;
+    std::string& list = s.dispersion < 0 ? even : uneven;
+    list += (list.empty() ? "" : ", ") + std::to_string(s.stage);
+  }
+  std::string how;
+  if (!even.empty())
+    how += "at stage " + even +
+           " its cells branch more evenly than any curd's (too regular: stripes, a grid, a "
+           "checkerboard)";
+  if (!uneven.empty())
+    how += (how.empty() ? "at stage " : "; at stage ") + uneven +
+           " more unevenly (too clustered: a gradient, a disk, a photograph)";
+  if (how.empty()) how = "no single stage fails alone, but together they do";
+  return {
+      fmt::format("no curd at these stages explains curd '{}' (chi-square {:.1f} on {} "
+                  "degrees of freedom, p = {:.2g}): {}",
+                  c.name, fit.chi_square, fit.degrees, fit.p_value, how)};
+}
+
+// A curd with no cell, or with every cell, has nothing to fit: refused, saying which.
+void check_figure(const std::vector<bool>& cells, const std::string& curd,
+                  const std::string& source) {
+  const auto n = static_cast<size_t>(std::count(cells.begin(), cells.end(), true));
+  const std::string what = curd == "figure" ? "the picture" : "curd '" + curd + "'";
+  if (n == 0)
+    throw InputError(parameter("source"),
+                     what + " in " + comment_text(source) +
+                         " has no cell of figure (a blank picture, or a threshold that keeps "
+                         "none): there is nothing to fit");
+  if (n == cells.size())
+    throw InputError(parameter("source"),
+                     what + " in " + comment_text(source) +
+                         " is figure in every cell (p = 1 at every stage): there is nothing to "
+                         "fit; a picture needs figure and ground");
+}
+
 // The recipe's text, checked: it must read back as written (a fitted recipe curdle refuses is
 // a bug here).
 FittedRecipe finish(FittedRecipe f, const std::string& source) {
+  for (const FittedCurd& c : f.curds)
+    for (std::string& w : warnings_of(c)) f.warnings.push_back(std::move(w));
   f.toml = recipe_text(f, std::filesystem::path(source).filename().string());
   RunRequest check;
   check.recipe_text = f.toml;
@@ -96,6 +157,10 @@ void check_fit_options(const FitRequest& r) {
     throw InputError(parameter("curds"),
                      "must be from 1 to 4 (the picture is quantised to 2^n values), not " +
                          std::to_string(r.curds));
+  if (r.cell_pixels < 0 || r.cell_pixels > 4096)
+    throw InputError(
+        parameter("cell_pixels"),
+        "must be from 1 to 4096 pixels, or 0 to find it, not " + std::to_string(r.cell_pixels));
   check_fit_lattice(Lattice{r.base, 2, r.stages, Mode::canonical});
 }
 
@@ -123,12 +188,13 @@ FittedRecipe run_fit(const FitRequest& r) {
     f.lattice = Lattice{r.base, table.dimension, r.stages, Mode::canonical};
     check_fit_lattice(f.lattice);  // the file's dimension is known only now
     f.size = table.box.size;
-    const Box field{{0, 0, 0}, table.box.size};
+    // The file's cells keep their place on the lattice: a window's boxes align to the lattice
+    // origin, as the report counts them.
     for (size_t c = 0; c < table.curds.size(); ++c) {
       FittedCurd curd;
       curd.name = table.curds[c];
-      curd.stages =
-          fit_probabilities(f.lattice, field, occupied_cells(f.lattice, field, table.cells[c]));
+      check_figure(table.cells[c], curd.name, r.source);
+      curd.fit = fit_curd(f.lattice, table.box, table.cells[c]);
       f.curds.push_back(std::move(curd));
     }
     return finish(f, r.source);
@@ -141,11 +207,20 @@ FittedRecipe fit_picture(const LuminanceImage& image, const FitRequest& r) {
   FittedRecipe f;
   f.name = fitted_name(r.source);
   f.lattice = Lattice{r.base, 2, r.stages, Mode::canonical};
-  f.size = {image.width, image.height, 1};
-  const int64_t width = image.width, height = image.height;
-  std::vector<double> levels;
-  const int values = 1 << r.curds;
-  const ValueGrid grid = quantise(image.width, image.height, image.luminance, values, levels);
+  // One shade everywhere (blank white, all black): no figure and ground to tell apart.
+  const auto [darkest, lightest] =
+      std::minmax_element(image.luminance.begin(), image.luminance.end());
+  if (darkest == image.luminance.end() || *darkest == *lightest)
+    throw InputError(parameter("source"),
+                     comment_text(r.source) +
+                         " is one shade in every pixel: no figure to fit (a picture needs "
+                         "figure and ground)");
+  // A preview draws each cell as k x k pixels: fitted in cells, not pixels.
+  const PictureCells picture = picture_cells(image, r.curds, r.cell_pixels);
+  f.pixels_per_cell = picture.pixels_per_cell;
+  f.by_colour = picture.by_colour;
+  const int64_t width = picture.width, height = picture.height;
+  f.size = {width, height, 1};
   const Box field{{0, 0, 0}, f.size};
   for (int c = 0; c < r.curds; ++c) {
     // Cells with the curd's bit, y up from the picture's bottom row.
@@ -153,11 +228,12 @@ FittedRecipe fit_picture(const LuminanceImage& image, const FitRequest& r) {
     for (int64_t y = 0; y < height; ++y)
       for (int64_t x = 0; x < width; ++x)
         cells[static_cast<size_t>(y * width + x)] =
-            grid.values[static_cast<size_t>((height - 1 - y) * width + x)] >> c & 1;
+            picture.values[static_cast<size_t>((height - 1 - y) * width + x)] >> c & 1;
     FittedCurd curd;
     curd.name = r.curds == 1 ? "figure" : "curd-" + std::to_string(c + 1);
-    curd.colour = level_colour(levels[static_cast<size_t>(1) << c]);
-    curd.stages = fit_probabilities(f.lattice, field, occupied_cells(f.lattice, field, cells));
+    curd.colour = picture.curd_colours[static_cast<size_t>(c)];
+    check_figure(cells, curd.name, r.source);
+    curd.fit = fit_curd(f.lattice, field, cells);
     f.curds.push_back(std::move(curd));
   }
   return finish(f, r.source);

@@ -19,21 +19,27 @@ struct FitRequest {
   int base = 2;
   int stages = 0;
   int curds = 1;
+  int cell_pixels = 0;      // a picture's cells are this many pixels a side; 0: found from it
   uint64_t max_memory = 0;  // bytes; 0: default_memory_limit()
 };
 
 struct FittedCurd {
   std::string name;
   std::string colour;  // "#rrggbb": the grey of the value holding only this curd; empty: none
-  std::vector<StageFit> stages;
+  CurdFit fit;         // per stage: probability, interval, counts and the test
 };
 
 struct FittedRecipe {
   std::string name;  // of the source, for the recipe
   Lattice lattice;
-  std::array<int64_t, 3> size{1, 1, 1};  // the field in cells: a cell a pixel
+  std::array<int64_t, 3> size{1, 1, 1};  // the field in cells
+  int pixels_per_cell = 1;               // a picture's cells, in pixels a side
+  bool by_colour = false;                // its curds told apart by its colours
   std::vector<FittedCurd> curds;
   std::string toml;  // the recipe, checked by reading it back
+  // What the fit cannot vouch for: a curd no curd at these stages explains (naming the stages
+  // that fail and which way), or too few cells to tell. Also written into the recipe's text.
+  std::vector<std::string> warnings;
 };
 
 // A fitted probability as the recipe writes it ("0.6124").

@@ -172,18 +172,25 @@ ordered_json picture_study_json(const PictureStudy& study) {
   ordered_json curds = ordered_json::array();
   for (const FittedCurd& curd : f.curds) {
     ordered_json probabilities = ordered_json::array(), stages = ordered_json::array();
-    for (const StageFit& s : curd.stages) {
+    for (const StageFit& s : curd.fit.stages) {
       probabilities.push_back(probability_text(s.probability));
       stages.push_back({{"stage", s.stage},
                         {"measured", s.measured},
                         {"expected", s.expected},
+                        {"expected_sd", s.expected_sd},
+                        {"z", s.z},
                         {"probability", s.probability},
-                        {"sd", s.sd}});
+                        {"low", s.low},
+                        {"high", s.high},
+                        {"p_value", s.p_value}});
     }
     curds.push_back({{"name", curd.name},
                      {"colour", curd.colour},
                      {"probabilities", probabilities},
-                     {"stages", stages}});
+                     {"stages", stages},
+                     {"chi_square", curd.fit.chi_square},
+                     {"degrees", curd.fit.degrees},
+                     {"p_value", curd.fit.p_value}});
   }
   ordered_json j;
   j["measure"] = measure_to_json(study.measured);
@@ -195,6 +202,7 @@ ordered_json picture_study_json(const PictureStudy& study) {
                 {"mode", std::string(to_string(f.lattice.mode))}}},
               {"field", {f.size[0], f.size[1]}},
               {"curds", curds},
+              {"warnings", f.warnings},
               {"recipe_toml", f.toml}};
   return j;
 }

@@ -12,6 +12,7 @@ struct FitOptions {
   int base = 2;
   int stages = 0;
   int curds = 1;
+  int cell_pixels = 0;
   std::string out;
   std::string max_memory;
 };

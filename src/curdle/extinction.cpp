@@ -10,9 +10,8 @@
 namespace curdle {
 namespace {
 
-// The part of a cell inside the view along one axis, in finest cells from the cell's start.
-using Span = std::pair<int64_t, int64_t>;
-using Shape = std::array<Span, 3>;  // per axis; unused axes hold {0, 1}
+using Span = CellSpan;
+using Shape = CellShape;
 
 // Exact mode's cells cut by the view take the hypergeometric sum up to this many children
 // (B^2 terms); above it, sampling with replacement, which differs by O(1/B).
@@ -90,49 +89,40 @@ double hypergeometric_product(const std::vector<std::pair<double, uint64_t>>& gr
   return sum;
 }
 
-class Extinction {
- public:
-  Extinction(const Lattice& l, const std::vector<Probability>& p) : l_(l), p_(p) {}
-
-  // The chance that a surviving stage-k cell with this inside part leaves no finest survivor
-  // inside the view.
-  double operator()(int k, const Shape& shape) {
-    if (k == l_.stages) return 0.0;
-    const auto key = std::make_pair(k, shape);
-    if (const auto it = memo_.find(key); it != memo_.end()) return it->second;
-    const int64_t side = static_cast<int64_t>(l_.side_in_cells(k));
-    std::array<std::map<Span, uint64_t>, 3> axes;
-    for (int d = 0; d < l_.dimension; ++d) axes[d] = child_spans(shape[d], side, l_.base);
-    const double p = p_[static_cast<size_t>(k)].value();
-    std::vector<std::pair<double, uint64_t>> groups;
-    for (const auto& [child, n] : shapes(axes, l_.dimension))
-      groups.push_back({(*this)(k + 1, child), n});
-    double e = 1;
-    const uint64_t B = l_.children();
-    const auto m = static_cast<uint64_t>(std::llround(p * static_cast<double>(B)));
-    if (l_.mode == Mode::exact && groups.size() == 1 && groups[0].second == B) {
-      e = std::pow(groups[0].first, static_cast<double>(m));  // all m chosen children alike
-    } else if (l_.mode == Mode::exact && B <= kExactUpTo) {
-      e = hypergeometric_product(groups, B, m);
-    } else {  // canonical, quota, and exact cut cells of over kExactUpTo children (O(1/B) off)
-      for (const auto& [x, n] : groups) e *= std::pow(1 - p * (1 - x), static_cast<double>(n));
-    }
-    return memo_[key] = e;
-  }
-
- private:
-  const Lattice& l_;
-  const std::vector<Probability>& p_;
-  std::map<std::pair<int, Shape>, double> memo_;
-};
-
 }  // namespace
+
+ExtinctionChance::ExtinctionChance(const Lattice& l, std::vector<Probability> p)
+    : l_(l), p_(std::move(p)) {}
+
+double ExtinctionChance::operator()(int k, const CellShape& shape) {
+  if (k == l_.stages) return 0.0;
+  const auto key = std::make_pair(k, shape);
+  if (const auto it = memo_.find(key); it != memo_.end()) return it->second;
+  const int64_t side = static_cast<int64_t>(l_.side_in_cells(k));
+  std::array<std::map<Span, uint64_t>, 3> axes;
+  for (int d = 0; d < l_.dimension; ++d) axes[d] = child_spans(shape[d], side, l_.base);
+  const double p = p_[static_cast<size_t>(k)].value();
+  std::vector<std::pair<double, uint64_t>> groups;
+  for (const auto& [child, n] : shapes(axes, l_.dimension))
+    groups.push_back({(*this)(k + 1, child), n});
+  double e = 1;
+  const uint64_t B = l_.children();
+  const auto m = static_cast<uint64_t>(std::llround(p * static_cast<double>(B)));
+  if (l_.mode == Mode::exact && groups.size() == 1 && groups[0].second == B) {
+    e = std::pow(groups[0].first, static_cast<double>(m));  // all m chosen children alike
+  } else if (l_.mode == Mode::exact && B <= kExactUpTo) {
+    e = hypergeometric_product(groups, B, m);
+  } else {  // canonical, quota, and exact cut cells of over kExactUpTo children (O(1/B) off)
+    for (const auto& [x, n] : groups) e *= std::pow(1 - p * (1 - x), static_cast<double>(n));
+  }
+  return memo_[key] = e;
+}
 
 namespace {
 
 std::vector<double> expected_counts(const Lattice& l, const std::vector<Probability>& p,
                                     const Box& view, bool weighted) {
-  Extinction extinction(l, p);
+  ExtinctionChance extinction(l, p);
   std::vector<double> out;
   for (int k = 0; k <= l.stages; ++k) {
     const int64_t side = static_cast<int64_t>(l.side_in_cells(k));

@@ -15,6 +15,10 @@
 // P_k (1 - e_k(cell)).
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "curdle/box.h"
@@ -32,6 +36,25 @@ std::vector<double> expected_box_counts(const Lattice& lattice, const std::vecto
 std::vector<double> expected_share_weighted_box_counts(const Lattice& lattice,
                                                        const std::vector<Probability>& p,
                                                        const Box& view);
+
+// The part of a cell inside the view along one axis, in finest cells from the cell's start, and
+// along every axis (unused axes hold {0, 1}).
+using CellSpan = std::pair<int64_t, int64_t>;
+using CellShape = std::array<CellSpan, 3>;
+
+// e_k above for a surviving stage-k cell whose inside part is `shape`: the chance it leaves no
+// finest survivor inside the view, with p_(k+1)..p_K. Remembers what it worked out, so that
+// the cells of a stage (a few classes along the view's edges) cost one recursion.
+class ExtinctionChance {
+ public:
+  ExtinctionChance(const Lattice& lattice, std::vector<Probability> p);
+  double operator()(int stage, const CellShape& shape);
+
+ private:
+  Lattice l_;
+  std::vector<Probability> p_;
+  std::map<std::pair<int, CellShape>, double> memo_;
+};
 
 // Measured share-weighted box counts, levels 0..K, of a curd given as its finest cells over
 // `view` (x fastest, then y, then z; cells in lattice coordinates from view.origin).

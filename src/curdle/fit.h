@@ -1,13 +1,23 @@
-// Fitting a recipe to a measured design: each curd's per-stage probabilities from the occupied
-// cells of every stage, so that curdling with them gives designs with the same statistics.
+// Fitting a recipe to a measured design: each curd's per-stage probabilities from how its
+// occupied cells branch from stage to stage, with intervals, and a test of whether a curd
+// explains the design at all.
 //
-// N_k, the stage-k cells of the lattice (cells of side b^(K-k), from the lattice corner) that
-// hold a cell of the curd, is exactly the box count the report gives, and its expectation at K
-// stages with extinction is extinction.h's. The fit finds p_1..p_K whose expected counts equal
-// the measured ones: it starts from the ratios N_k / (N_(k-1) C_k / C_(k-1)) (C_k the stage-k
-// cells meeting the field) and corrects each p_k by how far the expectations of stages k and
-// k - 1 miss, until they agree. The standard deviation of each p_k is the binomial one of the
-// ratio, sqrt(p (1 - p) / n) with n = N_(k-1) C_k / C_(k-1) candidates.
+// N_k, the stage-k cells (side b^(K-k), aligned to the lattice origin) that hold a cell of the
+// curd, is the box count the report gives. In a curd the occupied children of an occupied
+// stage-(k-1) cell are independent: a child survives with p_k and then keeps a final survivor
+// inside the view with q (extinction.h; less for children the view cuts), and the parent is
+// occupied because at least one child is. So the counts form a chain, and each stage's
+// likelihood given the stage before has p_k as its only unknown once the later stages are fitted:
+// p_k is fitted from stage K down, as the maximum of that likelihood, and its interval is where
+// the likelihood ratio stays inside the 95 % chi-square point (the conditioning on survival and
+// extinction included, never of zero width). The fit matches each stage's count given the
+// stage before, not the expected counts from the roots: those are given beside the measured
+// ones with a standardised difference.
+//
+// The test: the number of occupied children of each occupied cell, stage by stage, against the
+// distribution the fitted curd gives (Pearson's chi-square, bins merged to at least 1 expected).
+// A gradient, a disk, stripes or a checkerboard branch far too evenly or too unevenly for any
+// curd.
 #pragma once
 
 #include <cstdint>
@@ -15,25 +25,40 @@
 
 #include "curdle/box.h"
 #include "curdle/lattice.h"
-#include "curdle/probability.h"
 
 namespace curdle {
 
-// N_k, k = 0..K, of a curd given as its finest cells over `field` (x fastest, then y, then z;
-// field.origin is ignored: the field starts at the lattice corner).
-std::vector<uint64_t> occupied_cells(const Lattice& lattice, const Box& field,
+// N_k, k = 0..K, of a curd given as its finest cells over `view` (x fastest, then y, then z;
+// cells in lattice coordinates from view.origin, boxes aligned to the lattice origin).
+std::vector<uint64_t> occupied_cells(const Lattice& lattice, const Box& view,
                                      const std::vector<bool>& cells);
 
 struct StageFit {
   int stage = 0;
   double probability = 0;
-  double sd = 0;          // of the probability
-  uint64_t measured = 0;  // N_k
-  double expected = 0;    // its expectation with the fitted probabilities
+  double low = 0, high = 1;  // 95 % likelihood-ratio interval of the probability
+  uint64_t measured = 0;     // N_k
+  uint64_t parents = 0;      // N_(k-1), the occupied cells whose children are counted
+  // E[N_k] and its standard deviation from the N_0 occupied roots with the fitted
+  // probabilities, and (measured - expected) / sd.
+  double expected = 0, expected_sd = 0, z = 0;
+  // Occupied children per occupied parent against the fitted curd: Pearson's statistic, its
+  // degrees of freedom (0: too few cells to test) and the chance of one as large; dispersion
+  // says which way they differ: -1 more evenly than a curd branches, +1 more unevenly.
+  double chi_square = 0;
+  int degrees = 0;
+  double p_value = 1;
+  int dispersion = 0;
 };
 
-// The probabilities whose expected counts match `measured` (N_0..N_K) over `field`.
-std::vector<StageFit> fit_probabilities(const Lattice& lattice, const Box& field,
-                                        const std::vector<uint64_t>& measured);
+struct CurdFit {
+  std::vector<StageFit> stages;  // 1..K
+  double chi_square = 0;         // summed over the stages
+  int degrees = 0;
+  double p_value = 1;
+};
+
+// The probabilities of the curd whose finest cells are `cells` over `view`, with the test.
+CurdFit fit_curd(const Lattice& lattice, const Box& view, const std::vector<bool>& cells);
 
 }  // namespace curdle

@@ -100,8 +100,13 @@ Measurement measure(const ValueGrid& grid, int count, int base) {
     vm.count = counts[static_cast<size_t>(v)];
     vm.share = pixels > 0 ? static_cast<double>(vm.count) / pixels : 0;
     vm.most_common = static_cast<size_t>(v) == ground;
+    // Rows from the bottom: boxes align at the bottom-left corner, as fit and the report count
+    // a curd (y up), so that the three give the same counts for one picture.
     std::vector<bool> inside(grid.values.size());
-    for (size_t i = 0; i < grid.values.size(); ++i) inside[i] = grid.values[i] == v;
+    for (int64_t y = 0; y < grid.height; ++y)
+      for (int64_t x = 0; x < grid.width; ++x)
+        inside[static_cast<size_t>(y * grid.width + x)] =
+            grid.values[static_cast<size_t>((grid.height - 1 - y) * grid.width + x)] == v;
     vm.lacunarity = segments.lacunarity(vm.value, whole, m.lacunarity_box);
     if (!vm.most_common) {
       vm.counts = count_boxes(grid.width, grid.height, inside, base, vm.sizes);

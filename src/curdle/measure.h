@@ -3,10 +3,11 @@
 // and its box-counting dimension, so that a new design can share its rhythm.
 //
 // Boxes of side s = base^j pixels (j = 0, 1, ... while s fits the shorter side) are aligned at
-// the picture's top-left corner; a box counts when any pixel of the value lies in it (boxes cut
-// by the right or bottom edge included). The dimension is the least-squares slope of log N(s)
-// against log(1/s) (Falconer 2003, sec. 3.1). For a Sierpinski carpet 3^k pixels wide measured
-// with base 3, N(3^j) = 8^(k-j) exactly and the slope is log 8 / log 3.
+// the picture's bottom-left corner, as `fit` and the report count a curd (y up); a box counts
+// when any pixel of the value lies in it (boxes cut by the right or top edge included). The
+// dimension is the least-squares slope of log N(s) against log(1/s) (Falconer 2003, sec. 3.1). For
+// a Sierpinski carpet 3^k pixels wide measured with base 3, N(3^j) = 8^(k-j) exactly and the slope
+// is log 8 / log 3.
 #pragma once
 
 #include <cstdint>

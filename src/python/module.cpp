@@ -254,10 +254,14 @@ std::string measure_json(const std::string& image, int values, std::optional<dou
       [&](InterruptWatch&) { return measure_to_json(app::run_measure(request)).dump(); });
 }
 
-py::dict fit_source(const std::string& source, int base, int stages, int curds,
+py::dict fit_source(const std::string& source, int base, int stages, int curds, int cell_pixels,
                     uint64_t max_memory) {
-  const app::FitRequest request{
-      .source = source, .base = base, .stages = stages, .curds = curds, .max_memory = max_memory};
+  const app::FitRequest request{.source = source,
+                                .base = base,
+                                .stages = stages,
+                                .curds = curds,
+                                .cell_pixels = cell_pixels,
+                                .max_memory = max_memory};
   const app::FittedRecipe f =
       run_interruptible([&](InterruptWatch&) { return app::run_fit(request); });
   py::dict out;
@@ -269,14 +273,19 @@ py::dict fit_source(const std::string& source, int base, int stages, int curds,
   py::list fitted;
   for (const app::FittedCurd& c : f.curds) {
     py::list stages_out;
-    for (const StageFit& s : c.stages)
+    for (const StageFit& s : c.fit.stages)
       stages_out.append(py::dict(py::arg("stage") = s.stage, py::arg("probability") = s.probability,
-                                 py::arg("sd") = s.sd, py::arg("measured") = s.measured,
-                                 py::arg("expected") = s.expected));
+                                 py::arg("low") = s.low, py::arg("high") = s.high,
+                                 py::arg("measured") = s.measured, py::arg("expected") = s.expected,
+                                 py::arg("expected_sd") = s.expected_sd, py::arg("z") = s.z,
+                                 py::arg("p_value") = s.p_value));
     fitted.append(py::dict(py::arg("name") = c.name, py::arg("colour") = c.colour,
-                           py::arg("stages") = stages_out));
+                           py::arg("stages") = stages_out, py::arg("chi_square") = c.fit.chi_square,
+                           py::arg("degrees") = c.fit.degrees, py::arg("p_value") = c.fit.p_value));
   }
   out["curds"] = fitted;
+  out["warnings"] = f.warnings;
+  out["pixels_per_cell"] = f.pixels_per_cell;
   out["toml"] = f.toml;
   return out;
 }

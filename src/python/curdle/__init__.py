@@ -302,11 +302,13 @@ def measure(path, values=2, threshold=None, base=2, max_memory=0):
                                       int(max_memory)))
 
 
-def fit(source, base=2, stages=0, curds=1, max_memory=0):
+def fit(source, base=2, stages=0, curds=1, cell_pixels=0, max_memory=0):
     """A recipe fitted to a picture or a cells.csv, as `curdle fit` fits it: the lattice, each
-    curd's per-stage probability with its measured and expected counts, and the recipe's TOML
-    (Recipe.from_text(result["toml"]) runs it)."""
-    return _curdle.fit(os.fspath(source), int(base), int(stages), int(curds), int(max_memory))
+    curd's per-stage probability with its 95 % interval, measured and expected counts and the
+    test of its branching, the warnings, and the recipe's TOML (Recipe.from_text(result["toml"])
+    runs it). `cell_pixels`: a picture's cells in pixels a side (0: found)."""
+    return _curdle.fit(os.fspath(source), int(base), int(stages), int(curds), int(cell_pixels),
+                       int(max_memory))
 
 
 def outputs():
