@@ -10,6 +10,7 @@
 
 #include "curdle/curdling.h"
 #include "curdle/error.h"
+#include "export/cells_csv.h"
 #include "picture_support.h"
 
 namespace curdle::app {
@@ -63,6 +64,36 @@ TEST(FitRun, OptionsProbabilitiesAndTheRecipeWritten) {
   const FittedRecipe safe = run_fit(crafted);
   EXPECT_EQ(safe.toml.find("\nbase = 3"), std::string::npos) << safe.toml;
   EXPECT_NE(safe.toml.find("\nbase = 2\n"), std::string::npos) << safe.toml;
+  std::filesystem::remove_all(dir);
+}
+
+// A cells.csv of a window keeps its place on the lattice: fitted where the report counts it.
+// (Its origin dropped, the fit of p_8 = 0.7 was 0.33.)
+TEST(FitRun, AWindowsCellsAreFittedWhereTheyLie) {
+  Design d;
+  d.name = "window";
+  d.lattice = Lattice{2, 2, 8, Mode::canonical};
+  d.curds = {CurdSpec{"c", std::vector<Probability>(8, *Probability::parse("0.7"))}};
+  d.field = Box{{0, 0, 0}, {256, 256, 1}};
+  const Box window{{10, 13, 0}, {100, 77, 1}};
+  const auto dir = test::scratch("fit-run-window");
+  for (const uint64_t seed : {1u, 2u, 3u}) {
+    std::ostringstream csv;
+    write_cells_csv(csv, d, curdle(d, seed, window), window);
+    FitRequest r;
+    r.source = test::write_file(dir / "cells.csv", csv.str()).string();
+    r.stages = 8;
+    const FittedRecipe f = run_fit(r);
+    ASSERT_EQ(f.curds.size(), 1u);
+    const std::vector<StageFit>& stages = f.curds[0].fit.stages;
+    EXPECT_EQ(stages[0].low, 0.0);  // the window lies in one stage-1 cell: nothing to know
+    EXPECT_EQ(stages[0].high, 1.0);
+    for (size_t k = 1; k < stages.size(); ++k) {
+      const double se = (stages[k].high - stages[k].low) / 3.92;
+      EXPECT_NEAR(stages[k].probability, 0.7, 4 * se) << "seed " << seed << " stage " << k + 1;
+    }
+    EXPECT_TRUE(f.warnings.empty()) << f.warnings[0];
+  }
   std::filesystem::remove_all(dir);
 }
 
