@@ -29,6 +29,25 @@ double id_height(const Rect& b, const std::string& id) {
   return std::max(0.1, std::min(b.h * 0.4, b.w / (0.75 * static_cast<double>(id.size()) + 1)));
 }
 
+// What the file draws, for its header's extents: the outline (or the surface), openings, every
+// piece, and the caption under it (about 0.6 of its height a character). Blocks draw their plan
+// alone, so the surface's width (plan and elevation side by side) is not theirs.
+Rect drawn_extents(const Layout& layout, double caption_height, size_t caption_length) {
+  double x0 = 0, y0 = -2 * caption_height;
+  double x1 = 0.6 * caption_height * static_cast<double>(caption_length), y1 = 0;
+  auto add = [&](const Rect& r) {
+    x0 = std::min(x0, r.x), y0 = std::min(y0, r.y);
+    x1 = std::max(x1, r.right()), y1 = std::max(y1, r.top());
+  };
+  if (!layout.outline.empty())
+    for (const auto& p : layout.outline) add(Rect{p[0], p[1], 0, 0});
+  else if (layout.views.empty())
+    add(Rect{0, 0, layout.width, layout.height});
+  for (const Rect& o : layout.openings) add(o);
+  for (const Element& e : layout.elements) add(laid_bounds(e));
+  return Rect{x0, y0, x1 - x0, y1 - y0};
+}
+
 }  // namespace
 
 void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
@@ -41,13 +60,16 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
   }
   layers.push_back({"ID", Rgb{0, 0, 255}, false});
   layers.push_back({"TEXT", kInk, true});
-  const Rect extents{0, 0, layout.width, layout.height};
-  DxfDocument dxf(path, layers, extents);
+  const Rect surface{0, 0, layout.width, layout.height};
+  const double h = std::max(10.0, std::min(layout.width, layout.height) / 100);
+  const std::string caption = fmt::format("{} - seed {} - millimetres from the bottom-left corner",
+                                          layout.source.recipe, layout.source.seed);
+  DxfDocument dxf(path, layers, drawn_extents(layout, h, caption.size()));
 
   if (!layout.outline.empty())
     dxf.polygon("OUTLINE", layout.outline);
   else if (layout.views.empty())  // blocks are drawn as views, not a surface
-    dxf.rect("OUTLINE", extents);
+    dxf.rect("OUTLINE", surface);
   for (const Rect& o : layout.openings) dxf.rect("OPENINGS", o);
   for (const Element& e : layout.elements) {
     stop_point();
@@ -69,11 +91,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
     const Rect b = laid_bounds(e);
     dxf.text("ID", b.x + b.w / 2, b.y + b.h / 2, id_height(b, e.id), e.id, true);
   }
-  const double h = std::max(10.0, std::min(layout.width, layout.height) / 100);
-  dxf.text("TEXT", 0, -2 * h, h,
-           fmt::format("{} - seed {} - millimetres from the bottom-left corner",
-                       layout.source.recipe, layout.source.seed),
-           false);
+  dxf.text("TEXT", 0, -2 * h, h, caption, false);
   dxf.close();
 }
 

@@ -98,7 +98,7 @@ void append_row(std::string& buffer, const ScheduleRow& r, size_t curds) {
   fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{},{},{},{},{:.6f},{},{},{}",
                  r.id, r.lot, r.level ? std::to_string(*r.level) : "", r.row, r.column,
                  mm_text(r.x), mm_text(r.y), mm_text(r.z), mm_text(r.width), mm_text(r.height),
-                 optional_mm(r.depth), r.area / 1e6, optional_mm(r.stock_width),
+                 optional_mm(r.depth), area_m2(r.area), optional_mm(r.stock_width),
                  optional_mm(r.stock_height), r.value);
   for (size_t c = 0; c < curds; ++c) buffer += (r.value >> c & 1) ? ",1" : ",0";
   fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{},{},{},{}\r\n",
@@ -153,7 +153,9 @@ OrderKey order_key(const Layout& layout, const Element& e) {
 void add_to(OrderLine& l, const Element& e) {
   ++l.count;
   (e.cut ? l.cut : l.whole) += 1;
-  l.laid_area += e.area();
+  // schedule.csv prints each piece's area to the mm² (m² to 6 places): the sum of those, so that
+  // its column adds up to this one exactly.
+  l.laid_area += std::round(e.area());
   l.stock_area += stock_area(e);
   l.values[e.value] = true;
 }

@@ -14,6 +14,7 @@
 //                   blocks), in laying order.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <ostream>
@@ -49,6 +50,9 @@ struct ScheduleRow {
   std::optional<double> opening_x, opening_y, opening_diameter;
 };
 ScheduleRow schedule_row(const Layout& layout, size_t index);
+// A piece's area in m² as the schedules give it: to the mm², so that schedule.csv's rows add up
+// to quantities.csv's and lots.csv's laid areas exactly.
+inline double area_m2(double area_mm2) { return std::round(area_mm2) / 1e6; }
 
 void write_schedule_csv(std::ostream& out, const Layout& layout);
 void write_quantities_csv(std::ostream& out, const Layout& layout);

@@ -137,7 +137,7 @@ py::dict schedule_columns(const app::GeneratedRun& g) {
     put("width_mm", i, r.width);
     put("height_mm", i, r.height);
     put("depth_mm", i, r.depth);
-    put("area_m2", i, r.area / 1e6);
+    put("area_m2", i, area_m2(r.area));
     put("stock_width_mm", i, r.stock_width);
     put("stock_height_mm", i, r.stock_height);
     put("opening_x_mm", i, r.opening_x);

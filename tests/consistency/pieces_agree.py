@@ -59,6 +59,19 @@ def dxf_pieces(path, dx=0.0, dy=0.0):
         fail(f"{path}: DXF {doc.dxfversion}, not AutoCAD 2000 or later")
     if doc.header.get("$INSUNITS") != 4:
         fail(f"{path}: $INSUNITS is {doc.header.get('$INSUNITS')}, not 4 (millimetres)")
+    # The header's extents are the drawing's: what CAD zooms to fits what is drawn (geometry;
+    # text is measured by each program its own way, so within 3 % of the drawing's size).
+    if "$EXTMIN" in doc.header and dx == 0 and dy == 0:
+        from ezdxf import bbox
+        drawn = bbox.extents(e for e in doc.modelspace() if e.dxftype() != "TEXT")
+        lo, hi = doc.header["$EXTMIN"], doc.header["$EXTMAX"]
+        size = max(drawn.size.x, drawn.size.y)
+        if drawn.has_data and (lo[0] > drawn.extmin.x + 1e-6 or lo[1] > drawn.extmin.y + 1e-6 or
+                               hi[0] < drawn.extmax.x - 1e-6 or hi[1] < drawn.extmax.y - 1e-6 or
+                               hi[0] - lo[0] > drawn.size.x + 0.03 * size or
+                               hi[1] - lo[1] > drawn.size.y + 0.03 * size + 3 * size / 100):
+            fail(f"{path}: header extents {tuple(lo)[:2]} to {tuple(hi)[:2]}, but the drawing "
+                 f"spans {tuple(drawn.extmin)[:2]} to {tuple(drawn.extmax)[:2]}")
     layer = doc.layers.get("ID")
     if layer is None or layer.dxf.get("plot", 1) != 0:
         fail(f"{path}: the ID layer is missing or plots")
@@ -250,9 +263,22 @@ def check(curdle, recipe, out, corner):
                 fail(f"{where}: {eid} is {w} x {h}, its diameter {dia}")
         if row["shape_wkt"] and not row["shape_wkt"].startswith(("POLYGON ((", "MULTIPOLYGON (((")):
             fail(f"{where}: {eid} has shape_wkt {row['shape_wkt'][:40]}")
-    laid = sum(float(q["laid_area_m2"]) for q in read_csv(os.path.join(out, "quantities.csv")))
-    if abs(laid - area) > 1e-4 * max(1.0, area):
-        fail(f"{where}: the schedule's areas add up to {area:.6f} m2, the quantities' to {laid:.6f}")
+    # Exactly, per order line: the schedule's rows (to the mm²) sum to the line's laid area.
+    def micro(text):
+        return round(float(text) * 1e6)
+    by_line = {}
+    for row in rows:
+        key = (row["element_type"], row["material"], row["colour"])
+        by_line.setdefault(key, 0)
+        by_line[key] += micro(row["area_m2"])
+    lines = {}
+    for q in read_csv(os.path.join(out, "quantities.csv")):
+        key = (q["element_type"], q["material"], q["colour"])
+        lines[key] = lines.get(key, 0) + micro(q["laid_area_m2"])
+    if by_line != lines:
+        wrong = [k for k in set(by_line) | set(lines) if by_line.get(k) != lines.get(k)]
+        fail(f"{where}: the schedule's areas do not add up to the quantities' laid areas for "
+             f"{wrong[:3]}: {[by_line.get(k) for k in wrong[:3]]} vs {[lines.get(k) for k in wrong[:3]]} mm2")
     # Sheet DXFs are in millimetres from each sheet's corner; the schedule's lot names the sheet.
     if os.path.isdir(sheets):
         by_sheet = {}
