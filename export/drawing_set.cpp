@@ -115,6 +115,12 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
 struct SheetContents {
   size_t pieces = 0;
   int64_t row0 = INT64_MAX, row1 = INT64_MIN, column0 = INT64_MAX, column1 = INT64_MIN;
+  // The key: the elements whose centre the sheet shows, by what they are made of, as drawn.
+  struct KeyLine {
+    std::vector<Rgb> swatch;  // one colour, or keep mode's stripes
+    size_t count = 0;
+  };
+  std::map<std::pair<std::string, uint32_t>, KeyLine> key;  // by material, then value
 };
 
 // The plan and what every sheet reads from the whole layout, worked out once for the set.
@@ -135,7 +141,52 @@ InstallerSet installer_set(const Layout& layout, const InstallerPlan& plan) {
     c.row0 = std::min(c.row0, e.row), c.row1 = std::max(c.row1, e.row);
     c.column0 = std::min(c.column0, e.column), c.column1 = std::max(c.column1, e.column);
   }
+  for (const Element& e : layout.elements) {
+    const Rect b = laid_bounds(e);
+    const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
+    for (size_t i = 0; i < plan.sheets.size(); ++i) {
+      const Rect& w = plan.sheets[i].window;
+      if (cx < w.x || cx >= w.right() || cy < w.y || cy >= w.top()) continue;
+      SheetContents::KeyLine& line =
+          set.contents[i].key[{piece_material(layout, e), e.type.empty() ? e.value : 0}];
+      if (line.count++ == 0) {
+        const LegendEntry& l = layout.legend[e.value];
+        line.swatch = e.type.empty() && layout.combine == Combine::keep && l.parts.size() > 1
+                          ? l.parts
+                          : std::vector<Rgb>{piece_colour(layout, e)};
+      }
+      break;
+    }
+  }
   return set;
+}
+
+// The key of one installer's sheet: a swatch as drawn, the material and how many of it the
+// sheet holds, in columns of six lines from (x, y) within `width`.
+void draw_sheet_key(cairo_t* cr, const SheetContents& held, double x, double y, double width) {
+  text(cr, x, y, "key: on this sheet", 2, Align::left, false, true);
+  const size_t columns = std::max<size_t>(1, static_cast<size_t>(width / 60));
+  const double column_w = width / static_cast<double>(columns);
+  size_t shown = 0;
+  for (const auto& [what, line] : held.key) {
+    if (shown == 6 * columns) {
+      text(cr, x, y + 4.5 * 7, fmt::format("and {} more", held.key.size() - shown), 2);
+      break;
+    }
+    const double lx = x + column_w * static_cast<double>(shown / 6);
+    const double ly = y + 2.5 + 4.5 * static_cast<double>(shown % 6);
+    ++shown;
+    for (size_t i = 0; i < line.swatch.size(); ++i) {
+      colour(cr, line.swatch[i], kFaintAlpha);  // as the sheet draws the pieces
+      const double part = 6.0 / static_cast<double>(line.swatch.size());
+      cairo_rectangle(cr, lx + part * static_cast<double>(i), ly, part, 3);
+      cairo_fill(cr);
+    }
+    colour(cr, kInk);
+    box(cr, lx, ly, 6, 3, 0.2);
+    const std::string label = fmt::format("{}: {}", what.first, line.count);
+    text(cr, lx + 8, ly + 2.6, fit_lines(cr, {label}, column_w - 10, 1.8)[0], 1.8);
+  }
 }
 
 // Labels: inside their piece, or beside it on white with a leader; every leader first, so that
@@ -306,7 +357,11 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   const SheetContents& held = set.contents[index];
   const size_t pieces = held.pieces;
   colour(cr, kInk);
-  const double info_x = kx + kw + 8, info_w = w - kMargin - title_width(w) - 4 - info_x;
+  const double info_x = kx + kw + 8;
+  // The key takes the right part of the strip beside the title block, the notes the left.
+  const double room = w - kMargin - title_width(w) - 4 - info_x;
+  const double key_w = std::min(room * 0.45, 110.0), info_w = room - key_w - 6;
+  draw_sheet_key(cr, set.contents[index], info_x + info_w + 4, strip + 6, key_w);
   const std::string holds = pieces == 0 ? "no pieces"
                             : !layout.sheets.empty()
                                 ? fmt::format("{} sheet{}", pieces, pieces == 1 ? "" : "s")

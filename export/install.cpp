@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "curdle/text.h"
 #include "export/wkt.h"
@@ -16,6 +17,7 @@ namespace {
 std::string num(double v) { return mm_text(v); }
 
 constexpr double kRowStripMm = 14, kColumnStripMm = 8, kHeadingMm = 11;  // paper mm
+constexpr double kKeyMm = 80;  // the key's column beside the map, paper mm
 const char* const kRed = "#c92a2a";
 const char* const kBlue = "#1864ab";
 
@@ -201,6 +203,34 @@ void write_courses(std::ostream& out, const Layout& layout, const Rect& first, c
 
 }  // namespace
 
+// The key beside the map: what every piece is made of, its colour as drawn, and how many.
+void write_key(std::ostream& out, const Layout& layout, double x, double y, double s) {
+  struct Line {
+    Rgb colour;
+    size_t count = 0;
+  };
+  std::map<std::pair<std::string, uint32_t>, Line> lines;  // by material, then value
+  for (const Element& e : layout.elements) {
+    Line& l = lines[{piece_material(layout, e), e.type.empty() ? e.value : 0}];
+    if (l.count++ == 0) l.colour = piece_colour(layout, e);
+  }
+  const double cap = 2.5 / kCapHeightEm * s, row = 6 * s;
+  out << fmt::format(
+      "<g id=\"key\" font-size=\"{}\" fill=\"#222\"><text x=\"{}\" y=\"{}\" "
+      "font-weight=\"bold\">key</text>\n",
+      num(cap), num(x), num(y));
+  double at = y + row;
+  for (const auto& [what, line] : lines) {
+    out << fmt::format(
+        "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"rgb({},{},{})\" "
+        "stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\">{}: {}</text>\n",
+        num(x), num(at - 3.5 * s), num(8 * s), num(4 * s), line.colour.r, line.colour.g,
+        line.colour.b, num(0.2 * s), num(x + 10 * s), num(at), xml_escape(what.first), line.count);
+    at += row;
+  }
+  out << "</g>\n";
+}
+
 void write_install_svg(std::ostream& out, const Layout& layout, const InstallerPlan& plan) {
   const Provenance& title = layout.source;
   const double s = plan.scale, W = layout.width, H = layout.height;
@@ -208,7 +238,7 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
   const Rect& last = plan.sheets.back().window;
   // The sheets' grid, the row strip on its left, column numbers under it and a heading above.
   const Frame f{first.x - kRowStripMm * s, last.top() + kHeadingMm * s};
-  const double width = last.right() + 2 * s - f.left;
+  const double width = last.right() + (2 + kKeyMm) * s - f.left;
   const double height = f.top - (first.y - kColumnStripMm * s);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out << fmt::format(
@@ -235,6 +265,7 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
   if (plan.sheets.size() > 1) write_sheet_grid(out, plan, f, s);
   write_labels(out, plan, f, s);
   if (layout.kind->laid_in_courses()) write_courses(out, layout, first, f, s);
+  write_key(out, layout, f.x(last.right()) + 6 * s, 3.5 * s, s);
   out << "</svg>\n";
 }
 

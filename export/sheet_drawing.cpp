@@ -75,7 +75,7 @@ void box(cairo_t* cr, double x, double y, double w, double h, double line) {
 
 // The layout's pieces as vectors; `faint` washes the colours out so that labels read over them.
 void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
-  const double alpha = faint ? 0.35 : 1;
+  const double alpha = faint ? kFaintAlpha : 1;
   const Rect all{0, 0, layout.width, layout.height};
   const bool sheet = layout.kind->ground() == Ground::sheet;
   colour(cr,

@@ -44,6 +44,8 @@ struct View {
 };
 
 // The layout's pieces as vectors; `faint` washes the colours out so that labels read over them.
+// Installer's sheets draw pieces faint, so that IDs read on them; their keys show them so.
+inline constexpr double kFaintAlpha = 0.35;
 void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint);
 
 // A white ISO sheet with its frame (ISO 5457 margins) and the line above the title strip.

@@ -1,0 +1,44 @@
+"""Every installer's sheet of layout.pdf has a key naming what its pieces are made of: for each
+page, pdftotext's words hold the IDs labelled there, and each of those pieces' material (from
+schedule.csv) is named on that page, with the key's heading.
+
+Usage: drawing_keys.py CURDLE SOURCE_DIR PATTERN...
+"""
+
+import csv
+import io
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+curdle, source, patterns = sys.argv[1], Path(sys.argv[2]), sys.argv[3:]
+failures = []
+for pattern in patterns:
+    with tempfile.TemporaryDirectory() as tmp:
+        subprocess.run([curdle, "generate", str(source / pattern), "--out", tmp, "--outputs",
+                        "layout.pdf,schedule.csv"], check=True, stdout=subprocess.DEVNULL)
+        text = Path(tmp, "schedule.csv").read_text(encoding="utf-8-sig")
+        material = {r["element_id"]: r["material"]
+                    for r in csv.DictReader(io.StringIO(text, newline=""))}
+        pages = int(next(line.split()[-1] for line in subprocess.run(
+            ["pdfinfo", str(Path(tmp, "layout.pdf"))], capture_output=True, text=True,
+            check=True).stdout.splitlines() if line.startswith("Pages:")))
+        checked = 0
+        for page in range(2, pages + 1):
+            words = subprocess.run(["pdftotext", "-f", str(page), "-l", str(page), "-layout",
+                                    str(Path(tmp, "layout.pdf")), "-"], capture_output=True,
+                                   text=True, check=True).stdout
+            if "key: on this sheet" not in words:
+                failures.append(f"{pattern} sheet {page}: no key")
+                continue
+            flat = " ".join(words.split())
+            on_sheet = {material[w] for w in words.split() if w in material}
+            for m in on_sheet:
+                if m not in flat:
+                    failures.append(f"{pattern} sheet {page}: {m} is laid there, not in its key")
+            checked += len(on_sheet)
+        print(f"{pattern}: {pages - 1} installer's sheets, {checked} materials found in their keys")
+for f in failures[:20]:
+    print("FAIL:", f)
+sys.exit(1 if failures else 0)
