@@ -105,7 +105,9 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
     text(cr, x + 10, y + 3.4, fit_lines(cr, {line}, column_w - 12, 2)[0], 2);
   }
   scale_bar(cr, w - kMargin - title_width(w), strip - 6, s.scale, title_width(w) - 20);
-  title_block(cr, layout, w, h, "the whole layout", s.scale, 1, total, s.paper.name);
+  const std::string segment = segment_text(layout);
+  title_block(cr, layout, w, h, segment.empty() ? "the whole layout" : "a segment: " + segment,
+              s.scale, 1, total, s.paper.name);
 }
 
 // An installer's sheet: the part of the layout in its window with every ID, match lines, row

@@ -4,6 +4,20 @@
 
 namespace curdle {
 
+std::string segment_text(const Layout& layout) {
+  const Box& v = layout.view;
+  const Box& f = layout.source.field;
+  const int e = layout.source.lattice.dimension;
+  if (v == f || f.cells() <= 1) return "";
+  std::string at, size, whole;
+  for (int d = 0; d < e; ++d) {
+    at += (d ? "," : "") + std::to_string(v.origin[static_cast<size_t>(d)]);
+    size += (d ? "," : "") + std::to_string(v.size[static_cast<size_t>(d)]);
+    whole += (d ? " x " : "") + std::to_string(f.size[static_cast<size_t>(d)]);
+  }
+  return "window " + at + "," + size + " of the " + whole + " field";
+}
+
 std::vector<std::string> title_lines(const Layout& layout) {
   std::string probabilities;
   for (const CurdSpec& c : layout.source.curds) {
@@ -12,11 +26,13 @@ std::vector<std::string> title_lines(const Layout& layout) {
     probabilities += (probabilities.empty() ? "" : "; ") + c.name + " " + p;
     if (c.density) probabilities += " x " + describe(*c.density);
   }
+  const std::string segment = segment_text(layout);
   return {layout.source.recipe +
               (layout.source.description.empty() ? "" : " - " + layout.source.description),
-          fmt::format("seed {} - base {}, {}-D, {} stages, {} mode", layout.source.seed,
-                      layout.source.lattice.base, layout.source.lattice.dimension,
-                      layout.source.lattice.stages, to_string(layout.source.lattice.mode)),
+          fmt::format("seed {}{} - base {}, {}-D, {} stages, {} mode", layout.source.seed,
+                      segment.empty() ? "" : ", " + segment, layout.source.lattice.base,
+                      layout.source.lattice.dimension, layout.source.lattice.stages,
+                      to_string(layout.source.lattice.mode)),
           "probabilities: " + probabilities,
           layout.kind->size_line(layout),
           layout.kind->laying_line(layout),

@@ -13,6 +13,10 @@ namespace curdle {
 
 std::vector<std::string> title_lines(const Layout& layout);
 
+// "window 48,24,67,67 of the 512 x 512 field" when the layout lays a segment of its design's
+// field (the seed line says so); empty when it lays the whole field.
+std::string segment_text(const Layout& layout);
+
 // What a legend entry counts: "tile", "panel", "cell" (perforation, park), "bay", "voxel".
 std::string legend_unit(const Layout& layout);
 

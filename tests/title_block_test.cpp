@@ -26,6 +26,12 @@ TEST(TitleBlock, SaysWhatWasLaidFromWhatAndCountsInTheKindsUnit) {
   EXPECT_EQ(lines[3].rfind("1800 x 1200 mm: ", 0), 0u) << lines[3];
   EXPECT_NE(lines[3].find("paving tiles of 400 x 400 mm, joint 10 mm"), std::string::npos);
   EXPECT_EQ(lines[4], "origin bottom-left; half bond; element IDs count rows and columns from it");
+  EXPECT_EQ(segment_text(paving), "");  // the whole field
+  Layout segment = paving;
+  segment.source.field = Box{{0, 0, 0}, {64, 32, 1}};
+  segment.view = Box{{8, 4, 0}, {5, 3, 1}};
+  EXPECT_EQ(title_lines(segment)[1],
+            "seed 17, window 8,4,5,3 of the 64 x 32 field - base 2, 2-D, 2 stages, canonical mode");
   EXPECT_EQ(legend_count(paving, 1), "1 paving tile");
   EXPECT_EQ(legend_count(paving, 3), "3 paving tiles");
 

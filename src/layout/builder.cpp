@@ -291,6 +291,7 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
   layout.source.seed = field.seed;
   layout.source.lattice = design.lattice;
   layout.source.curds = design.curds;
+  layout.source.field = design.field;
   return layout;
 }
 

@@ -190,6 +190,7 @@ struct Provenance {
   uint64_t seed = 0;
   Lattice lattice;
   std::vector<CurdSpec> curds;
+  Box field;  // the design's, in cells: a layout whose view is less is a segment of it
 };
 
 // What an element is, so that writers draw it without asking its layout's kind.
