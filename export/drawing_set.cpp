@@ -61,6 +61,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   } else {
     draw_pieces(cr, layout, v, false);
   }
+  draw_zones(cr, layout, v, true);
   colour(cr, kInk);
   v.rect(cr, v.window);
   cairo_set_line_width(cr, 0.25);
@@ -334,6 +335,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   v.rect(cr, sheet.window);  // the window is the viewport, or less where it ends at a joint
   cairo_clip(cr);
   draw_pieces(cr, layout, v, true);
+  draw_zones(cr, layout, v, false);
   colour(cr, Rgb{85, 85, 85});
   cairo_set_line_width(cr, 0.1);
   for (const InstallerPiece& p : plan.pieces)

@@ -40,6 +40,26 @@ void font(cairo_t* cr, double height, bool bold) {
 
 }  // namespace
 
+void draw_zones(cairo_t* cr, const Layout& layout, const View& v, bool named) {
+  for (const ZoneCount& z : layout.zones) {
+    if (z.polygon.empty()) continue;
+    const bool value = z.rule == ZoneRule::value;
+    cairo_new_path(cr);
+    for (size_t i = 0; i < z.polygon.size(); ++i)
+      (i ? cairo_line_to : cairo_move_to)(cr, v.x(z.polygon[i][0]), v.y(z.polygon[i][1]));
+    cairo_close_path(cr);
+    colour(cr, value ? Rgb{34, 34, 34} : Rgb{68, 81, 92});
+    cairo_set_line_width(cr, 0.35);
+    const double dashes[] = {2.0, 1.2};
+    cairo_set_dash(cr, dashes, value ? 2 : 0, 0);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    if (named)
+      text(cr, v.x(z.polygon[0][0]) + 1.2, v.y(z.polygon[0][1]) - 1.2,
+           value ? fmt::format("{} (value {})", z.name, z.value) : z.name, 2);
+  }
+}
+
 void colour(cairo_t* cr, const Rgb& c, double alpha) {
   cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
 }

@@ -48,6 +48,11 @@ struct View {
 inline constexpr double kFaintAlpha = 0.35;
 void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint);
 
+// The layout's zones ([[layout.zones]]) as layout.svg draws them: outlined, value zones dashed,
+// and named (with their value) when `named`; installer's sheets draw the outlines alone, so that
+// no name lies on an ID.
+void draw_zones(cairo_t* cr, const Layout& layout, const View& v, bool named);
+
 // A white ISO sheet with its frame (ISO 5457 margins) and the line above the title strip.
 void frame(cairo_t* cr, double w, double h);
 

@@ -1,6 +1,7 @@
 """Every installer's sheet of layout.pdf has a key naming what its pieces are made of: for each
 page, pdftotext's words hold the IDs labelled there, and each of those pieces' material (from
-schedule.csv) is named on that page, with the key's heading.
+schedule.csv) is named on that page, with the key's heading. Sheet 1 names every zone of the
+recipe ([[layout.zones]]), drawn where it lies.
 
 Usage: drawing_keys.py CURDLE SOURCE_DIR PATTERN...
 """
@@ -10,6 +11,7 @@ import io
 import subprocess
 import sys
 import tempfile
+import tomllib
 from pathlib import Path
 
 curdle, source, patterns = sys.argv[1], Path(sys.argv[2]), sys.argv[3:]
@@ -24,6 +26,12 @@ for pattern in patterns:
         pages = int(next(line.split()[-1] for line in subprocess.run(
             ["pdfinfo", str(Path(tmp, "layout.pdf"))], capture_output=True, text=True,
             check=True).stdout.splitlines() if line.startswith("Pages:")))
+        zones = tomllib.loads((source / pattern).read_text()).get("layout", {}).get("zones", [])
+        first = subprocess.run(["pdftotext", "-f", "1", "-l", "1", str(Path(tmp, "layout.pdf")),
+                                "-"], capture_output=True, text=True, check=True).stdout
+        for zone in zones:
+            if zone["name"] not in first:
+                failures.append(f"{pattern} sheet 1: zone {zone['name']} is not drawn")
         checked = 0
         for page in range(2, pages + 1):
             words = subprocess.run(["pdftotext", "-f", str(page), "-l", str(page), "-layout",
@@ -38,7 +46,8 @@ for pattern in patterns:
                 if m not in flat:
                     failures.append(f"{pattern} sheet {page}: {m} is laid there, not in its key")
             checked += len(on_sheet)
-        print(f"{pattern}: {pages - 1} installer's sheets, {checked} materials found in their keys")
+        print(f"{pattern}: {pages - 1} installer's sheets, {checked} materials found in their keys,"
+              f" {len(zones)} zones named on sheet 1")
 for f in failures[:20]:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)
