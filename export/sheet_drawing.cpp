@@ -228,6 +228,24 @@ std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, 
 
 double title_width(double w) { return std::min(150.0, (w - kLeftMargin - kMargin) * 0.55); }
 
+// A north arrow 9 mm tall standing on (x, y), with its N above.
+void north_arrow(cairo_t* cr, double x, double y) {
+  colour(cr, kInk);
+  cairo_new_path(cr);
+  cairo_move_to(cr, x, y - 9);
+  cairo_line_to(cr, x + 2.2, y);
+  cairo_line_to(cr, x, y - 2);
+  cairo_close_path(cr);
+  cairo_fill(cr);
+  cairo_move_to(cr, x, y - 9);
+  cairo_line_to(cr, x - 2.2, y);
+  cairo_line_to(cr, x, y - 2);
+  cairo_close_path(cr);
+  cairo_set_line_width(cr, 0.25);
+  cairo_stroke(cr);
+  text(cr, x, y - 10.5, "N", 2.5, Align::centre, false, true);
+}
+
 void title_block(cairo_t* cr, const Layout& layout, double w, double h, const std::string& what,
                  double scale, size_t number, size_t total, const std::string& paper) {
   const double tw = title_width(w);
@@ -245,6 +263,9 @@ void title_block(cairo_t* cr, const Layout& layout, double w, double h, const st
   text(cr, x + 3, y + kTitleStrip - 3, fmt::format("scale 1 : {:g} on {}", scale, paper), 2.5);
   text(cr, x + tw - 3, y + kTitleStrip - 3, fmt::format("sheet {} of {}", number, total), 3.5,
        Align::right, false, true);
+  // Plans carry a north arrow: +y of the layout, as its glTF and IFC take north.
+  if (!layout.kind->upright() && layout.views.empty())
+    north_arrow(cr, x + tw * 0.55, y + kTitleStrip - 4);
 }
 
 }  // namespace curdle::sheet_drawing
