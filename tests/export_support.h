@@ -51,4 +51,39 @@ inline std::vector<std::vector<std::string>> parse_csv(const std::string& text) 
   return rows;
 }
 
+// RFC 4180 rows: CRLF line ends, quoted fields may hold commas; every row as wide as the header.
+inline std::vector<std::vector<std::string>> strict_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows(1);
+  std::string cell;
+  bool quoted = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"')
+        cell += '"', ++i;
+      else if (c == '"')
+        quoted = false;
+      else
+        cell += c;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      rows.back().push_back(cell), cell.clear();
+    } else if (c == '\r') {
+      EXPECT_EQ(text[i + 1], '\n') << "CR without LF";
+      rows.back().push_back(cell), cell.clear();
+      rows.emplace_back();
+      ++i;
+    } else {
+      EXPECT_NE(c, '\n') << "bare LF";
+      cell += c;
+    }
+  }
+  EXPECT_TRUE(rows.back().empty() && cell.empty()) << "the last row must end in CRLF";
+  rows.pop_back();
+  for (size_t r = 1; r < rows.size(); ++r)
+    EXPECT_EQ(rows[r].size(), rows[0].size()) << "ragged row " << r;
+  return rows;
+}
+
 }  // namespace curdle

@@ -14,6 +14,7 @@
 #include "export/install.h"
 #include "export/layout_dxf.h"
 #include "export/layout_png.h"
+#include "export/park_schedules.h"
 #include "export/preview_png.h"
 #include "export/report_json.h"
 #include "export/report_table.h"
@@ -112,6 +113,18 @@ void write_lots(const OutputContext& c, OutputSink& sink) {
 void write_install(const OutputContext& c, OutputSink& sink) {
   sink.write("install.svg",
              [&](std::ostream& o) { write_install_svg(o, *c.layout, c.installer_plan()); });
+}
+
+void write_planting(const OutputContext& c, OutputSink& sink) {
+  sink.write("planting.csv", [&](std::ostream& o) { write_planting_csv(o, *c.layout); });
+}
+
+void write_furniture(const OutputContext& c, OutputSink& sink) {
+  sink.write("furniture.csv", [&](std::ostream& o) { write_furniture_csv(o, *c.layout); });
+}
+
+void write_surfaces(const OutputContext& c, OutputSink& sink) {
+  sink.write("surfaces.csv", [&](std::ostream& o) { write_surfaces_csv(o, *c.layout); });
 }
 
 void write_sheets(const OutputContext& c, OutputSink& sink) {
@@ -218,6 +231,22 @@ std::vector<Output> make_registry() {
        .size_unit = "elements",
        .size = view_cells,
        .write = write_install});
+  add({.name = "planting.csv",
+       .description = "parks: every tree and shrub, its plant, centre to set out from, canopy "
+                      "and zone",
+       .needs_layout = true,
+       .for_kind = "park",
+       .write = write_planting});
+  add({.name = "furniture.csv",
+       .description = "parks: every bench and other standing object, its centre, size and zone",
+       .needs_layout = true,
+       .for_kind = "park",
+       .write = write_furniture});
+  add({.name = "surfaces.csv",
+       .description = "parks: the ground and surfaces as areas per material and zone",
+       .needs_layout = true,
+       .for_kind = "park",
+       .write = write_surfaces});
   add({.name = "sheets",
        .description = "perforated sheets: a DXF and an SVG per fabrication sheet, in sheets/",
        .needs_layout = true,
@@ -248,6 +277,11 @@ bool is_output_name(const std::string& name, bool folder) {
   return false;
 }
 
+bool output_applies(const Output& o, const Run& run) {
+  if (o.needs_layout && !run.recipe.layout) return false;
+  return !o.for_kind || (run.recipe.layout && run.recipe.layout->kind->name() == o.for_kind);
+}
+
 const Output* find_output(const std::string& name) {
   for (const Output& o : output_registry())
     if (o.name == name || o.name.substr(0, o.name.find('.')) == name) return &o;
@@ -269,12 +303,17 @@ std::vector<const Output*> select_outputs(const Run& run, const std::vector<std:
                          o->name +
                              " needs a [layout] section in the recipe (see "
                              "patterns/README.md)");
+      if (!output_applies(*o, run))
+        throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout.kind", ""},
+                         o->name + " is written for layouts of kind \"" + o->for_kind +
+                             "\"; this recipe's is \"" +
+                             std::string(run.recipe.layout->kind->name()) + "\"");
       if (std::find(chosen.begin(), chosen.end(), o) == chosen.end()) chosen.push_back(o);
     }
     return chosen;
   }
   for (const Output& o : output_registry()) {
-    if (!o.by_default || (o.needs_layout && !has_layout)) continue;
+    if (!o.by_default || !output_applies(o, run)) continue;
     if (o.skip_above && o.size(run) > o.skip_above) {
       if (observer) observer->skipped(o.name, o.size(run), o.size_unit, o.skip_above);
       continue;

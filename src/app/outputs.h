@@ -38,7 +38,8 @@ struct Output {
   std::string description;
   bool needs_layout = false;
   bool by_default = true;
-  bool download = true;  // one file the page can offer (not a folder, not a pair)
+  bool download = true;            // one file the page can offer (not a folder, not a pair)
+  const char* for_kind = nullptr;  // written only for layouts of this kind ("park"); null: any
   // Skipped unless named when size(run) is above this (0: never skipped): huge files nobody
   // opens are not written by accident.
   uint64_t skip_above = 0;
@@ -60,6 +61,9 @@ const Output* find_output(const std::string& name);
 // InputError (parameter "outputs"); defaults too large are skipped with a note.
 std::vector<const Output*> select_outputs(const Run& run, const std::vector<std::string>& named,
                                           RunObserver* observer);
+
+// Whether the output is one this run can write: its kind's, and a layout when it needs one.
+bool output_applies(const Output& output, const Run& run);
 
 // Bytes the run and these outputs need at once, counted before anything is allocated: the
 // curds, the layout when the outputs need it (or when `with_layout` says so), and each output.

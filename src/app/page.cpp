@@ -73,10 +73,12 @@ ordered_json surface_json(const LayoutSpec& spec) {
 
 }  // namespace
 
-std::vector<std::string> page_downloads(bool with_layout) {
+std::vector<std::string> page_downloads(bool with_layout, std::string_view kind) {
   std::vector<std::string> names;
   for (const Output& o : output_registry())
-    if (o.download && (with_layout || !o.needs_layout)) names.push_back(o.name);
+    if (o.download && (with_layout || !o.needs_layout) &&
+        (!o.for_kind || kind.empty() || kind == o.for_kind))
+      names.push_back(o.name);
   names.push_back("recipe.toml");
   return names;
 }
@@ -140,7 +142,8 @@ ordered_json describe_run(const Run& s) {
   }
   j["legend"] = legend;
   // What this recipe can download, from the registry: the page lists no names of its own.
-  j["downloads"] = page_downloads(s.recipe.layout.has_value());
+  j["downloads"] = page_downloads(s.recipe.layout.has_value(),
+                                  s.recipe.layout ? s.recipe.layout->kind->name() : "");
   return j;
 }
 

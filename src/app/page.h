@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/picture_study.h"
@@ -14,8 +15,8 @@
 namespace curdle::app {
 
 // The files the page may download: the registry's single-file outputs (those of a layout only
-// when there is one), and recipe.toml.
-std::vector<std::string> page_downloads(bool with_layout);
+// when there is one, those of a kind only for it; `kind` empty: every kind's), and recipe.toml.
+std::vector<std::string> page_downloads(bool with_layout, std::string_view kind = {});
 
 // ResourceLimitError when `view` generates more than `limit` cells; `what` opens the message
 // ("this request would generate").

@@ -385,7 +385,9 @@ PYBIND11_MODULE(_curdle, m) {
     for (const app::Output& o : app::output_registry())
       list.append(py::dict(py::arg("name") = o.name, py::arg("description") = o.description,
                            py::arg("needs_layout") = o.needs_layout,
-                           py::arg("by_default") = o.by_default));
+                           py::arg("by_default") = o.by_default,
+                           py::arg("for_kind") = o.for_kind ? py::object(py::str(o.for_kind))
+                                                            : py::object(py::none())));
     return list;
   });
 }
