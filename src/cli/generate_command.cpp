@@ -1,5 +1,7 @@
 #include "cli/generate_command.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,12 +23,15 @@ void print_summary(const app::RunSummary& s, const app::Run& run, const fs::path
     if (l.sheets)
       std::printf("sheets: %llu, each as DXF and SVG in sheets/\n",
                   static_cast<unsigned long long>(l.sheets));
-    std::printf(
-        "layout: %llu %ss (%llu cut, %llu over openings), %.0f x %.0f mm; layout.png at "
-        "1:%g, %g dpi\n",
-        static_cast<unsigned long long>(l.elements), l.element_type.c_str(),
-        static_cast<unsigned long long>(l.cut), static_cast<unsigned long long>(l.omitted), l.width,
-        l.height, l.drawing_scale, l.dpi);
+    // Cells with no element: wholly in an opening or excluded zone, or beyond the outline.
+    const std::string unlaid =
+        l.omitted ? fmt::format("; {} cells not laid: in openings, zones or beyond the outline",
+                                l.omitted)
+                  : std::string();
+    std::printf("layout: %llu %ss (%llu cut%s), %.0f x %.0f mm; layout.png at 1:%g, %g dpi\n",
+                static_cast<unsigned long long>(l.elements), l.element_type.c_str(),
+                static_cast<unsigned long long>(l.cut), unlaid.c_str(), l.width, l.height,
+                l.drawing_scale, l.dpi);
     for (const std::string& note : l.notes) std::printf("  note: %s\n", note.c_str());
     for (size_t i = 0; i < l.violations.size() && i < 20; ++i)
       std::printf("  rule: %s\n", l.violations[i].c_str());
