@@ -16,6 +16,7 @@
 #include "export/layout_png.h"
 #include "export/park_schedules.h"
 #include "export/preview_png.h"
+#include "export/punching.h"
 #include "export/report_json.h"
 #include "export/report_table.h"
 #include "export/schedule.h"
@@ -127,6 +128,10 @@ void write_surfaces(const OutputContext& c, OutputSink& sink) {
   sink.write("surfaces.csv", [&](std::ostream& o) { write_surfaces_csv(o, *c.layout); });
 }
 
+void write_punching(const OutputContext& c, OutputSink& sink) {
+  sink.write("punching.csv", [&](std::ostream& o) { write_punching_csv(o, *c.layout); });
+}
+
 void write_sheets(const OutputContext& c, OutputSink& sink) {
   const Layout& layout = *c.layout;
   for (size_t i = 0; i < layout.sheets.size(); ++i) {
@@ -137,6 +142,33 @@ void write_sheets(const OutputContext& c, OutputSink& sink) {
     sink.write("sheets/" + id + ".svg",
                [&](std::ostream& o) { write_sheet_svg(o, layout, sheet); });
   }
+}
+
+// Outputs of one kind of layout: a park's schedules, a perforation's order list.
+template <class Add>
+void add_kind_outputs(Add& add) {
+  add({.name = "planting.csv",
+       .description = "parks: every tree and shrub, its plant, centre to set out from, canopy "
+                      "and zone",
+       .needs_layout = true,
+       .for_kind = "park",
+       .write = write_planting});
+  add({.name = "furniture.csv",
+       .description = "parks: every bench and other standing object, its centre, size and zone",
+       .needs_layout = true,
+       .for_kind = "park",
+       .write = write_furniture});
+  add({.name = "surfaces.csv",
+       .description = "parks: the ground and surfaces as areas per material and zone",
+       .needs_layout = true,
+       .for_kind = "park",
+       .write = write_surfaces});
+  add({.name = "punching.csv",
+       .description = "perforations: the order list, per fabrication sheet its stock, material, "
+                      "offcut, open share and the hits of each punch, and their total",
+       .needs_layout = true,
+       .for_kind = "perforation",
+       .write = write_punching});
 }
 
 std::vector<Output> make_registry() {
@@ -231,22 +263,7 @@ std::vector<Output> make_registry() {
        .size_unit = "elements",
        .size = view_cells,
        .write = write_install});
-  add({.name = "planting.csv",
-       .description = "parks: every tree and shrub, its plant, centre to set out from, canopy "
-                      "and zone",
-       .needs_layout = true,
-       .for_kind = "park",
-       .write = write_planting});
-  add({.name = "furniture.csv",
-       .description = "parks: every bench and other standing object, its centre, size and zone",
-       .needs_layout = true,
-       .for_kind = "park",
-       .write = write_furniture});
-  add({.name = "surfaces.csv",
-       .description = "parks: the ground and surfaces as areas per material and zone",
-       .needs_layout = true,
-       .for_kind = "park",
-       .write = write_surfaces});
+  add_kind_outputs(add);
   add({.name = "sheets",
        .description = "perforated sheets: a DXF and an SVG per fabrication sheet, in sheets/",
        .needs_layout = true,

@@ -38,6 +38,7 @@ struct PerforationKeys : KindKeysOf<PerforationKeys> {
   std::optional<std::array<double, 2>> sheet_size;  // fabrication sheets at most this size
   std::vector<double> punches;  // the tools' diameters: every opening is one of them; empty: any
   std::optional<std::array<double, 2>> open_area;  // [min, max] share each sheet must be open
+  std::string sheet_material = "sheet metal";      // what the sheets are, for the order list
 };
 
 class PerforationKind : public SurfaceKind {

@@ -96,6 +96,9 @@ namespace {
 
 // Each sheet's open area (checked against layout.open_area) and its openings per tool.
 void summarise_sheets(Layout& layout, const LayoutSpec& spec) {
+  const PerforationKeys& keys = spec.own<PerforationKeys>();
+  layout.sheet_material = keys.sheet_material;
+  layout.sheet_stock = keys.sheet_size.value_or(std::array<double, 2>{layout.width, layout.height});
   std::vector<std::map<std::string, uint64_t>> tools(layout.sheets.size());
   std::vector<double> open(layout.sheets.size(), 0.0);
   for (const Element& e : layout.elements) {

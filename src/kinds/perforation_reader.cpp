@@ -112,6 +112,8 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
   read_punches(r, spec);
   read_open_area(r, spec);
+  if (auto m = read_name(r, "sheet_material", "the sheets' material, e.g. \"aluminium 5005\""))
+    spec.own<PerforationKeys>().sheet_material = *m;
   spec.own<PerforationKeys>().sheet_size = read_mm_pair(r, "sheet_size");
   if (spec.own<PerforationKeys>().sheet_size) {
     double largest = 0;

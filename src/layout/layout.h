@@ -286,6 +286,10 @@ struct Layout {
     std::vector<std::pair<std::string, uint64_t>> tools;
   };
   std::vector<FabricationSheet> sheets;
+  // What they are cut from: the stock sheet's size (layout.sheet_size, or the whole surface)
+  // and its material (layout.sheet_material), for the order list.
+  std::array<double, 2> sheet_stock{0, 0};
+  std::string sheet_material;
   std::vector<std::string> notes;  // what a builder should know (cut slivers, ...)
   Box view;                        // the cells laid, in field coordinates
   // Blocks: the drawing is a plan and an elevation of the voxels, side by side; each shape
