@@ -28,6 +28,20 @@ namespace curdle {
 using test::design;
 
 // The floor or wall of `spec` laid from a field of exactly its elements, curdled with `seed`.
+// The paper's park (fig. 5): trees, benches and grey paving on 3 x 3 m cells, 300 mm clear.
+namespace test {
+inline LayoutSpec trees_and_benches(const std::string& tree = "tree") {
+  LayoutSpec spec = layout_spec();
+  spec.set_kind(layout_kind("park"));
+  spec.module_w = spec.module_h = 3000;
+  spec.own<ParkKeys>().clearance = 300;
+  spec.own<ParkKeys>().elements = {{tree, false, true, 1000, 1000, Rgb{58, 138, 79}},
+                                   {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
+                                   {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
+  return spec;
+}
+}  // namespace test
+
 inline Layout lay_floor(const Design& d, const LayoutSpec& spec, uint64_t seed) {
   Design sized = d;
   const auto cells = elements_to_cover(spec);

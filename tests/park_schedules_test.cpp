@@ -19,13 +19,7 @@ namespace {
 
 TEST(ParkSchedules, PlantsFurnitureAndSurfacesInLandscapeTerms) {
   const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
-  LayoutSpec spec = test::layout_spec();
-  spec.set_kind(layout_kind("park"));
-  spec.module_w = spec.module_h = 3000;
-  spec.own<ParkKeys>().clearance = 300;
-  spec.own<ParkKeys>().elements = {{"Tilia cordata", false, true, 1200, 1200, Rgb{58, 138, 79}},
-                                   {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
-                                   {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
+  LayoutSpec spec = test::trees_and_benches("Tilia cordata");
   Zone lawn;
   lawn.name = "lawn";
   lawn.rule = ZoneRule::value;
@@ -62,7 +56,7 @@ TEST(ParkSchedules, PlantsFurnitureAndSurfacesInLandscapeTerms) {
     EXPECT_EQ(plants[r][1], "Tilia cordata");
     EXPECT_NEAR(std::stod(plants[r][2]), e.circle->cx, 1e-3);
     EXPECT_NEAR(std::stod(plants[r][3]), e.circle->cy, 1e-3);
-    EXPECT_EQ(plants[r][4], "1200");
+    EXPECT_EQ(plants[r][4], "1000");
     in_lawn += plants[r][6] == "lawn";
     EXPECT_EQ(plants[r][6] == "lawn", e.circle->cx < 12000 && e.circle->cy < 6000) << e.id;
   }

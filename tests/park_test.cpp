@@ -8,25 +8,9 @@
 namespace curdle {
 using test::design;
 
-namespace {
-
-// The paper's park (fig. 5): trees, benches and grey paving on 3 x 3 m cells, 300 mm clear.
-LayoutSpec trees_and_benches() {
-  LayoutSpec spec = test::layout_spec();
-  spec.set_kind(layout_kind("park"));
-  spec.module_w = spec.module_h = 3000;
-  spec.own<ParkKeys>().clearance = 300;
-  spec.own<ParkKeys>().elements = {{"tree", false, true, 1000, 1000, Rgb{58, 138, 79}},
-                                   {"bench", false, false, 1000, 450, Rgb{138, 90, 43}},
-                                   {"grey paving", true, false, 0, 0, Rgb{154, 154, 154}}};
-  return spec;
-}
-
-}  // namespace
-
 TEST(Park, AnOutlineIsCoveredAndObjectsStandWholeInsideIt) {
   const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
-  LayoutSpec spec = trees_and_benches();
+  LayoutSpec spec = test::trees_and_benches();
   // 48 x 48 m less a sloping cut across one corner and a step along x and y.
   const Polygon site = {{0, 0},         {30000, 0},     {48000, 20000}, {48000, 48000},
                         {20000, 48000}, {20000, 40000}, {0, 40000}};
@@ -59,7 +43,7 @@ TEST(Park, AnOutlineIsCoveredAndObjectsStandWholeInsideIt) {
 
 TEST(Park, ElementsShareCellsWithoutOverlapAndSurfacesCoverTheArea) {
   const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
-  LayoutSpec spec = trees_and_benches();
+  LayoutSpec spec = test::trees_and_benches();
   for (uint64_t seed = 1; seed <= 5; ++seed) {
     const CurdField f = curdle(d, seed, d.field);
     const Layout layout = make_layout(d, f, d.field, spec);
