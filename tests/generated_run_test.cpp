@@ -53,6 +53,18 @@ TEST(GeneratedRun, UnknownOutputsAreRefusedWithTheNamesAllowed) {
   }
 }
 
+TEST(GeneratedRun, AnotherKindsOutputIsRefusedNamingTheKind) {
+  const GeneratedRun g = generate_run(run_of(kTiles), true, 1, nullptr);
+  try {
+    output_bytes(g, "planting.csv");
+    FAIL() << "a park's schedule of tiles";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, "layout.kind");
+    EXPECT_NE(std::string(e.what()).find("\"park\"; this recipe's is \"tile\""), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(GeneratedRun, TheMemoryLimitIsCheckedBeforeCurdling) {
   app::Run run = run_of(kTiles, {"field.cells=[4096, 4096]"});
   run.generate.max_memory_bytes = 1 << 20;

@@ -60,13 +60,12 @@ GeneratedRun generate_run(Run run, bool with_layout, int threads, RunObserver* o
 
 void write_generated(const GeneratedRun& g, const std::vector<const Output*>& outputs,
                      OutputSink& sink, RunObserver* observer) {
-  for (const Output* o : outputs)
+  for (const Output* o : outputs) {
+    check_output_applies(*o, g.run);
     if (o->needs_layout && !g.layout)
       throw InputError(SourceLocation{g.run.recipe_path, 0, 0, "layout", ""},
-                       o->name + (g.run.recipe.layout
-                                      ? " needs the layout, and this run was generated without it"
-                                      : " needs a [layout] section in the recipe (see "
-                                        "patterns/README.md)"));
+                       o->name + " needs the layout, and this run was generated without it");
+  }
   check_run_memory(g.run, outputs, g.layout.has_value());
   const OutputContext context{g.run, g.field, g.report, g.layout ? &*g.layout : nullptr, observer};
   for (const Output* o : outputs)

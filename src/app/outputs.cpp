@@ -294,6 +294,17 @@ bool is_output_name(const std::string& name, bool folder) {
   return false;
 }
 
+void check_output_applies(const Output& o, const Run& run) {
+  if (o.needs_layout && !run.recipe.layout)
+    throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout", ""},
+                     o.name + " needs a [layout] section in the recipe (see patterns/README.md)");
+  if (!output_applies(o, run))
+    throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout.kind", ""},
+                     o.name + " is written for layouts of kind \"" + o.for_kind +
+                         "\"; this recipe's is \"" + std::string(run.recipe.layout->kind->name()) +
+                         "\"");
+}
+
 bool output_applies(const Output& o, const Run& run) {
   if (o.needs_layout && !run.recipe.layout) return false;
   return !o.for_kind || (run.recipe.layout && run.recipe.layout->kind->name() == o.for_kind);
@@ -315,16 +326,7 @@ std::vector<const Output*> select_outputs(const Run& run, const std::vector<std:
       if (!o)
         throw InputError(parameter("outputs"),
                          "unknown output '" + name + "'; allowed: " + known_outputs());
-      if (o->needs_layout && !has_layout)
-        throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout", ""},
-                         o->name +
-                             " needs a [layout] section in the recipe (see "
-                             "patterns/README.md)");
-      if (!output_applies(*o, run))
-        throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout.kind", ""},
-                         o->name + " is written for layouts of kind \"" + o->for_kind +
-                             "\"; this recipe's is \"" +
-                             std::string(run.recipe.layout->kind->name()) + "\"");
+      check_output_applies(*o, run);
       if (std::find(chosen.begin(), chosen.end(), o) == chosen.end()) chosen.push_back(o);
     }
     return chosen;

@@ -64,6 +64,9 @@ std::vector<const Output*> select_outputs(const Run& run, const std::vector<std:
 
 // Whether the output is one this run can write: its kind's, and a layout when it needs one.
 bool output_applies(const Output& output, const Run& run);
+// InputError naming the recipe key when it is not: [layout], or layout.kind and the kind it is
+// for.
+void check_output_applies(const Output& output, const Run& run);
 
 // Bytes the run and these outputs need at once, counted before anything is allocated: the
 // curds, the layout when the outputs need it (or when `with_layout` says so), and each output.
