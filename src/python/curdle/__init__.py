@@ -281,7 +281,8 @@ def generate(recipe, seed=None, window=None, overrides=None, layout=True, thread
 def search(recipe, seeds="1..1000", segment=None, targets=(), top=10, stride=0, overrides=None,
            threads=0, max_memory=0):
     """The seeds (and segments of size `segment`, (w, h)) that best meet `targets`, as
-    `curdle search` finds them: a list of hits (rank, seed, segment, score, measures)."""
+    `curdle search` finds them: {"targets": [...], "hits": [{rank, seed, window, score,
+    measured, command}, ...]}, best first."""
     if not isinstance(recipe, Recipe):
         recipe = Recipe.from_file(recipe)
     if isinstance(seeds, range):
