@@ -18,16 +18,10 @@ void for_each_box_level(int base, int dimension, const Box& box, std::vector<boo
       up.count[d] = floor_div(level.first[d] + level.count[d] - 1, base) - up.first[d] + 1;
     }
     up.occupied.assign(static_cast<size_t>(up.count[0] * up.count[1] * up.count[2]), false);
-    size_t i = 0;
-    for (int64_t z = 0; z < level.count[2]; ++z)
-      for (int64_t y = 0; y < level.count[1]; ++y)
-        for (int64_t x = 0; x < level.count[0]; ++x, ++i) {
-          if (!level.occupied[i]) continue;
-          std::array<int64_t, 3> at{level.first[0] + x, level.first[1] + y, level.first[2] + z};
-          for (int d = 0; d < dimension; ++d) at[d] = floor_div(at[d], base) - up.first[d];
-          up.occupied[static_cast<size_t>((at[2] * up.count[1] + at[1]) * up.count[0] + at[0])] =
-              true;
-        }
+    for_each_occupied(level, [&](std::array<int64_t, 3> at) {
+      for (int d = 0; d < dimension; ++d) at[d] = floor_div(at[d], base);
+      up.occupied[up.at(at)] = true;
+    });
     level = std::move(up);
   }
 }

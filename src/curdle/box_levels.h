@@ -21,7 +21,24 @@ struct BoxLevel {
   std::array<int64_t, 3> first{0, 0, 0};  // index of the first box along each axis
   std::array<int64_t, 3> count{1, 1, 1};  // boxes along each axis
   std::vector<bool> occupied;             // x fastest, then y, then z
+
+  // Where `box` (its index along each axis, as `first` counts) sits in `occupied`.
+  size_t at(const std::array<int64_t, 3>& box) const {
+    return static_cast<size_t>(((box[2] - first[2]) * count[1] + (box[1] - first[1])) * count[0] +
+                               (box[0] - first[0]));
+  }
 };
+
+// Calls visit(at) for every occupied box of the level, `at` its index along each axis.
+template <class F>
+void for_each_occupied(const BoxLevel& level, F&& visit) {
+  size_t i = 0;
+  for (int64_t z = 0; z < level.count[2]; ++z)
+    for (int64_t y = 0; y < level.count[1]; ++y)
+      for (int64_t x = 0; x < level.count[0]; ++x, ++i)
+        if (level.occupied[i])
+          visit(std::array<int64_t, 3>{level.first[0] + x, level.first[1] + y, level.first[2] + z});
+}
 
 // Calls visit for levels 0..levels. `cells` covers `box` (x fastest, then y, then z; cell
 // coordinates are box.origin + offset); axes beyond `dimension` must have size 1.

@@ -160,21 +160,15 @@ std::vector<double> share_weighted_box_counts(const Lattice& l, const Box& view,
   // Level j of the pyramid is stage K - j; a box weighs the share of its cells in the view.
   for_each_box_level(l.base, l.dimension, view, cells, l.stages, [&](const BoxLevel& level) {
     double sum = 0;
-    size_t i = 0;
-    for (int64_t z = 0; z < level.count[2]; ++z)
-      for (int64_t y = 0; y < level.count[1]; ++y)
-        for (int64_t x = 0; x < level.count[0]; ++x, ++i) {
-          if (!level.occupied[i]) continue;
-          const std::array<int64_t, 3> at{level.first[0] + x, level.first[1] + y,
-                                          level.first[2] + z};
-          double share = 1;
-          for (int d = 0; d < l.dimension; ++d) {
-            const int64_t lo = std::max(at[d] * level.side, view.origin[d]);
-            const int64_t hi = std::min((at[d] + 1) * level.side, view.origin[d] + view.size[d]);
-            share *= static_cast<double>(hi - lo) / static_cast<double>(level.side);
-          }
-          sum += share;
-        }
+    for_each_occupied(level, [&](const std::array<int64_t, 3>& at) {
+      double share = 1;
+      for (int d = 0; d < l.dimension; ++d) {
+        const int64_t lo = std::max(at[d] * level.side, view.origin[d]);
+        const int64_t hi = std::min((at[d] + 1) * level.side, view.origin[d] + view.size[d]);
+        share *= static_cast<double>(hi - lo) / static_cast<double>(level.side);
+      }
+      sum += share;
+    });
     out[static_cast<size_t>(l.stages - level.index)] = sum;
   });
   return out;

@@ -42,40 +42,30 @@ std::vector<std::pair<int64_t, CellSpan>> children_along(int64_t at, int base, i
 StageBranching branching(const Lattice& l, const Box& view, const BoxLevel& parent,
                          const BoxLevel& child) {
   StageBranching out;
-  size_t i = 0;
-  for (int64_t z = 0; z < parent.count[2]; ++z)
-    for (int64_t y = 0; y < parent.count[1]; ++y)
-      for (int64_t x = 0; x < parent.count[0]; ++x, ++i) {
-        if (!parent.occupied[i]) continue;
-        const std::array<int64_t, 3> at{parent.first[0] + x, parent.first[1] + y,
-                                        parent.first[2] + z};
-        std::array<std::vector<std::pair<int64_t, CellSpan>>, 3> axes;
-        for (int d = 0; d < 3; ++d)
-          axes[d] = d < l.dimension ? children_along(at[d], l.base, child.side, view.origin[d],
-                                                     view.origin[d] + view.size[d])
-                                    : std::vector<std::pair<int64_t, CellSpan>>{{0, {0, 1}}};
-        std::map<CellShape, std::pair<uint64_t, uint64_t>> classes;  // children, occupied
-        for (const auto& [cz, sz] : axes[2])
-          for (const auto& [cy, sy] : axes[1])
-            for (const auto& [cx, sx] : axes[0]) {
-              const size_t at_child = static_cast<size_t>(
-                  ((cz - child.first[2]) * child.count[1] + (cy - child.first[1])) *
-                      child.count[0] +
-                  (cx - child.first[0]));
-              auto& cls = classes[CellShape{sx, sy, sz}];
-              cls.first += 1;
-              cls.second += child.occupied[at_child] ? 1 : 0;
-            }
-        ChildClasses kind;
-        Occupied seen;
-        for (const auto& [shape, counts] : classes) {
-          kind.push_back({shape, counts.first});
-          seen.push_back(counts.second);
-          out.child_count += counts.second;
+  for_each_occupied(parent, [&](const std::array<int64_t, 3>& at) {
+    std::array<std::vector<std::pair<int64_t, CellSpan>>, 3> axes;
+    for (int d = 0; d < 3; ++d)
+      axes[d] = d < l.dimension ? children_along(at[d], l.base, child.side, view.origin[d],
+                                                 view.origin[d] + view.size[d])
+                                : std::vector<std::pair<int64_t, CellSpan>>{{0, {0, 1}}};
+    std::map<CellShape, std::pair<uint64_t, uint64_t>> classes;  // children, occupied
+    for (const auto& [cz, sz] : axes[2])
+      for (const auto& [cy, sy] : axes[1])
+        for (const auto& [cx, sx] : axes[0]) {
+          auto& cls = classes[CellShape{sx, sy, sz}];
+          cls.first += 1;
+          cls.second += child.occupied[child.at({cx, cy, cz})] ? 1 : 0;
         }
-        out.parents[kind][seen] += 1;
-        out.parent_count += 1;
-      }
+    ChildClasses kind;
+    Occupied seen;
+    for (const auto& [shape, counts] : classes) {
+      kind.push_back({shape, counts.first});
+      seen.push_back(counts.second);
+      out.child_count += counts.second;
+    }
+    out.parents[kind][seen] += 1;
+    out.parent_count += 1;
+  });
   return out;
 }
 
