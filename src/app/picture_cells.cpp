@@ -1,6 +1,7 @@
 #include "app/picture_cells.h"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <numeric>
 
