@@ -215,10 +215,7 @@ TEST(FitStatistics, IntervalsHoldTheTruthNinetyFivePercentOfTheTime) {
         EXPECT_EQ(held[k], 1.0);
         continue;
       }
-      // Known shortfalls: a few parents whose children the view cuts unevenly (the window's
-      // stage 3: 4 cut parents; the line's stage 1: 3 roots, one cut) hold the truth in 90 %.
-      const bool short_of_it = at == "window stage 3" || at == "line stage 1";
-      EXPECT_GE(held[k], short_of_it ? 0.88 : 0.92) << at;
+      EXPECT_GE(held[k], 0.92) << at;
       EXPECT_LE(held[k], 0.98) << at;
     }
   }

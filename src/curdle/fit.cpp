@@ -16,6 +16,8 @@ constexpr double kInterval95 = 3.841458820694124;  // chi-square, 1 degree, uppe
 constexpr double kSmallest = 1e-12;                // p is searched in [kSmallest, 1]
 constexpr uint64_t kMostChildrenTested = 4096;     // parents with more are left out of the test
 constexpr double kLeastExpected = 1;               // parents a bin of the test must expect
+constexpr uint64_t kFewChildren = 100;  // stages with at most this many children in view are
+                                        // given the split count's interval
 
 // A parent's children by their inside part (sorted), how many of each, and its kind: parents
 // whose children lie alike in the view share the likelihood and the distribution of a count.
@@ -101,6 +103,7 @@ double times_log(double count, double x) { return count == 0 ? 0.0 : count * std
 struct Stage {
   StageBranching seen;
   std::vector<std::vector<double>> q;  // per kind, per class
+  double split = 0.5;  // picture_split: where the interval of a coarse count splits its chance
 };
 
 double log_likelihood(const Stage& s, double p) {
@@ -221,6 +224,22 @@ void set_chances(const Lattice& l, int k, Stage& s, const std::vector<double>& p
   }
 }
 
+// The mean of p under the stage's likelihood with a flat prior: unlike the most likely p it never
+// sits at 0 when a stage's few parents each have one child.
+double posterior_mean(const Stage& s) {
+  constexpr int kSteps = 400;
+  std::vector<double> l(kSteps);
+  double top = -INFINITY;
+  for (int i = 0; i < kSteps; ++i)
+    top = std::max(top, l[i] = log_likelihood(s, (i + 0.5) / kSteps));
+  double mass = 0, moment = 0;
+  for (int i = 0; i < kSteps; ++i) {
+    const double w = std::exp(l[i] - top);
+    mass += w, moment += w * (i + 0.5) / kSteps;
+  }
+  return moment / mass;
+}
+
 // Where the likelihood falls to `level` between `inside` (above it) and `outside`.
 double crossing(const Stage& s, double inside, double outside, double level) {
   for (int i = 0; i < 60; ++i) {
@@ -228,6 +247,82 @@ double crossing(const Stage& s, double inside, double outside, double level) {
     (log_likelihood(s, mid) >= level ? inside : outside) = mid;
   }
   return (inside + outside) / 2;
+}
+
+// The distribution of the stage's occupied children in all, at p: each parent's count given
+// that it is occupied, convolved over the parents.
+std::vector<double> stage_count_distribution(const Stage& s, double p) {
+  std::vector<double> total{1.0};
+  size_t i = 0;
+  for (const auto& [kind, seen] : s.seen.parents) {
+    const KindAtP k = at_p(s.q[i++], kind, p);
+    std::vector<double> one = count_distribution(k);
+    const double any = -std::expm1(k.log_none);
+    one[0] = 0;
+    for (double& x : one) x /= any;
+    uint64_t parents = 0;
+    for (const auto& entry : seen) parents += entry.second;
+    for (uint64_t j = 0; j < parents; ++j) {
+      std::vector<double> next(total.size() + one.size() - 1, 0.0);
+      for (size_t a = 0; a < total.size(); ++a)
+        if (total[a] > 0)
+          for (size_t c = 1; c < one.size(); ++c) next[a + c] += total[a] * one[c];
+      total = std::move(next);
+    }
+  }
+  return total;
+}
+
+// The chance of fewer occupied children than seen plus `split` of the chance of as many: with
+// split uniform, its value at the true p is uniform too, so cutting 2.5 % off each end covers
+// exactly 95 % however coarse the count.
+double split_tail(const Stage& s, double p) {
+  const std::vector<double> pmf = stage_count_distribution(s, p);
+  const auto t = static_cast<size_t>(s.seen.child_count);
+  double below = 0;
+  for (size_t c = 0; c < std::min(t, pmf.size()); ++c) below += pmf[c];
+  return below + (t < pmf.size() ? s.split * pmf[t] : 0.0);
+}
+
+// Where `falling` (decreasing in p) crosses `level` in [kSmallest, 1].
+template <class Falling>
+double falls_to(Falling falling, double level) {
+  double lo = kSmallest, hi = 1;
+  for (int i = 0; i < 50; ++i) {
+    const double mid = (lo + hi) / 2;
+    (falling(mid) >= level ? lo : hi) = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+// The children in view of all the stage's occupied parents.
+uint64_t possible_children(const Stage& s) {
+  uint64_t n = 0;
+  for (const auto& [kind, seen] : s.seen.parents) {
+    uint64_t m = 0, parents = 0;
+    for (const auto& cls : kind) m += cls.second;
+    for (const auto& entry : seen) parents += entry.second;
+    n += m * parents;
+  }
+  return n;
+}
+
+// Where the likelihood ratio stays inside the chi-square point: right when the count is large.
+void set_likelihood_interval(const Stage& s, StageFit& f) {
+  const double level = log_likelihood(s, f.probability) - kInterval95 / 2;
+  f.low =
+      log_likelihood(s, kSmallest) >= level ? 0.0 : crossing(s, f.probability, kSmallest, level);
+  f.high = log_likelihood(s, 1.0) >= level ? 1.0 : crossing(s, f.probability, 1.0, level);
+}
+
+// For a coarse count (a few parents: a lone root, a window's cut corner) no interval that is a
+// function of the count alone holds 95 % at every p (at p = 0.7 one root's 4 children give 91 %
+// or 100 %), and the likelihood ratio's is too short where the fit is 0 or 1. The split count's
+// interval holds exactly 95 %; it always holds the fitted p too.
+void set_split_interval(const Stage& s, StageFit& f) {
+  auto tail = [&](double x) { return split_tail(s, x); };
+  f.low = std::min(f.probability, tail(kSmallest) <= 0.975 ? 0.0 : falls_to(tail, 0.975));
+  f.high = std::max(f.probability, tail(1.0) >= 0.025 ? 1.0 : falls_to(tail, 0.025));
 }
 
 // The stage's p with its interval, expected branching and test, given the later stages' p.
@@ -238,11 +333,17 @@ StageFit fit_stage(const Lattice& l, int k, Stage& s, std::vector<double>& p) {
   f.measured = s.seen.child_count;
   f.parents = s.seen.parent_count;
   f.probability = most_likely(s);
-  const double level = log_likelihood(s, f.probability) - kInterval95 / 2;
-  f.low =
-      log_likelihood(s, kSmallest) >= level ? 0.0 : crossing(s, f.probability, kSmallest, level);
-  f.high = log_likelihood(s, 1.0) >= level ? 1.0 : crossing(s, f.probability, 1.0, level);
-  p[static_cast<size_t>(k - 1)] = f.probability;
+  const uint64_t children = possible_children(s);
+  if (children == f.parents) {
+    f.low = 0, f.high = 1;  // one child in view a parent: its count cannot vary with p
+  } else if (children <= kFewChildren) {
+    set_split_interval(s, f);
+  } else {
+    set_likelihood_interval(s, f);
+  }
+  // The earlier stages' extinction chances take the mean p under the likelihood: the most likely
+  // p is 0 when a stage's few parents have one child each, and would make every earlier child die.
+  p[static_cast<size_t>(k - 1)] = posterior_mean(s);
 
   Test t;
   size_t i = 0;
@@ -253,6 +354,20 @@ StageFit fit_stage(const Lattice& l, int k, Stage& s, std::vector<double>& p) {
   f.p_value = f.degrees > 0 ? chi_square_tail(f.chi_square, f.degrees) : 1.0;
   f.dispersion = t.squares < t.variance ? -1 : 1;
   return f;
+}
+
+// A number in [0, 1) drawn from the picture itself for stage k, spread evenly over pictures: so
+// the split count's interval is random only as the picture is, and one picture always gives one
+// interval.
+double picture_split(const std::vector<bool>& cells, int k) {
+  uint64_t h = 1469598103934665603ull;  // FNV-1a over the occupied cells' indices
+  for (size_t i = 0; i < cells.size(); ++i)
+    if (cells[i]) h = (h ^ i) * 1099511628211ull;
+  uint64_t z = h + 0x9e3779b97f4a7c15ull * static_cast<uint64_t>(k);  // splitmix64's finaliser
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-53;
 }
 
 // The mean and variance of the occupied children of a stage's parents, as fitted.
@@ -290,6 +405,7 @@ CurdFit fit_curd(const Lattice& l, const Box& view, const std::vector<bool>& cel
   for (int k = 1; k <= K; ++k)
     stages[k].seen = branching(l, view, levels[static_cast<size_t>(K - k + 1)],
                                levels[static_cast<size_t>(K - k)]);
+  for (int k = 1; k <= K; ++k) stages[k].split = picture_split(cells, k);
   std::vector<double> p(static_cast<size_t>(K), 1.0);
   CurdFit fit;
   fit.stages.resize(static_cast<size_t>(K));

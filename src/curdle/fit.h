@@ -8,11 +8,12 @@
 // inside the view with q (extinction.h; less for children the view cuts), and the parent is
 // occupied because at least one child is. So the counts form a chain, and each stage's
 // likelihood given the stage before has p_k as its only unknown once the later stages are fitted:
-// p_k is fitted from stage K down, as the maximum of that likelihood, and its interval is where
-// the likelihood ratio stays inside the 95 % chi-square point (the conditioning on survival and
-// extinction included, never of zero width). The fit matches each stage's count given the
-// stage before, not the expected counts from the roots: those are given beside the measured
-// ones with a standardised difference.
+// p_k is fitted from stage K down, as the maximum of that likelihood. Its 95 % interval is where
+// the likelihood ratio stays inside the chi-square point, or, for a stage of at most 100 children
+// in view, whose count is too coarse for that, the split count's interval (fit.cpp); both include
+// the conditioning on survival and extinction and are never of zero width. The fit matches each
+// stage's count given the stage before, not the expected counts from the roots: those are given
+// beside the measured ones with a standardised difference.
 //
 // The test: the number of occupied children of each occupied cell, stage by stage, against the
 // distribution the fitted curd gives (Pearson's chi-square, bins merged to at least 1 expected).
@@ -36,7 +37,7 @@ std::vector<uint64_t> occupied_cells(const Lattice& lattice, const Box& view,
 struct StageFit {
   int stage = 0;
   double probability = 0;
-  double low = 0, high = 1;  // 95 % likelihood-ratio interval of the probability
+  double low = 0, high = 1;  // 95 % interval of the probability
   uint64_t measured = 0;     // N_k
   uint64_t parents = 0;      // N_(k-1), the occupied cells whose children are counted
   // E[N_k] and its standard deviation from the N_0 occupied roots with the fitted
