@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <optional>
+#include <string>
 
 #include "curdle/curdling.h"
 #include "layout/builder.h"
@@ -16,20 +19,21 @@
 namespace curdle {
 namespace {
 
-LayoutSpec facade_spec(const std::array<double, 2>& shift, double min_cut) {
+LayoutSpec facade_spec(const std::array<double, 2>& shift, double min_cut, double bond = 0) {
   LayoutSpec spec = test::layout_spec("facade");
   spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
   spec.size = std::array<double, 2>{6000, 3000};
   spec.shift = shift;
-  spec.min_cut = min_cut;
+  spec.bond = bond;
+  spec.min_cut = {min_cut, min_cut};
   // A window whose head is 15 mm above a course and whose sides cut bricks near their ends.
   spec.own<FacadeKeys>().openings = {{1000, 900, 1200, 1475}, {4000, 0, 900, 2100}};
   return spec;
 }
 
-Layout facade(const std::array<double, 2>& shift, double min_cut) {
+Layout facade(const std::array<double, 2>& shift, double min_cut, double bond = 0) {
   Design d = test::design(4, 2, {{"3/4", "1/2", "2/3"}});
-  const LayoutSpec spec = facade_spec(shift, min_cut);
+  const LayoutSpec spec = facade_spec(shift, min_cut, bond);
   const auto cells = elements_to_cover(spec);
   d.field.size = {cells[0], cells[1], 1};
   const CurdField f = curdle(d, 5, d.field);
@@ -80,6 +84,82 @@ TEST(CutRules, SliversAtOpeningsAreReportedAndTheAdvisedShiftLeavesFewer) {
   for (const std::string& note : plain.notes)
     advised |= note.find("layout.shift = [") != std::string::npos;
   EXPECT_TRUE(advised);
+}
+
+// The slivers note of a layout, and the shift it advises (none: nullopt) with what it says that
+// shift leaves.
+struct SliverNote {
+  std::string text;
+  std::optional<std::array<double, 2>> shift;
+  size_t leaves = 0;
+};
+SliverNote sliver_note(const Layout& layout) {
+  SliverNote out;
+  for (const std::string& note : layout.notes)
+    if (note.find("narrower than") != std::string::npos) out.text = note;
+  const size_t at = out.text.find("layout.shift = [");
+  if (at == std::string::npos) return out;
+  double x = 0, y = 0;
+  char leaves[16] = {};
+  EXPECT_EQ(
+      std::sscanf(out.text.c_str() + at, "layout.shift = [%lf, %lf] leaves %15s", &x, &y, leaves),
+      3);
+  out.shift = std::array<double, 2>{x, y};
+  out.leaves = std::string(leaves) == "none" ? 0 : std::stoul(leaves);
+  return out;
+}
+
+// "lay specials or closers, 36 of 65 x 65 mm, 15 of 40 x 65 mm": the counts named.
+size_t specials_named(const std::string& note) {
+  size_t total = 0;
+  for (size_t at = note.find(" of "); at != std::string::npos; at = note.find(" of ", at + 1)) {
+    size_t start = at;
+    while (start > 0 && std::isdigit(static_cast<unsigned char>(note[start - 1]))) --start;
+    if (start < at) total += std::stoul(note.substr(start, at - start));
+  }
+  return total;
+}
+
+// The note promises only what laying the wall with its shift gives (a courtyard's note said a
+// shift left 0 slivers and 5 remained), with or without a bond; what is left is named as
+// specials, every one of them.
+TEST(CutRules, TheAdvisedShiftLeavesWhatTheNoteSaysAndTheRestAreNamedAsSpecials) {
+  for (const double bond : {0.0, 0.5}) {
+    const Layout plain = facade({0, 0}, 50, bond);
+    const SliverNote note = sliver_note(plain);
+    ASSERT_FALSE(note.text.empty()) << bond;
+    if (!note.shift) {
+      EXPECT_NE(note.text.find("no shift of the grid leaves fewer"), std::string::npos);
+      EXPECT_EQ(specials_named(note.text), slivers_of(plain, 50)) << note.text;
+      continue;
+    }
+    const Layout moved = facade(*note.shift, 50, bond);
+    EXPECT_EQ(slivers_of(moved, 50), note.leaves) << note.text;
+    EXPECT_LT(note.leaves, slivers_of(plain, 50)) << note.text;
+    if (note.leaves)
+      EXPECT_EQ(specials_named(note.text.substr(note.text.find("specials"))), note.leaves)
+          << note.text;
+  }
+}
+
+// A 21 mm course over a window head is a sliver by default (a third of 65 mm is 21.7); min_cut
+// can be set each way: 100 mm along the course and 10 mm up it lets it pass but not a 90 mm end.
+TEST(CutRules, TheLeastCutIsGivenEachWayAndIsAThirdOfTheElementByDefault) {
+  LayoutSpec spec = facade_spec({0, 0}, 0);
+  EXPECT_NEAR(least_cut(spec, 0), 215.0 / 3, 1e-12);
+  EXPECT_NEAR(least_cut(spec, 1), 65.0 / 3, 1e-12);
+  spec.min_cut = {100, 10};
+  EXPECT_EQ(least_cut(spec, 0), 100);
+  EXPECT_EQ(least_cut(spec, 1), 10);
+  Design d = test::design(4, 2, {{"3/4", "1/2", "2/3"}});
+  const auto cells = elements_to_cover(spec);
+  d.field.size = {cells[0], cells[1], 1};
+  const Layout layout = make_layout(d, curdle(d, 5, d.field), d.field, spec);
+  for (const std::string& v : layout.violations) {
+    const bool wide = v.find("mm wide") != std::string::npos;
+    EXPECT_NE(v.find(wide ? "below 100.0 mm" : "below 10.0 mm"), std::string::npos) << v;
+  }
+  EXPECT_FALSE(layout.violations.empty());
 }
 
 TEST(CutRules, AFacadeReportsTheShareItsOpeningsTake) {

@@ -47,7 +47,8 @@ TEST(SurfaceKind, SliversAreCheckedAndTheLayoutCarriesWhatWasBuilt) {
   EXPECT_EQ(layout.source.seed, 5u);  // the field's seed, without the application's help
   EXPECT_EQ(layout.source.description, "a floor");
   size_t slivers = 0;
-  for (const std::string& v : layout.violations) slivers += v.find("below 75.0 mm") != v.npos;
+  for (const std::string& v : layout.violations)
+    slivers += v.find("below 100.0 mm (a third of the element)") != v.npos;
   EXPECT_EQ(slivers, 3u) << "one 30 mm piece per row";
 }
 

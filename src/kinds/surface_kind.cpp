@@ -9,7 +9,8 @@ std::vector<std::string> SurfaceKind::keys() const {
   std::vector<std::string> keys = reading::surface_keys(surface());
   const std::vector<std::string> own = own_keys();
   keys.insert(keys.end(), own.begin(), own.end());
-  if (laid_on_a_grid()) keys.insert(keys.end(), {"min_cut", "shift", "bond", "zones", "outline"});
+  if (laid_on_a_grid())
+    keys.insert(keys.end(), {"min_cut", "shift", "bond", "zones", "outline", "unit"});
   return keys;
 }
 
@@ -26,7 +27,7 @@ Layout SurfaceKind::build(const Design& design, const CurdField& field, const Bo
                           const LayoutSpec& spec) const {
   Layout layout = lay_grid(design, field, view, spec, openings(spec));
   after_laying(layout, spec);
-  if (laid_on_a_grid()) check_cut_widths(layout, spec);
+  if (laid_on_a_grid()) check_cut_widths(layout, spec, openings(spec));
   count_values(layout, design, spec);
   replace_cells(layout, design, spec);
   return layout;

@@ -141,7 +141,7 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
 
 // The elements of the grid in laying order: rows from the origin corner, and along each row
 // away from it; each cut at the surface's edges, its holes and `cuts`.
-void lay_elements(Layout& layout, const CurdField& field, const LayoutSpec& spec,
+void lay_elements(Layout& layout, const std::vector<uint16_t>& values, const LayoutSpec& spec,
                   const PolygonCuts& cuts) {
   const std::vector<Rect> holes = layout.holes();
   const Box& view = layout.view;
@@ -149,7 +149,6 @@ void lay_elements(Layout& layout, const CurdField& field, const LayoutSpec& spec
   const bool right = from_right(spec.origin);
   const bool top = from_top(spec.origin);
   const int digits = static_cast<int>(std::to_string(std::max(layout.columns, layout.rows)).size());
-  const std::vector<uint16_t> values = values_in(field, view);
   layout.elements.reserve(values.size());
   for (int64_t row = 0; row < layout.rows; ++row) {
     for (int64_t column = 0; column < layout.columns; ++column) {
@@ -199,14 +198,13 @@ void check_cutting_work(const Box& view, const PolygonCuts& cuts) {
         "13 m radius strays 2.4 mm)");
 }
 
-}  // namespace
-
-Layout lay_grid(const Design& design, const CurdField& field, const Box& view,
-                const LayoutSpec& spec, const std::vector<Rect>& openings) {
+// The grid over `view` with the values of its cells (x fastest), `value_count` values in all.
+Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const Box& view,
+                  const LayoutSpec& spec, const std::vector<Rect>& openings) {
   Layout layout;
   layout.kind = spec.kind;
   layout.combine = spec.combine;
-  layout.element_type = std::string(spec.kind->element_noun());
+  layout.element_type = spec.unit.empty() ? std::string(spec.kind->element_noun()) : spec.unit;
   layout.joint = spec.joint;
   layout.joint_colour = spec.joint_colour;
   layout.origin = spec.origin;
@@ -250,9 +248,25 @@ Layout lay_grid(const Design& design, const CurdField& field, const Box& view,
     if (z.rule == ZoneRule::exclude && z.rects.empty()) cuts.holes.push_back(z.polygon);
   check_cutting_work(view, cuts);
   if (!cuts.empty()) layout.cut_away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
-  lay_elements(layout, field, spec, cuts);
-  apply_zones(layout, spec, size_t{1} << design.curds.size());
+  lay_elements(layout, values, spec, cuts);
+  apply_zones(layout, spec, value_count);
   return layout;
+}
+
+}  // namespace
+
+Layout lay_grid(const Design& design, const CurdField& field, const Box& view,
+                const LayoutSpec& spec, const std::vector<Rect>& openings) {
+  return lay_values(values_in(field, view), size_t{1} << design.curds.size(), view, spec, openings);
+}
+
+Layout lay_blank_grid(const LayoutSpec& spec, const std::vector<Rect>& openings) {
+  const auto cells = elements_to_cover(spec);
+  const Box view{{0, 0, 0}, {cells[0], cells[1], 1}};
+  uint32_t most = 0;
+  for (const Zone& z : spec.zones) most = std::max(most, z.value);
+  return lay_values(std::vector<uint16_t>(static_cast<size_t>(cells[0] * cells[1]), 0),
+                    size_t{most} + 1, view, spec, openings);
 }
 
 void count_values(Layout& layout, const Design& design, const LayoutSpec& spec) {

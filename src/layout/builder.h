@@ -37,6 +37,9 @@ inline constexpr uint64_t kMaxCuttingWork = uint64_t{1} << 28;
 // and doors) and excluded zones; value zones applied. For kinds to build on.
 Layout lay_grid(const Design& design, const CurdField& field, const Box& view,
                 const LayoutSpec& spec, const std::vector<Rect>& openings);
+// The grid of a spec with a fixed size over its whole surface, every element of value 0: its
+// pieces and cuts without a curd, to test a shift before it is advised.
+Layout lay_blank_grid(const LayoutSpec& spec, const std::vector<Rect>& openings);
 // The notes on the lattice's first stage, the legend and its counts of the elements laid.
 void count_values(Layout& layout, const Design& design, const LayoutSpec& spec);
 

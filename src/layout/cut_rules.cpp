@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
 
 #include "curdle/stop.h"
 #include "layout/builder.h"
@@ -68,8 +70,9 @@ double narrowest_run(const std::vector<Rect>& pieces, bool along_x) {
 }
 
 double least_cut(const LayoutSpec& spec, int axis) {
-  if (spec.min_cut > 0) return spec.min_cut;
-  return (axis == 0 ? spec.module_w : spec.module_h) / 4;
+  const double given = spec.min_cut[static_cast<size_t>(axis)];
+  if (given > 0) return given;
+  return (axis == 0 ? spec.module_w : spec.module_h) / 3;
 }
 
 ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis) {
@@ -138,54 +141,113 @@ ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis) {
   return advice;
 }
 
-void check_cut_widths(Layout& layout, const LayoutSpec& spec) {
-  const char* rule = spec.min_cut > 0 ? "layout.min_cut" : "a quarter of the element";
-  uint64_t slivers = 0;
-  for (const Element& e : layout.elements) {
+namespace {
+
+// A cut piece narrower than the rule across one axis.
+struct Sliver {
+  size_t element = 0;
+  int axis = 0;
+  double run = 0;     // its narrowest run across that axis, mm
+  const char* where;  // what cut it
+};
+
+std::vector<Sliver> find_slivers(const Layout& layout, const LayoutSpec& spec) {
+  std::vector<Sliver> out;
+  for (size_t i = 0; i < layout.elements.size(); ++i) {
     stop_point();
+    const Element& e = layout.elements[i];
     if (!e.cut) continue;
     const Rect laid = clip(e.nominal, layout.width, layout.height);
     for (int axis = 0; axis < 2; ++axis) {
       // A piece cut along a sloping edge: its extent along each axis.
       const double run =
           narrowest_run(e.outline ? std::vector<Rect>{laid_bounds(e)} : e.shape, axis == 0);
-      const double least = least_cut(spec, axis);
-      if (run >= least - kEps) continue;
+      if (run >= least_cut(spec, axis) - kEps) continue;
       const double laid_extent = axis == 0 ? laid.w : laid.h;
       const double module = axis == 0 ? spec.module_w : spec.module_h;
       const bool at_edge = laid_extent < module - kEps && std::fabs(laid_extent - run) < kEps;
-      layout.violations.push_back(fmt::format("{}: cut to {:.1f} mm {} at {}, below {:.1f} mm ({})",
-                                              e.id, run, axis == 0 ? "wide" : "high",
-                                              e.outline ? "a sloping or curved edge"
-                                              : at_edge ? "the edge"
-                                                        : "an opening",
-                                              least, rule));
-      ++slivers;
+      out.push_back({i, axis, run,
+                     e.outline ? "a sloping or curved edge"
+                     : at_edge ? "the edge"
+                               : "an opening"});
       break;
     }
   }
-  if (!slivers) return;
-  std::string note = fmt::format("{} cut {}{} narrower than {} (see the rule violations)", slivers,
-                                 layout.element_type, slivers == 1 ? " is" : "s are", rule);
-  // No shift to advise when the grid is centred by choice; along x, none under a bond, whose
-  // courses are cut at the ends by design.
-  ShiftAdvice x{spec.shift[0]}, y{spec.shift[1]};  // no change
-  if (!spec.centred) {
-    if (spec.bond <= 0) x = best_shift(layout, spec, 0);
-    y = best_shift(layout, spec, 1);
+  return out;
+}
+
+// "12 of 27.5 x 65 mm, 4 of 215 x 15 mm": the slivers' pieces by their laid size (to the half
+// millimetre), most first; a piece that is not one rectangle (an L round a window's corner, a
+// piece cut along a slope) is "shaped" within that size.
+std::string specials(const Layout& layout, const std::vector<Sliver>& slivers) {
+  std::map<std::string, uint64_t> sizes;
+  for (const Sliver& s : slivers) {
+    const Element& e = layout.elements[s.element];
+    const Rect r = laid_bounds(e);
+    ++sizes[fmt::format("{:g} x {:g} mm{}", std::round(r.w * 2) / 2, std::round(r.h * 2) / 2,
+                        e.outline || e.shape.size() > 1 ? " shaped" : "")];
   }
-  if (x.slivers + y.slivers < x.now + y.now) {
-    note += fmt::format(
-        "; layout.shift = [{:g}, {:g}] leaves {} instead of {}, counted along "
-        "rows and columns",
-        x.shift + 0.0, y.shift + 0.0, x.slivers + y.slivers, x.now + y.now);
-    if (spec.size) {
-      LayoutSpec moved = spec;
-      moved.shift = {x.shift, y.shift};
-      const auto cells = elements_to_cover(moved);
-      note += fmt::format(" (the window then takes {} x {} cells)", cells[0], cells[1]);
-    }
+  std::vector<std::pair<uint64_t, std::string>> most;
+  for (const auto& [size, n] : sizes) most.push_back({n, size});
+  std::stable_sort(most.begin(), most.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string out;
+  for (size_t i = 0; i < most.size() && i < 6; ++i)
+    out += fmt::format("{}{} of {}", i ? ", " : "", most[i].first, most[i].second);
+  if (most.size() > 6) out += fmt::format(" and {} other sizes", most.size() - 6);
+  return out;
+}
+
+const char* rule_name(const LayoutSpec& spec) {
+  return spec.min_cut[0] > 0 || spec.min_cut[1] > 0 ? "layout.min_cut" : "a third of the element";
+}
+
+}  // namespace
+
+void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<Rect>& openings) {
+  const std::vector<Sliver> slivers = find_slivers(layout, spec);
+  if (slivers.empty()) return;
+  for (const Sliver& s : slivers)
+    layout.violations.push_back(fmt::format(
+        "{}: cut to {:.1f} mm {} at {}, below {:.1f} mm ({})", layout.elements[s.element].id, s.run,
+        s.axis == 0 ? "wide" : "high", s.where, least_cut(spec, s.axis), rule_name(spec)));
+  std::string note =
+      fmt::format("{} cut {}{} narrower than {} (see the rule violations)", slivers.size(),
+                  layout.element_type, slivers.size() == 1 ? " is" : "s are", rule_name(spec));
+  if (spec.centred || !spec.size) {
+    note += fmt::format("; lay specials or closers: {}", specials(layout, slivers));
+    return layout.notes.push_back(note);
   }
+  // The counts along rows and columns find each axis's best shift; laying the surface with them
+  // (both, or one) checks what they leave, and only a shift that leaves fewer is advised.
+  const ShiftAdvice x = best_shift(layout, spec, 0), y = best_shift(layout, spec, 1);
+  std::optional<std::pair<Layout, LayoutSpec>> best;
+  size_t fewest = slivers.size();
+  for (const std::array<double, 2> shift :
+       {std::array{x.shift, y.shift}, std::array{x.shift, spec.shift[1]},
+        std::array{spec.shift[0], y.shift}}) {
+    if (shift == spec.shift) continue;
+    LayoutSpec trial = spec;
+    trial.shift = shift;
+    Layout blank = lay_blank_grid(trial, openings);
+    const size_t left = find_slivers(blank, trial).size();
+    if (left < fewest) fewest = left, best.emplace(std::move(blank), std::move(trial));
+  }
+  if (!best) {
+    note += fmt::format("; no shift of the grid leaves fewer: lay specials or closers, {}",
+                        specials(layout, slivers));
+    return layout.notes.push_back(note);
+  }
+  const auto& [blank, trial] = *best;
+  const auto cells = elements_to_cover(trial);
+  note += fmt::format(
+      "; layout.shift = [{:g}, {:g}] leaves {} (checked by laying it; the window then takes {} x "
+      "{} cells)",
+      trial.shift[0] + 0.0, trial.shift[1] + 0.0, fewest ? std::to_string(fewest) : "none",
+      cells[0], cells[1]);
+  if (fewest)
+    note += fmt::format("; what it leaves needs specials or closers: {}",
+                        specials(blank, find_slivers(blank, trial)));
   layout.notes.push_back(note);
 }
 

@@ -14,14 +14,15 @@ namespace curdle {
 // thinner leg, however its rectangles happen to be split.
 double narrowest_run(const std::vector<Rect>& pieces, bool along_x);
 
-// The narrowest cut piece allowed across x (axis 0) or y (1): layout.min_cut, or a quarter of
-// the element when it is not given.
+// The narrowest cut piece allowed across x (axis 0) or y (1): layout.min_cut's, or a third of
+// the element that way when it is not given (a 65 mm brick course under 21.7 mm is refused).
 double least_cut(const LayoutSpec& spec, int axis);
 
 // Tile, paving and facade layouts: every cut piece narrower than the least cut goes to the
-// violations, with where it was cut (an edge or an opening); a note gives how many and the
-// layout.shift that would leave the fewest.
-void check_cut_widths(Layout& layout, const LayoutSpec& spec);
+// violations, with where it was cut (an edge or an opening); a note gives how many, the
+// layout.shift that leaves fewer when laying the surface with it (over `openings`) shows that
+// it does, and the sizes and counts of the specials or closers that no shift clears.
+void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<Rect>& openings);
 
 // The shift along x (axis 0) or y (1) that leaves the fewest slivers, and how many it leaves
 // and the current shift leaves, counted row by row (or column by column) across the surface

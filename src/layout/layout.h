@@ -160,8 +160,11 @@ struct LayoutSpec {
   // The grid moved this far back from the origin corner along x and y, so that the first
   // column and row are cut to module - shift (tile, paving, facade): how slivers are avoided.
   std::array<double, 2> shift{0, 0};
-  double min_cut = 0;       // narrowest cut piece allowed, mm; 0: a quarter of the element each way
+  // The narrowest cut piece allowed across x and across y, mm; 0: a third of the element that way.
+  std::array<double, 2> min_cut{0, 0};
   std::vector<Zone> zones;  // tile, paving, facade
+  // layout.unit: one element as the site calls it ("brick", "sett"); empty: the kind's noun.
+  std::string unit;
   // layout.outline: the surface to cover, a simple polygon whose edges run along x and y, in mm
   // from the origin of `size` (which is then its bounding rectangle's far corner); empty: the
   // whole rectangle. Tile, paving, facade.

@@ -132,6 +132,25 @@ void read_bond(TableReader& r, LayoutSpec& spec) {
     r.fail("bond", "needs combine = \"mix\": kept curds are drawn as stripes of a stacked grid");
 }
 
+// layout.min_cut: one width for both ways, or [across x, across y] (a brick's 70 mm along the
+// course and 22 mm up it), each at most the element that way.
+void read_min_cut(TableReader& r, LayoutSpec& spec) {
+  const toml::node* n = r.get("min_cut");
+  if (!n) return;
+  const std::string allowed = fmt::format(
+      "must be millimetres, one number for both ways or [across x, across y], each from 0 up to "
+      "the element ({:g} x {:g} mm); e.g. [70, 22] for bricks cut to at least 70 mm long and "
+      "22 mm high; 0 or absent: a third of the element",
+      spec.module_w, spec.module_h);
+  const toml::array* a = n->as_array();
+  if (a && a->size() != 2) r.fail("min_cut", allowed);
+  for (size_t i = 0; i < 2; ++i) {
+    const auto v = finite_number(a ? a->get(i) : n);
+    if (!v || *v < 0 || *v > (i ? spec.module_h : spec.module_w)) r.fail("min_cut", allowed);
+    spec.min_cut[i] = *v;
+  }
+}
+
 }  // namespace
 
 // layout.min_cut and layout.shift: the narrowest cut piece, and the grid moved to avoid slivers.
@@ -146,9 +165,14 @@ void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec) {
     r.fail(sloping_zone ? "zones" : "outline",
            "has sloping or curved edges, which need combine = \"mix\": kept curds are drawn as "
            "stripes of whole rectangles");
-  spec.min_cut = read_mm(r, "min_cut", 0, 0);
-  if (spec.min_cut > std::max(spec.module_w, spec.module_h))
-    r.fail("min_cut", "must be at most the element's size; e.g. 50 for pieces of at least 50 mm");
+  read_min_cut(r, spec);
+  const std::string unit_allowed =
+      "must be the name of one element as the site calls it, 1 to 40 characters, e.g. "
+      "\"brick\" or \"sett\" (notes and keys add an s for more than one)";
+  if (const auto unit = read_name(r, "unit", unit_allowed)) {
+    if (unit->empty() || unit->size() > 40) r.fail("unit", unit_allowed);
+    spec.unit = *unit;
+  }
   const toml::node* n = r.get("shift");
   if (spec.centred) {
     if (n) r.fail("shift", "cannot be given with origin = \"centre\", which works the shift out");
