@@ -338,8 +338,15 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   draw_zones(cr, layout, v, false);
   colour(cr, Rgb{85, 85, 85});
   cairo_set_line_width(cr, 0.1);
-  for (const InstallerPiece& p : plan.pieces)
+  for (const InstallerPiece& p : plan.pieces) {
+    if (p.outline) {
+      ring_paths(cr, p.outline->rings, v);
+      cairo_stroke(cr);
+      continue;
+    }
     for (const Rect& r : p.parts) v.rect(cr, r), cairo_stroke(cr);
+  }
+  draw_boundary(cr, layout, v);
   draw_labels(cr, plan, v, index);
   cairo_restore(cr);
   // The start corner, when it is on this sheet.

@@ -162,6 +162,30 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
   }
 }
 
+void ring_paths(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {
+  cairo_new_path(cr);
+  for (const Ring& ring : rings) {
+    for (size_t i = 0; i < ring.size(); ++i)
+      (i ? cairo_line_to : cairo_move_to)(cr, v.x(ring[i][0]), v.y(ring[i][1]));
+    cairo_close_path(cr);
+  }
+}
+
+void draw_boundary(cairo_t* cr, const Layout& layout, const View& v) {
+  if (layout.width <= 0 || layout.height <= 0) return;
+  cairo_save(cr);
+  colour(cr, kInk);
+  cairo_set_line_width(cr, 0.5);
+  if (layout.outline.empty()) {
+    cairo_new_path(cr);
+    v.rect(cr, Rect{0, 0, layout.width, layout.height});
+  } else {
+    ring_paths(cr, {layout.outline}, v);
+  }
+  cairo_stroke(cr);
+  cairo_restore(cr);
+}
+
 // A white ISO sheet with its frame (ISO 5457 margins) and the line above the title strip.
 void frame(cairo_t* cr, double w, double h) {
   colour(cr, Rgb{255, 255, 255});

@@ -53,6 +53,12 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint);
 // no name lies on an ID.
 void draw_zones(cairo_t* cr, const Layout& layout, const View& v, bool named);
 
+// Closed paths along `rings` (layout mm), ready to fill or stroke.
+void ring_paths(cairo_t* cr, const std::vector<Ring>& rings, const View& v);
+
+// The surface's boundary, its outline or its rectangle, in a heavy line: where setting out ends.
+void draw_boundary(cairo_t* cr, const Layout& layout, const View& v);
+
 // A white ISO sheet with its frame (ISO 5457 margins) and the line above the title strip.
 void frame(cairo_t* cr, double w, double h);
 

@@ -281,7 +281,7 @@ std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
     const Rect bounds = laid_bounds(e);
     pieces.push_back(
         {e.id, e.shape.empty() || e.circle || e.outline ? std::vector<Rect>{bounds} : e.shape,
-         bounds});
+         bounds, e.outline ? &*e.outline : nullptr});
   }
   return pieces;
 }

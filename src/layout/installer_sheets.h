@@ -37,6 +37,7 @@ struct InstallerPiece {
   std::string id;
   std::vector<Rect> parts;
   Rect bounds;
+  const Outline* outline = nullptr;  // a piece cut along a sloping or curved edge: drawn by it
 };
 
 struct InstallerLabel {
