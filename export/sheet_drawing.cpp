@@ -110,14 +110,7 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
   colour(cr, Rgb{255, 255, 255});  // beyond the outline: paper
   for (const Rect& o : layout.outside) v.rect(cr, o), cairo_fill(cr);
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);  // beyond sloping edges, in sloping zones
-  for (const Outline& o : layout.cut_away) {
-    for (const Ring& ring : o.rings) {
-      for (size_t i = 0; i < ring.size(); ++i)
-        (i ? cairo_line_to : cairo_move_to)(cr, v.x(ring[i][0]), v.y(ring[i][1]));
-      cairo_close_path(cr);
-    }
-    cairo_fill(cr);
-  }
+  for (const Outline& o : layout.cut_away) ring_paths(cr, o.rings, v), cairo_fill(cr);
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
   for (const Layout::ViewCell& c : layout.views) {
     colour(cr, layout.legend[c.value].colour, alpha);
@@ -141,9 +134,7 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
     }
     if (e.outline) {
       colour(cr, c, alpha);
-      for (const Ring& ring : e.outline->rings)
-        for (size_t i = 0; i < ring.size(); ++i)
-          (i ? cairo_line_to : cairo_move_to)(cr, v.x(ring[i][0]), v.y(ring[i][1]));
+      ring_paths(cr, e.outline->rings, v);
       cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
       cairo_fill(cr);
       cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);

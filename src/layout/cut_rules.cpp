@@ -221,7 +221,12 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<
   // The counts along rows and columns find each axis's best shift; laying the surface with them
   // (both, or one) checks what they leave, and only a shift that leaves fewer is advised.
   const ShiftAdvice x = best_shift(layout, spec, 0), y = best_shift(layout, spec, 1);
-  std::optional<std::pair<Layout, LayoutSpec>> best;
+  struct Trial {
+    LayoutSpec spec;
+    Layout blank;
+    std::vector<Sliver> left;
+  };
+  std::optional<Trial> best;
   size_t fewest = slivers.size();
   for (const std::array<double, 2> shift :
        {std::array{x.shift, y.shift}, std::array{x.shift, spec.shift[1]},
@@ -230,24 +235,26 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<
     LayoutSpec trial = spec;
     trial.shift = shift;
     Layout blank = lay_blank_grid(trial, openings);
-    const size_t left = find_slivers(blank, trial).size();
-    if (left < fewest) fewest = left, best.emplace(std::move(blank), std::move(trial));
+    std::vector<Sliver> left = find_slivers(blank, trial);
+    if (left.size() < fewest) {
+      fewest = left.size();
+      best.emplace(Trial{std::move(trial), std::move(blank), std::move(left)});
+    }
   }
   if (!best) {
     note += fmt::format("; no shift of the grid leaves fewer: lay specials or closers, {}",
                         specials(layout, slivers));
     return layout.notes.push_back(note);
   }
-  const auto& [blank, trial] = *best;
-  const auto cells = elements_to_cover(trial);
+  const auto cells = elements_to_cover(best->spec);
   note += fmt::format(
       "; layout.shift = [{:g}, {:g}] leaves {} (checked by laying it; the window then takes {} x "
       "{} cells)",
-      trial.shift[0] + 0.0, trial.shift[1] + 0.0, fewest ? std::to_string(fewest) : "none",
-      cells[0], cells[1]);
+      best->spec.shift[0] + 0.0, best->spec.shift[1] + 0.0,
+      fewest ? std::to_string(fewest) : "none", cells[0], cells[1]);
   if (fewest)
     note += fmt::format("; what it leaves needs specials or closers: {}",
-                        specials(blank, find_slivers(blank, trial)));
+                        specials(best->blank, best->left));
   layout.notes.push_back(note);
 }
 
