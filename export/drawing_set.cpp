@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <optional>
 
 #include "curdle/error.h"
 #include "curdle/stop.h"
@@ -82,7 +83,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   const size_t columns = room >= 200 ? 2 : 1;
   const double column_w = room / static_cast<double>(columns);
   for (const LegendEntry& e : layout.legend) {
-    if (layout.legend.size() > 16 && e.count == 0) continue;
+    if (e.count == 0) continue;  // only what the plan shows
     if (shown == 8 * columns) break;
     const double x = kLeftMargin + 3 + column_w * static_cast<double>(shown / 8);
     const double y = strip + 4 + 5.6 * static_cast<double>(shown % 8);
@@ -121,44 +122,51 @@ struct SheetContents {
   // The key: the elements whose centre the sheet shows, by what they are made of, as drawn.
   struct KeyLine {
     std::vector<Rgb> swatch;  // one colour, or keep mode's stripes
+    uint32_t value = 0;       // its hatch on a coursed set
     size_t count = 0;
   };
   std::map<std::pair<std::string, uint32_t>, KeyLine> key;  // by material, then value
 };
 
 // The plan and what every sheet reads from the whole layout, worked out once for the set.
-struct InstallerSet {
+struct InstallerDrawing {
   const InstallerPlan& plan;
   LayingExtents extents;
   std::vector<SheetContents> contents;
 };
 
-InstallerSet installer_set(const Layout& layout, const InstallerPlan& plan) {
-  InstallerSet set{plan, laying_extents(layout), std::vector<SheetContents>(plan.sheets.size())};
-  const bool elements = layout.sheets.empty();  // else the pieces are fabrication sheets
-  for (size_t i = 0; i < plan.labels.size(); ++i) {
-    SheetContents& c = set.contents[plan.labels[i].sheet];
-    ++c.pieces;
-    if (!elements) continue;
-    const Element& e = layout.elements[i];  // pieces are the elements, in order
-    c.row0 = std::min(c.row0, e.row), c.row1 = std::max(c.row1, e.row);
-    c.column0 = std::min(c.column0, e.column), c.column1 = std::max(c.column1, e.column);
-  }
-  for (const Element& e : layout.elements) {
-    const Rect b = laid_bounds(e);
+InstallerDrawing installer_set(const Layout& layout, const InstallerPlan& plan) {
+  InstallerDrawing set{plan, laying_extents(layout),
+                       std::vector<SheetContents>(plan.sheets.size())};
+  // Each piece belongs to the sheet that holds its centre, as its label does.
+  auto sheet_holding = [&](const Rect& b) -> std::optional<size_t> {
     const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
     for (size_t i = 0; i < plan.sheets.size(); ++i) {
       const Rect& w = plan.sheets[i].window;
-      if (cx < w.x || cx >= w.right() || cy < w.y || cy >= w.top()) continue;
-      SheetContents::KeyLine& line =
-          set.contents[i].key[{piece_material(layout, e), e.type.empty() ? e.value : 0}];
-      if (line.count++ == 0) {
-        const LegendEntry& l = layout.legend[e.value];
-        line.swatch = e.type.empty() && layout.combine == Combine::keep && l.parts.size() > 1
-                          ? l.parts
-                          : std::vector<Rgb>{piece_colour(layout, e)};
-      }
-      break;
+      if (cx >= w.x && cx < w.right() && cy >= w.y && cy < w.top()) return i;
+    }
+    return std::nullopt;
+  };
+  for (const InstallerPiece& p : plan.pieces)
+    if (const auto i = sheet_holding(p.bounds)) ++set.contents[*i].pieces;
+  const bool elements = layout.sheets.empty();  // else the pieces are fabrication sheets
+  for (const Element& e : layout.elements) {
+    stop_point();
+    const auto i = sheet_holding(laid_bounds(e));
+    if (!i) continue;
+    SheetContents& c = set.contents[*i];
+    if (elements) {
+      c.row0 = std::min(c.row0, e.row), c.row1 = std::max(c.row1, e.row);
+      c.column0 = std::min(c.column0, e.column), c.column1 = std::max(c.column1, e.column);
+    }
+    const uint32_t value = e.type.empty() ? e.value : 0;
+    SheetContents::KeyLine& line = c.key[{piece_material(layout, e), value}];
+    if (line.count++ == 0) {
+      const LegendEntry& l = layout.legend[e.value];
+      line.value = e.value;
+      line.swatch = e.type.empty() && layout.combine == Combine::keep && l.parts.size() > 1
+                        ? l.parts
+                        : std::vector<Rgb>{piece_colour(layout, e)};
     }
   }
   return set;
@@ -166,7 +174,8 @@ InstallerSet installer_set(const Layout& layout, const InstallerPlan& plan) {
 
 // The key of one installer's sheet: a swatch as drawn, the material and how many of it the
 // sheet holds, in columns of six lines from (x, y) within `width`.
-void draw_sheet_key(cairo_t* cr, const SheetContents& held, double x, double y, double width) {
+void draw_sheet_key(cairo_t* cr, const SheetContents& held, bool coursed, double x, double y,
+                    double width) {
   text(cr, x, y, "key: on this sheet", 2, Align::left, false, true);
   const size_t columns = std::max<size_t>(1, static_cast<size_t>(width / 60));
   const double column_w = width / static_cast<double>(columns);
@@ -180,10 +189,17 @@ void draw_sheet_key(cairo_t* cr, const SheetContents& held, double x, double y, 
     const double ly = y + 2.5 + 4.5 * static_cast<double>(shown % 6);
     ++shown;
     for (size_t i = 0; i < line.swatch.size(); ++i) {
-      colour(cr, line.swatch[i], kFaintAlpha);  // as the sheet draws the pieces
+      colour(cr, line.swatch[i], coursed ? 1 : kFaintAlpha);  // as the sheet draws the pieces
       const double part = 6.0 / static_cast<double>(line.swatch.size());
       cairo_rectangle(cr, lx + part * static_cast<double>(i), ly, part, 3);
       cairo_fill(cr);
+    }
+    if (coursed) {
+      cairo_save(cr);
+      cairo_rectangle(cr, lx, ly, 6, 3);
+      cairo_clip(cr);
+      hatch(cr, line.value, line.swatch.front(), lx, ly, lx + 6, ly + 3);
+      cairo_restore(cr);
     }
     colour(cr, kInk);
     box(cr, lx, ly, 6, 3, 0.2);
@@ -249,6 +265,10 @@ void draw_match_lines(cairo_t* cr, const InstallerPlan& plan, const View& v, siz
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0);
     const std::string t = match_caption_text(c);
+    colour(cr, Rgb{255, 255, 255});  // on white, over whatever is laid there
+    v.rect(cr, c.box);
+    cairo_fill(cr);
+    colour(cr, kBlue);
     const double cx = v.x(c.box.x + c.box.w / 2), cy = v.y(c.box.y + c.box.h / 2);
     if (c.vertical)
       text(cr, cx + kMatchCaptionMm / 2, cy, t, kMatchCaptionMm, Align::centre, true);
@@ -259,10 +279,17 @@ void draw_match_lines(cairo_t* cr, const InstallerPlan& plan, const View& v, siz
 
 // Row numbers on the left, column numbers along the bottom (under the viewport), where their
 // rows show.
-void draw_course_numbers(cairo_t* cr, const InstallerSet& set, const InstallerSheet& sheet,
+void draw_course_numbers(cairo_t* cr, const InstallerDrawing& set, const InstallerSheet& sheet,
                          const View& v) {
   const double B = v.top + set.plan.viewport[1];
+  // A coursed set numbers courses and columns alone (no IDs carry R and C), under headings.
+  const bool coursed = set.plan.coursed;
+  const std::string row_prefix = coursed ? "" : "R", column_prefix = coursed ? "" : "C";
   colour(cr, kRed);
+  if (coursed) {
+    text(cr, v.left - 10, v.top + set.plan.viewport[1] / 2, "course", 2, Align::centre, true);
+    text(cr, v.left - 1.5, B + 4.5, "column", 2, Align::right);
+  }
   double last = -1e300;
   for (const auto& [row, extent] : set.extents.rows) {
     const double mid = (extent.first + extent.second) / 2;
@@ -270,14 +297,14 @@ void draw_course_numbers(cairo_t* cr, const InstallerSet& set, const InstallerSh
     const double y = v.y(mid);
     if (std::fabs(y - last) < 3.2) continue;
     last = y;
-    text(cr, v.left - 1.5, y + 1.25, fmt::format("R{}", row), 2.5, Align::right);
+    text(cr, v.left - 1.5, y + 1.25, fmt::format("{}{}", row_prefix, row), 2.5, Align::right);
   }
   last = -1e300;
   for (const auto& [column, extent] : set.extents.columns) {
     const double mid = (extent.first + extent.second) / 2;
     if (mid < sheet.window.x || mid > sheet.window.right()) continue;
     const double x = v.x(mid);
-    const std::string t = fmt::format("C{}", column);
+    const std::string t = fmt::format("{}{}", column_prefix, column);
     if (std::fabs(x - last) < text_width(cr, t, 2.5) + 1.5) continue;
     last = x;
     text(cr, x, B + 4.5, t, 2.5, Align::centre);
@@ -319,8 +346,8 @@ void draw_key_plan(cairo_t* cr, const Layout& layout, const InstallerPlan& plan,
   cairo_fill(cr);
 }
 
-void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet& set, size_t index,
-                          size_t total) {
+void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDrawing& set,
+                          size_t index, size_t total) {
   const InstallerPlan& plan = set.plan;
   const double w = plan.landscape ? plan.paper.long_side : plan.paper.short_side;
   const double h = plan.landscape ? plan.paper.short_side : plan.paper.long_side;
@@ -334,7 +361,8 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   cairo_save(cr);
   v.rect(cr, sheet.window);  // the window is the viewport, or less where it ends at a joint
   cairo_clip(cr);
-  draw_pieces(cr, layout, v, true);
+  draw_pieces(cr, layout, v, !plan.coursed);
+  if (plan.coursed) draw_hatches(cr, layout, v);
   draw_zones(cr, layout, v, false);
   colour(cr, Rgb{85, 85, 85});
   cairo_set_line_width(cr, 0.1);
@@ -372,16 +400,23 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerSet&
   // The key takes the right part of the strip beside the title block, the notes the left.
   const double room = w - kMargin - title_width(w) - 4 - info_x;
   const double key_w = std::min(room * 0.45, 110.0), info_w = room - key_w - 6;
-  draw_sheet_key(cr, set.contents[index], info_x + info_w + 4, strip + 6, key_w);
-  const std::string holds = pieces == 0 ? "no pieces"
-                            : !layout.sheets.empty()
-                                ? fmt::format("{} sheet{}", pieces, pieces == 1 ? "" : "s")
-                                : fmt::format("{} pieces: rows {} to {}, columns {} to {}", pieces,
-                                              held.row0, held.row1, held.column0, held.column1);
+  draw_sheet_key(cr, set.contents[index], plan.coursed, info_x + info_w + 4, strip + 6, key_w);
+  const std::string unit = legend_unit(layout);
+  const std::string holds =
+      pieces == 0 ? "no pieces"
+      : !layout.sheets.empty()
+          ? fmt::format("{} sheet{}", pieces, pieces == 1 ? "" : "s")
+          : fmt::format("{}: {} {} to {}, columns {} to {}", legend_count(layout, pieces),
+                        plan.coursed ? "courses" : "rows", held.row0, held.row1, held.column0,
+                        held.column1);
   std::vector<std::string> info = {
       fmt::format("installer's sheet {} of {}: grid row {}, column {}",
                   installer_sheet_number(index), total, sheet.row + 1, sheet.column + 1),
-      holds, fmt::format("IDs {:.1f} mm high; a label off its piece points to it", plan.text_mm)};
+      holds,
+      plan.coursed
+          ? fmt::format("each {} in its key's colour and hatch", unit)
+          : fmt::format("IDs {:.1f} mm high; a label off its piece points to it", plan.text_mm)};
+  if (plan.coursed) info.push_back("courses numbered on the left, columns below");
   if (plan.unplaced)
     info.push_back(fmt::format("{} labels found no room: use a larger sheet", plan.unplaced));
   info = fit_lines(cr, info, info_w, 2);
@@ -440,7 +475,7 @@ void write_layout_pdf(std::ostream& out, const Layout& layout, const InstallerPl
   cairo_scale(cr, kPointsPerMm, kPointsPerMm);
   draw_overview(cr, layout, overview, total, nullptr);
   cairo_show_page(cr);
-  const InstallerSet set = installer_set(layout, plan);
+  const InstallerDrawing set = installer_set(layout, plan);
   const auto next = size(plan.paper, plan.landscape);
   cairo_pdf_surface_set_size(surface, next[0], next[1]);
   for (size_t i = 0; i < plan.sheets.size(); ++i) {

@@ -31,19 +31,38 @@ std::string hole_layer(double diameter) { return "HOLE_D" + mm_text(diameter); }
 
 namespace {
 
-// `text` for a DXF of AutoCAD 2000, which has no UTF-8: ASCII as it is, but `forbidden` and
-// control characters (a line break would start a group code of its own) as `instead`, and
-// every other character as DXF's \U+XXXX, which AutoCAD, ezdxf, GDAL and LibreCAD decode.
+// Windows-1252's bytes 0x80 to 0x9F, the characters they stand for (0: none); 0xA0 to 0xFF
+// stand for U+00A0 to U+00FF.
+constexpr uint16_t kCp1252High[32] = {
+    0x20AC, 0,      0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
+    0x2039, 0x0152, 0,      0x017D, 0,      0,      0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
+    0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0,      0x017E, 0x0178};
+
+// The Windows-1252 byte for a character, 0 when it has none.
+unsigned char cp1252_byte(uint32_t c) {
+  if (c >= 0xA0 && c <= 0xFF) return static_cast<unsigned char>(c);
+  for (unsigned i = 0; i < 32; ++i)
+    if (kCp1252High[i] == c) return static_cast<unsigned char>(0x80 + i);
+  return 0;
+}
+
+// `text` for a DXF of AutoCAD 2000, which has no UTF-8: its header names the code page
+// ANSI_1252, so the accented letters of the Latin scripts (Grès cérame) are their one byte
+// there, as ezdxf writes them and every reader (AutoCAD, ezdxf, GDAL, LibreCAD) decodes them;
+// any other character is DXF's \U+XXXX, which AutoCAD and LibreCAD decode. `forbidden` and
+// control characters (a line break would start a group code of its own) become `instead`.
 std::string dxf_encoded(const std::string& text, std::string_view forbidden, char instead) {
   std::string out;
   for (size_t i = 0; i < text.size();) {
     const uint32_t c = next_code_point(text, i);
-    if (c >= 0x80)
-      out += fmt::format("\\U+{:04X}", c);
-    else if (c < 0x20 || c == 0x7F || forbidden.find(static_cast<char>(c)) != std::string::npos)
+    if (c >= 0x80) {
+      const unsigned char b = cp1252_byte(c);
+      out += b ? std::string(1, static_cast<char>(b)) : fmt::format("\\U+{:04X}", c);
+    } else if (c < 0x20 || c == 0x7F || forbidden.find(static_cast<char>(c)) != std::string::npos) {
       out += instead;
-    else
+    } else {
       out += static_cast<char>(c);
+    }
   }
   return out;
 }
@@ -65,6 +84,8 @@ DxfDocument::DxfDocument(const std::filesystem::path& path, const std::vector<Dx
   DL_WriterA& dw = *dw_;
   dxf_.writeHeader(dw);
   // Millimetres, metric, and where the drawing lies, so that it opens at true size and in view.
+  dw.dxfString(9, "$DWGCODEPAGE");  // text is Windows-1252 (dxf_encoded)
+  dw.dxfString(3, "ANSI_1252");
   dw.dxfString(9, "$INSUNITS");
   dw.dxfInt(70, 4);
   dw.dxfString(9, "$MEASUREMENT");

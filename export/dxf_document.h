@@ -20,10 +20,11 @@ struct DxfLayer {
   bool plot = true;  // false: shown on screen, never plotted or cut (IDs, notes)
 };
 
-// A valid DXF layer name: characters DXF forbids become '_', non-ASCII letters \U+XXXX.
+// A valid DXF layer name: characters DXF forbids become '_', letters beyond ASCII are in
+// Windows-1252 (the header's $DWGCODEPAGE) where it has them, else \U+XXXX.
 std::string dxf_layer_name(const std::string& name);
 // Text as a DXF TEXT entity holds it: one line (control characters and line breaks become
-// spaces, so that no text can write group codes of its own), other than ASCII as \U+XXXX.
+// spaces, so that no text can write group codes of its own), encoded as layer names are.
 std::string dxf_text(const std::string& text);
 
 // The layer of round openings of one diameter, in the layout's DXF and the sheets' alike:

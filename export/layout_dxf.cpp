@@ -51,7 +51,11 @@ Rect drawn_extents(const Layout& layout, double caption_height, size_t caption_l
 }  // namespace
 
 void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
-  std::vector<DxfLayer> layers{{"OUTLINE", kInk, true}, {"OPENINGS", Rgb{90, 90, 90}, true}};
+  // Layers named for what they hold: a façade's windows are OPENINGS, a planter kept free of
+  // paving is one of the ZONES.
+  std::vector<DxfLayer> layers{{"OUTLINE", kInk, true}};
+  if (layout.openings_given > 0) layers.push_back({"OPENINGS", Rgb{90, 90, 90}, true});
+  if (!layout.zones.empty()) layers.push_back({"ZONES", Rgb{68, 81, 92}, true});
   std::map<std::string, bool> seen;
   for (const Element& e : layout.elements) {
     stop_point();
@@ -70,7 +74,9 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
     dxf.polygon("OUTLINE", layout.outline);
   else if (layout.views.empty())  // blocks are drawn as views, not a surface
     dxf.rect("OUTLINE", surface);
-  for (const Rect& o : layout.openings) dxf.rect("OPENINGS", o);
+  for (size_t i = 0; i < layout.openings_given; ++i) dxf.rect("OPENINGS", layout.openings[i]);
+  for (const ZoneCount& z : layout.zones)
+    if (!z.polygon.empty()) dxf.polygon("ZONES", z.polygon);
   for (const Element& e : layout.elements) {
     stop_point();
     const std::string layer = layer_of(layout, e);

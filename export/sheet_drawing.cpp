@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "curdle/stop.h"
 #include "export/svg.h"
@@ -155,6 +156,69 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
 
 void ring_paths(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {
   cairo_new_path(cr);
+  add_rings(cr, rings, v);
+}
+
+void hatch(cairo_t* cr, uint32_t value, const Rgb& under, double x0, double y0, double x1,
+           double y1) {
+  if (value == 0) return;
+  // Directions of the lines (degrees from the paper's x axis), per value within each eight.
+  static const std::vector<std::vector<double>> kStyles = {{45}, {135},   {45, 135}, {0},
+                                                           {90}, {0, 90}, {45}};
+  const size_t round = (value - 1) / kStyles.size();
+  const size_t style = (value - 1) % kStyles.size();
+  const double spacing =
+      (style + 1 == kStyles.size() ? 0.6 : 1.2) + 0.6 * static_cast<double>(round);
+  const double luminance = 0.299 * under.r + 0.587 * under.g + 0.114 * under.b;
+  colour(cr, luminance < 110 ? Rgb{255, 255, 255} : kInk, 0.85);
+  cairo_set_line_width(cr, 0.12);
+  const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+  const double reach = std::hypot(x1 - x0, y1 - y0) / 2 + spacing;
+  for (const double degrees : kStyles[style]) {
+    const double a = degrees * M_PI / 180, dx = std::cos(a), dy = -std::sin(a);
+    for (double t = -reach; t <= reach; t += spacing) {  // offsets along the normal (-dy, dx)
+      const double px = cx - dy * t, py = cy + dx * t;
+      cairo_move_to(cr, px - dx * reach, py - dy * reach);
+      cairo_line_to(cr, px + dx * reach, py + dy * reach);
+    }
+  }
+  cairo_stroke(cr);
+}
+
+void draw_hatches(cairo_t* cr, const Layout& layout, const View& v) {
+  std::map<uint32_t, std::vector<const Element*>> by_value;
+  for (const Element& e : layout.elements) {
+    const Rect b = laid_bounds(e);
+    if (b.right() >= v.window.x && b.x <= v.window.right() && b.top() >= v.window.y &&
+        b.y <= v.window.top() && e.value != 0)
+      by_value[e.value].push_back(&e);
+  }
+  const double x0 = v.x(v.window.x), x1 = v.x(v.window.right());
+  const double y0 = v.y(v.window.top()), y1 = v.y(v.window.y);
+  for (const auto& [value, elements] : by_value) {
+    stop_point();
+    cairo_save(cr);
+    cairo_new_path(cr);
+    for (const Element* e : elements) {
+      if (e->circle) {
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, v.x(e->circle->cx), v.y(e->circle->cy), e->circle->d / 2 / v.scale, 0,
+                  2 * M_PI);
+      } else if (e->outline) {
+        add_rings(cr, e->outline->rings, v);
+      } else {
+        for (const Rect& r : e->shape.empty() ? std::vector<Rect>{laid_bounds(*e)} : e->shape)
+          v.rect(cr, r);
+      }
+    }
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+    cairo_clip(cr);
+    hatch(cr, value, piece_colour(layout, *elements.front()), x0, y0, x1, y1);
+    cairo_restore(cr);
+  }
+}
+
+void add_rings(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {
   for (const Ring& ring : rings) {
     for (size_t i = 0; i < ring.size(); ++i)
       (i ? cairo_line_to : cairo_move_to)(cr, v.x(ring[i][0]), v.y(ring[i][1]));

@@ -53,8 +53,19 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint);
 // no name lies on an ID.
 void draw_zones(cairo_t* cr, const Layout& layout, const View& v, bool named);
 
-// Closed paths along `rings` (layout mm), ready to fill or stroke.
+// Closed paths along `rings` (layout mm) added to the current path; ring_paths starts a new
+// one, ready to fill or stroke.
+void add_rings(cairo_t* cr, const std::vector<Ring>& rings, const View& v);
 void ring_paths(cairo_t* cr, const std::vector<Ring>& rings, const View& v);
+
+// A hatch per value, so that a coursed set reads in black and white too: value 0 plain, then
+// one diagonal, the other, both, level lines, upright lines, a square grid and close
+// diagonals, wider apart for each further eight values; in ink over light colours and in
+// white over dark ones. `hatch` fills the current clip within the paper box (x0, y0)-(x1, y1).
+void hatch(cairo_t* cr, uint32_t value, const Rgb& under, double x0, double y0, double x1,
+           double y1);
+// Every element in view hatched by its value, over draw_pieces.
+void draw_hatches(cairo_t* cr, const Layout& layout, const View& v);
 
 // The surface's boundary, its outline or its rectangle, in a heavy line: where setting out ends.
 void draw_boundary(cairo_t* cr, const Layout& layout, const View& v);

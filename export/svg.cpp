@@ -291,7 +291,6 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
   const Provenance& source = layout.source;
   const DrawingKeys& drawing = layout.drawing;
   const double W = layout.width, H = layout.height;
-  const size_t values = layout.legend.size();
   // Overlays.
   if (drawing.stage_grid) {
     out << "<g id=\"stage-grid\" class=\"overlay\" fill=\"none\" stroke=\"#d6336c\">\n";
@@ -367,7 +366,7 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
   out << fmt::format("<g id=\"legend\" font-size=\"{}\" fill=\"#222\">\n", mm(legend_font));
   size_t shown = 0;
   for (const LegendEntry& e : layout.legend) {
-    if (values > 16 && e.count == 0) continue;
+    if (e.count == 0) continue;  // only what the plan shows
     if (shown == 16) break;
     const double y = top + unit * 1.6 * static_cast<double>(shown++);
     const bool striped = layout.combine == Combine::keep && layout.kind->ground() != Ground::sheet;

@@ -1,13 +1,18 @@
 """Every installer's sheet of layout.pdf has a key naming what its pieces are made of: for each
 page, pdftotext's words hold the IDs labelled there, and each of those pieces' material (from
-schedule.csv) is named on that page, with the key's heading. Sheet 1 names every zone of the
-recipe ([[layout.zones]]), drawn where it lies.
+schedule.csv) is named on that page, with the key's heading. Each key line says how many of its
+material the sheet holds ("Red facing brick: 409"): over the set, they add up to schedule.csv's
+count of each material, so that a coursed set (no IDs) is checked too, and a coursed page names
+every course it says it holds ("courses 51 to 106"). Sheet 1 names every zone of the recipe
+([[layout.zones]]), drawn where it lies.
 
 Usage: drawing_keys.py CURDLE SOURCE_DIR PATTERN...
 """
 
+import collections
 import csv
 import io
+import re
 import subprocess
 import sys
 import tempfile
@@ -23,6 +28,8 @@ for pattern in patterns:
         text = Path(tmp, "schedule.csv").read_text(encoding="utf-8-sig")
         material = {r["element_id"]: r["material"]
                     for r in csv.DictReader(io.StringIO(text, newline=""))}
+        ordered = collections.Counter(material.values())
+        keyed = collections.Counter()
         pages = int(next(line.split()[-1] for line in subprocess.run(
             ["pdfinfo", str(Path(tmp, "layout.pdf"))], capture_output=True, text=True,
             check=True).stdout.splitlines() if line.startswith("Pages:")))
@@ -46,8 +53,21 @@ for pattern in patterns:
                 if m not in flat:
                     failures.append(f"{pattern} sheet {page}: {m} is laid there, not in its key")
             checked += len(on_sheet)
+            for m in ordered:
+                for n in re.findall(re.escape(m) + r": (\d+)", flat):
+                    keyed[m] += int(n)
+            courses = re.search(r"courses (\d+) to (\d+)", flat)
+            if courses:
+                numbers = set(words.split())
+                missing = [c for c in range(int(courses[1]), int(courses[2]) + 1)
+                           if str(c) not in numbers]
+                if missing:
+                    failures.append(f"{pattern} sheet {page}: courses {missing[:5]} not numbered")
+        if keyed != ordered:
+            failures.append(f"{pattern}: the keys count {dict(keyed)}, the schedule "
+                            f"{dict(ordered)}")
         print(f"{pattern}: {pages - 1} installer's sheets, {checked} materials found in their keys,"
-              f" {len(zones)} zones named on sheet 1")
+              f" {sum(keyed.values())} pieces counted in them, {len(zones)} zones named on sheet 1")
 for f in failures[:20]:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)

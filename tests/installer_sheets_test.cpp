@@ -53,7 +53,8 @@ double set_width(const std::string& text, double cap_height) {
 class InstallerSheets : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
-  const Layout layout = pattern_layout(GetParam());
+  Layout layout = pattern_layout(GetParam());
+  layout.drawing.installer_set = InstallerSet::labelled;  // bricks and small tiles too
   const InstallerPlan plan = plan_installer_sheets(layout);
   const std::vector<InstallerPiece> pieces = installer_pieces(layout);
   ASSERT_EQ(plan.labels.size(), pieces.size());
@@ -152,6 +153,44 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values("brick-facade-five-storeys.toml", "plaza-three-colours.toml",
                       "perforated-aluminium-screen.toml", "paper/fig8-segment-of-large-curd.toml",
                       "brick-facade-stretcher-bond.toml", "courtyard-l-shaped.toml"));
+
+// Small units are drawn as a coursed set: no labels, 1 : 20 unless named, landscape, and every
+// piece's centre on exactly one sheet.
+TEST(InstallerSheets, SmallUnitsMakeACoursedSetAtOneToTwenty) {
+  Layout layout = pattern_layout("brick-facade-stretcher-bond.toml");  // 215 x 65 mm bricks
+  const InstallerPlan plan = plan_installer_sheets(layout);
+  EXPECT_TRUE(plan.coursed);
+  EXPECT_TRUE(plan.labels.empty());
+  EXPECT_EQ(plan.scale, 20);
+  EXPECT_EQ(plan.paper.name, "A3");
+  EXPECT_TRUE(plan.landscape);
+  EXPECT_LE(plan.sheets.size(), 6u);  // a 9 x 6 m wall: was 30 labelled sheets at 1 : 5
+  for (const InstallerPiece& p : plan.pieces) {
+    const double cx = p.bounds.x + p.bounds.w / 2, cy = p.bounds.y + p.bounds.h / 2;
+    const auto holding = std::count_if(plan.sheets.begin(), plan.sheets.end(), [&](const auto& s) {
+      return cx >= s.window.x && cx < s.window.right() && cy >= s.window.y && cy < s.window.top();
+    });
+    EXPECT_EQ(holding, 1) << p.id;
+  }
+  std::ostringstream pdf;
+  write_layout_pdf(pdf, layout, plan);
+  EXPECT_EQ(pdf.str().rfind("%PDF-", 0), 0u);
+
+  // The recipe names the scale and paper; a labelled set is asked for by name.
+  layout.drawing.installer_scale = 50;
+  layout.drawing.installer_paper = "A2";
+  const InstallerPlan named = plan_installer_sheets(layout);
+  EXPECT_EQ(named.scale, 50);
+  EXPECT_EQ(named.paper.name, "A2");
+  EXPECT_EQ(named.sheets.size(), 1u);
+  layout.drawing = {};
+  layout.drawing.installer_set = InstallerSet::labelled;
+  const InstallerPlan labelled = plan_installer_sheets(layout);
+  EXPECT_FALSE(labelled.coursed);
+  EXPECT_EQ(labelled.labels.size(), labelled.pieces.size());
+  // Large panels stay labelled when left automatic.
+  EXPECT_FALSE(plan_installer_sheets(pattern_layout("brick-facade-five-storeys.toml")).coursed);
+}
 
 TEST(LayoutSheet, IsSheetOneWithTheLayoutsOwnPixels) {
   Layout layout = pattern_layout("brick-facade-five-storeys.toml");

@@ -27,6 +27,28 @@ TEST(Recipe, BondAndCentredOrigin) {
   EXPECT_NE(e.find("\"centre\""), std::string::npos) << e;
 }
 
+// The installer's sheets: scale, paper and set named in the recipe, each checked.
+TEST(Recipe, InstallerSheetKeys) {
+  const std::string wall =
+      with_layout("kind = \"facade\"\npanel = [215, 65]\njoint = 10\nwall = [4000, 2000]\n");
+  const Recipe r = parse_recipe(
+      wall + "installer_scale = 50\ninstaller_paper = \"A1\"\ninstaller_set = \"coursed\"\n",
+      "r.toml");
+  EXPECT_EQ(r.layout->drawing.installer_scale, 50);
+  EXPECT_EQ(r.layout->drawing.installer_paper, "A1");
+  EXPECT_EQ(r.layout->drawing.installer_set, InstallerSet::coursed);
+  for (const char* bad : {"installer_scale = 7", "installer_scale = 5000", "installer_scale = nan",
+                          "installer_paper = \"B4\"", "installer_set = \"fancy\""}) {
+    const std::string e = error_of(wall + bad + "\n");
+    EXPECT_NE(e.find(std::string(bad).substr(0, std::string(bad).find(' '))), std::string::npos)
+        << bad << ": " << e;
+  }
+  const std::string e = error_of(
+      with_layout("kind = \"perforation\"\ncell = [50, 50]\nsheet = [1000, 1000]\ninstaller_set = "
+                  "\"coursed\"\n"));
+  EXPECT_NE(e.find("\"labelled\""), std::string::npos) << e;
+}
+
 TEST(Recipe, Zones) {
   const std::string floor =
       with_layout("kind = \"paving\"\ntile = [600, 300]\nfloor = [12000, 8000]\n");

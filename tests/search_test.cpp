@@ -36,6 +36,41 @@ TEST(SearchTargets, ParseNamesAndComparisons) {
   }
 }
 
+// sheet_open_area: a range (or bound) every fabrication sheet must meet, measured at the sheet
+// that misses most; the layers above lay the sheets out, and without them it is refused.
+TEST(SearchTargets, SheetOpenAreaIsARangeEverySheetMustMeet) {
+  const Design d = two_curds_128();
+  const Target t = parse_target("sheet_open_area=0.25..0.35", d);
+  EXPECT_EQ(t.measure, Measure::sheet_open_area);
+  EXPECT_EQ(t.compare, Compare::within);
+  EXPECT_DOUBLE_EQ(t.goal, 0.25);
+  EXPECT_DOUBLE_EQ(t.goal_high, 0.35);
+  EXPECT_EQ(parse_target("sheet_open_area>=0.2", d).compare, Compare::at_least);
+  for (const char* bad :
+       {"sheet_open_area=0.4..0.3", "sheet_open_area=0.2..1.5", "sheet_open_area:c0=0.3",
+        "sheet_open_area<=0.2..0.3", "sheet_open_area=x..0.3"})
+    EXPECT_THROW(parse_target(bad, d), InputError) << bad;
+  EXPECT_DOUBLE_EQ(shortfall(t, 0.3), 0);
+  EXPECT_NEAR(shortfall(t, 0.2), 0.05, 1e-12);
+  EXPECT_NEAR(shortfall(t, 0.4), 0.05, 1e-12);
+  EXPECT_DOUBLE_EQ(worst_sheet(t, {0.3, 0.22, 0.2, 0.38}), 0.2);
+  EXPECT_DOUBLE_EQ(worst_sheet(t, {0.3, 0.26}), 0.3);  // all met: the first
+  SearchSpec spec;
+  spec.targets = {t};
+  EXPECT_THROW(check_search(d, box(0, 0, 128, 128), spec), InputError);
+  // Met only where every sheet meets it.
+  spec.sheet_open_areas = [](const CurdField&, const Box& segment) {
+    return segment.origin[0] == 0 ? std::vector<double>{0.3, 0.3} : std::vector<double>{0.3, 0.1};
+  };
+  spec.window = std::array<int64_t, 2>{64, 64};
+  spec.stride = 64;
+  spec.top = 1;
+  const auto hits = search_seeds(d, box(0, 0, 128, 128), spec, 1, 3);
+  ASSERT_EQ(hits.size(), 1u);
+  EXPECT_EQ(hits[0].score, 0);
+  EXPECT_EQ(hits[0].segment.origin[0], 0);
+}
+
 TEST(SearchTargets, ShortfallIsZeroWhenMet) {
   const Design d = two_curds_128();
   EXPECT_DOUBLE_EQ(shortfall(parse_target("cluster:c0<=10", d), 8), 0);

@@ -3,6 +3,7 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "curdle/error.h"
 #include "export/csv_field.h"
 #include "export/preview_png.h"
+#include "layout/builder.h"
 
 namespace curdle::app {
 
@@ -50,6 +52,25 @@ std::array<int64_t, 2> parse_segment_size(const std::string& text, int dimension
                                           " in whole cells, each at least 1");
   return size;
 }
+
+namespace {
+
+// The open shares of a perforated layout's fabrication sheets, for sheet_open_area targets:
+// the segment laid out as `curdle generate` lays it. None (the target is refused, naming why)
+// when the recipe lays no perforated sheet.
+std::function<std::vector<double>(const CurdField&, const Box&)> sheet_open_areas_of(
+    const Run& run) {
+  if (!run.recipe.layout || run.recipe.layout->kind->ground() != Ground::sheet) return {};
+  return [design = run.recipe.design, spec = *run.recipe.layout](const CurdField& field,
+                                                                 const Box& segment) {
+    const Layout layout = make_layout(design, field, segment, spec);
+    std::vector<double> shares;
+    for (const Layout::FabricationSheet& sheet : layout.sheets) shares.push_back(sheet.open_area);
+    return shares;
+  };
+}
+
+}  // namespace
 
 uint64_t search_work(const Design& d, uint64_t first, uint64_t last) {
   const unsigned __int128 per_seed =
@@ -97,6 +118,9 @@ SearchRun resolve_search(const SearchRequest& request) {
     target.text = t;  // reports show it as written, in mm or cells
     s.spec.targets.push_back(target);
   }
+  if (std::any_of(s.spec.targets.begin(), s.spec.targets.end(),
+                  [](const Target& t) { return t.measure == Measure::sheet_open_area; }))
+    s.spec.sheet_open_areas = sheet_open_areas_of(s.run);
   if (!request.segment.empty())
     s.spec.window = parse_segment_size(request.segment, d.lattice.dimension, "segment");
   else if (s.run.recipe.window)

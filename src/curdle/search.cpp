@@ -23,7 +23,8 @@ const char* const kTargetSyntax =
     "MEASURE:SUBJECT=GOAL (or <= or >=), MEASURE one of count, ratio, dimension, cluster, run, "
     "lacunarity, SUBJECT a value (its number or label, e.g. dark+light) or for dimension a "
     "curd; or empty[:CURD]=X,Y,W,H, a zone of cells from the segment's corner that must hold "
-    "no survivor";
+    "no survivor; or, on a perforated layout, sheet_open_area=LOW..HIGH (or <=, >= or = a "
+    "share from 0 to 1), the open share every fabrication sheet must have";
 
 namespace {
 
@@ -176,15 +177,36 @@ Target parse_target(const std::string& text, const Design& d) {
   const std::string kind = head.substr(0, colon);
   const std::string subject = colon == std::string::npos ? "" : head.substr(colon + 1);
   static const std::pair<const char*, Measure> kinds[] = {
-      {"count", Measure::count},     {"ratio", Measure::ratio}, {"dimension", Measure::dimension},
-      {"cluster", Measure::cluster}, {"run", Measure::run},     {"lacunarity", Measure::lacunarity},
-      {"empty", Measure::empty}};
+      {"count", Measure::count},
+      {"ratio", Measure::ratio},
+      {"dimension", Measure::dimension},
+      {"cluster", Measure::cluster},
+      {"run", Measure::run},
+      {"lacunarity", Measure::lacunarity},
+      {"empty", Measure::empty},
+      {"sheet_open_area", Measure::sheet_open_area}};
   const auto k = std::find_if(std::begin(kinds), std::end(kinds),
                               [&](const auto& p) { return kind == p.first; });
   if (k == std::end(kinds))
     fail(text, "unknown measure '" + kind +
-                   "'; the measures are count, ratio, dimension, cluster, run, lacunarity, empty");
+                   "'; the measures are count, ratio, dimension, cluster, run, lacunarity, "
+                   "empty, sheet_open_area");
   t.measure = k->second;
+  if (t.measure == Measure::sheet_open_area) {
+    if (!subject.empty()) fail(text, "sheet_open_area takes no subject: every sheet is measured");
+    const size_t dots = goal.find("..");
+    if (dots != std::string::npos) {
+      if (t.compare != Compare::equal) fail(text, "a range is written sheet_open_area=LOW..HIGH");
+      t.compare = Compare::within;
+      t.goal = parse_number(text, goal.substr(0, dots));
+      t.goal_high = parse_number(text, goal.substr(dots + 2));
+    } else {
+      t.goal = t.goal_high = parse_number(text, goal);
+    }
+    if (t.goal > 1 || t.goal_high > 1 || t.goal_high < t.goal)
+      fail(text, "an open share is from 0 to 1, a range from its low to its high end");
+    return t;
+  }
   if (t.measure == Measure::empty) {
     if (t.compare != Compare::equal) fail(text, "an empty zone is written empty[:CURD]=X,Y,W,H");
     t.subject = subject.empty() ? -1 : parse_curd(text, subject, d);
@@ -246,9 +268,20 @@ double shortfall(const Target& t, double x) {
   if (std::isnan(x)) return 1;
   double miss = t.compare == Compare::equal     ? std::fabs(x - t.goal)
                 : t.compare == Compare::at_most ? std::max(0.0, x - t.goal)
-                                                : std::max(0.0, t.goal - x);
-  const bool relative = t.measure != Measure::ratio && t.measure != Measure::dimension;
+                : t.compare == Compare::within
+                    ? std::max(0.0, t.goal - x) + std::max(0.0, x - t.goal_high)
+                    : std::max(0.0, t.goal - x);
+  const bool relative = t.measure != Measure::ratio && t.measure != Measure::dimension &&
+                        t.measure != Measure::sheet_open_area;
   return relative ? miss / std::max(t.goal, 1.0) : miss;
+}
+
+double worst_sheet(const Target& t, const std::vector<double>& shares) {
+  if (shares.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double worst = shares.front();
+  for (const double x : shares)
+    if (shortfall(t, x) > shortfall(t, worst)) worst = x;
+  return worst;
 }
 
 double measure(const Target& t, SegmentMeasures& m, const Design& d, const Box& segment,
@@ -273,6 +306,8 @@ double measure(const Target& t, SegmentMeasures& m, const Design& d, const Box& 
       const auto l = m.lacunarity(value, segment, lacunarity_box);
       return l ? *l : std::numeric_limits<double>::quiet_NaN();
     }
+    case Measure::sheet_open_area:
+      return std::numeric_limits<double>::quiet_NaN();  // laid out by the caller: search_seeds
     case Measure::empty: {
       Box zone = t.zone;
       zone.origin[0] += segment.origin[0];
@@ -303,6 +338,12 @@ void check_search(const Design& d, const Box& view, const SearchSpec& spec) {
                            std::to_string(size[1]) + " cells");
     size = w;
   }
+  for (const Target& t : spec.targets)
+    if (t.measure == Measure::sheet_open_area && !spec.sheet_open_areas)
+      throw InputError(parameter("target"),
+                       "'" + t.text +
+                           "': sheet_open_area measures the fabrication sheets of a perforated "
+                           "layout (layout.kind = \"perforation\"); this recipe has none");
   for (const Target& t : spec.targets)
     if (t.measure == Measure::empty && !Box{{0, 0, 0}, {size[0], size[1], 1}}.contains(t.zone))
       throw InputError(parameter("target"),
@@ -373,7 +414,9 @@ std::vector<SearchHit> search_seeds(const Design& d, const Box& view, const Sear
           hit.seed = seed;
           hit.segment = segment;
           for (const Target& t : spec.targets) {
-            const double x = measure(t, s.measures, d, segment, spec.lacunarity_box);
+            const double x = t.measure == Measure::sheet_open_area
+                                 ? worst_sheet(t, spec.sheet_open_areas(s.field, segment))
+                                 : measure(t, s.measures, d, segment, spec.lacunarity_box);
             hit.measured.push_back(x);
             hit.score += shortfall(t, x);
             if (t.measure == Measure::empty && x > 0) hit.meets_empty_zones = false;

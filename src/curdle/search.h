@@ -16,8 +16,10 @@
 
 namespace curdle {
 
-enum class Measure { count, ratio, dimension, cluster, run, lacunarity, empty };
-enum class Compare { equal, at_most, at_least };
+// sheet_open_area is a layout's measure (the open share of each fabrication sheet of a
+// perforated surface): the layers above supply it through SearchSpec::sheet_open_areas.
+enum class Measure { count, ratio, dimension, cluster, run, lacunarity, empty, sheet_open_area };
+enum class Compare { equal, at_most, at_least, within };
 
 struct Target {
   std::string text;  // as written, for reports
@@ -25,7 +27,8 @@ struct Target {
   int subject = 0;  // a value; for dimension, and empty with a curd, the curd (-1: any curd)
   Compare compare = Compare::equal;
   double goal = 0;
-  Box zone;  // empty: the zone, cells from the segment's corner
+  double goal_high = 0;  // within: goal to goal_high
+  Box zone;              // empty: the zone, cells from the segment's corner
 };
 
 // The syntax, for help texts and error messages.
@@ -44,6 +47,9 @@ struct SearchSpec {
   int64_t stride = 0;                            // between segment corners; 0: size / 8
   int top = 10;
   int64_t lacunarity_box = 0;  // 0: the base b
+  // The open share of every fabrication sheet when the segment of this seed's curds is laid
+  // out; called from many threads at once. Needed by sheet_open_area targets.
+  std::function<std::vector<double>(const CurdField& field, const Box& segment)> sheet_open_areas;
 };
 
 struct SearchHit {
@@ -54,10 +60,14 @@ struct SearchHit {
   bool meets_empty_zones = true;
 };
 
-// How far `measured` misses the target: |x - goal| for ratios and dimensions, relative for
-// counts, clusters, runs and lacunarity, only the excess or shortfall for <= and >=; an empty
-// zone adds 100 times the share of its cells that are occupied.
+// How far `measured` misses the target: |x - goal| for ratios, dimensions and open areas,
+// relative for counts, clusters, runs and lacunarity, only the excess or shortfall for <=, >=
+// and a range; an empty zone adds 100 times the share of its cells that are occupied.
 double shortfall(const Target& target, double measured);
+
+// Of the sheets' open shares, the one that misses `target` most (the first of equals): what a
+// sheet_open_area target measures, so that it is met only when every sheet meets it.
+double worst_sheet(const Target& target, const std::vector<double>& shares);
 
 // The measure of `target` on a segment of a curd (see segment_measures.h).
 class SegmentMeasures;

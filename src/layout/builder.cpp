@@ -228,6 +228,7 @@ Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const
     const Rect c = clip(o, layout.width, layout.height);
     if (c.area() > 0) layout.openings.push_back(c);
   }
+  layout.openings_given = layout.openings.size();
   for (const Zone& z : spec.zones)
     if (z.rule == ZoneRule::exclude)
       for (const Rect& r : z.rects)
@@ -270,7 +271,7 @@ Layout lay_blank_grid(const LayoutSpec& spec, const std::vector<Rect>& openings)
 }
 
 void count_values(Layout& layout, const Design& design, const LayoutSpec& spec) {
-  advise_lattice(layout, design.lattice);
+  advise_lattice(layout, design);
   layout.legend = make_legend(design, spec);
   for (const Element& e : layout.elements) ++layout.legend[e.value].count;
 }

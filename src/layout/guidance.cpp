@@ -7,12 +7,30 @@
 
 namespace curdle {
 
-void advise_lattice(Layout& layout, const Lattice& lattice) {
+namespace {
+
+// The first stage at which a cell can die: some curd's p below 1 there (or a density field,
+// which can thin any stage); 0 when none can.
+int first_dying_stage(const Design& design) {
+  for (int k = 1; k <= design.lattice.stages; ++k)
+    for (const CurdSpec& c : design.curds)
+      if (c.density || (static_cast<size_t>(k) <= c.probabilities.size() &&
+                        c.probabilities[static_cast<size_t>(k) - 1].value() < 1))
+        return k;
+  return 0;
+}
+
+}  // namespace
+
+void advise_lattice(Layout& layout, const Design& design) {
+  const Lattice& lattice = design.lattice;
   if (layout.kind->dimension() != 2 || lattice.stages < 1 || layout.module_w <= 0) return;
+  const int stage = first_dying_stage(design);
+  if (stage == 0) return;
   const double pitch_w = layout.module_w + layout.joint, pitch_h = layout.module_h + layout.joint;
   const double shorter = std::min(layout.width, layout.height);
   const double room = shorter / 3;
-  const auto side = static_cast<double>(lattice.side_in_cells(1));
+  const auto side = static_cast<double>(lattice.side_in_cells(stage));
   const double cell_w = side * pitch_w, cell_h = side * pitch_h;
   if (std::max(cell_w, cell_h) <= room || shorter <= 0) return;
   // Per base, the most stages whose first-stage cells (b^(K-1) elements) still fit.
@@ -23,11 +41,14 @@ void advise_lattice(Layout& layout, const Lattice& lattice) {
     while (std::pow(b, stages) <= largest + 1e-9) ++stages;
     if (stages >= 2) fits.push_back(fmt::format("base {} and at most {} stages", b, stages));
   }
+  const std::string which = stage == 1
+                                ? "the first stage's"
+                                : fmt::format("stage {}'s (the first where a cell can die)", stage);
   std::string note = fmt::format(
-      "the first stage's cells are {:.2f} x {:.2f} m ({} x {} elements), more than a third of the "
+      "{} cells are {:.2f} x {:.2f} m ({} x {} elements), more than a third of the "
       "surface's shorter side ({:.2f} m): where one dies, a blank with straight edges crosses much "
       "of the surface",
-      cell_w / 1000, cell_h / 1000, side, side, shorter / 1000);
+      which, cell_w / 1000, cell_h / 1000, side, side, shorter / 1000);
   if (fits.empty()) {
     note +=
         "; no base of two or more stages has first-stage cells that small here: use smaller "

@@ -164,9 +164,17 @@ size_t interval_of(const std::vector<double>& edges, double v) {
   return static_cast<size_t>(it - (edges.begin() + 1));
 }
 
-// Places every label at 1 : scale; false when some label found no place.
-bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
-           InstallerPlan& plan) {
+// The grid of sheets at 1 : scale, with their match captions and the start corner; returns
+// the sheet holding a point.
+struct SheetGrid {
+  std::vector<double> xs, ys;
+  size_t columns = 0;
+  size_t sheet_of(double x, double y) const {
+    return interval_of(ys, y) * columns + interval_of(xs, x);
+  }
+};
+SheetGrid lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
+                     InstallerPlan& plan) {
   plan.scale = scale;
   std::vector<std::pair<double, double>> across, up;
   for (const InstallerPiece& p : pieces)
@@ -179,14 +187,17 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
   for (size_t r = 0; r < plan.grid_rows; ++r)
     for (size_t c = 0; c < plan.grid_columns; ++c)
       plan.sheets.push_back({r, c, {xs[c], ys[r], xs[c + 1] - xs[c], ys[r + 1] - ys[r]}});
-  auto sheet_of = [&](double x, double y) {
-    return interval_of(ys, y) * plan.grid_columns + interval_of(xs, x);
-  };
-
-  const double lh = label_height_mm(plan.text_mm) * scale;
-  PlacedLabels placed(lh * 4);
   plan.captions = match_captions(plan);
   plan.start_corner = start_corner_area(layout, scale);
+  return {xs, ys, plan.grid_columns};
+}
+
+// Places every label at 1 : scale; false when some label found no place.
+bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
+           InstallerPlan& plan) {
+  const SheetGrid grid = lay_sheets(pieces, scale, layout, plan);
+  const double lh = label_height_mm(plan.text_mm) * scale;
+  PlacedLabels placed(lh * 4);
   for (const MatchCaption& c : plan.captions) placed.add(c.box);
   for (const Rect& r : plan.start_corner) placed.add(r);
   plan.labels.assign(pieces.size(), {});
@@ -198,7 +209,7 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
     InstallerLabel& label = plan.labels[i];
     label.text = p.id;
     label.anchor = {p.bounds.x + p.bounds.w / 2, p.bounds.y + p.bounds.h / 2};
-    label.sheet = sheet_of(label.anchor[0], label.anchor[1]);
+    label.sheet = grid.sheet_of(label.anchor[0], label.anchor[1]);
     const Rect& window = plan.sheets[label.sheet].window;
     const double lw = label_width_mm(p.id.size(), plan.text_mm) * scale;
     std::vector<const Rect*> parts;
@@ -286,9 +297,27 @@ std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
   return pieces;
 }
 
+// Whether the set is coursed: named so, or left automatic where elements laid in courses are
+// small units (a typical piece at most kSmallUnitMm long).
+bool coursed_set(const Layout& layout, double typical_w, double typical_h) {
+  if (!layout.sheets.empty() || !layout.kind->laid_in_courses() || layout.elements.empty())
+    return false;
+  switch (layout.drawing.installer_set) {
+    case InstallerSet::coursed:
+      return true;
+    case InstallerSet::labelled:
+      return false;
+    case InstallerSet::automatic:
+      break;
+  }
+  return std::max(typical_w, typical_h) <= kSmallUnitMm;
+}
+
 InstallerPlan plan_installer_sheets(const Layout& layout) {
   InstallerPlan plan;
-  plan.paper = paper_sheet(layout.drawing.paper).value_or(*paper_sheet("A3"));
+  const DrawingKeys& keys = layout.drawing;
+  plan.paper = paper_sheet(keys.installer_paper.empty() ? keys.paper : keys.installer_paper)
+                   .value_or(*paper_sheet("A3"));
   plan.landscape = layout.width >= layout.height;
   plan.viewport = installer_viewport(plan.paper, plan.landscape);
   plan.pieces = installer_pieces(layout);
@@ -309,12 +338,28 @@ InstallerPlan plan_installer_sheets(const Layout& layout) {
     typical_w = order[order.size() / 2]->bounds.w;
     typical_h = order[order.size() / 2]->bounds.h;
   }
+  if (coursed_set(layout, typical_w, typical_h)) {
+    // Landscape, whatever the wall's shape: a portrait sheet's title strip leaves no room for
+    // the key and the courses a sheet holds beside the title block.
+    plan.coursed = true;
+    plan.landscape = true;
+    plan.viewport = installer_viewport(plan.paper, true);
+    lay_sheets(pieces, keys.installer_scale > 0 ? keys.installer_scale : kCoursedScale, layout,
+               plan);
+    return plan;
+  }
   // The largest text at which the typical piece holds the longest label at 1 : n.
   auto text_that_fits = [&](double n) {
     const double w = typical_w / n, h = typical_h / n;
     const double per_text = label_width_mm(longest, 1), tall = label_height_mm(1);
     return std::max(std::min(w / per_text, h / tall), std::min(h / per_text, w / tall));
   };
+  if (keys.installer_scale > 0) {  // named: labels that find no room are counted on the sheet
+    plan.text_mm =
+        std::clamp(text_that_fits(keys.installer_scale), kInstallerMinTextMm, kInstallerTextMm);
+    place(pieces, keys.installer_scale, layout, plan);
+    return plan;
+  }
   const std::vector<double>& scales = standard_scales();
   // The largest standard scale at which the typical piece holds its label, and no larger than
   // the one the whole layout is drawn at on sheet 1.

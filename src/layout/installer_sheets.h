@@ -7,6 +7,8 @@
 // label finds a place; each sheet keeps the labels of the pieces whose centre it holds. Sheets
 // meet where the fewest pieces cross (at joints), so that match lines do not split pieces; no
 // label lies on a match line's caption or on the start corner.
+// Small units (bricks, setts, mosaic: layout.installer_set) are drawn as a coursed set instead:
+// each piece in its value's colour and hatch, courses and columns numbered, no IDs.
 // Perforated surfaces are installed as panels: their pieces are the fabrication sheets (the
 // openings are cut from the sheets' DXFs by their own IDs).
 #pragma once
@@ -70,8 +72,14 @@ std::string match_caption_text(const MatchCaption& caption);
 inline constexpr double kStartDotMm = 3, kStartArrowMm = 14, kStartTextMm = 2;
 inline constexpr const char* kStartText = "start: row 0, column 0";
 
+// A coursed set (layout.installer_set): drawn at 1 : 20 unless named, for units at most
+// 300 mm long when left automatic.
+inline constexpr double kCoursedScale = 20;
+inline constexpr double kSmallUnitMm = 300;
+
 struct InstallerPlan {
   PaperSheet paper;
+  bool coursed = false;  // pieces in colour and hatch, no IDs: `labels` is empty
   bool landscape = true;
   double scale = 1;                      // 1 : scale
   double text_mm = kInstallerTextMm;     // the IDs' text height on paper
@@ -88,6 +96,9 @@ struct InstallerPlan {
 // The fabrication sheets of a perforated surface, else the elements as laid, in layout order.
 std::vector<InstallerPiece> installer_pieces(const Layout& layout);
 
+// The installer's sheets on layout.installer_paper (else layout.paper) at
+// layout.installer_scale; unnamed, a coursed set is drawn at 1 : 20 and a labelled one at the
+// largest scale where every label finds room.
 InstallerPlan plan_installer_sheets(const Layout& layout);
 
 // The sheet numbers of the drawing set: sheet 1 is the whole layout, the installer's sheets

@@ -84,13 +84,22 @@ enum class Corner { bottom_left, bottom_right, top_left, top_right };
 constexpr bool from_right(Corner c) { return c == Corner::bottom_right || c == Corner::top_right; }
 constexpr bool from_top(Corner c) { return c == Corner::top_left || c == Corner::top_right; }
 
-// The recipe's drawing keys: layout.png's scale, sheet and resolution, and what it overlays.
+// How the installer's sheets show the pieces: each with its ID, or (for small units such as
+// bricks, setts and mosaic, where 16,000 IDs help nobody) coursed, each piece in its value's
+// colour and hatch with its courses and columns numbered; automatic picks by the unit's size.
+enum class InstallerSet { automatic, labelled, coursed };
+
+// The recipe's drawing keys: layout.png's scale, sheet and resolution, and what it overlays;
+// the installer's sheets' scale, sheet and set.
 struct DrawingKeys {
   double scale = 0;          // layout.png drawing scale 1 : scale; 0 picks one
   std::string paper = "A3";  // the ISO sheet a scale is picked for (drawing_sheet.h)
   double dpi = 150;
   bool stage_grid = false;       // draw lines at each stage's cell boundaries
   std::optional<Box> highlight;  // a window of cells to outline on the drawing
+  double installer_scale = 0;    // 1 : installer_scale; 0 picks one
+  std::string installer_paper;   // empty: `paper`
+  InstallerSet installer_set = InstallerSet::automatic;
 };
 
 // Ordering: spare share added to each quantity, elements per pack, and lots in laying order
@@ -256,6 +265,8 @@ struct Layout {
   std::vector<Element> elements;
   // Every hole in the surface: a façade's openings, then the excluded zones' rectangles.
   std::vector<Rect> openings;
+  size_t openings_given = 0;     // the first of `openings` are the surface's own (windows, doors),
+                                 // the rest excluded zones' rectangles
   std::vector<ZoneCount> zones;  // one per [[layout.zones]], in order
   // With layout.outline: the polygon, and the parts of the width x height rectangle outside it
   // (no elements; drawn as paper, not as openings).

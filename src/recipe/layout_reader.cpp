@@ -15,9 +15,11 @@
 namespace curdle::reading {
 namespace {
 
-const std::vector<std::string> kEveryKind = {"kind",     "colours", "materials", "scale",
-                                             "dpi",      "paper",   "spare",     "pack",
-                                             "lot_size", "lot_rows"};
+const std::vector<std::string> kEveryKind = {
+    "kind",         "colours",  "materials",       "scale",
+    "dpi",          "paper",    "spare",           "pack",
+    "lot_size",     "lot_rows", "installer_scale", "installer_paper",
+    "installer_set"};
 
 // layout.materials: the product each value is laid in, one name per value, value 0 first.
 void read_materials(TableReader& r, const Design& design, LayoutSpec& spec) {
@@ -197,6 +199,42 @@ void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
 }
 
+namespace {
+
+// layout.installer_scale, installer_paper and installer_set: the installer's sheets.
+void read_installer_keys(TableReader& r, DrawingKeys& drawing) {
+  if (const auto paper = read_string(r, "installer_paper", "an ISO sheet name such as \"A3\"")) {
+    if (!paper_sheet(*paper))
+      r.fail("installer_paper",
+             "must be \"A0\", \"A1\", \"A2\", \"A3\" or \"A4\": the sheet the installer's "
+             "sheets are drawn on");
+    drawing.installer_paper = *paper;
+  }
+  if (r.get("installer_scale")) {
+    const double n = read_mm(r, "installer_scale", 0, 1);
+    const auto& scales = standard_scales();
+    if (std::find(scales.begin(), scales.end(), n) == scales.end() || n > 1000)
+      r.fail("installer_scale",
+             "must be a standard scale's N of 1 : N up to 1000 (1, 2, 5, 10, 20, 25, 50, 100, "
+             "200, 250, 500 or 1000)");
+    drawing.installer_scale = n;
+  }
+  const auto set = read_string(r, "installer_set", "a kind of set");
+  if (!set || *set == "automatic")
+    drawing.installer_set = InstallerSet::automatic;
+  else if (*set == "labelled" || *set == "labeled")
+    drawing.installer_set = InstallerSet::labelled;
+  else if (*set == "coursed")
+    drawing.installer_set = InstallerSet::coursed;
+  else
+    r.fail("installer_set",
+           "must be \"labelled\" (every piece with its ID), \"coursed\" (pieces in colour and "
+           "hatch, courses and columns numbered, for bricks, setts and mosaic) or \"automatic\" "
+           "(coursed where the units are at most 300 mm long)");
+}
+
+}  // namespace
+
 void read_drawing_scale(TableReader& r, LayoutSpec& spec) {
   // layout.paper, or layout.sheet written as a name where the sheet is not the kind's surface.
   const bool sheet_is_paper = spec.kind->ground() != Ground::sheet && r.get("sheet");
@@ -211,6 +249,12 @@ void read_drawing_scale(TableReader& r, LayoutSpec& spec) {
   spec.drawing.scale = read_mm(r, "scale", 0, 1);
   spec.drawing.dpi = read_mm(r, "dpi", 150, 10);
   if (spec.drawing.dpi > 1200) r.fail("dpi", "must be from 10 to 1200");
+  read_installer_keys(r, spec.drawing);
+  if (spec.drawing.installer_set == InstallerSet::coursed && !spec.kind->laid_in_courses())
+    r.fail("installer_set",
+           "\"coursed\" is for elements laid in courses (tile, paving, facade, "
+           "park); a " +
+               std::string(spec.kind->name()) + " layout's sheets are \"labelled\"");
 }
 
 std::vector<std::string> layout_keys(const LayoutKind& kind) {

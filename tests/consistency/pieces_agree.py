@@ -81,7 +81,7 @@ def dxf_pieces(path, dx=0.0, dy=0.0):
         if t == "TEXT" and e.dxf.layer == "ID":
             p = e.dxf.align_point
             ids[e.dxf.text] = (p[0] + dx, p[1] + dy)
-        elif t == "LWPOLYLINE" and e.dxf.layer not in ("OUTLINE", "OPENINGS"):
+        elif t == "LWPOLYLINE" and e.dxf.layer not in ("OUTLINE", "OPENINGS", "ZONES"):
             b = box_of_points([(p[0] + dx, p[1] + dy) for p in e.get_points("xy")])
             boxes.setdefault(round(b[0]), []).append(b)
         elif t == "CIRCLE":
