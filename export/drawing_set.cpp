@@ -68,6 +68,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   cairo_set_line_width(cr, 0.25);
   cairo_stroke(cr);
   start_corner(cr, layout, v);
+  setting_out(cr, layout, v);
 
   // Legend: up to 8 rows a column, 62 mm a column, from the strip's left.
   const double strip = h - kMargin - kTitleStrip;

@@ -298,6 +298,65 @@ void start_corner(cairo_t* cr, const Layout& layout, const View& v) {
        right ? Align::right : Align::left);
 }
 
+void setting_out(cairo_t* cr, const Layout& layout, const View& v) {
+  if (layout.width <= 0 || layout.height <= 0 || !layout.views.empty()) return;
+  std::vector<double> xs{0, layout.width}, ys{0, layout.height};
+  auto add_ring = [&](const Polygon& ring) {
+    for (const auto& p : ring) xs.push_back(p[0]), ys.push_back(p[1]);
+  };
+  add_ring(layout.outline);
+  for (size_t i = 0; i < layout.openings_given; ++i) {
+    const Rect& o = layout.openings[i];
+    xs.insert(xs.end(), {o.x, o.right()}), ys.insert(ys.end(), {o.y, o.top()});
+  }
+  for (const ZoneCount& z : layout.zones) add_ring(z.polygon);
+  auto tidy = [](std::vector<double>& values, double high) {
+    for (double& x : values) x = std::clamp(std::round(x * 10) / 10, 0.0, high);
+    std::sort(values.begin(), values.end());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+  };
+  tidy(xs, layout.width), tidy(ys, layout.height);
+  // Away from the start corner, whose arrows and words lie along its two edges.
+  const bool below = from_top(layout.origin), left = from_right(layout.origin);
+  const double edge_y = below ? v.y(0) : v.y(layout.height);
+  const double edge_x = left ? v.x(0) : v.x(layout.width);
+  const double out_y = below ? 1 : -1, out_x = left ? -1 : 1;
+  constexpr double kText = 1.6, kGap = 2.2;  // mm on paper
+  colour(cr, kBlue);
+  cairo_set_line_width(cr, 0.15);
+  double last = -1e300;
+  for (const double x : xs) {
+    const double px = v.x(x);
+    if (px - last < kGap && x != layout.width) continue;
+    last = px;
+    cairo_move_to(cr, px, edge_y + out_y * 0.8), cairo_line_to(cr, px, edge_y + out_y * 2.4);
+    cairo_stroke(cr);
+    // Read bottom to top, beyond the tick.
+    const double ty = below ? edge_y + 3 + text_width(cr, drawing_mm(x), kText) : edge_y - 3;
+    text(cr, px + kText / 2, ty, drawing_mm(x), kText, Align::left, true);
+  }
+  last = -1e300;
+  for (const double y : ys) {
+    const double py = v.y(y);
+    if (last - py < kGap && y != layout.height && last > -1e299) continue;
+    last = py;
+    cairo_move_to(cr, edge_x + out_x * 0.8, py), cairo_line_to(cr, edge_x + out_x * 2.4, py);
+    cairo_stroke(cr);
+    text(cr, edge_x + out_x * 3, py + kText / 2, drawing_mm(y), kText,
+         left ? Align::right : Align::left);
+  }
+  const char* corner = from_top(layout.origin)
+                           ? (from_right(layout.origin) ? "top-right" : "top-left")
+                       : from_right(layout.origin) ? "bottom-right"
+                                                   : "bottom-left";
+  const std::string caption = fmt::format(
+      "setting out: mm from the datum (0, 0), the bottom-left corner; laying starts at the {} "
+      "corner ({}, {})",
+      corner, drawing_mm(from_right(layout.origin) ? layout.width : 0),
+      drawing_mm(from_top(layout.origin) ? layout.height : 0));
+  text(cr, v.x(0), below ? v.y(layout.height) - 2 : v.y(0) + 12, caption, 1.8);
+}
+
 std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,
                                    double height) {
   for (std::string& l : lines)

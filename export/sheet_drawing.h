@@ -80,6 +80,13 @@ void scale_bar(cairo_t* cr, double x, double y, double scale, double room);
 // row and up the rows, clear of the first element.
 void start_corner(cairo_t* cr, const Layout& layout, const View& v);
 
+// Setting out, as ordinate dimensions from the datum (the surface's bottom-left corner, 0, 0):
+// the x of every edge of the surface, its outline's corners, its openings and its zones along
+// the long side away from the start corner, their y along the other side, in mm, each with a
+// tick (those closer than a text's height to the last drawn are left out), and a caption that
+// names the datum and the corner where laying starts.
+void setting_out(cairo_t* cr, const Layout& layout, const View& v);
+
 // The title block's width on a sheet `w` mm wide: 150 mm, less on narrow portrait sheets.
 double title_width(double w);
 // The title block at the right of the strip: the title lines, what the sheet shows, the scale

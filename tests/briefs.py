@@ -4,7 +4,8 @@ checked for what its user needs from it:
 - courtyard: its DXF names the porcelain ("Grès cérame") right when ezdxf reads it back, and
   ezdxf's audit finds nothing; the planter is on the ZONES layer, not OPENINGS;
 - brick façade: the installer's set is at most 40 A3 sheets, coursed (no IDs; each sheet says
-  which courses it holds and how to read it);
+  which courses it holds and how to read it); sheet 1 sets out the wall and every opening from
+  the datum;
 - gabled screen: a search for sheet_open_area=0.25..0.35 finds a seed, and every fabrication
   sheet of that seed (punching.csv) is 25-35 % open;
 - entrance paving: the segment the search chose keeps the entrance clear of dark setts, and the
@@ -79,7 +80,14 @@ with tempfile.TemporaryDirectory() as tmp:
         words = " ".join(pdf_text(out / "layout.pdf", page).split())
         check("in its key's colour and hatch" in words and "courses" in words
               and "F-R" not in words, f"brick façade sheet {page}: not a coursed sheet")
-    print(f"brick façade: {count - 1} coursed installer's sheets on {size.strip()}")
+    first = pdf_text(out / "layout.pdf", 1).split()
+    missing = [v for v in ("0", "15065", "15965", "1350", "4275", "7200", "10125", "13050", "4125",
+                           "7350", "10575", "13800", "900", "9000", "11250", "2400", "2700")
+               if v not in first]
+    check("setting" in first and not missing,
+          f"brick façade sheet 1: the windows are not set out from the datum: {missing}")
+    print(f"brick façade: {count - 1} coursed installer's sheets on {size.strip()}, the windows "
+          f"set out on sheet 1")
 
     out = Path(tmp, "screen")
     run("search", str(briefs / "gabled-screen.toml"), "--seeds", "1..6", "--target",
