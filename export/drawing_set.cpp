@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <optional>
 
 #include "curdle/error.h"
 #include "curdle/stop.h"
@@ -140,22 +139,15 @@ InstallerDrawing installer_set(const Layout& layout, const InstallerPlan& plan) 
   InstallerDrawing set{plan, laying_extents(layout),
                        std::vector<SheetContents>(plan.sheets.size())};
   // Each piece belongs to the sheet that holds its centre, as its label does.
-  auto sheet_holding = [&](const Rect& b) -> std::optional<size_t> {
-    const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
-    for (size_t i = 0; i < plan.sheets.size(); ++i) {
-      const Rect& w = plan.sheets[i].window;
-      if (cx >= w.x && cx < w.right() && cy >= w.y && cy < w.top()) return i;
-    }
-    return std::nullopt;
+  auto sheet_holding_centre = [&](const Rect& b) {
+    return sheet_holding(plan, b.x + b.w / 2, b.y + b.h / 2);
   };
-  for (const InstallerPiece& p : plan.pieces)
-    if (const auto i = sheet_holding(p.bounds)) ++set.contents[*i].pieces;
+  if (plan.sheets.empty()) return set;
+  for (const InstallerPiece& p : plan.pieces) ++set.contents[sheet_holding_centre(p.bounds)].pieces;
   const bool elements = layout.sheets.empty();  // else the pieces are fabrication sheets
   for (const Element& e : layout.elements) {
     stop_point();
-    const auto i = sheet_holding(laid_bounds(e));
-    if (!i) continue;
-    SheetContents& c = set.contents[*i];
+    SheetContents& c = set.contents[sheet_holding_centre(laid_bounds(e))];
     if (elements) {
       c.row0 = std::min(c.row0, e.row), c.row1 = std::max(c.row1, e.row);
       c.column0 = std::min(c.column0, e.column), c.column1 = std::max(c.column1, e.column);

@@ -119,13 +119,9 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
     cairo_fill(cr);
   }
   if (!layout.views.empty()) return;  // blocks are drawn as their views
-  auto visible = [&](const Rect& r) {
-    return r.right() >= v.window.x && r.x <= v.window.right() && r.top() >= v.window.y &&
-           r.y <= v.window.top();
-  };
   for (const Element& e : layout.elements) {
     stop_point();
-    if (!visible(laid_bounds(e))) continue;
+    if (!v.shows(laid_bounds(e))) continue;
     const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
     if (e.circle) {
       colour(cr, c, alpha);
@@ -188,10 +184,7 @@ void hatch(cairo_t* cr, uint32_t value, const Rgb& under, double x0, double y0, 
 void draw_hatches(cairo_t* cr, const Layout& layout, const View& v) {
   std::map<uint32_t, std::vector<const Element*>> by_value;
   for (const Element& e : layout.elements) {
-    const Rect b = laid_bounds(e);
-    if (b.right() >= v.window.x && b.x <= v.window.right() && b.top() >= v.window.y &&
-        b.y <= v.window.top() && e.value != 0)
-      by_value[e.value].push_back(&e);
+    if (e.value != 0 && v.shows(laid_bounds(e))) by_value[e.value].push_back(&e);
   }
   const double x0 = v.x(v.window.x), x1 = v.x(v.window.right());
   const double y0 = v.y(v.window.top()), y1 = v.y(v.window.y);

@@ -38,6 +38,10 @@ struct View {
   double left = 0, top = 0;
   double x(double v) const { return left + (v - window.x) / scale; }
   double y(double v) const { return top + (window.top() - v) / scale; }
+  bool shows(const Rect& r) const {
+    return r.right() >= window.x && r.x <= window.right() && r.top() >= window.y &&
+           r.y <= window.top();
+  }
   void rect(cairo_t* cr, const Rect& r) const {
     cairo_rectangle(cr, x(r.x), y(r.top()), r.w / scale, r.h / scale);
   }

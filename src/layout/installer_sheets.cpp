@@ -164,17 +164,9 @@ size_t interval_of(const std::vector<double>& edges, double v) {
   return static_cast<size_t>(it - (edges.begin() + 1));
 }
 
-// The grid of sheets at 1 : scale, with their match captions and the start corner; returns
-// the sheet holding a point.
-struct SheetGrid {
-  std::vector<double> xs, ys;
-  size_t columns = 0;
-  size_t sheet_of(double x, double y) const {
-    return interval_of(ys, y) * columns + interval_of(xs, x);
-  }
-};
-SheetGrid lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
-                     InstallerPlan& plan) {
+// The grid of sheets at 1 : scale, with their match captions and the start corner.
+void lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
+                InstallerPlan& plan) {
   plan.scale = scale;
   std::vector<std::pair<double, double>> across, up;
   for (const InstallerPiece& p : pieces)
@@ -189,13 +181,13 @@ SheetGrid lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, co
       plan.sheets.push_back({r, c, {xs[c], ys[r], xs[c + 1] - xs[c], ys[r + 1] - ys[r]}});
   plan.captions = match_captions(plan);
   plan.start_corner = start_corner_area(layout, scale);
-  return {xs, ys, plan.grid_columns};
+  plan.column_edges = xs, plan.row_edges = ys;
 }
 
 // Places every label at 1 : scale; false when some label found no place.
 bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
            InstallerPlan& plan) {
-  const SheetGrid grid = lay_sheets(pieces, scale, layout, plan);
+  lay_sheets(pieces, scale, layout, plan);
   const double lh = label_height_mm(plan.text_mm) * scale;
   PlacedLabels placed(lh * 4);
   for (const MatchCaption& c : plan.captions) placed.add(c.box);
@@ -209,7 +201,7 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
     InstallerLabel& label = plan.labels[i];
     label.text = p.id;
     label.anchor = {p.bounds.x + p.bounds.w / 2, p.bounds.y + p.bounds.h / 2};
-    label.sheet = grid.sheet_of(label.anchor[0], label.anchor[1]);
+    label.sheet = sheet_holding(plan, label.anchor[0], label.anchor[1]);
     const Rect& window = plan.sheets[label.sheet].window;
     const double lw = label_width_mm(p.id.size(), plan.text_mm) * scale;
     std::vector<const Rect*> parts;
@@ -265,6 +257,10 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
 }
 
 }  // namespace
+
+size_t sheet_holding(const InstallerPlan& plan, double x, double y) {
+  return interval_of(plan.row_edges, y) * plan.grid_columns + interval_of(plan.column_edges, x);
+}
 
 std::string match_caption_text(const MatchCaption& caption) {
   return fmt::format("match line: sheet {}", installer_sheet_number(caption.other));

@@ -85,13 +85,18 @@ struct InstallerPlan {
   double text_mm = kInstallerTextMm;     // the IDs' text height on paper
   std::array<double, 2> viewport{0, 0};  // the drawing's frame on paper, mm
   size_t grid_columns = 0, grid_rows = 0;
-  std::vector<InstallerSheet> sheets;  // row by row from the bottom
-  std::vector<InstallerPiece> pieces;  // installer_pieces(layout)
-  std::vector<InstallerLabel> labels;  // one per piece
-  std::vector<MatchCaption> captions;  // both sides of every edge two sheets share
-  std::vector<Rect> start_corner;      // what the start corner covers, layout mm (none: blocks)
-  size_t unplaced = 0;                 // labels that found no free place (drawn at the centre)
+  std::vector<double> column_edges, row_edges;  // where the sheets meet, layout mm, with the ends
+  std::vector<InstallerSheet> sheets;           // row by row from the bottom
+  std::vector<InstallerPiece> pieces;           // installer_pieces(layout)
+  std::vector<InstallerLabel> labels;           // one per piece
+  std::vector<MatchCaption> captions;           // both sides of every edge two sheets share
+  std::vector<Rect> start_corner;  // what the start corner covers, layout mm (none: blocks)
+  size_t unplaced = 0;             // labels that found no free place (drawn at the centre)
 };
+
+// The sheet whose window holds a point (each window holds its left and bottom edges): the
+// sheet a piece, its label and its count in the key belong to, by the piece's centre.
+size_t sheet_holding(const InstallerPlan& plan, double x, double y);
 
 // The fabrication sheets of a perforated surface, else the elements as laid, in layout order.
 std::vector<InstallerPiece> installer_pieces(const Layout& layout);
