@@ -201,20 +201,19 @@ void draw_sheet_key(cairo_t* cr, const SheetContents& held, bool coursed, double
   }
 }
 
-// Labels: inside their piece, or beside it on white with a leader; every leader first, so that
-// none crosses another's label.
+// Labels: inside their piece, or beside it on white with a leader that the plan keeps clear of
+// every other label and leader; leaders first, under the labels' white.
 void draw_labels(cairo_t* cr, const InstallerPlan& plan, const View& v, size_t index) {
   colour(cr, kInk);
   cairo_set_line_width(cr, 0.15);
   for (const InstallerLabel& l : plan.labels) {
     if (l.sheet != index || l.inside) continue;
-    const double ax = std::clamp(l.anchor[0], l.box.x, l.box.right());
-    const double ay = std::clamp(l.anchor[1], l.box.y, l.box.top());
+    const auto [ax, ay] = leader_end(l);
     cairo_move_to(cr, v.x(l.anchor[0]), v.y(l.anchor[1]));
     cairo_line_to(cr, v.x(ax), v.y(ay));
     cairo_stroke(cr);
     cairo_new_path(cr);
-    cairo_arc(cr, v.x(l.anchor[0]), v.y(l.anchor[1]), 0.4, 0, 2 * M_PI);
+    cairo_arc(cr, v.x(l.anchor[0]), v.y(l.anchor[1]), kLeaderDotMm, 0, 2 * M_PI);
     cairo_fill(cr);
   }
   for (const InstallerLabel& l : plan.labels) {

@@ -126,17 +126,16 @@ void write_sheet_grid(std::ostream& out, const InstallerPlan& plan, const Frame&
   out << "</g>\n";
 }
 
-// Labels as planned: leaders first, so that none crosses another's label.
+// Labels as planned (no leader crosses another label or leader): leaders first, under them.
 void write_labels(std::ostream& out, const InstallerPlan& plan, const Frame& f, double s) {
   out << fmt::format("<g id=\"leaders\" stroke=\"#222\" stroke-width=\"{}\" fill=\"#222\">\n",
                      num(0.15 * s));
   for (const InstallerLabel& l : plan.labels) {
     if (l.inside) continue;
-    const double ax = std::clamp(l.anchor[0], l.box.x, l.box.right());
-    const double ay = std::clamp(l.anchor[1], l.box.y, l.box.top());
+    const auto [ax, ay] = leader_end(l);
     out << fmt::format("<path d=\"M{} {}L{} {}\"/><circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>\n",
                        num(f.x(l.anchor[0])), num(f.y(l.anchor[1])), num(f.x(ax)), num(f.y(ay)),
-                       num(f.x(l.anchor[0])), num(f.y(l.anchor[1])), num(0.4 * s));
+                       num(f.x(l.anchor[0])), num(f.y(l.anchor[1])), num(kLeaderDotMm * s));
   }
   // A white halo keeps every ID clear of the lines and openings under it.
   out << fmt::format(

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string_view>
 #include <unordered_map>
 
@@ -25,25 +26,115 @@ bool contains(const Rect& outer, const Rect& inner) {
          inner.top() <= outer.top() + e;
 }
 
-// Label boxes already placed, found by a grid of buckets.
+struct Point {
+  double x = 0, y = 0;
+};
+
+// Which side of the line a -> b the point c lies on (0: on it).
+int side(Point a, Point b, Point c) {
+  const double cross = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  const double scale = std::max({std::fabs(b.x - a.x), std::fabs(b.y - a.y), 1.0});
+  return cross > 1e-9 * scale ? 1 : cross < -1e-9 * scale ? -1 : 0;
+}
+
+bool on_segment(Point a, Point b, Point c) {
+  return std::min(a.x, b.x) - 1e-9 <= c.x && c.x <= std::max(a.x, b.x) + 1e-9 &&
+         std::min(a.y, b.y) - 1e-9 <= c.y && c.y <= std::max(a.y, b.y) + 1e-9;
+}
+
+// Two leaders meet: they cross, or one ends on the other.
+bool segments_meet(Point a, Point b, Point c, Point d) {
+  const int d1 = side(c, d, a), d2 = side(c, d, b), d3 = side(a, b, c), d4 = side(a, b, d);
+  if (d1 * d2 < 0 && d3 * d4 < 0) return true;
+  return (d1 == 0 && on_segment(c, d, a)) || (d2 == 0 && on_segment(c, d, b)) ||
+         (d3 == 0 && on_segment(a, b, c)) || (d4 == 0 && on_segment(a, b, d));
+}
+
+// A leader runs through a box's inside (touching its edge is not crossing it): the segment
+// clipped to the box, Liang-Barsky, leaves more than a rounding error.
+bool segment_enters(Point a, Point b, const Rect& r) {
+  const double e = 1e-6;
+  double t0 = 0, t1 = 1;
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {a.x - (r.x + e), (r.right() - e) - a.x, a.y - (r.y + e),
+                       (r.top() - e) - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 >= t1) return false;
+  }
+  return true;
+}
+
+// How much a label beside its piece may give way when the sheet is crowded: not at all; its
+// leader over labels inside their pieces; or only its box kept off every other label.
+enum class Leeway { none, over_inside, box_only };
+
+// What is already on the sheets: labels inside and beside their pieces, captions, leaders and
+// the dots they start from, each with the piece it belongs to, found by a grid of buckets.
 class PlacedLabels {
  public:
+  enum class Mark { reserved, inside, beside, dot, leader };
+  static constexpr size_t kNobody = static_cast<size_t>(-1);
   explicit PlacedLabels(double bucket) : bucket_(bucket) {}
-  bool collides(const Rect& r) const {
-    bool hit = false;
-    visit(r, [&](int64_t key) {
-      const auto it = buckets_.find(key);
-      if (it == buckets_.end()) return;
-      for (const Rect& other : it->second)
-        if (overlaps(other, r)) hit = true;
+
+  // A box is free when it overlaps no other piece's box and no leader runs through it.
+  bool box_free(const Rect& r, size_t owner = kNobody, Leeway leeway = Leeway::none) const {
+    return none_near(r, [&](const Item& item) {
+      if (item.owner == owner && owner != kNobody) return false;
+      if (item.mark == Mark::leader)
+        return leeway != Leeway::box_only && segment_enters(item.from, item.to, r);
+      if (item.mark == Mark::dot && leeway == Leeway::box_only) return false;
+      return overlaps(item.box, r);
     });
-    return hit;
   }
-  void add(const Rect& r) {
-    visit(r, [&](int64_t key) { buckets_[key].push_back(r); });
+  // A leader is free when it runs through no other piece's box and meets no other leader.
+  bool leader_free(Point a, Point b, size_t owner, Leeway leeway = Leeway::none) const {
+    if (leeway == Leeway::box_only) return true;
+    return none_near(spanning(a, b), [&](const Item& item) {
+      if (item.owner == owner && owner != kNobody) return false;
+      if (item.mark == Mark::inside && leeway == Leeway::over_inside) return false;
+      return item.mark == Mark::leader ? segments_meet(a, b, item.from, item.to)
+                                       : segment_enters(a, b, item.box);
+    });
+  }
+  void add(const Rect& r, Mark mark, size_t owner = kNobody) {
+    const Item item{r, {}, {}, owner, mark};
+    visit(r, [&](int64_t key) { buckets_[key].push_back(item); });
+  }
+  void add_leader(Point a, Point b, size_t owner) {
+    const Item item{{}, a, b, owner, Mark::leader};
+    visit(spanning(a, b), [&](int64_t key) { buckets_[key].push_back(item); });
   }
 
  private:
+  struct Item {
+    Rect box;
+    Point from, to;
+    size_t owner;
+    Mark mark;
+  };
+  static Rect spanning(Point a, Point b) {
+    return {std::min(a.x, b.x), std::min(a.y, b.y), std::fabs(b.x - a.x), std::fabs(b.y - a.y)};
+  }
+  template <class Hits>
+  bool none_near(const Rect& r, Hits&& hits) const {
+    bool hit = false;
+    visit(r, [&](int64_t key) {
+      const auto it = buckets_.find(key);
+      if (hit || it == buckets_.end()) return;
+      hit = std::any_of(it->second.begin(), it->second.end(), hits);
+    });
+    return !hit;
+  }
   template <class F>
   void visit(const Rect& r, F&& f) const {
     const auto lo_x = static_cast<int64_t>(std::floor(r.x / bucket_));
@@ -54,10 +145,15 @@ class PlacedLabels {
       for (int64_t x = lo_x; x <= hi_x; ++x) f(y * 4000037 + x);
   }
   double bucket_;
-  std::unordered_map<int64_t, std::vector<Rect>> buckets_;
+  std::unordered_map<int64_t, std::vector<Item>> buckets_;
 };
 
 Rect centred(double cx, double cy, double w, double h) { return {cx - w / 2, cy - h / 2, w, h}; }
+
+// Where a leader from the piece's centre meets its label: the box's nearest point.
+Point leader_end(const std::array<double, 2>& anchor, const Rect& box) {
+  return {std::clamp(anchor[0], box.x, box.right()), std::clamp(anchor[1], box.y, box.top())};
+}
 
 Rect spanning(double xa, double ya, double xb, double yb) {
   return {std::min(xa, xb), std::min(ya, yb), std::fabs(xb - xa), std::fabs(yb - ya)};
@@ -184,79 +280,144 @@ void lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, const L
   plan.column_edges = xs, plan.row_edges = ys;
 }
 
+// A place for the label inside its piece on the piece's own sheet: in the middle of its largest
+// part that holds it, across or along, else moved towards the part's sides; false when none.
+bool place_inside(const InstallerPiece& piece, double lh, double scale, const InstallerPlan& plan,
+                  PlacedLabels& placed, size_t owner, InstallerLabel& label) {
+  const Rect& window = plan.sheets[label.sheet].window;
+  const double lw = label_width_mm(piece.id.size(), plan.text_mm) * scale;
+  std::vector<const Rect*> parts;
+  for (const Rect& r : piece.parts) parts.push_back(&r);
+  std::sort(parts.begin(), parts.end(),
+            [](const Rect* a, const Rect* b) { return a->area() > b->area(); });
+  // Offsets from the middle, in units of the room left each way.
+  const double shifts[9][2] = {{0, 0}, {0, 1},  {0, -1}, {1, 0},  {-1, 0},
+                               {1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+  for (const Rect* part : parts)
+    for (const auto& shift : shifts)
+      for (const bool rotated : {false, true}) {
+        const double w = rotated ? lh : lw, h = rotated ? lw : lh;
+        const double room_x = (part->w - w) / 2, room_y = (part->h - h) / 2;
+        if (room_x < 0 || room_y < 0) continue;
+        const Rect box = centred(part->x + part->w / 2 + shift[0] * room_x,
+                                 part->y + part->h / 2 + shift[1] * room_y, w, h);
+        if (contains(window, box) && placed.box_free(box, owner)) {
+          label.box = box, label.rotated = rotated, label.inside = true;
+          placed.add(box, PlacedLabels::Mark::inside, owner);
+          return true;
+        }
+      }
+  return false;
+}
+
+// The nearest free place beside a piece on its own sheet, in eight directions (across or,
+// left and right, along the edge), whose leader crosses no other label or leader; false when
+// there is none. `avoid`: boxes the label must also keep off.
+bool place_beside(const InstallerPiece& piece, double lh, double scale, const InstallerPlan& plan,
+                  PlacedLabels& placed, const PlacedLabels* avoid, Leeway leeway, size_t owner,
+                  InstallerLabel& label) {
+  const Rect& window = plan.sheets[label.sheet].window;
+  const double lw = label_width_mm(label.text.size(), plan.text_mm) * scale;
+  const auto [cx, cy] = label.anchor;
+  const Rect& b = piece.bounds;
+  const double dirs[8][2] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}, {1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+  for (int k = 1; k <= 24; ++k) {
+    const double d = lh * 0.75 * k;
+    for (const auto& dir : dirs)
+      for (const bool rotated : {false, true}) {
+        if (rotated && dir[1] != 0) continue;  // reading up the edge it stands beside
+        const double w = rotated ? lh : lw, h = rotated ? lw : lh;
+        // Clear of the piece's own extent, then d further out; slid along the sheet's edge
+        // where it would leave the sheet, but never back onto the piece.
+        Rect box =
+            centred(cx + dir[0] * (b.w / 2 + w / 2 + d), cy + dir[1] * (b.h / 2 + h / 2 + d), w, h);
+        box.x = std::clamp(box.x, window.x, std::max(window.x, window.right() - w));
+        box.y = std::clamp(box.y, window.y, std::max(window.y, window.top() - h));
+        if (overlaps(box, b)) continue;
+        if (!contains(window, box) || !placed.box_free(box, owner, leeway)) continue;
+        if (avoid && !avoid->box_free(box)) continue;
+        const Point end = leader_end(label.anchor, box);
+        if (!placed.leader_free({cx, cy}, end, owner, leeway)) continue;
+        label.box = box, label.rotated = rotated, label.inside = false;
+        placed.add(box, PlacedLabels::Mark::beside, owner);
+        placed.add_leader({cx, cy}, end, owner);
+        return true;
+      }
+  }
+  return false;
+}
+
 // Places every label at 1 : scale; false when some label found no place.
 bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
            InstallerPlan& plan) {
   lay_sheets(pieces, scale, layout, plan);
   const double lh = label_height_mm(plan.text_mm) * scale;
-  PlacedLabels placed(lh * 4);
-  for (const MatchCaption& c : plan.captions) placed.add(c.box);
-  for (const Rect& r : plan.start_corner) placed.add(r);
+  const double dot = 2 * kLeaderDotMm * scale;
+  auto reserved = [&] {
+    PlacedLabels placed(lh * 4);
+    for (const MatchCaption& c : plan.captions) placed.add(c.box, PlacedLabels::Mark::reserved);
+    for (const Rect& r : plan.start_corner) placed.add(r, PlacedLabels::Mark::reserved);
+    return placed;
+  };
   plan.labels.assign(pieces.size(), {});
-  plan.unplaced = 0;
-  std::vector<size_t> beside;
-  // Inside first: a label in its own piece cannot meet another piece's, only what is reserved.
+  plan.unplaced = 0, plan.over_labels = 0;
+  // Inside first, off every other piece (a ground cell's label off the tree or bench standing
+  // on it, whose leader may have to start at its centre).
+  PlacedLabels placed = reserved();
   for (size_t i = 0; i < pieces.size(); ++i) {
-    const InstallerPiece& p = pieces[i];
     InstallerLabel& label = plan.labels[i];
-    label.text = p.id;
-    label.anchor = {p.bounds.x + p.bounds.w / 2, p.bounds.y + p.bounds.h / 2};
+    label.text = pieces[i].id;
+    label.anchor = {pieces[i].bounds.x + pieces[i].bounds.w / 2,
+                    pieces[i].bounds.y + pieces[i].bounds.h / 2};
     label.sheet = sheet_holding(plan, label.anchor[0], label.anchor[1]);
-    const Rect& window = plan.sheets[label.sheet].window;
-    const double lw = label_width_mm(p.id.size(), plan.text_mm) * scale;
-    std::vector<const Rect*> parts;
-    for (const Rect& r : p.parts) parts.push_back(&r);
-    std::sort(parts.begin(), parts.end(),
-              [](const Rect* a, const Rect* b) { return a->area() > b->area(); });
-    bool done = false;
-    for (const Rect* part : parts) {
-      for (const bool rotated : {false, true}) {
-        const Rect box = centred(part->x + part->w / 2, part->y + part->h / 2, rotated ? lh : lw,
-                                 rotated ? lw : lh);
-        if (contains(*part, box) && contains(window, box) && !placed.collides(box)) {
-          label.box = box, label.rotated = rotated, label.inside = true;
-          placed.add(box);
-          done = true;
-          break;
-        }
-      }
-      if (done) break;
-    }
-    if (!done) beside.push_back(i);
+    placed.add(pieces[i].bounds, PlacedLabels::Mark::reserved, i);
   }
-  // Then beside: the nearest free place on the piece's own sheet, in eight directions.
+  std::vector<size_t> beside;
+  for (size_t i = 0; i < pieces.size(); ++i)
+    if (!place_inside(pieces[i], lh, scale, plan, placed, i, plan.labels[i])) beside.push_back(i);
+  // Then beside, among the labels inside and the dots of the leaders to come: at first off the
+  // other pieces that need room beside them too, so that no label walls another in; then
+  // wherever there is room.
+  placed = reserved();
+  PlacedLabels needing_room(lh * 4);
+  for (size_t i = 0; i < pieces.size(); ++i)
+    if (plan.labels[i].inside) placed.add(plan.labels[i].box, PlacedLabels::Mark::inside, i);
   for (const size_t i : beside) {
+    const auto [cx, cy] = plan.labels[i].anchor;
+    placed.add(centred(cx, cy, dot, dot), PlacedLabels::Mark::dot, i);
+    needing_room.add(pieces[i].bounds, PlacedLabels::Mark::reserved, i);
+  }
+  // Walled in (a piece split by a match line in a bond whose every unit holds its ID, say), a
+  // leader runs over labels inside their pieces; failing that, as the last resort, anywhere
+  // its label's box is clear of the others. Those leaders are counted.
+  std::vector<size_t> left = beside;
+  for (const auto [avoid, leeway] :
+       {std::pair{&needing_room, Leeway::none}, std::pair{(PlacedLabels*)nullptr, Leeway::none},
+        std::pair{(PlacedLabels*)nullptr, Leeway::over_inside},
+        std::pair{(PlacedLabels*)nullptr, Leeway::box_only}}) {
+    std::vector<size_t> still;
+    for (const size_t i : left)
+      if (!place_beside(pieces[i], lh, scale, plan, placed, avoid, leeway, i, plan.labels[i]))
+        still.push_back(i);
+      else if (leeway != Leeway::none)
+        plan.labels[i].crowded = true, ++plan.over_labels;
+    left = std::move(still);
+  }
+  for (const size_t i : left) {
     InstallerLabel& label = plan.labels[i];
-    const Rect& window = plan.sheets[label.sheet].window;
     const double lw = label_width_mm(label.text.size(), plan.text_mm) * scale;
-    const auto [cx, cy] = label.anchor;
-    const Rect& b = pieces[i].bounds;
-    bool done = false;
-    for (int k = 1; k <= 24 && !done; ++k) {
-      const double d = lh * 0.75 * k;
-      const double dirs[8][2] = {{0, 1}, {0, -1}, {1, 0},  {-1, 0},
-                                 {1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
-      for (const auto& dir : dirs) {
-        // Clear of the piece's own extent, then d further out.
-        const double ox = dir[0] * (b.w / 2 + lw / 2 + d), oy = dir[1] * (b.h / 2 + lh / 2 + d);
-        const Rect box = centred(cx + ox, cy + oy, lw, lh);
-        if (contains(window, box) && !placed.collides(box)) {
-          label.box = box, label.rotated = false, label.inside = false;
-          placed.add(box);
-          done = true;
-          break;
-        }
-      }
-    }
-    if (!done) {
-      label.box = centred(cx, cy, lw, lh), label.inside = false;
-      ++plan.unplaced;
-    }
+    label.box = centred(label.anchor[0], label.anchor[1], lw, lh), label.inside = false;
+    ++plan.unplaced;
   }
   return plan.unplaced == 0;
 }
 
 }  // namespace
+
+std::array<double, 2> leader_end(const InstallerLabel& label) {
+  const Point end = leader_end(label.anchor, label.box);
+  return {end.x, end.y};
+}
 
 size_t sheet_holding(const InstallerPlan& plan, double x, double y) {
   return interval_of(plan.row_edges, y) * plan.grid_columns + interval_of(plan.column_edges, x);
@@ -366,12 +527,21 @@ InstallerPlan plan_installer_sheets(const Layout& layout) {
     if (n > whole) break;
     if (text_that_fits(n) >= kInstallerMinTextMm) start = i;
   }
+  // Down from there until every label has a place, and on while the set stays within twice
+  // as many sheets, for the plan whose leaders run over the fewest labels.
+  std::optional<InstallerPlan> best;
+  size_t most_sheets = 0;
   for (std::ptrdiff_t i = start, tried = 0;
        i >= 0 && tried < static_cast<std::ptrdiff_t>(kScalesTried); --i, ++tried) {
     const double n = scales[static_cast<size_t>(i)];
     plan.text_mm = std::clamp(text_that_fits(n), kInstallerMinTextMm, kInstallerTextMm);
-    if (place(pieces, n, layout, plan)) break;
+    const bool placed = place(pieces, n, layout, plan);
+    if (best && plan.sheets.size() > most_sheets) break;
+    if (placed && !best) most_sheets = 2 * plan.sheets.size();
+    if (placed && (!best || plan.over_labels < best->over_labels)) best = plan;
+    if (placed && plan.over_labels == 0) break;
   }
+  if (best) plan = std::move(*best);
   return plan;
 }
 

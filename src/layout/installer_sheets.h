@@ -49,7 +49,12 @@ struct InstallerLabel {
   bool inside = true;                  // in its piece; else beside it, with a leader from `anchor`
   std::array<double, 2> anchor{0, 0};  // the piece's centre, layout mm
   size_t sheet = 0;                    // index into InstallerPlan::sheets
+  bool crowded = false;  // walled in: its leader may run over other labels (InstallerPlan)
 };
+// A label beside its piece is joined to it by a leader: a dot at the piece's centre (radius in
+// paper mm) and a line to the label box's nearest point, which crosses no other label or leader.
+inline constexpr double kLeaderDotMm = 0.4;
+std::array<double, 2> leader_end(const InstallerLabel& label);
 
 struct InstallerSheet {
   size_t row = 0, column = 0;  // in the grid, from the bottom-left
@@ -92,6 +97,7 @@ struct InstallerPlan {
   std::vector<MatchCaption> captions;           // both sides of every edge two sheets share
   std::vector<Rect> start_corner;  // what the start corner covers, layout mm (none: blocks)
   size_t unplaced = 0;             // labels that found no free place (drawn at the centre)
+  size_t over_labels = 0;          // crowded labels: their leaders may run over other labels
 };
 
 // The sheet whose window holds a point (each window holds its left and bottom edges): the
