@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "app/run.h"
 #include "curdle/curdling.h"
 #include "export/svg.h"
 #include "layout/builder.h"
@@ -241,6 +242,44 @@ TEST(Gltf, EveryElementKeepsItsNodeAtAnySizeAndKeptStripesTakeTheCurdsColours) {
     EXPECT_GT(b[2], b[0]);  // blue
   }
   EXPECT_GT(both, 0u);
+}
+
+// A park's ground lies flat at its thickness wherever the site cuts its cells (a row cut short
+// by layout.area, cells cut along a sloping or curved edge), and what stands on it starts on top:
+// no ledge of ground boxes at an object's height.
+TEST(Gltf, ParkGroundIsFlatWhereverTheSiteCutsItsCells) {
+  for (const auto& [recipe, area] :
+       {std::pair<std::string, std::string>{"examples/briefs/cafe-park.toml", ""},
+        {"patterns/paper/fig5a-park.toml", "layout.area=[46000, 44500]"}}) {
+    app::RunRequest request;
+    request.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/" + recipe;
+    request.recipe_text = app::read_recipe_file(request.recipe_path);
+    if (!area.empty()) request.overrides.push_back(area);
+    const app::Run run = app::resolve_run(request);
+    const Layout layout = make_layout(run.recipe.design, app::run_engine(run, 0), run.view,
+                                      *run.recipe.layout);
+    const tinygltf::Model m = read_back(layout);
+    std::map<std::string, int> node_of;
+    for (size_t i = 0; i < m.nodes.size(); ++i) node_of[m.nodes[i].name] = static_cast<int>(i);
+    const double top = layout.thickness / 1000;
+    size_t ground = 0, cut = 0, standing = 0;
+    for (const Element& e : layout.elements) {
+      ASSERT_TRUE(node_of.count(e.id)) << recipe << ": " << e.id;
+      Totals t;
+      walk(m, node_of[e.id], {0, 0, 0}, {1, 1, 1}, t);
+      if (e.stands) {
+        ++standing;
+        EXPECT_NEAR(t.lo[1], top, 1e-6) << recipe << ": " << e.id << " stands on the ground";
+        continue;
+      }
+      ++ground, cut += e.outline || e.area() < e.nominal.area() - 1;
+      EXPECT_NEAR(t.lo[1], 0, 1e-6) << recipe << ": " << e.id;
+      EXPECT_NEAR(t.hi[1], top, 1e-6) << recipe << ": " << e.id << " is not flat ground";
+    }
+    EXPECT_GT(ground, 0u);
+    EXPECT_GT(cut, 0u) << recipe << ": the site cuts some cells";
+    EXPECT_GT(standing, 0u);
+  }
 }
 
 }  // namespace curdle
