@@ -338,6 +338,41 @@ void draw_key_plan(cairo_t* cr, const Layout& layout, const InstallerPlan& plan,
   cairo_fill(cr);
 }
 
+// Where the sheet sits from the datum, and the openings and zones that show on it, as the
+// x and y of their edges (mm from the datum, as sheet 1 sets out), so that a setter-out can
+// start from any sheet.
+std::vector<std::string> sheet_setting_out(const Layout& layout, const Rect& window) {
+  const Rect on = clip(window, layout.width, layout.height);
+  std::vector<std::string> lines{fmt::format("from the datum (0, 0): x {} to {}, y {} to {}",
+                                             drawing_mm(on.x), drawing_mm(on.right()),
+                                             drawing_mm(on.y), drawing_mm(on.top()))};
+  std::vector<std::pair<std::string, Rect>> shown;
+  for (size_t i = 0; i < layout.openings_given; ++i)
+    shown.emplace_back(fmt::format("opening {}", i + 1), layout.openings[i]);
+  for (const ZoneCount& z : layout.zones) {
+    if (z.polygon.empty()) continue;
+    Rect r{z.polygon[0][0], z.polygon[0][1], 0, 0};
+    for (const auto& p : z.polygon) {
+      const double x0 = std::min(r.x, p[0]), y0 = std::min(r.y, p[1]);
+      const double x1 = std::max(r.right(), p[0]), y1 = std::max(r.top(), p[1]);
+      r = {x0, y0, x1 - x0, y1 - y0};
+    }
+    shown.emplace_back(z.name.empty() ? std::string("zone") : z.name, r);
+  }
+  size_t more = 0;
+  for (const auto& [name, r] : shown) {
+    if (!overlaps(r, on)) continue;
+    if (lines.size() >= 3) {
+      ++more;
+      continue;
+    }
+    lines.push_back(fmt::format("{}: x {} to {}, y {} to {}", name, drawing_mm(r.x),
+                                drawing_mm(r.right()), drawing_mm(r.y), drawing_mm(r.top())));
+  }
+  if (more) lines.back() += fmt::format("; {} more on sheet 1", more);
+  return lines;
+}
+
 void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDrawing& set,
                           size_t index, size_t total) {
   const InstallerPlan& plan = set.plan;
@@ -409,13 +444,16 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
           ? fmt::format("each {} in its key's colour and hatch", unit)
           : fmt::format("IDs {:.1f} mm high; a label off its piece points to it", plan.text_mm)};
   if (plan.coursed) info.push_back("courses numbered on the left, columns below");
+  for (std::string& line : sheet_setting_out(layout, sheet.window)) info.push_back(std::move(line));
   if (plan.unplaced)
     info.push_back(fmt::format("{} labels found no room: use a larger sheet", plan.unplaced));
+  // Up to eight lines above the scale bar, at the foot of the strip.
+  info.resize(std::min<size_t>(info.size(), 8));
   info = fit_lines(cr, info, info_w, 2);
   for (size_t i = 0; i < info.size(); ++i)
-    text(cr, info_x, strip + 8 + 5 * static_cast<double>(i), info[i], 2, Align::left, false,
+    text(cr, info_x, strip + 8 + 4.2 * static_cast<double>(i), info[i], 2, Align::left, false,
          i == 0);
-  scale_bar(cr, info_x, strip + 32, plan.scale, std::min(90.0, info_w));
+  scale_bar(cr, info_x, strip + 43, plan.scale, std::min(90.0, info_w));
   title_block(cr, layout, w, h, "installer's sheet", plan.scale, installer_sheet_number(index),
               total, plan.paper.name);
 }

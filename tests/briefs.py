@@ -18,6 +18,7 @@ Usage: briefs.py CURDLE SOURCE_DIR (Debian's python3 with python3-ezdxf; poppler
 
 import csv
 import io
+import re
 import subprocess
 import sys
 import tempfile
@@ -80,6 +81,8 @@ with tempfile.TemporaryDirectory() as tmp:
         words = " ".join(pdf_text(out / "layout.pdf", page).split())
         check("in its key's colour and hatch" in words and "courses" in words
               and "F-R" not in words, f"brick façade sheet {page}: not a coursed sheet")
+        check(re.search(r"from the datum \(0, 0\): x [0-9]+ to [0-9]+, y [0-9]+ to [0-9]+",
+                        words), f"brick façade sheet {page}: not set out from the datum")
     first = pdf_text(out / "layout.pdf", 1).split()
     missing = [v for v in ("0", "15065", "15965", "1350", "4275", "7200", "10125", "13050", "4125",
                            "7350", "10575", "13800", "900", "9000", "11250", "2400", "2700")
