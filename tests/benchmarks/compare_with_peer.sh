@@ -34,6 +34,7 @@ echo "curdle: whole processes ..."
 help_ms=$(whole "$build/curdle" --help)
 plane_ms=$(whole "$build/curdle" generate "$cases/plane.toml" --outputs report.json --out "$cases/out")
 cube_ms=$(whole "$build/curdle" generate "$cases/cube.toml" --outputs report.json --out "$cases/out")
+screen_ms=$(whole "$build/curdle" generate "$root/patterns/perforated-aluminium-screen.toml" --outputs layout.glb --out "$cases/out")
 echo "peer: plane b=2 E=2 K=14 p=0.7 (2^28 cells) ..."
 plane_start=$(date +%s%N)
 plane=$($py "$peer/peer_numpy.py" 2 2 "$p07" 1 1)
@@ -45,7 +46,7 @@ cube_peer_ms=$(( ($(date +%s%N) - cube_start) / 1000000 ))
 echo "peer: seed search 64 x 64, b=4, 2/3 1/2 1/3 ..."
 search=$($py "$peer/peer_numpy_search.py" 4 2/3,1/2,1/3 3000 0.111 1.5)
 
-HELP_MS=$help_ms PLANE_MS=$plane_ms CUBE_MS=$cube_ms PLANE_PEER_MS=$plane_peer_ms \
+HELP_MS=$help_ms SCREEN_MS=$screen_ms PLANE_MS=$plane_ms CUBE_MS=$cube_ms PLANE_PEER_MS=$plane_peer_ms \
 CUBE_PEER_MS=$cube_peer_ms PLANE="$plane" CUBE="$cube" SEARCH="$search" OURS="$ours" \
 PEER_RSS=$(cat /tmp/curdle-peer-cube-rss) OUR_RSS=$(cat /tmp/curdle-bench-rss) $py - <<'PY'
 import json, os
@@ -77,6 +78,9 @@ serve = ms(ours["BM_Serve_Generate_256x256"])
 print(f"{'page: regenerate 256x256 (server time)':40} {'':>12} {serve:10.2f}ms {'':>9} {'< 50 ms':>8} {'ok' if serve < 50 else 'ABOVE'}")
 print(f"{'page: segment report 67x67':40} {'':>12} {ms(ours['BM_Serve_Segment_67x67']):10.2f}ms")
 print(f"{'(layout.svg of 256x256 tiles, not used to redraw)':40} {'':>12} {ms(ours['BM_Serve_LayoutSvg_256x256']):10.1f}ms")
+glb, screen = ms(ours["BM_Screen_LayoutGlb"]), float(os.environ["SCREEN_MS"])
+print(f"{'screen layout.glb, recipe to bytes':40} {'':>12} {glb:10.1f}ms {'':>9} {'< 300 ms':>8} {'ok' if glb < 300 else 'ABOVE'}")
+print(f"{'screen, generate --outputs layout.glb':40} {'':>12} {screen:10.1f}ms {'':>9} {'< 300 ms':>8} {'ok' if screen < 300 else 'ABOVE'}")
 print(f"\npeak memory: peer cube {int(os.environ['PEER_RSS'])/1024:.0f} MiB; "
       f"curdle benchmark process {int(os.environ['OUR_RSS'])/1024:.0f} MiB")
 PY

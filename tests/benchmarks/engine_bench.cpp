@@ -177,6 +177,25 @@ void BM_Serve_LayoutSvg_256x256(benchmark::State& state) {
 }
 BENCHMARK(BM_Serve_LayoutSvg_256x256)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The perforated screen's layout.glb (patterns/perforated-aluminium-screen.toml, 8,354
+// openings in six sheets) as /api/export writes it: the recipe read, the curd and layout built
+// and the glTF written, the same bytes as `curdle generate --outputs layout.glb`.
+void BM_Screen_LayoutGlb(benchmark::State& state) {
+  curdle::server::ApiContext context;
+  context.recipe_path =
+      std::string(CURDLE_SOURCE_DIR) + "/patterns/perforated-aluminium-screen.toml";
+  std::ifstream in(context.recipe_path);
+  context.recipe_text.assign(std::istreambuf_iterator<char>(in), {});
+  size_t bytes = 0;
+  for (auto _ : state) {
+    const auto r = curdle::server::api_export(context, {{"file", "layout.glb"}});
+    if (r.status != 200) state.SkipWithError(r.body.c_str());
+    bytes = r.body.size();
+  }
+  state.counters["glb_bytes"] = static_cast<double>(bytes);
+}
+BENCHMARK(BM_Screen_LayoutGlb)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 }  // namespace
 
 BENCHMARK_MAIN();
