@@ -256,8 +256,8 @@ TEST(Gltf, ParkGroundIsFlatWhereverTheSiteCutsItsCells) {
     request.recipe_text = app::read_recipe_file(request.recipe_path);
     if (!area.empty()) request.overrides.push_back(area);
     const app::Run run = app::resolve_run(request);
-    const Layout layout = make_layout(run.recipe.design, app::run_engine(run, 0), run.view,
-                                      *run.recipe.layout);
+    const Layout layout =
+        make_layout(run.recipe.design, app::run_engine(run, 0), run.view, *run.recipe.layout);
     const tinygltf::Model m = read_back(layout);
     std::map<std::string, int> node_of;
     for (size_t i = 0; i < m.nodes.size(); ++i) node_of[m.nodes[i].name] = static_cast<int>(i);

@@ -280,6 +280,30 @@ void lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, const L
   plan.column_edges = xs, plan.row_edges = ys;
 }
 
+// A point inside an outline's rings (even-odd: its islands are out).
+bool within_rings(const std::vector<Ring>& rings, double x, double y) {
+  bool in = false;
+  for (const Ring& ring : rings)
+    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      const auto &a = ring[i], &b = ring[j];
+      if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+        in = !in;
+    }
+  return in;
+}
+
+// A label's box on a piece cut along a sloping or curved edge: its corners inside the cut
+// outline and no corner of the outline inside it.
+bool within_outline(const Outline& outline, const Rect& box) {
+  for (const double x : {box.x, box.right()})
+    for (const double y : {box.y, box.top()})
+      if (!within_rings(outline.rings, x, y)) return false;
+  for (const Ring& ring : outline.rings)
+    for (const auto& p : ring)
+      if (p[0] > box.x && p[0] < box.right() && p[1] > box.y && p[1] < box.top()) return false;
+  return true;
+}
+
 // A place for the label inside its piece on the piece's own sheet: in the middle of its largest
 // part that holds it, across or along, else moved towards the part's sides; false when none.
 bool place_inside(const InstallerPiece& piece, double lh, double scale, const InstallerPlan& plan,
@@ -301,7 +325,8 @@ bool place_inside(const InstallerPiece& piece, double lh, double scale, const In
         if (room_x < 0 || room_y < 0) continue;
         const Rect box = centred(part->x + part->w / 2 + shift[0] * room_x,
                                  part->y + part->h / 2 + shift[1] * room_y, w, h);
-        if (contains(window, box) && placed.box_free(box, owner)) {
+        if (contains(window, box) && placed.box_free(box, owner) &&
+            (!piece.outline || within_outline(*piece.outline, box))) {
           label.box = box, label.rotated = rotated, label.inside = true;
           placed.add(box, PlacedLabels::Mark::inside, owner);
           return true;
