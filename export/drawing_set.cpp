@@ -15,6 +15,7 @@
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
 #include "layout/installer_sheets.h"
+#include "layout/laying_pattern.h"
 #include "layout/piece.h"
 
 namespace curdle {
@@ -343,9 +344,9 @@ void draw_key_plan(cairo_t* cr, const Layout& layout, const InstallerPlan& plan,
 // start from any sheet.
 std::vector<std::string> sheet_setting_out(const Layout& layout, const Rect& window) {
   const Rect on = clip(window, layout.width, layout.height);
-  std::vector<std::string> lines{fmt::format("from the datum (0, 0): x {} to {}, y {} to {}",
-                                             drawing_mm(on.x), drawing_mm(on.right()),
-                                             drawing_mm(on.y), drawing_mm(on.top()))};
+  std::vector<std::string> lines{
+      fmt::format("from the datum (0, 0): x {:.0f} to {:.0f}, y {:.0f} to {:.0f}", on.x, on.right(),
+                  on.y, on.top())};
   std::vector<std::pair<std::string, Rect>> shown;
   for (size_t i = 0; i < layout.openings_given; ++i)
     shown.emplace_back(fmt::format("opening {}", i + 1), layout.openings[i]);
@@ -414,7 +415,9 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   box(cr, v.left, v.top, plan.viewport[0], plan.viewport[1], 0.35);
 
   draw_match_lines(cr, plan, v, index);
-  if (layout.kind->laid_in_courses()) draw_course_numbers(cr, set, sheet, v);
+  // A pattern's rows are not straight courses: its units are found by their IDs' rows.
+  if (layout.kind->laid_in_courses() && layout.pattern == LayingPattern::grid)
+    draw_course_numbers(cr, set, sheet, v);
   const double strip = h - kMargin - kTitleStrip;
   const double kx = kLeftMargin + 4, kw = 70;
   draw_key_plan(cr, layout, plan, index, kx, strip + 8, kw, kTitleStrip - 12);
@@ -443,7 +446,10 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
       plan.coursed
           ? fmt::format("each {} in its key's colour and hatch", unit)
           : fmt::format("IDs {:.1f} mm high; a label off its piece points to it", plan.text_mm)};
-  if (plan.coursed) info.push_back("courses numbered on the left, columns below");
+  if (plan.coursed && layout.pattern == LayingPattern::grid)
+    info.push_back("courses numbered on the left, columns below");
+  else if (plan.coursed)
+    info.push_back(fmt::format("laid {}: each unit as drawn", pattern_name(layout.pattern)));
   for (std::string& line : sheet_setting_out(layout, sheet.window)) info.push_back(std::move(line));
   if (plan.unplaced)
     info.push_back(fmt::format("{} labels found no room: use a larger sheet", plan.unplaced));

@@ -263,7 +263,8 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
   write_surface(out, layout, f, s);
   if (plan.sheets.size() > 1) write_sheet_grid(out, plan, f, s);
   write_labels(out, plan, f, s);
-  if (layout.kind->laid_in_courses()) write_courses(out, layout, first, f, s);
+  if (layout.kind->laid_in_courses() && layout.pattern == LayingPattern::grid)
+    write_courses(out, layout, first, f, s);
   write_key(out, layout, f.x(last.right()) + 6 * s, 3.5 * s, s);
   out << "</svg>\n";
 }

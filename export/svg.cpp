@@ -10,6 +10,7 @@
 #include "curdle/stop.h"
 #include "curdle/text.h"
 #include "export/title_block.h"
+#include "layout/union.h"
 
 namespace curdle {
 namespace {
@@ -204,7 +205,8 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
   draw_outside(out, layout, s, unit);
 }
 
-void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, double unit) {
+// The grid's elements: uncut ones merged into runs, cut ones alone, and the joints over them.
+void draw_grid_modules(std::ostream& out, const Layout& layout, const Sheet& s) {
   const double W = layout.width, H = layout.height;
   const size_t values = layout.legend.size();
   // Uncut elements on the grid are merged; cut ones are drawn alone.
@@ -271,6 +273,45 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
       out << fmt::format("<path id=\"joints\" class=\"joint\" fill=\"{}\" d=\"{}\"/>\n",
                          hex_colour(layout.joint_colour), d);
   }
+}
+
+// A pattern's units (herringbone, basketweave, hexagons): the surface in the joints' colour,
+// then each unit as its own polygon in its value's group.
+void draw_pattern_units(std::ostream& out, const Layout& layout, const Sheet& s) {
+  if (layout.joint > 0) {
+    std::string d;
+    for (const Outline& o :
+         surfaced(Rect{0, 0, layout.width, layout.height}, layout.holes(), layout.cut_away))
+      for (const Ring& ring : o.rings) d += polygon_path(s, ring);
+    out << fmt::format(
+        "<path id=\"joints\" class=\"joint\" fill=\"{}\" fill-rule=\"evenodd\" d=\"{}\"/>\n",
+        hex_colour(layout.joint_colour), d);
+  }
+  std::vector<std::vector<const Element*>> by_value(layout.legend.size());
+  for (const Element& e : layout.elements) by_value[e.value].push_back(&e);
+  for (const LegendEntry& entry : layout.legend) {
+    out << fmt::format(
+        "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" "
+        "data-count=\"{}\" fill=\"{}\">\n",
+        entry.value, entry.value, escape(entry.label), entry.count, hex_colour(entry.colour));
+    for (const Element* e : by_value[entry.value]) {
+      stop_point();
+      std::string d;
+      for (const Ring& ring : e->outline->rings) d += polygon_path(s, ring);
+      out << fmt::format(
+          "<path id=\"{}\" class=\"{}\" fill-rule=\"evenodd\" d=\"{}\" "
+          "data-count=\"1\"/>\n",
+          e->id, e->cut ? "cut" : "unit", d);
+    }
+    out << "</g>\n";
+  }
+}
+
+void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, double unit) {
+  if (layout.pattern != LayingPattern::grid)
+    draw_pattern_units(out, layout, s);
+  else
+    draw_grid_modules(out, layout, s);
   draw_outside(out, layout, s, unit);
   if (!layout.openings.empty()) {
     out << fmt::format(

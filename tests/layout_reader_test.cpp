@@ -27,6 +27,38 @@ TEST(Recipe, BondAndCentredOrigin) {
   EXPECT_NE(e.find("\"centre\""), std::string::npos) << e;
 }
 
+// layout.pattern: a paver's pattern with the tile's proportions it needs, and nothing that moves
+// or shifts a grid beside it.
+TEST(Recipe, LayingPattern) {
+  const std::string floor = with_layout("kind = \"paving\"\nfloor = [4000, 3000]\njoint = 3\n");
+  Recipe r = parse_recipe(floor + "tile = [200, 98.5]\npattern = \"herringbone-45\"\n", "r.toml");
+  EXPECT_EQ(r.layout->pattern, LayingPattern::herringbone_45);
+  EXPECT_EQ(parse_recipe(floor + "tile = [300, 300]\npattern = \"hexagon-flat\"\n", "r.toml")
+                .layout->pattern,
+            LayingPattern::hexagon_flat);
+  EXPECT_EQ(parse_recipe(floor + "tile = [306, 100]\npattern = \"basketweave\"\n", "r.toml")
+                .layout->pattern,
+            LayingPattern::basketweave);
+  auto fails = [&](const std::string& keys, const std::string& key, const std::string& words) {
+    const std::string e = error_of(floor + keys);
+    EXPECT_NE(e.find(key), std::string::npos) << e;
+    EXPECT_NE(e.find(words), std::string::npos) << e;
+  };
+  fails("tile = [200, 100]\npattern = \"chevron\"\n", "layout.pattern", "\"herringbone-45\"");
+  fails("tile = [200, 100]\npattern = \"herringbone\"\n", "layout.pattern", "203 x 100 mm");
+  fails("tile = [250, 100]\npattern = \"basketweave\"\n", "layout.pattern", "n from 2 to 4");
+  fails("tile = [300, 260]\npattern = \"hexagon\"\n", "layout.pattern", "[300, 300]");
+  fails("tile = [203, 100]\npattern = \"herringbone\"\nbond = \"half\"\n", "layout.bond",
+        "pattern");
+  fails("tile = [203, 100]\npattern = \"herringbone\"\nshift = [10, 0]\n", "layout.shift",
+        "pattern");
+  fails("tile = [203, 100]\npattern = \"herringbone\"\norigin = \"centre\"\n", "layout.origin",
+        "corner");
+  EXPECT_NE(error_of(with_layout("kind = \"paving\"\ntile = [300, 300]\npattern = \"hexagon\"\n"))
+                .find("layout.floor"),
+            std::string::npos);
+}
+
 // The installer's sheets: scale, paper and set named in the recipe, each checked.
 TEST(Recipe, InstallerSheetKeys) {
   const std::string wall =

@@ -10,7 +10,7 @@ std::vector<std::string> SurfaceKind::keys() const {
   const std::vector<std::string> own = own_keys();
   keys.insert(keys.end(), own.begin(), own.end());
   if (laid_on_a_grid())
-    keys.insert(keys.end(), {"min_cut", "shift", "bond", "zones", "outline", "unit"});
+    keys.insert(keys.end(), {"min_cut", "shift", "bond", "pattern", "zones", "outline", "unit"});
   return keys;
 }
 

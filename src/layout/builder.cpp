@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <tuple>
 
 #include "curdle/error.h"
 #include "curdle/overlay.h"
@@ -11,6 +12,7 @@
 #include "curdle/stop.h"
 #include "layout/cut_rules.h"
 #include "layout/guidance.h"
+#include "layout/laying_pattern.h"
 #include "layout/piece.h"
 #include "layout/union.h"
 #include "layout/zone.h"
@@ -47,6 +49,9 @@ double centring_shift(double extent, double module, double joint) {
 }
 
 std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec) {
+  if (spec.pattern != LayingPattern::grid)
+    return pattern_cells(pattern_units(spec.pattern, spec.module_w, spec.module_h, spec.joint,
+                                       spec.size->at(0), spec.size->at(1)));
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
   // Element i starts at i * pitch - shift (less the course's bond offset): every element that
   // starts inside the floor is laid.
@@ -181,6 +186,78 @@ void lay_elements(Layout& layout, const std::vector<uint16_t>& values, const Lay
   }
 }
 
+// The units of a pattern in laying order (courses from the origin corner, along each away
+// from it, a basketweave square's units in turn), each cut at the surface's edges, its holes
+// and `cuts`; a unit wholly inside keeps its polygon, with no Boolean operation.
+void lay_pattern(Layout& layout, const std::vector<uint16_t>& values, const LayoutSpec& spec,
+                 const PolygonCuts& cuts) {
+  const std::vector<Rect> holes = layout.holes();
+  const Rect surface{0, 0, layout.width, layout.height};
+  const bool right = from_right(spec.origin), top = from_top(spec.origin);
+  std::vector<PatternUnit> units = pattern_units(spec.pattern, spec.module_w, spec.module_h,
+                                                 spec.joint, layout.width, layout.height);
+  std::sort(units.begin(), units.end(), [](const PatternUnit& a, const PatternUnit& b) {
+    return std::tie(a.row, a.column, a.part) < std::tie(b.row, b.column, b.part);
+  });
+  const int digits = static_cast<int>(std::to_string(std::max(layout.columns, layout.rows)).size());
+  layout.elements.reserve(units.size());
+  for (PatternUnit& u : units) {
+    stop_point();
+    // From the pattern's frame (x along the first course from the origin corner) to the
+    // surface's: mirrored where laying starts on the right or at the top.
+    for (auto& v : u.ring) {
+      if (right) v[0] = layout.width - v[0];
+      if (top) v[1] = layout.height - v[1];
+    }
+    if (right != top) std::reverse(u.ring.begin(), u.ring.end());
+    Element e;
+    e.row = u.row, e.column = u.column;
+    const int64_t i = right ? layout.columns - 1 - u.column : u.column;
+    const int64_t j = top ? layout.rows - 1 - u.row : u.row;
+    e.cell_x = layout.view.origin[0] + i;
+    e.cell_y = layout.view.origin[1] + j;
+    e.value = values[static_cast<size_t>(j * layout.columns + i)];
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const auto& [x, y] : u.ring)
+      x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+    e.nominal = Rect{x0, y0, x1 - x0, y1 - y0};
+    const bool rectangular = u.ring.size() == 4;
+    e.stock_w = rectangular ? spec.module_w : e.nominal.w;
+    e.stock_h = rectangular ? spec.module_h : e.nominal.h;
+    e.turn = u.turn;
+    if (right) e.turn = 180 - e.turn;
+    if (top) e.turn = -e.turn;
+    e.turn = std::fmod(e.turn + 360, 180);
+    const double whole = polygon_area(u.ring);
+    bool inside = x0 >= 0 && y0 >= 0 && x1 <= layout.width && y1 <= layout.height;
+    for (const Rect& h : holes) inside = inside && !overlaps(h, e.nominal);
+    if (!cuts.outline.empty())
+      inside = inside && crossing(e.nominal, cuts.outline) == Crossing::inside;
+    for (const Polygon& hole : cuts.holes)
+      inside = inside && crossing(e.nominal, hole) == Crossing::outside;
+    if (inside) {
+      e.outline = Outline{{u.ring}, whole};
+    } else {
+      Outline piece = joined(cut_unit(u.ring, surface, holes, cuts));
+      if (piece.area < kEps) {
+        ++layout.omitted;  // wholly over an opening or zone, or outside the floor or outline
+        continue;
+      }
+      e.cut = piece.area < whole - kEps;
+      e.form = e.cut ? ElementForm::cut_piece : ElementForm::piece;
+      e.outline = std::move(piece);
+    }
+    e.key = ElementId{spec.kind->id_letter(),
+                      digits,
+                      std::nullopt,
+                      u.row,
+                      u.column,
+                      u.part ? std::to_string(u.part) : std::string()};
+    e.id = e.key.text();
+    layout.elements.push_back(std::move(e));
+  }
+}
+
 // Every element is tested against every corner of the sloping edges it may cross: a million
 // elements along a 10,000-corner outline ran for minutes. Bounded before anything is laid.
 void check_cutting_work(const Box& view, const PolygonCuts& cuts) {
@@ -215,6 +292,7 @@ Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const
   layout.module_h = spec.module_h;
   layout.shift = spec.shift;
   layout.bond = spec.bond;
+  layout.pattern = spec.pattern;
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
   if (spec.size) {
     layout.width = (*spec.size)[0];
@@ -249,7 +327,10 @@ Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const
     if (z.rule == ZoneRule::exclude && z.rects.empty()) cuts.holes.push_back(z.polygon);
   check_cutting_work(view, cuts);
   if (!cuts.empty()) layout.cut_away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
-  lay_elements(layout, values, spec, cuts);
+  if (spec.pattern == LayingPattern::grid)
+    lay_elements(layout, values, spec, cuts);
+  else
+    lay_pattern(layout, values, spec, cuts);
   apply_zones(layout, spec, value_count);
   return layout;
 }
@@ -380,6 +461,14 @@ double bonded_joint_area(const Layout& layout) {
 
 double joint_area(const Layout& layout) {
   if (layout.joint <= 0) return 0;
+  if (layout.pattern != LayingPattern::grid) {  // what of the surface the units leave
+    double area = 0;
+    for (const Outline& o :
+         surfaced(Rect{0, 0, layout.width, layout.height}, layout.holes(), layout.cut_away))
+      area += o.area;
+    for (const Element& e : layout.elements) area -= e.area();
+    return area;
+  }
   const bool right = from_right(layout.origin);
   const bool top = from_top(layout.origin);
   // Joints follow each module, counted from the origin corner.

@@ -151,6 +151,30 @@ struct Sliver {
   const char* where;  // what cut it
 };
 
+// A pattern's cut unit narrower than the rule across one of its own sides: measured along the
+// unit's length and across its width (a hexagon: across each pair of flats), as the axis the
+// rule names (0: along the unit's length, 1: across it) and the run.
+std::optional<std::pair<int, double>> pattern_sliver(const Layout& layout, const LayoutSpec& spec,
+                                                     const Element& e) {
+  const bool hexagon =
+      layout.pattern == LayingPattern::hexagon || layout.pattern == LayingPattern::hexagon_flat;
+  const double pi = 3.14159265358979323846;
+  std::vector<std::pair<int, double>> directions;  // (rule axis, degrees)
+  if (hexagon)
+    directions = {{0, e.turn}, {0, e.turn + 60}, {0, e.turn + 120}};
+  else
+    directions = {{0, e.turn}, {1, e.turn + 90}};
+  for (const auto& [axis, degrees] : directions) {
+    const double c = std::cos(degrees * pi / 180), s = std::sin(degrees * pi / 180);
+    double lo = 1e300, hi = -1e300;
+    for (const Ring& ring : e.outline->rings)
+      for (const auto& [x, y] : ring)
+        lo = std::min(lo, x * c + y * s), hi = std::max(hi, x * c + y * s);
+    if (hi - lo < least_cut(spec, axis) - kEps) return std::pair{axis, hi - lo};
+  }
+  return std::nullopt;
+}
+
 std::vector<Sliver> find_slivers(const Layout& layout, const LayoutSpec& spec) {
   std::vector<Sliver> out;
   for (size_t i = 0; i < layout.elements.size(); ++i) {
@@ -158,6 +182,11 @@ std::vector<Sliver> find_slivers(const Layout& layout, const LayoutSpec& spec) {
     const Element& e = layout.elements[i];
     if (!e.cut) continue;
     const Rect laid = clip(e.nominal, layout.width, layout.height);
+    if (layout.pattern != LayingPattern::grid) {  // across the unit's own sides
+      if (const auto s = pattern_sliver(layout, spec, e))
+        out.push_back({i, s->first, s->second, "an edge or opening"});
+      continue;
+    }
     for (int axis = 0; axis < 2; ++axis) {
       // A piece cut along a sloping edge: its extent along each axis.
       const double run =
@@ -210,11 +239,14 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<
   for (const Sliver& s : slivers)
     layout.violations.push_back(fmt::format(
         "{}: cut to {:.1f} mm {} at {}, below {:.1f} mm ({})", layout.elements[s.element].id, s.run,
-        s.axis == 0 ? "wide" : "high", s.where, least_cut(spec, s.axis), rule_name(spec)));
+        layout.pattern != LayingPattern::grid ? (s.axis == 0 ? "long" : "wide")
+        : s.axis == 0                         ? "wide"
+                                              : "high",
+        s.where, least_cut(spec, s.axis), rule_name(spec)));
   std::string note =
       fmt::format("{} cut {}{} narrower than {} (see the rule violations)", slivers.size(),
                   layout.element_type, slivers.size() == 1 ? " is" : "s are", rule_name(spec));
-  if (spec.centred || !spec.size) {
+  if (spec.centred || !spec.size || spec.pattern != LayingPattern::grid) {
     note += fmt::format("; lay specials or closers: {}", specials(layout, slivers));
     return layout.notes.push_back(note);
   }

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "layout/laying_pattern.h"
+
 namespace curdle {
 
 namespace {
@@ -27,7 +29,8 @@ void advise_lattice(Layout& layout, const Design& design) {
   if (layout.kind->dimension() != 2 || lattice.stages < 1 || layout.module_w <= 0) return;
   const int stage = first_dying_stage(design);
   if (stage == 0) return;
-  const double pitch_w = layout.module_w + layout.joint, pitch_h = layout.module_h + layout.joint;
+  const auto [pitch_w, pitch_h] =
+      pattern_cell_pitch(layout.pattern, layout.module_w, layout.module_h, layout.joint);
   const double shorter = std::min(layout.width, layout.height);
   const double room = shorter / 3;
   const auto side = static_cast<double>(lattice.side_in_cells(stage));

@@ -150,6 +150,10 @@ class OwnKeys {
 };
 
 // The recipe's [layout] section: the keys every kind has, its kind, and its kind's own keys.
+// How units are laid: a grid of rows and columns (stack or bond), or a paver's pattern
+// (laying_pattern.h).
+enum class LayingPattern { grid, herringbone, herringbone_45, basketweave, hexagon, hexagon_flat };
+
 struct LayoutSpec {
   const LayoutKind* kind = nullptr;  // never null once read; set_kind sets it
   OwnKeys keys;
@@ -182,6 +186,7 @@ struct LayoutSpec {
   // course below, counted from the origin corner: 0 stack, 1/2 stretcher or running bond, 1/3,
   // 1/4. Every element still stands for one cell; courses are cut at the ends.
   double bond = 0;
+  LayingPattern pattern = LayingPattern::grid;  // layout.pattern
   // layout.origin = "centre": the grid centred on the surface so that the cut pieces at
   // opposite edges are equal (the shift is worked out from the size); laying still starts at
   // the bottom-left.
@@ -232,6 +237,7 @@ struct Element {
   int sheet = -1;                   // perforation: the fabrication sheet it is cut in
   Rgb colour;                       // park: the element's own colour
   bool stands = false;              // park: an object standing on the ground (tree, bench)
+  double turn = 0;  // a pattern's unit: its long side (a hexagon: a flat's normal) from x, °
   double area() const;
 };
 
@@ -257,11 +263,12 @@ struct Layout {
   Corner origin = Corner::bottom_left;
   int64_t columns = 0, rows = 0;  // elements along x and y
   double module_w = 0, module_h = 0;
-  std::array<double, 2> shift{0, 0};  // the grid moved back from the origin corner, mm
-  double bond = 0;                    // each course's move along x, a share of the pitch
-  bool centred = false;               // the grid centred on the surface
-  DrawingKeys drawing;                // the drawing's scale, sheet, resolution and overlays
-  OrderingKeys ordering;              // spare, packs and lots of the schedules
+  std::array<double, 2> shift{0, 0};            // the grid moved back from the origin corner, mm
+  double bond = 0;                              // each course's move along x, a share of the pitch
+  LayingPattern pattern = LayingPattern::grid;  // units laid in a paver's pattern: outlines
+  bool centred = false;                         // the grid centred on the surface
+  DrawingKeys drawing;    // the drawing's scale, sheet, resolution and overlays
+  OrderingKeys ordering;  // spare, packs and lots of the schedules
   std::vector<Element> elements;
   // Every hole in the surface: a façade's openings, then the excluded zones' rectangles.
   std::vector<Rect> openings;

@@ -143,6 +143,18 @@ std::vector<Outline> cut_along(const std::vector<Rect>& rects, const PolygonCuts
   return outlines_of(set);
 }
 
+std::vector<Outline> cut_unit(const Ring& unit, const Rect& surface, const std::vector<Rect>& holes,
+                              const PolygonCuts& cuts) {
+  CGAL::Polygon_set_2<Kernel> set;
+  set.join(exact(unit));
+  set.intersection(exact(surface));
+  if (!cuts.outline.empty()) set.intersection(exact(cuts.outline));
+  for (const Rect& h : holes)
+    if (h.w > 0 && h.h > 0) set.difference(exact(h));
+  for (const Polygon& hole : cuts.holes) set.difference(exact(hole));
+  return outlines_of(set);
+}
+
 std::vector<Outline> cut_away(const Rect& surface, const PolygonCuts& cuts) {
   CGAL::Polygon_set_2<Kernel> set;
   if (!cuts.outline.empty()) {

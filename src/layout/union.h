@@ -38,6 +38,12 @@ struct PolygonCuts {
 // (the union of `rects`) within the outline and off the holes, exact; one Outline per part.
 std::vector<Outline> cut_along(const std::vector<Rect>& rects, const PolygonCuts& cuts);
 
+// A pattern's unit (laying_pattern.h) as laid: within `surface` and the cuts' outline, off the
+// rectangular `holes` and the cuts' holes, exact; one Outline per part, none when nothing is
+// left.
+std::vector<Outline> cut_unit(const Ring& unit, const Rect& surface, const std::vector<Rect>& holes,
+                              const PolygonCuts& cuts);
+
 // What of `surface` is not surfaced: beyond the outline, or in a hole.
 std::vector<Outline> cut_away(const Rect& surface, const PolygonCuts& cuts);
 

@@ -10,6 +10,7 @@
 #include "kinds/registry.h"
 #include "layout/builder.h"
 #include "layout/drawing_sheet.h"
+#include "layout/laying_pattern.h"
 #include "layout/zone.h"
 
 namespace curdle::reading {
@@ -134,6 +135,60 @@ void read_bond(TableReader& r, LayoutSpec& spec) {
     r.fail("bond", "needs combine = \"mix\": kept curds are drawn as stripes of a stacked grid");
 }
 
+// layout.pattern: a paver's pattern instead of the grid (laying_pattern.h), with the tile's
+// proportions it needs.
+void read_pattern(TableReader& r, LayoutSpec& spec) {
+  const auto name = read_string(r, "pattern", "a laying pattern");
+  if (!name) return;
+  const auto pattern = pattern_named(*name);
+  if (!pattern)
+    r.fail("pattern",
+           "must be \"grid\" (rows and columns, with layout.bond), \"herringbone\" (90°), "
+           "\"herringbone-45\", \"basketweave\", \"hexagon\" (pointy top) or "
+           "\"hexagon-flat\"");
+  spec.pattern = *pattern;
+  if (spec.pattern == LayingPattern::grid) return;
+  if (!spec.size)
+    r.fail("pattern",
+           "needs the surface's size in millimetres: a pattern is laid over a floor "
+           "or wall, not over the field's cells");
+  if (spec.bond > 0)
+    r.fail("bond", fmt::format("cannot be given with pattern = \"{}\": the pattern sets where "
+                               "every unit goes",
+                               *name));
+  if (spec.combine == Combine::keep)
+    r.fail("pattern", "needs combine = \"mix\": kept curds are drawn as stripes of a grid");
+  if (spec.centred) r.fail("origin", "must be a corner with a pattern: laying starts there");
+  const double w = spec.module_w, h = spec.module_h, j = spec.joint;
+  switch (spec.pattern) {
+    case LayingPattern::herringbone:
+    case LayingPattern::herringbone_45:
+      if (std::fabs(w - (2 * h + j)) > 0.5)
+        r.fail("pattern", fmt::format("herringbone needs a unit two widths and a joint long: "
+                                      "{:g} mm wide with {:g} mm joints is {:g} x {:g} mm, not "
+                                      "{:g} x {:g}",
+                                      h, j, 2 * h + j, h, w, h));
+      break;
+    case LayingPattern::basketweave:
+      if (basketweave_units(w, h, j) == 0)
+        r.fail("pattern", fmt::format("basketweave needs a unit n widths and n - 1 joints long, "
+                                      "n from 2 to 4, so that n of them make a square: {:g} mm "
+                                      "wide with {:g} mm joints is {:g}, {:g} or {:g} mm long, "
+                                      "not {:g}",
+                                      h, j, 2 * h + j, 3 * h + 2 * j, 4 * h + 3 * j, w));
+      break;
+    case LayingPattern::hexagon:
+    case LayingPattern::hexagon_flat:
+      if (std::fabs(w - h) > 1e-9)
+        r.fail("pattern", fmt::format("a hexagon's tile is given square, its side the width "
+                                      "across the flats: [{:g}, {:g}], not [{:g}, {:g}]",
+                                      w, w, w, h));
+      break;
+    case LayingPattern::grid:
+      break;
+  }
+}
+
 // layout.min_cut: one width for both ways, or [across x, across y] (a brick's 70 mm along the
 // course and 22 mm up it), each at most the element that way.
 void read_min_cut(TableReader& r, LayoutSpec& spec) {
@@ -158,6 +213,7 @@ void read_min_cut(TableReader& r, LayoutSpec& spec) {
 // layout.min_cut and layout.shift: the narrowest cut piece, and the grid moved to avoid slivers.
 void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec) {
   read_bond(r, spec);
+  read_pattern(r, spec);
   read_zones(r, design, spec);
   const bool sloping_zone = std::any_of(spec.zones.begin(), spec.zones.end(), [](const Zone& z) {
     return z.rule == ZoneRule::exclude && z.rects.empty();
@@ -176,6 +232,8 @@ void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec) {
     spec.unit = *unit;
   }
   const toml::node* n = r.get("shift");
+  if (n && spec.pattern != LayingPattern::grid)
+    r.fail("shift", "cannot be given with a pattern: laying starts at the origin corner");
   if (spec.centred) {
     if (n) r.fail("shift", "cannot be given with origin = \"centre\", which works the shift out");
     if (spec.size)
