@@ -115,8 +115,14 @@ async function updateRecipeText() {
 function updateLayoutPreview(hasLayout, win) {
   const figure = $("layout-figure");
   const cells = state.segment ? state.segment[2] * state.segment[3] : (state.whole ? state.whole.report.cells : 0);
-  if (!hasLayout || cells > 40000) { figure.hidden = true; return; }
+  if (!hasLayout || cells > 40000) { figure.hidden = true; $("view3d-figure").hidden = true; return; }
   figure.hidden = false;
+  // The 3-D view (view3d.js) loads the same layout.glb as the download.
+  $("view3d-figure").hidden = false;
+  window.layout3dSrc = "/api/export?" + query({ file: "layout.glb", window: win || undefined });
+  window.dispatchEvent(new Event("layout3d"));
+  if (!window.view3d)
+    $("view3d-caption").textContent = "The 3-D view needs three.js beside the page: run setup.sh and build again.";
   const img = $("layout-preview");
   const src = "/api/export?" + query({ file: "layout.png", window: win || undefined });
   if (img.getAttribute("src") === src) return;

@@ -165,6 +165,34 @@ try {
   check((await page.textContent('#layout-caption')).includes('segment 107,77,67,67'), 'the segment\'s layout.png is drawn below the curd');
   await page.screenshot({ path: path.join(shots, '2-segment.png'), fullPage: true });
 
+  // The 3-D view: the segment's layout.glb (the download's bytes) drawn by three.js, not blank,
+  // and a click on an element names it.
+  const shown3d = (win) => page.waitForFunction((w) => window.view3d && window.view3d.src &&
+      window.view3d.src.includes(encodeURIComponent(w)) && !document.querySelector('#view3d').classList.contains('stale'),
+      win, { timeout: 60000 });
+  await shown3d('107,77,67,67');
+  const drawn = await page.evaluate(() => window.view3d.drawn);
+  check(drawn > 0.2, `the 3-D view draws the segment's layout.glb (${(drawn * 100).toFixed(0)} % of the picture)`);
+  await page.evaluate(() => document.querySelector('#view3d').scrollIntoView({ block: 'center' }));
+  const target = await page.evaluate(() => window.view3d.pointOnElement());
+  check(!!target, 'an element of the 3-D view can be found under the pointer');
+  if (target) {
+    await page.mouse.click(target.x, target.y);
+    await page.waitForFunction((id) => document.querySelector('#view3d-info').dataset.id === id, target.id, { timeout: 10000 });
+    const said = await page.textContent('#view3d-info');
+    // The value and material of that element in the segment's own schedule.csv.
+    const rows = (await (await page.request.get(url + 'api/export?' + await page.evaluate(() =>
+      query({ file: 'schedule.csv', window: windowText() })))).text()).split(/\r?\n/);
+    const header = rows[0].replace(/^\ufeff/, '').split(',');
+    const row = rows.find((r) => r.startsWith(target.id + ','));
+    const field = (name) => row && row.split(',')[header.indexOf(name)];
+    check(!!row && said === `${target.id}: value ${field('value')}` + said.slice(`${target.id}: value ${field('value')}`.length) &&
+          said.endsWith(', ' + field('material')),
+          `a click on ${target.id} in 3-D shows its ID, value and material as schedule.csv has them: ${said}`);
+  }
+  await page.locator('#view3d-figure').screenshot({ path: path.join(shots, '2b-segment-3d.png') });
+  const loads = await page.evaluate(() => window.view3d.loads);
+
   // Downloads, and the same files from the command line with the command the page shows.
   const names = ['layout.svg', 'layout.glb', 'schedule.csv', 'quantities.csv', 'report.json', 'recipe.toml'];
   const downloads = path.join(work, 'page');
@@ -188,6 +216,12 @@ try {
   execFileSync(curdle, ['generate', path.join(downloads, 'recipe.toml'), '--out', fromRecipe, '--outputs', 'schedule.csv,report.json']);
   const [s1, s2] = await Promise.all([readFile(path.join(downloads, 'schedule.csv')), readFile(path.join(fromRecipe, 'schedule.csv'))]);
   check(s1.equals(s2), 'recipe.toml alone reproduces the segment\'s schedule.csv');
+
+  // Moving the segment reloads the 3-D view with the new segment's layout.glb.
+  await page.fill('#window-text', '100,70,67,67');
+  await page.dispatchEvent('#window-text', 'change');
+  await shown3d('100,70,67,67');
+  check(await page.evaluate(() => window.view3d.loads) > loads, 'moving the segment reloads the 3-D view');
 
   // Bad input: the page's own check, and the server's message shown as it is.
   await page.fill('input[aria-label="Curd 0 stage 2 probability"]', '1.5');
