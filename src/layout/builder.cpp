@@ -1,5 +1,7 @@
 #include "layout/builder.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -256,6 +258,16 @@ void lay_pattern(Layout& layout, const std::vector<uint16_t>& values, const Layo
     e.id = e.key.text();
     layout.elements.push_back(std::move(e));
   }
+  // A herringbone at 90° climbs across the cells' grid: the corners of the view take no unit.
+  std::vector<bool> taken(static_cast<size_t>(layout.columns * layout.rows), false);
+  for (const PatternUnit& u : units)
+    taken[static_cast<size_t>(u.row * layout.columns + u.column)] = true;
+  const auto unused = static_cast<size_t>(std::count(taken.begin(), taken.end(), false));
+  if (unused * 10 > taken.size())
+    layout.notes.push_back(fmt::format(
+        "{} of the view's {} cells take no unit: the {} pattern's courses run across the cells' "
+        "grid; the report counts the curd's cells, the legend and schedules the units laid",
+        unused, taken.size(), pattern_name(spec.pattern)));
 }
 
 // Every element is tested against every corner of the sloping edges it may cross: a million
