@@ -12,6 +12,7 @@
 #include <random>
 #include <set>
 
+#include "layout/cell_placement.h"
 #include "layout_support.h"
 
 namespace curdle {
@@ -97,6 +98,27 @@ TEST_P(LayingPatterns, TileTheSurfaceWithJointsAndNoOverlap) {
   EXPECT_EQ(gaps, 0) << "points further than half a joint from every unit";
   // The units' laid areas add up to the share of the surface the points found in them.
   EXPECT_NEAR(laid / (W * H), static_cast<double>(inside) / samples, 0.01);
+  // A density field in millimetres reads each cell where its unit lies: within a unit (the
+  // 90° herringbone's diagonal courses excepted), exactly for a basketweave square's middle.
+  if (c.pattern == LayingPattern::herringbone) return;
+  const CellPlacement placement = cell_placement(spec, layout.view);
+  const double reach = c.pattern == LayingPattern::basketweave ? 1e-6 : c.length / 2 + c.joint;
+  // Each cell's units laid whole, and the middle of them (a basketweave square's middle).
+  std::map<std::pair<int64_t, int64_t>, std::array<double, 3>> middles;  // sum x, sum y, count
+  for (const Element& e : layout.elements) {
+    auto& m = middles[{e.cell_x, e.cell_y}];
+    if (e.cut) m[2] = -1e9;  // a cell with a cut unit is left out
+    m[0] += e.nominal.x + e.nominal.w / 2, m[1] += e.nominal.y + e.nominal.h / 2, m[2] += 1;
+  }
+  size_t far = 0, placed = 0;
+  for (const auto& [cell, m] : middles) {
+    if (m[2] != per) continue;
+    const auto at = placement.centre({cell.first, cell.second, 0}, 2);
+    ++placed;
+    far += std::hypot(at[0] - m[0] / m[2], at[1] - m[1] / m[2]) > reach;
+  }
+  EXPECT_GT(placed, 50u);
+  EXPECT_EQ(far, 0u) << "cells placed away from their units";
 }
 
 std::string name_of(const ::testing::TestParamInfo<std::tuple<Case, Corner>>& info) {
