@@ -144,3 +144,21 @@ INSTANTIATE_TEST_SUITE_P(
 
 }  // namespace
 }  // namespace curdle
+
+namespace curdle {
+namespace {
+
+// A surface far too large for its units is refused before any unit is made, naming the limit.
+TEST(LayingPattern, TooManyUnitsAreRefusedBeforeAnyIsMade) {
+  try {
+    pattern_units(LayingPattern::herringbone_45, 200, 98.5, 3, 1e7, 1e7);
+    ADD_FAILURE() << "no error";
+  } catch (const ResourceLimitError& e) {
+    EXPECT_NE(std::string(e.what()).find("above the limit of 4194304"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(pattern_units(LayingPattern::hexagon, 300, 300, 4, 60000, 40000).empty());
+}
+
+}  // namespace
+}  // namespace curdle

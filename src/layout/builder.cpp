@@ -237,6 +237,16 @@ void lay_pattern(Layout& layout, const std::vector<uint16_t>& values, const Layo
       inside = inside && crossing(e.nominal, cuts.outline) == Crossing::inside;
     for (const Polygon& hole : cuts.holes)
       inside = inside && crossing(e.nominal, hole) == Crossing::outside;
+    // Wholly beyond the outline, in a zone or in an opening: nothing to cut.
+    bool gone = !cuts.outline.empty() && crossing(e.nominal, cuts.outline) == Crossing::outside;
+    for (const Polygon& hole : cuts.holes)
+      gone = gone || crossing(e.nominal, hole) == Crossing::inside;
+    for (const Rect& h : holes)
+      gone = gone || (h.x <= x0 && h.y <= y0 && h.right() >= x1 && h.top() >= y1);
+    if (gone) {
+      ++layout.omitted;
+      continue;
+    }
     if (inside) {
       e.outline = Outline{{u.ring}, whole};
     } else {

@@ -1,8 +1,12 @@
 #include "layout/laying_pattern.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "curdle/error.h"
 
 namespace curdle {
 namespace {
@@ -159,6 +163,20 @@ int basketweave_units(double length, double width, double joint) {
 
 std::vector<PatternUnit> pattern_units(LayingPattern pattern, double length, double width,
                                        double joint, double surface_w, double surface_h) {
+  // Bounded before anything is made: the units over the surface and a border of two units.
+  const double reach = 2 * (length + joint);
+  const double estimate =
+      (surface_w + 2 * reach) * (surface_h + 2 * reach) /
+      std::max(
+          length * width *
+              (pattern == LayingPattern::hexagon || pattern == LayingPattern::hexagon_flat ? 0.866
+                                                                                           : 1.0),
+          1e-9);
+  if (pattern != LayingPattern::grid && !(estimate <= static_cast<double>(kMaxPatternUnits)))
+    throw ResourceLimitError(fmt::format(
+        "a {} pattern of {:g} x {:g} mm units over {:g} x {:g} mm is about {:.3g} units, above "
+        "the limit of {}; use larger units or a smaller surface",
+        pattern_name(pattern), length, width, surface_w, surface_h, estimate, kMaxPatternUnits));
   std::vector<PatternUnit> units;
   switch (pattern) {
     case LayingPattern::grid:

@@ -42,8 +42,13 @@ struct PatternUnit {
 // is n widths and n - 1 joints, n from 2 to 4 (to half a millimetre).
 int basketweave_units(double length, double width, double joint);
 
+// The most units a pattern may lay (with the border it is generated over): 4 million, 80,000 m²
+// of 200 x 100 mm blocks, about 600 MB while they are laid.
+inline constexpr uint64_t kMaxPatternUnits = uint64_t{1} << 22;
+
 // Every unit of the pattern that meets [0, width] x [0, height], with its cell counted from the
 // least column and row any such unit takes. Units are whole: the caller cuts them to the surface.
+// ResourceLimitError above kMaxPatternUnits.
 std::vector<PatternUnit> pattern_units(LayingPattern pattern, double length, double width,
                                        double joint, double surface_w, double surface_h);
 
