@@ -20,12 +20,7 @@ namespace {
 
 bool in_rings(const std::vector<Ring>& rings, double x, double y) {
   bool in = false;
-  for (const Ring& ring : rings)
-    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-      const auto &a = ring[i], &b = ring[j];
-      if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
-        in = !in;
-    }
+  for (const Ring& ring : rings) in = in != contains(ring, x, y);
   return in;
 }
 

@@ -10,6 +10,7 @@
 
 #include "curdle/stop.h"
 #include "layout/piece.h"
+#include "layout/zone.h"
 
 namespace curdle {
 namespace {
@@ -283,12 +284,7 @@ void lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, const L
 // A point inside an outline's rings (even-odd: its islands are out).
 bool within_rings(const std::vector<Ring>& rings, double x, double y) {
   bool in = false;
-  for (const Ring& ring : rings)
-    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-      const auto &a = ring[i], &b = ring[j];
-      if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
-        in = !in;
-    }
+  for (const Ring& ring : rings) in = in != curdle::contains(ring, x, y);
   return in;
 }
 

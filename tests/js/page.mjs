@@ -3,12 +3,13 @@
 // `curdle generate` writes for the command the page shows. Bad input must show the server's
 // message. Screenshots go to SCREENSHOT_DIR for a person to look at.
 // Usage: node page.mjs CURDLE SCREENSHOT_DIR
-import { spawn, execFileSync } from 'node:child_process';
+import { execFileSync } from 'node:child_process';
 import { mkdir, mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { deflateSync } from 'node:zlib';
 import { chromium } from 'playwright-core';
+import { serve as serveOn } from './serve.mjs';
 
 const [curdle, shots] = process.argv.slice(2);
 
@@ -57,20 +58,7 @@ const check = (ok, what) => {
 };
 
 // A server, on any free port of the loopback address.
-async function serve(args) {
-  const server = spawn(curdle, ['serve', '--port', '0', ...args], { stdio: ['ignore', 'pipe', 'inherit'] });
-  const url = await new Promise((resolve, reject) => {
-    let text = '';
-    server.stdout.on('data', (d) => {
-      text += d;
-      const m = /open (http:\/\/127\.0\.0\.1:\d+\/)/.exec(text);
-      if (m) resolve(m[1]);
-    });
-    server.on('exit', (code) => reject(new Error(`curdle serve exited ${code}: ${text}`)));
-    setTimeout(() => reject(new Error(`curdle serve printed no address: ${text}`)), 20000);
-  });
-  return { server, url };
-}
+const serve = (args) => serveOn(curdle, args);
 const { server, url } = await serve([]);
 const source = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 

@@ -1,20 +1,11 @@
 // Screenshots of the page's 3-D view for a recipe (for the README and for looking at):
 // serves RECIPE, waits for the layout in 3-D and writes the view3d figure to OUT.
 // Usage: node shot3d.mjs CURDLE RECIPE OUT
-import { spawn } from 'node:child_process';
 import { chromium } from 'playwright-core';
+import { serve } from './serve.mjs';
 
 const [curdle, recipe, out] = process.argv.slice(2);
-const server = spawn(curdle, ['serve', '--port', '0', recipe], { stdio: ['ignore', 'pipe', 'inherit'] });
-const url = await new Promise((resolve, reject) => {
-  let text = '';
-  server.stdout.on('data', (d) => {
-    text += d;
-    const m = /open (http:\/\/127\.0\.0\.1:\d+\/)/.exec(text);
-    if (m) resolve(m[1]);
-  });
-  setTimeout(() => reject(new Error('no address: ' + text)), 20000);
-});
+const { server, url } = await serve(curdle, [recipe]);
 const browser = await chromium.launch({
   executablePath: '/usr/bin/chromium',
   args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
