@@ -205,11 +205,6 @@ try {
   const [s1, s2] = await Promise.all([readFile(path.join(downloads, 'schedule.csv')), readFile(path.join(fromRecipe, 'schedule.csv'))]);
   check(s1.equals(s2), 'recipe.toml alone reproduces the segment\'s schedule.csv');
 
-  // Moving the segment reloads the 3-D view with the new segment's layout.glb.
-  await page.fill('#window-text', '100,70,67,67');
-  await page.dispatchEvent('#window-text', 'change');
-  await shown3d('100,70,67,67');
-  check(await page.evaluate(() => window.view3d.loads) > loads, 'moving the segment reloads the 3-D view');
 
   // Bad input: the page's own check, and the server's message shown as it is.
   await page.fill('input[aria-label="Curd 0 stage 2 probability"]', '1.5');
@@ -236,6 +231,9 @@ try {
   await page.waitForFunction((w) => document.querySelector('#command').textContent.includes(`--window ${w}`), win);
   check((await page.inputValue('#seed')) === seed, `clicking the best hit loads seed ${seed} and segment ${win}`);
   await layoutShown(win);
+  // The segment moved to the hit: the 3-D view reloads with that segment's layout.glb.
+  await shown3d(win);
+  check(await page.evaluate(() => window.view3d.loads) > loads, `moving the segment (to ${win}) reloads the 3-D view`);
   await page.screenshot({ path: path.join(shots, '4-search.png'), fullPage: true });
 
   // A picture measured and fitted with the page's lattice: the fitted recipe is the one
