@@ -188,13 +188,45 @@ void lay_elements(Layout& layout, const std::vector<uint16_t>& values, const Lay
   }
 }
 
+// A pattern's unit as laid on the surface (`e.nominal` its extent): whole, keeping its polygon
+// with no Boolean operation; cut at the surface's edges, holes and `cuts`; or false when
+// nothing of it is left (wholly beyond the outline, in a zone or in an opening).
+bool cut_unit_to_surface(Element& e, const Ring& ring, const Layout& layout,
+                         const std::vector<Rect>& holes, const PolygonCuts& cuts) {
+  const Rect& b = e.nominal;
+  const Crossing outline = cuts.outline.empty() ? Crossing::inside : crossing(b, cuts.outline);
+  bool gone = outline == Crossing::outside;
+  bool inside = outline == Crossing::inside && b.x >= 0 && b.y >= 0 && b.right() <= layout.width &&
+                b.top() <= layout.height;
+  for (const Polygon& hole : cuts.holes) {
+    const Crossing c = crossing(b, hole);
+    gone = gone || c == Crossing::inside;
+    inside = inside && c == Crossing::outside;
+  }
+  for (const Rect& h : holes) {
+    gone = gone || (h.x <= b.x && h.y <= b.y && h.right() >= b.right() && h.top() >= b.top());
+    inside = inside && !overlaps(h, b);
+  }
+  if (gone) return false;
+  const double whole = polygon_area(ring);
+  if (inside) {
+    e.outline = Outline{{ring}, whole};
+    return true;
+  }
+  Outline piece = joined(cut_unit(ring, Rect{0, 0, layout.width, layout.height}, holes, cuts));
+  if (piece.area < kEps) return false;
+  e.cut = piece.area < whole - kEps;
+  e.form = e.cut ? ElementForm::cut_piece : ElementForm::piece;
+  e.outline = std::move(piece);
+  return true;
+}
+
 // The units of a pattern in laying order (courses from the origin corner, along each away
 // from it, a basketweave square's units in turn), each cut at the surface's edges, its holes
 // and `cuts`; a unit wholly inside keeps its polygon, with no Boolean operation.
 void lay_pattern(Layout& layout, const std::vector<uint16_t>& values, const LayoutSpec& spec,
                  const PolygonCuts& cuts) {
   const std::vector<Rect> holes = layout.holes();
-  const Rect surface{0, 0, layout.width, layout.height};
   const bool right = from_right(spec.origin), top = from_top(spec.origin);
   std::vector<PatternUnit> units = pattern_units(spec.pattern, spec.module_w, spec.module_h,
                                                  spec.joint, layout.width, layout.height);
@@ -230,34 +262,9 @@ void lay_pattern(Layout& layout, const std::vector<uint16_t>& values, const Layo
     if (right) e.turn = 180 - e.turn;
     if (top) e.turn = -e.turn;
     e.turn = std::fmod(e.turn + 360, 180);
-    const double whole = polygon_area(u.ring);
-    bool inside = x0 >= 0 && y0 >= 0 && x1 <= layout.width && y1 <= layout.height;
-    for (const Rect& h : holes) inside = inside && !overlaps(h, e.nominal);
-    if (!cuts.outline.empty())
-      inside = inside && crossing(e.nominal, cuts.outline) == Crossing::inside;
-    for (const Polygon& hole : cuts.holes)
-      inside = inside && crossing(e.nominal, hole) == Crossing::outside;
-    // Wholly beyond the outline, in a zone or in an opening: nothing to cut.
-    bool gone = !cuts.outline.empty() && crossing(e.nominal, cuts.outline) == Crossing::outside;
-    for (const Polygon& hole : cuts.holes)
-      gone = gone || crossing(e.nominal, hole) == Crossing::inside;
-    for (const Rect& h : holes)
-      gone = gone || (h.x <= x0 && h.y <= y0 && h.right() >= x1 && h.top() >= y1);
-    if (gone) {
-      ++layout.omitted;
+    if (!cut_unit_to_surface(e, u.ring, layout, holes, cuts)) {
+      ++layout.omitted;  // wholly over an opening or zone, or outside the floor or outline
       continue;
-    }
-    if (inside) {
-      e.outline = Outline{{u.ring}, whole};
-    } else {
-      Outline piece = joined(cut_unit(u.ring, surface, holes, cuts));
-      if (piece.area < kEps) {
-        ++layout.omitted;  // wholly over an opening or zone, or outside the floor or outline
-        continue;
-      }
-      e.cut = piece.area < whole - kEps;
-      e.form = e.cut ? ElementForm::cut_piece : ElementForm::piece;
-      e.outline = std::move(piece);
     }
     e.key = ElementId{spec.kind->id_letter(),
                       digits,
