@@ -229,10 +229,16 @@ void draw_labels(cairo_t* cr, const InstallerPlan& plan, const View& v, size_t i
     }
     colour(cr, kInk);
     const double cx = v.x(l.box.x + l.box.w / 2), cy = v.y(l.box.y + l.box.h / 2);
-    if (l.rotated)
-      text(cr, cx + plan.text_mm / 2, cy, l.text, plan.text_mm, Align::centre, true);
-    else
-      text(cr, cx, cy + plan.text_mm / 2, l.text, plan.text_mm, Align::centre);
+    // Two lines a label's height apart, the first above (read up the page: left).
+    const std::vector<std::string> lines = label_lines(l);
+    for (size_t k = 0; k < lines.size(); ++k) {
+      const double step = (static_cast<double>(k) - (static_cast<double>(lines.size()) - 1) / 2) *
+                          label_height_mm(plan.text_mm);
+      if (l.rotated)
+        text(cr, cx + step + plan.text_mm / 2, cy, lines[k], plan.text_mm, Align::centre, true);
+      else
+        text(cr, cx, cy + step + plan.text_mm / 2, lines[k], plan.text_mm, Align::centre);
+    }
   }
 }
 

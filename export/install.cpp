@@ -148,9 +148,16 @@ void write_labels(std::ostream& out, const InstallerPlan& plan, const Frame& f, 
           "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"#222\" "
           "stroke-width=\"{}\"/>",
           num(f.x(l.box.x)), num(f.y(l.box.top())), num(l.box.w), num(l.box.h), num(0.1 * s));
-    out << centred_text(f.x(l.box.x + l.box.w / 2), f.y(l.box.y + l.box.h / 2), plan.text_mm, s,
-                        l.text, l.rotated)
-        << "\n";
+    // Two lines a label's height apart, the first above (read up the page: left).
+    const std::vector<std::string> lines = label_lines(l);
+    for (size_t k = 0; k < lines.size(); ++k) {
+      const double step = (static_cast<double>(k) - (static_cast<double>(lines.size()) - 1) / 2) *
+                          label_height_mm(plan.text_mm) * s;
+      const double x = f.x(l.box.x + l.box.w / 2), y = f.y(l.box.y + l.box.h / 2);
+      out << centred_text(l.rotated ? x + step : x, l.rotated ? y : y + step, plan.text_mm, s,
+                          lines[k], l.rotated);
+    }
+    out << "\n";
   }
   out << "</g>\n";
 }

@@ -125,9 +125,17 @@ TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
                               [&](const Rect& part) { return within(part, l.box); }))
           << l.text << " is said to be inside its piece but is not";
     }
-    // The text as set fits the box the plan kept for it (on paper, mm).
+    // The text as set fits the box the plan kept for it (on paper, mm), in one line or two.
     const double room = (l.rotated ? l.box.h : l.box.w) / plan.scale;
-    EXPECT_LE(set_width(l.text, plan.text_mm), room) << l.text;
+    const double depth = (l.rotated ? l.box.w : l.box.h) / plan.scale;
+    const std::vector<std::string> lines = label_lines(l);
+    std::string joined;
+    for (const std::string& line : lines) {
+      EXPECT_LE(set_width(line, plan.text_mm), room) << l.text;
+      joined += (joined.empty() ? "" : "-") + line;
+    }
+    EXPECT_EQ(joined, l.text);
+    EXPECT_GE(depth + 1e-9, lines.size() * label_height_mm(plan.text_mm)) << l.text;
   }
   EXPECT_GT(inside, pieces.size() / 2) << "most pieces hold their own label";
   // No two label boxes overlap: sweep along x.
@@ -165,6 +173,10 @@ TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
                                               [](const InstallerLabel& l) { return l.crowded; })));
   EXPECT_LE(plan.over_labels * 50, pieces.size()) << "more than 2 % of the leaders are crowded";
   if (layout.kind->name() == "park") EXPECT_EQ(plan.over_labels, 0u);
+  for (size_t i = 0; i < pieces.size(); ++i)
+    if (plan.labels[i].crowded)
+      std::cerr << "  crowded: " << pieces[i].id << " " << pieces[i].bounds.w << " x "
+                << pieces[i].bounds.h << " mm\n";
   std::cerr << GetParam() << ": 1 : " << plan.scale << ", " << plan.sheets.size() << " sheets, "
             << plan.over_labels << " of " << pieces.size() << " leaders crowded\n";
   if (plan.grid_columns * plan.grid_rows > 1) {

@@ -303,9 +303,11 @@ bool within_outline(const Outline& outline, const Rect& box) {
 // A place for the label inside its piece on the piece's own sheet: in the middle of its largest
 // part that holds it, across or along, else moved towards the part's sides; false when none.
 bool place_inside(const InstallerPiece& piece, double lh, double scale, const InstallerPlan& plan,
-                  PlacedLabels& placed, size_t owner, InstallerLabel& label) {
+                  PlacedLabels& placed, size_t owner, InstallerLabel& label, size_t split) {
   const Rect& window = plan.sheets[label.sheet].window;
-  const double lw = label_width_mm(piece.id.size(), plan.text_mm) * scale;
+  const size_t longest = split ? std::max(split, piece.id.size() - split - 1) : piece.id.size();
+  const double lw = label_width_mm(longest, plan.text_mm) * scale;
+  const double tall = split ? 2 * lh : lh;
   std::vector<const Rect*> parts;
   for (const Rect& r : piece.parts) parts.push_back(&r);
   std::sort(parts.begin(), parts.end(),
@@ -316,19 +318,30 @@ bool place_inside(const InstallerPiece& piece, double lh, double scale, const In
   for (const Rect* part : parts)
     for (const auto& shift : shifts)
       for (const bool rotated : {false, true}) {
-        const double w = rotated ? lh : lw, h = rotated ? lw : lh;
+        const double w = rotated ? tall : lw, h = rotated ? lw : tall;
         const double room_x = (part->w - w) / 2, room_y = (part->h - h) / 2;
         if (room_x < 0 || room_y < 0) continue;
         const Rect box = centred(part->x + part->w / 2 + shift[0] * room_x,
                                  part->y + part->h / 2 + shift[1] * room_y, w, h);
         if (contains(window, box) && placed.box_free(box, owner) &&
             (!piece.outline || within_outline(*piece.outline, box))) {
-          label.box = box, label.rotated = rotated, label.inside = true;
+          label.box = box, label.rotated = rotated, label.inside = true, label.split = split;
           placed.add(box, PlacedLabels::Mark::inside, owner);
           return true;
         }
       }
   return false;
+}
+
+// Inside, in one line or else in two (the ID broken at its last '-'): a piece that holds its ID
+// only in two lines (a brick split by a match line, say) keeps it inside, off everyone's way.
+bool place_inside_in_lines(const InstallerPiece& piece, double lh, double scale,
+                           const InstallerPlan& plan, PlacedLabels& placed, size_t owner,
+                           InstallerLabel& label) {
+  if (place_inside(piece, lh, scale, plan, placed, owner, label, 0)) return true;
+  const size_t at = piece.id.rfind('-');
+  if (at == std::string::npos || at == 0 || at + 1 >= piece.id.size()) return false;
+  return place_inside(piece, lh, scale, plan, placed, owner, label, at);
 }
 
 // The nearest free place beside a piece on its own sheet, in eight directions (across or,
@@ -395,7 +408,8 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
   }
   std::vector<size_t> beside;
   for (size_t i = 0; i < pieces.size(); ++i)
-    if (!place_inside(pieces[i], lh, scale, plan, placed, i, plan.labels[i])) beside.push_back(i);
+    if (!place_inside_in_lines(pieces[i], lh, scale, plan, placed, i, plan.labels[i]))
+      beside.push_back(i);
   // Then beside, among the labels inside and the dots of the leaders to come: at first off the
   // other pieces that need room beside them too, so that no label walls another in; then
   // wherever there is room.
@@ -434,6 +448,11 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
 }
 
 }  // namespace
+
+std::vector<std::string> label_lines(const InstallerLabel& label) {
+  if (!label.split) return {label.text};
+  return {label.text.substr(0, label.split), label.text.substr(label.split + 1)};
+}
 
 std::array<double, 2> leader_end(const InstallerLabel& label) {
   const Point end = leader_end(label.anchor, label.box);

@@ -50,7 +50,11 @@ struct InstallerLabel {
   std::array<double, 2> anchor{0, 0};  // the piece's centre, layout mm
   size_t sheet = 0;                    // index into InstallerPlan::sheets
   bool crowded = false;  // walled in: its leader may run over other labels (InstallerPlan)
+  size_t split = 0;      // set in two lines, broken at this '-' of the ID; 0: one line
 };
+// The label's lines as set: the ID, or its two halves (P-R05 over C14) where the piece holds
+// it only so.
+std::vector<std::string> label_lines(const InstallerLabel& label);
 // A label beside its piece is joined to it by a leader: a dot at the piece's centre (radius in
 // paper mm) and a line to the label box's nearest point, which crosses no other label or leader.
 inline constexpr double kLeaderDotMm = 0.4;
