@@ -50,5 +50,21 @@ TEST(Union, UnionsAndCutsKeepTheirAreas) {
   EXPECT_NEAR(area_within(Rect{50, 50, 50, 50}, away), 2500, 1e-6);
 }
 
+// What an outline cuts away may be two triangles meeting at a point (a gable's top on a
+// rectangle): the surface left is the whole less both, whatever shape CGAL hands the pair back in.
+TEST(Union, CutAwayPartsMeetingAtAPointAreTakenOffWhole) {
+  PolygonCuts cuts;
+  cuts.outline = {{0, 0}, {1500, 0}, {1500, 900}, {750, 1200}, {0, 900}};
+  const Rect surface{0, 0, 1500, 1200};
+  const std::vector<Outline> away = cut_away(surface, cuts);
+  double away_area = 0;
+  for (const Outline& o : away) away_area += o.area;
+  EXPECT_NEAR(away_area, 2 * 750.0 * 300 / 2, 1e-6);
+  double left = 0;
+  for (const Outline& o : surfaced(surface, {Rect{600, 400, 300, 300}}, away)) left += o.area;
+  EXPECT_NEAR(left, 1500.0 * 1200 - 225000 - 90000, 1e-6);
+  EXPECT_NEAR(area_within(Rect{0, 0, 1500, 1200}, away), 225000, 1e-6);
+}
+
 }  // namespace
 }  // namespace curdle

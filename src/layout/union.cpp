@@ -55,17 +55,36 @@ Outline joined(const std::vector<Outline>& parts) {
 
 namespace {
 
-// Outlines (outer rings and their islands, as outlines_of makes them) as a polygon set.
+// A ring as simple loops: a boundary that touches itself at a vertex (two triangles of what an
+// outline cuts away meeting at a point) is split there, so that each loop is a simple polygon,
+// as CGAL's Polygon_2 needs.
+std::vector<Ring> simple_loops(const Ring& ring) {
+  std::vector<Ring> loops;
+  Ring path;
+  for (const auto& v : ring) {
+    const auto again = std::find(path.begin(), path.end(), v);
+    if (again != path.end()) {
+      loops.emplace_back(again, path.end());
+      path.erase(again + 1, path.end());
+      continue;
+    }
+    path.push_back(v);
+  }
+  if (path.size() >= 3) loops.push_back(std::move(path));
+  std::erase_if(loops, [](const Ring& loop) { return loop.size() < 3; });
+  return loops;
+}
+
+// Outlines (outer rings and their islands, as outlines_of makes them) as a polygon set: each
+// part its outer loops less its islands' loops.
 CGAL::Polygon_set_2<Kernel> set_of(const std::vector<Outline>& outlines) {
   CGAL::Polygon_set_2<Kernel> set;
   for (const Outline& whole : outlines)
     for (const Outline& o : outline_parts(whole)) {
-      PolygonWithHoles part(exact(o.rings[0]));
-      for (size_t i = 1; i < o.rings.size(); ++i) {
-        ExactPolygon hole = exact(o.rings[i]);
-        hole.reverse_orientation();  // islands run clockwise
-        part.add_hole(hole);
-      }
+      CGAL::Polygon_set_2<Kernel> part;
+      for (const Ring& loop : simple_loops(o.rings[0])) part.join(exact(loop));
+      for (size_t i = 1; i < o.rings.size(); ++i)
+        for (const Ring& loop : simple_loops(o.rings[i])) part.difference(exact(loop));
       set.join(part);
     }
   return set;
