@@ -172,7 +172,9 @@ TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
             static_cast<size_t>(std::count_if(plan.labels.begin(), plan.labels.end(),
                                               [](const InstallerLabel& l) { return l.crowded; })));
   EXPECT_LE(plan.over_labels * 50, pieces.size()) << "more than 2 % of the leaders are crowded";
-  if (layout.kind->name() == "park") EXPECT_EQ(plan.over_labels, 0u);
+  if (layout.kind->name() == "park") {
+    EXPECT_EQ(plan.over_labels, 0u);
+  }
   for (size_t i = 0; i < pieces.size(); ++i)
     if (plan.labels[i].crowded)
       std::cerr << "  crowded: " << pieces[i].id << " " << pieces[i].bounds.w << " x "

@@ -426,15 +426,21 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
   // leader runs over labels inside their pieces; failing that, as the last resort, anywhere
   // its label's box is clear of the others. Those leaders are counted.
   std::vector<size_t> left = beside;
-  for (const auto [avoid, leeway] :
-       {std::pair{&needing_room, Leeway::none}, std::pair{(PlacedLabels*)nullptr, Leeway::none},
-        std::pair{(PlacedLabels*)nullptr, Leeway::over_inside},
-        std::pair{(PlacedLabels*)nullptr, Leeway::box_only}}) {
+  struct Pass {
+    const PlacedLabels* avoid;
+    Leeway leeway;
+  };
+  const Pass passes[] = {{&needing_room, Leeway::none},
+                         {nullptr, Leeway::none},
+                         {nullptr, Leeway::over_inside},
+                         {nullptr, Leeway::box_only}};
+  for (const Pass& pass : passes) {
     std::vector<size_t> still;
     for (const size_t i : left)
-      if (!place_beside(pieces[i], lh, scale, plan, placed, avoid, leeway, i, plan.labels[i]))
+      if (!place_beside(pieces[i], lh, scale, plan, placed, pass.avoid, pass.leeway, i,
+                        plan.labels[i]))
         still.push_back(i);
-      else if (leeway != Leeway::none)
+      else if (pass.leeway != Leeway::none)
         plan.labels[i].crowded = true, ++plan.over_labels;
     left = std::move(still);
   }
