@@ -57,14 +57,25 @@ std::string rect_path(const Sheet& s, const Rect& r) {
                      mm(-r.w));
 }
 
-void draw_openings(std::ostream& out, const Layout& layout, const Sheet& s) {
+// A value's group of elements: its ID, value, label and count, filled with `fill`.
+std::string value_group(const LegendEntry& entry, const std::string& fill) {
+  return fmt::format(
+      "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" data-count=\"{}\" "
+      "fill=\"{}\">\n",
+      entry.value, entry.value, escape(entry.label), entry.count, fill);
+}
+
+// The layout's elements grouped by value, in laying order within each.
+std::vector<std::vector<const Element*>> elements_by_value(const Layout& layout) {
   std::vector<std::vector<const Element*>> by_value(layout.legend.size());
   for (const Element& e : layout.elements) by_value[e.value].push_back(&e);
+  return by_value;
+}
+
+void draw_openings(std::ostream& out, const Layout& layout, const Sheet& s) {
+  const auto by_value = elements_by_value(layout);
   for (const LegendEntry& entry : layout.legend) {
-    out << fmt::format(
-        "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" data-count=\"{}\" "
-        "fill=\"{}\">\n",
-        entry.value, entry.value, escape(entry.label), entry.count, hex_colour(entry.colour));
+    out << value_group(entry, hex_colour(entry.colour));
     for (const Element* e : by_value[entry.value]) {
       if (e->circle) {
         out << fmt::format(
@@ -78,11 +89,7 @@ void draw_openings(std::ostream& out, const Layout& layout, const Sheet& s) {
         out << fmt::format("<path id=\"{}\" d=\"{}\" data-count=\"1\"/>\n", e->id, d);
       } else if (e->outline) {
         std::string d;
-        for (const Ring& ring : e->outline->rings) {
-          for (size_t i = 0; i < ring.size(); ++i)
-            d += fmt::format("{}{} {}", i ? "L" : "M", mm(s.x(ring[i][0])), mm(s.y(ring[i][1])));
-          d += "z";
-        }
+        for (const Ring& ring : e->outline->rings) d += polygon_path(s, ring);
         out << fmt::format(
             "<path id=\"{}\" class=\"opening merged\" fill-rule=\"evenodd\" d=\"{}\"/>\n", e->id,
             d);
@@ -229,10 +236,7 @@ void draw_grid_modules(std::ostream& out, const Layout& layout, const Sheet& s) 
     const std::string fill = layout.combine == Combine::keep
                                  ? fmt::format("url(#parts-{})", entry.value)
                                  : hex_colour(entry.colour);
-    out << fmt::format(
-        "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" data-count=\"{}\" "
-        "fill=\"{}\">\n",
-        entry.value, entry.value, escape(entry.label), entry.count, fill);
+    out << value_group(entry, fill);
     for (; next < merged.size() && merged[next].value == static_cast<int>(entry.value); ++next) {
       const GridRect& g = merged[next];
       write_merged(out, s, layout, at, g);
@@ -287,13 +291,9 @@ void draw_pattern_units(std::ostream& out, const Layout& layout, const Sheet& s)
         "<path id=\"joints\" class=\"joint\" fill=\"{}\" fill-rule=\"evenodd\" d=\"{}\"/>\n",
         hex_colour(layout.joint_colour), d);
   }
-  std::vector<std::vector<const Element*>> by_value(layout.legend.size());
-  for (const Element& e : layout.elements) by_value[e.value].push_back(&e);
+  const auto by_value = elements_by_value(layout);
   for (const LegendEntry& entry : layout.legend) {
-    out << fmt::format(
-        "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" "
-        "data-count=\"{}\" fill=\"{}\">\n",
-        entry.value, entry.value, escape(entry.label), entry.count, hex_colour(entry.colour));
+    out << value_group(entry, hex_colour(entry.colour));
     for (const Element* e : by_value[entry.value]) {
       stop_point();
       std::string d;
