@@ -14,6 +14,7 @@
 #include "export/layout_png.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
+#include "layout/arc_setting_out.h"
 #include "layout/installer_sheets.h"
 #include "layout/laying_pattern.h"
 #include "layout/piece.h"
@@ -357,7 +358,7 @@ std::vector<std::string> sheet_setting_out(const Layout& layout, const Rect& win
   for (size_t i = 0; i < layout.openings_given; ++i)
     shown.emplace_back(fmt::format("opening {}", i + 1), layout.openings[i]);
   for (const ZoneCount& z : layout.zones) {
-    if (z.polygon.empty()) continue;
+    if (z.polygon.empty() || !z.contour.empty()) continue;  // arcs: by centre and radius, below
     Rect r{z.polygon[0][0], z.polygon[0][1], 0, 0};
     for (const auto& p : z.polygon) {
       const double x0 = std::min(r.x, p[0]), y0 = std::min(r.y, p[1]);
@@ -369,12 +370,25 @@ std::vector<std::string> sheet_setting_out(const Layout& layout, const Rect& win
   size_t more = 0;
   for (const auto& [name, r] : shown) {
     if (!overlaps(r, on)) continue;
-    if (lines.size() >= 3) {
+    if (lines.size() >= 4) {
       ++more;
       continue;
     }
     lines.push_back(fmt::format("{}: x {} to {}, y {} to {}", name, drawing_mm(r.x),
                                 drawing_mm(r.right()), drawing_mm(r.y), drawing_mm(r.top())));
+  }
+  // Arcs that run over the sheet, by their centre, radius and ends.
+  for (const SetOutArc& a : arcs_to_set_out(layout)) {
+    Contour one{{a.arc.from[0], a.arc.from[1], bulge_of_sweep(a.arc.sweep)},
+                {a.arc.to[0], a.arc.to[1], 0}};
+    if (a.circle) one = {{a.arc.from[0], a.arc.from[1], 1}, {a.arc.to[0], a.arc.to[1], 1}};
+    const Rect extent = contour_bounds(one);
+    if (!overlaps(Rect{extent.x - 1, extent.y - 1, extent.w + 2, extent.h + 2}, on)) continue;
+    if (lines.size() >= 4) {
+      ++more;
+      continue;
+    }
+    lines.push_back(a.line);
   }
   if (more) lines.back() += fmt::format("; {} more on sheet 1", more);
   return lines;

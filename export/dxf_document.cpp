@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "curdle/error.h"
 #include "curdle/text.h"
@@ -182,6 +183,17 @@ void DxfDocument::polygon(const std::string& layer, const Ring& ring) {
   dxf_.writePolyline(*dw_, DL_PolylineData(static_cast<int>(ring.size()), 0, 0, 1),
                      on_layer(layer));
   for (const auto& v : ring) dxf_.writeVertex(*dw_, DL_VertexData(v[0], v[1], 0, 0));
+  dxf_.writePolylineEnd(*dw_);
+}
+
+void DxfDocument::contour(const std::string& layer, const Contour& c) {
+  if (c.size() == 2 && c[0].bulge == c[1].bulge && std::fabs(c[0].bulge) == 1) {
+    circle(layer, (c[0].x + c[1].x) / 2, (c[0].y + c[1].y) / 2,
+           std::hypot(c[1].x - c[0].x, c[1].y - c[0].y));
+    return;
+  }
+  dxf_.writePolyline(*dw_, DL_PolylineData(static_cast<int>(c.size()), 0, 0, 1), on_layer(layer));
+  for (const ContourVertex& v : c) dxf_.writeVertex(*dw_, DL_VertexData(v.x, v.y, 0, v.bulge));
   dxf_.writePolylineEnd(*dw_);
 }
 

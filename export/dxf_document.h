@@ -39,6 +39,8 @@ class DxfDocument {
   ~DxfDocument();
 
   void polygon(const std::string& layer, const Ring& ring);  // a closed polyline
+  // A closed polyline whose arcs are bulges, as CAD draws them; a whole circle as a CIRCLE.
+  void contour(const std::string& layer, const Contour& contour);
   void rect(const std::string& layer, const Rect& r);
   void circle(const std::string& layer, double cx, double cy, double d);
   void text(const std::string& layer, double x, double y, double height, const std::string& text,

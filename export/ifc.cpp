@@ -12,6 +12,7 @@
 #include "curdle/stop.h"
 #include "export/schedule.h"
 #include "export/step_file.h"
+#include "layout/contour.h"
 #include "layout/piece.h"
 #include "layout/union.h"
 
@@ -61,6 +62,7 @@ class IfcModel {
     context();
     spatial_structure();
     if (l_.kind->ground() == Ground::sheet) sheets();
+    arc_annotations();
     for (size_t i = 0; i < l_.elements.size(); ++i) {
       stop_point();
       element(l_.elements[i], i);
@@ -97,6 +99,10 @@ class IfcModel {
     body_ = add(fmt::format(
         "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Body','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
         ref(model)));
+    if (has_arc_contours())
+      annotation_ = add(fmt::format(
+          "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Annotation','Plan',*,*,*,*,{},$,.PLAN_VIEW.,$)",
+          ref(model)));
     // Added one by one: arguments of one call are evaluated in no fixed order, and the bytes
     // must not depend on the compiler.
     const std::vector<int64_t> unit_ids{add("IFCSIUNIT(*,.LENGTHUNIT.,.MILLI.,.METRE.)"),
@@ -310,6 +316,60 @@ class IfcModel {
   int64_t placement() {
     return add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(plane_)));
   }
+
+  bool has_arc_contours() const {
+    return !l_.outline_contour.empty() ||
+           std::any_of(l_.zones.begin(), l_.zones.end(),
+                       [](const ZoneCount& z) { return !z.contour.empty(); });
+  }
+  // A contour as an IfcIndexedPolyCurve: straight edges as IfcLineIndex, arcs as IfcArcIndex
+  // through their middle, so that a reader draws the true arc rather than its chords.
+  int64_t indexed_curve(const Contour& c) {
+    std::vector<std::string> points, segments;
+    auto index_of = [&](double x, double y) {
+      points.push_back(fmt::format("({},{})", real(x), real(y)));
+      return points.size();
+    };
+    index_of(c[0].x, c[0].y);
+    for (size_t i = 0; i < c.size(); ++i) {
+      const size_t from = points.size();
+      const ContourVertex& next = c[(i + 1) % c.size()];
+      const size_t to = i + 1 < c.size() ? 0 : 1;  // the last edge closes on the first point
+      if (c[i].bulge == 0) {
+        const size_t end = to ? to : index_of(next.x, next.y);
+        segments.push_back(fmt::format("IFCLINEINDEX(({},{}))", from, end));
+        continue;
+      }
+      const Arc a = arc_between(c[i], next);
+      const double mid = a.start_angle() + a.sweep / 2;
+      const size_t middle =
+          index_of(a.centre[0] + a.radius * std::cos(mid), a.centre[1] + a.radius * std::sin(mid));
+      const size_t end = to ? to : index_of(next.x, next.y);
+      segments.push_back(fmt::format("IFCARCINDEX(({},{},{}))", from, middle, end));
+    }
+    std::string list;
+    for (const std::string& p : points) list += (list.empty() ? "" : ",") + p;
+    std::string segs;
+    for (const std::string& sgm : segments) segs += (segs.empty() ? "" : ",") + sgm;
+    const int64_t coordinates = add("IFCCARTESIANPOINTLIST2D((" + list + "))");
+    return add(fmt::format("IFCINDEXEDPOLYCURVE({},({}),.F.)", ref(coordinates), segs));
+  }
+  // The outline and zones whose edges are arcs, as annotations a setter-out or a coordinator
+  // reads them by: their curves in the surface's plane, arcs kept.
+  void arc_annotations() {
+    if (!has_arc_contours()) return;
+    auto annotate = [&](const std::string& name, const Contour& c) {
+      const int64_t rep = add(fmt::format("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',({}))",
+                                          ref(annotation_), ref(indexed_curve(c))));
+      const int64_t shape = add(fmt::format("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep)));
+      contained_.push_back(
+          add(fmt::format("IFCANNOTATION({},$,{},$,'setting out',{},{})",
+                          guid("annotation " + name), text(name), ref(placement()), ref(shape))));
+    };
+    if (!l_.outline_contour.empty()) annotate("Outline", l_.outline_contour);
+    for (const ZoneCount& z : l_.zones)
+      if (!z.contour.empty()) annotate("Zone " + z.name, z.contour);
+  }
   int64_t shape(const std::vector<int64_t>& items) {
     const int64_t rep = add(fmt::format("IFCSHAPEREPRESENTATION({},'Body','SweptSolid',{})",
                                         ref(body_), step_refs(items)));
@@ -414,7 +474,7 @@ class IfcModel {
   StepWriter w_;
   const Layout& l_;
   std::string key_;
-  int64_t origin_ = 0, z_ = 0, world_ = 0, plane_ = 0, body_ = 0, project_ = 0;
+  int64_t origin_ = 0, z_ = 0, world_ = 0, plane_ = 0, body_ = 0, annotation_ = 0, project_ = 0;
   int64_t container_ = 0, container_place_ = 0;
   std::map<double, int64_t> bases_;
   std::map<uint32_t, int64_t> styles_;

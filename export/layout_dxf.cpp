@@ -70,13 +70,19 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
                                           layout.source.recipe, layout.source.seed);
   DxfDocument dxf(path, layers, drawn_extents(layout, h, caption.size()));
 
-  if (!layout.outline.empty())
+  if (!layout.outline_contour.empty())
+    dxf.contour("OUTLINE", layout.outline_contour);  // its arcs as bulges
+  else if (!layout.outline.empty())
     dxf.polygon("OUTLINE", layout.outline);
   else if (layout.views.empty())  // blocks are drawn as views, not a surface
     dxf.rect("OUTLINE", surface);
   for (size_t i = 0; i < layout.openings_given; ++i) dxf.rect("OPENINGS", layout.openings[i]);
-  for (const ZoneCount& z : layout.zones)
-    if (!z.polygon.empty()) dxf.polygon("ZONES", z.polygon);
+  for (const ZoneCount& z : layout.zones) {
+    if (!z.contour.empty())
+      dxf.contour("ZONES", z.contour);
+    else if (!z.polygon.empty())
+      dxf.polygon("ZONES", z.polygon);
+  }
   for (const Element& e : layout.elements) {
     stop_point();
     const std::string layer = layer_of(layout, e);

@@ -103,6 +103,7 @@ json report_to_json(const Report& report, const Layout& layout) {
                  {"cut", cut_elements(layout)},         {"omitted_over_openings", layout.omitted},
                  {"open_area", layout.open_area},       {"notes", layout.notes},
                  {"rule_violations", layout.violations}};
+  if (!layout.site.empty()) j["layout"]["site"] = layout.site;
   if (!layout.sheets.empty()) {
     json sheets = json::array();
     for (const Layout::FabricationSheet& sheet : layout.sheets) {

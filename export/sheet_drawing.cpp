@@ -9,6 +9,7 @@
 #include "curdle/stop.h"
 #include "export/svg.h"
 #include "export/title_block.h"
+#include "layout/arc_setting_out.h"
 #include "layout/installer_sheets.h"
 #include "layout/piece.h"
 
@@ -291,18 +292,53 @@ void start_corner(cairo_t* cr, const Layout& layout, const View& v) {
        right ? Align::right : Align::left);
 }
 
+namespace {
+
+// Each arc of the outline and zones named where it runs (A1 and its radius at its middle), with
+// a cross at its centre where that lies on the drawing; the list below the caption gives their
+// centres, radii and ends.
+void mark_arcs(cairo_t* cr, const Layout& layout, const View& v,
+               const std::vector<SetOutArc>& arcs) {
+  colour(cr, kBlue);
+  cairo_set_line_width(cr, 0.15);
+  for (const SetOutArc& a : arcs) {
+    const double cx = a.arc.centre[0], cy = a.arc.centre[1];
+    if (cx >= 0 && cy >= 0 && cx <= layout.width && cy <= layout.height) {
+      cairo_move_to(cr, v.x(cx) - 1.2, v.y(cy)), cairo_line_to(cr, v.x(cx) + 1.2, v.y(cy));
+      cairo_move_to(cr, v.x(cx), v.y(cy) - 1.2), cairo_line_to(cr, v.x(cx), v.y(cy) + 1.2);
+      cairo_stroke(cr);
+    }
+    if (a.circle) {
+      text(cr, v.x(cx) + 1.5, v.y(cy) + 2.8, "R " + drawing_mm(a.arc.radius), 1.6);
+      continue;
+    }
+    // The arc's middle, with the label a little towards its centre.
+    const double mid = a.arc.start_angle() + a.arc.sweep / 2;
+    const double mx = cx + a.arc.radius * std::cos(mid), my = cy + a.arc.radius * std::sin(mid);
+    const double in = 4 * v.scale;  // 4 mm on paper
+    text(cr, v.x(mx - in * std::cos(mid)), v.y(my - in * std::sin(mid)),
+         a.name + " R " + drawing_mm(a.arc.radius), 1.6, Align::centre);
+  }
+}
+
+}  // namespace
+
 void setting_out(cairo_t* cr, const Layout& layout, const View& v) {
   if (layout.width <= 0 || layout.height <= 0 || !layout.views.empty()) return;
   std::vector<double> xs{0, layout.width}, ys{0, layout.height};
   auto add_ring = [&](const Polygon& ring) {
     for (const auto& p : ring) xs.push_back(p[0]), ys.push_back(p[1]);
   };
-  add_ring(layout.outline);
+  // An arc is set out by its ends and centre (listed below), not by its chords' corners.
+  auto add_shape = [&](const Polygon& polygon, const Contour& contour) {
+    add_ring(contour.empty() ? polygon : set_out_points(contour, layout.width, layout.height));
+  };
+  add_shape(layout.outline, layout.outline_contour);
   for (size_t i = 0; i < layout.openings_given; ++i) {
     const Rect& o = layout.openings[i];
     xs.insert(xs.end(), {o.x, o.right()}), ys.insert(ys.end(), {o.y, o.top()});
   }
-  for (const ZoneCount& z : layout.zones) add_ring(z.polygon);
+  for (const ZoneCount& z : layout.zones) add_shape(z.polygon, z.contour);
   auto tidy = [](std::vector<double>& values, double high) {
     for (double& x : values) x = std::clamp(std::round(x * 10) / 10, 0.0, high);
     std::sort(values.begin(), values.end());
@@ -347,7 +383,19 @@ void setting_out(cairo_t* cr, const Layout& layout, const View& v) {
       "corner ({}, {})",
       corner, drawing_mm(from_right(layout.origin) ? layout.width : 0),
       drawing_mm(from_top(layout.origin) ? layout.height : 0));
-  text(cr, v.x(0), below ? v.y(layout.height) - 2 : v.y(0) + 12, caption, 1.8);
+  const double caption_y = below ? v.y(layout.height) - 2 : v.y(0) + 12;
+  text(cr, v.x(0), caption_y, caption, 1.8);
+  const std::vector<SetOutArc> arcs = arcs_to_set_out(layout);
+  if (arcs.empty()) return;
+  mark_arcs(cr, layout, v, arcs);
+  // Up to three lines of arcs under the caption (above it where the caption stands on top).
+  std::vector<std::string> lines;
+  for (size_t i = 0; i < arcs.size() && lines.size() < 3; ++i) lines.push_back(arcs[i].line);
+  if (arcs.size() > 3)
+    lines.back() += fmt::format("; {} more in the DXF (layer OUTLINE and ZONES)", arcs.size() - 3);
+  lines = fit_lines(cr, lines, std::max(40.0, v.x(layout.width) - v.x(0)), 1.6);
+  for (size_t i = 0; i < lines.size(); ++i)
+    text(cr, v.x(0), caption_y + (below ? -2.4 : 2.4) * static_cast<double>(i + 1), lines[i], 1.6);
 }
 
 std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,

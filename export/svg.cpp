@@ -10,6 +10,7 @@
 #include "curdle/stop.h"
 #include "curdle/text.h"
 #include "export/title_block.h"
+#include "layout/contour.h"
 #include "layout/union.h"
 
 namespace curdle {
@@ -50,6 +51,31 @@ std::string polygon_path(const Sheet& s, const Polygon& polygon) {
   for (size_t k = 0; k < polygon.size(); ++k)
     d += fmt::format("{}{} {}", k ? "L" : "M", mm(s.x(polygon[k][0])), mm(s.y(polygon[k][1])));
   return d + "z";
+}
+
+// A contour's path with its arcs as SVG arc commands. The sheet's y runs down, so a
+// counter-clockwise arc (positive sweep) is drawn with sweep-flag 0.
+std::string contour_path(const Sheet& s, const Contour& c) {
+  std::string d;
+  for (size_t k = 0; k < c.size(); ++k) {
+    const ContourVertex& v = c[k];
+    if (k == 0) d += fmt::format("M{} {}", mm(s.x(v.x)), mm(s.y(v.y)));
+    const ContourVertex& next = c[(k + 1) % c.size()];
+    if (v.bulge == 0) {
+      if (k + 1 < c.size()) d += fmt::format("L{} {}", mm(s.x(next.x)), mm(s.y(next.y)));
+      continue;
+    }
+    const Arc a = arc_between(v, next);
+    d += fmt::format("A{} {} 0 {} {} {} {}", mm(a.radius), mm(a.radius),
+                     std::fabs(a.sweep) > 3.14159265358979323846 ? 1 : 0, a.sweep > 0 ? 0 : 1,
+                     mm(s.x(next.x)), mm(s.y(next.y)));
+  }
+  return d + "z";
+}
+
+// The outline or zone as drawn: with its arcs where it has any.
+std::string shape_path(const Sheet& s, const Polygon& polygon, const Contour& contour) {
+  return contour.empty() ? polygon_path(s, polygon) : contour_path(s, contour);
 }
 
 std::string rect_path(const Sheet& s, const Rect& r) {
@@ -145,7 +171,7 @@ void draw_outside(std::ostream& out, const Layout& layout, const Sheet& s, doubl
     out << fmt::format(
         "<path id=\"outline\" class=\"outline\" d=\"{}\" fill=\"none\" stroke=\"#222\" "
         "stroke-width=\"{}\"/>\n",
-        polygon_path(s, layout.outline), mm(unit * 0.08));
+        shape_path(s, layout.outline, layout.outline_contour), mm(unit * 0.08));
   }
 }
 
@@ -382,7 +408,7 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
           "<g class=\"zone\" data-name=\"{}\" data-rule=\"{}\"><path d=\"{}\" stroke=\"{}\" "
           "stroke-width=\"{}\"{}/><text x=\"{}\" y=\"{}\" fill=\"#222\" stroke=\"#fff\" "
           "stroke-width=\"{}\" paint-order=\"stroke\">{}</text></g>\n",
-          escape(z.name), value ? "value" : "exclude", polygon_path(s, z.polygon),
+          escape(z.name), value ? "value" : "exclude", shape_path(s, z.polygon, z.contour),
           value ? "#222" : "#44515c", mm(unit * 0.12),
           value ? fmt::format(" stroke-dasharray=\"{} {}\"", mm(unit * 0.6), mm(unit * 0.4)) : "",
           mm(s.x(z.polygon[0][0]) + unit * 0.4), mm(s.y(z.polygon[0][1]) - unit * 0.4),

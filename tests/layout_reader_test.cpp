@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "recipe_support.h"
 
 namespace curdle {
@@ -146,6 +148,103 @@ TEST(Recipe, Outline) {
   }
   const std::string e = error_of(head);  // neither a floor nor an outline
   EXPECT_NE(e.find("layout.floor"), std::string::npos) << e;
+}
+
+}  // namespace curdle
+
+namespace curdle {
+namespace {
+
+// Files beside the recipe, in memory.
+class FilesInMemory : public RecipeFiles {
+ public:
+  std::map<std::string, std::string> files;
+  std::string read(const std::string& name, const SourceLocation& where, size_t) const override {
+    const auto it = files.find(name);
+    if (it == files.end()) throw InputError(where, name + ": no such file");
+    return it->second;
+  }
+};
+
+std::string site_error(const std::string& text, const RecipeFiles* files) {
+  try {
+    parse_recipe(text, "r.toml", {}, files);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+// A corner [x, y, bulge] makes the edge to the next an arc: the polygon holds its chords within
+// the chord tolerance, the contour the arc, and an arc swelling past the corners sizes the floor.
+TEST(Recipe, OutlineArcs) {
+  const std::string floor = with_layout("kind = \"paving\"\ntile = [400, 400]\n");
+  Recipe r = parse_recipe(
+      floor +
+          "chord_tolerance = 0.5\noutline = [[0, 0], [10000, 0, 0.2], [10000, 6000], [0, 6000]]\n",
+      "r.toml");
+  ASSERT_EQ(r.layout->outline_contour.size(), 4u);
+  EXPECT_EQ(r.layout->outline_contour[1].bulge, 0.2);
+  EXPECT_GT(r.layout->outline.size(), 10u);
+  EXPECT_NEAR((*r.layout->size)[0], 10000 + 0.2 * 3000, 1e-6);  // the arc's sagitta beyond x
+  EXPECT_DOUBLE_EQ(r.layout->chord_tolerance, 0.5);
+  EXPECT_TRUE(parse_recipe(floor + "outline = [[0, 0], [100, 0], [100, 100]]\n", "r.toml")
+                  .layout->outline_contour.empty());
+  std::string e = error_of(floor + "outline = [[0, 0, 1e9], [100, 0], [100, 100]]\n");
+  EXPECT_NE(e.find("bulge"), std::string::npos) << e;
+  e = error_of(floor + "outline = [[0, 0, 1], [1000, 0], [1000, 1000]]\n");  // swells below 0
+  EXPECT_NE(e.find("from 0"), std::string::npos) << e;
+  e = error_of(floor + "chord_tolerance = 0\noutline = [[0, 0], [100, 0], [100, 100]]\n");
+  EXPECT_NE(e.find("layout.chord_tolerance"), std::string::npos) << e;
+  // A round zone: two half turns.
+  r = parse_recipe(floor +
+                       "floor = [6000, 6000]\n[[layout.zones]]\nname = \"pit\"\nrule = "
+                       "\"exclude\"\npolygon = [[2300, 2500, 1], [3700, 2500, 1]]\n",
+                   "r.toml");
+  ASSERT_EQ(r.layout->zones.size(), 1u);
+  EXPECT_EQ(r.layout->zones[0].contour.size(), 2u);
+  EXPECT_GT(r.layout->zones[0].polygon.size(), 16u);
+}
+
+TEST(Recipe, SiteFromADrawing) {
+  const std::string dxf =
+      "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n6\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n"
+      "0\nLWPOLYLINE\n5\n2A\n8\nA-OTLN\n90\n4\n70\n1\n10\n0\n20\n0\n10\n8\n20\n0\n10\n8\n20\n6\n"
+      "42\n-0.2\n10\n0\n20\n6\n0\nCIRCLE\n5\n2B\n8\nPIT\n10\n3\n20\n3\n30\n0\n40\n0.5\n"
+      "0\nENDSEC\n0\nEOF\n";
+  FilesInMemory files;
+  files.files["site.dxf"] = dxf;
+  const std::string floor = with_layout("kind = \"paving\"\ntile = [400, 400]\n");
+  const std::string site = "[layout.site]\nfile = \"site.dxf\"\noutline = \"A-OTLN\"\n";
+  const std::string pit = "[[layout.site.zones]]\nlayer = \"PIT\"\nrule = \"exclude\"\n";
+  Recipe r = parse_recipe(floor + site + pit, "r.toml", {}, &files);
+  EXPECT_EQ(r.layout->outline_contour.size(), 4u);
+  EXPECT_EQ((*r.layout->size)[0], 8000);
+  EXPECT_EQ((*r.layout->size)[1], 6000);
+  ASSERT_EQ(r.layout->zones.size(), 1u);
+  EXPECT_EQ(r.layout->zones[0].name, "PIT");
+  EXPECT_NE(r.layout->site_summary.find("from site.dxf, units m"), std::string::npos);
+  // What the drawing says is refused at layout.site.file, naming the drawing.
+  std::string e =
+      site_error(floor + "[layout.site]\nfile = \"site.dxf\"\noutline = \"NONE\"\n", &files);
+  EXPECT_NE(e.find("layout.site.file"), std::string::npos) << e;
+  EXPECT_NE(e.find("layer \"NONE\""), std::string::npos) << e;
+  e = site_error(floor + site, nullptr);
+  EXPECT_NE(e.find("read only where the recipe is a file"), std::string::npos) << e;
+  e = site_error(floor + "outline = [[0, 0], [1, 0], [1, 1]]\n" + site, &files);
+  EXPECT_NE(e.find("give one or the other"), std::string::npos) << e;
+  e = site_error(floor + "[layout.site]\nfile = \"site.dwg\"\noutline = \"A\"\n", &files);
+  EXPECT_NE(e.find(".dxf file"), std::string::npos) << e;
+  e = site_error(floor + site + "units = \"furlong\"\n", &files);
+  EXPECT_NE(e.find("layout.site.units"), std::string::npos) << e;
+  e = site_error(floor + site + "colour = 3\n", &files);
+  EXPECT_NE(e.find("colour"), std::string::npos) << e;
+  // A floor's openings are excluded zones; a perforated sheet takes none.
+  r = parse_recipe(floor + site + "openings = \"PIT\"\n", "r.toml", {}, &files);
+  ASSERT_EQ(r.layout->zones.size(), 1u);
+  EXPECT_EQ(r.layout->zones[0].name, "opening 1");
 }
 
 }  // namespace curdle

@@ -105,6 +105,7 @@ LayoutSummary summarize_layout(const Layout& layout, bool with_sheets) {
   s.height = layout.height;
   s.drawing_scale = drawing_scale(layout);
   s.dpi = layout.drawing.dpi;
+  s.site = layout.site;
   s.notes = layout.notes;
   s.violations = layout.violations;
   return s;

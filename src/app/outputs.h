@@ -85,6 +85,7 @@ struct LayoutSummary {
   double width = 0, height = 0;  // mm
   double drawing_scale = 0;      // layout.png, 1 : scale
   double dpi = 0;
+  std::string site;  // where the surface was read from (layout.site)
   std::vector<std::string> notes, violations;
 };
 struct RunSummary {

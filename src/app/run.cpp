@@ -24,6 +24,24 @@ constexpr uint64_t kMaxRecipeBytes = uint64_t{1} << 20;
 constexpr int64_t kMaxDensitySide = 4096;
 constexpr uint64_t kMaxDensityPixels = uint64_t{kMaxDensitySide} * kMaxDensitySide;
 
+// The files a recipe names, beside it: regular files of bounded size, read whole.
+class RecipeFolderFiles : public RecipeFiles {
+ public:
+  explicit RecipeFolderFiles(std::string recipe_path) : recipe_path_(std::move(recipe_path)) {}
+  std::string read(const std::string& name, const SourceLocation& where,
+                   size_t max_bytes) const override {
+    const auto path = std::filesystem::path(recipe_path_).parent_path() / name;
+    try {
+      return read_bounded_text(path.string(), "the drawing", "name a DXF file", max_bytes);
+    } catch (const InputError& e) {
+      throw InputError(where, name + ": " + e.message());
+    }
+  }
+
+ private:
+  std::string recipe_path_;
+};
+
 // Reads the pictures of image density fields, relative to the recipe, as hostile files.
 void load_density_images(Run& run) {
   for (size_t c = 0; c < run.recipe.design.curds.size(); ++c) {
@@ -110,7 +128,8 @@ Run resolve_run(const RunRequest& request) {
   run.recipe_path = request.recipe_path;
   run.recipe_text = request.recipe_text;
   run.overrides = request.overrides;
-  run.recipe = parse_recipe(request.recipe_text, request.recipe_path, request.overrides);
+  const RecipeFolderFiles files(request.recipe_path);
+  run.recipe = parse_recipe(request.recipe_text, request.recipe_path, request.overrides, &files);
   run.seed = run.recipe.seed;
   if (!request.seed.empty()) {
     const std::string& text = request.seed;

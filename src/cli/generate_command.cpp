@@ -32,6 +32,7 @@ void print_summary(const app::RunSummary& s, const app::Run& run, const fs::path
                 static_cast<unsigned long long>(l.elements), l.element_type.c_str(),
                 static_cast<unsigned long long>(l.cut), unlaid.c_str(), l.width, l.height,
                 l.drawing_scale, l.dpi);
+    if (!l.site.empty()) std::printf("  site: %s\n", l.site.c_str());
     for (const std::string& note : l.notes) std::printf("  note: %s\n", note.c_str());
     for (size_t i = 0; i < l.violations.size() && i < 20; ++i)
       std::printf("  rule: %s\n", l.violations[i].c_str());

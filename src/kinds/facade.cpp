@@ -12,6 +12,11 @@ std::unique_ptr<KindKeys> FacadeKind::default_keys() const {
   return std::make_unique<FacadeKeys>();
 }
 
+bool FacadeKind::take_opening(LayoutSpec& spec, const std::array<double, 4>& r) const {
+  spec.own<FacadeKeys>().openings.push_back(Rect{r[0], r[1], r[2], r[3]});
+  return true;
+}
+
 std::vector<Rect> FacadeKind::openings(const LayoutSpec& spec) const {
   return spec.own<FacadeKeys>().openings;
 }

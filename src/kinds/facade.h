@@ -22,6 +22,7 @@ class FacadeKind : public SurfaceKind {
   double thickness(const LayoutSpec&) const override { return 20; }
   bool upright() const override { return true; }
   std::unique_ptr<KindKeys> default_keys() const override;
+  bool take_opening(LayoutSpec& spec, const std::array<double, 4>& rect) const override;
 
  protected:
   reading::SurfaceKeys surface() const override { return {"panel", "wall", true, true, true}; }

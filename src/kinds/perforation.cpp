@@ -26,9 +26,8 @@ std::string PerforationKind::laying_line(const Layout& layout) const {
 }
 
 std::vector<std::string> PerforationKind::own_keys() const {
-  return {"holes",       "thickness", "min_diameter",    "min_bridge",
-          "edge_margin", "fix",       "chord_tolerance", "sheet_size",
-          "punches",     "open_area", "outline",         "sheet_material"};
+  return {"holes",      "thickness", "min_diameter", "min_bridge", "edge_margin",   "fix",
+          "sheet_size", "punches",   "open_area",    "outline",    "sheet_material"};
 }
 
 std::unique_ptr<KindKeys> PerforationKind::default_keys() const {

@@ -63,10 +63,7 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   spec.own<PerforationKeys>().min_diameter = read_mm(r, "min_diameter", 0, 0);
   spec.own<PerforationKeys>().min_bridge = read_mm(r, "min_bridge", 0, 0);
   spec.own<PerforationKeys>().edge_margin = read_mm(r, "edge_margin", 0, 0);
-  spec.own<PerforationKeys>().chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
-  // Finer than a micrometre no cutter follows, and the polygons would grow without bound.
-  if (spec.own<PerforationKeys>().chord_tolerance < 0.001)
-    r.fail("chord_tolerance", "must be from 0.001 mm (a micrometre), e.g. 0.05");
+  spec.own<PerforationKeys>().chord_tolerance = spec.chord_tolerance;  // read with the surface
   const auto fix = read_string(r, "fix", "\"none\" or \"drop\"").value_or("none");
   if (fix == "none")
     spec.own<PerforationKeys>().fix = HoleFix::none;

@@ -12,6 +12,7 @@
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
 #include "curdle/stop.h"
+#include "layout/contour.h"
 #include "layout/cut_rules.h"
 #include "layout/guidance.h"
 #include "layout/laying_pattern.h"
@@ -119,8 +120,9 @@ void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
 // along it.
 void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
   for (const Zone& z : spec.zones)
-    layout.zones.push_back({z.name, z.rule, z.value, z.polygon, polygon_area(z.polygon),
-                            std::vector<uint64_t>(values, 0), 0});
+    layout.zones.push_back({z.name, z.rule, z.value, z.polygon,
+                            z.contour.empty() ? polygon_area(z.polygon) : contour_area(z.contour),
+                            std::vector<uint64_t>(values, 0), 0, z.contour});
   if (spec.zones.empty()) return;
   for (Element& e : layout.elements) {
     stop_point();
@@ -343,8 +345,12 @@ Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const
           layout.openings.push_back(c);
   // Edges along x and y cut pieces as rectangles; sloping or curved ones as polygons.
   PolygonCuts cuts;
+  layout.chord_tolerance = spec.chord_tolerance;
+  layout.site = spec.site_summary;
+  layout.notes.insert(layout.notes.end(), spec.site_notes.begin(), spec.site_notes.end());
   if (!spec.outline.empty()) {
     layout.outline = spec.outline;
+    layout.outline_contour = spec.outline_contour;
     if (const auto inside = as_rectangles(spec.outline)) {
       for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, *inside))
         if (r.area() > kEps) layout.outside.push_back(r);

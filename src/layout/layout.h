@@ -50,6 +50,16 @@ struct Outline {
 
 using Polygon = std::vector<std::array<double, 2>>;  // simple, closed implicitly
 
+// A boundary whose edges are straight or circular arcs (contour.h): each vertex with the bulge
+// of the edge to the next, as CAD writes it. Outlines and zones keep their arcs in one, beside
+// the polygon of chords that pieces are cut along.
+struct ContourVertex {
+  double x = 0, y = 0;
+  double bulge = 0;  // tan(θ / 4) of the edge's arc to the next vertex; 0 straight
+  bool operator==(const ContourVertex&) const = default;
+};
+using Contour = std::vector<ContourVertex>;  // closed implicitly
+
 // A zone of a surface ([[layout.zones]]): a rectangle or simple polygon in millimetres from the
 // surface's bottom-left corner that either keeps elements out (planters, drains, columns:
 // pieces are cut along it as at an opening) or gives its value to every element whose centre
@@ -59,8 +69,9 @@ struct Zone {
   std::string name;
   ZoneRule rule = ZoneRule::exclude;
   uint32_t value = 0;       // rule value: what its elements take
-  Polygon polygon;          // a rect is kept as its four corners
+  Polygon polygon;          // a rect is kept as its four corners; arcs as chords
   std::vector<Rect> rects;  // exclude: the polygon as rectangles (its edges run along x and y)
+  Contour contour;          // with its arcs, where it has any (empty: the polygon's edges)
 };
 
 // What a zone holds once laid, for the report.
@@ -72,6 +83,7 @@ struct ZoneCount {
   double area = 0;                 // of the zone on the surface, mm²
   std::vector<uint64_t> by_value;  // elements whose centre it holds, per value
   uint64_t cut = 0;                // exclude: elements cut along it
+  Contour contour;                 // with its arcs, where it has any
 };
 
 enum class Combine {
@@ -180,8 +192,14 @@ struct LayoutSpec {
   std::string unit;
   // layout.outline: the surface to cover, a simple polygon whose edges run along x and y, in mm
   // from the origin of `size` (which is then its bounding rectangle's far corner); empty: the
-  // whole rectangle. Tile, paving, facade.
+  // whole rectangle. Tile, paving, facade. Arcs are flattened within `chord_tolerance`; the
+  // contour keeps them (empty where the outline has none).
   Polygon outline;
+  Contour outline_contour;
+  double chord_tolerance = 0.05;  // layout.chord_tolerance: how far chords stray from arcs, mm
+  // layout.site: what was read from the drawing, and what the builder should know of it.
+  std::string site_summary;
+  std::vector<std::string> site_notes;
   // The bond: each course (row) shifted along x by this share of the element pitch from the
   // course below, counted from the origin corner: 0 stack, 1/2 stretcher or running bond, 1/3,
   // 1/4. Every element still stands for one cell; courses are cut at the ends.
@@ -278,6 +296,8 @@ struct Layout {
   // With layout.outline: the polygon, and the parts of the width x height rectangle outside it
   // (no elements; drawn as paper, not as openings).
   Polygon outline;
+  Contour outline_contour;  // the outline with its arcs, where it has any
+  std::string site;         // where the surface was read from (layout.site), for the report
   std::vector<Rect> outside;
   // What of the surface a sloping or curved outline leaves out, and excluded zones with sloping
   // or curved edges, as exact polygons (union.h's cut_away): pieces are cut along them.

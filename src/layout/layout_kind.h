@@ -108,6 +108,11 @@ class LayoutKind {
   virtual std::array<double, 2> drawing_extent(const LayoutSpec& spec, const Box& view) const;
   // Whether zones and search targets in millimetres apply: a surface laid on a grid.
   virtual bool takes_zones() const { return false; }
+  // Takes a rectangular opening read from a drawing (layout.site) as its own, as a façade takes
+  // a window, and says so; one it does not take becomes an excluded zone.
+  virtual bool take_opening(LayoutSpec&, const std::array<double, 4>& /*x, y, w, h*/) const {
+    return false;
+  }
 };
 
 }  // namespace curdle

@@ -81,7 +81,7 @@ std::vector<std::string> surface_keys(const SurfaceKeys& k) {
   std::vector<std::string> keys;
   if (k.size_key != std::string("sheet")) keys.push_back("sheet");  // the paper, by name
   keys.insert(keys.end(), {"combine", "origin", "joint_colour", "stage_grid", "highlight",
-                           k.module_key, k.size_key});
+                           "chord_tolerance", "site", k.module_key, k.size_key});
   if (k.joint) keys.push_back("joint");
   return keys;
 }
@@ -102,9 +102,17 @@ void read_surface(TableReader& r, const SurfaceKeys& k, const Design& design, La
     r.fail("joint", std::string("must be narrower than the ") + k.module_key + " (" +
                         std::to_string(static_cast<int>(std::min(spec.module_w, spec.module_h))) +
                         " mm)");
-  // An outline can stand for the size (its bounding rectangle, read_outline).
-  spec.size = read_mm_pair(r, k.size_key, k.size_required && !r.get("outline"));
-  read_outline(r, spec);  // only the kinds that take one let the key through
+  spec.chord_tolerance = read_mm(r, "chord_tolerance", 0.05, 0);
+  // Finer than a micrometre no cutter follows, and the polygons would grow without bound.
+  if (spec.chord_tolerance < 0.001 || spec.chord_tolerance > 100)
+    r.fail("chord_tolerance",
+           "must be from 0.001 mm (a micrometre) to 100 mm: how far the chords that cut pieces "
+           "along an arc or circle may stray from it, e.g. 0.05");
+  // An outline (typed, or read from the site's drawing) can stand for the size: its bounding
+  // rectangle.
+  spec.size = read_mm_pair(r, k.size_key, k.size_required && !r.get("outline") && !r.get("site"));
+  read_site(r, design, spec);
+  read_outline(r, spec);
   spec.origin = read_corner(r, k.grid_moves, spec);
   read_value_colours(r, design, spec);
   if (const auto colour = read_colour(r, "joint_colour")) spec.joint_colour = *colour;

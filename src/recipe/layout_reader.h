@@ -41,6 +41,11 @@ void size_field(TableReader& r, const std::string& size_key, Design& design, con
 // layout.outline (tile, paving, facade, perforation, park): the surface as a polygon; its
 // bounding rectangle is the size when the size key is left out.
 void read_outline(TableReader& r, LayoutSpec& spec);
+// [layout.site] (tile, paving, facade, perforation, park): the outline, openings and zones read
+// from the architect's drawing (src/site), the outline's bounding rectangle the size when the
+// size key is left out. Openings become the kind's own where it takes rectangles (a façade's
+// windows), else excluded zones.
+void read_site(TableReader& r, const Design& design, LayoutSpec& spec);
 // [[layout.zones]], after the surface's size (tile, paving, facade).
 void read_zones(TableReader& r, const Design& design, LayoutSpec& spec);
 

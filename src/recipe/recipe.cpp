@@ -14,9 +14,9 @@ namespace curdle {
 using namespace reading;
 
 Recipe parse_recipe(std::string_view text, const std::string& source,
-                    const std::vector<std::string>& overrides) {
+                    const std::vector<std::string>& overrides, const RecipeFiles* files) {
   toml::table doc = parse_toml(text, source);
-  Source where{source, {}};
+  Source where{source, {}, files};
   for (const auto& o : overrides) {
     apply_override(doc, o);
     where.overridden.push_back(o.substr(0, o.find('=')));

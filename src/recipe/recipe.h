@@ -10,6 +10,7 @@
 
 #include "curdle/curd.h"
 #include "layout/layout.h"
+#include "recipe/recipe_files.h"
 
 namespace curdle {
 
@@ -21,10 +22,12 @@ struct Recipe {
 };
 
 // Parses a recipe. `overrides` are "dotted.key=VALUE" (VALUE in TOML syntax, or a bare
-// string), applied before validation. Throws InputError naming file, line, key and what
-// is allowed.
+// string), applied before validation. Files the recipe names (layout.site) are read through
+// `files`; without it, a recipe naming one is refused. Throws InputError naming file, line, key
+// and what is allowed.
 Recipe parse_recipe(std::string_view text, const std::string& source,
-                    const std::vector<std::string>& overrides = {});
+                    const std::vector<std::string>& overrides = {},
+                    const RecipeFiles* files = nullptr);
 
 // The recipe's TOML with `overrides` applied (comments are not kept): what reproduces a run
 // without --set. Throws InputError as parse_recipe does.

@@ -16,15 +16,18 @@
 #include "curdle/curd.h"
 #include "curdle/error.h"
 #include "curdle/probability.h"
+#include "recipe/recipe_files.h"
 
 namespace curdle::reading {
 
 std::string join(const std::vector<std::string>& items);
 
-// Where the recipe came from: its file, and the keys the command line overrode.
+// Where the recipe came from: its file, the keys the command line overrode, and how the files
+// it names are read (none: a recipe that names one is refused).
 struct Source {
   std::string file;
   std::vector<std::string> overridden;  // dotted keys given with --set
+  const RecipeFiles* files = nullptr;
 };
 
 SourceLocation locate(const Source& source, const toml::source_region& region,

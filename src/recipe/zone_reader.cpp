@@ -1,10 +1,12 @@
 // layout.outline = [[x, y], ...], and [[layout.zones]]: name, rect = [x, y, w, h] or
 // polygon = [[x, y], ...] in millimetres, and rule = "exclude" or rule = "value" with value = N.
+// A vertex [x, y, bulge] makes the edge to the next an arc (contour.h).
 #include <fmt/format.h>
 
 #include <cmath>
 
 #include "curdle/text.h"
+#include "layout/contour.h"
 #include "layout/zone.h"
 #include "recipe/layout_reader.h"
 
@@ -37,26 +39,40 @@ Polygon read_rect(TableReader& r) {
   return rect_polygon(Rect{v[0], v[1], v[2], v[3]});
 }
 
-Polygon read_polygon(TableReader& r, const std::string& key = "polygon") {
+// A polygon's corners, each [x, y] or [x, y, bulge]: the contour with its arcs, and its polygon
+// with the arcs as chords within the layout's chord tolerance.
+struct ReadContour {
+  Contour contour;
+  Polygon polygon;
+};
+
+ReadContour read_contour(TableReader& r, const std::string& key, double tolerance) {
   const toml::array* a = r.get(key)->as_array();
   const std::string allowed =
       "must be at least 3 corners [[x, y], ...] in millimetres (at most 10000), a simple polygon "
-      "whose edges do not cross";
-  if (!a || a->size() < 3 || a->size() > kMostVertices) r.fail(key, allowed);
-  Polygon polygon;
+      "whose edges do not cross; [x, y, bulge] makes the edge to the next corner an arc (bulge "
+      "= tan(angle / 4), positive counter-clockwise, as CAD's polylines; at most 1000 in size)";
+  if (!a || a->size() < 2 || a->size() > kMostVertices) r.fail(key, allowed);
+  Contour contour;
   for (const toml::node& item : *a) {
     const toml::array* p = item.as_array();
-    const auto x = p && p->size() == 2 ? finite_number(p->get(0)) : std::nullopt;
-    const auto y = p && p->size() == 2 ? finite_number(p->get(1)) : std::nullopt;
-    if (!x || !y) r.fail(key, allowed);
-    polygon.push_back({*x, *y});
+    const bool sized = p && (p->size() == 2 || p->size() == 3);
+    const auto x = sized ? finite_number(p->get(0)) : std::nullopt;
+    const auto y = sized ? finite_number(p->get(1)) : std::nullopt;
+    const auto bulge = sized && p->size() == 3 ? finite_number(p->get(2)) : std::optional(0.0);
+    if (!x || !y || !bulge || std::fabs(*bulge) > 1000) r.fail(key, allowed);
+    contour.push_back({*x, *y, *bulge});
   }
-  if (polygon.front() == polygon.back()) polygon.pop_back();  // closed by repeating the first
-  if (polygon.size() < 3 || !is_simple(polygon)) r.fail(key, allowed);
-  return polygon;
+  if (contour.size() > 2 && contour.front().x == contour.back().x &&
+      contour.front().y == contour.back().y)
+    contour.pop_back();  // closed by repeating the first
+  ReadContour read{contour, flatten(contour, tolerance)};
+  if (read.polygon.size() < 3 || !is_simple(read.polygon)) r.fail(key, allowed);
+  if (!has_arcs(read.contour)) read.contour.clear();
+  return read;
 }
 
-Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size) {
+Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size, double tolerance) {
   Zone z;
   z.name = read_name(r, "name", "a name").value_or("");
   if (z.name.empty() || z.name.size() > 200)
@@ -66,7 +82,13 @@ Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size)
     r.fail(rect ? "polygon" : "name",
            "a zone needs either rect = [x, y, width, height] or polygon = [[x, y], ...] in mm, "
            "not both");
-  z.polygon = rect ? read_rect(r) : read_polygon(r);
+  if (rect) {
+    z.polygon = read_rect(r);
+  } else {
+    ReadContour c = read_contour(r, "polygon", tolerance);
+    z.polygon = std::move(c.polygon);
+    z.contour = std::move(c.contour);
+  }
   check_on_surface(r, rect ? "rect" : "polygon", z.polygon, size);
   const std::string rule = read_string(r, "rule", "\"exclude\" or \"value\"").value_or("");
   if (rule == "exclude") {
@@ -91,21 +113,22 @@ Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size)
 
 void read_outline(TableReader& r, LayoutSpec& spec) {
   if (!r.get("outline")) return;
-  Polygon outline = read_polygon(r, "outline");
-  double x1 = 0, y1 = 0;
-  for (const auto& p : outline) {
-    if (p[0] < 0 || p[1] < 0)
-      r.fail("outline", fmt::format("has the corner [{:g}, {:g}]: corners are in mm from the "
-                                    "surface's origin, x and y from 0",
-                                    p[0], p[1]));
-    x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
-  }
-  if (x1 > 1e7 || y1 > 1e7) r.fail("outline", "must lie within 10 km of the origin");
+  ReadContour outline = read_contour(r, "outline", spec.chord_tolerance);
+  // An arc can swell past its corners: the true extent bounds the surface.
+  const Rect bounds =
+      contour_bounds(outline.contour.empty() ? contour_of(outline.polygon) : outline.contour);
+  if (bounds.x < -1e-9 || bounds.y < -1e-9)
+    r.fail("outline", fmt::format("reaches [{:g}, {:g}]: corners and arcs are in mm from the "
+                                  "surface's origin, x and y from 0",
+                                  bounds.x, bounds.y));
+  if (bounds.right() > 1e7 || bounds.top() > 1e7)
+    r.fail("outline", "must lie within 10 km of the origin");
   if (spec.size)
-    check_on_surface(r, "outline", outline, *spec.size);
+    check_on_surface(r, "outline", outline.polygon, *spec.size);
   else
-    spec.size = std::array<double, 2>{x1, y1};
-  spec.outline = std::move(outline);
+    spec.size = std::array<double, 2>{bounds.right(), bounds.top()};
+  spec.outline = std::move(outline.polygon);
+  spec.outline_contour = std::move(outline.contour);
 }
 
 void read_zones(TableReader& r, const Design& design, LayoutSpec& spec) {
@@ -123,7 +146,7 @@ void read_zones(TableReader& r, const Design& design, LayoutSpec& spec) {
   for (size_t i = 0; i < a->size(); ++i) {
     TableReader zr(*a->get(i)->as_table(), r.key_path("zones." + std::to_string(i)), r.source(),
                    {"name", "rect", "polygon", "rule", "value"});
-    spec.zones.push_back(read_zone(zr, values, *spec.size));
+    spec.zones.push_back(read_zone(zr, values, *spec.size, spec.chord_tolerance));
   }
 }
 

@@ -72,7 +72,8 @@ RunRequest read_run(const Params& params, const std::set<std::string>& own_names
   for (const std::string& set : r.sets) {
     const std::string key = set.substr(0, set.find('='));
     const std::string last = key.substr(key.rfind('.') + 1);
-    if (last == "mask" || last == "path")
+    const bool site = key == "layout.site" || key.rfind("layout.site.", 0) == 0;
+    if (last == "mask" || last == "path" || site)
       throw InputError(parameter("set", key),
                        "names a file on the server, which requests may not set; the recipe's "
                        "own file is used");

@@ -2,7 +2,9 @@
 // schedule.csv written with it, and checks: one element per schedule row, named and tagged by
 // its ID; its value, lot and material as the schedule gives them; its geometry's extent (from
 // web-ifc's own meshes) equal to the row's box within 0.01 mm; every opening a void of a
-// plate. Usage: node ifc_check.mjs DIR... (each with layout.ifc and schedule.csv).
+// plate; every setting-out annotation's IfcIndexedPolyCurve with its arcs as IfcArcIndex through
+// three distinct points on a circle (read raw: web-ifc's typed reader has no select values).
+// Usage: node ifc_check.mjs DIR... (each with layout.ifc and schedule.csv).
 import fs from 'fs';
 import path from 'path';
 import * as W from 'web-ifc';
@@ -68,6 +70,27 @@ function boxMiss(e, box) {
   return worst;
 }
 
+// The arcs of the annotations' curves, and what is wrong with any of them.
+function annotationArcs(model, problems) {
+  let arcs = 0;
+  const curves = api.GetLineIDsWithType(model, W.IFCINDEXEDPOLYCURVE);
+  for (let i = 0; i < curves.size(); ++i) {
+    const raw = api.GetRawLineData(model, curves.get(i));
+    const points = api.GetLine(model, raw.arguments[0].value).CoordList
+      .map((p) => p.map((c) => c.value));
+    for (const segment of raw.arguments[1]) {
+      const at = segment.value.map((v) => v.value);
+      if (at.some((k) => k < 1 || k > points.length)) problems.push(`curve #${raw.ID}: index out of range`);
+      if (segment.typecode !== W.IFCARCINDEX) continue;
+      ++arcs;
+      const [a, b, c] = at.map((k) => points[k - 1]);
+      const turn = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+      if (at.length !== 3 || Math.abs(turn) < 1e-6) problems.push(`curve #${raw.ID}: an arc through collinear points`);
+    }
+  }
+  return arcs;
+}
+
 function check(dir) {
   const problems = [];
   const rows = csvRows(fs.readFileSync(path.join(dir, 'schedule.csv'), 'utf8'));
@@ -130,6 +153,7 @@ function check(dir) {
     worst = Math.max(worst, miss);
     if (miss > kTolerance) problems.push(`${row.element_id}: extent off by ${(miss * 1000).toFixed(4)} mm`);
   }
+  const arcs = annotationArcs(model, problems);
   const openings = rows.filter((r) => r.element_type === 'opening').length;
   const voids = api.GetLineIDsWithType(model, W.IFCRELVOIDSELEMENT).size();
   if (voids !== openings) problems.push(`${voids} voids for ${openings} openings`);
@@ -139,7 +163,7 @@ function check(dir) {
     console.log(`${name}: ${problems.length} problems`);
     for (const p of problems.slice(0, 10)) console.log('  ' + p);
   } else {
-    console.log(`${name}: ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)${voids ? `, ${voids} voids` : ''}`);
+    console.log(`${name}: ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)${voids ? `, ${voids} voids` : ''}${arcs ? `, ${arcs} arcs set out` : ''}`);
   }
   return problems.length === 0;
 }

@@ -1,0 +1,80 @@
+#!/usr/bin/python3
+"""Writes the example site drawings as an architect's CAD would export them (ezdxf, DXF R2013).
+
+courtyard.dxf: a 14 x 9 m courtyard whose outline (layer A-OTLN) has a notch and an arched
+edge (an LWPOLYLINE with a bulge), a round tree pit (a CIRCLE on TREE_PIT), a drain (a thin
+closed polyline on DRAIN), and notes and dimensions on layers curdle passes over.
+
+elevation.dxf: a 12 x 6.3 m brick elevation (wall outline on A-WALL) whose windows are
+INSERTs of a window block (frame, sash and a glazing bar, on layer 0) on A-GLAZ, and whose
+door is a mirrored INSERT of a door block on A-DOOR.
+
+    make_sites.py OUT_DIR [--units mm|cm|m|in]   (the courtyard in other units, for tests)
+"""
+import sys
+
+import ezdxf
+
+INSUNITS = {"in": 1, "mm": 4, "cm": 5, "m": 6}
+MM = {"in": 25.4, "mm": 1.0, "cm": 10.0, "m": 1000.0}
+
+
+def courtyard(path, units="mm"):
+    k = 1.0 / MM[units]
+    doc = ezdxf.new("R2013", setup=False)
+    doc.header["$INSUNITS"] = INSUNITS[units]
+    doc.header["$MEASUREMENT"] = 1
+    for name, colour in (("A-OTLN", 7), ("TREE_PIT", 3), ("DRAIN", 5), ("A-ANNO", 2)):
+        doc.layers.add(name, color=colour)
+    msp = doc.modelspace()
+    # Counter-clockwise from the datum; the top edge from (14, 9) to (4, 9) m is an arch that
+    # dips 1 m into the courtyard (bulge -0.2 on a 10 m chord); the notch is 4 x 2 m.
+    outline = [(0, 0, 0), (14000, 0, 0), (14000, 9000, -0.2), (4000, 9000, 0), (4000, 7000, 0),
+               (0, 7000, 0)]
+    msp.add_lwpolyline([(x * k, y * k, 0, 0, b) for x, y, b in outline], format="xyseb",
+                       close=True, dxfattribs={"layer": "A-OTLN"})
+    msp.add_circle((5000 * k, 4000 * k), 700 * k, dxfattribs={"layer": "TREE_PIT"})
+    msp.add_lwpolyline([(9000 * k, 1500 * k), (13000 * k, 1500 * k), (13000 * k, 1650 * k),
+                        (9000 * k, 1650 * k)], close=True, dxfattribs={"layer": "DRAIN"})
+    msp.add_text("COURTYARD", dxfattribs={"layer": "A-ANNO", "height": 250 * k}).set_placement(
+        (6000 * k, 5000 * k))
+    msp.add_linear_dim(base=(0, -800 * k), p1=(0, 0), p2=(14000 * k, 0),
+                       dxfattribs={"layer": "A-ANNO"}).render()
+    doc.saveas(path)
+
+
+def elevation(path):
+    doc = ezdxf.new("R2013", setup=False)
+    doc.header["$INSUNITS"] = 4
+    for name in ("A-WALL", "A-GLAZ", "A-DOOR", "A-ANNO"):
+        doc.layers.add(name)
+    window = doc.blocks.new("WIN-1200x1500", base_point=(0, 0))
+    window.add_lwpolyline([(0, 0), (1200, 0), (1200, 1500), (0, 1500)], close=True)
+    window.add_lwpolyline([(50, 50), (1150, 50), (1150, 1450), (50, 1450)], close=True)
+    window.add_line((600, 50), (600, 1450))  # the glazing bar
+    door = doc.blocks.new("DOOR-1000x2250", base_point=(1000, 0))
+    door.add_lwpolyline([(0, 0), (1000, 0), (1000, 2250), (0, 2250)], close=True)
+    door.add_arc((0, 0), 1000, 0, 90)  # the swing, drawn as on a plan: inside the frame
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (12000, 0), (12000, 6300), (0, 6300)], close=True,
+                       dxfattribs={"layer": "A-WALL"})
+    for storey, sill in enumerate((900, 4050)):
+        for x in (1500, 4500, 7500, 10500 - 1200 * (storey == 0)):
+            if storey == 0 and x == 4500:
+                continue  # the door stands there
+            msp.add_blockref("WIN-1200x1500", (x, sill), dxfattribs={"layer": "A-GLAZ"})
+    # The door, mirrored (hinged on the other side): x scale -1 about its base point.
+    msp.add_blockref("DOOR-1000x2250", (4600, 0), dxfattribs={"layer": "A-DOOR", "xscale": -1})
+    msp.add_text("SOUTH ELEVATION", dxfattribs={"layer": "A-ANNO", "height": 200}).set_placement(
+        (0, -600))
+    doc.saveas(path)
+
+
+if __name__ == "__main__":
+    out = sys.argv[1]
+    units = sys.argv[3] if len(sys.argv) > 3 and sys.argv[2] == "--units" else None
+    if units:
+        courtyard(f"{out}/courtyard-{units}.dxf", units)
+    else:
+        courtyard(f"{out}/courtyard.dxf")
+        elevation(f"{out}/elevation.dxf")

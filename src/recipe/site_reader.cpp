@@ -1,0 +1,204 @@
+// [layout.site]: file, outline, openings, zones, units and origin (patterns/README.md, "From
+// your drawing"). The drawing is read through the recipe's RecipeFiles and turned into the
+// surface by src/site; what it gives takes the place of layout.outline and [[layout.zones]].
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "layout/contour.h"
+#include "layout/zone.h"
+#include "recipe/layout_reader.h"
+#include "site/dxf_reader.h"
+#include "site/site.h"
+
+namespace curdle::reading {
+namespace {
+
+std::vector<std::string> read_layers(TableReader& r, const std::string& key) {
+  const toml::node* n = r.get(key);
+  std::vector<std::string> layers;
+  if (!n) return layers;
+  const std::string allowed =
+      "must be a layer's name or a list of them, e.g. [\"A-GLAZ\", \"A-DOOR\"]";
+  if (const auto one = n->value<std::string>()) {
+    layers.push_back(*one);
+  } else if (const toml::array* a = n->as_array(); a && a->size() <= 100) {
+    for (const toml::node& item : *a) {
+      const auto name = item.value<std::string>();
+      if (!name) r.fail(key, allowed);
+      layers.push_back(*name);
+    }
+  } else {
+    r.fail(key, allowed);
+  }
+  for (const std::string& l : layers)
+    if (l.empty() || l.size() > 255) r.fail(key, allowed + "; a name of 1 to 255 characters");
+  return layers;
+}
+
+site::ZoneLayer read_zone_layer(TableReader& r, size_t values) {
+  site::ZoneLayer z;
+  z.layer = read_name(r, "layer", "a layer's name").value_or("");
+  if (z.layer.empty() || z.layer.size() > 255)
+    r.fail("layer", "must be the name of the drawing's layer that holds the zone's outlines");
+  const std::string rule = read_string(r, "rule", "\"exclude\" or \"value\"").value_or("exclude");
+  if (rule == "exclude") {
+    if (r.get("value"))
+      r.fail("value", "is for rule = \"value\"; an excluded zone has no elements");
+  } else if (rule == "value") {
+    z.rule = ZoneRule::value;
+    z.value = static_cast<uint32_t>(
+        read_int(r, "value", 0, 0, static_cast<int64_t>(values) - 1, /*required=*/true));
+  } else {
+    r.fail("rule", "must be \"exclude\" (no elements) or \"value\" with value = N");
+  }
+  return z;
+}
+
+void read_units_and_origin(TableReader& r, site::LayerMap& map) {
+  if (const auto units = read_string(r, "units", "a unit")) {
+    map.unit_mm = site::unit_mm(*units);
+    map.unit_name = *units;
+    if (map.unit_mm == 0)
+      r.fail("units",
+             "must be \"mm\", \"cm\", \"dm\", \"m\", \"in\" or \"ft\": what one unit "
+             "of the drawing is");
+  }
+  const toml::node* n = r.get("origin");
+  if (!n) return;
+  const std::string allowed =
+      "must be \"drawing\" (its origin is the layout's datum), \"outline\" (the outline's "
+      "bottom-left corner is) or [x, y] in the drawing's units";
+  if (const auto word = n->value<std::string>()) {
+    if (*word == "outline")
+      map.origin_at_outline = true;
+    else if (*word == "drawing")
+      map.origin = std::array<double, 2>{0, 0};
+    else
+      r.fail("origin", allowed);
+    return;
+  }
+  const toml::array* a = n->as_array();
+  const auto x = a && a->size() == 2 ? finite_number(a->get(0)) : std::nullopt;
+  const auto y = a && a->size() == 2 ? finite_number(a->get(1)) : std::nullopt;
+  if (!x || !y || std::fabs(*x) > 1e12 || std::fabs(*y) > 1e12) r.fail("origin", allowed);
+  map.origin = std::array<double, 2>{*x, *y};
+}
+
+site::LayerMap read_layer_map(TableReader& r, const LayoutSpec& spec, size_t values) {
+  site::LayerMap map;
+  map.file = read_string(r, "file", "a file name").value_or("");
+  std::string lower = map.file;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (map.file.empty() || map.file.size() > 1024 || lower.size() < 5 ||
+      lower.substr(lower.size() - 4) != ".dxf")
+    r.fail("file",
+           "must name the site's drawing, a .dxf file relative to the recipe (in CAD: "
+           "save as DXF)");
+  const auto outline = read_layers(r, "outline");
+  if (outline.size() != 1)
+    r.fail("outline", "must name the one layer that holds the surface's outline, e.g. \"A-OTLN\"");
+  map.outline = outline.front();
+  map.openings = read_layers(r, "openings");
+  if (const toml::node* n = r.get("zones")) {
+    const toml::array* a = n->as_array();
+    if (!a || !a->is_array_of_tables() || a->size() > 100)
+      r.fail("zones",
+             "must be [[layout.site.zones]] tables (at most 100), each with layer and "
+             "rule (\"exclude\", or \"value\" with value = N)");
+    for (size_t i = 0; i < a->size(); ++i) {
+      TableReader zr(*a->get(i)->as_table(), r.key_path("zones." + std::to_string(i)), r.source(),
+                     {"layer", "rule", "value"});
+      map.zones.push_back(read_zone_layer(zr, values));
+    }
+  }
+  read_units_and_origin(r, map);
+  map.chord_tolerance = spec.chord_tolerance;
+  return map;
+}
+
+// Whether the contour is an axis-aligned rectangle: x, y, w, h.
+std::optional<std::array<double, 4>> rectangle(const Contour& c) {
+  if (c.size() != 4 || has_arcs(c)) return std::nullopt;
+  const Polygon p = flatten(c, 1);
+  const auto rects = as_rectangles(p);
+  if (!rects || rects->size() != 1) return std::nullopt;
+  const Rect& r = rects->front();
+  return std::array<double, 4>{r.x, r.y, r.w, r.h};
+}
+
+Zone zone_of(const std::string& name, ZoneRule rule, uint32_t value, const Contour& contour,
+             double tolerance) {
+  Zone z;
+  z.name = name;
+  z.rule = rule;
+  z.value = value;
+  z.polygon = flatten(contour, tolerance);
+  if (has_arcs(contour)) z.contour = contour;
+  if (rule == ZoneRule::exclude)
+    if (const auto rects = as_rectangles(z.polygon)) z.rects = *rects;
+  return z;
+}
+
+}  // namespace
+
+void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
+  const toml::node* n = r.get("site");
+  if (!n) return;
+  if (r.get("outline"))
+    r.fail("outline", "is given by [layout.site]'s drawing; give one or the other");
+  const toml::table* t = n->as_table();
+  if (!t) r.fail("site", "must be a table: [layout.site] with file, outline and more");
+  TableReader sr(*t, r.key_path("site"), r.source(),
+                 {"file", "outline", "openings", "zones", "units", "origin"});
+  const size_t values = size_t{1} << design.curds.size();
+  site::LayerMap map = read_layer_map(sr, spec, values);
+  if (!map.zones.empty() && !spec.kind->takes_zones())
+    sr.fail("zones", "are for tile, paving and facade layouts");
+  sr.report_unused("is not a [layout.site] key");
+  if (!r.source().files)
+    sr.fail("file",
+            "names a drawing, which is read only where the recipe is a file: run "
+            "curdle on the recipe's file");
+  SourceLocation where = locate(r.source(), t->source(), sr.key_path("file"));
+  const std::string bytes = r.source().files->read(map.file, where, site::kMostDrawingBytes);
+  site::Site s;
+  try {
+    const site::Drawing drawing =
+        site::read_dxf(bytes, map.file, {spec.chord_tolerance, map.unit_mm});
+    s = site::site_from(drawing, map);
+  } catch (const site::SiteError& e) {
+    sr.fail("file", e.what());
+  }
+  spec.outline = flatten(s.outline, spec.chord_tolerance);
+  if (has_arcs(s.outline)) spec.outline_contour = s.outline;
+  const Rect bounds = contour_bounds(s.outline);
+  if (spec.size) {
+    if (bounds.right() > (*spec.size)[0] + 1e-6 || bounds.top() > (*spec.size)[1] + 1e-6)
+      sr.fail("file", fmt::format("{}: the outline reaches {:g} x {:g} mm, beyond the surface's "
+                                  "size of {:g} x {:g} mm; leave the size out, and the outline "
+                                  "gives it",
+                                  map.file, bounds.right(), bounds.top(), (*spec.size)[0],
+                                  (*spec.size)[1]));
+  } else {
+    spec.size = std::array<double, 2>{bounds.right(), bounds.top()};
+  }
+  size_t number = 0;
+  for (const Contour& o : s.openings) {
+    ++number;
+    const auto rect = rectangle(o);
+    if (rect && spec.kind->take_opening(spec, *rect)) continue;
+    if (!spec.kind->takes_zones()) sr.fail("openings", "are for tile, paving and facade layouts");
+    spec.zones.push_back(
+        zone_of(fmt::format("opening {}", number), ZoneRule::exclude, 0, o, spec.chord_tolerance));
+  }
+  for (const site::SiteZone& z : s.zones) {
+    spec.zones.push_back(zone_of(z.name, z.rule, z.value, z.contour, spec.chord_tolerance));
+  }
+  spec.site_summary = s.summary;
+  spec.site_notes = s.notes;
+}
+
+}  // namespace curdle::reading

@@ -1,0 +1,47 @@
+// A drawing as the site readers give it (dxf_reader.h, svg_reader.h): shapes on layers in the
+// drawing's own units and coordinates, blocks already placed, before they are turned into a
+// surface's outline, openings and zones (site.h). Nothing here knows the file's format.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "layout/contour.h"
+
+namespace curdle::site {
+
+// A drawing that cannot be read or used: what is wrong, naming the file, layer and entity,
+// and what to do. The recipe reader adds the recipe's key.
+class SiteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Shape {
+  std::string layer;
+  std::string handle;  // the entity's handle (DXF) or id (SVG), for messages; may be empty
+  std::string entity;  // "LWPOLYLINE", "LINE", "ARC", "CIRCLE", "path", ...
+  Contour path;        // in drawing units; an open shape's last vertex's bulge is unused
+  bool closed = false;
+  int insert = -1;         // the top-level block reference it was placed by; -1: none
+  bool flattened = false;  // an ellipse or spline, approximated by chords
+};
+
+struct Drawing {
+  std::string format;  // "DXF", "SVG"
+  // Millimetres per drawing unit, as the drawing says; 0 when it does not ($INSUNITS 0).
+  double unit_mm = 0;
+  std::string unit_name;  // as the drawing says it: "mm", "m", "in", ...
+  std::vector<Shape> shapes;
+  std::vector<std::string> layers;  // every layer that holds a shape, in the order first seen
+  std::vector<std::string> hidden;  // layers frozen or off in the drawing (read all the same)
+  std::vector<std::string> notes;   // what a reader approximated or passed over
+};
+
+// What a reader may hold at most, so that a hostile file is refused with a clear limit.
+inline constexpr size_t kMostDrawingBytes = size_t{64} << 20;
+inline constexpr size_t kMostShapes = 200000;
+inline constexpr size_t kMostVertices = 2000000;
+
+}  // namespace curdle::site

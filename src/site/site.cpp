@@ -1,0 +1,423 @@
+// From the drawing's layers to the surface: open pieces (LINE and ARC chains, open polylines)
+// joined end to end, the units and the datum applied, and everything checked before any piece
+// is laid.
+#include "site/site.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "layout/zone.h"
+
+namespace curdle::site {
+namespace {
+
+// Coordinates in mm are kept to the nanometre, so that the same drawing in other units gives
+// the same numbers (14,000 mm drawn as 551.1811... in gives 14000.000000000002 before this).
+double snapped(double mm) {
+  const double v = std::round(mm * 1e6) / 1e6;
+  return v == 0 ? 0 : v;  // no -0
+}
+
+// 14000 as "14,000"; 2.5 as "2.5".
+std::string grouped(double v) {
+  std::string digits = fmt::format("{:.0f}", std::fabs(std::round(v)));
+  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
+    digits.insert(static_cast<size_t>(i), ",");
+  if (std::fabs(v - std::round(v)) > 1e-6) digits = fmt::format("{:g}", std::fabs(v));
+  return (v < 0 ? "-" : "") + digits;
+}
+
+struct Piece {
+  const Shape* shape;
+  Contour path;
+};
+
+// A closed contour on a layer, with the entities it was made of for messages.
+struct Closed {
+  Contour path;
+  std::string handles;  // "3A, 3B"
+  std::string entity;   // of its first shape
+  int insert = -1;
+};
+
+Contour reversed(const Contour& path) {
+  // The edge a → b with bulge k is b → a with bulge -k: each bulge moves to the edge's other end.
+  Contour r(path.rbegin(), path.rend());
+  for (size_t i = 0; i + 1 < r.size(); ++i) r[i].bulge = -r[i + 1].bulge;
+  r.back().bulge = 0;
+  return r;
+}
+
+std::string handle_of(const Shape& s) {
+  return s.handle.empty() ? s.entity : s.entity + " " + s.handle;
+}
+
+std::string at(const ContourVertex& v) { return fmt::format("({:g}, {:g})", v.x, v.y); }
+
+// Joins open pieces end to end (within `tolerance`, drawing units) into closed contours; a chain
+// that does not close is returned in `open`, its ends the gap's.
+void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& closed,
+          std::vector<Closed>& open) {
+  const double cell = std::max(tolerance, 1e-12) * 2;
+  using Key = std::pair<int64_t, int64_t>;
+  struct KeyHash {
+    size_t operator()(const Key& k) const {
+      return std::hash<int64_t>()(k.first * 73856093) ^ std::hash<int64_t>()(k.second * 19349663);
+    }
+  };
+  auto key_of = [&](double x, double y) {
+    return Key{static_cast<int64_t>(std::floor(x / cell)),
+               static_cast<int64_t>(std::floor(y / cell))};
+  };
+  std::unordered_multimap<Key, size_t, KeyHash> ends;  // piece * 2 + (0 start, 1 end)
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    ends.emplace(key_of(pieces[i].path.front().x, pieces[i].path.front().y), 2 * i);
+    ends.emplace(key_of(pieces[i].path.back().x, pieces[i].path.back().y), 2 * i + 1);
+  }
+  std::vector<bool> used(pieces.size(), false);
+  auto find_near = [&](const ContourVertex& v) -> std::optional<size_t> {
+    const Key k = key_of(v.x, v.y);
+    std::optional<size_t> best;
+    double nearest = tolerance;
+    for (int64_t dx = -1; dx <= 1; ++dx)
+      for (int64_t dy = -1; dy <= 1; ++dy) {
+        const auto [lo, hi] = ends.equal_range(Key{k.first + dx, k.second + dy});
+        for (auto it = lo; it != hi; ++it) {
+          if (used[it->second / 2]) continue;
+          const Contour& p = pieces[it->second / 2].path;
+          const ContourVertex& e = it->second % 2 ? p.back() : p.front();
+          const double d = std::hypot(e.x - v.x, e.y - v.y);
+          if (d <= nearest) nearest = d, best = it->second;
+        }
+      }
+    return best;
+  };
+  for (size_t first = 0; first < pieces.size(); ++first) {
+    if (used[first]) continue;
+    used[first] = true;
+    Closed c{pieces[first].path, handle_of(*pieces[first].shape), pieces[first].shape->entity,
+             pieces[first].shape->insert};
+    const size_t most_pieces = 100000;
+    for (size_t k = 0; k < most_pieces; ++k) {
+      const ContourVertex start = c.path.front(), end = c.path.back();
+      if (c.path.size() > 2 && std::hypot(start.x - end.x, start.y - end.y) <= tolerance) break;
+      const auto next = find_near(end);
+      if (!next) break;
+      used[*next / 2] = true;
+      const Piece& p = pieces[*next / 2];
+      Contour add = *next % 2 ? reversed(p.path) : p.path;
+      c.path.back().bulge = add.front().bulge;  // the shared vertex carries the next edge
+      c.path.insert(c.path.end(), add.begin() + 1, add.end());
+      c.handles += ", " + handle_of(*p.shape);
+    }
+    const ContourVertex start = c.path.front(), end = c.path.back();
+    const bool closes =
+        c.path.size() > 2 && std::hypot(start.x - end.x, start.y - end.y) <= tolerance;
+    if (closes) {
+      c.path.pop_back();  // the last vertex is the first again
+      closed.push_back(std::move(c));
+    } else {
+      open.push_back(std::move(c));
+    }
+  }
+}
+
+// A layer's closed contours; open pieces are joined, and pieces left open are an error unless
+// `inside_ok` and they lie inside one of the layer's closed contours (a window's glazing bars).
+std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, double tolerance,
+                              const std::string& file, const std::string& role, double unit_mm,
+                              bool inside_ok, size_t& passed_over) {
+  std::vector<Closed> closed;
+  std::vector<Piece> pieces;
+  for (const Shape& s : drawing.shapes) {
+    if (s.layer != layer) continue;
+    if (s.closed)
+      closed.push_back({s.path, handle_of(s), s.entity, s.insert});
+    else
+      pieces.push_back({&s, s.path});
+  }
+  std::vector<Closed> open;
+  join(std::move(pieces), tolerance, closed, open);
+  for (const Closed& o : open) {
+    if (inside_ok) {
+      const bool within = std::any_of(closed.begin(), closed.end(), [&](const Closed& c) {
+        const Polygon p = flatten(c.path, tolerance);
+        return std::all_of(o.path.begin(), o.path.end(), [&](const ContourVertex& v) {
+          return contains(p, v.x, v.y) || distance_to_edges(p, v.x, v.y) <= tolerance;
+        });
+      });
+      if (within) {
+        ++passed_over;
+        continue;
+      }
+    }
+    throw SiteError(fmt::format(
+        "{}: the {} on layer \"{}\" is not closed: {} ends at {} and {} ({} mm apart, more than "
+        "the {:g} mm that are joined); close it (PEDIT Join, or draw it as one closed polyline)",
+        file, role, layer, o.handles, at(o.path.front()), at(o.path.back()),
+        grouped(std::hypot(o.path.front().x - o.path.back().x, o.path.front().y - o.path.back().y) *
+                unit_mm),
+        kJoinTolerance));
+  }
+  return closed;
+}
+
+Contour counter_clockwise(Contour c) {
+  double twice = 0;
+  for (size_t i = 0; i < c.size(); ++i) {
+    const ContourVertex& a = c[i];
+    const ContourVertex& b = c[(i + 1) % c.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  // Two-vertex contours (a circle) have no shoelace area: their bulges say the turn.
+  const bool clockwise = c.size() == 2 ? c[0].bulge < 0 : twice < 0;
+  if (!clockwise) return c;
+  c.push_back(c.front());
+  c = reversed(c);
+  c.pop_back();
+  return c;
+}
+
+std::string layers_with_shapes(const Drawing& drawing) {
+  std::string names;
+  for (size_t i = 0; i < drawing.layers.size() && i < 40; ++i)
+    names += (i ? ", " : "") + ("\"" + drawing.layers[i] + "\"");
+  if (drawing.layers.size() > 40) names += ", ...";
+  return names.empty() ? "none" : names;
+}
+
+void check_named(const Drawing& drawing, const std::string& layer, const std::string& file,
+                 const std::string& role) {
+  if (std::find(drawing.layers.begin(), drawing.layers.end(), layer) != drawing.layers.end())
+    return;
+  throw SiteError(
+      fmt::format("{}: layer \"{}\" ({}) has nothing on it; the layers with shapes "
+                  "are {}",
+                  file, layer, role, layers_with_shapes(drawing)));
+}
+
+}  // namespace
+
+double unit_mm(const std::string& name) {
+  static const std::map<std::string, double> kUnits = {{"mm", 1},   {"cm", 10},   {"dm", 100},
+                                                       {"m", 1000}, {"in", 25.4}, {"ft", 304.8}};
+  const auto it = kUnits.find(name);
+  return it == kUnits.end() ? 0 : it->second;
+}
+
+namespace {
+
+// The units: the recipe's, else the drawing's; a unitless drawing must be told.
+double units_of(const Drawing& drawing, const LayerMap& map, std::string& name,
+                std::vector<std::string>& notes) {
+  if (map.unit_mm > 0) {
+    name = map.unit_name;
+    if (drawing.unit_mm > 0 && drawing.unit_mm != map.unit_mm)
+      notes.push_back(
+          fmt::format("{} says its units are {}; read in {} as [layout.site] units "
+                      "says",
+                      map.file, drawing.unit_name, map.unit_name));
+    return map.unit_mm;
+  }
+  if (drawing.unit_mm > 0) {
+    name = drawing.unit_name;
+    return drawing.unit_mm;
+  }
+  throw SiteError(fmt::format(
+      "{}: does not say its units ({}); say what they are with [layout.site] units = \"mm\", "
+      "\"cm\", \"m\", \"in\" or \"ft\" (a drawing in metres read as millimetres would be laid "
+      "1000 times too small)",
+      map.file,
+      drawing.unit_name.empty() ? "$INSUNITS is 0, unitless"
+                                : drawing.unit_name + ", not a length curdle lays"));
+}
+
+// The datum in drawing units: as the recipe says, or the drawing's origin where the outline
+// lies in its first quadrant, or else the outline's bottom-left corner.
+std::array<double, 2> datum_of(const LayerMap& map, const Rect& bounds, double unit_mm,
+                               double tolerance) {
+  if (map.origin) return *map.origin;
+  const bool first_quadrant = bounds.x >= -tolerance && bounds.y >= -tolerance &&
+                              bounds.right() * unit_mm <= 1e7 && bounds.top() * unit_mm <= 1e7;
+  if (!map.origin_at_outline && first_quadrant) return {0, 0};
+  return {bounds.x, bounds.y};
+}
+
+Contour to_mm(const Contour& c, const std::array<double, 2>& datum, double unit_mm) {
+  Contour out = c;
+  for (ContourVertex& v : out)
+    v = {snapped((v.x - datum[0]) * unit_mm), snapped((v.y - datum[1]) * unit_mm), v.bulge};
+  return out;
+}
+
+void check_plausible(const Rect& mm, const LayerMap& map, const std::string& unit_name,
+                     double unit_mm) {
+  const double longer = std::max(mm.w, mm.h), shorter = std::min(mm.w, mm.h);
+  if (longer <= 5e6 && shorter >= 10) return;
+  const std::string size = fmt::format("{} x {} mm", grouped(mm.w), grouped(mm.h));
+  const std::string hint =
+      longer > 5e6 ? (unit_mm >= 1000 ? "is it drawn in millimetres? then units = \"mm\""
+                                      : "is it drawn in other units? then say so with units")
+                   : (unit_mm <= 1 ? "is it drawn in metres? then units = \"m\""
+                                   : "is it drawn in other units? then say so with units");
+  throw SiteError(
+      fmt::format("{}: the outline is {} read in {} ({}), which is no surface curdle "
+                  "lays (at most 5 km, at least 10 mm across); {} in [layout.site]",
+                  map.file, size, unit_name, longer > 5e6 ? "too large" : "too small", hint));
+}
+
+// The openings and zones: inside the outline, each named after its layer.
+void read_holes(const Drawing& drawing, const LayerMap& map, const Polygon& outline,
+                const std::array<double, 2>& datum, double unit_mm, double join_tolerance,
+                Site& site) {
+  auto place = [&](const Closed& c, const std::string& layer, const char* role) {
+    Contour mm = counter_clockwise(to_mm(c.path, datum, unit_mm));
+    const Polygon p = flatten(mm, map.chord_tolerance);
+    const bool any_inside = std::any_of(
+        p.begin(), p.end(), [&](const auto& v) { return contains(outline, v[0], v[1]); });
+    const bool holds_outline = !outline.empty() && contains(p, outline[0][0], outline[0][1]);
+    if (!any_inside && !holds_outline)
+      throw SiteError(
+          fmt::format("{}: the {} {} on layer \"{}\" lies outside the outline (at "
+                      "{} in the drawing); move it onto the surface, or off the layer",
+                      map.file, role, c.handles, layer, at(c.path.front())));
+    return mm;
+  };
+  size_t passed = 0;
+  for (const std::string& layer : map.openings) {
+    std::vector<Closed> found =
+        closed_on(drawing, layer, join_tolerance, map.file, "opening", unit_mm, true, passed);
+    // A window block's frame and sashes lie inside its outer line: the opening is the outer one.
+    std::vector<Polygon> flat;
+    for (const Closed& c : found) flat.push_back(flatten(c.path, join_tolerance));
+    for (size_t i = 0; i < found.size(); ++i) {
+      const bool inner = std::any_of(flat.begin(), flat.end(), [&](const Polygon& outer) {
+        return &outer != &flat[i] && polygon_area(outer) > polygon_area(flat[i]) &&
+               std::all_of(flat[i].begin(), flat[i].end(), [&](const auto& v) {
+                 return contains(outer, v[0], v[1]) ||
+                        distance_to_edges(outer, v[0], v[1]) <= join_tolerance;
+               });
+      });
+      if (inner) {
+        ++passed;
+        continue;
+      }
+      site.openings.push_back(place(found[i], layer, "opening"));
+    }
+  }
+  if (passed)
+    site.notes.push_back(
+        fmt::format("{} shapes inside openings passed over (frames, sashes, "
+                    "glazing bars): the opening is the outer line",
+                    passed));
+  for (const ZoneLayer& z : map.zones) {
+    size_t ignored = 0;
+    const std::vector<Closed> found =
+        closed_on(drawing, z.layer, join_tolerance, map.file, "zone", unit_mm, false, ignored);
+    for (size_t i = 0; i < found.size(); ++i)
+      site.zones.push_back({found.size() > 1 ? fmt::format("{} {}", z.layer, i + 1) : z.layer,
+                            z.rule, z.value, place(found[i], z.layer, "zone")});
+  }
+}
+
+std::string summary_of(const Site& site, const Rect& bounds, const LayerMap& map,
+                       const std::string& unit_name) {
+  const size_t arcs = arc_count(site.outline);
+  std::string text = fmt::format("outline {} x {} mm", grouped(bounds.w), grouped(bounds.h));
+  if (arcs) text += fmt::format(" with {} arc{}", arcs, arcs == 1 ? "" : "s");
+  if (!map.openings.empty())
+    text +=
+        fmt::format("; {} opening{}", site.openings.size(), site.openings.size() == 1 ? "" : "s");
+  if (!map.zones.empty()) {
+    text += fmt::format("; {} zone{} (", site.zones.size(), site.zones.size() == 1 ? "" : "s");
+    for (size_t i = 0; i < site.zones.size(); ++i)
+      text +=
+          (i ? ", " : "") + site.zones[i].name + " " +
+          (site.zones[i].rule == ZoneRule::exclude ? std::string("exclude")
+                                                   : fmt::format("value {}", site.zones[i].value));
+    text += ")";
+  }
+  return text + fmt::format(" from {}, units {}", map.file, unit_name);
+}
+
+}  // namespace
+
+Site site_from(const Drawing& drawing, const LayerMap& map) {
+  Site site;
+  check_named(drawing, map.outline, map.file, "the outline");
+  for (const std::string& l : map.openings) check_named(drawing, l, map.file, "openings");
+  for (const ZoneLayer& z : map.zones) check_named(drawing, z.layer, map.file, "a zone");
+  std::string unit_name;
+  const double mm = units_of(drawing, map, unit_name, site.notes);
+  const double join_tolerance = kJoinTolerance / mm;
+
+  size_t unused = 0;
+  std::vector<Closed> outlines =
+      closed_on(drawing, map.outline, join_tolerance, map.file, "outline", mm, false, unused);
+  if (outlines.size() != 1) {
+    std::string handles;
+    for (const Closed& c : outlines) handles += (handles.empty() ? "" : "; ") + c.handles;
+    throw SiteError(
+        fmt::format("{}: layer \"{}\" holds {} closed outlines ({}); the surface's "
+                    "outline is one closed shape: move the others to another layer",
+                    map.file, map.outline, outlines.size(), handles));
+  }
+  const Closed& outline = outlines.front();
+  const Rect bounds = contour_bounds(outline.path);
+  const std::array<double, 2> datum = datum_of(map, bounds, mm, join_tolerance);
+  site.datum = {snapped(datum[0] * mm), snapped(datum[1] * mm)};
+  site.outline = counter_clockwise(to_mm(outline.path, datum, mm));
+  const Rect extent = contour_bounds(site.outline);
+  check_plausible(extent, map, unit_name, mm);
+  const Polygon flat = flatten(site.outline, map.chord_tolerance);
+  if (const auto crossing = first_crossing(flat))
+    throw SiteError(fmt::format(
+        "{}: the outline {} on layer \"{}\" crosses itself at ({:g}, {:g}) in the drawing; an "
+        "outline goes round the surface once",
+        map.file, outline.handles, map.outline, (*crossing)[0] / mm + datum[0],
+        (*crossing)[1] / mm + datum[1]));
+  if (flat.size() < 3 || polygon_area(flat) <= 0)
+    throw SiteError(fmt::format("{}: the outline {} on layer \"{}\" encloses no area", map.file,
+                                outline.handles, map.outline));
+  if (extent.x < -1e-6 || extent.y < -1e-6)
+    throw SiteError(
+        fmt::format("{}: the outline reaches ({:g}, {:g}) mm left of or below the "
+                    "datum; set [layout.site] origin = \"outline\" or a point at or "
+                    "below its bottom-left corner",
+                    map.file, extent.x, extent.y));
+  read_holes(drawing, map, flat, datum, mm, join_tolerance, site);
+
+  site.summary = summary_of(site, extent, map, unit_name);
+  if (site.datum[0] != 0 || site.datum[1] != 0)
+    site.notes.push_back(
+        fmt::format("the layout's datum (0, 0) is the drawing's point ({}, {}) "
+                    "mm",
+                    grouped(site.datum[0]), grouped(site.datum[1])));
+  std::vector<std::string> ignored;
+  for (const std::string& l : drawing.layers) {
+    const bool named =
+        l == map.outline ||
+        std::find(map.openings.begin(), map.openings.end(), l) != map.openings.end() ||
+        std::any_of(map.zones.begin(), map.zones.end(),
+                    [&](const ZoneLayer& z) { return z.layer == l; });
+    if (!named) ignored.push_back(l);
+  }
+  if (!ignored.empty()) {
+    std::string names;
+    for (const auto& l : ignored) names += (names.empty() ? "" : ", ") + l;
+    site.notes.push_back("layers not named in [layout.site], ignored: " + names);
+  }
+  for (const std::string& l : drawing.hidden)
+    if (l == map.outline ||
+        std::find(map.openings.begin(), map.openings.end(), l) != map.openings.end())
+      site.notes.push_back("layer \"" + l +
+                           "\" is frozen or off in the drawing; read all the same");
+  site.notes.insert(site.notes.end(), drawing.notes.begin(), drawing.notes.end());
+  return site;
+}
+
+}  // namespace curdle::site

@@ -1,0 +1,66 @@
+// A surface read from the architect's drawing: the outline, openings and zones on the layers the
+// recipe names ([layout.site]), in millimetres from the layout's datum, their arcs kept. The
+// drawing's own units are honoured and checked for plausibility, so that a drawing in metres
+// read as millimetres (or the reverse) is refused instead of laid 1000 times too small.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "layout/contour.h"
+#include "site/drawing.h"
+
+namespace curdle::site {
+
+struct ZoneLayer {
+  std::string layer;
+  ZoneRule rule = ZoneRule::exclude;
+  uint32_t value = 0;
+};
+
+// [layout.site]: which layers hold what, and how the drawing's units and origin are taken.
+struct LayerMap {
+  std::string file;  // as the recipe names it, for messages
+  std::string outline;
+  std::vector<std::string> openings;
+  std::vector<ZoneLayer> zones;
+  double unit_mm = 0;     // the recipe's units; 0: as the drawing says
+  std::string unit_name;  // "mm", "cm", "m", "in", "ft"
+  // Where the layout's datum (0, 0) lies, in drawing units; absent: the drawing's origin when the
+  // outline lies in its first quadrant within 10 km, else the outline's bottom-left corner.
+  std::optional<std::array<double, 2>> origin;
+  bool origin_at_outline = false;  // origin = "outline"
+  double chord_tolerance = 0.05;   // mm, for flattened curves
+};
+
+struct SiteZone {
+  std::string name;  // the layer's name, numbered where it holds several
+  ZoneRule rule = ZoneRule::exclude;
+  uint32_t value = 0;
+  Contour contour;
+};
+
+struct Site {
+  Contour outline;                // counter-clockwise, mm from the datum
+  std::vector<Contour> openings;  // counter-clockwise
+  std::vector<SiteZone> zones;
+  std::array<double, 2> datum{0, 0};  // the datum in the drawing, mm from its origin
+  std::string summary;                // "outline 14,000 x 9,000 mm with 1 arc; ..."
+  std::vector<std::string> notes;     // layers passed over, hidden layers, flattened curves
+};
+
+// Millimetres per unit for "mm", "cm", "dm", "m", "in" or "ft"; 0 for anything else.
+double unit_mm(const std::string& name);
+
+// Throws SiteError naming the file, the layer and the entity's handle for: a layer named with
+// nothing on it, an open outline (with the gap's ends), a self-intersecting outline (with the
+// crossing), an opening or zone outside the outline, a unitless drawing the recipe gives no
+// units for, and a drawing whose size in its units is no plausible surface.
+Site site_from(const Drawing& drawing, const LayerMap& map);
+
+// How far apart two ends may lie and still be joined into one outline, mm.
+inline constexpr double kJoinTolerance = 0.5;
+
+}  // namespace curdle::site
