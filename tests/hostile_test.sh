@@ -89,6 +89,85 @@ section_options() {
   refused "above the budget" search "$f3" --set 'field.cells=[1024,1024]' --seeds 0..100000000
 }
 
+# Site drawings: every broken or hostile DXF is refused with the file, layer and handle and what
+# to do, and nothing is written; a far origin and Windows-1252 layer names are read.
+section_sites() {
+  local d="$work/sites"
+  mkdir -p "$d"
+  /usr/bin/python3 - "$d" <<'PY' || fail "could not write the hostile drawings"
+import os, sys
+import ezdxf
+d = sys.argv[1]
+def drawing(units=4):
+    doc = ezdxf.new("R2013", setup=False)
+    doc.header["$INSUNITS"] = units
+    return doc, doc.modelspace()
+def outline(msp, points, layer="A-OTLN", **kw):
+    return msp.add_lwpolyline(points, close=True, dxfattribs={"layer": layer, **kw})
+square = [(0, 0), (8000, 0), (8000, 6000), (0, 6000)]
+doc, msp = drawing()
+for a, b in [((0, 0), (8000, 0)), ((8000, 0), (8000, 6000)), ((8000, 6000), (0, 6000)), ((0, 6000), (0, 5))]:
+    msp.add_line(a, b, dxfattribs={"layer": "A-OTLN"})
+doc.saveas(f"{d}/open.dxf")
+doc, msp = drawing(); outline(msp, [(0, 0), (8000, 6000), (8000, 0), (0, 6000)]); doc.saveas(f"{d}/bowtie.dxf")
+doc, msp = drawing(); outline(msp, square); outline(msp, [(9000, 0), (9500, 0), (9500, 500)], "PIT"); doc.saveas(f"{d}/outside.dxf")
+doc, msp = drawing(); outline(msp, square); doc.saveas(f"{d}/nopit.dxf")
+doc, msp = drawing(6); outline(msp, square); doc.saveas(f"{d}/km.dxf")
+doc, msp = drawing(0); outline(msp, square); doc.saveas(f"{d}/unitless.dxf")
+doc, msp = drawing(); msp.add_polyline3d([(0, 0, 0), (8000, 0, 0), (8000, 6000, 900), (0, 6000, 0)], close=True, dxfattribs={"layer": "A-OTLN"}); doc.saveas(f"{d}/tilted.dxf")
+doc, msp = drawing(6); outline(msp, [(5123456.789 + x / 1000, 2345678.123 + y / 1000) for x, y in square]); doc.saveas(f"{d}/utm.dxf")
+doc, msp = drawing()
+for i in range(250000):
+    msp.add_line((i % 8000, 0), (i % 8000, 10), dxfattribs={"layer": "A-OTLN"})
+doc.saveas(f"{d}/many.dxf")
+doc, msp = drawing()
+loop = doc.blocks.new("LOOP"); loop.add_blockref("LOOP", (1, 1))
+outline(msp, square); msp.add_blockref("LOOP", (0, 0), dxfattribs={"layer": "PIT"}); doc.saveas(f"{d}/loop.dxf")
+open(f"{d}/binary.dxf", "wb").write(b"AutoCAD Binary DXF\r\n\x1a\x00" + bytes(64))
+open(f"{d}/drawing.dxf", "wb").write(b"AC1032" + bytes(64))
+open(f"{d}/page.dxf", "w").write("<html><body>site</body></html>")
+with open(f"{d}/huge.dxf", "wb") as f:
+    f.write(b"0\nSECTION\n2\nENTITIES\n"); f.truncate(65 << 20)
+text = open(f"{d}/nopit.dxf", encoding="utf-8").read().replace("A-OTLN", "Gr\u00e8s")
+open(f"{d}/cp1252.dxf", "wb").write(text.encode("cp1252"))
+PY
+  site_recipe() {  # file, outline layer, then extra lines
+    local file=$1 layer=$2
+    shift 2
+    sed '/^\[layout.site\]/,$d' "$p/courtyard-from-dxf.toml" > "$d/$file.toml"
+    printf '[layout.site]\nfile = "%s"\noutline = "%s"\n' "$file" "$layer" >> "$d/$file.toml"
+    printf '%s\n' "$@" >> "$d/$file.toml"
+    echo "$d/$file.toml"
+  }
+  local pit='[[layout.site.zones]]' rule='rule = "exclude"'
+  refused "is not closed" generate "$(site_recipe open.dxf A-OTLN)"
+  refused "(0, 5) (" generate "$(site_recipe open.dxf A-OTLN)"
+  refused "crosses itself at (4000, 3000)" generate "$(site_recipe bowtie.dxf A-OTLN)"
+  refused "lies outside the outline" generate "$(site_recipe outside.dxf A-OTLN "$pit" 'layer = "PIT"' "$rule")"
+  refused 'layer "PIT" (a zone) has nothing on it' generate "$(site_recipe nopit.dxf A-OTLN "$pit" 'layer = "PIT"' "$rule")"
+  refused "too large" generate "$(site_recipe km.dxf A-OTLN)"
+  refused 'units = "mm"' generate "$(site_recipe km.dxf A-OTLN)"
+  refused "does not say its units" generate "$(site_recipe unitless.dxf A-OTLN)"
+  refused "the POLYLINE with handle 2F on layer \"A-OTLN\" does not lie in the plan's plane" generate "$(site_recipe tilted.dxf A-OTLN)"
+  refused "more than 200000 shapes" generate "$(site_recipe many.dxf A-OTLN)"
+  refused "nested more than 16 deep" generate "$(site_recipe loop.dxf A-OTLN "$pit" 'layer = "PIT"' "$rule")"
+  refused "binary DXF; save it as an ASCII DXF" generate "$(site_recipe binary.dxf A-OTLN)"
+  refused "DWG drawing" generate "$(site_recipe drawing.dxf A-OTLN)"
+  refused "is not a DXF drawing" generate "$(site_recipe page.dxf A-OTLN)"
+  refused "at most 64 MiB" generate "$(site_recipe huge.dxf A-OTLN)"
+  refused "missing.dxf: cannot read the drawing: No such file" generate "$(site_recipe missing.dxf A-OTLN)"
+  ln -sf /dev/zero "$d/zero.dxf"
+  refused "not a regular file" generate "$(site_recipe zero.dxf A-OTLN)"
+  refused "layout.site.units" generate "$(site_recipe unitless.dxf A-OTLN 'units = "furlong"')"
+  refused "give one or the other" generate "$(site_recipe nopit.dxf A-OTLN)" --set 'layout.outline=[[0,0],[1,0],[1,1]]'
+  # Read: a survey 5,000 km from its origin (the datum moved and said), and old layer names.
+  timeout 60 "$curdle" generate "$(site_recipe utm.dxf A-OTLN)" --outputs schedule.csv --out "$d/utm" > "$d/utm.out" 2>&1 \
+    && grep -q "datum (0, 0) is the drawing's point (5,123,456,789, 2,345,678,123) mm" "$d/utm.out" \
+    && pass || fail "the far survey was not read with its datum: $(head -c 300 "$d/utm.out")"
+  timeout 60 "$curdle" generate "$(site_recipe cp1252.dxf $'Gr\xc3\xa8s')" --outputs schedule.csv --out "$d/cp" > "$d/cp.out" 2>&1 \
+    && pass || fail "a Windows-1252 layer name was not read: $(head -c 300 "$d/cp.out")"
+}
+
 # Interrupted runs: the previous set stays whole (byte for byte), no temporary is left; a run
 # that finishes replaces the set whole.
 section_kills() {
@@ -158,6 +237,9 @@ cases = [
     ("/api/search?seeds=1..268435456", 413),
     ("/api/export?file=layout.svg&layout.mask=%22%2Fdev%2Fzero%22", 400),
     ("/api/generate?curds.0.density=%7Bkind%3D%22image%22%2Cpath%3D%22%2Fdev%2Fzero%22%2Cvalues%3D%5B0%2C1%5D%7D", 400),
+    ("/api/generate?layout.site=%7Bfile%3D%22%2Fetc%2Fpasswd.dxf%22%2Coutline%3D%22A%22%7D", 400),
+    ("/api/generate?layout.site.file=%22%2Fetc%2Fsite.dxf%22", 400),
+    ("/api/generate?layout=%7Bkind%3D%22facade%22%2Cwall%3D%5B1000%2C1000%5D%2Cmask%3D%22%2Fany%2Fpath%22%7D", 400),
 ]
 for path, status in cases:
     got, body = get(path)

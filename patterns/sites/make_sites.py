@@ -10,7 +10,13 @@ INSERTs of a window block (frame, sash and a glazing bar, on layer 0) on A-GLAZ,
 door is a mirrored INSERT of a door block on A-DOOR.
 
     make_sites.py OUT_DIR [--units mm|cm|m|in]   (the courtyard in other units, for tests)
+    make_sites.py OUT_DIR --survey                (survey.dxf and survey.toml, the benchmark's)
+
+survey.dxf: a 60 x 40 m plaza as a surveyor delivers it, 10,003 entities: the boundary (layer
+BOUNDARY) a wavy north edge of 5,000 LINEs and an east edge of 1,000 ARCs, 20 round tree pits,
+and 3,980 spot levels (TEXT on LEVELS) that curdle passes over.
 """
+import math
 import sys
 
 import ezdxf
@@ -70,10 +76,60 @@ def elevation(path):
     doc.saveas(path)
 
 
+def survey(out):
+    doc = ezdxf.new("R2013", setup=False)
+    doc.header["$INSUNITS"] = 4
+    for name in ("BOUNDARY", "TREE_PIT", "LEVELS"):
+        doc.layers.add(name)
+    msp = doc.modelspace()
+    line = {"layer": "BOUNDARY"}
+    msp.add_line((0, 0), (60000, 0), dxfattribs=line)
+    # The east edge: 1,000 arcs bulging out by 5 mm, 40 mm chords up to (60000, 40000).
+    for k in range(1000):
+        y0, y1 = 40.0 * k, 40.0 * (k + 1)
+        r = (20 ** 2 + 5 ** 2) / 10  # the radius through the chord's ends and its 5 mm sagitta
+        cx, cy = 60000 + 5 - r, (y0 + y1) / 2
+        half = math.degrees(math.asin(20 / r))
+        msp.add_arc((cx, cy), r, -half, half, dxfattribs=line)
+    # The north edge: 5,000 lines waving 150 mm about y = 40 m, east to west.
+    wave = lambda x: 40000 + 150 * math.sin(x / 2000) if 0 < x < 60000 else 40000
+    for k in range(5000):
+        x0, x1 = 60000 - 12.0 * k, 60000 - 12.0 * (k + 1)
+        msp.add_line((x0, wave(x0)), (x1, wave(x1)), dxfattribs=line)
+    msp.add_line((0, 40000), (0, 0), dxfattribs=line)
+    for k in range(20):
+        msp.add_circle((4000 + 13000 * (k % 5), 6000 + 8000 * (k // 5)), 700, dxfattribs={"layer": "TREE_PIT"})
+    for k in range(3980):
+        msp.add_text(f"+{12.3 + k / 1000:.3f}", dxfattribs={"layer": "LEVELS", "height": 150}).set_placement(
+            (1000 + 1500 * (k % 39), 1000 + 380 * (k // 39)))
+    doc.saveas(f"{out}/survey.dxf")
+    open(f"{out}/survey.toml", "w").write("""name = "survey"
+seed = 1
+[lattice]
+base = 3
+dimension = 2
+[[curds]]
+name = "dark"
+probabilities = ["3/4", "2/3"]
+[layout]
+kind = "paving"
+tile = [600, 600]
+joint = 5
+[layout.site]
+file = "survey.dxf"
+outline = "BOUNDARY"
+[[layout.site.zones]]
+layer = "TREE_PIT"
+rule = "exclude"
+""")
+
+
 if __name__ == "__main__":
     out = sys.argv[1]
     units = sys.argv[3] if len(sys.argv) > 3 and sys.argv[2] == "--units" else None
-    if units:
+    if sys.argv[2:] == ["--survey"]:
+        survey(out)
+    elif units:
         courtyard(f"{out}/courtyard-{units}.dxf", units)
     else:
         courtyard(f"{out}/courtyard.dxf")

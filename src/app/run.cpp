@@ -118,6 +118,8 @@ std::string read_bounded_text(const std::string& path, const std::string& what,
   return text.str();
 }
 
+bool set_names_a_file(const std::string& assignment) { return override_names_a_file(assignment); }
+
 std::string read_recipe_file(const std::string& path) {
   return read_bounded_text(path, "the recipe",
                            "a recipe is a TOML file such as patterns/tiles.toml", kMaxRecipeBytes);

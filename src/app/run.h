@@ -38,6 +38,10 @@ struct Run {
 // the recipe key or the parameter ("seed", "window", "set").
 Run resolve_run(const RunRequest& request);
 
+// Whether an override (--set, an API key) names a file on the machine (recipe.h's
+// override_names_a_file): a server refuses it, so that no request reads or probes its disk.
+bool set_names_a_file(const std::string& assignment);
+
 // The recipe file's text; InputError when it is not a readable regular file of at most 1 MiB.
 std::string read_recipe_file(const std::string& path);
 // A text file a user names: a regular file of at most `max_bytes`. `what` names it in messages

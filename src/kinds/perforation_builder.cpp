@@ -267,7 +267,9 @@ double keep_on_sheets(std::vector<Hole>& holes, Layout& layout) {
     Layout::FabricationSheet& sheet = layout.sheets[i];
     sheet.surface = sheet.area.area();
     if (!layout.outline.empty()) {
-      const Outline cut = joined(cut_along({sheet.area}, PolygonCuts{layout.outline, {}}));
+      PolygonCuts along;
+      along.outline = layout.outline;
+      const Outline cut = joined(cut_along({sheet.area}, along));
       sheet.outline = cut.rings;
       sheet.surface = cut.area;
       if (sheet.surface < 1e-6) continue;

@@ -92,17 +92,16 @@ namespace {
 void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
   const Rect b = laid_bounds(e);
   bool crosses = false;
-  auto meet = [&](const Polygon& p) {
-    const Crossing c = crossing(b, p);
+  auto meet = [&](Crossing c) {
     crosses |= c == Crossing::boundary;
     return c;
   };
-  if (!cuts.outline.empty() && meet(cuts.outline) == Crossing::outside) {
+  if (!cuts.outline.empty() && meet(cuts.outline_crossing(b)) == Crossing::outside) {
     e.shape.clear();
     return;
   }
-  for (const Polygon& hole : cuts.holes)
-    if (meet(hole) == Crossing::inside) {
+  for (size_t h = 0; h < cuts.holes.size(); ++h)
+    if (meet(cuts.hole_crossing(h, b)) == Crossing::inside) {
       e.shape.clear();
       return;
     }
@@ -196,12 +195,12 @@ void lay_elements(Layout& layout, const std::vector<uint16_t>& values, const Lay
 bool cut_unit_to_surface(Element& e, const Ring& ring, const Layout& layout,
                          const std::vector<Rect>& holes, const PolygonCuts& cuts) {
   const Rect& b = e.nominal;
-  const Crossing outline = cuts.outline.empty() ? Crossing::inside : crossing(b, cuts.outline);
+  const Crossing outline = cuts.outline.empty() ? Crossing::inside : cuts.outline_crossing(b);
   bool gone = outline == Crossing::outside;
   bool inside = outline == Crossing::inside && b.x >= 0 && b.y >= 0 && b.right() <= layout.width &&
                 b.top() <= layout.height;
-  for (const Polygon& hole : cuts.holes) {
-    const Crossing c = crossing(b, hole);
+  for (size_t h = 0; h < cuts.holes.size(); ++h) {
+    const Crossing c = cuts.hole_crossing(h, b);
     gone = gone || c == Crossing::inside;
     inside = inside && c == Crossing::outside;
   }
@@ -308,7 +307,8 @@ void check_cutting_work(const Box& view, const PolygonCuts& cuts) {
 
 // The grid over `view` with the values of its cells (x fastest), `value_count` values in all.
 Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const Box& view,
-                  const LayoutSpec& spec, const std::vector<Rect>& openings) {
+                  const LayoutSpec& spec, const std::vector<Rect>& openings,
+                  bool with_cut_away = true) {
   Layout layout;
   layout.kind = spec.kind;
   layout.combine = spec.combine;
@@ -361,7 +361,9 @@ Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const
   for (const Zone& z : spec.zones)
     if (z.rule == ZoneRule::exclude && z.rects.empty()) cuts.holes.push_back(z.polygon);
   check_cutting_work(view, cuts);
-  if (!cuts.empty()) layout.cut_away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
+  cuts.index();
+  if (!cuts.empty() && with_cut_away)
+    layout.cut_away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
   if (spec.pattern == LayingPattern::grid)
     lay_elements(layout, values, spec, cuts);
   else
@@ -383,7 +385,7 @@ Layout lay_blank_grid(const LayoutSpec& spec, const std::vector<Rect>& openings)
   uint32_t most = 0;
   for (const Zone& z : spec.zones) most = std::max(most, z.value);
   return lay_values(std::vector<uint16_t>(static_cast<size_t>(cells[0] * cells[1]), 0),
-                    size_t{most} + 1, view, spec, openings);
+                    size_t{most} + 1, view, spec, openings, /*with_cut_away=*/false);
 }
 
 void count_values(Layout& layout, const Design& design, const LayoutSpec& spec) {

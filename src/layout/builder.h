@@ -38,7 +38,8 @@ inline constexpr uint64_t kMaxCuttingWork = uint64_t{1} << 28;
 Layout lay_grid(const Design& design, const CurdField& field, const Box& view,
                 const LayoutSpec& spec, const std::vector<Rect>& openings);
 // The grid of a spec with a fixed size over its whole surface, every element of value 0: its
-// pieces and cuts without a curd, to test a shift before it is advised.
+// pieces and cuts without a curd, to test a shift before it is advised. What the outline cuts
+// away (Layout::cut_away, drawn but never counted) is left out: it is the real layout's.
 Layout lay_blank_grid(const LayoutSpec& spec, const std::vector<Rect>& openings);
 // The notes on the lattice's first stage, the legend and its counts of the elements laid.
 void count_values(Layout& layout, const Design& design, const LayoutSpec& spec);

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <list>
+#include <optional>
+
+#include "layout/box_clip.h"
 
 namespace curdle {
 namespace {
@@ -153,12 +156,59 @@ std::vector<Outline> union_of_rects(const std::vector<Rect>& rects) {
   return out;
 }
 
+void PolygonCuts::index() {
+  outline_index_ = outline.empty() ? nullptr : std::make_shared<const PolygonIndex>(outline);
+  hole_index_.clear();
+  for (const Polygon& h : holes) hole_index_.push_back(std::make_shared<const PolygonIndex>(h));
+}
+
+Crossing PolygonCuts::outline_crossing(const Rect& r) const {
+  return outline_index_ ? outline_index_->crossing(r) : crossing(r, outline);
+}
+
+Crossing PolygonCuts::hole_crossing(size_t hole, const Rect& r) const {
+  return hole < hole_index_.size() ? hole_index_[hole]->crossing(r) : crossing(r, holes[hole]);
+}
+
+namespace {
+
+Rect bounds_of(const std::vector<std::array<double, 2>>& points) {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const auto& v : points)
+    x0 = std::min(x0, v[0]), y0 = std::min(y0, v[1]), x1 = std::max(x1, v[0]),
+    y1 = std::max(y1, v[1]);
+  return Rect{x0, y0, x1 - x0, y1 - y0};
+}
+
+// The piece's region within the outline and off the holes: the outline clipped to a box a
+// millimetre round the piece where that is exact (box_clip.h), holes that do not reach the box
+// left out. Exact either way; only the work differs.
+void cut_with(CGAL::Polygon_set_2<Kernel>& set, const Rect& piece, const PolygonCuts& cuts) {
+  const Rect box{piece.x - 1, piece.y - 1, piece.w + 2, piece.h + 2};
+  if (!cuts.outline.empty()) {
+    const std::optional<Polygon> near = clip_to_box(cuts.outline, box);
+    if (near && near->empty()) {
+      set.clear();
+      return;
+    }
+    set.intersection(exact(near ? *near : cuts.outline));
+  }
+  for (const Polygon& hole : cuts.holes)
+    if (overlaps(bounds_of(hole), box)) set.difference(exact(hole));
+}
+
+}  // namespace
+
 std::vector<Outline> cut_along(const std::vector<Rect>& rects, const PolygonCuts& cuts) {
   CGAL::Polygon_set_2<Kernel> set;
+  std::vector<std::array<double, 2>> corners;
   for (const Rect& r : rects)
-    if (r.w > 0 && r.h > 0) set.join(exact(r));
-  if (!cuts.outline.empty()) set.intersection(exact(cuts.outline));
-  for (const Polygon& hole : cuts.holes) set.difference(exact(hole));
+    if (r.w > 0 && r.h > 0) {
+      set.join(exact(r));
+      corners.insert(corners.end(), {{r.x, r.y}, {r.right(), r.top()}});
+    }
+  if (corners.empty()) return {};
+  cut_with(set, bounds_of(corners), cuts);
   return outlines_of(set);
 }
 
@@ -167,10 +217,9 @@ std::vector<Outline> cut_unit(const Ring& unit, const Rect& surface, const std::
   CGAL::Polygon_set_2<Kernel> set;
   set.join(exact(unit));
   set.intersection(exact(surface));
-  if (!cuts.outline.empty()) set.intersection(exact(cuts.outline));
   for (const Rect& h : holes)
     if (h.w > 0 && h.h > 0) set.difference(exact(h));
-  for (const Polygon& hole : cuts.holes) set.difference(exact(hole));
+  cut_with(set, bounds_of(unit), cuts);
   return outlines_of(set);
 }
 
@@ -180,7 +229,15 @@ std::vector<Outline> cut_away(const Rect& surface, const PolygonCuts& cuts) {
     set.join(exact(surface));
     set.difference(exact(cuts.outline));
   }
-  for (const Polygon& hole : cuts.holes) set.join(exact(hole));
+  // The holes joined among themselves first, then to the rest at once: one overlay with a
+  // surveyed outline instead of one a hole (twenty tree pits took 0.9 s one by one).
+  std::vector<ExactPolygon> holes;
+  for (const Polygon& hole : cuts.holes) holes.push_back(exact(hole));
+  if (!holes.empty()) {
+    CGAL::Polygon_set_2<Kernel> all;
+    all.join(holes.begin(), holes.end());
+    set.join(all);
+  }
   set.intersection(exact(surface));
   return outlines_of(set);
 }

@@ -3,9 +3,11 @@
 // "2D Regularized Boolean Set-Operations"). CGAL stays inside union.cpp.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "layout/layout.h"
+#include "layout/zone.h"
 
 namespace curdle {
 
@@ -33,6 +35,15 @@ struct PolygonCuts {
   Polygon outline;             // empty: the surface's own rectangle bounds it
   std::vector<Polygon> holes;  // kept free of pieces
   bool empty() const { return outline.empty() && holes.empty(); }
+  // Where a piece lies against the outline and each hole, through indexes of their edges that
+  // index() builds once the polygons are set (every piece of a surface is tested).
+  void index();
+  Crossing outline_crossing(const Rect& r) const;
+  Crossing hole_crossing(size_t hole, const Rect& r) const;
+
+ private:
+  std::shared_ptr<const PolygonIndex> outline_index_;
+  std::vector<std::shared_ptr<const PolygonIndex>> hole_index_;
 };
 
 // (the union of `rects`) within the outline and off the holes, exact; one Outline per part.

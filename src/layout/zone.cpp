@@ -178,4 +178,68 @@ Crossing crossing(const Rect& r, const Polygon& polygon) {
   return contains(polygon, r.x + r.w / 2, r.y + r.h / 2) ? Crossing::inside : Crossing::outside;
 }
 
+PolygonIndex::PolygonIndex(const Polygon& polygon) : polygon_(polygon) {
+  const size_t n = polygon.size();
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const auto& p : polygon)
+    x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]),
+    y1 = std::max(y1, p[1]);
+  bounds_ = n ? Rect{x0, y0, x1 - x0, y1 - y0} : Rect{};
+  // About four edges a cell.
+  const auto side =
+      static_cast<size_t>(std::clamp(std::sqrt(static_cast<double>(n) / 4), 1.0, 512.0));
+  columns_ = rows_ = side;
+  cells_.resize(columns_ * rows_);
+  bands_.resize(rows_);
+  for (size_t i = 0; i < n; ++i) {
+    const auto& a = polygon[i];
+    const auto& b = polygon[(i + 1) % n];
+    const size_t c0 = column_of(std::min(a[0], b[0])), c1 = column_of(std::max(a[0], b[0]));
+    const size_t r0 = row_of(std::min(a[1], b[1])), r1 = row_of(std::max(a[1], b[1]));
+    for (size_t r = r0; r <= r1; ++r) {
+      bands_[r].push_back(static_cast<uint32_t>(i));
+      for (size_t c = c0; c <= c1; ++c)
+        cells_[r * columns_ + c].push_back(static_cast<uint32_t>(i));
+    }
+  }
+}
+
+size_t PolygonIndex::column_of(double x) const {
+  if (bounds_.w <= 0) return 0;
+  return std::min(columns_ - 1,
+                  static_cast<size_t>(
+                      std::max(0.0, (x - bounds_.x) / bounds_.w * static_cast<double>(columns_))));
+}
+
+size_t PolygonIndex::row_of(double y) const {
+  if (bounds_.h <= 0) return 0;
+  return std::min(rows_ - 1, static_cast<size_t>(std::max(
+                                 0.0, (y - bounds_.y) / bounds_.h * static_cast<double>(rows_))));
+}
+
+Crossing PolygonIndex::crossing(const Rect& r) const {
+  const size_t n = polygon_.size();
+  if (n == 0 || r.right() < bounds_.x || r.x > bounds_.right() || r.top() < bounds_.y ||
+      r.y > bounds_.top())
+    return Crossing::outside;
+  for (size_t row = row_of(r.y); row <= row_of(r.top()); ++row)
+    for (size_t col = column_of(r.x); col <= column_of(r.right()); ++col)
+      for (const uint32_t i : cells_[row * columns_ + col])
+        if (passes_through(polygon_[i], polygon_[(i + 1) % n], r)) return Crossing::boundary;
+  return contains(r.x + r.w / 2, r.y + r.h / 2) ? Crossing::inside : Crossing::outside;
+}
+
+bool PolygonIndex::contains(double x, double y) const {
+  const size_t n = polygon_.size();
+  if (n == 0 || y < bounds_.y || y > bounds_.top() || x > bounds_.right()) return false;
+  // The even-odd rule of curdle::contains, over the edges of y's band alone.
+  bool in = false;
+  for (const uint32_t i : bands_[row_of(y)]) {
+    const auto& a = polygon_[(i + 1) % n];
+    const auto& b = polygon_[i];
+    if ((a[1] > y) != (b[1] > y) && x < (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
+  }
+  return in;
+}
+
 }  // namespace curdle

@@ -1,6 +1,7 @@
 // The geometry of zones (layout.h: Zone) and other polygons in layout millimetres.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -30,6 +31,25 @@ double distance_to_edges(const Polygon& polygon, double x, double y);
 // its edges (an edge along the rectangle's side does not cross it).
 enum class Crossing { inside, outside, boundary };
 Crossing crossing(const Rect& r, const Polygon& polygon);
+
+// A polygon's edges bucketed on a grid, so that `crossing` and `contains` look only at the
+// edges near the rectangle or point: a surveyed outline of 8,000 corners tested against every
+// one of 6,600 slabs took a second a laying. It keeps its own copy of the polygon.
+class PolygonIndex {
+ public:
+  explicit PolygonIndex(const Polygon& polygon);
+  Crossing crossing(const Rect& r) const;
+  bool contains(double x, double y) const;
+
+ private:
+  Polygon polygon_;
+  Rect bounds_;
+  size_t columns_ = 1, rows_ = 1;
+  std::vector<std::vector<uint32_t>> cells_;  // edges by cell, row by row
+  std::vector<std::vector<uint32_t>> bands_;  // edges by row, for the ray of `contains`
+  size_t column_of(double x) const;
+  size_t row_of(double y) const;
+};
 
 // A polygon whose edges all run along x or y as disjoint rectangles (bands between its
 // vertices' heights); nullopt when some edge slopes.

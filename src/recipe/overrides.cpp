@@ -76,6 +76,41 @@ void apply_override(toml::table& doc, const std::string& assignment) {
 
 }  // namespace reading
 
+namespace {
+
+bool is_file_key(std::string_view key) {
+  return key == "mask" || key == "path" || key == "site" || key == "file";
+}
+
+bool holds_file_key(const toml::node& node) {
+  if (const toml::table* t = node.as_table())
+    for (const auto& [k, v] : *t)
+      if (is_file_key(k.str()) || holds_file_key(v)) return true;
+  if (const toml::array* a = node.as_array())
+    for (const toml::node& v : *a)
+      if (holds_file_key(v)) return true;
+  return false;
+}
+
+}  // namespace
+
+bool override_names_a_file(const std::string& assignment) {
+  const std::string key = assignment.substr(0, assignment.find('='));
+  for (size_t start = 0;;) {
+    const size_t dot = key.find('.', start);
+    if (is_file_key(key.substr(start, dot - start))) return true;
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  if (assignment.find('=') == std::string::npos) return false;
+  try {
+    const toml::table parsed = toml::parse("v = " + assignment.substr(assignment.find('=') + 1));
+    return holds_file_key(*parsed.get("v"));
+  } catch (const toml::parse_error&) {
+    return false;  // a bare word: a string, which holds no key
+  }
+}
+
 std::string recipe_text_with(std::string_view text, const std::string& source,
                              const std::vector<std::string>& overrides) {
   toml::table doc = reading::parse_toml(text, source);

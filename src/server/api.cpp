@@ -69,15 +69,11 @@ RunRequest read_run(const Params& params, const std::set<std::string>& own_names
   }
   // Paths name files on the server's disk: a request may not point them elsewhere, and their
   // messages would tell whether a path exists there. The recipe's own are used.
-  for (const std::string& set : r.sets) {
-    const std::string key = set.substr(0, set.find('='));
-    const std::string last = key.substr(key.rfind('.') + 1);
-    const bool site = key == "layout.site" || key.rfind("layout.site.", 0) == 0;
-    if (last == "mask" || last == "path" || site)
-      throw InputError(parameter("set", key),
+  for (const std::string& set : r.sets)
+    if (app::set_names_a_file(set))
+      throw InputError(parameter("set", set.substr(0, set.find('='))),
                        "names a file on the server, which requests may not set; the recipe's "
                        "own file is used");
-  }
   return r;
 }
 

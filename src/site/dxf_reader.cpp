@@ -6,6 +6,8 @@
 #include <dxflib/dl_dxf.h>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -122,7 +124,8 @@ class Collector : public DL_CreationAdapter {
     block_.clear();
     in_paper_ = false;
   }
-  void endSection() override { finish_polyline(); }
+  // dxflib calls endSection at every entity's end, POLYLINE's included, before its VERTEX
+  // entities: a polyline ends at SEQEND, the next entity, the block's end or the file's.
   void endSequence() override { finish_polyline(); }
 
   void addLine(const DL_LineData& d) override {
@@ -185,9 +188,9 @@ class Collector : public DL_CreationAdapter {
     if (!polyline_) return;
     if (!polyline_z_) polyline_z_ = d.z;
     if (std::fabs(d.z - *polyline_z_) > kPlaneTolerance) {
-      const std::string entity = polyline_->entity;
+      const Shape s = std::move(*polyline_);  // named by the POLYLINE, not its VERTEX
       polyline_.reset();
-      return off_plane(entity);
+      return off_plane(s.entity, s.handle, s.layer);
     }
     if (++vertices_ > kMostVertices) return too_many();
     polyline_->path.push_back({d.x, d.y, std::isfinite(d.bulge) ? d.bulge : 0});
@@ -282,15 +285,14 @@ class Collector : public DL_CreationAdapter {
     for (ContourVertex& v : s.path) v.x = -v.x, v.bulge = v.bulge == 0 ? 0 : -v.bulge;
   }
   void off_plane(const std::string& entity) {
+    off_plane(entity, hex_handle(getAttributes().getHandle()), layer());
+  }
+  void off_plane(const std::string& entity, const std::string& handle, const std::string& layer) {
     fail(
         fmt::format("{}: the {} {}on layer \"{}\" does not lie in the plan's plane (its points "
                     "stand at different heights, or it is drawn in a tilted coordinate "
                     "system); flatten the drawing (e.g. FLATTEN in AutoCAD) and save it again",
-                    file_, entity, handle_text(), layer()));
-  }
-  std::string handle_text() {
-    const std::string h = hex_handle(getAttributes().getHandle());
-    return h.empty() ? "" : "with handle " + h + " ";
+                    file_, entity, handle.empty() ? "" : "with handle " + handle + " ", layer));
   }
   void too_many() {
     fail(
@@ -493,6 +495,64 @@ void check_is_ascii_dxf(std::string_view bytes, const std::string& file) {
                     "again");
 }
 
+// dxflib allocates what an entity's count says before it reads the vertices (an LWPOLYLINE
+// declaring 99,999,999 vertices took 3 GB): every count it trusts is checked against the groups
+// the file holds first.
+// The number a line begins with, as atoi reads it (0 where there is none), held to 64 bits.
+int64_t leading_number(std::string_view text) {
+  size_t i = 0;
+  const bool minus = !text.empty() && text[0] == '-';
+  if (!text.empty() && (text[0] == '-' || text[0] == '+')) ++i;
+  int64_t n = 0;
+  for (; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i)
+    n = n > (INT64_MAX - 9) / 10 ? INT64_MAX : n * 10 + (text[i] - '0');
+  return minus ? -n : n;
+}
+
+void check_counts(std::string_view bytes, const std::string& file) {
+  struct Count {
+    std::string_view entity;
+    int code;
+  };
+  static constexpr Count kCounts[] = {
+      {"LWPOLYLINE", 90}, {"SPLINE", 72}, {"SPLINE", 73}, {"SPLINE", 74}, {"LEADER", 76},
+      {"HATCH", 91},      {"HATCH", 92},  {"HATCH", 93},  {"HATCH", 95},  {"HATCH", 96},
+      {"HATCH", 97},      {"HATCH", 98},  {"MLINE", 72},  {"MLINE", 73}};
+  const auto groups = static_cast<int64_t>(std::count(bytes.begin(), bytes.end(), '\n') / 2 + 1);
+  std::string_view entity;
+  size_t at = 0, line = 0;
+  auto next_line = [&]() {
+    const size_t end = std::min(bytes.find('\n', at), bytes.size());
+    std::string_view l = bytes.substr(at, end - at);
+    at = end + 1, ++line;
+    while (!l.empty() && (l.back() == '\r' || l.back() == ' ' || l.back() == '\t'))
+      l.remove_suffix(1);
+    while (!l.empty() && (l.front() == ' ' || l.front() == '\t')) l.remove_prefix(1);
+    return l;
+  };
+  while (at < bytes.size()) {
+    const std::string_view code_text = next_line();
+    if (at > bytes.size()) break;
+    const std::string_view value = next_line();
+    // As dxflib reads them (atoi): text that is no number is group code 0.
+    const auto code = static_cast<int>(leading_number(code_text));
+    if (code == 0) {
+      entity = value;
+      continue;
+    }
+    for (const Count& c : kCounts) {
+      if (c.code != code || c.entity != entity) continue;
+      const int64_t n = leading_number(value);
+      if (n < 0 || n > groups)
+        throw SiteError(
+            fmt::format("{}: the {} at line {} says it has {} parts, more than the "
+                        "file's {} groups hold; the file is damaged: export it as "
+                        "DXF again",
+                        file, entity, line, value, groups));
+    }
+  }
+}
+
 }  // namespace
 
 double insunits_mm(int code) {
@@ -516,6 +576,7 @@ double insunits_mm(int code) {
 
 Drawing read_dxf(std::string_view bytes, const std::string& file_name, const DxfReading& reading) {
   check_is_ascii_dxf(bytes, file_name);
+  check_counts(bytes, file_name);
   Collector collector(file_name, reading);
   {
     std::istringstream in{std::string(bytes)};

@@ -1,0 +1,35 @@
+// Fuzz target: a site drawing (site/dxf_reader.cpp through dxflib, site/site.cpp) read and
+// turned into an outline, openings and zones, as [layout.site] does with the layers A (the
+// outline), B (openings) and C (an excluded zone), then laid as a paving floor. Any input may
+// be refused with a SiteError or an InputError; none may crash, hang or allocate without bound.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "curdle/error.h"
+#include "layout/zone.h"
+#include "site/dxf_reader.h"
+#include "site/site.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (size > 256 * 1024) return 0;
+  const std::string bytes(reinterpret_cast<const char*>(data), size);
+  curdle::site::LayerMap map;
+  map.file = "fuzz.dxf";
+  map.outline = "A";
+  map.openings = {"B"};
+  map.zones = {{"C", curdle::ZoneRule::exclude, 0}};
+  map.unit_mm = size % 2 ? 0 : 1;  // both: as the drawing says, and as a recipe says
+  map.unit_name = "mm";
+  try {
+    const curdle::site::Drawing drawing =
+        curdle::site::read_dxf(bytes, map.file, {0.05, map.unit_mm});
+    const curdle::site::Site site = curdle::site::site_from(drawing, map);
+    // What the recipe reader does next with it: flatten and check every contour.
+    (void)curdle::is_simple(curdle::flatten(site.outline, 0.05));
+    for (const auto& o : site.openings) (void)curdle::flatten(o, 0.05);
+  } catch (const curdle::site::SiteError&) {
+  } catch (const curdle::InputError&) {
+  }
+  return 0;
+}
