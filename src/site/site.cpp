@@ -333,12 +333,17 @@ std::string summary_of(const Site& site, const Rect& bounds, const LayerMap& map
     text +=
         fmt::format("; {} opening{}", site.openings.size(), site.openings.size() == 1 ? "" : "s");
   if (!map.zones.empty()) {
+    // By layer: "TREE_PIT exclude" for one, "20 TREE_PIT exclude" for twenty.
     text += fmt::format("; {} zone{} (", site.zones.size(), site.zones.size() == 1 ? "" : "s");
-    for (size_t i = 0; i < site.zones.size(); ++i)
-      text +=
-          (i ? ", " : "") + site.zones[i].name + " " +
-          (site.zones[i].rule == ZoneRule::exclude ? std::string("exclude")
-                                                   : fmt::format("value {}", site.zones[i].value));
+    for (size_t i = 0; i < map.zones.size(); ++i) {
+      const ZoneLayer& z = map.zones[i];
+      const auto n = std::count_if(site.zones.begin(), site.zones.end(), [&](const SiteZone& s) {
+        return s.name == z.layer || s.name.rfind(z.layer + " ", 0) == 0;
+      });
+      text += fmt::format(
+          "{}{}{} {}", i ? ", " : "", n > 1 ? fmt::format("{} ", n) : "", z.layer,
+          z.rule == ZoneRule::exclude ? std::string("exclude") : fmt::format("value {}", z.value));
+    }
     text += ")";
   }
   return text + fmt::format(" from {}, units {}", map.file, unit_name);

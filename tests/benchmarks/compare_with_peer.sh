@@ -12,14 +12,17 @@ py=/usr/bin/python3
 
 # curdle first: after the peer's 6 GiB cube the kernel is still reclaiming memory, which slows
 # whatever runs next by up to half again.
-echo "curdle: the three cases, the page's requests, the schedule ..."
-ours=$(/usr/bin/time -f '%M' -o /tmp/curdle-bench-rss "$build/tests/curdle_bench" --benchmark_format=json 2>/dev/null)
+# A surveyor's site drawing of 10,003 entities (patterns/sites/make_sites.py --survey).
+survey=$(mktemp -d)
+$py "$root/patterns/sites/make_sites.py" "$survey" --survey
+echo "curdle: the three cases, the page's requests, the schedule, the survey ..."
+ours=$(CURDLE_SURVEY_DIR=$survey /usr/bin/time -f '%M' -o /tmp/curdle-bench-rss "$build/tests/curdle_bench" --benchmark_format=json 2>/dev/null)
 p07=$(printf '0.7,%.0s' {1..14}); p07=${p07%,}
 p08=$(printf '0.8,%.0s' {1..5}); p08=${p08%,}
 # Whole processes, as a user runs them: curdle generate --outputs report.json on the same
 # cases, start-up included (best of five), and `curdle --help`.
 cases=$(mktemp -d)
-trap 'rm -rf "$cases"' EXIT
+trap 'rm -rf "$cases" "$survey"' EXIT
 printf 'name = "plane"\n[lattice]\nbase = 2\ndimension = 2\n[[curds]]\nname = "c"\nprobabilities = [%s]\n' "$p07" > "$cases/plane.toml"
 printf 'name = "cube"\n[lattice]\nbase = 4\ndimension = 3\n[[curds]]\nname = "c"\nprobabilities = [%s]\n' "$p08" > "$cases/cube.toml"
 whole() {  # best wall time of five runs, in ms
@@ -35,6 +38,7 @@ help_ms=$(whole "$build/curdle" --help)
 plane_ms=$(whole "$build/curdle" generate "$cases/plane.toml" --outputs report.json --out "$cases/out")
 cube_ms=$(whole "$build/curdle" generate "$cases/cube.toml" --outputs report.json --out "$cases/out")
 screen_ms=$(whole "$build/curdle" generate "$root/patterns/perforated-aluminium-screen.toml" --outputs layout.glb --out "$cases/out")
+site_ms=$(whole "$build/curdle" generate "$survey/survey.toml" --outputs schedule.csv --out "$cases/out")
 echo "peer: plane b=2 E=2 K=14 p=0.7 (2^28 cells) ..."
 plane_start=$(date +%s%N)
 plane=$($py "$peer/peer_numpy.py" 2 2 "$p07" 1 1)
@@ -46,7 +50,7 @@ cube_peer_ms=$(( ($(date +%s%N) - cube_start) / 1000000 ))
 echo "peer: seed search 64 x 64, b=4, 2/3 1/2 1/3 ..."
 search=$($py "$peer/peer_numpy_search.py" 4 2/3,1/2,1/3 3000 0.111 1.5)
 
-HELP_MS=$help_ms SCREEN_MS=$screen_ms PLANE_MS=$plane_ms CUBE_MS=$cube_ms PLANE_PEER_MS=$plane_peer_ms \
+HELP_MS=$help_ms SCREEN_MS=$screen_ms SITE_MS=$site_ms PLANE_MS=$plane_ms CUBE_MS=$cube_ms PLANE_PEER_MS=$plane_peer_ms \
 CUBE_PEER_MS=$cube_peer_ms PLANE="$plane" CUBE="$cube" SEARCH="$search" OURS="$ours" \
 PEER_RSS=$(cat /tmp/curdle-peer-cube-rss) OUR_RSS=$(cat /tmp/curdle-bench-rss) $py - <<'PY'
 import json, os
@@ -81,6 +85,9 @@ print(f"{'(layout.svg of 256x256 tiles, not used to redraw)':40} {'':>12} {ms(ou
 glb, screen = ms(ours["BM_Screen_LayoutGlb"]), float(os.environ["SCREEN_MS"])
 print(f"{'screen layout.glb, recipe to bytes':40} {'':>12} {glb:10.1f}ms {'':>9} {'< 300 ms':>8} {'ok' if glb < 300 else 'ABOVE'}")
 print(f"{'screen, generate --outputs layout.glb':40} {'':>12} {screen:10.1f}ms {'':>9} {'< 300 ms':>8} {'ok' if screen < 300 else 'ABOVE'}")
+site, site_whole = ms(ours["BM_Site_Survey_10000_entities"]), float(os.environ["SITE_MS"])
+print(f"{'survey DXF, 10,003 entities, to schedule':40} {'':>12} {site:10.1f}ms {'':>9} {'< 1000 ms':>8} {'ok' if site < 1000 else 'ABOVE'}")
+print(f"{'survey, generate --outputs schedule.csv':40} {'':>12} {site_whole:10.1f}ms {'':>9} {'< 1000 ms':>8} {'ok' if site_whole < 1000 else 'ABOVE'}")
 print(f"\npeak memory: peer cube {int(os.environ['PEER_RSS'])/1024:.0f} MiB; "
       f"curdle benchmark process {int(os.environ['OUR_RSS'])/1024:.0f} MiB")
 PY

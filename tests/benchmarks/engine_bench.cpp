@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 
 #include "curdle/boxcount.h"
@@ -195,6 +196,30 @@ void BM_Screen_LayoutGlb(benchmark::State& state) {
   state.counters["glb_bytes"] = static_cast<double>(bytes);
 }
 BENCHMARK(BM_Screen_LayoutGlb)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// A site read from a surveyor's DXF and laid, recipe to schedule.csv: survey.dxf of
+// patterns/sites/make_sites.py --survey (10,003 entities: a boundary of 5,000 lines and 1,000
+// arcs, 20 round tree pits, 3,980 spot levels), in the folder CURDLE_SURVEY_DIR names
+// (compare_with_peer.sh writes it there).
+void BM_Site_Survey_10000_entities(benchmark::State& state) {
+  const char* dir = std::getenv("CURDLE_SURVEY_DIR");
+  if (!dir) {
+    state.SkipWithError("CURDLE_SURVEY_DIR names no folder (run compare_with_peer.sh)");
+    return;
+  }
+  curdle::server::ApiContext context;
+  context.recipe_path = std::string(dir) + "/survey.toml";
+  std::ifstream in(context.recipe_path);
+  context.recipe_text.assign(std::istreambuf_iterator<char>(in), {});
+  size_t bytes = 0;
+  for (auto _ : state) {
+    const auto r = curdle::server::api_export(context, {{"file", "schedule.csv"}});
+    if (r.status != 200) state.SkipWithError(r.body.c_str());
+    bytes = r.body.size();
+  }
+  state.counters["schedule_bytes"] = static_cast<double>(bytes);
+}
+BENCHMARK(BM_Site_Survey_10000_entities)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
