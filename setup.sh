@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libcgal-dev libopenimageio-dev libtinygltf-dev libtomlplusplus-dev libcli11-dev
-  libfmt-dev nlohmann-json3-dev libexpat1-dev libdxflib-dev librandom123-dev libtbb-dev libcpp-httplib-dev libgtest-dev libbenchmark-dev
+  libfmt-dev nlohmann-json3-dev libexpat1-dev libdxflib-dev libsvgpp-dev libxml2-dev librandom123-dev libtbb-dev libcpp-httplib-dev libgtest-dev libbenchmark-dev
   libcairo2-dev fonts-dejavu-core zlib1g-dev
   python3 python3-dev python3-numpy pybind11-dev blender python3-ezdxf librsvg2-bin libxml2-utils poppler-utils chromium clang-format
 )

@@ -128,6 +128,12 @@ open(f"{d}/drawing.dxf", "wb").write(b"AC1032" + bytes(64))
 open(f"{d}/page.dxf", "w").write("<html><body>site</body></html>")
 with open(f"{d}/huge.dxf", "wb") as f:
     f.write(b"0\nSECTION\n2\nENTITIES\n"); f.truncate(65 << 20)
+svg = '<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="6000mm" viewBox="0 0 8000 6000">{body}</svg>'
+square_path = '<path id="o" d="M0 0 H8000 V6000 H0 Z"/>'
+open(f"{d}/laughs.svg", "w").write('<?xml version="1.0"?><!DOCTYPE svg [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;">]>' + svg.format(w="8000mm", body='<g id="A-OTLN">' + square_path + '</g>'))
+open(f"{d}/badpath.svg", "w").write(svg.format(w="8000mm", body='<g id="A-OTLN"><path id="edge" d="M0 0 L 8000 0 Q"/></g>'))
+open(f"{d}/px.svg", "w").write(svg.format(w="8000", body='<g id="A-OTLN">' + square_path + '</g>'))
+open(f"{d}/notsvg.svg", "w").write("<html><body><svg>")
 text = open(f"{d}/nopit.dxf", encoding="utf-8").read().replace("A-OTLN", "Gr\u00e8s")
 open(f"{d}/cp1252.dxf", "wb").write(text.encode("cp1252"))
 PY
@@ -160,6 +166,10 @@ PY
   refused "not a regular file" generate "$(site_recipe zero.dxf A-OTLN)"
   refused "layout.site.units" generate "$(site_recipe unitless.dxf A-OTLN 'units = "furlong"')"
   refused "give one or the other" generate "$(site_recipe nopit.dxf A-OTLN)" --set 'layout.outline=[[0,0],[1,0],[1,1]]'
+  refused "declares XML entities" generate "$(site_recipe laughs.svg A-OTLN)"
+  refused '<path> "edge" has path data curdle cannot read' generate "$(site_recipe badpath.svg A-OTLN)"
+  refused "does not say its units" generate "$(site_recipe px.svg A-OTLN)"
+  refused "is not an SVG drawing" generate "$(site_recipe notsvg.svg A-OTLN)"
   # Read: a survey 5,000 km from its origin (the datum moved and said), and old layer names.
   timeout 60 "$curdle" generate "$(site_recipe utm.dxf A-OTLN)" --outputs schedule.csv --out "$d/utm" > "$d/utm.out" 2>&1 \
     && grep -q "datum (0, 0) is the drawing's point (5,123,456,789, 2,345,678,123) mm" "$d/utm.out" \

@@ -7,7 +7,7 @@ drain in layout.dxf within 0.01 mm of the drawing; every piece of schedule.csv i
 outline (within the chord tolerance along the arc, 0.01 mm along straight edges) and off the
 pit and drain; the arcs in layout.ifc; the setting-out on sheet 1 by centre and radius; the
 report line; the windows of the elevation's blocks as its openings; and the same courtyard
-drawn in m, cm, mm and inches giving byte-identical schedules.
+drawn in m, cm, mm and inches, and saved as SVG, giving byte-identical schedules.
 
     sites.py CURDLE SOURCE_DIR
 """
@@ -23,7 +23,7 @@ import tempfile
 
 import ezdxf
 
-CURDLE, SOURCE = sys.argv[1], sys.argv[2]
+CURDLE, SOURCE = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 PATTERNS = os.path.join(SOURCE, "patterns")
 CHORD = 0.05  # layout.chord_tolerance's default, mm
 problems = []
@@ -169,6 +169,12 @@ def units(work, mm_rows_path):
                  "--set", f"layout.site.file={os.path.join(work, f'courtyard-{unit}.dxf')}")
         check(open(os.path.join(out, "schedule.csv"), "rb").read() == expected,
               f"the courtyard drawn in {unit} gives another schedule")
+    # The same courtyard as Inkscape saves it: layers as labelled groups, y down, an SVG arc.
+    out = os.path.join(work, "svg")
+    generate(recipe, out, "--outputs", "schedule.csv",
+             "--set", f"layout.site.file={os.path.join(PATTERNS, 'sites', 'courtyard.svg')}")
+    check(open(os.path.join(out, "schedule.csv"), "rb").read() == expected,
+          "the courtyard drawn as SVG gives another schedule")
 
 
 def elevation(work):
@@ -208,6 +214,6 @@ with tempfile.TemporaryDirectory() as work:
     elevation(work)
     for p in problems[:20]:
         print("  " + p)
-    print(f"sites: courtyard ({len(rows)} pieces), 3 other units, elevation: "
+    print(f"sites: courtyard ({len(rows)} pieces), 3 other units and SVG, elevation: "
           f"{len(problems)} problems")
     sys.exit(1 if problems else 0)

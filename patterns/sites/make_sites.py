@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """Writes the example site drawings as an architect's CAD would export them (ezdxf, DXF R2013).
 
+courtyard.svg: the same courtyard as Inkscape saves it (layers as labelled groups, mm).
+
 courtyard.dxf: a 14 x 9 m courtyard whose outline (layer A-OTLN) has a notch and an arched
 edge (an LWPOLYLINE with a bulge), a round tree pit (a CIRCLE on TREE_PIT), a drain (a thin
 closed polyline on DRAIN), and notes and dimensions on layers curdle passes over.
@@ -47,6 +49,32 @@ def courtyard(path, units="mm"):
     msp.add_linear_dim(base=(0, -800 * k), p1=(0, 0), p2=(14000 * k, 0),
                        dxfattribs={"layer": "A-ANNO"}).render()
     doc.saveas(path)
+
+
+def courtyard_svg(path):
+    """The same courtyard as Inkscape saves it: mm on the page, a viewBox in mm, y down, one
+    layer a group with its inkscape:label, the arch as an SVG arc, the pit a <circle>."""
+    # y down from the page's top edge at 9000 mm; the arch: radius 13,000 mm, dipping inwards.
+    flip = lambda y: 9000 - y
+    svg = f"""<?xml version="1.0" encoding="UTF-8" standalone="no"?>
+<svg xmlns="http://www.w3.org/2000/svg" xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape"
+     width="14000mm" height="9000mm" viewBox="0 0 14000 9000" version="1.1">
+  <g inkscape:groupmode="layer" id="layer1" inkscape:label="A-OTLN">
+    <path id="outline" style="fill:none;stroke:#000000"
+          d="M 0,{flip(0)} H 14000 V {flip(9000)} A 13000,13000 0 0 1 4000,{flip(9000)} V {flip(7000)} H 0 Z"/>
+  </g>
+  <g inkscape:groupmode="layer" id="layer2" inkscape:label="TREE_PIT">
+    <circle id="pit" cx="5000" cy="{flip(4000)}" r="700" style="fill:none;stroke:#008000"/>
+  </g>
+  <g inkscape:groupmode="layer" id="layer3" inkscape:label="DRAIN" transform="translate(9000,0)">
+    <rect id="drain" x="0" y="{flip(1650)}" width="4000" height="150" style="fill:none;stroke:#0000ff"/>
+  </g>
+  <g inkscape:groupmode="layer" id="layer4" inkscape:label="A-ANNO">
+    <text x="6000" y="{flip(5000)}" style="font-size:250px">COURTYARD</text>
+  </g>
+</svg>
+"""
+    open(path, "w").write(svg)
 
 
 def elevation(path):
@@ -133,4 +161,5 @@ if __name__ == "__main__":
         courtyard(f"{out}/courtyard-{units}.dxf", units)
     else:
         courtyard(f"{out}/courtyard.dxf")
+        courtyard_svg(f"{out}/courtyard.svg")
         elevation(f"{out}/elevation.dxf")

@@ -11,6 +11,7 @@
 #include "recipe/layout_reader.h"
 #include "site/dxf_reader.h"
 #include "site/site.h"
+#include "site/svg_reader.h"
 
 namespace curdle::reading {
 namespace {
@@ -93,10 +94,10 @@ site::LayerMap read_layer_map(TableReader& r, const LayoutSpec& spec, size_t val
   std::transform(lower.begin(), lower.end(), lower.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (map.file.empty() || map.file.size() > 1024 || lower.size() < 5 ||
-      lower.substr(lower.size() - 4) != ".dxf")
+      (lower.substr(lower.size() - 4) != ".dxf" && lower.substr(lower.size() - 4) != ".svg"))
     r.fail("file",
-           "must name the site's drawing, a .dxf file relative to the recipe (in CAD: "
-           "save as DXF)");
+           "must name the site's drawing, a .dxf or .svg file relative to the recipe (in "
+           "CAD: save as DXF; in Inkscape or Illustrator: save as SVG)");
   const auto outline = read_layers(r, "outline");
   if (outline.size() != 1)
     r.fail("outline", "must name the one layer that holds the surface's outline, e.g. \"A-OTLN\"");
@@ -166,8 +167,12 @@ void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
   const std::string bytes = r.source().files->read(map.file, where, site::kMostDrawingBytes);
   site::Site s;
   try {
+    std::string ending = map.file.substr(map.file.size() - 4);
+    for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const bool svg = ending == ".svg";
     const site::Drawing drawing =
-        site::read_dxf(bytes, map.file, {spec.chord_tolerance, map.unit_mm});
+        svg ? site::read_svg(bytes, map.file, {spec.chord_tolerance, map.unit_mm})
+            : site::read_dxf(bytes, map.file, {spec.chord_tolerance, map.unit_mm});
     s = site::site_from(drawing, map);
   } catch (const site::SiteError& e) {
     sr.fail("file", e.what());

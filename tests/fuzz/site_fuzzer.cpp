@@ -1,4 +1,5 @@
-// Fuzz target: a site drawing (site/dxf_reader.cpp through dxflib, site/site.cpp) read and
+// Fuzz target: a site drawing (site/dxf_reader.cpp through dxflib, site/svg_reader.cpp through
+// libxml2 and SVG++, site/site.cpp) read and
 // turned into an outline, openings and zones, as [layout.site] does with the layers A (the
 // outline), B (openings) and C (an excluded zone), then laid as a paving floor. Any input may
 // be refused with a SiteError or an InputError; none may crash, hang or allocate without bound.
@@ -10,6 +11,7 @@
 #include "layout/zone.h"
 #include "site/dxf_reader.h"
 #include "site/site.h"
+#include "site/svg_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size > 256 * 1024) return 0;
@@ -22,8 +24,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   map.unit_mm = size % 2 ? 0 : 1;  // both: as the drawing says, and as a recipe says
   map.unit_name = "mm";
   try {
+    // An SVG begins with markup; anything else goes to the DXF reader.
+    const size_t first = bytes.find_first_not_of(" \t\r\n");
     const curdle::site::Drawing drawing =
-        curdle::site::read_dxf(bytes, map.file, {0.05, map.unit_mm});
+        first != std::string::npos && bytes[first] == '<'
+            ? curdle::site::read_svg(bytes, map.file, {0.05, map.unit_mm})
+            : curdle::site::read_dxf(bytes, map.file, {0.05, map.unit_mm});
     const curdle::site::Site site = curdle::site::site_from(drawing, map);
     // What the recipe reader does next with it: flatten and check every contour.
     (void)curdle::is_simple(curdle::flatten(site.outline, 0.05));

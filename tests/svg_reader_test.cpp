@@ -1,0 +1,124 @@
+#include "site/svg_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "layout/contour.h"
+
+namespace curdle::site {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string svg(
+    const std::string& body,
+    const std::string& size = "width=\"100mm\" height=\"50mm\" viewBox=\"0 0 100 50\"") {
+  return "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" "
+         "xmlns:xlink=\"http://www.w3.org/1999/xlink\" " +
+         size + ">\n" + body + "\n</svg>\n";
+}
+
+const Shape& on(const Drawing& d, const std::string& layer, size_t k = 0) {
+  for (const Shape& s : d.shapes)
+    if (s.layer == layer && k-- == 0) return s;
+  throw std::runtime_error("no shape on " + layer);
+}
+
+std::string refusal(const std::string& text) {
+  try {
+    read_svg(text, "site.svg", {});
+  } catch (const SiteError& e) {
+    return e.what();
+  }
+  return "(read)";
+}
+
+TEST(SvgReaderTest, UnitsFromWidthOverViewBoxAndYTurnedUp) {
+  // 100 mm wide over a viewBox 200 wide: a user unit is half a millimetre.
+  const Drawing d = read_svg(svg("<g inkscape:groupmode=\"layer\" inkscape:label=\"A-OTLN\">"
+                                 "<rect x=\"0\" y=\"0\" width=\"200\" height=\"20\"/></g>",
+                                 "width=\"100mm\" height=\"50mm\" viewBox=\"0 0 200 100\""),
+                             "site.svg", {});
+  EXPECT_EQ(d.unit_mm, 1);
+  const Shape& s = on(d, "A-OTLN");
+  EXPECT_TRUE(s.closed);
+  ASSERT_EQ(s.path.size(), 4u);
+  // The rect's top-left (0, 0) is the page's top: 50 mm up from its bottom edge.
+  EXPECT_NEAR(s.path[0].x, 0, 1e-12);
+  EXPECT_NEAR(s.path[0].y, 50, 1e-12);
+  EXPECT_NEAR(contour_area(s.path), 100 * 10, 1e-9);
+}
+
+TEST(SvgReaderTest, CircularArcsStayArcsThroughTransforms) {
+  const Drawing d = read_svg(svg("<g id=\"PIT\" transform=\"translate(50 25) rotate(30) scale(2)\">"
+                                 "<circle cx=\"0\" cy=\"0\" r=\"5\"/></g>"
+                                 "<g id=\"EDGE\"><path d=\"M 10 40 A 20 20 0 0 1 30 40\"/></g>"),
+                             "site.svg", {});
+  const Shape& pit = on(d, "PIT");
+  EXPECT_EQ(arc_count(pit.path), pit.path.size());  // every edge an arc
+  EXPECT_NEAR(contour_area(pit.path), kPi * 100, 1e-9);
+  const Shape& edge = on(d, "EDGE");
+  EXPECT_FALSE(edge.closed);
+  ASSERT_EQ(edge.path.size(), 2u);
+  const Arc a = arc_between(edge.path[0], edge.path[1]);
+  EXPECT_NEAR(a.radius, 20, 1e-9);
+  // Sweep flag 1 turns clockwise on the page (y down): with y up, the arc runs clockwise from
+  // (10, 10) to (30, 10) and swells upwards, its centre below.
+  EXPECT_LT(a.sweep, 0);
+  EXPECT_LT(a.centre[1], 10);
+}
+
+TEST(SvgReaderTest, UnevenScalesAndBeziersAreFlattenedWithinTheTolerance) {
+  const Drawing d = read_svg(svg("<g id=\"E\" transform=\"scale(2 1)\"><circle cx=\"10\" "
+                                 "cy=\"10\" r=\"5\"/></g><path id=\"B\" d=\"M0 0 C 10 20 20 20 "
+                                 "30 0\"/>"),
+                             "site.svg", {0.01, 0});
+  const Shape& e = on(d, "E");
+  EXPECT_EQ(arc_count(e.path), 0u);
+  EXPECT_NEAR(contour_area(e.path), kPi * 10 * 5, 0.05 * 2 * kPi * 10);
+  for (const auto& v : e.path)  // on the ellipse (x - 20)²/100 + (y - 40)²/25 = 1
+    EXPECT_NEAR(std::hypot((v.x - 20) / 10, (v.y - 40) / 5), 1, 1e-9);
+  EXPECT_GT(on(d, "B").path.size(), 8u);
+}
+
+TEST(SvgReaderTest, LayersUseAndUnits) {
+  const Drawing d = read_svg(
+      svg("<defs><rect id=\"win\" width=\"10\" height=\"20\"/></defs>"
+          "<g inkscape:groupmode=\"layer\" inkscape:label=\"A-GLAZ\" id=\"layer9\">"
+          "<use xlink:href=\"#win\" x=\"5\" y=\"5\"/><use href=\"#win\" x=\"30\" y=\"5\"/></g>"
+          "<polygon id=\"lone\" points=\"0,0 10,0 10,10\"/>",
+          "width=\"400\" height=\"200\""),  // px: no units said
+      "site.svg", {});
+  EXPECT_EQ(d.unit_mm, 0);
+  EXPECT_EQ(on(d, "A-GLAZ", 1).path[0].x, 30);
+  EXPECT_EQ(on(d, "lone").entity, "polygon");
+  // <defs> draws nothing of itself.
+  size_t glazing = 0;
+  for (const Shape& s : d.shapes) glazing += s.layer == "A-GLAZ";
+  EXPECT_EQ(glazing, 2u);
+}
+
+TEST(SvgReaderTest, RefusesWhatIsNotASiteDrawing) {
+  EXPECT_NE(refusal("0\nSECTION\n").find("not an SVG drawing"), std::string::npos);
+  EXPECT_NE(refusal("<svg xmlns=\"http://www.w3.org/2000/svg\"><g>").find("not an SVG drawing"),
+            std::string::npos);
+  EXPECT_NE(refusal("<!DOCTYPE svg [<!ENTITY a \"aaaa\">]><svg/>").find("entities"),
+            std::string::npos);
+  std::string m = refusal(svg("<path id=\"bad\" d=\"M 0 0 L nan 4\"/>"));
+  EXPECT_NE(m.find("<path> \"bad\" has path data curdle cannot read"), std::string::npos) << m;
+  m = refusal(svg("<g transform=\"scale(0)\"><path d=\"M0 0 L1 1\"/></g>"));
+  EXPECT_NE(m.find("flattens it to a line"), std::string::npos) << m;
+  m = refusal(svg("<rect width=\"10%\" height=\"5\"/>"));
+  EXPECT_NE(m.find("width=\"10%\""), std::string::npos) << m;
+  std::string deep;
+  for (int i = 0; i < 80; ++i) deep += "<g>";
+  for (int i = 0; i < 80; ++i) deep += "</g>";
+  EXPECT_NE(refusal(svg(deep)).find("more than 64 deep"), std::string::npos);
+  m = refusal(svg("<g id=\"loop\"><use href=\"#loop\"/></g>"));
+  EXPECT_NE(m.find("more than 16 deep"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace curdle::site
