@@ -15,6 +15,10 @@
 namespace curdle::site {
 namespace {
 
+// How far from its origin a drawing's point may lie, in its units: 10^12 mm is the distance to
+// the sun; a national grid's origin in millimetres is 10^10 away at most.
+constexpr double kFarthest = 1e12;
+
 // Coordinates in mm are kept to the nanometre, so that the same drawing in other units gives
 // the same numbers (14,000 mm drawn as 551.1811... in gives 14000.000000000002 before this).
 double snapped(double mm) {
@@ -135,6 +139,12 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
   std::vector<Piece> pieces;
   for (const Shape& s : drawing.shapes) {
     if (s.layer != layer) continue;
+    for (const ContourVertex& v : s.path)
+      if (!(std::fabs(v.x) <= kFarthest && std::fabs(v.y) <= kFarthest && std::isfinite(v.bulge)))
+        throw SiteError(fmt::format("{}: the {} on layer \"{}\" has the point ({:g}, {:g}), "
+                                    "beyond {:g} drawing units from the origin or not a number; "
+                                    "the drawing is damaged: export it again",
+                                    file, handle_of(s), layer, v.x, v.y, kFarthest));
     if (s.closed)
       closed.push_back({s.path, handle_of(s), s.entity, s.insert});
     else
