@@ -236,7 +236,7 @@ TEST(Recipe, SiteFromADrawing) {
   e = site_error(floor + "outline = [[0, 0], [1, 0], [1, 1]]\n" + site, &files);
   EXPECT_NE(e.find("give one or the other"), std::string::npos) << e;
   e = site_error(floor + "[layout.site]\nfile = \"site.dwg\"\noutline = \"A\"\n", &files);
-  EXPECT_NE(e.find(".dxf file"), std::string::npos) << e;
+  EXPECT_NE(e.find(".dxf or .svg file"), std::string::npos) << e;
   e = site_error(floor + site + "units = \"furlong\"\n", &files);
   EXPECT_NE(e.find("layout.site.units"), std::string::npos) << e;
   e = site_error(floor + site + "colour = 3\n", &files);

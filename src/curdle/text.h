@@ -24,6 +24,9 @@ std::string xml_escape(std::string_view text);
 // well-formed UTF-8 is U+FFFD and moves i by one.
 uint32_t next_code_point(std::string_view text, size_t& i);
 
+// Appends the code point (below U+10000) to `out` as UTF-8.
+void append_utf8(std::string& out, uint32_t code_point);
+
 // What makes `text` unsafe as a name that files and drawings show (a recipe's, a material's, a
 // zone's), or empty when nothing does: bytes that are not UTF-8, control characters, line
 // breaks and tabs, bidirectional controls (which reorder what a reader sees), invisible

@@ -14,26 +14,6 @@ bool in_box(const Point& p, const Rect& b) {
   return p[0] >= b.x && p[0] <= b.right() && p[1] >= b.y && p[1] <= b.top();
 }
 
-// Whether the segment a-b meets the closed box (Liang-Barsky).
-bool meets_box(const Point& a, const Point& b, const Rect& box) {
-  double t0 = 0, t1 = 1;
-  const double dx = b[0] - a[0], dy = b[1] - a[1];
-  for (const auto& [p, q] : {std::pair{-dx, a[0] - box.x}, std::pair{dx, box.right() - a[0]},
-                             std::pair{-dy, a[1] - box.y}, std::pair{dy, box.top() - a[1]}}) {
-    if (p == 0) {
-      if (q < 0) return false;
-      continue;
-    }
-    const double t = q / p;
-    if (p < 0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
-    if (t0 > t1) return false;
-  }
-  return true;
-}
-
 // One side of the box: keep what lies at or inside `edge` along axis `axis` (0 x, 1 y),
 // `low` for the side facing +axis. Crossings are put exactly on the side.
 Polygon clip_side(const Polygon& in, int axis, double edge, bool low) {
@@ -66,7 +46,7 @@ std::optional<Polygon> clip_to_box(const Polygon& polygon, const Rect& box) {
     const Point& b = polygon[(i + 1) % n];
     const bool ia = in_box(a, box);
     inside += ia;
-    if (!ia && meets_box(a, b, box)) ++entries;
+    if (!ia && segment_meets(a, b, box)) ++entries;
   }
   if (inside == n) return polygon;
   if (entries == 0)

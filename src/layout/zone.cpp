@@ -132,13 +132,10 @@ std::optional<std::vector<Rect>> as_rectangles(const Polygon& polygon) {
   return rects;
 }
 
-namespace {
-
-// Whether the segment a-b passes through the open rectangle (Liang-Barsky clipping).
-bool passes_through(const std::array<double, 2>& a, const std::array<double, 2>& b, const Rect& r) {
-  constexpr double kInset = 1e-7;  // touching a side is not passing through
-  const double x0 = r.x + kInset, x1 = r.right() - kInset, y0 = r.y + kInset, y1 = r.top() - kInset;
-  if (x0 >= x1 || y0 >= y1) return false;
+bool segment_meets(const std::array<double, 2>& a, const std::array<double, 2>& b, const Rect& r,
+                   double inset) {
+  const double x0 = r.x + inset, x1 = r.right() - inset, y0 = r.y + inset, y1 = r.top() - inset;
+  if (x0 > x1 || y0 > y1 || (inset > 0 && (x0 == x1 || y0 == y1))) return false;
   double t0 = 0, t1 = 1;
   const double dx = b[0] - a[0], dy = b[1] - a[1];
   for (const auto& [p, q] : {std::pair{-dx, a[0] - x0}, std::pair{dx, x1 - a[0]},
@@ -155,6 +152,14 @@ bool passes_through(const std::array<double, 2>& a, const std::array<double, 2>&
     if (t0 > t1) return false;
   }
   return true;
+}
+
+namespace {
+
+// Whether the segment a-b passes through the open rectangle: touching a side is not passing
+// through.
+bool passes_through(const std::array<double, 2>& a, const std::array<double, 2>& b, const Rect& r) {
+  return segment_meets(a, b, r, 1e-7);
 }
 
 }  // namespace

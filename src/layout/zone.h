@@ -24,6 +24,11 @@ bool is_simple(const Polygon& polygon);
 // checked in well under a second.
 std::optional<std::array<double, 2>> first_crossing(const Polygon& polygon);
 
+// Whether the segment a-b meets the rectangle shrunk by `inset` on every side (Liang and
+// Barsky's clipping): 0 the closed rectangle, a little more its open inside.
+bool segment_meets(const std::array<double, 2>& a, const std::array<double, 2>& b, const Rect& r,
+                   double inset = 0);
+
 // The distance from (x, y) to the polygon's nearest edge, inside or out.
 double distance_to_edges(const Polygon& polygon, double x, double y);
 

@@ -3,6 +3,7 @@
 // surface's outline, openings and zones (site.h). Nothing here knows the file's format.
 #pragma once
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,10 +35,17 @@ struct Drawing {
   double unit_mm = 0;
   std::string unit_name;  // as the drawing says it: "mm", "m", "in", ...
   std::vector<Shape> shapes;
-  std::vector<std::string> layers;  // every layer that holds a shape, in the order first seen
   std::vector<std::string> hidden;  // layers frozen or off in the drawing (read all the same)
   std::vector<std::string> notes;   // what a reader approximated or passed over
 };
+
+// Every layer that holds a shape, in the order first seen.
+inline std::vector<std::string> layers_of(const Drawing& drawing) {
+  std::vector<std::string> layers;
+  for (const Shape& s : drawing.shapes)
+    if (std::find(layers.begin(), layers.end(), s.layer) == layers.end()) layers.push_back(s.layer);
+  return layers;
+}
 
 // What a reader may hold at most, so that a hostile file is refused with a clear limit.
 inline constexpr size_t kMostDrawingBytes = size_t{64} << 20;

@@ -50,19 +50,7 @@ std::string decoded_name(const std::string& raw) {
         0x20AC, 0xFFFD, 0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
         0x2039, 0x0152, 0xFFFD, 0x017D, 0xFFFD, 0xFFFD, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
         0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0xFFFD, 0x017E, 0x0178};
-    for (unsigned char c : raw) {
-      const uint32_t cp = c < 0x80 ? c : (c < 0xA0 ? kHigh[c - 0x80] : c);
-      if (cp < 0x80) {
-        text += static_cast<char>(cp);
-      } else if (cp < 0x800) {
-        text += static_cast<char>(0xC0 | (cp >> 6));
-        text += static_cast<char>(0x80 | (cp & 0x3F));
-      } else {
-        text += static_cast<char>(0xE0 | (cp >> 12));
-        text += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-        text += static_cast<char>(0x80 | (cp & 0x3F));
-      }
-    }
+    for (unsigned char c : raw) append_utf8(text, c < 0x80 ? c : (c < 0xA0 ? kHigh[c - 0x80] : c));
   }
   std::string out;
   for (size_t i = 0; i < text.size(); ++i) {
@@ -70,16 +58,7 @@ std::string decoded_name(const std::string& raw) {
     if (text.compare(i, 3, "\\U+") == 0 && i + 7 <= text.size() &&
         std::sscanf(text.c_str() + i + 3, "%4x", &cp) == 1 && cp >= 0x20 &&
         (cp < 0xD800 || cp > 0xDFFF)) {
-      if (cp < 0x80) {
-        out += static_cast<char>(cp);
-      } else if (cp < 0x800) {
-        out += static_cast<char>(0xC0 | (cp >> 6));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-      } else {
-        out += static_cast<char>(0xE0 | (cp >> 12));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-      }
+      append_utf8(out, cp);
       i += 6;
       continue;
     }
@@ -599,9 +578,6 @@ Drawing read_dxf(std::string_view bytes, const std::string& file_name, const Dxf
       reading.unit_mm > 0 ? reading.unit_mm : (drawing.unit_mm > 0 ? drawing.unit_mm : 1);
   Placer placer(collector, file_name, reading.chord_tolerance_mm / mm, drawing);
   placer.place("", Placement{}, "0", -1, 0);
-  for (const Shape& s : drawing.shapes)
-    if (std::find(drawing.layers.begin(), drawing.layers.end(), s.layer) == drawing.layers.end())
-      drawing.layers.push_back(s.layer);
   for (const auto& [name, flags] : collector.layer_flags)
     if ((flags & 1) || collector.layers_off.count(name)) drawing.hidden.push_back(name);
   if (collector.flattened)

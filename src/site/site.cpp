@@ -141,10 +141,11 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
     if (s.layer != layer) continue;
     for (const ContourVertex& v : s.path)
       if (!(std::fabs(v.x) <= kFarthest && std::fabs(v.y) <= kFarthest && std::isfinite(v.bulge)))
-        throw SiteError(fmt::format("{}: the {} on layer \"{}\" has the point ({:g}, {:g}), "
-                                    "beyond {:g} drawing units from the origin or not a number; "
-                                    "the drawing is damaged: export it again",
-                                    file, handle_of(s), layer, v.x, v.y, kFarthest));
+        throw SiteError(
+            fmt::format("{}: the {} on layer \"{}\" has the point ({:g}, {:g}), "
+                        "beyond {:g} drawing units from the origin or not a number; "
+                        "the drawing is damaged: export it again",
+                        file, handle_of(s), layer, v.x, v.y, kFarthest));
     if (s.closed)
       closed.push_back({s.path, handle_of(s), s.entity, s.insert});
     else
@@ -192,22 +193,21 @@ Contour counter_clockwise(Contour c) {
   return c;
 }
 
-std::string layers_with_shapes(const Drawing& drawing) {
+std::string layers_with_shapes(const std::vector<std::string>& layers) {
   std::string names;
-  for (size_t i = 0; i < drawing.layers.size() && i < 40; ++i)
-    names += (i ? ", " : "") + ("\"" + drawing.layers[i] + "\"");
-  if (drawing.layers.size() > 40) names += ", ...";
+  for (size_t i = 0; i < layers.size() && i < 40; ++i)
+    names += (i ? ", " : "") + ("\"" + layers[i] + "\"");
+  if (layers.size() > 40) names += ", ...";
   return names.empty() ? "none" : names;
 }
 
-void check_named(const Drawing& drawing, const std::string& layer, const std::string& file,
-                 const std::string& role) {
-  if (std::find(drawing.layers.begin(), drawing.layers.end(), layer) != drawing.layers.end())
-    return;
+void check_named(const std::vector<std::string>& layers, const std::string& layer,
+                 const std::string& file, const std::string& role) {
+  if (std::find(layers.begin(), layers.end(), layer) != layers.end()) return;
   throw SiteError(
       fmt::format("{}: layer \"{}\" ({}) has nothing on it; the layers with shapes "
                   "are {}",
-                  file, layer, role, layers_with_shapes(drawing)));
+                  file, layer, role, layers_with_shapes(layers)));
 }
 
 }  // namespace
@@ -363,9 +363,10 @@ std::string summary_of(const Site& site, const Rect& bounds, const LayerMap& map
 
 Site site_from(const Drawing& drawing, const LayerMap& map) {
   Site site;
-  check_named(drawing, map.outline, map.file, "the outline");
-  for (const std::string& l : map.openings) check_named(drawing, l, map.file, "openings");
-  for (const ZoneLayer& z : map.zones) check_named(drawing, z.layer, map.file, "a zone");
+  const std::vector<std::string> layers = layers_of(drawing);
+  check_named(layers, map.outline, map.file, "the outline");
+  for (const std::string& l : map.openings) check_named(layers, l, map.file, "openings");
+  for (const ZoneLayer& z : map.zones) check_named(layers, z.layer, map.file, "a zone");
   std::string unit_name;
   const double mm = units_of(drawing, map, unit_name, site.notes);
   const double join_tolerance = kJoinTolerance / mm;
@@ -413,7 +414,7 @@ Site site_from(const Drawing& drawing, const LayerMap& map) {
                     "mm",
                     grouped(site.datum[0]), grouped(site.datum[1])));
   std::vector<std::string> ignored;
-  for (const std::string& l : drawing.layers) {
+  for (const std::string& l : layers) {
     const bool named =
         l == map.outline ||
         std::find(map.openings.begin(), map.openings.end(), l) != map.openings.end() ||

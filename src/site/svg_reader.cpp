@@ -436,9 +436,6 @@ Drawing read_svg(std::string_view bytes, const std::string& file_name, const Svg
   Walker walker(file_name, reading.chord_tolerance_mm / (mm > 0 ? mm : 1), drawing);
   walker.index(root, 0);
   walker.walk(root, page.after(Affine{}), "", 0, 0);
-  for (const Shape& s : drawing.shapes)
-    if (std::find(drawing.layers.begin(), drawing.layers.end(), s.layer) == drawing.layers.end())
-      drawing.layers.push_back(s.layer);
   if (walker.unresolved_)
     drawing.notes.push_back(
         fmt::format("{} <use> elements refer to nothing in the drawing, "
