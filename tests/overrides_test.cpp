@@ -47,3 +47,23 @@ TEST(Recipe, AnArrayIndexIsAWholeNumberAndNothingElse) {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+// A request may choose a site drawing's layers, never a file: not by its key, nor inside an
+// inline table or array it sets.
+TEST(Overrides, NamesAFile) {
+  EXPECT_TRUE(override_names_a_file("layout.mask=\"/etc/passwd\""));
+  EXPECT_TRUE(override_names_a_file("layout.site.file=\"/etc/site.dxf\""));
+  EXPECT_TRUE(override_names_a_file("curds.0.density.path=x.png"));
+  EXPECT_TRUE(override_names_a_file("layout={kind=\"facade\",mask=\"/any/path\"}"));
+  EXPECT_TRUE(override_names_a_file("layout.site={file=\"/etc/x.dxf\",outline=\"A\"}"));
+  EXPECT_TRUE(override_names_a_file(
+      "curds=[{name=\"a\",density={kind=\"image\",path=\"/x.png\"}}]"));
+  EXPECT_FALSE(override_names_a_file("layout.site.outline=\"A-OTLN\""));
+  EXPECT_FALSE(override_names_a_file("layout.site.zones=[{layer=\"PIT\",rule=\"exclude\"}]"));
+  EXPECT_FALSE(override_names_a_file("layout.tile=[300,300]"));
+  EXPECT_FALSE(override_names_a_file("name=path"));  // a bare word is a value, not a key
+}
+
+}  // namespace curdle

@@ -79,7 +79,7 @@ void apply_override(toml::table& doc, const std::string& assignment) {
 namespace {
 
 bool is_file_key(std::string_view key) {
-  return key == "mask" || key == "path" || key == "site" || key == "file";
+  return key == "mask" || key == "path" || key == "file";
 }
 
 bool holds_file_key(const toml::node& node) {

@@ -34,9 +34,10 @@ Recipe parse_recipe(std::string_view text, const std::string& source,
 std::string recipe_text_with(std::string_view text, const std::string& source,
                              const std::vector<std::string>& overrides);
 
-// Whether an override names a file on the machine: a key `mask`, `path`, `site` or `file` in
-// its dotted key or anywhere inside the inline table or array it sets (layout={..., mask=...}
-// sets layout.mask as surely as layout.mask=... does). Shells that serve others refuse these.
+// Whether an override names a file on the machine: a key `mask`, `path` or `file` in its
+// dotted key or anywhere inside the inline table or array it sets (layout={..., mask=...} sets
+// layout.mask as surely as layout.mask=... does; layout.site.outline names a layer, not a
+// file). Shells that serve others refuse these.
 bool override_names_a_file(const std::string& assignment);
 
 // "X,Y,W,H" (2-D), "X,W" (1-D) or "X,Y,Z,W,H,D" (3-D), checked to lie inside the field.
