@@ -58,8 +58,8 @@ TEST(Overrides, NamesAFile) {
   EXPECT_TRUE(override_names_a_file("curds.0.density.path=x.png"));
   EXPECT_TRUE(override_names_a_file("layout={kind=\"facade\",mask=\"/any/path\"}"));
   EXPECT_TRUE(override_names_a_file("layout.site={file=\"/etc/x.dxf\",outline=\"A\"}"));
-  EXPECT_TRUE(override_names_a_file(
-      "curds=[{name=\"a\",density={kind=\"image\",path=\"/x.png\"}}]"));
+  EXPECT_TRUE(
+      override_names_a_file("curds=[{name=\"a\",density={kind=\"image\",path=\"/x.png\"}}]"));
   EXPECT_FALSE(override_names_a_file("layout.site.outline=\"A-OTLN\""));
   EXPECT_FALSE(override_names_a_file("layout.site.zones=[{layer=\"PIT\",rule=\"exclude\"}]"));
   EXPECT_FALSE(override_names_a_file("layout.tile=[300,300]"));

@@ -78,9 +78,7 @@ void apply_override(toml::table& doc, const std::string& assignment) {
 
 namespace {
 
-bool is_file_key(std::string_view key) {
-  return key == "mask" || key == "path" || key == "file";
-}
+bool is_file_key(std::string_view key) { return key == "mask" || key == "path" || key == "file"; }
 
 bool holds_file_key(const toml::node& node) {
   if (const toml::table* t = node.as_table())

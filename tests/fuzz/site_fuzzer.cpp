@@ -16,13 +16,14 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size > 256 * 1024) return 0;
   const std::string bytes(reinterpret_cast<const char*>(data), size);
-  curdle::site::LayerMap map;
-  map.file = "fuzz.dxf";
-  map.outline = "A";
-  map.openings = {"B"};
-  map.zones = {{"C", curdle::ZoneRule::exclude, 0}};
-  map.unit_mm = size % 2 ? 0 : 1;  // both: as the drawing says, and as a recipe says
-  map.unit_name = "mm";
+  // Built whole (GCC 12 warns falsely of an overlapping copy when file is assigned a literal).
+  const curdle::site::LayerMap map{
+      .file = "fuzz.dxf",
+      .outline = "A",
+      .openings = {"B"},
+      .zones = {{"C", curdle::ZoneRule::exclude, 0}},
+      .unit_mm = size % 2 ? 0.0 : 1.0,  // as the drawing or a recipe says
+      .unit_name = "mm"};
   try {
     // An SVG begins with markup; anything else goes to the DXF reader.
     const size_t first = bytes.find_first_not_of(" \t\r\n");
