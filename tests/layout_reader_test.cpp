@@ -241,6 +241,12 @@ TEST(Recipe, SiteFromADrawing) {
   EXPECT_NE(e.find("layout.site.units"), std::string::npos) << e;
   e = site_error(floor + site + "colour = 3\n", &files);
   EXPECT_NE(e.find("colour"), std::string::npos) << e;
+  // The datum: the drawing's origin, the outline's corner, or a point of the drawing.
+  EXPECT_EQ(parse_recipe(floor + site + "origin = \"outline\"\n", "r.toml", {}, &files)
+                .layout->site_summary.find("outline 8,000 x 6,000 mm"),
+            0u);
+  e = site_error(floor + site + "origin = [1, \"a\"]\n", &files);
+  EXPECT_NE(e.find("layout.site.origin"), std::string::npos) << e;
   // A floor's openings are excluded zones; a perforated sheet takes none.
   r = parse_recipe(floor + site + "openings = \"PIT\"\n", "r.toml", {}, &files);
   ASSERT_EQ(r.layout->zones.size(), 1u);

@@ -176,3 +176,33 @@ TEST(SiteTest, UnitNames) {
 
 }  // namespace
 }  // namespace curdle::site
+
+namespace curdle::site {
+namespace {
+
+TEST(SiteTest, TheOriginMovesTheDatum) {
+  testing::DxfText dxf;
+  dxf.begin_entities_only().lwpolyline("A-OTLN", "1",
+                                       {{2000, 1000, 0}, {5000, 1000, 0}, {5000, 3000, 0}}, true);
+  LayerMap map;
+  map.file = "court.dxf";
+  map.outline = "A-OTLN";
+  // The drawing's own origin: the outline stands 2 m in and 1 m up.
+  EXPECT_NEAR(contour_bounds(site_from(read_dxf(dxf.text(), map.file, {}), map).outline).x, 2000,
+              1e-9);
+  map.origin_at_outline = true;
+  Site s = site_from(read_dxf(dxf.text(), map.file, {}), map);
+  EXPECT_EQ(contour_bounds(s.outline).x, 0);
+  EXPECT_EQ(s.datum[0], 2000);
+  map.origin_at_outline = false;
+  map.origin = std::array<double, 2>{1000, 500};
+  s = site_from(read_dxf(dxf.text(), map.file, {}), map);
+  EXPECT_EQ(s.outline[0].x, 1000);
+  EXPECT_EQ(s.outline[0].y, 500);
+  // A datum right of the outline's corner would put it at negative x: refused.
+  map.origin = std::array<double, 2>{3000, 0};
+  EXPECT_THROW(site_from(read_dxf(dxf.text(), map.file, {}), map), SiteError);
+}
+
+}  // namespace
+}  // namespace curdle::site
