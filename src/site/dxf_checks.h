@@ -1,0 +1,14 @@
+// What a DXF's bytes must be before dxflib reads them: an ASCII DXF (binary DXF, DWG and other
+// files are named as such), of bounded size, whose entities' counts fit the file, since dxflib
+// allocates what a count says before it reads what follows.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace curdle::site {
+
+// Throws SiteError naming the file (and the line of a count that does not fit).
+void check_dxf_bytes(std::string_view bytes, const std::string& file);
+
+}  // namespace curdle::site

@@ -1,0 +1,39 @@
+#include "site/dxf_checks.h"
+
+#include <gtest/gtest.h>
+
+#include "site/drawing.h"
+
+namespace curdle::site {
+namespace {
+
+std::string refusal(const std::string& bytes) {
+  try {
+    check_dxf_bytes(bytes, "site.dxf");
+  } catch (const SiteError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(DxfChecksTest, CountsMustFitTheFile) {
+  const std::string head = "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nA\n90\n";
+  EXPECT_EQ(refusal(head + "3\n70\n1\n0\nENDSEC\n0\nEOF\n"), "(accepted)");
+  const std::string m = refusal(head + "99999999\n70\n1\n0\nENDSEC\n0\nEOF\n");
+  EXPECT_NE(m.find("the LWPOLYLINE at line 10 says it has 99999999 parts"), std::string::npos) << m;
+  // dxflib reads a group code that is no number as 0, so an entity can begin there.
+  EXPECT_NE(refusal("0\nSECTION\n2\nENTITIES\n\xd0\nLWPOLYLINE\n90\n99999999\n").find("parts"),
+            std::string::npos);
+  EXPECT_NE(refusal("0\nSECTION\n2\nENTITIES\n0\nSPLINE\n73\n-5\n").find("parts"),
+            std::string::npos);
+}
+
+TEST(DxfChecksTest, OtherFilesAreNamed) {
+  EXPECT_NE(refusal("AutoCAD Binary DXF\r\n\x1a").find("binary DXF"), std::string::npos);
+  EXPECT_NE(refusal("AC1027xxxxxxxx").find("DWG"), std::string::npos);
+  EXPECT_NE(refusal("<svg/>").find("not a DXF"), std::string::npos);
+  EXPECT_NE(refusal(std::string("0\nSECTION\n") + '\0').find("NUL"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace curdle::site
