@@ -60,6 +60,7 @@ function overrides() {
   }
   if (state.valueColours.length && state.valueColours.join() !== originalValueColours().join())
     sets.push(`layout.colours=${tomlArray(state.valueColours.map(tomlString))}`);
+  for (const s of state.siteSets || []) sets.push(s);  // a site read from a drawing (site.js)
   const zones = zonesOverride();
   if (zones) sets.push(zones);
   return sets;
@@ -440,6 +441,7 @@ function wireControls() {
   wireCanvas();
   wireZones();
   wireMeasure();
+  wireSite();
 }
 
 // A window typed as X,Y,W,H (X,W on a line): checked against the field here, so that the

@@ -18,6 +18,7 @@
 #include "app/reproduce.h"
 #include "app/run.h"
 #include "app/search_run.h"
+#include "app/site_study.h"
 #include "app/stopping.h"
 #include "curdle/error.h"
 
@@ -296,6 +297,23 @@ ApiResponse api_measure(const ApiContext& c, const Params& params, const std::st
     request.max_memory = memory_limit(c);
     const app::PictureStudy study = app::study_picture(request);
     return json_response(app::picture_study_json(study));
+  });
+}
+
+ApiResponse api_site(const ApiContext& c, const Params& params, const std::string& body) {
+  return guarded([&] {
+    const RunRequest r = read_run(params, {"name", "outline", "openings", "zones", "units"});
+    app::SiteStudyRequest request;
+    request.bytes = body;
+    request.name = app::upload_name(own(r, "name", "site.dxf"));
+    request.outline = own(r, "outline");
+    request.units = own(r, "units");
+    if (const auto it = r.own.find("openings"); it != r.own.end()) request.openings = it->second;
+    if (const auto it = r.own.find("zones"); it != r.own.end()) request.zones = it->second;
+    // The page's run as it stands (its lattice, kind and overrides) takes the site.
+    RunRequest run = r;
+    run.own.clear();
+    return json_response(app::study_site(run_for(c, run), request));
   });
 }
 

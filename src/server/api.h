@@ -55,6 +55,11 @@ ApiResponse api_search(const ApiContext& context, const Params& params);
 // fitted to it, whose probabilities the page loads as overrides.
 ApiResponse api_measure(const ApiContext& context, const Params& params, const std::string& body);
 
+// POST /api/site: the body is a site drawing (DXF or SVG); name (its file name), and once the
+// layers are chosen outline, openings and zones (repeatable) and units, with the page's recipe
+// keys. Its layers, and the surface read from it as overrides (app/site_study.h).
+ApiResponse api_site(const ApiContext& context, const Params& params, const std::string& body);
+
 // GET /api/colours: colour=#rrggbb once per curd; the colour of every value as the library
 // blends it ({"values": [...]}, value 0 first), so that the page never blends on its own.
 ApiResponse api_colours(const Params& params);

@@ -41,8 +41,9 @@ Params query_params(const std::string& target) {
 
 namespace {
 
-// The one path that takes a body of any size: a picture to measure.
+// The paths that take a body: a picture to measure, a site drawing.
 constexpr const char* kUpload = "/api/measure";
+constexpr const char* kSiteUpload = "/api/site";
 
 // What a request must say in its Host header (and an API request in its Origin): the address
 // the server is bound to, so that a page elsewhere cannot reach it through a DNS name that
@@ -188,7 +189,9 @@ struct Server::Impl {
   httplib::Server::HandlerResponse screen(const httplib::Request& req, httplib::Response& res) {
     const bool api = req.path.rfind("/api/", 0) == 0;
     auto refuse = [&](int status, const std::string& message) {
-      if (status == 405) res.set_header("Allow", req.path == kUpload ? "POST" : "GET, HEAD");
+      if (status == 405)
+        res.set_header("Allow",
+                       req.path == kUpload || req.path == kSiteUpload ? "POST" : "GET, HEAD");
       if (api)
         reply(res, api_error(status, message));
       else {
@@ -197,11 +200,12 @@ struct Server::Impl {
       }
       return httplib::Server::HandlerResponse::Handled;
     };
-    const bool upload = req.path == kUpload;
+    const bool upload = req.path == kUpload || req.path == kSiteUpload;
     if (upload ? req.method != "POST" : req.method != "GET" && req.method != "HEAD")
-      return refuse(405, upload ? "a picture to measure is sent by POST, not " + req.method
-                                : "the server takes GET requests only (and POST to " +
-                                      std::string(kUpload) + "), not " + req.method);
+      return refuse(
+          405, upload ? "a picture to measure or a site drawing is sent by POST, not " + req.method
+                      : "the server takes GET requests only (and POST to " + std::string(kUpload) +
+                            " and " + kSiteUpload + "), not " + req.method);
     // A body is read only after this: its length is checked first, from the header.
     const bool chunked = req.has_header("Transfer-Encoding");
     const uint64_t limit = upload ? config.api.limits.max_upload_bytes : config.max_body_bytes;
@@ -269,6 +273,9 @@ struct Server::Impl {
     http.Post(kUpload, [this](const httplib::Request& req, httplib::Response& res) {
       heavy(res, [&] { return api_measure(config.api, query_params(req.target), req.body); });
     });
+    http.Post(kSiteUpload, [this](const httplib::Request& req, httplib::Response& res) {
+      heavy(res, [&] { return api_site(config.api, query_params(req.target), req.body); });
+    });
     // Anything else under /api/ is a JSON 404 (or 405 for another method), never a page.
     auto not_found = [this](const httplib::Request& req, httplib::Response& res) {
       const bool get = req.method == "GET";
@@ -278,7 +285,7 @@ struct Server::Impl {
               get ? 404 : 405,
               get ? "no such endpoint " + req.path +
                         "; the API has /api/recipe, /api/colours, /api/generate, /api/export, "
-                        "/api/search and /api/measure"
+                        "/api/search, /api/measure and /api/site"
                   : "the API takes GET requests only (and POST to " + std::string(kUpload) + ")"));
     };
     http.Get(R"(/api/.*)", not_found);

@@ -318,6 +318,28 @@ try {
     await page.fill('#zone-w', '40');
     await page.click('#zone-add');
     check((await page.textContent('#error')).includes('inside the floor of 12 × 8 m'), 'a zone beyond the floor is refused, naming the floor');
+    // A site from the architect's drawing: the courtyard's DXF, its layers given their roles
+    // (guessed from their names), laid in place of the L, its arch sent as a bulge.
+    await page.setInputFiles('#site-file', path.join(source, 'patterns/sites/courtyard.dxf'));
+    await page.waitForSelector('#site-layers select');
+    check(await page.locator('#site-layers select').count() === 3, 'the drawing\'s three layers are listed');
+    check(await page.inputValue('select[aria-label="Role of layer A-OTLN"]') === 'outline' &&
+          await page.inputValue('select[aria-label="Role of layer TREE_PIT"]') === 'zone',
+          'the outline and the tree pit are guessed from their layers\' names');
+    const laid = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+    await page.click('#site-apply');
+    const laidUrl = decodeURIComponent((await laid).url());
+    check(laidUrl.includes('layout.outline=[[0,0],[14000,0],[14000,9000,-0.2'),
+          'the outline is sent with its arch as a bulge');
+    await page.waitForFunction(() => document.querySelector('#site-summary').textContent.includes(
+        'outline 14,000 x 9,000 mm with 1 arc; 2 zones (TREE_PIT exclude, DRAIN exclude)'));
+    // Laid once the command carries the outline and no error stands (the segment follows the
+    // new floor after the whole field is back).
+    await page.waitForFunction(() => document.querySelector('#command').textContent.includes('layout.outline=') &&
+                                     document.querySelector('#error').hidden &&
+                                     document.querySelectorAll('#surface-overlay polygon.zone.exclude').length === 2);
+    check(await page.locator('#error').isHidden(), 'the courtyard laid from its drawing generates without error');
+    await page.locator('#canvas-wrap').screenshot({ path: path.join(shots, '7-site-from-dxf.png') });
   } finally {
     yard.server.kill('SIGINT');
   }

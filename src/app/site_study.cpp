@@ -1,0 +1,127 @@
+#include "app/site_study.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+
+#include "curdle/error.h"
+#include "layout/zone.h"
+#include "site/dxf_reader.h"
+#include "site/site.h"
+#include "site/svg_reader.h"
+
+namespace curdle::app {
+namespace {
+
+using nlohmann::ordered_json;
+
+std::string number(double v) { return fmt::format("{:.9g}", v); }
+
+// A contour as the recipe writes it: [[x, y], [x, y, bulge], ...].
+std::string contour_toml(const Contour& c) {
+  std::string text = "[";
+  for (size_t i = 0; i < c.size(); ++i) {
+    text += i ? "," : "";
+    text += "[" + number(c[i].x) + "," + number(c[i].y);
+    if (c[i].bulge != 0) text += "," + fmt::format("{:.17g}", c[i].bulge);
+    text += "]";
+  }
+  return text + "]";
+}
+
+ordered_json contour_json(const Contour& c) {
+  ordered_json points = ordered_json::array();
+  for (const ContourVertex& v : c)
+    points.push_back(v.bulge != 0 ? ordered_json{v.x, v.y, v.bulge} : ordered_json{v.x, v.y});
+  return points;
+}
+
+site::Drawing read_drawing(const SiteStudyRequest& r, double tolerance, double unit_mm) {
+  std::string lower = r.name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const bool svg = lower.size() > 4 && lower.substr(lower.size() - 4) == ".svg";
+  const bool dxf = lower.size() > 4 && lower.substr(lower.size() - 4) == ".dxf";
+  if (!svg && !dxf)
+    throw InputError(parameter("name"), "'" + r.name + "' is not a .dxf or .svg drawing");
+  try {
+    return svg ? site::read_svg(r.bytes, r.name, {tolerance, unit_mm})
+               : site::read_dxf(r.bytes, r.name, {tolerance, unit_mm});
+  } catch (const site::SiteError& e) {
+    throw InputError(parameter("name"), e.what());
+  }
+}
+
+ordered_json layers_json(const site::Drawing& drawing) {
+  ordered_json layers = ordered_json::array();
+  for (const std::string& name : site::layers_of(drawing)) {
+    size_t shapes = 0, closed = 0;
+    for (const site::Shape& s : drawing.shapes)
+      if (s.layer == name) ++shapes, closed += s.closed;
+    layers.push_back({{"name", name}, {"shapes", shapes}, {"closed", closed}});
+  }
+  return layers;
+}
+
+}  // namespace
+
+ordered_json study_site(const Run& run, const SiteStudyRequest& r) {
+  if (!run.recipe.layout || !run.recipe.layout->kind->takes_zones())
+    throw InputError(parameter("name"),
+                     "a site drawing is laid by a tile, paving or facade layout; this recipe's "
+                     "layout is not one");
+  const LayoutSpec& spec = *run.recipe.layout;
+  const double unit_mm = r.units.empty() ? 0 : site::unit_mm(r.units);
+  if (!r.units.empty() && unit_mm == 0)
+    throw InputError(parameter("units"), "must be mm, cm, dm, m, in or ft");
+  const site::Drawing drawing = read_drawing(r, spec.chord_tolerance, unit_mm);
+  ordered_json j{{"file", r.name},
+                 {"format", drawing.format},
+                 {"units", drawing.unit_name},
+                 {"layers", layers_json(drawing)},
+                 {"hidden", drawing.hidden},
+                 {"notes", drawing.notes}};
+  if (r.outline.empty()) return j;
+  site::LayerMap map;
+  map.file = r.name;
+  map.outline = r.outline;
+  map.openings = r.openings;
+  for (const std::string& z : r.zones) map.zones.push_back({z, ZoneRule::exclude, 0});
+  map.unit_mm = unit_mm;
+  map.unit_name = r.units;
+  map.chord_tolerance = spec.chord_tolerance;
+  site::Site s;
+  try {
+    s = site::site_from(drawing, map);
+  } catch (const site::SiteError& e) {
+    throw InputError(parameter("outline"), e.what());
+  }
+  std::vector<std::string> sets{"layout.outline=" + contour_toml(s.outline)};
+  ordered_json zones = ordered_json::array();
+  std::string windows;
+  LayoutSpec probe = spec;  // asks the kind whether it takes a rectangle as its own opening
+  size_t number_of = 0;
+  for (const Contour& o : s.openings) {
+    ++number_of;
+    const Polygon p = flatten(o, 1);
+    const auto rects = o.size() == 4 && !has_arcs(o) ? as_rectangles(p) : std::nullopt;
+    if (rects && rects->size() == 1) {
+      const Rect& b = rects->front();
+      if (probe.kind->take_opening(probe, {b.x, b.y, b.w, b.h})) {
+        windows += (windows.empty() ? "" : ",") +
+                   fmt::format("[{},{},{},{}]", number(b.x), number(b.y), number(b.w), number(b.h));
+        continue;
+      }
+    }
+    zones.push_back({{"name", fmt::format("opening {}", number_of)},
+                     {"rule", "exclude"},
+                     {"polygon", contour_json(o)}});
+  }
+  if (!windows.empty()) sets.push_back("layout.openings=[" + windows + "]");
+  for (const site::SiteZone& z : s.zones)
+    zones.push_back({{"name", z.name}, {"rule", "exclude"}, {"polygon", contour_json(z.contour)}});
+  j["site"] = {{"summary", s.summary}, {"notes", s.notes}, {"sets", sets}, {"zones", zones}};
+  return j;
+}
+
+}  // namespace curdle::app
