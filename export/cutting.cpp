@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "curdle/stop.h"
 #include "export/dxf_document.h"
 #include "export/wkt.h"
+#include "layout/contour.h"
 #include "layout/piece.h"
 
 namespace curdle {
@@ -20,9 +23,13 @@ void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, in
   layers.push_back({"TEXT", Rgb{0, 128, 0}, true});
   DxfDocument dxf(path, layers, Rect{0, 0, s.area.w, s.area.h});
   if (s.outline.empty()) dxf.rect("OUTLINE", Rect{0, 0, s.area.w, s.area.h});
-  for (Ring ring : s.outline) {  // cut to layout.outline
-    for (auto& v : ring) v[0] -= s.area.x, v[1] -= s.area.y;
-    dxf.polygon("OUTLINE", ring);
+  if (!s.outline_contour.empty()) {  // cut to layout.outline, its arcs as bulges
+    dxf.contour("OUTLINE", transformed(s.outline_contour, 1, -s.area.x, -s.area.y));
+  } else {
+    for (Ring ring : s.outline) {  // cut to layout.outline
+      for (auto& v : ring) v[0] -= s.area.x, v[1] -= s.area.y;
+      dxf.polygon("OUTLINE", ring);
+    }
   }
   for (const Element& e : layout.elements) {
     stop_point();
@@ -66,6 +73,24 @@ void write_sheet_svg(std::ostream& out, const Layout& layout, int sheet) {
         "<rect id=\"outline\" x=\"0\" y=\"0\" width=\"{:.3f}\" height=\"{:.3f}\" "
         "stroke=\"#000000\"/>\n",
         W, H);
+  } else if (!s.outline_contour.empty()) {  // cut to layout.outline, its arcs as arcs
+    std::string d;
+    const Contour& c = s.outline_contour;
+    for (size_t i = 0; i < c.size(); ++i) {
+      const ContourVertex& v = c[i];
+      const ContourVertex& next = c[(i + 1) % c.size()];
+      if (i == 0) d += fmt::format("M{:.3f} {:.3f}", v.x - s.area.x, y(v.y - s.area.y));
+      if (v.bulge == 0) {
+        d += fmt::format("L{:.3f} {:.3f}", next.x - s.area.x, y(next.y - s.area.y));
+        continue;
+      }
+      // The sheet's y runs down: a counter-clockwise arc is drawn with sweep-flag 0.
+      const Arc a = arc_between(v, next);
+      d += fmt::format("A{:.3f} {:.3f} 0 {} {} {:.3f} {:.3f}", a.radius, a.radius,
+                       std::fabs(a.sweep) > 3.14159265358979323846 ? 1 : 0, a.sweep > 0 ? 0 : 1,
+                       next.x - s.area.x, y(next.y - s.area.y));
+    }
+    out << fmt::format("<path id=\"outline\" d=\"{}z\" stroke=\"#000000\"/>\n", d);
   } else {  // cut to layout.outline
     std::string d;
     for (const Ring& ring : s.outline) {

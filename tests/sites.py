@@ -6,7 +6,8 @@ the outputs are read back and compared: the outline's corners and bulges, the tr
 drain in layout.dxf within 0.01 mm of the drawing; every piece of schedule.csv inside the true
 outline (within the chord tolerance along the arc, 0.01 mm along straight edges) and off the
 pit and drain; the arcs in layout.ifc; the setting-out on sheet 1 by centre and radius; the
-report line; the windows of the elevation's blocks as its openings; and the same courtyard
+report line; the windows of the elevation's blocks as its openings; a perforated screen's sheets
+cut along an arch as bulges; and the same courtyard
 drawn in m, cm, mm and inches, and saved as SVG, giving byte-identical schedules.
 
     sites.py CURDLE SOURCE_DIR
@@ -208,12 +209,27 @@ def elevation(work):
                       f"{row['element_id']} lies in an opening")
 
 
+def arched_screen(work):
+    """A perforated screen under an arch: the sheets it crosses are cut along the true arc."""
+    out = os.path.join(work, "screen")
+    generate(os.path.join(PATTERNS, "perforated-aluminium-screen.toml"), out, "--outputs",
+             "sheets", "--set", "layout.outline=[[0,0],[3000,0],[3000,5400,0.3],[0,5400]]")
+    half = math.tan(math.atan(0.3) / 2)  # the arch meets the seam at x = 1500: two halves
+    for name in ("S-R3-C1", "S-R3-C2"):
+        sheet = ezdxf.readfile(os.path.join(out, "sheets", name + ".dxf")).modelspace()
+        bulges = [b for e in sheet.query('LWPOLYLINE[layer=="OUTLINE"]')
+                  for *_, b in e.get_points("xyseb") if b]
+        check(len(bulges) == 1 and abs(bulges[0] - half) < 1e-9,
+              f"sheet {name} is not cut along the arch as a bulge of {half:.6f}: {bulges}")
+
+
 with tempfile.TemporaryDirectory() as work:
+    arched_screen(work)
     rows, out = courtyard(work)
     units(work, os.path.join(out, "schedule.csv"))
     elevation(work)
     for p in problems[:20]:
         print("  " + p)
-    print(f"sites: courtyard ({len(rows)} pieces), 3 other units and SVG, elevation: "
+    print(f"sites: arched screen, courtyard ({len(rows)} pieces), 3 other units and SVG, elevation: "
           f"{len(problems)} problems")
     sys.exit(1 if problems else 0)

@@ -7,6 +7,7 @@
 
 #include "curdle/stop.h"
 #include "kinds/perforation.h"
+#include "layout/contour_clip.h"
 #include "layout/union.h"
 #include "layout/zone.h"
 
@@ -272,6 +273,10 @@ double keep_on_sheets(std::vector<Hole>& holes, Layout& layout) {
       const Outline cut = joined(cut_along({sheet.area}, along));
       sheet.outline = cut.rings;
       sheet.surface = cut.area;
+      if (!layout.outline_contour.empty())  // for the cutter: the sheet's part of the true arcs
+        sheet.outline_contour =
+            clip_contour_to_box(layout.outline_contour, sheet.area, layout.chord_tolerance)
+                .value_or(Contour{});
       if (sheet.surface < 1e-6) continue;
     }
     renumbered[i] = static_cast<int>(kept.size());

@@ -320,8 +320,9 @@ struct Layout {
     // Its outline when layout.outline cuts it (rings in mm, as union.h lists them); empty: the
     // whole rectangle.
     std::vector<Ring> outline;
-    double surface = 0;    // mm² of sheet: the rectangle's, or its outline's
-    double open_area = 0;  // share of the sheet's area that is open
+    Contour outline_contour;  // the same with the outline's arcs, where it has any and is one piece
+    double surface = 0;       // mm² of sheet: the rectangle's, or its outline's
+    double open_area = 0;     // share of the sheet's area that is open
     // Openings per tool: "D22.6" for a punch of 22.6 mm, "outline" for merged openings cut
     // along their outline; in order of the tool's name.
     std::vector<std::pair<std::string, uint64_t>> tools;
