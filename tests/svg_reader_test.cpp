@@ -100,6 +100,18 @@ TEST(SvgReaderTest, LayersUseAndUnits) {
   EXPECT_EQ(glazing, 2u);
 }
 
+TEST(SvgReaderTest, DrawingOnAfterACloseStartsAtTheSubpathsStart) {
+  // After z the current point is the subpath's start: the line and the arc begin there.
+  const Drawing d = read_svg(svg("<path id=\"P\" d=\"M10 10 H20 V20 z L 30 10 z A 5 5 0 0 1 20 "
+                                 "10\"/>"),
+                             "site.svg", {});
+  ASSERT_EQ(d.shapes.size(), 3u);
+  EXPECT_EQ(d.shapes[1].path.front().x, 10);
+  EXPECT_EQ(d.shapes[1].path.front().y, 40);  // y 10 from the top of a 50 mm page
+  EXPECT_EQ(d.shapes[2].path.front().x, 10);
+  EXPECT_NE(d.shapes[2].path.front().bulge, 0);
+}
+
 TEST(SvgReaderTest, RefusesWhatIsNotASiteDrawing) {
   EXPECT_NE(refusal("0\nSECTION\n").find("not an SVG drawing"), std::string::npos);
   EXPECT_NE(refusal("<svg xmlns=\"http://www.w3.org/2000/svg\"><g>").find("not an SVG drawing"),

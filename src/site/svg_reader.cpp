@@ -80,11 +80,13 @@ class PathCollector {
     add(x, y);
   }
   void path_line_to(double x, double y, svgpp::tag::coordinate::absolute) {
+    begin();
     current_ = {x, y};
     add(x, y);
   }
   void path_cubic_bezier_to(double x1, double y1, double x2, double y2, double x, double y,
                             svgpp::tag::coordinate::absolute) {
+    begin();
     const Point p0 = current_;
     curve([&](double t) {
       const double u = 1 - t;
@@ -95,6 +97,7 @@ class PathCollector {
   }
   void path_quadratic_bezier_to(double x1, double y1, double x, double y,
                                 svgpp::tag::coordinate::absolute) {
+    begin();
     const Point p0 = current_;
     curve([&](double t) {
       const double u = 1 - t;
@@ -118,6 +121,10 @@ class PathCollector {
     const Point p = to_.apply(x, y);
     path_.push_back({p[0], p[1], 0});
   }
+  // A drawing command after a close (with no move) starts a subpath at the current point.
+  void begin() {
+    if (path_.empty()) add(current_[0], current_[1]);
+  }
   void curve(const std::function<Point(double)>& f) {
     const double scale = std::sqrt(std::fabs(to_.determinant()));
     const std::vector<Point> points = flatten_curve(f, 0, 1, tolerance_ / (scale > 0 ? scale : 1));
@@ -140,6 +147,7 @@ class PathCollector {
 void PathCollector::path_elliptical_arc_to(double rx, double ry, double rotation, bool large,
                                            bool sweep, double x, double y,
                                            svgpp::tag::coordinate::absolute) {
+  begin();
   const Point p1 = current_;
   current_ = {x, y};
   rx = std::fabs(rx), ry = std::fabs(ry);
