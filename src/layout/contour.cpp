@@ -63,7 +63,11 @@ Polygon flatten(const Contour& contour, double tolerance) {
     // A chord of angle φ strays r (1 - cos(φ / 2)) from its arc.
     const double most = tolerance < arc.radius ? 2 * std::acos(1 - tolerance / arc.radius) : kPi;
     const double step = std::min(most, kPi / 4);
-    const auto chords = static_cast<size_t>(std::ceil(std::fabs(arc.sweep) / step - 1e-9));
+    // An arc too flat to measure (a bulge of 1e-300: an infinite radius) is its chord; no arc
+    // takes more than a million chords, whatever its radius and the tolerance.
+    const double wanted = std::ceil(std::fabs(arc.sweep) / step - 1e-9);
+    if (!std::isfinite(arc.radius) || !(wanted >= 1)) continue;
+    const auto chords = static_cast<size_t>(std::min(wanted, 1e6));
     const double start = arc.start_angle();
     for (size_t k = 1; k < chords; ++k) {
       const double angle = start + arc.sweep * static_cast<double>(k) / static_cast<double>(chords);

@@ -28,6 +28,9 @@ struct Arc {
 Arc arc_between(const ContourVertex& a, const ContourVertex& b);
 // The bulge of an arc of `sweep` radians (a full turn is not one edge: split it).
 double bulge_of_sweep(double sweep);
+// A bulge as the readers keep it: 0 where the arc's sagitta is under a billionth of its chord
+// (its radius would overflow), else as given.
+inline double tidy_bulge(double bulge) { return bulge > -1e-9 && bulge < 1e-9 ? 0 : bulge; }
 
 bool has_arcs(const Contour& contour);
 size_t arc_count(const Contour& contour);

@@ -61,7 +61,7 @@ ReadContour read_contour(TableReader& r, const std::string& key, double toleranc
     const auto y = sized ? finite_number(p->get(1)) : std::nullopt;
     const auto bulge = sized && p->size() == 3 ? finite_number(p->get(2)) : std::optional(0.0);
     if (!x || !y || !bulge || std::fabs(*bulge) > 1000) r.fail(key, allowed);
-    contour.push_back({*x, *y, *bulge});
+    contour.push_back({*x, *y, tidy_bulge(*bulge)});
   }
   if (contour.size() > 2 && contour.front().x == contour.back().x &&
       contour.front().y == contour.back().y)

@@ -122,7 +122,7 @@ class Collector : public DL_CreationAdapter {
     const double a0 = d.angle1 * kPi / 180, a1 = a0 + sweep * kPi / 180;
     Shape s = shape("ARC");
     s.path = {{d.cx + d.radius * std::cos(a0), d.cy + d.radius * std::sin(a0),
-               bulge_of_sweep(sweep * kPi / 180)},
+               tidy_bulge(bulge_of_sweep(sweep * kPi / 180))},
               {d.cx + d.radius * std::cos(a1), d.cy + d.radius * std::sin(a1), 0}};
     mirror_if_under(s);
     keep(std::move(s));
@@ -172,7 +172,7 @@ class Collector : public DL_CreationAdapter {
       return off_plane(s.entity, s.handle, s.layer);
     }
     if (++vertices_ > kMostVertices) return too_many();
-    polyline_->path.push_back({d.x, d.y, std::isfinite(d.bulge) ? d.bulge : 0});
+    polyline_->path.push_back({d.x, d.y, std::isfinite(d.bulge) ? tidy_bulge(d.bulge) : 0});
   }
   void addSpline(const DL_SplineData& d) override {
     begin();

@@ -18,6 +18,8 @@ namespace {
 // How far from its origin a drawing's point may lie, in its units: 10^12 mm is the distance to
 // the sun; a national grid's origin in millimetres is 10^10 away at most.
 constexpr double kFarthest = 1e12;
+// The largest bulge a drawing may give: an arc just short of a full turn (359.9°) has 4,600.
+constexpr double kSteepest = 1e6;
 
 // Coordinates in mm are kept to the nanometre, so that the same drawing in other units gives
 // the same numbers (14,000 mm drawn as 551.1811... in gives 14000.000000000002 before this).
@@ -140,7 +142,8 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
   for (const Shape& s : drawing.shapes) {
     if (s.layer != layer) continue;
     for (const ContourVertex& v : s.path)
-      if (!(std::fabs(v.x) <= kFarthest && std::fabs(v.y) <= kFarthest && std::isfinite(v.bulge)))
+      if (!(std::fabs(v.x) <= kFarthest && std::fabs(v.y) <= kFarthest &&
+            std::fabs(v.bulge) <= kSteepest))
         throw SiteError(
             fmt::format("{}: the {} on layer \"{}\" has the point ({:g}, {:g}), "
                         "beyond {:g} drawing units from the origin or not a number; "

@@ -177,7 +177,8 @@ void PathCollector::path_elliptical_arc_to(double rx, double ry, double rotation
   if (std::fabs(rx - ry) <= 1e-9 * rx && to_.similar()) {
     // A circular arc: kept as bulges (two, past a half turn), turned with a mirror.
     const int halves = std::fabs(delta) > kPi ? 2 : 1;
-    const double bulge = std::tan(delta / halves / 4) * (to_.determinant() < 0 ? -1 : 1);
+    const double bulge =
+        tidy_bulge(std::tan(delta / halves / 4)) * (to_.determinant() < 0 ? -1 : 1);
     for (int h = 1; h <= halves; ++h) {
       path_.back().bulge = bulge;
       const Point p = h == halves ? Point{x, y} : at(0.5);
