@@ -5,6 +5,19 @@
 
 const $ = (id) => document.getElementById(id);
 
+// A zone a file is dropped on, with its chooser: `use` takes the file either way.
+function wireDrop(zoneId, inputId, use) {
+  const zone = $(zoneId);
+  zone.addEventListener("dragover", (e) => { e.preventDefault(); zone.classList.add("over"); });
+  zone.addEventListener("dragleave", () => zone.classList.remove("over"));
+  zone.addEventListener("drop", (e) => {
+    e.preventDefault();
+    zone.classList.remove("over");
+    use(e.dataTransfer.files[0]);
+  });
+  $(inputId).addEventListener("change", () => use($(inputId).files[0]));
+}
+
 const state = {
   recipe: null,  // /api/recipe, as loaded: the base every override is measured against
   seed: 1,

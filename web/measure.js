@@ -170,15 +170,7 @@ function loadFittedRecipe() {
 }
 
 function wireMeasure() {
-  const drop = $("measure-drop");
-  drop.addEventListener("dragover", (e) => { e.preventDefault(); drop.classList.add("over"); });
-  drop.addEventListener("dragleave", () => drop.classList.remove("over"));
-  drop.addEventListener("drop", (e) => {
-    e.preventDefault();
-    drop.classList.remove("over");
-    measurePicture(e.dataTransfer.files[0]);
-  });
-  $("measure-file").addEventListener("change", () => measurePicture($("measure-file").files[0]));
+  wireDrop("measure-drop", "measure-file", measurePicture);
   $("measure-load").addEventListener("click", loadFittedRecipe);
   // A picture dropped beside the zone would replace the page: ignored instead.
   window.addEventListener("dragover", (e) => e.preventDefault());

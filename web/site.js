@@ -91,14 +91,6 @@ async function applySite() {
 }
 
 function wireSite() {
-  const drop = $("site-drop");
-  drop.addEventListener("dragover", (e) => { e.preventDefault(); drop.classList.add("over"); });
-  drop.addEventListener("dragleave", () => drop.classList.remove("over"));
-  drop.addEventListener("drop", (e) => {
-    e.preventDefault();
-    drop.classList.remove("over");
-    readSite(e.dataTransfer.files[0]);
-  });
-  $("site-file").addEventListener("change", () => readSite($("site-file").files[0]));
+  wireDrop("site-drop", "site-file", readSite);
   $("site-apply").addEventListener("click", applySite);
 }

@@ -7,9 +7,7 @@
 
 #include "curdle/error.h"
 #include "layout/zone.h"
-#include "site/dxf_reader.h"
 #include "site/site.h"
-#include "site/svg_reader.h"
 
 namespace curdle::app {
 namespace {
@@ -38,15 +36,12 @@ ordered_json contour_json(const Contour& c) {
 }
 
 site::Drawing read_drawing(const SiteStudyRequest& r, double tolerance, double unit_mm) {
-  std::string lower = r.name;
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const bool svg = lower.size() > 4 && lower.substr(lower.size() - 4) == ".svg";
-  const bool dxf = lower.size() > 4 && lower.substr(lower.size() - 4) == ".dxf";
-  if (!svg && !dxf)
+  std::string ending = r.name.size() >= 4 ? r.name.substr(r.name.size() - 4) : r.name;
+  for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ending != ".svg" && ending != ".dxf")
     throw InputError(parameter("name"), "'" + r.name + "' is not a .dxf or .svg drawing");
   try {
-    return svg ? site::read_svg(r.bytes, r.name, {tolerance, unit_mm})
-               : site::read_dxf(r.bytes, r.name, {tolerance, unit_mm});
+    return site::read_drawing(r.bytes, r.name, tolerance, unit_mm);
   } catch (const site::SiteError& e) {
     throw InputError(parameter("name"), e.what());
   }
@@ -103,10 +98,8 @@ ordered_json study_site(const Run& run, const SiteStudyRequest& r) {
   size_t number_of = 0;
   for (const Contour& o : s.openings) {
     ++number_of;
-    const Polygon p = flatten(o, 1);
-    const auto rects = o.size() == 4 && !has_arcs(o) ? as_rectangles(p) : std::nullopt;
-    if (rects && rects->size() == 1) {
-      const Rect& b = rects->front();
+    if (const auto rect = as_rectangle(o)) {
+      const Rect& b = *rect;
       if (probe.kind->take_opening(probe, {b.x, b.y, b.w, b.h})) {
         windows += (windows.empty() ? "" : ",") +
                    fmt::format("[{},{},{},{}]", number(b.x), number(b.y), number(b.w), number(b.h));

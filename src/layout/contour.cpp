@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "layout/zone.h"
+
 namespace curdle {
 namespace {
 
@@ -43,6 +45,13 @@ bool has_arcs(const Contour& contour) { return arc_count(contour) > 0; }
 size_t arc_count(const Contour& contour) {
   return static_cast<size_t>(std::count_if(contour.begin(), contour.end(),
                                            [](const ContourVertex& v) { return v.bulge != 0; }));
+}
+
+std::optional<Rect> as_rectangle(const Contour& c) {
+  if (c.size() != 4 || has_arcs(c)) return std::nullopt;
+  const auto rects = as_rectangles(flatten(c, 1));
+  if (!rects || rects->size() != 1) return std::nullopt;
+  return rects->front();
 }
 
 Contour contour_of(const Polygon& polygon) {

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "layout/layout.h"
@@ -34,6 +35,8 @@ inline double tidy_bulge(double bulge) { return bulge > -1e-9 && bulge < 1e-9 ? 
 
 bool has_arcs(const Contour& contour);
 size_t arc_count(const Contour& contour);
+// The contour as one rectangle with its edges along x and y (a window), or nullopt.
+std::optional<Rect> as_rectangle(const Contour& contour);
 // Straight edges between the polygon's vertices.
 Contour contour_of(const Polygon& polygon);
 // The vertices, with each arc replaced by chords that stray at most `tolerance` from it (the

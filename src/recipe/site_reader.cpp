@@ -9,9 +9,7 @@
 #include "layout/contour.h"
 #include "layout/zone.h"
 #include "recipe/layout_reader.h"
-#include "site/dxf_reader.h"
 #include "site/site.h"
-#include "site/svg_reader.h"
 
 namespace curdle::reading {
 namespace {
@@ -120,16 +118,6 @@ site::LayerMap read_layer_map(TableReader& r, const LayoutSpec& spec, size_t val
   return map;
 }
 
-// Whether the contour is an axis-aligned rectangle: x, y, w, h.
-std::optional<std::array<double, 4>> rectangle(const Contour& c) {
-  if (c.size() != 4 || has_arcs(c)) return std::nullopt;
-  const Polygon p = flatten(c, 1);
-  const auto rects = as_rectangles(p);
-  if (!rects || rects->size() != 1) return std::nullopt;
-  const Rect& r = rects->front();
-  return std::array<double, 4>{r.x, r.y, r.w, r.h};
-}
-
 Zone zone_of(const std::string& name, ZoneRule rule, uint32_t value, const Contour& contour,
              double tolerance) {
   Zone z;
@@ -167,13 +155,8 @@ void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
   const std::string bytes = r.source().files->read(map.file, where, site::kMostDrawingBytes);
   site::Site s;
   try {
-    std::string ending = map.file.substr(map.file.size() - 4);
-    for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    const bool svg = ending == ".svg";
-    const site::Drawing drawing =
-        svg ? site::read_svg(bytes, map.file, {spec.chord_tolerance, map.unit_mm})
-            : site::read_dxf(bytes, map.file, {spec.chord_tolerance, map.unit_mm});
-    s = site::site_from(drawing, map);
+    s = site::site_from(site::read_drawing(bytes, map.file, spec.chord_tolerance, map.unit_mm),
+                        map);
   } catch (const site::SiteError& e) {
     sr.fail("file", e.what());
   }
@@ -193,8 +176,8 @@ void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
   size_t number = 0;
   for (const Contour& o : s.openings) {
     ++number;
-    const auto rect = rectangle(o);
-    if (rect && spec.kind->take_opening(spec, *rect)) continue;
+    const auto rect = as_rectangle(o);
+    if (rect && spec.kind->take_opening(spec, {rect->x, rect->y, rect->w, rect->h})) continue;
     if (!spec.kind->takes_zones()) sr.fail("openings", "are for tile, paving and facade layouts");
     spec.zones.push_back(
         zone_of(fmt::format("opening {}", number), ZoneRule::exclude, 0, o, spec.chord_tolerance));

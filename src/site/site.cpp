@@ -6,11 +6,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <unordered_map>
 
 #include "layout/zone.h"
+#include "site/dxf_reader.h"
+#include "site/svg_reader.h"
 
 namespace curdle::site {
 namespace {
@@ -214,6 +217,14 @@ void check_named(const std::vector<std::string>& layers, const std::string& laye
 }
 
 }  // namespace
+
+Drawing read_drawing(std::string_view bytes, const std::string& name, double chord_tolerance_mm,
+                     double unit_mm) {
+  std::string ending = name.size() >= 4 ? name.substr(name.size() - 4) : name;
+  for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ending == ".svg" ? read_svg(bytes, name, {chord_tolerance_mm, unit_mm})
+                          : read_dxf(bytes, name, {chord_tolerance_mm, unit_mm});
+}
 
 double unit_mm(const std::string& name) {
   static const std::map<std::string, double> kUnits = {{"mm", 1},   {"cm", 10},   {"dm", 100},

@@ -7,6 +7,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "layout/contour.h"
@@ -50,6 +51,11 @@ struct Site {
   std::string summary;                // "outline 14,000 x 9,000 mm with 1 arc; ..."
   std::vector<std::string> notes;     // layers passed over, hidden layers, flattened curves
 };
+
+// The drawing in `bytes`, read as its name's ending says: ".svg" (any case) by svg_reader.h,
+// anything else by dxf_reader.h. SiteError as they throw it.
+Drawing read_drawing(std::string_view bytes, const std::string& name, double chord_tolerance_mm,
+                     double unit_mm);
 
 // Millimetres per unit for "mm", "cm", "dm", "m", "in" or "ft"; 0 for anything else.
 double unit_mm(const std::string& name);
