@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "recipe/toml_reader.h"
 #include "recipe_support.h"
 
 namespace curdle {
@@ -64,6 +65,20 @@ TEST(Overrides, NamesAFile) {
   EXPECT_FALSE(override_names_a_file("layout.site.zones=[{layer=\"PIT\",rule=\"exclude\"}]"));
   EXPECT_FALSE(override_names_a_file("layout.tile=[300,300]"));
   EXPECT_FALSE(override_names_a_file("name=path"));  // a bare word is a value, not a key
+}
+
+// An override is one key and one value: a line break or quote in the key, or a second line in
+// the value, cannot smuggle in another key.
+TEST(Overrides, OneKeyAndOneValue) {
+  toml::table doc = reading::parse_toml("name = \"x\"\nseed = 1\n", "r.toml");
+  EXPECT_THROW(reading::apply_override(doc, "name=\"y\"\nseed = 5"), InputError);
+  EXPECT_THROW(reading::apply_override(doc, "name\nseed=5"), InputError);
+  EXPECT_THROW(reading::apply_override(doc, "\"name\"=5"), InputError);
+  EXPECT_THROW(reading::apply_override(doc, "lattice..base=5"), InputError);
+  EXPECT_EQ(doc["seed"].value<int64_t>(), 1);
+  reading::apply_override(doc, "lattice.base=3");
+  reading::apply_override(doc, "curds-2_b=3");
+  EXPECT_EQ(doc["lattice"]["base"].value<int64_t>(), 3);
 }
 
 }  // namespace curdle

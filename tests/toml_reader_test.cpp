@@ -65,4 +65,22 @@ TEST(Recipe, NamesThatWouldNotShowAsTheyReadAreRefused) {
                                "r.toml"));
 }
 
+// A key deeper than toml++'s stack can take is refused from the text, naming its line; dots in
+// strings and comments are text.
+TEST(Recipe, KeysDeeperThanSixtyFourPartsAreRefusedBeforeParsing) {
+  EXPECT_EQ(reading::deepest_key("a.b.c = 1\n[x.y]\n").parts, 3);
+  EXPECT_EQ(reading::deepest_key("a = \"1.2.3.4.5\" # 6.7.8.9\nb = '''x.y.z'''\n").parts, 1);
+  EXPECT_EQ(reading::deepest_key("a = [1.5, 2.5]\n").parts, 2);
+  std::string deep = "a";
+  for (int i = 0; i < 60000; ++i) deep += ".a";
+  for (const std::string& text :
+       {deep + " = 1\n", "[" + deep + "]\n", "x = {" + deep + " = 1}\n"}) {
+    const std::string e = error_of(std::string(kGood) + text);
+    EXPECT_NE(e.find("has 60001 parts; at most 64"), std::string::npos) << e.substr(0, 200);
+  }
+  // 64 parts are read (and refused as an unknown key, not for their depth).
+  EXPECT_EQ(error_of(std::string(kGood) + "[" + deep.substr(0, 127) + "]\n").find("parts"),
+            std::string::npos);
+}
+
 }  // namespace curdle

@@ -1,6 +1,7 @@
 #include "recipe/overrides.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <sstream>
 
@@ -18,6 +19,19 @@ void apply_override(toml::table& doc, const std::string& assignment) {
     throw InputError(parameter("set", key), "expects KEY=VALUE, e.g. lattice.mode=exact");
   const std::string value = assignment.substr(eq + 1);
   const std::string source = "override " + key;
+  if (deepest_key(key).parts > kMostKeyParts || deepest_key(value).parts > kMostKeyParts)
+    throw InputError(parameter("set", key.substr(0, 200)),
+                     "has a dotted key of more than " + std::to_string(kMostKeyParts) +
+                         " parts; at most " + std::to_string(kMostKeyParts) +
+                         " (a recipe's deepest key, such as curds.0.density.values, has 4)");
+  // Each part a bare key: a line break or quote in a key would smuggle in a second assignment.
+  const bool bare = std::all_of(key.begin(), key.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  });
+  if (!bare || key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos)
+    throw InputError(parameter("set", key.substr(0, 200)),
+                     "is not a recipe key: write dotted parts of letters, digits, _ and -, "
+                     "e.g. lattice.base or curds.0.probabilities");
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + value, source);
@@ -25,6 +39,10 @@ void apply_override(toml::table& doc, const std::string& assignment) {
     parsed = toml::parse("v = \"\"", source);  // a bare word is a string
     parsed.insert_or_assign("v", value);
   }
+  if (parsed.size() != 1)
+    throw InputError(parameter("set", key),
+                     "holds more than one value (a line break followed by another key?); "
+                     "give one TOML value, e.g. 3, \"exact\" or [1, 2]");
   const toml::node& v = *parsed.get("v");
 
   std::vector<std::string> parts;
@@ -101,6 +119,7 @@ bool override_names_a_file(const std::string& assignment) {
     start = dot + 1;
   }
   if (assignment.find('=') == std::string::npos) return false;
+  if (reading::deepest_key(assignment).parts > reading::kMostKeyParts) return false;  // refused
   try {
     const toml::table parsed = toml::parse("v = " + assignment.substr(assignment.find('=') + 1));
     return holds_file_key(*parsed.get("v"));

@@ -176,7 +176,44 @@ bool read_bool(TableReader& r, const std::string& key, bool fallback) {
   return *n->value<bool>();
 }
 
+KeyDepth deepest_key(std::string_view text) {
+  KeyDepth deepest;
+  int parts = 1, line = 1;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '"' || c == '\'') {
+      // A string, one line or three quotes: its dots are text, not key separators.
+      const bool triple = text.substr(i, 3) == std::string(3, c);
+      const std::string_view close = triple ? text.substr(i, 3) : text.substr(i, 1);
+      size_t j = i + close.size();
+      while (j < text.size() && text.substr(j, close.size()) != close) {
+        if (c == '"' && text[j] == '\\') ++j;  // an escape: the next character is text
+        if (j < text.size() && text[j] == '\n') ++line;
+        ++j;
+      }
+      i = std::min(text.size(), j + close.size()) - 1;
+      continue;
+    }
+    if (c == '#') {
+      while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+    } else if (c == '.') {
+      if (++parts > deepest.parts) deepest = {parts, line};
+    } else if (c == '=' || c == ',' || c == '[' || c == ']' || c == '{' || c == '}' || c == '\n') {
+      parts = 1;
+      if (c == '\n') ++line;
+    }
+  }
+  return deepest;
+}
+
 toml::table parse_toml(std::string_view text, const std::string& source) {
+  // toml++ nests a table per part and recurses through them: a key of 60,000 parts overflows
+  // the stack, so the parts are counted before it reads anything.
+  if (const KeyDepth deep = deepest_key(text); deep.parts > kMostKeyParts)
+    throw InputError(SourceLocation{source, deep.line, 1, ""},
+                     "a dotted key or table header has " + std::to_string(deep.parts) +
+                         " parts; at most " + std::to_string(kMostKeyParts) +
+                         " (a recipe's deepest key, such as curds.0.density.values, has 4)");
   try {
     return toml::parse(text, source);
   } catch (const toml::parse_error& e) {

@@ -102,7 +102,18 @@ bool read_bool(TableReader& r, const std::string& key, bool fallback);
 // The recipe's seed, 0 to 2^64 - 1 (1 when absent). TOML integers stop at 2^63 - 1, so a larger
 // seed is written as text: seed = "18446744073709551615"; text is taken for any seed.
 uint64_t read_seed(TableReader& r);
-// The text as TOML, or InputError at the first syntax error.
+// The most parts a dotted key or a table header may have; recipes use at most 4.
+constexpr int kMostKeyParts = 64;
+
+// The longest run of dot-separated parts outside strings and comments (a key or header; a
+// number's decimal point counts as a part, which only overstates) and the line it ends on.
+struct KeyDepth {
+  int parts = 1;
+  int line = 1;
+};
+KeyDepth deepest_key(std::string_view text);
+
+// Parses TOML; InputError (naming the line) for invalid text or a key deeper than kMostKeyParts.
 toml::table parse_toml(std::string_view text, const std::string& source);
 
 }  // namespace curdle::reading
