@@ -51,7 +51,7 @@ LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const s
                                         std::to_string(max_side) + " a side; use a smaller image");
   ImageSize size;
   try {
-    size = read_image_size(path);
+    size = read_image_size(path, decoder_name(header->format));
   } catch (const std::runtime_error& e) {
     throw InputError(where, "cannot read " + what + " " + name + ": " + reason(e) + readable);
   }
@@ -66,7 +66,7 @@ LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const s
                    " MiB to read; at most " + std::to_string(max_pixels) + " pixels and " +
                    std::to_string(max_bytes >> 20) + " MiB; use a smaller image");
   try {
-    return read_luminance(path);
+    return read_luminance(path, decoder_name(header->format));
   } catch (const std::runtime_error& e) {
     throw InputError(where, "cannot read " + what + " " + name + ": " + reason(e) + readable);
   }

@@ -62,8 +62,8 @@ const ImageModule& module() {
         return;
       }
       loaded.read_luminance =
-          reinterpret_cast<ReadLuminanceFn>(::dlsym(handle, "curdle_image_read_luminance"));
-      loaded.read_size = reinterpret_cast<ReadSizeFn>(::dlsym(handle, "curdle_image_read_size"));
+          reinterpret_cast<ReadLuminanceFn>(::dlsym(handle, "curdle_image_read_luminance_as"));
+      loaded.read_size = reinterpret_cast<ReadSizeFn>(::dlsym(handle, "curdle_image_read_size_as"));
       if (!loaded.read_luminance || !loaded.read_size)
         failure = "the image module " + path.string() + " lacks its entry points";
       return;
@@ -77,17 +77,18 @@ const ImageModule& module() {
 
 }  // namespace
 
-LuminanceImage read_luminance(const fs::path& path) {
+LuminanceImage read_luminance(const fs::path& path, const char* format) {
   LuminanceImage image;
   std::string error;
-  if (!module().read_luminance(path.c_str(), &image, &error)) throw std::runtime_error(error);
+  if (!module().read_luminance(path.c_str(), format, &image, &error))
+    throw std::runtime_error(error);
   return image;
 }
 
-ImageSize read_image_size(const fs::path& path) {
+ImageSize read_image_size(const fs::path& path, const char* format) {
   ImageSize size;
   std::string error;
-  if (!module().read_size(path.c_str(), &size, &error)) throw std::runtime_error(error);
+  if (!module().read_size(path.c_str(), format, &size, &error)) throw std::runtime_error(error);
   return size;
 }
 

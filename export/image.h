@@ -29,19 +29,23 @@ struct LuminanceImage {
   std::vector<uint32_t> palette;  // the colours `colour` indexes
 };
 inline constexpr size_t kMostFlatColours = 16;
-// Throws std::runtime_error with OpenImageIO's message when the file cannot be read.
-LuminanceImage read_luminance(const std::filesystem::path& path);
+// Decoded by the reader of `format` ("png", "jpeg", "tiff", "bmp": what the bytes are, from
+// picture_gate.h), never by the file's name. Throws std::runtime_error with OpenImageIO's
+// message when the file cannot be read.
+LuminanceImage read_luminance(const std::filesystem::path& path, const char* format);
 
 // An image's size from its header, without decoding it (for memory guards).
 struct ImageSize {
   int width = 0, height = 0, channels = 0;
 };
-ImageSize read_image_size(const std::filesystem::path& path);
+ImageSize read_image_size(const std::filesystem::path& path, const char* format);
 
 // The module's entry points (C linkage so that dlsym finds them by name).
 extern "C" {
-using ReadLuminanceFn = bool (*)(const char* path, LuminanceImage* image, std::string* error);
-using ReadSizeFn = bool (*)(const char* path, ImageSize* size, std::string* error);
+using ReadLuminanceFn = bool (*)(const char* path, const char* format, LuminanceImage* image,
+                                 std::string* error);
+using ReadSizeFn = bool (*)(const char* path, const char* format, ImageSize* size,
+                            std::string* error);
 }
 
 }  // namespace curdle

@@ -4,12 +4,14 @@
 #include "export/picture_gate.h"
 
 #include <cstdlib>
+#include <string>
+#include <utility>
 
 namespace curdle {
 namespace {
 
-std::optional<PictureHeader> refuse(std::string& why, const char* reason) {
-  why = reason;
+std::optional<PictureHeader> refuse(std::string& why, std::string reason) {
+  why = std::move(reason);
   return std::nullopt;
 }
 
@@ -30,7 +32,49 @@ struct Bytes {
 std::optional<PictureHeader> png(const Bytes& f, std::string& why) {
   if (!f.has(16, 8) || f.b.substr(12, 4) != "IHDR")
     return refuse(why, "its PNG header is cut short");
+  // The decoder inflates every compressed text and profile chunk, each up to 8 MB: a thousand
+  // of them are a minute of work in a file of a few megabytes. Counted first.
+  int compressed = 0;
+  for (uint64_t at = 8; f.has(at, 8);) {
+    const uint64_t length = f.u32(at);
+    const std::string_view type = f.b.substr(at + 4, 4);
+    if (type == "IEND") break;
+    if ((type == "zTXt" || type == "iTXt" || type == "iCCP") && ++compressed > kMostPngTextChunks)
+      return refuse(why, "it holds more than " + std::to_string(kMostPngTextChunks) +
+                             " compressed text or profile chunks (zTXt, iTXt, iCCP); save the "
+                             "picture without its metadata");
+    at += 12 + length;
+  }
   return PictureHeader{PictureFormat::png, f.u32(16), f.u32(20)};
+}
+
+// The scans of a JPEG after its frame header at `at`: each SOS segment and the entropy-coded
+// data after it, up to the next marker (a 0xFF that is neither stuffing nor a restart).
+bool too_many_scans(const Bytes& f, uint64_t at) {
+  int scans = 0;
+  while (f.has(at, 2)) {
+    if (f.u8(at) != 0xFF) return false;  // broken: the decoder will say so
+    const uint32_t marker = f.u8(at + 1);
+    if (marker == 0xFF || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {
+      at += marker == 0xFF ? 1 : 2;
+      continue;
+    }
+    if (marker == 0xD9 || !f.has(at, 4)) return false;
+    at += 2 + f.u16(at + 2);
+    if (marker != 0xDA) continue;
+    if (++scans > kMostJpegScans) return true;
+    while (f.has(at, 2)) {
+      const size_t ff = f.b.find('\xFF', at);
+      if (ff == std::string_view::npos || !f.has(ff, 2)) return false;
+      const uint32_t next = f.u8(ff + 1);
+      if (next != 0x00 && next != 0xFF && !(next >= 0xD0 && next <= 0xD7)) {
+        at = ff;
+        break;
+      }
+      at = ff + (next == 0xFF ? 1 : 2);
+    }
+  }
+  return false;
 }
 
 std::optional<PictureHeader> jpeg(const Bytes& f, std::string& why) {
@@ -53,6 +97,11 @@ std::optional<PictureHeader> jpeg(const Bytes& f, std::string& why) {
         marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
     if (frame) {
       if (!f.has(at + 4, 5)) break;
+      // A progressive picture is decoded once per scan over the whole picture: a few dozen in
+      // any camera's or editor's file, 400,000 in a crafted one (minutes of work).
+      if (too_many_scans(f, at + 2 + length))
+        return refuse(why, "it has more than " + std::to_string(kMostJpegScans) +
+                               " scans; save it as a baseline JPEG or as PNG");
       return PictureHeader{PictureFormat::jpeg, f.u16(at + 7), f.u16(at + 5)};
     }
     at += 2 + length;
@@ -67,15 +116,52 @@ std::optional<PictureHeader> tiff(Bytes f, std::string& why) {
   if (!f.has(ifd, 2)) return refuse(why, "its TIFF directory lies beyond the file");
   const uint32_t entries = f.u16(ifd);
   int64_t width = 0, height = 0;
+  uint64_t samples = 1, planar = 1, tile_width = 0, tile_length = 0, rows_per_strip = 0;
   for (uint32_t i = 0; i < entries; ++i) {
     const uint64_t e = ifd + 2 + uint64_t{12} * i;
     if (!f.has(e, 12)) return refuse(why, "its TIFF directory is cut short");
     const uint32_t tag = f.u16(e), type = f.u16(e + 2);
-    if (tag != 256 && tag != 257) continue;
     // SHORT values stand in the field's first two bytes, LONG in all four.
     const uint32_t value = type == 3 ? f.u16(e + 8) : type == 4 ? f.u32(e + 8) : 0;
-    (tag == 256 ? width : height) = value;
+    switch (tag) {
+      case 256:
+        width = value;
+        break;
+      case 257:
+        height = value;
+        break;
+      case 277:
+        samples = value;
+        break;
+      case 278:
+        rows_per_strip = value;
+        break;
+      case 284:
+        planar = value;
+        break;
+      case 322:
+        tile_width = value;
+        break;
+      case 323:
+        tile_length = value;
+        break;
+      default:
+        break;
+    }
   }
+  if (samples > static_cast<uint64_t>(kMostTiffSamples))
+    return refuse(why, "it has " + std::to_string(samples) + " samples per pixel; at most " +
+                           std::to_string(kMostTiffSamples));
+  // libtiff allocates an offset and a byte count for every tile or strip of every plane before
+  // it reads a pixel: their number is bounded here, from the directory's own figures.
+  auto blocks = [](uint64_t n, uint64_t per) { return per ? (n + per - 1) / per : n; };
+  const uint64_t w = static_cast<uint64_t>(width), h = static_cast<uint64_t>(height);
+  uint64_t count = tile_width || tile_length ? blocks(w, tile_width) * blocks(h, tile_length)
+                                             : blocks(h, rows_per_strip ? rows_per_strip : h);
+  if (planar == 2) count *= samples;
+  if (count > kMostTiffBlocks)
+    return refuse(why, "it is stored in " + std::to_string(count) + " tiles or strips; at most " +
+                           std::to_string(kMostTiffBlocks));
   return PictureHeader{PictureFormat::tiff, width, height};
 }
 
@@ -91,6 +177,20 @@ std::optional<PictureHeader> bmp(Bytes f, std::string& why) {
 }
 
 }  // namespace
+
+const char* decoder_name(PictureFormat format) {
+  switch (format) {
+    case PictureFormat::png:
+      return "png";
+    case PictureFormat::jpeg:
+      return "jpeg";
+    case PictureFormat::tiff:
+      return "tiff";
+    case PictureFormat::bmp:
+      return "bmp";
+  }
+  return "png";
+}
 
 std::optional<PictureHeader> read_picture_header(std::string_view bytes, std::string& why) {
   const Bytes f{bytes};

@@ -19,6 +19,18 @@ struct PictureHeader {
   int64_t width = 0, height = 0;
 };
 
+// Bounds on work the decoders would do before any pixel: a progressive JPEG is decoded once per
+// scan; libpng inflates every compressed text chunk; libtiff allocates an offset per tile or
+// strip of every sample plane.
+inline constexpr int kMostJpegScans = 256;
+inline constexpr int kMostPngTextChunks = 16;
+inline constexpr int kMostTiffSamples = 16;
+inline constexpr uint64_t kMostTiffBlocks = uint64_t{1} << 24;
+
+// The name OpenImageIO knows the format by ("png", "jpeg", "tiff", "bmp"): the decoder is
+// chosen by what the bytes are, never by the file's name.
+const char* decoder_name(PictureFormat format);
+
 // "PNG, JPEG, TIFF or BMP": what messages say is allowed.
 inline constexpr const char* kPictureFormats = "PNG, JPEG, TIFF or BMP";
 

@@ -34,7 +34,7 @@ TEST(PictureCells, APreviewIsReadBackAsItsCellsAndItsCurdsByColour) {
   const auto dir = test::scratch("picture-cells");
   const auto path =
       test::write_file(dir / "preview.png", encode_png(render_preview(d, field, d.field)));
-  const PictureCells cells = picture_cells(read_luminance(path), 2, 0);
+  const PictureCells cells = picture_cells(read_luminance(path, "png"), 2, 0);
   EXPECT_GT(cells.pixels_per_cell, 1);
   EXPECT_EQ(cells.width, 32);
   EXPECT_EQ(cells.height, 16);

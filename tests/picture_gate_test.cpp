@@ -89,5 +89,62 @@ TEST(PictureGate, OtherFormatsAndBrokenHeadersAreRefused) {
   }
 }
 
+// Work a decoder would do before any pixel is bounded from the bytes: a JPEG's scans, a PNG's
+// compressed text chunks, a TIFF's planes and blocks. Just under each bound passes.
+TEST(PictureGate, DecodingWorkIsBoundedBeforeTheDecoder) {
+  const std::string frame = std::string("\xFF\xD8\xFF\xC2", 4) + be16(11) + std::string(1, 8) +
+                            be16(16) + be16(16) + std::string("\x01\x01\x11\x00", 4);
+  // A scan: its header, then entropy data holding stuffed bytes and a restart marker.
+  const std::string scan = std::string("\xFF\xDA", 2) + be16(8) +
+                           std::string("\x01\x01\x00\x00\x3F\x00", 6) +
+                           std::string("\x12\xFF\x00\x34\xFF\xD0\x56", 7);
+  auto jpeg = [&](int scans) {
+    std::string bytes = frame;
+    for (int i = 0; i < scans; ++i) bytes += scan;
+    return bytes + std::string("\xFF\xD9", 2);
+  };
+  EXPECT_TRUE(header(jpeg(kMostJpegScans)));
+  std::string why;
+  EXPECT_FALSE(read_picture_header(jpeg(kMostJpegScans + 1), why));
+  EXPECT_NE(why.find("more than 256 scans"), std::string::npos) << why;
+
+  const std::string png = test::grey_png(7, 3, [](int, int) { return 9; });
+  auto with_chunks = [&](int n, const std::string& type) {
+    const std::string chunk = be32(4) + type + "abcd" + be32(0);
+    std::string bytes = png.substr(0, 33);  // the signature and IHDR
+    for (int i = 0; i < n; ++i) bytes += chunk;
+    return bytes + png.substr(33);
+  };
+  EXPECT_TRUE(header(with_chunks(kMostPngTextChunks, "zTXt")));
+  EXPECT_TRUE(header(with_chunks(1000, "tEXt")));  // plain text is not inflated
+  for (const char* type : {"zTXt", "iTXt", "iCCP"}) {
+    EXPECT_FALSE(read_picture_header(with_chunks(kMostPngTextChunks + 1, type), why)) << type;
+    EXPECT_NE(why.find("compressed text"), std::string::npos) << why;
+  }
+
+  auto tiff = [](const std::vector<std::pair<uint32_t, uint32_t>>& tags) {
+    std::string bytes = std::string("II*\0", 4) + le32(8) + le16(tags.size());
+    for (const auto& [tag, value] : tags) bytes += le16(tag) + le16(4) + le32(1) + le32(value);
+    return bytes + le32(0);
+  };
+  EXPECT_TRUE(header(tiff({{256, 64}, {257, 64}, {277, 16}, {284, 2}, {322, 16}, {323, 16}})));
+  EXPECT_FALSE(read_picture_header(tiff({{256, 16}, {257, 16}, {277, 65535}, {284, 2}}), why));
+  EXPECT_NE(why.find("65535 samples"), std::string::npos) << why;
+  // 2^16 x 2^16 pixels in strips of a row, in 16 planes: 2^20 blocks pass; in 16 x 16 tiles of
+  // 16 planes, 2^28 do not.
+  EXPECT_TRUE(header(tiff({{256, 65536}, {257, 65536}, {277, 16}, {284, 2}, {278, 1}})));
+  EXPECT_FALSE(read_picture_header(
+      tiff({{256, 65536}, {257, 65536}, {277, 16}, {284, 2}, {322, 16}, {323, 16}}), why));
+  EXPECT_NE(why.find("tiles or strips"), std::string::npos) << why;
+}
+
+// The decoder is named by the bytes: what OpenImageIO calls each format.
+TEST(PictureGate, TheDecoderIsNamedByTheFormat) {
+  EXPECT_STREQ(decoder_name(PictureFormat::png), "png");
+  EXPECT_STREQ(decoder_name(PictureFormat::jpeg), "jpeg");
+  EXPECT_STREQ(decoder_name(PictureFormat::tiff), "tiff");
+  EXPECT_STREQ(decoder_name(PictureFormat::bmp), "bmp");
+}
+
 }  // namespace
 }  // namespace curdle

@@ -55,11 +55,11 @@ TEST(Preview, EncodesAPngThatReadsBackWithItsResolution) {
   std::vector<uint8_t> back(img.rgb.size());
   ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, back.data()));
   EXPECT_EQ(back, img.rgb);
-  const LuminanceImage grey = read_luminance(dir / "p.png");
+  const LuminanceImage grey = read_luminance(dir / "p.png", "png");
   ASSERT_EQ(grey.width, img.width);
   EXPECT_NEAR(grey.luminance[0],
               (0.2126f * img.rgb[0] + 0.7152f * img.rgb[1] + 0.0722f * img.rgb[2]) / 255, 1e-3);
-  EXPECT_THROW(read_luminance(dir / "missing.png"), std::runtime_error);
+  EXPECT_THROW(read_luminance(dir / "missing.png", "png"), std::runtime_error);
   fs::remove_all(dir);
 }
 

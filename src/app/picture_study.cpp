@@ -9,6 +9,7 @@
 #include "app/run.h"
 #include "curdle/error.h"
 #include "export/bounded_image.h"
+#include "export/picture_gate.h"
 
 namespace fs = std::filesystem;
 
@@ -78,9 +79,12 @@ PictureStudy study_picture(const PictureStudyRequest& r) {
   measure.values = 1 << r.curds;
   measure.base = r.base;
   check_measure_options(measure);
-  std::string extension = fs::path(name).extension().string();
-  if (extension.size() > 6) extension.clear();
-  const TemporaryPicture file(r.bytes, extension);
+  // Saved under the ending of what its bytes are: nothing reads it by the name it was sent as.
+  std::string why;
+  const std::optional<PictureHeader> header = read_picture_header(r.bytes, why);
+  if (!header)
+    throw InputError("cannot read the picture " + name + ": " + why + " (" + kPictureFormats + ")");
+  const TemporaryPicture file(r.bytes, std::string(".") + decoder_name(header->format));
   const LuminanceImage image = read_bounded_luminance(
       file.path(), "the picture", SourceLocation{},
       r.max_memory ? r.max_memory : default_memory_limit(), r.max_pixels, name);
