@@ -2,14 +2,17 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -59,14 +62,25 @@ void remove_staged_files_for_exit() {
 
 namespace {
 
+// Each writer in the process stages apart: two threads writing one directory never share.
+std::atomic<uint64_t> writers{0};
+
+// What names the directory now: its device and inode, or nothing when there is none.
+std::optional<std::pair<dev_t, ino_t>> identity(const fs::path& dir) {
+  struct stat info {};
+  if (::stat(dir.c_str(), &info) != 0) return std::nullopt;
+  return std::make_pair(info.st_dev, info.st_ino);
+}
+
 // Staging directories of runs that were killed (SIGKILL leaves no time to remove them): named
-// `prefix` and the process's ID, and no process of that ID runs.
+// `prefix`, the process's ID and the writer's number in it, and no process of that ID runs.
 void remove_abandoned_staging(const fs::path& parent, const std::string& prefix) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(parent, ec)) {
     const std::string name = entry.path().filename().string();
     if (name.rfind(prefix, 0) != 0 || !entry.is_directory(ec)) continue;
-    const std::string id = name.substr(prefix.size());
+    const std::string rest = name.substr(prefix.size());
+    const std::string id = rest.substr(0, rest.find('-'));
     pid_t pid = 0;
     const auto [end, bad] = std::from_chars(id.data(), id.data() + id.size(), pid);
     if (bad != std::errc() || end != id.data() + id.size() || pid <= 0) continue;
@@ -81,21 +95,35 @@ StagingDirectory::StagingDirectory(fs::path dir,
     : dir_(std::move(dir)) {
   // The nearest existing ancestor must be a directory we may write into; nothing is made yet,
   // so that a run that fails leaves no new directory behind.
-  const fs::path absolute = fs::absolute(dir_).lexically_normal();
-  fs::path existing = absolute;
   std::error_code ec;
+  fs::path absolute = fs::absolute(dir_).lexically_normal();
+  // A link to a directory is written through: the set goes where it points, the link stays.
+  if (fs::is_symlink(absolute, ec) && fs::is_directory(absolute, ec))
+    absolute = fs::canonical(absolute, ec);
+  place_ = absolute;
+  fs::path existing = absolute;
   while (!fs::exists(existing, ec) && existing.has_relative_path())
     existing = existing.parent_path();
   if (!fs::is_directory(existing, ec))
     throw InputError("cannot create the output directory " + dir_.string() + ": " +
                      existing.string() + " is a file in the way");
-  if (::access(existing.c_str(), W_OK) != 0)
+  if (::access(existing.c_str(), W_OK) != 0) {
+    const std::string why = std::strerror(errno);
+    if (existing == absolute)
+      throw InputError("cannot write into the output directory " + dir_.string() +
+                       ": it exists but is not writable (" + why +
+                       "); give --out a directory you may write to");
     throw InputError("cannot create the output directory " + dir_.string() + ": " +
-                     std::strerror(errno));
+                     existing.string() + " is not writable (" + why + ")");
+  }
+  found_ = identity(absolute);
   // Replaced whole when the directory is new, or holds nothing but this program's outputs.
   whole_ = absolute.has_filename() && absolute != fs::current_path(ec);
-  if (whole_ && fs::exists(dir_, ec)) {
-    for (const auto& entry : fs::directory_iterator(dir_, ec)) {
+  // Swapping a directory in rewrites its "..": the directory itself must be writable too.
+  if (whole_ && fs::exists(absolute, ec) && ::access(absolute.parent_path().c_str(), W_OK) != 0)
+    whole_ = false;
+  if (whole_ && fs::exists(absolute, ec)) {
+    for (const auto& entry : fs::directory_iterator(absolute, ec)) {
       const std::string name = entry.path().filename().string();
       const bool folder = entry.is_directory(ec);
       const bool ours = name[0] == '.' ? !folder && name.find(".tmp-") != std::string::npos
@@ -114,6 +142,8 @@ StagingDirectory::StagingDirectory(fs::path dir,
     hidden += ".curdle-";
     remove_abandoned_staging(absolute.parent_path(), hidden);
     hidden += std::to_string(::getpid());
+    hidden += '-';
+    hidden += std::to_string(++writers);
     staging_ = absolute.parent_path() / hidden;
   }
 }
@@ -155,7 +185,7 @@ fs::path StagingDirectory::prepare(const std::string& name) {
     if (path.parent_path() != staging_) make_output_dir(path.parent_path());
     return path;
   }
-  const fs::path target = dir_ / name;
+  const fs::path target = place_ / name;
   make_dir(target.parent_path());
   staged_.push_back(std::make_unique<StagedFile>(target));
   staged_paths().insert(staged_.back()->temporary());
@@ -174,15 +204,25 @@ void StagingDirectory::write_via_file(const std::string& name,
 
 void StagingDirectory::commit() {
   if (names_.empty()) {  // a run with nothing to write still makes its directory
-    make_dir(dir_);
+    make_dir(place_);
     committed_ = true;
     return;
   }
   if (whole_) {
     std::error_code ec;
-    if (!fs::exists(dir_, ec)) {
+    // Another run swapped its set in while this one was writing: the first to finish keeps
+    // the directory, and this one says so rather than silently replacing it.
+    auto replaced = [&] {
+      if (identity(place_) != found_)
+        throw InputError("cannot write " + dir_.string() +
+                         ": another run wrote its outputs there while this one was running; "
+                         "they are kept, and this run's were not written (give each run its "
+                         "own --out)");
+    };
+    if (!fs::exists(place_, ec)) {
       std::lock_guard<std::mutex> lock(staged_mutex);  // as below: never a half-removed set
-      fs::rename(staging_, dir_, ec);
+      replaced();
+      fs::rename(staging_, place_, ec);
       if (ec) throw InputError("cannot write " + dir_.string() + ": " + ec.message());
     } else {
       // One rename swaps the whole set in: a reader sees the old set or the new, never a mix.
@@ -191,7 +231,8 @@ void StagingDirectory::commit() {
       // which an interrupt may remove as well as this run.
       {
         std::lock_guard<std::mutex> lock(staged_mutex);
-        if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, dir_.c_str(), RENAME_EXCHANGE) != 0)
+        replaced();
+        if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, place_.c_str(), RENAME_EXCHANGE) != 0)
           throw InputError("cannot replace " + dir_.string() + ": " + std::strerror(errno));
       }
       fs::remove_all(staging_, ec);  // now the old set

@@ -2,10 +2,13 @@
 // place only once all are written), or memory for the server's downloads.
 #pragma once
 
+#include <sys/types.h>
+
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -47,6 +50,8 @@ class StagingDirectory : public OutputSink {
   std::filesystem::path prepare(const std::string& name);  // where to write `name` now
   void make_dir(const std::filesystem::path& dir);
   std::filesystem::path dir_, staging_;
+  std::filesystem::path place_;  // the directory itself: dir_, or where its link points
+  std::optional<std::pair<dev_t, ino_t>> found_;  // what held place_ when the run began
   bool whole_ = false;
   std::vector<std::string> names_;
   std::vector<std::unique_ptr<StagedFile>> staged_;  // beside their targets (not whole)
