@@ -499,6 +499,15 @@ TEST_F(ServerTest, ThePageIsServedFromItsFiles) {
   auto missing = get("/no-such-file.js");
   ASSERT_TRUE(missing);
   EXPECT_EQ(missing->status, 404);
+  // No other site may frame the page or run scripts in it; the API's answers say so too.
+  for (const auto* answer : {&r, &js, &missing}) {
+    EXPECT_EQ((*answer)->get_header_value("X-Frame-Options"), "DENY");
+    EXPECT_NE((*answer)->get_header_value("Content-Security-Policy").find("frame-ancestors 'none'"),
+              std::string::npos);
+  }
+  auto api = get("/api/recipe");
+  ASSERT_TRUE(api);
+  EXPECT_EQ(api->get_header_value("Content-Security-Policy"), kContentSecurityPolicy);
 }
 
 // A server of its own on the rhythm façade, whose layout.pdf 3 km tall takes about 40 s.

@@ -42,6 +42,14 @@ class RecipeFolderFiles : public RecipeFiles {
   std::string recipe_path_;
 };
 
+// No files at all: the recipe is sized from its text alone.
+class NoFiles : public RecipeFiles {
+ public:
+  std::string read(const std::string& name, const SourceLocation&, size_t) const override {
+    throw FilesNeeded("the recipe reads " + name);
+  }
+};
+
 // Reads the pictures of image density fields, relative to the recipe, as hostile files.
 void load_density_images(Run& run) {
   for (size_t c = 0; c < run.recipe.design.curds.size(); ++c) {
@@ -131,7 +139,9 @@ Run resolve_run(const RunRequest& request) {
   run.recipe_text = request.recipe_text;
   run.overrides = request.overrides;
   const RecipeFolderFiles files(request.recipe_path);
-  run.recipe = parse_recipe(request.recipe_text, request.recipe_path, request.overrides, &files);
+  const NoFiles none;
+  run.recipe = parse_recipe(request.recipe_text, request.recipe_path, request.overrides,
+                            request.read_files ? static_cast<const RecipeFiles*>(&files) : &none);
   run.seed = run.recipe.seed;
   if (!request.seed.empty()) {
     const std::string& text = request.seed;
@@ -150,7 +160,7 @@ Run resolve_run(const RunRequest& request) {
   }
   run.generate.max_memory_bytes = request.max_memory ? request.max_memory : default_memory_limit();
   run.generate.memory_limit_hint = request.memory_limit_hint;
-  load_density_images(run);
+  if (request.read_files) load_density_images(run);
   return run;
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,15 @@ struct RunRequest {
   std::string window;                  // empty: the recipe's window, else the whole field
   uint64_t max_memory = 0;             // bytes; 0: default_memory_limit()
   std::string memory_limit_hint;       // how this caller raises the limit, for messages
+  // False: the recipe alone, for sizing a request before it may use memory; a recipe that
+  // needs a drawing to be sized throws FilesNeeded, and density pictures are not decoded.
+  bool read_files = true;
+};
+
+// A run resolved without its files (RunRequest::read_files) needed one to know its size.
+class FilesNeeded : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 struct Run {

@@ -119,6 +119,14 @@ ApiResponse json_response(const ordered_json& j) {
   return r;
 }
 
+// An answer names the recipe by its file name alone: where the server keeps its files is no
+// client's business.
+std::string answer_text(const InputError& e) {
+  SourceLocation where = e.where();
+  where.file = fs::path(where.file).filename().string();
+  return render_error(InputError(where, e.message()), query_key);
+}
+
 template <class F>
 ApiResponse guarded(F&& f) {
   try {
@@ -126,11 +134,14 @@ ApiResponse guarded(F&& f) {
   } catch (const app::WorkStopped& e) {
     return api_error(503, e.what());
   } catch (const ResourceLimitError& e) {
-    return api_error(413, render_error(e, query_key));
+    return api_error(413, answer_text(e));
   } catch (const InputError& e) {
-    return api_error(400, render_error(e, query_key));
+    return api_error(400, answer_text(e));
   } catch (const std::bad_alloc&) {
-    return api_error(507, "out of memory; try a smaller field or window");
+    return api_error(507,
+                     "out of memory: the request needs more memory than the server may use; ask "
+                     "for a smaller field, window, layout or picture, or start the server with a "
+                     "larger --max-memory");
   } catch (const std::exception& e) {
     return api_error(500, std::string("internal error: ") + e.what());
   }
@@ -192,9 +203,15 @@ ApiResponse api_generate(const ApiContext& c, const Params& params) {
 bool api_generate_is_light(const ApiContext& c, const Params& params) {
   try {
     const RunRequest r = read_run(params, {"cells"});
-    const app::Run s = run_for(c, r);
+    // Sized on the connection's thread from the text alone: its pictures and drawings are
+    // read in the slot it is given, within the limit on work at once.
+    app::RunRequest request = run_request(c, r);
+    request.read_files = false;
+    const app::Run s = app::resolve_run(request);
     const Box view = r.window.empty() ? s.recipe.design.field : s.view;
     return view.cells() <= kLightCells;
+  } catch (const app::FilesNeeded&) {
+    return false;  // sized by a drawing: a heavy slot
   } catch (const std::exception&) {
     return true;  // its error is answered at once
   }

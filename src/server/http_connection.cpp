@@ -17,6 +17,7 @@ using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
 thread_local int serving_socket = -1;
+thread_local bool closing_after_request = false;
 
 // Waits until `socket` can be read (or written), at most `wait`; false on timeout or error.
 bool wait_for(int socket, short events, milliseconds wait) {
@@ -127,6 +128,8 @@ bool next_request_arrives(int socket, const std::atomic<socket_t>& listening, mi
 
 int HttpServer::current_socket() { return serving_socket; }
 
+void HttpServer::close_after_this_request() { closing_after_request = true; }
+
 bool client_gone(int socket) {
   if (socket < 0) return false;
   char byte;
@@ -157,8 +160,11 @@ void HttpServer::serve(socket_t sock) {
   for (int left = limits_.requests_per_connection; left > 0; --left) {
     if (!stream.has_buffered() && !next_request_arrives(sock, svr_sock_, limits_.keep_alive)) break;
     stream.begin_request();
+    closing_after_request = false;
     bool closed = false;
-    if (!process_request(stream, left == 1, closed, nullptr) || closed || stream.failed()) break;
+    if (!process_request(stream, left == 1, closed, nullptr) || closed || stream.failed() ||
+        closing_after_request)
+      break;
   }
   serving_socket = -1;
 }

@@ -28,6 +28,9 @@ class HttpServer : public httplib::Server {
   // The socket of the request this thread is serving (-1 outside one), so that long work can
   // notice that its client has gone.
   static int current_socket();
+  // Ends the connection after the response now being made: a request that could not be framed
+  // exactly (a bad line, a body left unread) leaves bytes that must never be read as the next.
+  static void close_after_this_request();
 
  private:
   bool process_and_close_socket(socket_t sock) override;

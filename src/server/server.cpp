@@ -189,6 +189,7 @@ struct Server::Impl {
   httplib::Server::HandlerResponse screen(const httplib::Request& req, httplib::Response& res) {
     const bool api = req.path.rfind("/api/", 0) == 0;
     auto refuse = [&](int status, const std::string& message) {
+      HttpServer::close_after_this_request();  // its body, if any, is never read
       if (status == 405)
         res.set_header("Allow",
                        req.path == kUpload || req.path == kSiteUpload ? "POST" : "GET, HEAD");
@@ -217,6 +218,10 @@ struct Server::Impl {
       if (ec != std::errc() || end != length.data() + length.size())
         return refuse(400, "Content-Length '" + length + "' is not a whole number");
     }
+    // httplib reads no body for a GET: left in the connection, it would be read as a request.
+    if (!upload && bytes > 0)
+      return refuse(400,
+                    "a " + req.method + " request carries no body (Content-Length " + length + ")");
     if (bytes > limit)
       return refuse(413, std::string(upload ? "the picture" : "the request's body") +
                              " is larger than " + std::to_string(limit >> 10) + " KiB");
@@ -239,6 +244,12 @@ struct Server::Impl {
   }
 
   void routes() {
+    // The page runs its own scripts only (the import map's by its hash, which
+    // tests/server_test.cpp checks against web/index.html), and no other site may frame it.
+    http.set_default_headers({{"Content-Security-Policy", kContentSecurityPolicy},
+                              {"X-Frame-Options", "DENY"},
+                              {"X-Content-Type-Options", "nosniff"},
+                              {"Referrer-Policy", "no-referrer"}});
     http.set_payload_max_length(
         std::max(config.max_body_bytes, config.api.limits.max_upload_bytes));
     // Slow clients are dealt with by the connections (http_connection.h); the pool has a thread
@@ -298,6 +309,9 @@ struct Server::Impl {
       // Errors httplib raises itself (413 too large, 414 URI too long, 404 file): JSON for the
       // API, plain text for files.
       if (!res.body.empty()) return;
+      // httplib could not frame the request: what follows on the connection is not a request.
+      if (res.status == 400 || res.status == 413 || res.status == 414 || res.status == 431)
+        HttpServer::close_after_this_request();
       const std::string message = res.status == 413   ? "the request is too large"
                                   : res.status == 400 ? "the request is malformed"
                                   : res.status == 414 ? "the request's address is too long"

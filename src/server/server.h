@@ -12,6 +12,14 @@
 
 namespace curdle::server {
 
+// Sent with every answer: the page's own scripts only (the import map in web/index.html by its
+// SHA-256; the page test fails when they differ), its own data, and no framing by other sites.
+inline constexpr const char* kContentSecurityPolicy =
+    "default-src 'self'; script-src 'self' 'sha256-ZpiHiQ0/hV8rYv/RyV4/ZywymYW3ulNwLg6uMorfIq8='; "
+    "style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:; connect-src 'self'; "
+    "worker-src 'self' blob:; object-src 'none'; base-uri 'none'; form-action 'self'; "
+    "frame-ancestors 'none'";
+
 struct ServerConfig {
   ApiContext api;
   std::filesystem::path web_root;     // index.html, app.js, style.css

@@ -70,6 +70,8 @@ try {
   const page = await browser.newPage({ viewport: { width: 1500, height: 1000 }, acceptDownloads: true });
   const pageErrors = [];
   page.on('pageerror', (e) => { pageErrors.push(e.stack || e.message); console.log('PAGEERROR', e.stack || e.message); });
+  // The server's Content-Security-Policy must allow everything the page does.
+  page.on('console', (m) => { if (/Content.Security.Policy/i.test(m.text())) pageErrors.push(m.text()); });
   await page.goto(url);
   await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
   await page.screenshot({ path: path.join(shots, '1-loaded.png') });
