@@ -4,6 +4,7 @@
 #include <string>
 
 #include "curdle/overlay.h"
+#include "curdle/stop.h"
 #include "export/csv_field.h"
 
 namespace curdle {
@@ -15,7 +16,7 @@ void write_cells_csv(std::ostream& out, const Design& design, const CurdField& f
   std::string header = kUtf8Mark;
   for (int d = 0; d < E; ++d) header += std::string(d ? "," : "") + axes[d];
   header += ",value";
-  for (const CurdSpec& c : design.curds) header += "," + c.name;
+  for (const CurdSpec& c : design.curds) header += "," + csv_field(c.name);
   out << header << "\r\n";
 
   std::string buffer;
@@ -29,6 +30,7 @@ void write_cells_csv(std::ostream& out, const Design& design, const CurdField& f
   scan_rows(
       field, view,
       [&](int64_t y, int64_t z, std::span<const uint16_t> row) {
+        stop_point();  // a row at a time: 2048^2 cells of 16 curds is seconds of text
         for (size_t i = 0; i < row.size(); ++i) {
           put(view.origin[0] + static_cast<int64_t>(i));
           if (E >= 2) buffer += ',', put(y);

@@ -6,14 +6,13 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 #include <unordered_map>
 
 #include "curdle/error.h"
 #include "curdle/palette.h"
 #include "curdle/stop.h"
+#include "export/gltf_json.h"
 #include "layout/piece.h"
 #include "layout/triangulation.h"
 #include "layout/union.h"
@@ -543,26 +542,14 @@ tinygltf::Model build(const Layout& layout) {
 
 }  // namespace
 
-void write_glb(std::ostream& out, const Layout& layout) {
-  tinygltf::Model model = build(layout);
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, out, false, true))
-    throw std::runtime_error("tinygltf could not write the binary glTF");
-}
+void write_glb(std::ostream& out, const Layout& layout) { write_glb_container(out, build(layout)); }
 
 void write_gltf(std::ostream& json, std::ostream& bin, const std::string& bin_name,
                 const Layout& layout) {
   const tinygltf::Model model = build(layout);
   const auto& data = model.buffers[0].data;
   bin.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
-  // tinygltf's stream writer embeds buffers; point the buffer at the .bin file instead.
-  std::ostringstream embedded;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, embedded, false, false))
-    throw std::runtime_error("tinygltf could not write the glTF");
-  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(embedded.str());
-  doc["buffers"][0] = {{"byteLength", data.size()}, {"uri", bin_name}};
-  json << doc.dump(1) << "\n";
+  json << gltf_json(model, bin_name) << "\n";
 }
 
 }  // namespace curdle

@@ -7,8 +7,7 @@
 // material per value. Boxes share one mesh per material; park elements one mesh per type;
 // a perforated sheet is one solid with its openings (CGAL constrained triangulation) and each
 // opening an empty node; blocks are merged per value with the faces between neighbours left
-// out, each block an empty node. Above 20,000 boxes the uncut ones become instances
-// (EXT_mesh_gpu_instancing), their IDs in the instancing node's extras.
+// out, each block an empty node. The JSON is written by gltf_json.h, a node at a time.
 #pragma once
 
 #include <cstdint>
