@@ -37,12 +37,17 @@ std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes) {
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
   ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
   std::vector<Rect> out;
+  std::vector<Rect> across;  // the holes that meet this row: a few, where all may be thousands
   for (size_t j = 0; j + 1 < ys.size(); ++j) {
+    const Rect row{a.x, ys[j], a.w, ys[j + 1] - ys[j]};
+    across.clear();
+    for (const Rect& h : relevant)
+      if (overlaps(row, h)) across.push_back(h);
     Rect run{};
     bool open = false;
     for (size_t i = 0; i + 1 < xs.size(); ++i) {
       const Rect cell{xs[i], ys[j], xs[i + 1] - xs[i], ys[j + 1] - ys[j]};
-      const bool covered = std::any_of(relevant.begin(), relevant.end(),
+      const bool covered = std::any_of(across.begin(), across.end(),
                                        [&](const Rect& h) { return overlaps(cell, h); });
       if (!covered && open) {
         run.w += cell.w;

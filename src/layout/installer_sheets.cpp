@@ -8,6 +8,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "curdle/error.h"
 #include "curdle/stop.h"
 #include "layout/piece.h"
 #include "layout/zone.h"
@@ -516,6 +517,31 @@ bool coursed_set(const Layout& layout, double typical_w, double typical_h) {
   return std::max(typical_w, typical_h) <= kSmallUnitMm;
 }
 
+// A named scale is taken as asked, unless its set would be more sheets than a site team can
+// carry (and minutes of drawing): refused, with the scale that fits.
+void check_named_scale(const Layout& layout, const InstallerPlan& plan, double scale) {
+  auto sheets_at = [&](double n) {
+    const double across = std::ceil(layout.width / (plan.viewport[0] * n));
+    const double up = std::ceil(layout.height / (plan.viewport[1] * n));
+    return std::max(1.0, across) * std::max(1.0, up);
+  };
+  const double sheets = sheets_at(scale);
+  if (sheets <= static_cast<double>(kMostInstallerSheets)) return;
+  double fits = 0;
+  for (const double n : standard_scales())
+    if (n > scale && sheets_at(n) <= static_cast<double>(kMostInstallerSheets)) {
+      fits = n;
+      break;
+    }
+  throw InputError(
+      SourceLocation{"", 0, 0, "layout.installer_scale", ""},
+      fmt::format("1 : {:g} on {} would take about {:.0f} installer's sheets; at most {}: choose "
+                  "a smaller scale{} or larger paper (installer_paper), or leave the scale out "
+                  "and curdle chooses one",
+                  scale, plan.paper.name, sheets, kMostInstallerSheets,
+                  fits > 0 ? fmt::format(" (1 : {:g} or beyond)", fits) : ""));
+}
+
 InstallerPlan plan_installer_sheets(const Layout& layout) {
   InstallerPlan plan;
   const DrawingKeys& keys = layout.drawing;
@@ -547,6 +573,7 @@ InstallerPlan plan_installer_sheets(const Layout& layout) {
     plan.coursed = true;
     plan.landscape = true;
     plan.viewport = installer_viewport(plan.paper, true);
+    if (keys.installer_scale > 0) check_named_scale(layout, plan, keys.installer_scale);
     lay_sheets(pieces, keys.installer_scale > 0 ? keys.installer_scale : kCoursedScale, layout,
                plan);
     return plan;
@@ -558,6 +585,7 @@ InstallerPlan plan_installer_sheets(const Layout& layout) {
     return std::max(std::min(w / per_text, h / tall), std::min(h / per_text, w / tall));
   };
   if (keys.installer_scale > 0) {  // named: labels that find no room are counted on the sheet
+    check_named_scale(layout, plan, keys.installer_scale);
     plan.text_mm =
         std::clamp(text_that_fits(keys.installer_scale), kInstallerMinTextMm, kInstallerTextMm);
     place(pieces, keys.installer_scale, layout, plan);

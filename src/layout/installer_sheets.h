@@ -86,6 +86,9 @@ inline constexpr const char* kStartText = "start: row 0, column 0";
 inline constexpr double kCoursedScale = 20;
 inline constexpr double kSmallUnitMm = 300;
 
+// The most installer's sheets a named installer_scale may make (a set a trade can carry).
+inline constexpr size_t kMostInstallerSheets = 500;
+
 struct InstallerPlan {
   PaperSheet paper;
   bool coursed = false;  // pieces in colour and hatch, no IDs: `labels` is empty

@@ -276,8 +276,9 @@ void read_installer_keys(TableReader& r, DrawingKeys& drawing) {
              "sheets are drawn on");
     drawing.installer_paper = *paper;
   }
-  if (r.get("installer_scale")) {
-    const double n = read_mm(r, "installer_scale", 0, 1);
+  if (const toml::node* scale = r.get("installer_scale")) {
+    // A scale's N, not a length: any other number or text gets the scale's own message.
+    const double n = finite_number(scale).value_or(0);
     const auto& scales = standard_scales();
     if (std::find(scales.begin(), scales.end(), n) == scales.end() || n > 1000)
       r.fail("installer_scale",
