@@ -18,8 +18,14 @@ inline int exit_code(const std::function<int()>& run) {
     std::fprintf(stderr, "curdle: error: %s\n", render_error(e, option_name).c_str());
     return 2;
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "curdle: internal error: out of memory\n");
-    return 1;
+    // Bad input too: a request larger than the memory the process may have (a ulimit, a
+    // container's limit, the machine), refused when it asked for it.
+    std::fprintf(stderr,
+                 "curdle: error: out of memory: the system refused memory this run asked for "
+                 "(above what a ulimit, a container or the machine allows); ask for less: a "
+                 "smaller field, window, layout or picture, or give --max-memory a limit the "
+                 "machine can meet so that curdle refuses such runs before it starts\n");
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "curdle: internal error: %s\n", e.what());
     return 1;

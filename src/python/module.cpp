@@ -212,8 +212,16 @@ struct Skipped : app::RunObserver {
   }
 };
 
+// The run a native call was given: None (a Run made by hand, or an unbound method called
+// with None) is a TypeError, never a null run read.
+const app::GeneratedRun& generated(const Generated& g) {
+  if (!g) throw py::type_error("expected a generated run (from Recipe.generate()), got None");
+  return *g;
+}
+
 py::tuple write_outputs(const Generated& g, const std::vector<std::string>& named,
                         const std::filesystem::path& dir) {
+  generated(g);
   Skipped observer;
   const auto outputs = app::select_outputs(g->run, named, &observer);
   const auto files = run_interruptible([&](InterruptWatch&) {
@@ -344,8 +352,9 @@ void bind_run(py::module_& m) {
              return outline_rings(schedule_row(l, i).outlines);
            })
       .def("output_bytes", [](const Generated& g, const std::string& name) {
+        const app::GeneratedRun& run = generated(g);
         return py::bytes(
-            run_interruptible([&](InterruptWatch&) { return app::output_bytes(*g, name); }));
+            run_interruptible([&](InterruptWatch&) { return app::output_bytes(run, name); }));
       });
 }
 
