@@ -11,7 +11,11 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 passed=0 failed=0
 pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+fail() {
+  failed=$((failed + 1))
+  local what="$*"
+  echo "FAIL: ${what:0:600}"
+}
 p="$src/patterns"
 
 # Runs curdle (at most 60 s), expecting exit 2, a message containing $1, and no output.
@@ -87,6 +91,91 @@ section_options() {
   refused "at most 2^40 cells" search "$f3" --seeds 1..1 --target empty=4611687117939015680,0,4611686018427387904,1
   refused "at most 2^40 seeds" search "$f3" --seeds 0..18446744073709551614
   refused "above the budget" search "$f3" --set 'field.cells=[1024,1024]' --seeds 0..100000000
+}
+
+# Round 4: pictures that would be minutes of decoding, keys deep enough to overflow a stack,
+# unbounded sheet sets, a formula in a CSV header, and --out through links and locks.
+section_round4() {
+  local d="$work/r4" f3="$p/paper/fig3-two-curds.toml"
+  mkdir -p "$d"
+  python3 - "$d" <<'PY'
+import struct, sys, zlib
+d = sys.argv[1]
+chunk = lambda t, b: struct.pack('>I', len(b)) + t + b + struct.pack('>I', zlib.crc32(t + b))
+def png(extra=b''):
+    raw = zlib.compress(b''.join(b'\0' + b'\x80' * 16 for _ in range(16)))
+    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', 16, 16, 8, 0, 0, 0, 0))
+            + extra + chunk(b'IDAT', raw) + chunk(b'IEND', b''))
+ztxt = chunk(b'zTXt', b'Comment\0\0' + zlib.compress(b' ' * 100000, 9))
+open(f'{d}/ztxt.png', 'wb').write(png(ztxt * 40))
+# A progressive JPEG whose frame is followed by 300 scans of a byte each.
+sof2 = b'\xff\xc2' + struct.pack('>HBHHB', 11, 8, 16, 16, 1) + b'\x01\x11\x00'
+sos = b'\xff\xda' + struct.pack('>HB', 8, 1) + b'\x01\x00\x00\x3f\x00' + b'\x00'
+open(f'{d}/scans.jpg', 'wb').write(b'\xff\xd8' + sof2 + sos * 300 + b'\xff\xd9')
+# A TIFF of 65,535 samples a pixel, each plane in its own tiles.
+def tiff(tags):
+    ifd = struct.pack('<H', len(tags)) + b''.join(struct.pack('<HHII', t, 4, 1, v) for t, v in tags) + b'\0' * 4
+    return b'II*\0' + struct.pack('<I', 8) + ifd
+open(f'{d}/planes.tif', 'wb').write(tiff([(256, 16), (257, 16), (277, 65535), (284, 2), (322, 16), (323, 16)]))
+open(f'{d}/picture.dng', 'wb').write(png())  # a PNG under a raw camera file's name
+PY
+  for picture in ztxt.png scans.jpg planes.tif picture.dng; do
+    sed "s|^mask = .*|mask = \"$picture\"|" "$p/gallery-facade-mask.toml" > "$d/${picture%.*}.toml"
+    cp "$p/gallery-facade-mask.toml" "$d/original.toml"
+  done
+  refused "more than 16 compressed text" generate "$d/ztxt.toml"
+  refused "more than 256 scans" generate "$d/scans.toml"
+  refused "65535 samples per pixel" generate "$d/planes.toml"
+  # Read as the PNG its bytes are, not as a camera's raw file: the mask is all mid grey.
+  timeout 60 "$curdle" generate "$d/picture.toml" --outputs report.json --out "$d/dng" > /dev/null 2>&1 \
+    && pass || fail "a PNG named .dng was not read as a PNG"
+  for deep in "$(python3 -c "print('a' + '.a' * 60000 + ' = 1')")" "[$(python3 -c "print('a' + '.a' * 60000)")]"; do
+    { cat "$f3"; echo "$deep"; } > "$d/deep.toml"
+    refused "at most 64" generate "$d/deep.toml"
+    timeout 60 "$curdle" report "$d/deep.toml" > /dev/null 2> "$d/report.err"
+    [ $? -eq 2 ] && grep -q "at most 64" "$d/report.err" && pass || fail "report of a deep key: $(head -c 200 "$d/report.err")"
+  done
+  refused "at most 64" generate "$f3" --set "$(python3 -c "print('a' + '.a' * 60000)")=1"
+  refused "more than one value" generate "$f3" --set $'name="x"\nseed=5'
+  refused "not a recipe key" generate "$f3" --set $'name\nseed=5'
+  refused "installer's sheets; at most 500" generate "$p/terrace-hexagon-tree-pit.toml" \
+    --set layout.installer_scale=1 --set 'layout.installer_paper="A4"' --outputs layout.pdf
+  refused "standard scale's N" generate "$f3" --set 'layout={kind="paving",tile=[300,300],floor=[3000,3000],installer_scale="1:20"}'
+  # A thousand small exclude zones on a 6 x 4 m floor: every default output, in seconds (it was
+  # 100 s); the timeout only guards against a hang, the time itself is for benchmarks.
+  python3 - "$p/courtyard-l-shaped.toml" "$d/zones.toml" <<'PY'
+import random, sys
+text = open(sys.argv[1]).read().split('[[layout.zones]]')[0]
+text = text.replace(text[text.index('outline = '):].split('\n')[0], 'floor = [6000, 4000]')
+text = text.replace('tile = [600, 300]', 'tile = [100, 100]')
+random.seed(1)
+zones = ['[[layout.zones]]\nname = "z%d"\nrect = [%d, %d, 60, 60]\nrule = "exclude"\n'
+         % (i, random.uniform(0, 5900), random.uniform(0, 3900)) for i in range(1000)]
+open(sys.argv[2], 'w').write(text + '\n'.join(zones))
+PY
+  timeout 120 "$curdle" generate "$d/zones.toml" --out "$d/zones" > /dev/null 2> "$d/zones.err" \
+    && [ -f "$d/zones/layout.glb" ] && pass || fail "1,000 zones: $(head -c 300 "$d/zones.err")"
+  # A curd named as a formula is text in cells.csv's header, as in schedule.csv's rows.
+  timeout 60 "$curdle" generate "$f3" --set 'curds.0.name="=cmd"' --outputs cells.csv --out "$d/formula" > /dev/null 2>&1
+  head -1 "$d/formula/cells.csv" | grep -q ",'=cmd," && pass || fail "cells.csv's header: $(head -1 "$d/formula/cells.csv")"
+  # --out through a link: the set goes where it points, and the link stays a link.
+  mkdir -p "$d/target"
+  ln -s "$d/target" "$d/link"
+  timeout 60 "$curdle" generate "$f3" --outputs report.json --out "$d/link" > /dev/null 2>&1 \
+    && [ -L "$d/link" ] && [ -f "$d/target/report.json" ] && pass || fail "--out through a link: $(ls -la "$d")"
+  # A directory that exists but may not be written: said so, not "cannot create".
+  if [ "$(id -u)" -ne 0 ]; then
+    mkdir -p "$d/locked" && chmod 555 "$d/locked"
+    timeout 60 "$curdle" generate "$f3" --out "$d/locked" > /dev/null 2> "$d/locked.err"
+    [ $? -eq 2 ] && grep -q "exists but is not writable" "$d/locked.err" && pass \
+      || fail "a read-only --out: $(head -c 200 "$d/locked.err")"
+  fi
+  # Memory the system refuses (a ulimit) is bad input too: exit 2 and what to do.
+  (ulimit -v 400000; timeout 60 "$curdle" generate "$p/driveway-herringbone-45.toml" \
+    --set 'layout.floor=[200000,200000]' --out "$d/oom" > "$d/oom.out" 2>&1)
+  local got=$?
+  [ "$got" -eq 2 ] && grep -q "out of memory\|memory limit" "$d/oom.out" && [ ! -e "$d/oom" ] \
+    && pass || fail "memory refused by a ulimit: exit $got: $(head -c 300 "$d/oom.out")"
 }
 
 # Site drawings: every broken or hostile DXF is refused with the file, layer and handle and what
@@ -226,9 +315,10 @@ section_server() {
   for _ in $(seq 50); do grep -q "open http" "$work/serve.out" && break; sleep 0.1; done
   local port
   port=$(sed -n 's/.*127\.0\.0\.1:\([0-9]*\).*/\1/p' "$work/serve.out")
-  python3 - "$port" <<'PY' && pass || fail "hostile requests"
-import http.client, json, socket, sys, time
+  python3 - "$port" "$src" <<'PY' && pass || fail "hostile requests"
+import http.client, json, socket, struct, sys, time, zlib
 port = int(sys.argv[1])
+source = sys.argv[2]
 def get(path, headers=None, method="GET"):
     c = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
     c.request(method, path, headers=headers or {})
@@ -273,6 +363,49 @@ start = time.time()
 got, _ = get("/api/recipe")
 if got != 200 or time.time() - start > 5: print("FAIL slow clients", got, time.time() - start); bad += 1
 for s in slow: s.close()
+# One request that cannot be framed exactly gets one answer, and its connection ends there:
+# a body on a GET, or a bad line, is never read as a request of its own.
+host = "Host: 127.0.0.1:%d\r\n" % port
+inner = "GET /api/recipe HTTP/1.1\r\n" + host + "\r\n"
+for raw in ("GET /api/recipe HTTP/1.1\r\n" + host + "Content-Length: %d\r\n\r\n" % len(inner) + inner,
+            "NOT A REQUEST LINE\r\n" + inner + inner):
+    s = socket.create_connection(("127.0.0.1", port), timeout=10)
+    s.sendall(raw.encode())
+    answer = b""
+    while True:
+        chunk = s.recv(65536)
+        if not chunk: break
+        answer += chunk
+    s.close()
+    if answer.count(b"HTTP/1.1 ") != 1 or b" 400 " not in answer.split(b"\r\n")[0]:
+        print("FAIL desync", repr(raw[:40]), answer.count(b"HTTP/1.1 "), answer[:80]); bad += 1
+# Every answer says no other site may frame the page or run scripts in it.
+c = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
+c.request("GET", "/")
+r = c.getresponse(); r.read()
+if r.getheader("X-Frame-Options") != "DENY" or "frame-ancestors 'none'" not in (r.getheader("Content-Security-Policy") or ""):
+    print("FAIL headers", r.getheaders()); bad += 1
+# An error in the recipe names it by its file name, never by where the server keeps it.
+got, body = get("/api/generate?field.cells=%5B5,5%5D")
+if got != 400 or source.encode() in body or b"fig8-segment-of-large-curd.toml:" not in body:
+    print("FAIL a server path in an answer", body[:300]); bad += 1
+# A picture is decoded as what its bytes are: a PNG named .dng or .dcm is a PNG; a JPEG of
+# 300 scans is refused before it is decoded.
+chunk = lambda t, b: struct.pack('>I', len(b)) + t + b + struct.pack('>I', zlib.crc32(t + b))
+raw = zlib.compress(b''.join(b'\0' + bytes((x * y) % 256 for x in range(64)) for y in range(64)))
+png = (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', 64, 64, 8, 0, 0, 0, 0))
+       + chunk(b'IDAT', raw) + chunk(b'IEND', b''))
+sof2 = b'\xff\xc2' + struct.pack('>HBHHB', 11, 8, 16, 16, 1) + b'\x01\x11\x00'
+sos = b'\xff\xda' + struct.pack('>HB', 8, 1) + b'\x01\x00\x00\x3f\x00' + b'\x00'
+scans = b'\xff\xd8' + sof2 + sos * 300 + b'\xff\xd9'
+for name, body, status, words in (("x.dng", png, 200, b"\"size\":[64,64]"), ("x.dcm", png, 200, b"\"size\":[64,64]"),
+                                  ("x.rla", png, 200, b"\"size\":[64,64]"), ("scans.jpg", scans, 400, b"256 scans")):
+    c = http.client.HTTPConnection("127.0.0.1", port, timeout=60)
+    c.request("POST", "/api/measure?name=" + name, body=body,
+              headers={"Content-Type": "application/octet-stream"})
+    r = c.getresponse(); answer = r.read()
+    if r.status != status or words not in answer:
+        print("FAIL upload", name, r.status, answer[:300]); bad += 1
 got, body = get("/api/generate?seed=3&cells=0")
 if got != 200: print("FAIL the server no longer answers", got); bad += 1
 sys.exit(1 if bad else 0)

@@ -187,6 +187,63 @@ class Calls(unittest.TestCase):
         with self.assertRaises(curdle.InputError):
             curdle.Recipe.from_file(SOURCE / "patterns")  # a directory, not a recipe
 
+    def test_hostile_calls_raise_and_never_crash(self):
+        # A run that is None: a TypeError from every native entry, never a null run read.
+        native = curdle._curdle
+        for call in (lambda: curdle.Run(None, None).write(out="never"),
+                     lambda: native.write(None, [], "never"),
+                     lambda: native.GeneratedRun.output_bytes(None, "report.json")):
+            with self.assertRaises(TypeError):
+                call()
+        self.assertFalse(os.path.exists("never"))
+        # A key of 60,000 parts (under the 1 MiB a recipe may have): refused, not a stack overflow.
+        deep = "a" + ".a" * 60000
+        base = (SOURCE / "patterns/paper/fig3-two-curds.toml").read_text()
+        for text in (base + deep + " = 1\n", base + "[" + deep + "]\n"):
+            with self.assertRaises(curdle.InputError) as caught:
+                curdle.Recipe.from_text(text, "deep.toml").generate()
+            self.assertIn("at most 64", str(caught.exception))
+        recipe = curdle.Recipe.from_file(SOURCE / "patterns/paper/fig3-two-curds.toml")
+        with self.assertRaises(curdle.InputError):
+            recipe.generate(overrides={deep: 1})
+        # A line break in an override's key or value cannot smuggle in a second key.
+        for overrides in ({'name="x"\nseed': 5}, {"name": '"x"\nseed = 5'}):
+            with self.assertRaises(curdle.InputError, msg=overrides):
+                recipe.generate(overrides=overrides)
+
+    def test_two_threads_writing_one_directory_lose_nothing_silently(self):
+        import threading
+        recipe = curdle.Recipe.from_file(SOURCE / "patterns/paper/fig7-paving-20m.toml")
+        runs = [recipe.generate(seed=s) for s in (1, 2)]
+        outputs = ["report.json", "cells.csv", "preview.png", "layout.svg", "schedule.csv"]
+        with tempfile.TemporaryDirectory() as tmp:
+            out = Path(tmp) / "out"
+            results = [None, None]
+            start = threading.Barrier(2)
+
+            def write(i):
+                start.wait()
+                try:
+                    results[i] = runs[i].write(outputs, out=out)
+                except curdle.InputError as e:
+                    results[i] = e
+            threads = [threading.Thread(target=write, args=(i,)) for i in (0, 1)]
+            for t in threads:
+                t.start()
+            for t in threads:
+                t.join()
+            # The set in `out` is one run's whole, and a run whose set is not there said so.
+            seed = json.loads((out / "report.json").read_text())["seed"]
+            self.assertEqual(sorted(p.name for p in out.iterdir()), sorted(outputs))
+            kept = [i for i in (0, 1) if runs[i].seed == seed][0]
+            self.assertIsInstance(results[kept], list)
+            other = results[1 - kept]
+            if isinstance(other, list):  # it finished first, and was then replaced whole
+                pass
+            else:
+                self.assertIn("another run wrote", str(other))
+            self.assertEqual([p.name for p in Path(tmp).iterdir()], ["out"])  # no staging left
+
     def test_search_measure_and_fit(self):
         recipe = curdle.Recipe.from_file(SOURCE / "patterns/paper/fig7-three-stages.toml")
         hits = curdle.search(recipe, seeds=range(1, 41), targets=["ratio=0.12"], top=3)
