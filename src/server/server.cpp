@@ -264,8 +264,10 @@ struct Server::Impl {
       int yes = 1;
       setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
     });
+    // The recipe reads its pictures and drawings: in the light slot, so that a hundred page
+    // loads decode them one at a time, never all at once.
     http.Get("/api/recipe", [this](const httplib::Request&, httplib::Response& res) {
-      reply(res, api_recipe(config.api));
+      run_in(light_slot, res, [&] { return api_recipe(config.api); });
     });
     http.Get("/api/colours", [this](const httplib::Request& req, httplib::Response& res) {
       reply(res, api_colours(query_params(req.target)));
