@@ -92,7 +92,7 @@ class ServerTest : public ::testing::Test {
     EXPECT_TRUE(r) << path;
     if (!r) return {};
     EXPECT_EQ(r->status, status) << path << ": " << r->body;
-    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json") << path;
+    EXPECT_EQ(r->get_header_value("Content-Type"), kJsonType) << path;
     return json::parse(r->body);
   }
   // The CLI's file for the same recipe, seed, overrides and window.
@@ -505,6 +505,18 @@ TEST_F(ServerTest, AClientSlowToSendItsFirstRequestIsAnswered) {
   const ssize_t n = ::recv(fd, answer, sizeof answer - 1, 0);
   ::close(fd);
   EXPECT_EQ(std::string(answer, n > 0 ? static_cast<size_t>(n) : 0).substr(0, 12), "HTTP/1.1 200");
+}
+
+// The page's generate is never brotli- or gzip-compressed, whatever the browser accepts: over
+// loopback compression was nearly all of its time.
+TEST_F(ServerTest, TheApisJsonIsNotCompressed) {
+  httplib::Client client("127.0.0.1", port_);
+  client.set_read_timeout(120, 0);
+  auto r = client.Get("/api/generate?seed=3", {{"Accept-Encoding", "gzip, deflate, br"}});
+  ASSERT_TRUE(r) << httplib::to_string(r.error());
+  EXPECT_EQ(r->status, 200);
+  EXPECT_FALSE(r->has_header("Content-Encoding")) << r->get_header_value("Content-Encoding");
+  EXPECT_EQ(r->body.front(), '{');
 }
 
 TEST_F(ServerTest, ThePageIsServedFromItsFiles) {

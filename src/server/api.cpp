@@ -149,7 +149,7 @@ ApiResponse guarded(F&& f) {
 
 const char* content_type(const std::string& name) {
   const std::string ext = fs::path(name).extension().string();
-  if (ext == ".json") return "application/json";
+  if (ext == ".json") return kJsonType;
   if (ext == ".csv") return "text/csv; charset=utf-8";
   if (ext == ".png") return "image/png";
   if (ext == ".svg") return "image/svg+xml";

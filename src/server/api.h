@@ -28,9 +28,14 @@ struct ApiContext {
   const std::atomic<bool>* stopping = nullptr;  // set on shutdown: long searches end early
 };
 
+// The API's JSON answers: UTF-8, never compressed (the page and its API share one machine).
+inline constexpr const char* kJsonType = "application/json; charset=utf-8";
+
 struct ApiResponse {
   int status = 200;
-  std::string content_type = "application/json";
+  // With its charset, which httplib does not compress: brotli took 0.26 s of a page-sized
+  // generate's 0.26 s over loopback (90 KB of JSON; 4 ms without it).
+  std::string content_type = kJsonType;
   std::string body;
   std::string filename;  // set for downloads
 };

@@ -320,7 +320,7 @@ struct Server::Impl {
                                   : res.status == 404 ? "not found: " + req.path
                                                       : "request failed";
       if (req.path.rfind("/api/", 0) == 0)
-        res.set_content(api_error(res.status, message).body, "application/json");
+        res.set_content(api_error(res.status, message).body, kJsonType);
       else
         res.set_content(message + "\n", "text/plain");
     });

@@ -54,7 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   else
     r = curdle::server::api_generate(context, params);
   if (r.status < 200 || r.status > 599) __builtin_trap();
-  if (r.status != 200 || r.content_type == "application/json")
+  if (r.status != 200 || r.content_type == curdle::server::kJsonType)
     if (!nlohmann::json::accept(r.body)) __builtin_trap();  // an answer the page can read
   return 0;
 }
