@@ -1,17 +1,27 @@
 #!/usr/bin/env bash
 # Installs what curdle needs to build, test and benchmark, from Debian packages only.
 # Idempotent: installs only what is missing, and runs `apt-get update` at most once.
+# Usage: setup.sh           everything: the build, the tests' readers (Blender, Chromium, ezdxf,
+#                           poppler, rsvg, Node.js and the npm packages) and clang-format
+#        setup.sh --main    what building and running curdle needs, for README command 1
 set -euo pipefail
+
+main_only=false
+[ "${1:-}" = "--main" ] && main_only=true
 
 packages=(
   cmake g++ make pkg-config
   libcgal-dev libopenimageio-dev libtinygltf-dev libtomlplusplus-dev libcli11-dev
   libfmt-dev nlohmann-json3-dev libexpat1-dev libdxflib-dev libsvgpp-dev libxml2-dev librandom123-dev libtbb-dev libcpp-httplib-dev libgtest-dev libbenchmark-dev
   libcairo2-dev fonts-dejavu-core zlib1g-dev
-  python3 python3-dev python3-numpy pybind11-dev blender python3-ezdxf librsvg2-bin libxml2-utils poppler-utils chromium clang-format
+  python3 python3-dev python3-numpy pybind11-dev
 )
-# Node.js and npm for the glTF validator and the browser checks, when the machine has none.
-command -v node > /dev/null || packages+=(nodejs npm)
+if ! $main_only; then
+  # The programs the tests read every output back with.
+  packages+=(blender python3-ezdxf librsvg2-bin libxml2-utils poppler-utils chromium clang-format)
+  # Node.js and npm for the glTF validator and the browser checks, when the machine has none.
+  command -v node > /dev/null || packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -27,6 +37,8 @@ if ((${#missing[@]})); then
 else
   echo "setup: all packages present"
 fi
+
+$main_only && exit 0
 
 # The npm packages of the glTF and browser checks, as locked in tests/js/package-lock.json.
 js="$(cd "$(dirname "$0")" && pwd)/tests/js"
