@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <iterator>
+
 namespace curdle {
 
 std::string segment_text(const Layout& layout) {
@@ -9,13 +11,15 @@ std::string segment_text(const Layout& layout) {
   const Box& f = layout.source.field;
   const int e = layout.source.lattice.dimension;
   if (v == f || f.cells() <= 1) return "";
+  // fmt rather than chains of string +, on which GCC 12 warns falsely (-Wrestrict).
   std::string at, size, whole;
   for (int d = 0; d < e; ++d) {
-    at += (d ? "," : "") + std::to_string(v.origin[static_cast<size_t>(d)]);
-    size += (d ? "," : "") + std::to_string(v.size[static_cast<size_t>(d)]);
-    whole += (d ? " x " : "") + std::to_string(f.size[static_cast<size_t>(d)]);
+    const auto i = static_cast<size_t>(d);
+    fmt::format_to(std::back_inserter(at), "{}{}", d ? "," : "", v.origin[i]);
+    fmt::format_to(std::back_inserter(size), "{}{}", d ? "," : "", v.size[i]);
+    fmt::format_to(std::back_inserter(whole), "{}{}", d ? " x " : "", f.size[i]);
   }
-  return "window " + at + "," + size + " of the " + whole + " field";
+  return fmt::format("window {},{} of the {} field", at, size, whole);
 }
 
 std::vector<std::string> title_lines(const Layout& layout) {
