@@ -80,8 +80,10 @@ std::string dxf_text(const std::string& text) { return dxf_encoded(text, "", ' '
 
 DxfDocument::DxfDocument(const std::filesystem::path& path, const std::vector<DxfLayer>& layers,
                          const Rect& extents) {
-  dw_.reset(dxf_.out(path.c_str(), DL_Codes::AC1015));
-  if (!dw_) throw InputError("cannot write " + path.string());
+  // R2000 (AC1015), dxf_'s own version from its construction, through a buffered writer.
+  path_ = path;
+  dw_ = std::make_unique<BufferedDxfWriter>(path);
+  if (dw_->failed()) throw InputError("cannot write " + path.string());
   DL_WriterA& dw = *dw_;
   dxf_.writeHeader(dw);
   // Millimetres, metric, and where the drawing lies, so that it opens at true size and in view.
@@ -219,7 +221,7 @@ void DxfDocument::close() {
   closed_ = true;
   dw_->sectionEnd();
   dw_->dxfEOF();
-  dw_->close();
+  if (!dw_->finish()) throw InputError("cannot write " + path_.string() + " (is the disk full?)");
 }
 
 }  // namespace curdle

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "export/dxf_writer.h"
 #include "layout/layout.h"
 
 namespace curdle {
@@ -49,7 +50,8 @@ class DxfDocument {
 
  private:
   DL_Dxf dxf_;
-  std::unique_ptr<DL_WriterA> dw_;
+  std::unique_ptr<BufferedDxfWriter> dw_;
+  std::filesystem::path path_;
   bool closed_ = false;
 };
 
