@@ -14,9 +14,16 @@ void write_cells_csv(std::ostream& out, const Design& design, const CurdField& f
   const int E = design.lattice.dimension;
   static const char* axes[] = {"x", "y", "z"};
   std::string header = kUtf8Mark;
-  for (int d = 0; d < E; ++d) header += std::string(d ? "," : "") + axes[d];
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on chains of string +.
+  for (int d = 0; d < E; ++d) {
+    if (d) header += ',';
+    header += axes[d];
+  }
   header += ",value";
-  for (const CurdSpec& c : design.curds) header += "," + csv_field(c.name);
+  for (const CurdSpec& c : design.curds) {
+    header += ',';
+    header += csv_field(c.name);
+  }
   out << header << "\r\n";
 
   std::string buffer;

@@ -136,9 +136,10 @@ TEST(CutRules, TheAdvisedShiftLeavesWhatTheNoteSaysAndTheRestAreNamedAsSpecials)
     const Layout moved = facade(*note.shift, 50, bond);
     EXPECT_EQ(slivers_of(moved, 50), note.leaves) << note.text;
     EXPECT_LT(note.leaves, slivers_of(plain, 50)) << note.text;
-    if (note.leaves)
+    if (note.leaves) {
       EXPECT_EQ(specials_named(note.text.substr(note.text.find("specials"))), note.leaves)
           << note.text;
+    }
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iterator>
 
 #include "curdle/error.h"
 #include "layout/zone.h"
@@ -20,10 +21,11 @@ std::string number(double v) { return fmt::format("{:.9g}", v); }
 std::string contour_toml(const Contour& c) {
   std::string text = "[";
   for (size_t i = 0; i < c.size(); ++i) {
-    text += i ? "," : "";
-    text += "[" + number(c[i].x) + "," + number(c[i].y);
-    if (c[i].bulge != 0) text += "," + fmt::format("{:.17g}", c[i].bulge);
-    text += "]";
+    // fmt rather than chains of string +, on which GCC 12 warns falsely (-Wrestrict).
+    fmt::format_to(std::back_inserter(text), "{}[{},{}", i ? "," : "", number(c[i].x),
+                   number(c[i].y));
+    if (c[i].bulge != 0) fmt::format_to(std::back_inserter(text), ",{:.17g}", c[i].bulge);
+    text += ']';
   }
   return text + "]";
 }
@@ -101,8 +103,8 @@ ordered_json study_site(const Run& run, const SiteStudyRequest& r) {
     if (const auto rect = as_rectangle(o)) {
       const Rect& b = *rect;
       if (probe.kind->take_opening(probe, {b.x, b.y, b.w, b.h})) {
-        windows += (windows.empty() ? "" : ",") +
-                   fmt::format("[{},{},{},{}]", number(b.x), number(b.y), number(b.w), number(b.h));
+        fmt::format_to(std::back_inserter(windows), "{}[{},{},{},{}]", windows.empty() ? "" : ",",
+                       number(b.x), number(b.y), number(b.w), number(b.h));
         continue;
       }
     }

@@ -33,11 +33,15 @@ double snapped(double mm) {
 
 // 14000 as "14,000"; 2.5 as "2.5".
 std::string grouped(double v) {
-  std::string digits = fmt::format("{:.0f}", std::fabs(std::round(v)));
-  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
-    digits.insert(static_cast<size_t>(i), ",");
-  if (std::fabs(v - std::round(v)) > 1e-6) digits = fmt::format("{:g}", std::fabs(v));
-  return (v < 0 ? "-" : "") + digits;
+  if (std::fabs(v - std::round(v)) > 1e-6) return fmt::format("{:g}", v);
+  // Grouped by hand, appended piece by piece (GCC 12 warns falsely on insert and +).
+  const std::string digits = fmt::format("{:.0f}", std::fabs(std::round(v)));
+  std::string out = v < 0 ? "-" : "";
+  for (size_t i = 0; i < digits.size(); ++i) {
+    if (i && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
 }
 
 struct Piece {
