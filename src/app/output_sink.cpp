@@ -119,7 +119,8 @@ StagingDirectory::StagingDirectory(fs::path dir,
   found_ = identity(absolute);
   // Replaced whole when the directory is new, or holds nothing but this program's outputs.
   whole_ = absolute.has_filename() && absolute != fs::current_path(ec);
-  // Swapping a directory in rewrites its "..": the directory itself must be writable too.
+  // The new set is staged beside the directory: where its parent may not be written, the
+  // files are renamed into the directory one by one instead.
   if (whole_ && fs::exists(absolute, ec) && ::access(absolute.parent_path().c_str(), W_OK) != 0)
     whole_ = false;
   if (whole_ && fs::exists(absolute, ec)) {
