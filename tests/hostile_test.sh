@@ -278,7 +278,10 @@ section_kills() {
   local interrupted=0
   for delay in 0.02 0.05 0.1 0.2 0.3 0.5; do
     for signal in INT TERM; do
-      "$curdle" generate "$f7" --seed 2 --set 'field.cells=[3000,3000]' --window 10,10,67,67 \
+      # A run of about 0.2 s in release (cells.csv of 2.25 M rows), so that some signals come
+      # while it works and some after it has finished.
+      "$curdle" generate "$p/paper/fig7-three-stages.toml" --seed 2 --set 'field.cells=[3000,3000]' \
+        --window 10,10,1500,1500 \
         --outputs report.json,cells.csv,preview.png --out "$work/kill/out" > /dev/null 2>&1 &
       local pid=$!
       sleep "$delay"
