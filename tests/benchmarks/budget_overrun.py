@@ -5,6 +5,8 @@ zTXt chunks sent to /api/measure, layout.glb of a 1024 x 1024-tile floor, cells.
 2048 x 2048 field of 16 curds, and the same cells.csv from a client that leaves after a second)
 plus a page-sized generate beside them. Prints each answer's status, time, time over budget and
 the server's peak memory; the worst ratio of time to budget is the result (goal: none over 2).
+Then twelve page-sized generates at once on a recipe whose density is a 4096^2 RGBA16 picture:
+the server's peak memory, which stays near one decode's since pictures are read in a slot.
 Usage: budget_overrun.py [BUILD_DIR] [BUDGET_SECONDS]"""
 import http.client, os, socket, struct, subprocess, sys, threading, time, zlib
 
@@ -94,3 +96,42 @@ finally:
     server.terminate()
     server.wait()
 print("worst: %.2fx the budget (goal: at most 2x)" % worst)
+
+# Twelve page-sized generates at once, each reading a 4096^2 RGBA16 density picture of 138 KB.
+import re, shutil, tempfile
+folder = tempfile.mkdtemp()
+rows = zlib.compress(b"".join(b"\0" + bytes(4096 * 8) for _ in range(4096)), 9)
+with open(os.path.join(folder, "density.png"), "wb") as f:
+    f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 4096, 4096, 16, 6, 0, 0, 0))
+            + chunk(b"IDAT", rows) + chunk(b"IEND", b""))
+plaza = open(os.path.join(root, "patterns/plaza-radial-density.toml")).read()
+plaza = re.sub(r"\[curds\.density\]\n(?:[^\[\n].*\n)*", '[curds.density]\nkind = "image"\n'
+               'path = "density.png"\nvalues = [0, 2]\n\n', plaza, count=1)
+with open(os.path.join(folder, "plaza.toml"), "w") as f:
+    f.write(plaza)
+port += 1
+server = subprocess.Popen([os.path.join(build, "curdle"), "serve", os.path.join(folder, "plaza.toml"),
+                           "--port", str(port)], stdout=subprocess.DEVNULL)
+try:
+    for _ in range(100):
+        try:
+            request("GET", "/api/colours?colour=%23000000")
+            break
+        except OSError:
+            time.sleep(0.1)
+    idle = peak_mb()
+    results = []
+    start = time.perf_counter()
+    threads = [threading.Thread(target=lambda s=s: results.append(request("GET", "/api/generate?seed=%d" % s)))
+               for s in range(12)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    statuses = sorted({r[0] for r in results})
+    print("12 generates with a 4096^2 density picture: statuses %s, %.2f s, peak %.0f MB (idle %.0f MB)"
+          % (statuses, time.perf_counter() - start, peak_mb(), idle))
+finally:
+    server.terminate()
+    server.wait()
+    shutil.rmtree(folder)
