@@ -244,8 +244,8 @@ struct Server::Impl {
   }
 
   void routes() {
-    // The page runs its own scripts only (the import map's by its hash, which
-    // tests/server_test.cpp checks against web/index.html), and no other site may frame it.
+    // The page runs its own scripts only (the import map's by its hash: tests/js/page.mjs fails
+    // on any report of the policy), and no other site may frame it.
     http.set_default_headers({{"Content-Security-Policy", kContentSecurityPolicy},
                               {"X-Frame-Options", "DENY"},
                               {"X-Content-Type-Options", "nosniff"},
