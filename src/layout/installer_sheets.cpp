@@ -5,11 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <string_view>
 #include <unordered_map>
 
-#include "curdle/error.h"
 #include "curdle/stop.h"
+#include "layout/installer_sheet_grid.h"
 #include "layout/piece.h"
 #include "layout/zone.h"
 
@@ -18,8 +17,6 @@ namespace {
 
 constexpr double kRowStripMm = 14;    // row numbers, left of the frame
 constexpr double kColumnStripMm = 8;  // column numbers, under the frame
-constexpr double kBandMm = 16;        // paper around the layout for labels beside edge pieces
-constexpr double kNarrowBandMm = 8;   // at least a label's height and its gap
 constexpr size_t kScalesTried = 6;    // smaller scales tried when labels do not all find room
 
 bool contains(const Rect& outer, const Rect& inner) {
@@ -150,136 +147,9 @@ class PlacedLabels {
   std::unordered_map<int64_t, std::vector<Item>> buckets_;
 };
 
-Rect centred(double cx, double cy, double w, double h) { return {cx - w / 2, cy - h / 2, w, h}; }
-
 // Where a leader from the piece's centre meets its label: the box's nearest point.
 Point leader_end(const std::array<double, 2>& anchor, const Rect& box) {
   return {std::clamp(anchor[0], box.x, box.right()), std::clamp(anchor[1], box.y, box.top())};
-}
-
-Rect spanning(double xa, double ya, double xb, double yb) {
-  return {std::min(xa, xb), std::min(ya, yb), std::fabs(xb - xa), std::fabs(yb - ya)};
-}
-
-constexpr double kCaptionBandMm = 4.5;  // match-line captions' strip inside the sheet's edge
-
-// Both sides of every edge two sheets share carry a caption naming the sheet beyond.
-std::vector<MatchCaption> match_captions(const InstallerPlan& plan) {
-  std::vector<MatchCaption> captions;
-  const double band = kCaptionBandMm * plan.scale;
-  auto index = [&](size_t r, size_t c) { return r * plan.grid_columns + c; };
-  for (size_t i = 0; i < plan.sheets.size(); ++i) {
-    const InstallerSheet& s = plan.sheets[i];
-    const Rect& w = s.window;
-    auto add = [&](size_t other, bool vertical, double edge_x, double edge_y) {
-      MatchCaption c{i, other, {}, vertical};
-      const double length =
-          label_width_mm(match_caption_text(c).size(), kMatchCaptionMm) * plan.scale;
-      c.box = centred(edge_x, edge_y, vertical ? band : length, vertical ? length : band);
-      captions.push_back(c);
-    };
-    const double mx = w.x + w.w / 2, my = w.y + w.h / 2;
-    if (s.column > 0) add(index(s.row, s.column - 1), true, w.x + band / 2, my);
-    if (s.column + 1 < plan.grid_columns)
-      add(index(s.row, s.column + 1), true, w.right() - band / 2, my);
-    if (s.row > 0) add(index(s.row - 1, s.column), false, mx, w.y + band / 2);
-    if (s.row + 1 < plan.grid_rows) add(index(s.row + 1, s.column), false, mx, w.top() - band / 2);
-  }
-  return captions;
-}
-
-// The start corner's dot, arrows and words (kStartDotMm...), as two strips outside the corner.
-std::vector<Rect> start_corner_area(const Layout& layout, double scale) {
-  if (!layout.kind->laid_from_corner()) return {};
-  const double X = from_right(layout.origin) ? layout.width : 0;
-  const double Y = from_top(layout.origin) ? layout.height : 0;
-  const double sx = from_right(layout.origin) ? -1 : 1;  // into the layout
-  const double sy = from_top(layout.origin) ? -1 : 1;
-  const double near = (kStartDotMm - 1.5) * scale, far = (kStartDotMm + 2) * scale;
-  const double words = label_width_mm(std::string_view(kStartText).size(), kStartTextMm);
-  const double along = (kStartDotMm + kStartArrowMm + 2 + words) * scale;
-  const double up = (kStartArrowMm + 1) * scale;
-  return {spanning(X - sx * far, Y - sy * far, X + sx * along, Y - sy * near),
-          spanning(X - sx * far, Y - sy * far, X - sx * near, Y + sy * up)};
-}
-
-// Where sheets meet along one axis, covering [from, to] with as few sheets as `length` allows:
-// each edge, within the slack the sheets leave, where the fewest pieces cross (a joint, so that
-// pieces are not split by a match line and hold their own labels), nearest the even spacing.
-struct SheetEdges {
-  std::vector<double> at;
-  std::ptrdiff_t crossing = 0;  // pieces split by the edges between sheets
-};
-SheetEdges edges_between(const std::vector<std::pair<double, double>>& spans, double from,
-                         double to, double length) {
-  const double e = 1e-6;
-  const auto count =
-      std::max<size_t>(1, static_cast<size_t>(std::ceil((to - from) / length - 1e-9)));
-  std::vector<double> lows, highs;
-  for (const auto& [lo, hi] : spans) lows.push_back(lo), highs.push_back(hi);
-  std::sort(lows.begin(), lows.end());
-  std::sort(highs.begin(), highs.end());
-  auto crossing = [&](double c) {  // pieces that start before c and end after it
-    return (std::lower_bound(lows.begin(), lows.end(), c - e) - lows.begin()) -
-           (std::upper_bound(highs.begin(), highs.end(), c + e) - highs.begin());
-  };
-  std::vector<double> edges{from};
-  std::ptrdiff_t split = 0;
-  for (size_t i = 1; i < count; ++i) {
-    const double even = from + (to - from) * static_cast<double>(i) / static_cast<double>(count);
-    const double lo = to - static_cast<double>(count - i) * length;  // the rest must still fit
-    const double hi = edges.back() + length;
-    double best = std::clamp(even, lo, hi);
-    auto best_count = crossing(best);
-    for (auto it = std::lower_bound(highs.begin(), highs.end(), lo); it != highs.end() && *it <= hi;
-         ++it) {
-      if (it != highs.begin() && *it == *(it - 1)) continue;
-      const auto n = crossing(*it);
-      if (n < best_count || (n == best_count && std::fabs(*it - even) < std::fabs(best - even)))
-        best = *it, best_count = n;
-    }
-    edges.push_back(best);
-    split += best_count;
-  }
-  edges.push_back(to);
-  return {edges, split};
-}
-
-// The edges along one axis: with the full band of paper around the layout, or a narrower one
-// where that lets the sheets meet at joints.
-std::vector<double> sheet_edges(const std::vector<std::pair<double, double>>& spans, double size,
-                                double length, double scale) {
-  SheetEdges wide = edges_between(spans, -kBandMm * scale, size + kBandMm * scale, length);
-  if (wide.crossing == 0) return wide.at;
-  SheetEdges narrow =
-      edges_between(spans, -kNarrowBandMm * scale, size + kNarrowBandMm * scale, length);
-  return narrow.crossing < wide.crossing && narrow.at.size() <= wide.at.size() ? narrow.at
-                                                                               : wide.at;
-}
-
-size_t interval_of(const std::vector<double>& edges, double v) {
-  const auto it = std::upper_bound(edges.begin() + 1, edges.end() - 1, v);
-  return static_cast<size_t>(it - (edges.begin() + 1));
-}
-
-// The grid of sheets at 1 : scale, with their match captions and the start corner.
-void lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
-                InstallerPlan& plan) {
-  plan.scale = scale;
-  std::vector<std::pair<double, double>> across, up;
-  for (const InstallerPiece& p : pieces)
-    across.emplace_back(p.bounds.x, p.bounds.right()), up.emplace_back(p.bounds.y, p.bounds.top());
-  const std::vector<double> xs = sheet_edges(across, layout.width, plan.viewport[0] * scale, scale);
-  const std::vector<double> ys = sheet_edges(up, layout.height, plan.viewport[1] * scale, scale);
-  plan.grid_columns = xs.size() - 1;
-  plan.grid_rows = ys.size() - 1;
-  plan.sheets.clear();
-  for (size_t r = 0; r < plan.grid_rows; ++r)
-    for (size_t c = 0; c < plan.grid_columns; ++c)
-      plan.sheets.push_back({r, c, {xs[c], ys[r], xs[c + 1] - xs[c], ys[r + 1] - ys[r]}});
-  plan.captions = match_captions(plan);
-  plan.start_corner = start_corner_area(layout, scale);
-  plan.column_edges = xs, plan.row_edges = ys;
 }
 
 // A point inside an outline's rings (even-odd: its islands are out).
@@ -322,8 +192,8 @@ bool place_inside(const InstallerPiece& piece, double lh, double scale, const In
         const double w = rotated ? tall : lw, h = rotated ? lw : tall;
         const double room_x = (part->w - w) / 2, room_y = (part->h - h) / 2;
         if (room_x < 0 || room_y < 0) continue;
-        const Rect box = centred(part->x + part->w / 2 + shift[0] * room_x,
-                                 part->y + part->h / 2 + shift[1] * room_y, w, h);
+        const Rect box = centred_on(part->x + part->w / 2 + shift[0] * room_x,
+                                    part->y + part->h / 2 + shift[1] * room_y, w, h);
         if (contains(window, box) && placed.box_free(box, owner) &&
             (!piece.outline || within_outline(*piece.outline, box))) {
           label.box = box, label.rotated = rotated, label.inside = true, label.split = split;
@@ -364,8 +234,8 @@ bool place_beside(const InstallerPiece& piece, double lh, double scale, const In
         const double w = rotated ? lh : lw, h = rotated ? lw : lh;
         // Clear of the piece's own extent, then d further out; slid along the sheet's edge
         // where it would leave the sheet, but never back onto the piece.
-        Rect box =
-            centred(cx + dir[0] * (b.w / 2 + w / 2 + d), cy + dir[1] * (b.h / 2 + h / 2 + d), w, h);
+        Rect box = centred_on(cx + dir[0] * (b.w / 2 + w / 2 + d),
+                              cy + dir[1] * (b.h / 2 + h / 2 + d), w, h);
         box.x = std::clamp(box.x, window.x, std::max(window.x, window.right() - w));
         box.y = std::clamp(box.y, window.y, std::max(window.y, window.top() - h));
         if (overlaps(box, b)) continue;
@@ -420,7 +290,7 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
     if (plan.labels[i].inside) placed.add(plan.labels[i].box, PlacedLabels::Mark::inside, i);
   for (const size_t i : beside) {
     const auto [cx, cy] = plan.labels[i].anchor;
-    placed.add(centred(cx, cy, dot, dot), PlacedLabels::Mark::dot, i);
+    placed.add(centred_on(cx, cy, dot, dot), PlacedLabels::Mark::dot, i);
     needing_room.add(pieces[i].bounds, PlacedLabels::Mark::reserved, i);
   }
   // Walled in (a piece split by a match line in a bond whose every unit holds its ID, say), a
@@ -448,7 +318,7 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
   for (const size_t i : left) {
     InstallerLabel& label = plan.labels[i];
     const double lw = label_width_mm(label.text.size(), plan.text_mm) * scale;
-    label.box = centred(label.anchor[0], label.anchor[1], lw, lh), label.inside = false;
+    label.box = centred_on(label.anchor[0], label.anchor[1], lw, lh), label.inside = false;
     ++plan.unplaced;
   }
   return plan.unplaced == 0;
@@ -464,10 +334,6 @@ std::vector<std::string> label_lines(const InstallerLabel& label) {
 std::array<double, 2> leader_end(const InstallerLabel& label) {
   const Point end = leader_end(label.anchor, label.box);
   return {end.x, end.y};
-}
-
-size_t sheet_holding(const InstallerPlan& plan, double x, double y) {
-  return interval_of(plan.row_edges, y) * plan.grid_columns + interval_of(plan.column_edges, x);
 }
 
 std::string match_caption_text(const MatchCaption& caption) {
@@ -515,31 +381,6 @@ bool coursed_set(const Layout& layout, double typical_w, double typical_h) {
       break;
   }
   return std::max(typical_w, typical_h) <= kSmallUnitMm;
-}
-
-// A named scale is taken as asked, unless its set would be more sheets than a site team can
-// carry (and minutes of drawing): refused, with the scale that fits.
-void check_named_scale(const Layout& layout, const InstallerPlan& plan, double scale) {
-  auto sheets_at = [&](double n) {
-    const double across = std::ceil(layout.width / (plan.viewport[0] * n));
-    const double up = std::ceil(layout.height / (plan.viewport[1] * n));
-    return std::max(1.0, across) * std::max(1.0, up);
-  };
-  const double sheets = sheets_at(scale);
-  if (sheets <= static_cast<double>(kMostInstallerSheets)) return;
-  double fits = 0;
-  for (const double n : standard_scales())
-    if (n > scale && sheets_at(n) <= static_cast<double>(kMostInstallerSheets)) {
-      fits = n;
-      break;
-    }
-  throw InputError(
-      SourceLocation{"", 0, 0, "layout.installer_scale", ""},
-      fmt::format("1 : {:g} on {} would take about {:.0f} installer's sheets; at most {}: choose "
-                  "a smaller scale{} or larger paper (installer_paper), or leave the scale out "
-                  "and curdle chooses one",
-                  scale, plan.paper.name, sheets, kMostInstallerSheets,
-                  fits > 0 ? fmt::format(" (1 : {:g} or beyond)", fits) : ""));
 }
 
 InstallerPlan plan_installer_sheets(const Layout& layout) {

@@ -34,6 +34,10 @@ bool overlaps(const Rect& a, const Rect& b);
 std::vector<Rect> subtract(const Rect& a, const std::vector<Rect>& holes);
 // The part of r on the surface [0, width] x [0, height] (empty: zero width or height).
 Rect clip(const Rect& r, double width, double height);
+// A w x h rectangle centred on (cx, cy).
+inline Rect centred_on(double cx, double cy, double w, double h) {
+  return {cx - w / 2, cy - h / 2, w, h};
+}
 
 struct Circle {
   double cx = 0, cy = 0, d = 0;

@@ -1,0 +1,63 @@
+// Tests of installer_sheet_grid.h: the sheets cover the layout and its band of paper without
+// gaps, neighbours carry match captions, and a named scale's set is bounded.
+#include "layout/installer_sheet_grid.h"
+
+#include <gtest/gtest.h>
+
+#include "curdle/error.h"
+#include "layout_support.h"
+
+namespace curdle {
+namespace {
+
+Layout paving(double width, double height) {
+  LayoutSpec spec = test::layout_spec("paving");
+  spec.module_w = 600, spec.module_h = 300, spec.joint = 0;
+  spec.size = std::array<double, 2>{width, height};
+  return lay_floor(test::design(2, 2, {{"1/2", "1/2"}}), spec, 5);
+}
+
+TEST(InstallerSheetGrid, SheetsTileTheLayoutAndNeighboursNameEachOther) {
+  const Layout layout = paving(18000, 12000);
+  InstallerPlan plan;
+  plan.paper = *paper_sheet("A3");
+  plan.viewport = installer_viewport(plan.paper, true);
+  lay_sheets(installer_pieces(layout), 50, layout, plan);
+  EXPECT_EQ(plan.scale, 50);
+  ASSERT_EQ(plan.sheets.size(), plan.grid_rows * plan.grid_columns);
+  ASSERT_GT(plan.sheets.size(), 1u);
+  // Edge to edge, no sheet wider than its viewport, the layout inside the grid.
+  EXPECT_LE(plan.column_edges.front(), 0);
+  EXPECT_GE(plan.column_edges.back(), layout.width);
+  EXPECT_LE(plan.row_edges.front(), 0);
+  EXPECT_GE(plan.row_edges.back(), layout.height);
+  for (const InstallerSheet& s : plan.sheets) {
+    EXPECT_LE(s.window.w, plan.viewport[0] * 50 + 1e-6);
+    EXPECT_LE(s.window.h, plan.viewport[1] * 50 + 1e-6);
+    EXPECT_EQ(sheet_holding(plan, s.window.x + s.window.w / 2, s.window.y + s.window.h / 2),
+              s.row * plan.grid_columns + s.column);
+  }
+  // Every shared edge is captioned from both sides.
+  size_t shared =
+      plan.grid_rows * (plan.grid_columns - 1) + plan.grid_columns * (plan.grid_rows - 1);
+  EXPECT_EQ(plan.captions.size(), 2 * shared);
+}
+
+TEST(InstallerSheetGrid, ANamedScaleOfTooManySheetsIsRefusedWithOneThatFits) {
+  const Layout layout = paving(20000, 20000);
+  InstallerPlan plan;
+  plan.paper = *paper_sheet("A4");
+  plan.viewport = installer_viewport(plan.paper, true);
+  try {
+    check_named_scale(layout, plan, 1);
+    FAIL() << "1 : 1 on A4 over 20 m was taken";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("installer's sheets; at most 500"), std::string::npos) << message;
+    EXPECT_NE(message.find("(1 : 5 or beyond)"), std::string::npos) << message;
+  }
+  EXPECT_NO_THROW(check_named_scale(layout, plan, 5));  // about 486 sheets
+}
+
+}  // namespace
+}  // namespace curdle
