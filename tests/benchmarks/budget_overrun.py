@@ -14,10 +14,6 @@ root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build/release")
 budget = float(sys.argv[2]) if len(sys.argv) > 2 else 4.0
 port = 19000 + os.getpid() % 1000
-server = subprocess.Popen([os.path.join(build, "curdle"), "serve",
-                           os.path.join(root, "patterns/paper/fig7-three-stages.toml"),
-                           "--port", str(port), "--request-seconds", "%g" % budget],
-                          stdout=subprocess.DEVNULL)
 
 
 def request(method, path, body=None, leave_after=None):
@@ -35,6 +31,21 @@ def request(method, path, body=None, leave_after=None):
     r = c.getresponse()
     r.read()
     return r.status, time.perf_counter() - start
+
+
+def serve(recipe, *options):
+    """`curdle serve RECIPE OPTIONS` on the next port, once it answers."""
+    global port
+    port += 1
+    process = subprocess.Popen([os.path.join(build, "curdle"), "serve", recipe, "--port", str(port),
+                                *options], stdout=subprocess.DEVNULL)
+    for _ in range(100):
+        try:
+            request("GET", "/api/colours?colour=%23000000")
+            break
+        except OSError:
+            time.sleep(0.1)
+    return process
 
 
 def peak_mb():
@@ -72,12 +83,8 @@ cases = [
      "/api/export?file=cells.csv&field.cells=%5B2048,2048%5D&" + sixteen, None, 0.2),
 ]
 
-for _ in range(100):
-    try:
-        request("GET", "/api/recipe")
-        break
-    except OSError:
-        time.sleep(0.1)
+server = serve(os.path.join(root, "patterns/paper/fig7-three-stages.toml"),
+               "--request-seconds", "%g" % budget)
 with open("/proc/loadavg") as f:
     load = f.read().split()[0]
 print("budget %.1f s, load %s" % (budget, load))
@@ -109,16 +116,8 @@ plaza = re.sub(r"\[curds\.density\]\n(?:[^\[\n].*\n)*", '[curds.density]\nkind =
                'path = "density.png"\nvalues = [0, 2]\n\n', plaza, count=1)
 with open(os.path.join(folder, "plaza.toml"), "w") as f:
     f.write(plaza)
-port += 1
-server = subprocess.Popen([os.path.join(build, "curdle"), "serve", os.path.join(folder, "plaza.toml"),
-                           "--port", str(port)], stdout=subprocess.DEVNULL)
+server = serve(os.path.join(folder, "plaza.toml"))
 try:
-    for _ in range(100):
-        try:
-            request("GET", "/api/colours?colour=%23000000")
-            break
-        except OSError:
-            time.sleep(0.1)
     idle = peak_mb()
     results = []
     start = time.perf_counter()
