@@ -48,39 +48,20 @@ std::optional<PictureHeader> png(const Bytes& f, std::string& why) {
   return PictureHeader{PictureFormat::png, f.u32(16), f.u32(20)};
 }
 
-// The scans of a JPEG after its frame header at `at`: each SOS segment and the entropy-coded
-// data after it, up to the next marker (a 0xFF that is neither stuffing nor a restart).
-bool too_many_scans(const Bytes& f, uint64_t at) {
-  int scans = 0;
-  while (f.has(at, 2)) {
-    if (f.u8(at) != 0xFF) return false;  // broken: the decoder will say so
-    const uint32_t marker = f.u8(at + 1);
-    if (marker == 0xFF || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {
-      at += marker == 0xFF ? 1 : 2;
-      continue;
-    }
-    if (marker == 0xD9 || !f.has(at, 4)) return false;
-    at += 2 + f.u16(at + 2);
-    if (marker != 0xDA) continue;
-    if (++scans > kMostJpegScans) return true;
-    while (f.has(at, 2)) {
-      const size_t ff = f.b.find('\xFF', at);
-      if (ff == std::string_view::npos || !f.has(ff, 2)) return false;
-      const uint32_t next = f.u8(ff + 1);
-      if (next != 0x00 && next != 0xFF && !(next >= 0xD0 && next <= 0xD7)) {
-        at = ff;
-        break;
-      }
-      at = ff + (next == 0xFF ? 1 : 2);
-    }
-  }
-  return false;
-}
-
+// One walk over the segments: the frame's size (SOFn), then each scan (SOS and its entropy-coded
+// data, up to the next marker: a 0xFF that is neither stuffing nor a restart) counted, since a
+// progressive picture is decoded once per scan over the whole picture: a few dozen in any
+// camera's or editor's file, 400,000 in a crafted one (minutes of work). Past the frame, what
+// cannot be walked is left to the decoder, which will say so.
 std::optional<PictureHeader> jpeg(const Bytes& f, std::string& why) {
+  std::optional<PictureHeader> frame;
+  int scans = 0;
   uint64_t at = 2;
-  while (f.has(at, 4)) {
-    if (f.u8(at) != 0xFF) return refuse(why, "its JPEG segments are broken");
+  while (f.has(at, frame ? 2 : 4)) {
+    if (f.u8(at) != 0xFF) {
+      if (frame) break;
+      return refuse(why, "its JPEG segments are broken");
+    }
     const uint32_t marker = f.u8(at + 1);
     if (marker == 0xFF) {  // fill byte
       ++at;
@@ -90,23 +71,42 @@ std::optional<PictureHeader> jpeg(const Bytes& f, std::string& why) {
       at += 2;
       continue;
     }
-    if (marker == 0xD9 || marker == 0xDA) break;  // the image ends or its data starts: no SOF
-    const uint32_t length = f.u16(at + 2);
-    if (length < 2) return refuse(why, "its JPEG segments are broken");
-    const bool frame =
-        marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
-    if (frame) {
-      if (!f.has(at + 4, 5)) break;
-      // A progressive picture is decoded once per scan over the whole picture: a few dozen in
-      // any camera's or editor's file, 400,000 in a crafted one (minutes of work).
-      if (too_many_scans(f, at + 2 + length))
+    if (marker == 0xD9 || !f.has(at, 4)) break;  // the image ends
+    if (marker == 0xDA) {
+      if (!frame) break;  // its data starts before any frame: no size
+      if (++scans > kMostJpegScans)
         return refuse(why, "it has more than " + std::to_string(kMostJpegScans) +
                                " scans; save it as a baseline JPEG or as PNG");
-      return PictureHeader{PictureFormat::jpeg, f.u16(at + 7), f.u16(at + 5)};
+      at += 2 + f.u16(at + 2);
+      size_t next_marker = std::string_view::npos;
+      while (f.has(at, 2)) {
+        const size_t ff = f.b.find('\xFF', at);
+        if (ff == std::string_view::npos || !f.has(ff, 2)) break;
+        const uint32_t next = f.u8(ff + 1);
+        if (next != 0x00 && next != 0xFF && !(next >= 0xD0 && next <= 0xD7)) {
+          next_marker = ff;
+          break;
+        }
+        at = ff + (next == 0xFF ? 1 : 2);
+      }
+      if (next_marker == std::string_view::npos) break;
+      at = next_marker;
+      continue;
+    }
+    const uint32_t length = f.u16(at + 2);
+    if (!frame) {
+      if (length < 2) return refuse(why, "its JPEG segments are broken");
+      const bool sof =
+          marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+      if (sof) {
+        if (!f.has(at + 4, 5)) break;
+        frame = PictureHeader{PictureFormat::jpeg, f.u16(at + 7), f.u16(at + 5)};
+      }
     }
     at += 2 + length;
   }
-  return refuse(why, "its JPEG header has no frame size");
+  if (!frame) return refuse(why, "its JPEG header has no frame size");
+  return frame;
 }
 
 std::optional<PictureHeader> tiff(Bytes f, std::string& why) {
