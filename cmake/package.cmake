@@ -10,7 +10,8 @@ set(CURDLE_PUBLIC_HEADERS
   src/app/stopping.h src/app/version.h
   src/curdle/bitset.h src/curdle/box.h src/curdle/boxcount.h src/curdle/cell_index.h
   src/curdle/curd.h src/curdle/curdling.h src/curdle/density.h src/curdle/error.h src/curdle/fit.h
-  src/curdle/lattice.h src/curdle/measure.h src/curdle/overlay.h src/curdle/probability.h
+  src/curdle/lattice.h src/curdle/markov.h src/curdle/markov_report.h src/curdle/measure.h
+  src/curdle/overlay.h src/curdle/probability.h
   src/curdle/report.h src/curdle/search.h src/curdle/stop.h
   src/layout/drawing_sheet.h src/layout/element_id.h src/layout/installer_sheets.h
   src/layout/layout.h src/layout/layout_kind.h

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <string>
 
+#include "curdle/markov.h"
 #include "curdle/overlay.h"
 #include "curdle/stop.h"
 #include "export/csv_field.h"
@@ -20,9 +21,18 @@ void write_cells_csv(std::ostream& out, const Design& design, const CurdField& f
     header += axes[d];
   }
   header += ",value";
-  for (const CurdSpec& c : design.curds) {
+  // A plain curd's column is 0 or 1; a Markov curd's holds its state's name, "dead" where none.
+  const std::vector<CurdGroup> groups = curd_groups(design.curds);
+  std::vector<std::vector<std::string>> state_cells(groups.size());
+  for (size_t g = 0; g < groups.size(); ++g) {
     header += ',';
-    header += csv_field(c.name);
+    header += csv_field(design.curds[groups[g].first].name);
+    if (groups[g].chain)
+      for (uint32_t s = 0; s < (1u << groups[g].planes); ++s) {
+        std::string cell(1, ',');
+        cell += csv_field(groups[g].chain->state_name(s));
+        state_cells[g].push_back(std::move(cell));
+      }
   }
   out << header << "\r\n";
 
@@ -33,7 +43,6 @@ void write_cells_csv(std::ostream& out, const Design& design, const CurdField& f
     auto [p, ec] = std::to_chars(num, num + sizeof num, v);
     buffer.append(num, p);
   };
-  const size_t n = design.curds.size();
   scan_rows(
       field, view,
       [&](int64_t y, int64_t z, std::span<const uint16_t> row) {
@@ -44,7 +53,13 @@ void write_cells_csv(std::ostream& out, const Design& design, const CurdField& f
           if (E >= 3) buffer += ',', put(z);
           buffer += ',';
           put(row[i]);
-          for (size_t c = 0; c < n; ++c) buffer += (row[i] >> c & 1) ? ",1" : ",0";
+          for (size_t g = 0; g < groups.size(); ++g) {
+            const uint32_t state = groups[g].state(row[i]);
+            if (groups[g].chain)
+              buffer += state_cells[g][state];
+            else
+              buffer += state ? ",1" : ",0";
+          }
           buffer += "\r\n";
         }
         if (buffer.size() > (1 << 20) - 4096) {

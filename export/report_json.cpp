@@ -18,6 +18,40 @@ json box_json(const Box& box, int dimension) {
   return {{"origin", origin}, {"size", size}};
 }
 
+json fit_json(const std::optional<LineFit>& fit) {
+  return fit ? json{{"slope", rounded(fit->slope)}, {"r2", rounded(fit->r2, 4)}} : json(nullptr);
+}
+
+// A Markov curd: per stage, per state, the count beside its expectation; per set (each living
+// state, then "living") the box counts, dimensions and extinction.
+json markov_json(const MarkovReport& m) {
+  json stages = json::array();
+  for (const StateStageRow& s : m.stages)
+    stages.push_back({{"stage", s.stage},
+                      {"state", s.state},
+                      {"cells", s.cells},
+                      {"count", s.count},
+                      {"expected_share", rounded(s.share, 9)},
+                      {"expected", rounded(s.expected, 3)},
+                      {"expected_sd", rounded(s.expected_sd, 3)},
+                      {"z", s.z ? rounded(*s.z, 3) : json(nullptr)}});
+  json sets = json::array();
+  for (const StateSet& set : m.sets) {
+    json expected = json::array();
+    for (double x : set.expected_box_counts) expected.push_back(rounded(x, 3));
+    sets.push_back({{"name", set.name},
+                    {"box_counts", set.box_counts},
+                    {"expected_box_counts", expected},
+                    {"box_dimension", fit_json(set.fit)},
+                    {"expected_box_dimension", fit_json(set.expected_fit)},
+                    {"theory_dimension",
+                     set.theory_dimension ? rounded(*set.theory_dimension) : json(nullptr)},
+                    {"extinction", rounded(set.extinction, 9)}});
+  }
+  return {{"name", m.name},   {"states", m.states}, {"stationary", m.stationary},
+          {"wheys", m.wheys}, {"stages", stages},   {"sets", sets}};
+}
+
 }  // namespace
 
 json report_to_json(const Report& r) {
@@ -80,6 +114,11 @@ json report_to_json(const Report& r) {
                      {"box_dimension", fit}});
   }
   j["curds"] = curds;
+  if (!r.markov.empty()) {
+    json markov = json::array();
+    for (const MarkovReport& m : r.markov) markov.push_back(markov_json(m));
+    j["markov_curds"] = markov;
+  }
   json values = json::array();
   for (const ValueRow& v : r.values)
     values.push_back({{"value", v.value},

@@ -58,6 +58,18 @@ void print_summary(const app::RunSummary& s, const app::Run& run, const fs::path
                 c.stages.back().expected, dimension.c_str(),
                 c.theory_dimension ? first_digits(*c.theory_dimension).c_str() : "-");
   }
+  for (const MarkovReport& m : s.report.markov) {
+    // The finest stage per state beside its expectation, and the living set's dimension.
+    std::string counts;
+    for (const StateStageRow& row : m.stages)
+      if (row.stage == run.recipe.design.lattice.stages && row.state != "dead")
+        counts += (counts.empty() ? "" : ", ") + row.state + " " + std::to_string(row.count) +
+                  " (expected " + first_digits(row.expected) + ")";
+    const StateSet& living = m.sets.back();
+    std::printf("  Markov curd %s: %s; living set box dimension %s; limit %s\n", m.name.c_str(),
+                counts.c_str(), living.fit ? first_digits(living.fit->slope).c_str() : "-",
+                living.theory_dimension ? first_digits(*living.theory_dimension).c_str() : "-");
+  }
   std::printf("outputs in %s:\n", fs::absolute(dir).lexically_normal().c_str());
   for (const fs::path& f : files) std::printf("  %s\n", f.lexically_relative(dir).c_str());
 }

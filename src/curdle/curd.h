@@ -1,6 +1,7 @@
 // Curds as data: per curd and stage, one bit per cell of the root grid (see cell_index.h).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,11 +20,18 @@ struct Rgb {
   bool operator==(const Rgb&) const = default;
 };
 
+struct MarkovChain;  // markov.h
+
 struct CurdSpec {
   std::string name;
-  std::vector<Probability> probabilities;  // one per stage
+  // One per stage. A Markov curd's planes hold its living set's per-stage survival, for
+  // guidance only: the chain is what draws and what the report's theory uses.
+  std::vector<Probability> probabilities;
   std::optional<Rgb> colour;
   std::optional<DensityField> density;  // [curds.density]; canonical mode only (density.h)
+  // A Markov curd's bit planes share its chain; `plane` is the bit of the state this one holds.
+  std::shared_ptr<const MarkovChain> chain;
+  int plane = 0;
 };
 
 // Everything the engine needs besides the seed: the recipe without its file.

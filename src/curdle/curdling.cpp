@@ -11,9 +11,12 @@
 #include <numeric>
 #include <vector>
 
+#include "curdle/child_filter.h"
 #include "curdle/error.h"
+#include "curdle/markov_curdling.h"
 #include "curdle/philox_batch.h"
 #include "curdle/random_stream.h"
+#include "curdle/smallest_keys.h"
 #include "curdle/stop.h"
 #include "curdle/survival_bytes.h"
 #include "curdle/theory.h"
@@ -49,37 +52,8 @@ struct StageWork {
   double product_before, product;  // P_(k-1) and P_k, for a density field
 };
 
-// Which children of a parent meet the box: one bit per child digit along each axis.
-struct ChildFilter {
-  std::array<uint64_t, 3> axis{~uint64_t{0}, ~uint64_t{0}, ~uint64_t{0}};
-  bool all = true;
-
-  bool allows(const std::array<uint8_t, 3>& digits) const {
-    return ((axis[0] >> digits[0]) & (axis[1] >> digits[1]) & (axis[2] >> digits[2]) & 1) != 0;
-  }
-};
-
-ChildFilter filter_children_slow(const StageWork& w, uint64_t parent_index) {
-  ChildFilter f;
-  const Lattice& l = w.index.lattice();
-  const Coord parent = w.index.decode(w.stage - 1, parent_index);
-  const int64_t s = static_cast<int64_t>(l.side_in_cells(w.stage));
-  const uint64_t every = l.base == 64 ? ~uint64_t{0} : (uint64_t{1} << l.base) - 1;
-  for (int d = 0; d < l.dimension; ++d) {
-    uint64_t mask = 0;
-    const int64_t lo = w.box.origin[d], hi = w.box.origin[d] + w.box.size[d];
-    for (int delta = 0; delta < l.base; ++delta) {
-      const int64_t start = (parent[d] * l.base + delta) * s;
-      if (start < hi && start + s > lo) mask |= uint64_t{1} << delta;
-    }
-    f.axis[d] = mask;
-    if (mask != every) f.all = false;
-  }
-  return f;
-}
-
 inline ChildFilter filter_children(const StageWork& w, uint64_t parent_index) {
-  return w.prune ? filter_children_slow(w, parent_index) : ChildFilter{};
+  return w.prune ? children_in_box(w.index, w.box, w.stage, parent_index) : ChildFilter{};
 }
 
 uint64_t low_bits(unsigned count) {
@@ -453,9 +427,7 @@ void canonical_or_exact_stage(const StageWork& w, const Bitset& parents, Bitset&
 }
 
 // Quota mode: of all candidates (children of survivors inside the field), exactly `target`
-// survive: those with the smallest (key, bit index). Found in three passes over the keys
-// (histogram of the top 16 bits, the boundary bucket, the cut) so that memory stays small
-// however many candidates there are.
+// survive: those with the smallest (key, bit index) (smallest_keys.h).
 void quota_stage(const StageWork& w, uint64_t target, const Bitset& parents, Bitset& children) {
   const uint64_t B = w.children;
   auto for_each_candidate = [&](auto&& f) {
@@ -468,29 +440,35 @@ void quota_stage(const StageWork& w, uint64_t target, const Bitset& parents, Bit
       }
     });
   };
-  std::vector<uint64_t> histogram(1 << 16, 0);
-  uint64_t candidates = 0;
-  for_each_candidate([&](uint64_t key, uint64_t) {
-    ++histogram[key >> 48];
-    ++candidates;
-  });
-  const uint64_t keep = std::min(target, candidates);
-  if (keep == 0) return;
-  uint64_t below = 0;
-  uint64_t bucket = 0;
-  while (below + histogram[bucket] < keep) below += histogram[bucket++];
-  std::vector<std::pair<uint64_t, uint64_t>> boundary;
-  boundary.reserve(histogram[bucket]);
-  for_each_candidate([&](uint64_t key, uint64_t bit) {
-    if ((key >> 48) == bucket) boundary.emplace_back(key, bit);
-  });
-  const auto cut_at = boundary.begin() + static_cast<int64_t>(keep - below - 1);
-  std::nth_element(boundary.begin(), cut_at, boundary.end());
-  const std::pair<uint64_t, uint64_t> cut = *cut_at;
-  for_each_candidate([&](uint64_t key, uint64_t bit) {
-    if ((key >> 48) < bucket || ((key >> 48) == bucket && std::pair{key, bit} <= cut))
-      children.set(bit);
-  });
+  choose_smallest_keys(target, for_each_candidate, [&](uint64_t bit) { children.set(bit); });
+}
+
+}  // namespace
+
+namespace {
+
+// A Markov curd's planes (markov_curdling.h), all stages.
+void curdle_chain(const Design& design, size_t first, CurdField& out, const RandomStream& rng,
+                  bool prune, const GenerateOptions& options, double& done) {
+  const Lattice& lattice = design.lattice;
+  const MarkovChain& chain = *design.curds[first].chain;
+  const std::span<Curd> planes(out.curds.data() + first, static_cast<size_t>(chain.planes()));
+  for (Curd& plane : planes) {
+    plane.stages.resize(lattice.stages + 1);
+    plane.stages[0].assign_zero(out.index.roots());
+  }
+  const MarkovWork work{
+      out.index, out.generated, prune, lattice.mode, rng, static_cast<uint32_t>(first), chain};
+  markov_roots(work, planes);
+  const double total_work = static_cast<double>(design.curds.size() * lattice.stages);
+  for (int k = 1; k <= lattice.stages; ++k) {
+    stop_point_now();
+    for (Curd& plane : planes)
+      plane.stages[k].assign_zero(out.index.roots() * lattice.cells_per_root(k));
+    markov_stage(work, k, planes, cells_meeting(lattice, k, out.generated));
+    done += static_cast<double>(planes.size());
+    if (options.progress) options.progress(done / total_work);
+  }
 }
 
 }  // namespace
@@ -567,6 +545,10 @@ void curdle_into(const Design& design, uint64_t seed, const Box& view, CurdField
   const double total_work = static_cast<double>(design.curds.size() * lattice.stages);
   double done = 0;
   for (size_t c = 0; c < design.curds.size(); ++c) {
+    if (design.curds[c].chain) {
+      if (design.curds[c].plane == 0) curdle_chain(design, c, out, rng, prune, options, done);
+      continue;
+    }
     Curd& curd = out.curds[c];
     curd.stages.resize(lattice.stages + 1);
     curd.stages[0].assign_zero(out.index.roots());

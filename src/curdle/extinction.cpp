@@ -5,6 +5,7 @@
 #include <map>
 
 #include "curdle/box_levels.h"
+#include "curdle/cell_shapes.h"
 #include "curdle/theory.h"
 
 namespace curdle {
@@ -16,46 +17,6 @@ using Shape = CellShape;
 // Exact mode's cells cut by the view take the hypergeometric sum up to this many children
 // (B^2 terms); above it, sampling with replacement, which differs by O(1/B).
 constexpr uint64_t kExactUpTo = 512;
-
-// Stage cells of side `side` meeting [lo, hi) along one axis, by the part of them inside.
-std::map<Span, uint64_t> spans_meeting(int64_t lo, int64_t hi, int64_t side) {
-  std::map<Span, uint64_t> out;
-  const int64_t first = floor_div(lo, side), last = floor_div(hi - 1, side);
-  for (const int64_t i : {first, last}) {
-    out[{std::max(lo, i * side) - i * side, std::min(hi, (i + 1) * side) - i * side}] += 1;
-    if (first == last) break;
-  }
-  if (last - first > 1) out[{0, side}] += static_cast<uint64_t>(last - first - 1);
-  return out;
-}
-
-// The children of a cell of side `side` whose inside part is `span`, by their inside parts.
-std::map<Span, uint64_t> child_spans(const Span& span, int64_t side, int base) {
-  std::map<Span, uint64_t> out;
-  const int64_t child = side / base;
-  for (int c = 0; c < base; ++c) {
-    const int64_t lo = std::max(span.first, c * child), hi = std::min(span.second, (c + 1) * child);
-    if (hi > lo) out[{lo - c * child, hi - c * child}] += 1;
-  }
-  return out;
-}
-
-// Cartesian product of per-axis classes: shapes with how many cells (or children) have each.
-std::vector<std::pair<Shape, uint64_t>> shapes(const std::array<std::map<Span, uint64_t>, 3>& axes,
-                                               int dimension) {
-  std::vector<std::pair<Shape, uint64_t>> out{{Shape{Span{0, 1}, Span{0, 1}, Span{0, 1}}, 1}};
-  for (int d = 0; d < dimension; ++d) {
-    std::vector<std::pair<Shape, uint64_t>> next;
-    for (const auto& [shape, n] : out)
-      for (const auto& [span, m] : axes[d]) {
-        Shape s = shape;
-        s[d] = span;
-        next.push_back({s, n * m});
-      }
-    out = std::move(next);
-  }
-  return out;
-}
 
 double log_choose(double n, double k) {
   return std::lgamma(n + 1) - std::lgamma(k + 1) - std::lgamma(n - k + 1);

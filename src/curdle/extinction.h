@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "curdle/box.h"
+#include "curdle/cell_shapes.h"
 #include "curdle/lattice.h"
 #include "curdle/probability.h"
 
@@ -36,11 +37,6 @@ std::vector<double> expected_box_counts(const Lattice& lattice, const std::vecto
 std::vector<double> expected_share_weighted_box_counts(const Lattice& lattice,
                                                        const std::vector<Probability>& p,
                                                        const Box& view);
-
-// The part of a cell inside the view along one axis, in finest cells from the cell's start, and
-// along every axis (unused axes hold {0, 1}).
-using CellSpan = std::pair<int64_t, int64_t>;
-using CellShape = std::array<CellSpan, 3>;
 
 // e_k above for a surviving stage-k cell whose inside part is `shape`: the chance it leaves no
 // finest survivor inside the view, with p_(k+1)..p_K. Remembers what it worked out, so that

@@ -6,6 +6,7 @@
 
 #include <bit>
 
+#include "curdle/markov.h"
 #include "curdle/theory.h"
 
 namespace curdle {
@@ -83,14 +84,14 @@ CurdField restrict_to(const CurdField& field, const Box& view) {
 }
 
 std::string value_label(uint32_t value, const std::vector<CurdSpec>& curds) {
-  if (value == 0) return "empty";
   std::string label;
-  for (size_t i = 0; i < curds.size(); ++i) {
-    if (!(value >> i & 1)) continue;
+  for (const CurdGroup& g : curd_groups(curds)) {
+    const uint32_t state = g.state(value);
+    if (state == 0) continue;
     if (!label.empty()) label += "+";
-    label += curds[i].name;
+    label += g.chain ? g.chain->state_name(state) : curds[g.first].name;
   }
-  return label;
+  return label.empty() ? "empty" : label;
 }
 
 void scan_rows(const CurdField& field, const Box& view,

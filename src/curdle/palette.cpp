@@ -4,30 +4,50 @@
 #include <charconv>
 #include <cstdio>
 
+#include "curdle/markov.h"
+
 namespace curdle {
 
+namespace {
+
+constexpr std::array<Rgb, 8> kDefaults{{{192, 57, 43},   // brick red
+                                        {46, 94, 170},   // blue
+                                        {224, 165, 38},  // ochre
+                                        {58, 138, 79},   // green
+                                        {40, 40, 40},    // charcoal
+                                        {142, 68, 173},  // violet
+                                        {22, 160, 160},  // teal
+                                        {160, 100, 60}}};
+
+}  // namespace
+
 Rgb curd_colour(const std::vector<CurdSpec>& curds, size_t curd) {
-  static constexpr std::array<Rgb, 8> defaults{{{192, 57, 43},   // brick red
-                                                {46, 94, 170},   // blue
-                                                {224, 165, 38},  // ochre
-                                                {58, 138, 79},   // green
-                                                {40, 40, 40},    // charcoal
-                                                {142, 68, 173},  // violet
-                                                {22, 160, 160},  // teal
-                                                {160, 100, 60}}};
   if (curds[curd].colour) return *curds[curd].colour;
-  return defaults[curd % defaults.size()];
+  return kDefaults[curd % kDefaults.size()];
+}
+
+Rgb state_colour(const std::vector<CurdSpec>& curds, const CurdGroup& group, uint32_t state) {
+  if (!group.chain) return curd_colour(curds, group.first);
+  const auto& own = group.chain->colours;
+  if (state >= 1 && state <= own.size() && own[state - 1]) return *own[state - 1];
+  return kDefaults[(group.first + state - 1) % kDefaults.size()];
+}
+
+std::vector<Rgb> value_parts(const std::vector<CurdSpec>& curds, uint32_t value) {
+  std::vector<Rgb> parts;
+  for (const CurdGroup& g : curd_groups(curds))
+    if (const uint32_t state = g.state(value)) parts.push_back(state_colour(curds, g, state));
+  return parts;
 }
 
 std::vector<Rgb> value_colours(const std::vector<CurdSpec>& curds) {
   std::vector<Rgb> colours(size_t{1} << curds.size(), kEmptyColour);
   for (size_t v = 1; v < colours.size(); ++v) {
-    unsigned r = 0, g = 0, b = 0, n = 0;
-    for (size_t c = 0; c < curds.size(); ++c) {
-      if (!(v >> c & 1)) continue;
-      const Rgb col = curd_colour(curds, c);
-      r += col.r, g += col.g, b += col.b, ++n;
-    }
+    const std::vector<Rgb> parts = value_parts(curds, static_cast<uint32_t>(v));
+    if (parts.empty()) continue;
+    unsigned r = 0, g = 0, b = 0;
+    for (const Rgb& col : parts) r += col.r, g += col.g, b += col.b;
+    const auto n = static_cast<unsigned>(parts.size());
     colours[v] =
         Rgb{static_cast<uint8_t>(r / n), static_cast<uint8_t>(g / n), static_cast<uint8_t>(b / n)};
   }

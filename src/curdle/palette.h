@@ -14,6 +14,15 @@ namespace curdle {
 // The curd's own colour, or one from a default set of distinct, print-safe colours.
 Rgb curd_colour(const std::vector<CurdSpec>& curds, size_t curd);
 
+struct CurdGroup;  // markov.h
+
+// A state's colour: a plain curd's own, or a Markov curd's state's (state >= 1).
+Rgb state_colour(const std::vector<CurdSpec>& curds, const CurdGroup& group, uint32_t state);
+
+// The colours of what a value holds: one per curd present, in curd order (a Markov curd's by
+// its state). Empty for value 0.
+std::vector<Rgb> value_parts(const std::vector<CurdSpec>& curds, uint32_t value);
+
 // One colour per value (2^n entries); value 0, where no curd survived, is a light paving grey.
 std::vector<Rgb> value_colours(const std::vector<CurdSpec>& curds);
 

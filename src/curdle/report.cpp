@@ -6,6 +6,7 @@
 #include "curdle/curdling.h"
 #include "curdle/density_theory.h"
 #include "curdle/extinction.h"
+#include "curdle/markov.h"
 #include "curdle/overlay.h"
 #include "curdle/theory.h"
 
@@ -118,8 +119,23 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     cuts_boxes |= view.origin[d] % root != 0 || view.size[d] % root != 0;
   const std::vector<uint16_t> values =
       weighted && cuts_boxes ? values_in(field, view) : std::vector<uint16_t>{};
+  // Each value's chance: the product over the curds of their part of it (curds are drawn
+  // independently); a plain curd's survival P_K, a Markov curd's state share.
+  const std::vector<CurdGroup> groups = curd_groups(design.curds);
+  std::vector<std::vector<double>> group_chances(groups.size());
+  for (size_t g = 0; g < groups.size(); ++g) {
+    if (groups[g].chain) {
+      report.markov.push_back(make_markov_report(design, groups[g], field, view));
+      group_chances[g] = state_shares(*groups[g].chain, l.stages);
+      group_chances[g].resize(size_t{1} << groups[g].planes, 0.0);
+    } else {
+      const double P = survival_probability(design.curds[groups[g].first].probabilities, l.stages);
+      group_chances[g] = {1 - P, P};
+    }
+  }
   for (size_t c = 0; c < design.curds.size(); ++c) {
     const CurdSpec& spec = design.curds[c];
+    if (spec.chain) continue;
     const Curd& curd = field.curds[c];
     CurdReport cr;
     cr.name = spec.name;
@@ -159,7 +175,7 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
 
   // One curd's values are its final survivors and the rest: counted already.
   const std::vector<uint64_t> counts =
-      design.curds.size() == 1
+      design.curds.size() == 1 && !design.curds[0].chain
           ? std::vector<uint64_t>{field.generated.cells() - report.curds[0].box_counts.back(),
                                   report.curds[0].box_counts.back()}
           : value_counts(field);
@@ -171,10 +187,7 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     row.label = value_label(v, design.curds);
     row.count = counts[v];
     double p = 1;
-    for (size_t c = 0; c < design.curds.size(); ++c) {
-      const double P = report.curds[c].final_probability;
-      p *= (v >> c & 1) ? P : 1 - P;
-    }
+    for (size_t g = 0; g < groups.size(); ++g) p *= group_chances[g][groups[g].state(v)];
     row.expected = expected_by_value.empty() ? cells * p : expected_by_value[v];
     report.values.push_back(std::move(row));
   }

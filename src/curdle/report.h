@@ -9,6 +9,7 @@
 
 #include "curdle/boxcount.h"
 #include "curdle/curd.h"
+#include "curdle/markov_report.h"
 
 namespace curdle {
 
@@ -64,8 +65,9 @@ struct Report {
   Box field;
   Box view;
   uint64_t cells = 0;
-  bool sd_is_approximate = false;  // quota mode seen through a window
-  std::vector<CurdReport> curds;
+  bool sd_is_approximate = false;    // quota mode seen through a window
+  std::vector<CurdReport> curds;     // the plain curds
+  std::vector<MarkovReport> markov;  // the Markov curds (markov_report.h)
   std::vector<ValueRow> values;
 };
 

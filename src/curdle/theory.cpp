@@ -21,14 +21,14 @@ double axis_sum_of_squares(const Lattice& l, int k, int j, int64_t o, int64_t s)
   return sum;
 }
 
+}  // namespace
+
 double sum_of_squares(const Lattice& l, int k, int j, const Box& box) {
   double t = 1;
   for (int d = 0; d < l.dimension; ++d)
     t *= axis_sum_of_squares(l, k, j, box.origin[d], box.size[d]);
   return t;
 }
-
-}  // namespace
 
 uint64_t cells_meeting(const Lattice& l, int stage, const Box& box) {
   const int64_t width = static_cast<int64_t>(l.side_in_cells(stage));

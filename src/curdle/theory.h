@@ -24,6 +24,9 @@ namespace curdle {
 // Stage-k cells of `lattice` that meet `box`.
 uint64_t cells_meeting(const Lattice& lattice, int stage, const Box& box);
 
+// T_j above: the sum over the stage-j cells of (their stage-k cells meeting `box`)^2.
+double sum_of_squares(const Lattice& lattice, int k, int j, const Box& box);
+
 double survival_probability(const std::vector<Probability>& p, int stage);  // P_k
 
 double expected_survivors(const Lattice& lattice, const std::vector<Probability>& p, int stage,

@@ -76,8 +76,7 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
     entry.colour =
         v < spec.value_colours.size() && spec.value_colours[v] ? *spec.value_colours[v] : blend[v];
     if (spec.combine == Combine::keep) {
-      for (size_t c = 0; c < design.curds.size(); ++c)
-        if (v >> c & 1) entry.parts.push_back(curd_colour(design.curds, c));
+      entry.parts = value_parts(design.curds, v);
       if (entry.parts.empty()) entry.parts.push_back(entry.colour);
     }
   }

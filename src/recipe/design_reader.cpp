@@ -4,6 +4,7 @@
 #include <set>
 
 #include "recipe/density_reader.h"
+#include "recipe/markov_reader.h"
 #include "recipe/recipe.h"
 
 namespace curdle::reading {
@@ -44,14 +45,25 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
   int stages = 0;
   for (size_t i = 0; i < arr->size(); ++i) {
     const std::string path = "curds." + std::to_string(i);
-    TableReader r(*arr->get(i)->as_table(), path, top.source(),
-                  {"name", "probabilities", "colour", "density"});
+    const toml::table& table = *arr->get(i)->as_table();
+    const bool markov = is_markov_curd(table);
+    TableReader r(table, path, top.source(),
+                  markov ? markov_curd_keys()
+                         : std::vector<std::string>{"name", "probabilities", "colour", "density"});
     CurdSpec curd;
     curd.name = read_name(r, "name").value_or("curd" + std::to_string(i));
     if (curd.name.empty() || curd.name.find_first_of(",\"\n\r+") != std::string::npos)
       r.fail("name", "must be a non-empty name without commas, quotes, '+' or line breaks");
     if (!names.insert(curd.name).second)
       r.fail("name", "'" + curd.name + "' is used by another curd; names must differ");
+    if (markov) {
+      std::vector<CurdSpec> planes =
+          read_markov_curd(r, curd.name, lattice, stages ? stages : stated_stages,
+                           kMaxCurds - static_cast<int>(curds.size()));
+      stages = static_cast<int>(planes[0].probabilities.size());
+      for (CurdSpec& plane : planes) curds.push_back(std::move(plane));
+      continue;
+    }
     const toml::node* pn = r.get("probabilities");
     if (!pn)
       r.fail("probabilities", "is required: one probability per stage, e.g. [\"3/4\", \"2/3\"]");
@@ -64,6 +76,9 @@ std::vector<CurdSpec> read_curds(TableReader& top, Lattice& lattice) {
     const int K = static_cast<int>(curd.probabilities.size());
     if (K > 63) r.fail("probabilities", "at most 63 stages");
     if (stages == 0) stages = K;
+    if (curds.size() >= static_cast<size_t>(kMaxCurds))
+      r.fail("name", "is one curd too many: a cell's value has " + std::to_string(kMaxCurds) +
+                         " bits, and the Markov curds before it take some of them");
     if (K != stages)
       r.fail("probabilities", "has " + std::to_string(K) + " stages but curd 0 has " +
                                   std::to_string(stages) +
@@ -94,13 +109,18 @@ void check_size(TableReader& top, const Lattice& l) {
 void check_exact(TableReader& top, const Lattice& l, const std::vector<CurdSpec>& curds) {
   if (l.mode != Mode::exact) return;
   const uint64_t B = l.children();
-  for (size_t i = 0; i < curds.size(); ++i)
+  // A Markov curd's matrices were checked as they were read (markov_reader.cpp); its planes
+  // follow it, so the recipe's table of curd i is found by counting the curds, not the planes.
+  size_t table = 0;
+  for (size_t i = 0; i < curds.size(); table += curds[i].plane == 0 ? 1 : 0, ++i) {
+    if (curds[i].chain) continue;
     for (size_t k = 0; k < curds[i].probabilities.size(); ++k) {
       const Probability& p = curds[i].probabilities[k];
       if (p.times_is_whole(B)) continue;
-      const std::string path = "curds." + std::to_string(i) + ".probabilities." + std::to_string(k);
-      const auto* table = top.get("curds")->as_array()->get(i)->as_table();
-      const toml::node* node = table->get("probabilities")->as_array()->get(k);
+      const std::string path =
+          "curds." + std::to_string(table) + ".probabilities." + std::to_string(k);
+      const auto* t = top.get("curds")->as_array()->get(table)->as_table();
+      const toml::node* node = t->get("probabilities")->as_array()->get(k);
       top.fail_node(*node, path,
                     "exact mode keeps p * b^E of the " + std::to_string(B) +
                         " subcells of each survivor, and " + p.text() + " * " + std::to_string(B) +
@@ -108,6 +128,7 @@ void check_exact(TableReader& top, const Lattice& l, const std::vector<CurdSpec>
                         " is not a whole number; use a multiple of 1/" + std::to_string(B) +
                         ", or mode \"canonical\" or \"quota\"");
     }
+  }
 }
 
 Box read_field(TableReader& top, const Lattice& l, std::optional<Box>& window) {

@@ -1,0 +1,261 @@
+#include "curdle/markov_curdling.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <functional>
+#include <numeric>
+#include <vector>
+
+#include "curdle/child_filter.h"
+#include "curdle/smallest_keys.h"
+#include "curdle/theory.h"
+
+namespace curdle {
+namespace {
+
+constexpr uint64_t kLow56 = (uint64_t{1} << 56) - 1;
+constexpr uint64_t kParentsPerTask = 64 * 128;  // a multiple of 64: tasks write disjoint words
+constexpr uint8_t kUndecided = 0xff;
+
+// A row's states by the top byte of u: decided, or kUndecided when the byte ties with a
+// boundary that has bits below its top byte (then the low 56 bits decide).
+struct RowTable {
+  StateBounds bounds;
+  std::array<uint8_t, 256> by_byte{};
+  bool all_dead = true;
+};
+
+RowTable row_table(const std::vector<Probability>& row) {
+  RowTable t;
+  t.bounds = state_bounds(row);
+  for (size_t j = 1; j < row.size(); ++j) t.all_dead &= row[j].value() == 0;
+  for (unsigned x = 0; x < 256; ++x) {
+    uint8_t state = 0;
+    for (size_t j = 0; j < t.bounds.bound.size(); ++j) {
+      const uint64_t T = t.bounds.bound[j];
+      if (t.bounds.whole[j] || x < (T >> 56)) {
+        state = static_cast<uint8_t>(j + 1);
+        break;
+      }
+      if (x == (T >> 56) && (T & kLow56) != 0) {
+        state = kUndecided;
+        break;
+      }
+    }
+    t.by_byte[x] = state;
+  }
+  return t;
+}
+
+// The uniform of one draw site: its top byte from a survival byte, its low bits on demand.
+uint32_t state_from_byte(const RowTable& t, uint32_t byte, const RandomStream& rng, uint64_t at,
+                         uint32_t root, uint32_t curd, int stage) {
+  const uint8_t s = t.by_byte[byte];
+  if (s != kUndecided) return s;
+  const auto tie = rng.draw(at, root, curd, static_cast<uint32_t>(stage), DrawKind::tie_break, 0);
+  return t.bounds.state_of(uint64_t{byte} << 56 | RandomStream::high_word(tie) >> 8);
+}
+
+void set_state(std::span<Curd> planes, int stage, uint64_t bit, uint32_t state) {
+  for (size_t p = 0; p < planes.size(); ++p)
+    if (state >> p & 1) planes[p].stages[static_cast<size_t>(stage)].set(bit);
+}
+
+// Calls f(index, path, root code, state) for every parent in [begin, end) of stage k - 1 that
+// can have living children: the living ones, and the dead too when the dead row revives.
+template <class F>
+void for_each_parent(const MarkovWork& w, std::span<const Curd> planes, int k, uint64_t begin,
+                     uint64_t end, bool dead_too, F&& f) {
+  const auto stage = static_cast<size_t>(k - 1);
+  const uint64_t per_root = w.index.lattice().cells_per_root(k - 1);
+  uint64_t root = UINT64_MAX, root_start = 0;
+  uint32_t code = 0;
+  for (uint64_t word = begin >> 6; word < (end + 63) >> 6; ++word) {
+    uint64_t any = 0;
+    std::array<uint64_t, 16> plane_words{};
+    for (size_t p = 0; p < planes.size(); ++p) {
+      plane_words[p] = planes[p].stages[stage].words[word];
+      any |= plane_words[p];
+    }
+    uint64_t m = dead_too ? ~uint64_t{0} : any;
+    const uint64_t lo = word << 6;
+    if (lo < begin) m &= ~uint64_t{0} << (begin - lo);
+    if (end - lo < 64) m &= (uint64_t{1} << (end - lo)) - 1;
+    for (; m; m &= m - 1) {
+      const unsigned bit = static_cast<unsigned>(std::countr_zero(m));
+      const uint64_t i = lo + bit;
+      if (root == UINT64_MAX || i >= root_start + per_root) {
+        root = i / per_root;
+        root_start = root * per_root;
+        code = w.index.root_code(root);
+      }
+      uint32_t state = 0;
+      for (size_t p = 0; p < planes.size(); ++p)
+        state |= static_cast<uint32_t>(plane_words[p] >> bit & 1) << p;
+      f(i, i - root_start, code, state);
+    }
+  }
+}
+
+void in_tasks(uint64_t parents, const std::function<void(uint64_t, uint64_t)>& run) {
+  if (parents <= kParentsPerTask) {
+    run(0, parents);
+    return;
+  }
+  const uint64_t tasks = (parents + kParentsPerTask - 1) / kParentsPerTask;
+  tbb::parallel_for(uint64_t{0}, tasks, [&](uint64_t t) {
+    run(t * kParentsPerTask, std::min(parents, (t + 1) * kParentsPerTask));
+  });
+}
+
+void canonical_stage(const MarkovWork& w, int k, std::span<Curd> planes,
+                     const std::vector<RowTable>& rows) {
+  const uint64_t B = w.index.lattice().children();
+  const auto& digits = w.index.child_digits();
+  const uint32_t tag_stage = static_cast<uint32_t>(k);
+  const bool dead_too = !rows[0].all_dead;
+  in_tasks(planes[0].stages[static_cast<size_t>(k - 1)].size, [&](uint64_t begin, uint64_t end) {
+    RandomStream::Block draw{};
+    uint64_t drawn = UINT64_MAX;
+    uint32_t drawn_root = 0;
+    for_each_parent(w, planes, k, begin, end, dead_too,
+                    [&](uint64_t i, uint64_t path, uint32_t code, uint32_t state) {
+                      const RowTable& t = rows[state];
+                      if (t.all_dead) return;
+                      const ChildFilter filter =
+                          w.prune ? children_in_box(w.index, w.box, k, i) : ChildFilter{};
+                      for (uint64_t c = 0; c < B; ++c) {
+                        if (!filter.all && !filter.allows(digits[c])) continue;
+                        const uint64_t at = path * B + c;
+                        if (at >> 4 != drawn || code != drawn_root) {
+                          draw =
+                              w.rng.draw(at >> 4, code, w.curd, tag_stage, DrawKind::survival, 0);
+                          drawn = at >> 4;
+                          drawn_root = code;
+                        }
+                        const unsigned byte = static_cast<unsigned>(at & 15);
+                        const uint32_t mine = draw[byte / 4] >> (8 * (byte % 4)) & 0xff;
+                        const uint32_t s = state_from_byte(t, mine, w.rng, at, code, w.curd, k);
+                        if (s) set_state(planes, k, i * B + c, s);
+                      }
+                    });
+  });
+}
+
+void exact_stage(const MarkovWork& w, int k, std::span<Curd> planes) {
+  const uint64_t B = w.index.lattice().children();
+  const auto& digits = w.index.child_digits();
+  const size_t S = w.chain.living();
+  std::vector<std::vector<uint64_t>> counts(S + 1);  // per parent state, per living state
+  for (size_t i = 0; i <= S; ++i)
+    for (size_t j = 1; j <= S; ++j) counts[i].push_back(w.chain.row(k, i)[j].round_times(B));
+  const bool dead_too = w.chain.revives(k);
+  in_tasks(planes[0].stages[static_cast<size_t>(k - 1)].size, [&](uint64_t begin, uint64_t end) {
+    std::vector<std::pair<uint64_t, uint32_t>> keys(B);
+    for_each_parent(
+        w, planes, k, begin, end, dead_too,
+        [&](uint64_t i, uint64_t path, uint32_t code, uint32_t state) {
+          for (uint64_t j = 0; 2 * j < B; ++j) {
+            const auto r = w.rng.draw(path, code, w.curd, static_cast<uint32_t>(k),
+                                      DrawKind::exact_key, static_cast<uint32_t>(j));
+            keys[2 * j] = {RandomStream::high_word(r), static_cast<uint32_t>(2 * j)};
+            if (2 * j + 1 < B)
+              keys[2 * j + 1] = {RandomStream::low_word(r), static_cast<uint32_t>(2 * j + 1)};
+          }
+          const uint64_t living =
+              std::accumulate(counts[state].begin(), counts[state].end(), uint64_t{0});
+          if (living == 0) return;
+          if (living < B) std::nth_element(keys.begin(), keys.begin() + (living - 1), keys.end());
+          std::sort(keys.begin(), keys.begin() + living);
+          const ChildFilter filter =
+              w.prune ? children_in_box(w.index, w.box, k, i) : ChildFilter{};
+          uint64_t next = 0;
+          for (size_t s = 1; s <= S; ++s)
+            for (uint64_t n = 0; n < counts[state][s - 1]; ++n, ++next) {
+              const uint32_t c = keys[next].second;
+              if (filter.all || filter.allows(digits[c]))
+                set_state(planes, k, i * B + c, static_cast<uint32_t>(s));
+            }
+        });
+  });
+}
+
+std::vector<uint64_t> quota_stage(const MarkovWork& w, int k, std::span<Curd> planes,
+                                  uint64_t field_cells) {
+  const uint64_t B = w.index.lattice().children();
+  const auto& digits = w.index.child_digits();
+  const size_t S = w.chain.living();
+  const std::vector<double> share = state_shares(w.chain, k);
+  const bool dead_too = w.chain.revives(k);
+  Bitset taken;
+  taken.assign_zero(planes[0].stages[static_cast<size_t>(k)].size);
+  std::vector<uint64_t> short_of(S, 0);
+  double cumulative = 0;
+  uint64_t given = 0;
+  bool fell_short = false;
+  for (size_t j = 1; j <= S; ++j) {
+    cumulative += share[j];
+    const auto total =
+        static_cast<uint64_t>(std::floor(static_cast<double>(field_cells) * cumulative + 0.5));
+    const uint64_t target = total > given ? total - given : 0;
+    given += target;
+    auto for_each_candidate = [&](auto&& f) {
+      for_each_parent(w, planes, k, 0, planes[0].stages[static_cast<size_t>(k - 1)].size, dead_too,
+                      [&](uint64_t i, uint64_t path, uint32_t code, uint32_t state) {
+                        const double p = w.chain.row(k, state)[j].value();
+                        if (!(p > 0)) return;
+                        const ChildFilter filter =
+                            w.prune ? children_in_box(w.index, w.box, k, i) : ChildFilter{};
+                        for (uint64_t c = 0; c < B; ++c) {
+                          if (!filter.all && !filter.allows(digits[c])) continue;
+                          if (taken.test(i * B + c)) continue;
+                          const auto r =
+                              w.rng.draw(path * B + c, code, w.curd, static_cast<uint32_t>(k),
+                                         DrawKind::quota_key, static_cast<uint32_t>(j - 1));
+                          // u in (0, 1]; its weighted key, order kept by a positive double's bits
+                          const double u =
+                              (static_cast<double>(RandomStream::high_word(r) >> 11) + 1) * 0x1p-53;
+                          f(std::bit_cast<uint64_t>(-std::log1p(-u + 0x1p-54) / p), i * B + c);
+                        }
+                      });
+    };
+    const uint64_t chosen = choose_smallest_keys(target, for_each_candidate, [&](uint64_t bit) {
+      taken.set(bit);
+      set_state(planes, k, bit, static_cast<uint32_t>(j));
+    });
+    short_of[j - 1] = target - chosen;
+    fell_short |= chosen < target;
+  }
+  return fell_short ? short_of : std::vector<uint64_t>{};
+}
+
+}  // namespace
+
+void markov_roots(const MarkovWork& w, std::span<Curd> planes) {
+  const RowTable t = row_table(w.chain.start);
+  for (uint64_t r = 0; r < w.index.roots(); ++r) {
+    const uint32_t code = w.index.root_code(r);
+    const auto draw = w.rng.draw(0, code, w.curd, 0, DrawKind::survival, 0);
+    const uint32_t s = state_from_byte(t, draw[0] & 0xff, w.rng, 0, code, w.curd, 0);
+    if (s) set_state(planes, 0, r, s);
+  }
+}
+
+std::vector<uint64_t> markov_stage(const MarkovWork& w, int stage, std::span<Curd> planes,
+                                   uint64_t field_cells) {
+  if (w.mode == Mode::quota) return quota_stage(w, stage, planes, field_cells);
+  if (w.mode == Mode::exact) {
+    exact_stage(w, stage, planes);
+    return {};
+  }
+  std::vector<RowTable> rows;
+  for (size_t i = 0; i <= w.chain.living(); ++i) rows.push_back(row_table(w.chain.row(stage, i)));
+  canonical_stage(w, stage, planes, rows);
+  return {};
+}
+
+}  // namespace curdle
