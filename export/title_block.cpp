@@ -4,6 +4,10 @@
 
 #include <iterator>
 
+#include "curdle/markov.h"
+
+#include "curdle/markov.h"
+
 namespace curdle {
 
 std::string segment_text(const Layout& layout) {
@@ -25,6 +29,15 @@ std::string segment_text(const Layout& layout) {
 std::vector<std::string> title_lines(const Layout& layout) {
   std::string probabilities;
   for (const CurdSpec& c : layout.source.curds) {
+    if (c.chain) {
+      // A Markov curd once, by its states: its matrices are too many for a title block.
+      if (c.plane != 0) continue;
+      std::string states;
+      for (const std::string& s : c.chain->states) states += (states.empty() ? "" : ", ") + s;
+      probabilities += (probabilities.empty() ? "" : "; ") + c.name + " Markov (" + states +
+                       (c.chain->stationary() ? "; one matrix" : "; a matrix per stage") + ")";
+      continue;
+    }
     std::string p;
     for (const Probability& q : c.probabilities) p += (p.empty() ? "" : ", ") + q.text();
     probabilities += (probabilities.empty() ? "" : "; ") + c.name + " " + p;

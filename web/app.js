@@ -60,6 +60,7 @@ function overrides() {
   } else {
     state.curds.forEach((c, i) => {
       const was = r.curds[i];
+      if (c.markov) return;  // its matrices live in the recipe
       if (c.probabilities.join() !== was.probabilities.join())
         sets.push(`curds.${i}.probabilities=${tomlArray(c.probabilities.map(tomlString))}`);
       if (c.colour !== was.colour) sets.push(`curds.${i}.colour=${tomlString(c.colour)}`);
@@ -180,7 +181,8 @@ function readRecipeIntoState(r) {
   state.field = r.field.slice();
   while (state.field.length < 3) state.field.push(1);
   state.fieldTouched = false;
-  state.curds = r.curds.map((c) => ({ name: c.name, colour: c.colour, probabilities: c.probabilities.slice() }));
+  state.curds = r.curds.map((c) => ({ name: c.name, colour: c.colour, probabilities: c.probabilities.slice(),
+    markov: Boolean(c.markov), states: c.states || [] }));
   state.valueColours = originalValueColours();
   state.zones = JSON.parse(JSON.stringify(recipeZones()));
   state.segment = r.default_window && r.lattice.dimension === 2 ? r.default_window.slice() : null;
@@ -199,6 +201,10 @@ function syncControls() {
   $("field-h").value = state.field[1];
   $("field-h").disabled = state.dimension === 1;
   $("curd-count").value = state.curds.length;
+  // A Markov curd's table is the recipe's: the page does not rebuild the list of curds around it.
+  const markov = state.curds.some((c) => c.markov);
+  $("curd-count").disabled = markov;
+  $("stages").disabled = markov;
   renderCurdControls();
   renderPalette();
 }
@@ -231,6 +237,22 @@ function renderCurdControls() {
     name.addEventListener("change", () => { curd.name = name.value.trim() || `curd${c}`; schedule(); });
     head.append(colour, name);
     div.append(head);
+    if (curd.markov) {
+      colour.disabled = true;
+      name.disabled = true;
+      const note = document.createElement("div");
+      note.className = "note";
+      note.textContent = "Markov curd: states " + curd.states.map((s) => s.name).join(", ") +
+        " (and dead); its transition matrices are edited in the recipe.";
+      for (const s of curd.states) {
+        const swatch = document.createElement("span");
+        swatch.className = "state-swatch";
+        swatch.style.background = s.colour;
+        swatch.title = s.name;
+        note.prepend(swatch);
+      }
+      div.append(note);
+    }
     curd.probabilities.forEach((p, k) => {
       const row = document.createElement("div");
       row.className = "stage";

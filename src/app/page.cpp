@@ -3,6 +3,7 @@
 #include "app/outputs.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
+#include "curdle/markov.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
 #include "curdle/report.h"
@@ -104,7 +105,22 @@ ordered_json describe_run(const Run& s) {
                   {"stages", d.lattice.stages},
                   {"mode", std::string(to_string(d.lattice.mode))}};
   j["curds"] = ordered_json::array();
-  for (size_t c = 0; c < d.curds.size(); ++c) {
+  // One entry per [[curds]] table, so that the page's overrides name the recipe's own indices;
+  // a Markov curd lists its states (its matrices are edited in the recipe).
+  for (const CurdGroup& g : curd_groups(d.curds)) {
+    const size_t c = g.first;
+    if (g.chain) {
+      ordered_json states = ordered_json::array();
+      for (uint32_t st = 1; st <= g.chain->living(); ++st)
+        states.push_back({{"name", g.chain->state_name(st)},
+                          {"colour", hex_colour(state_colour(d.curds, g, st))}});
+      j["curds"].push_back({{"name", d.curds[c].name},
+                            {"markov", true},
+                            {"states", states},
+                            {"probabilities", ordered_json::array()},
+                            {"colour", hex_colour(state_colour(d.curds, g, 1))}});
+      continue;
+    }
     ordered_json p = ordered_json::array();
     for (const Probability& q : d.curds[c].probabilities) p.push_back(q.text());
     j["curds"].push_back({{"name", d.curds[c].name},

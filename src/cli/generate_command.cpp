@@ -64,7 +64,7 @@ void print_summary(const app::RunSummary& s, const app::Run& run, const fs::path
     for (const StateStageRow& row : m.stages)
       if (row.stage == run.recipe.design.lattice.stages && row.state != "dead")
         counts += (counts.empty() ? "" : ", ") + row.state + " " + std::to_string(row.count) +
-                  " (expected " + first_digits(row.expected) + ")";
+                  " (expected " + fmt::format("{:.1f}", row.expected) + ")";
     const StateSet& living = m.sets.back();
     std::printf("  Markov curd %s: %s; living set box dimension %s; limit %s\n", m.name.c_str(),
                 counts.c_str(), living.fit ? first_digits(living.fit->slope).c_str() : "-",

@@ -82,6 +82,31 @@ std::vector<CurdGroup> curd_groups(const std::vector<CurdSpec>& curds) {
   return groups;
 }
 
+std::vector<CurdMember> curd_members(const std::vector<CurdSpec>& curds) {
+  std::vector<CurdMember> members;
+  const std::vector<CurdGroup> groups = curd_groups(curds);
+  for (size_t g = 0; g < groups.size(); ++g) {
+    if (!groups[g].chain) {
+      members.push_back({curds[groups[g].first].name, g, 1});
+      continue;
+    }
+    for (uint32_t s = 1; s <= groups[g].chain->living(); ++s)
+      members.push_back({groups[g].chain->state_name(s), g, s});
+  }
+  return members;
+}
+
+std::vector<size_t> members_of(const std::vector<CurdSpec>& curds, uint32_t value) {
+  std::vector<size_t> out;
+  size_t first = 0;
+  for (const CurdGroup& g : curd_groups(curds)) {
+    const uint32_t state = g.state(value);
+    if (state != 0 && state <= g.states() - 1) out.push_back(first + state - 1);
+    first += g.states() - 1;
+  }
+  return out;
+}
+
 std::vector<double> state_shares(const MarkovChain& chain, int stage) {
   std::vector<double> share(chain.start.size());
   for (size_t i = 0; i < share.size(); ++i) share[i] = chain.start[i].value();

@@ -61,6 +61,17 @@ struct CurdGroup {
 };
 std::vector<CurdGroup> curd_groups(const std::vector<CurdSpec>& curds);
 
+// What a layout's per-curd list (perforation's holes, a park's elements) is indexed by: each
+// plain curd, and each living state of a Markov curd, in curd order.
+struct CurdMember {
+  std::string name;  // the curd's, or the state's
+  size_t group = 0;  // in curd_groups
+  uint32_t state = 1;
+};
+std::vector<CurdMember> curd_members(const std::vector<CurdSpec>& curds);
+// The members a value holds, as indices into curd_members, in order.
+std::vector<size_t> members_of(const std::vector<CurdSpec>& curds, uint32_t value);
+
 // The share of the stage-k cells in each state 0..S: start P_1 ... P_k.
 std::vector<double> state_shares(const MarkovChain& chain, int stage);
 

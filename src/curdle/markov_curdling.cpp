@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "curdle/child_filter.h"
+#include "curdle/philox_batch.h"
 #include "curdle/smallest_keys.h"
 #include "curdle/theory.h"
 
@@ -76,7 +77,7 @@ void for_each_parent(const MarkovWork& w, std::span<const Curd> planes, int k, u
   uint32_t code = 0;
   for (uint64_t word = begin >> 6; word < (end + 63) >> 6; ++word) {
     uint64_t any = 0;
-    std::array<uint64_t, 16> plane_words{};
+    std::array<uint64_t, 16> plane_words;  // only the planes' entries are read
     for (size_t p = 0; p < planes.size(); ++p) {
       plane_words[p] = planes[p].stages[stage].words[word];
       any |= plane_words[p];
@@ -112,36 +113,117 @@ void in_tasks(uint64_t parents, const std::function<void(uint64_t, uint64_t)>& r
   });
 }
 
+// Canonical stage for a batch of parents: their survival draws made at once, eight lanes at a
+// time (philox_batch.h), then each child's state from its byte, and each parent's children
+// written a word per plane. The same draws as one at a time: neighbouring parents share a draw
+// when b^E < 16.
+class CanonicalBatch {
+ public:
+  static constexpr size_t kParents = 64;
+
+  CanonicalBatch(const MarkovWork& w, int k, std::span<Curd> planes,
+                 const std::vector<RowTable>& rows)
+      : w_(w), k_(k), planes_(planes), rows_(rows), B_(w.index.lattice().children()) {
+    const size_t most = (kParents * (B_ / 16 + 2) + 7) / 8 * 8;
+    for (auto* v : {&w0_, &w1_, &w2_, &w3_, &roots_}) v->resize(most);
+    blocks_.resize(most);
+    bytes_.resize(16 * most);
+  }
+  ~CanonicalBatch() { flush(); }
+
+  void add(uint64_t index, uint64_t path, uint32_t root, uint32_t state) {
+    if (rows_[state].all_dead) return;
+    parents_[count_++] = Parent{index, path, root, state, 0};
+    if (count_ == kParents) flush();
+  }
+
+  void flush() {
+    if (count_ == 0) return;
+    const uint32_t tag =
+        RandomStream::tag(w_.curd, static_cast<uint32_t>(k_), DrawKind::survival, 0);
+    size_t n = 0;
+    for (size_t p = 0; p < count_; ++p) {
+      Parent& parent = parents_[p];
+      const uint64_t first = parent.path * B_ >> 4, last = (parent.path * B_ + B_ - 1) >> 4;
+      for (uint64_t b = first; b <= last; ++b) {
+        const bool shared = n > 0 && blocks_[n - 1] == b && w2_[n - 1] == parent.root;
+        if (b == first) parent.first_block = n - (shared ? 1 : 0);
+        if (shared) continue;
+        blocks_[n] = b;
+        w0_[n] = static_cast<uint32_t>(b);
+        w1_[n] = static_cast<uint32_t>(b >> 32);
+        w2_[n] = parent.root;
+        w3_[n++] = tag;
+      }
+    }
+    std::copy(w2_.begin(), w2_.begin() + static_cast<int64_t>(n), roots_.begin());
+    const size_t lanes = (n + 7) / 8 * 8;
+    for (size_t i = n; i < lanes; ++i) w0_[i] = w1_[i] = w2_[i] = w3_[i] = 0;
+    philox_in_place(w0_.data(), w1_.data(), w2_.data(), w3_.data(), lanes, w_.rng.key(0),
+                    w_.rng.key(1));
+    // Byte 4 w + q of a draw is byte q of word w: little-endian words side by side.
+    for (size_t i = 0; i < n; ++i) {
+      const std::array<uint32_t, 4> words{w0_[i], w1_[i], w2_[i], w3_[i]};
+      for (unsigned b = 0; b < 16; ++b)
+        bytes_[16 * i + b] = static_cast<uint8_t>(words[b / 4] >> (8 * (b % 4)));
+    }
+    for (size_t p = 0; p < count_; ++p) write_children(parents_[p]);
+    count_ = 0;
+  }
+
+ private:
+  struct Parent {
+    uint64_t index, path;
+    uint32_t root, state;
+    size_t first_block;
+  };
+
+  void write_children(const Parent& parent) {
+    const RowTable& t = rows_[parent.state];
+    const ChildFilter filter =
+        w_.prune ? children_in_box(w_.index, w_.box, k_, parent.index) : ChildFilter{};
+    const auto& digits = w_.index.child_digits();
+    const uint64_t first_at = parent.path * B_;
+    for (uint64_t c0 = 0; c0 < B_; c0 += 64) {
+      const auto count = static_cast<unsigned>(std::min<uint64_t>(64, B_ - c0));
+      std::array<uint64_t, 16> bits;  // only the planes' entries: a whole clear costs more
+      std::fill_n(bits.begin(), planes_.size(), uint64_t{0});
+      for (unsigned c = 0; c < count; ++c) {
+        const uint64_t at = first_at + c0 + c;
+        if (!filter.all && !filter.allows(digits[c0 + c])) continue;
+        const size_t block = parent.first_block + ((at >> 4) - (first_at >> 4));
+        const uint8_t byte = bytes_[16 * block + (at & 15)];
+        uint32_t s = t.by_byte[byte];
+        if (s == kUndecided) s = state_from_byte(t, byte, w_.rng, at, roots_[block], w_.curd, k_);
+        for (size_t p = 0; p < planes_.size(); ++p) bits[p] |= uint64_t{s >> p & 1} << c;
+      }
+      for (size_t p = 0; p < planes_.size(); ++p)
+        if (bits[p])
+          planes_[p].stages[static_cast<size_t>(k_)].or_bits(parent.index * B_ + c0, bits[p],
+                                                             count);
+    }
+  }
+
+  const MarkovWork& w_;
+  int k_;
+  std::span<Curd> planes_;
+  const std::vector<RowTable>& rows_;
+  uint64_t B_;
+  std::vector<uint32_t> w0_, w1_, w2_, w3_, roots_;
+  std::vector<uint64_t> blocks_;
+  std::vector<uint8_t> bytes_;
+  std::array<Parent, kParents> parents_;
+  size_t count_ = 0;
+};
+
 void canonical_stage(const MarkovWork& w, int k, std::span<Curd> planes,
                      const std::vector<RowTable>& rows) {
-  const uint64_t B = w.index.lattice().children();
-  const auto& digits = w.index.child_digits();
-  const uint32_t tag_stage = static_cast<uint32_t>(k);
   const bool dead_too = !rows[0].all_dead;
   in_tasks(planes[0].stages[static_cast<size_t>(k - 1)].size, [&](uint64_t begin, uint64_t end) {
-    RandomStream::Block draw{};
-    uint64_t drawn = UINT64_MAX;
-    uint32_t drawn_root = 0;
+    CanonicalBatch batch(w, k, planes, rows);
     for_each_parent(w, planes, k, begin, end, dead_too,
                     [&](uint64_t i, uint64_t path, uint32_t code, uint32_t state) {
-                      const RowTable& t = rows[state];
-                      if (t.all_dead) return;
-                      const ChildFilter filter =
-                          w.prune ? children_in_box(w.index, w.box, k, i) : ChildFilter{};
-                      for (uint64_t c = 0; c < B; ++c) {
-                        if (!filter.all && !filter.allows(digits[c])) continue;
-                        const uint64_t at = path * B + c;
-                        if (at >> 4 != drawn || code != drawn_root) {
-                          draw =
-                              w.rng.draw(at >> 4, code, w.curd, tag_stage, DrawKind::survival, 0);
-                          drawn = at >> 4;
-                          drawn_root = code;
-                        }
-                        const unsigned byte = static_cast<unsigned>(at & 15);
-                        const uint32_t mine = draw[byte / 4] >> (8 * (byte % 4)) & 0xff;
-                        const uint32_t s = state_from_byte(t, mine, w.rng, at, code, w.curd, k);
-                        if (s) set_state(planes, k, i * B + c, s);
-                      }
+                      batch.add(i, path, code, state);
                     });
   });
 }

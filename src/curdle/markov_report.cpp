@@ -30,37 +30,46 @@ std::vector<uint64_t> state_counts(std::span<const Curd> planes, int k, size_t s
   return counts;
 }
 
-// Levels 0..K: the stage-m cells with a finest descendant in a state of `targets`.
-std::vector<uint64_t> set_box_counts(std::span<const Curd> planes, int K, uint64_t B,
-                                     const std::vector<bool>& targets) {
-  const Bitset& finest0 = planes[0].stages[static_cast<size_t>(K)];
-  Bitset level;
-  level.assign_zero(finest0.size);
-  for (size_t w = 0; w < finest0.words.size(); ++w) {
+// A curd for box counting a set of states (boxcount.h): its coarser stages hold every cell that
+// can have a descendant in the set (the living cells where dead is absorbing, every cell where
+// it is not); set_finest puts the set in its finest stage.
+Curd set_curd(std::span<const Curd> planes, int K, bool wheys) {
+  Curd set;
+  set.stages.resize(static_cast<size_t>(K) + 1);
+  for (int k = 0; k < K; ++k) {
+    const Bitset& first = planes[0].stages[static_cast<size_t>(k)];
+    Bitset& out = set.stages[static_cast<size_t>(k)];
+    out.assign_zero(first.size);
+    for (size_t w = 0; w < first.words.size(); ++w) {
+      uint64_t in = wheys ? ~uint64_t{0} : 0;
+      if (!wheys)
+        for (const Curd& p : planes) in |= p.stages[static_cast<size_t>(k)].words[w];
+      out.words[w] = in;
+    }
+    if (first.size % 64)
+      out.words[first.words.size() - 1] &= (uint64_t{1} << (first.size % 64)) - 1;
+  }
+  set.stages[static_cast<size_t>(K)].assign_zero(planes[0].stages[static_cast<size_t>(K)].size);
+  return set;
+}
+
+void set_finest(Curd& set, std::span<const Curd> planes, const std::vector<bool>& targets) {
+  const size_t K = set.stages.size() - 1;
+  Bitset& out = set.stages[K];
+  for (size_t w = 0; w < out.words.size(); ++w) {
     uint64_t in = 0;
     for (size_t s = 1; s < targets.size(); ++s) {
       if (!targets[s]) continue;
       uint64_t m = ~uint64_t{0};
       for (size_t p = 0; p < planes.size(); ++p) {
-        const uint64_t bits = planes[p].stages[static_cast<size_t>(K)].words[w];
+        const uint64_t bits = planes[p].stages[K].words[w];
         m &= (s >> p & 1) ? bits : ~bits;
       }
       in |= m;
     }
-    level.words[w] = in;
+    out.words[w] = in;
   }
-  if (finest0.size % 64)
-    level.words[finest0.words.size() - 1] &= (uint64_t{1} << (finest0.size % 64)) - 1;
-  std::vector<uint64_t> counts(static_cast<size_t>(K) + 1);
-  counts[static_cast<size_t>(K)] = level.count();
-  for (int m = K - 1; m >= 0; --m) {
-    Bitset up;
-    up.assign_zero(planes[0].stages[static_cast<size_t>(m)].size);
-    for_each_set(level, 0, level.size, [&](uint64_t i) { up.set(i / B); });
-    counts[static_cast<size_t>(m)] = up.count();
-    level = std::move(up);
-  }
-  return counts;
+  if (out.size % 64) out.words[out.words.size() - 1] &= (uint64_t{1} << (out.size % 64)) - 1;
 }
 
 }  // namespace
@@ -100,10 +109,13 @@ MarkovReport make_markov_report(const Design& design, const CurdGroup& group,
       r.stages.push_back(row);
     }
   }
+  Curd counted = set_curd(planes, l.stages, r.wheys);
+  std::vector<Bitset> scratch;
   auto add_set = [&](const std::string& name, const std::vector<bool>& targets) {
     StateSet set;
     set.name = name;
-    set.box_counts = set_box_counts(planes, l.stages, l.children(), targets);
+    set_finest(counted, planes, targets);
+    set.box_counts = box_counts(counted, l.children(), scratch);
     set.expected_box_counts = expected_state_box_counts(l, chain, targets, view);
     set.fit = fit_box_dimension(set.box_counts, l.base);
     set.expected_fit = fit_box_dimension(set.expected_box_counts, l.base);

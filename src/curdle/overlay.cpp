@@ -83,6 +83,25 @@ CurdField restrict_to(const CurdField& field, const Box& view) {
   return out;
 }
 
+std::vector<double> expected_value_shares(const Design& design) {
+  const std::vector<CurdGroup> groups = curd_groups(design.curds);
+  std::vector<std::vector<double>> chances;
+  for (const CurdGroup& g : groups) {
+    if (g.chain) {
+      chances.push_back(state_shares(*g.chain, design.lattice.stages));
+      chances.back().resize(size_t{1} << g.planes, 0.0);
+    } else {
+      const double P =
+          survival_probability(design.curds[g.first].probabilities, design.lattice.stages);
+      chances.push_back({1 - P, P});
+    }
+  }
+  std::vector<double> shares(size_t{1} << design.curds.size(), 1.0);
+  for (uint32_t v = 0; v < shares.size(); ++v)
+    for (size_t g = 0; g < groups.size(); ++g) shares[v] *= chances[g][groups[g].state(v)];
+  return shares;
+}
+
 std::string value_label(uint32_t value, const std::vector<CurdSpec>& curds) {
   std::string label;
   for (const CurdGroup& g : curd_groups(curds)) {

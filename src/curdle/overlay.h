@@ -18,6 +18,11 @@ std::vector<uint64_t> value_counts(const CurdField& field);
 // A copy of `field` in which only cells meeting `view` survive, at every stage.
 CurdField restrict_to(const CurdField& field, const Box& view);
 
+// Each value's expected share of the finest cells: the product over the curds of their part
+// of it (curds are drawn independently), a plain curd's P_K or 1 - P_K, a Markov curd's state
+// share (markov.h). Density fields are not taken into account (report.h does that).
+std::vector<double> expected_value_shares(const Design& design);
+
 // "empty" for 0, otherwise the names of the curds present joined by '+'.
 std::string value_label(uint32_t value, const std::vector<CurdSpec>& curds);
 

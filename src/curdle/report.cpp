@@ -119,20 +119,8 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
     cuts_boxes |= view.origin[d] % root != 0 || view.size[d] % root != 0;
   const std::vector<uint16_t> values =
       weighted && cuts_boxes ? values_in(field, view) : std::vector<uint16_t>{};
-  // Each value's chance: the product over the curds of their part of it (curds are drawn
-  // independently); a plain curd's survival P_K, a Markov curd's state share.
-  const std::vector<CurdGroup> groups = curd_groups(design.curds);
-  std::vector<std::vector<double>> group_chances(groups.size());
-  for (size_t g = 0; g < groups.size(); ++g) {
-    if (groups[g].chain) {
-      report.markov.push_back(make_markov_report(design, groups[g], field, view));
-      group_chances[g] = state_shares(*groups[g].chain, l.stages);
-      group_chances[g].resize(size_t{1} << groups[g].planes, 0.0);
-    } else {
-      const double P = survival_probability(design.curds[groups[g].first].probabilities, l.stages);
-      group_chances[g] = {1 - P, P};
-    }
-  }
+  for (const CurdGroup& g : curd_groups(design.curds))
+    if (g.chain) report.markov.push_back(make_markov_report(design, g, field, view));
   for (size_t c = 0; c < design.curds.size(); ++c) {
     const CurdSpec& spec = design.curds[c];
     if (spec.chain) continue;
@@ -181,13 +169,13 @@ Report make_report(const Design& design, uint64_t seed, const CurdField& generat
           : value_counts(field);
   const double cells = static_cast<double>(cells_meeting(l, l.stages, view));
   const std::vector<double> expected_by_value = expected_values_with_density(design, view);
+  const std::vector<double> shares = expected_value_shares(design);
   for (uint32_t v = 0; v < counts.size(); ++v) {
     ValueRow row;
     row.value = v;
     row.label = value_label(v, design.curds);
     row.count = counts[v];
-    double p = 1;
-    for (size_t g = 0; g < groups.size(); ++g) p *= group_chances[g][groups[g].state(v)];
+    const double p = shares[v];
     row.expected = expected_by_value.empty() ? cells * p : expected_by_value[v];
     report.values.push_back(std::move(row));
   }

@@ -12,6 +12,7 @@
 #include "curdle/boxcount.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
+#include "curdle/markov.h"
 #include "curdle/overlay.h"
 #include "curdle/segment_measures.h"
 #include "curdle/stop.h"
@@ -57,15 +58,24 @@ int parse_value(const std::string& text, const std::string& name, const Design& 
 }
 
 int parse_curd(const std::string& text, const std::string& name, const Design& d) {
-  if (name.empty()) {
-    if (d.curds.size() == 1) return 0;
-    fail(text, "name the curd, e.g. dimension:" + d.curds[0].name + "=1.5");
-  }
+  // A Markov curd's planes are not sets of their own: its states are measured by ratio.
   std::string names;
+  int only = -1, plain = 0;
   for (size_t c = 0; c < d.curds.size(); ++c) {
+    if (d.curds[c].chain) {
+      if (d.curds[c].plane == 0 && d.curds[c].name == name)
+        fail(text, "'" + name + "' is a Markov curd; aim at its states by ratio, e.g. ratio:" +
+                       d.curds[c].chain->states[0] + "=0.2");
+      continue;
+    }
     if (d.curds[c].name == name || std::to_string(c) == name) return static_cast<int>(c);
-    names += (c ? ", " : "") + d.curds[c].name;
+    names += (plain++ ? ", " : "") + d.curds[c].name;
+    only = static_cast<int>(c);
   }
+  if (name.empty() && plain == 1) return only;
+  if (name.empty() && plain > 1)
+    fail(text, "name the curd, e.g. dimension:" + names.substr(0, names.find(',')) + "=1.5");
+  if (plain == 0) fail(text, "a dimension target needs a plain curd, and this recipe has none");
   fail(text, "no curd '" + name + "'; the curds are " + names);
 }
 
@@ -241,17 +251,21 @@ std::vector<Target> default_targets(const Design& d) {
   const int K = d.lattice.stages;
   std::vector<double> final_p(n);
   for (size_t c = 0; c < n; ++c) final_p[c] = survival_probability(d.curds[c].probabilities, K);
+  const std::vector<double> shares = expected_value_shares(d);
+  const bool has_markov =
+      std::any_of(d.curds.begin(), d.curds.end(), [](const CurdSpec& c) { return c.chain; });
   for (uint32_t v = 0; v < (uint32_t{1} << n); ++v) {
     Target t;
     t.measure = Measure::ratio;
     t.subject = static_cast<int>(v);
-    t.goal = 1;
-    for (size_t c = 0; c < n; ++c) t.goal *= (v >> c & 1) ? final_p[c] : 1 - final_p[c];
+    t.goal = shares[v];
+    // A code a Markov curd's planes can hold but no state has: never there, nothing to aim at.
+    if (t.goal == 0 && has_markov) continue;
     t.text = "ratio:" + value_label(v, d.curds) + "=" + std::to_string(t.goal);
     targets.push_back(t);
   }
   for (size_t c = 0; c < n; ++c) {
-    if (final_p[c] <= 0) continue;
+    if (final_p[c] <= 0 || d.curds[c].chain) continue;  // a Markov curd's sets: by ratio
     Target t;
     t.measure = Measure::dimension;
     t.subject = static_cast<int>(c);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "curdle/markov.h"
 #include "kinds/park.h"
 #include "layout/piece.h"
 #include "layout/union.h"
@@ -68,12 +69,12 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
   std::vector<Element> cells = std::move(layout.elements);
   layout.elements.clear();
   layout.element_type = "element";
+  const std::vector<CurdMember> members = curd_members(design.curds);
   size_t left_out = 0;
   for (const Element& cell : cells) {
     std::vector<size_t> surfaces, objects;
-    for (size_t c = 0; c < design.curds.size(); ++c)
-      if (cell.value >> c & 1)
-        (spec.own<ParkKeys>().elements[c].surface ? surfaces : objects).push_back(c);
+    for (const size_t m : members_of(design.curds, cell.value))
+      (spec.own<ParkKeys>().elements[m].surface ? surfaces : objects).push_back(m);
     auto add = [&](const ParkElement& kind, Region region, std::optional<Circle> circle,
                    const std::string& suffix, const Rect& stock) {
       Element e = cell;
@@ -103,7 +104,7 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
         Region part = within(cell, strip);
         if (part.area() > kEps)
           add(spec.own<ParkKeys>().elements[surfaces[i]], std::move(part), std::nullopt,
-              design.curds[surfaces[i]].name, strip);
+              members[surfaces[i]].name, strip);
       }
     }
     // Objects stand whole on the cell as laid, or not at all.
@@ -119,9 +120,9 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
         continue;
       }
       if (kind.round)
-        add(kind, {}, Circle{cx, cy, kind.w}, design.curds[objects[i]].name, footprint);
+        add(kind, {}, Circle{cx, cy, kind.w}, members[objects[i]].name, footprint);
       else
-        add(kind, Region{{footprint}, std::nullopt}, std::nullopt, design.curds[objects[i]].name,
+        add(kind, Region{{footprint}, std::nullopt}, std::nullopt, members[objects[i]].name,
             footprint);
     }
   }

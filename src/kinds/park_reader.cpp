@@ -1,5 +1,6 @@
 // [layout] of kind "park": what each curd places in its cells, the ground and the clearance
 // (Cirovic 2014, fig. 5).
+#include "curdle/markov.h"
 #include "kinds/park.h"
 #include "recipe/layout_reader.h"
 
@@ -47,8 +48,9 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
   const toml::node* n = r.get("elements");
   const toml::array* a = n ? n->as_array() : nullptr;
-  if (!a || a->size() != design.curds.size())
-    r.fail("elements", "must give one element per curd (" + std::to_string(design.curds.size()) +
+  if (!a || a->size() != curd_members(design.curds).size())
+    r.fail("elements", "must give one element per curd, and per state of a Markov curd (" +
+                           std::to_string(curd_members(design.curds).size()) +
                            "), e.g. {type = \"tree\", form = \"object\", shape = \"circle\", size "
                            "= [2400, 2400]}");
   size_t objects = 0;

@@ -5,6 +5,7 @@
 #include <map>
 #include <numeric>
 
+#include "curdle/markov.h"
 #include "curdle/stop.h"
 #include "kinds/perforation.h"
 #include "layout/contour_clip.h"
@@ -134,10 +135,9 @@ std::vector<Hole> make_holes(const std::vector<Element>& cells, const Design& de
     if (cell.value == 0) continue;
     const double cx = cell.nominal.x + cell.nominal.w / 2, cy = cell.nominal.y + cell.nominal.h / 2;
     std::vector<Circle> circles;
-    for (size_t c = 0; c < design.curds.size(); ++c)
-      if (cell.value >> c & 1)
-        circles.push_back(Circle{cx + keys.holes[c].offset_x, cy + keys.holes[c].offset_y,
-                                 keys.holes[c].diameter});
+    for (const size_t m : members_of(design.curds, cell.value))
+      circles.push_back(
+          Circle{cx + keys.holes[m].offset_x, cy + keys.holes[m].offset_y, keys.holes[m].diameter});
     int index = 0;
     for (const std::vector<Circle>& group : overlapping_groups(circles)) {
       Hole h;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "curdle/markov.h"
 #include "kinds/perforation.h"
 #include "recipe/layout_reader.h"
 
@@ -78,10 +79,10 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
         "holes",
         "is required: one {diameter, offset} per curd, e.g. [{diameter = 20, offset = [-10, 0]}]");
   const toml::array* a = n->as_array();
-  if (!a || a->size() != design.curds.size())
-    r.fail("holes",
-           "must give one {diameter, offset} per curd: " + std::to_string(design.curds.size()) +
-               " curds, " + std::to_string(a ? a->size() : 0) + " holes");
+  if (!a || a->size() != curd_members(design.curds).size())
+    r.fail("holes", "must give one {diameter, offset} per curd, and per state of a Markov curd: " +
+                        std::to_string(curd_members(design.curds).size()) + " curds, " +
+                        std::to_string(a ? a->size() : 0) + " holes");
   for (size_t i = 0; i < a->size(); ++i) {
     const std::string path = "layout.holes." + std::to_string(i);
     const toml::table* h = a->get(i)->as_table();

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "curdle/overlay.h"
+#include "curdle/overlay.h"
 #include "curdle/text.h"
 #include "kinds/registry.h"
 #include "layout/builder.h"
@@ -22,6 +24,20 @@ const std::vector<std::string> kEveryKind = {
     "lot_size",     "lot_rows", "installer_scale", "installer_paper",
     "installer_set"};
 
+// "; the values are 0 empty, 1 dark, ..." for up to 16 values: a Markov curd's planes make
+// values no state has (they never occur, yet a list gives them an entry), so they are named.
+std::string value_names(const Design& design) {
+  const size_t values = size_t{1} << design.curds.size();
+  if (values > 16) return {};
+  const std::vector<double> shares = expected_value_shares(design);
+  std::string out = "; the values are";
+  for (uint32_t v = 0; v < values; ++v) {
+    out += (v ? ", " : " ") + std::to_string(v) + " ";
+    out += shares[v] == 0 && v != 0 ? "(never occurs)" : value_label(v, design.curds);
+  }
+  return out;
+}
+
 // layout.materials: the product each value is laid in, one name per value, value 0 first.
 void read_materials(TableReader& r, const Design& design, LayoutSpec& spec) {
   const toml::node* n = r.get("materials");
@@ -30,7 +46,8 @@ void read_materials(TableReader& r, const Design& design, LayoutSpec& spec) {
   const toml::array* a = n->as_array();
   const std::string allowed = "must be " + std::to_string(values) +
                               " product names, one per value (value 0 first), e.g. "
-                              "[\"Buff brick\", \"Red brick\"]";
+                              "[\"Buff brick\", \"Red brick\"]" +
+                              value_names(design);
   if (!a || a->size() != values) r.fail("materials", allowed);
   for (const toml::node& item : *a) {
     const auto name = item.value<std::string>();
@@ -407,7 +424,7 @@ void read_value_colours(TableReader& r, const Design& design, LayoutSpec& spec) 
       r.fail("colours", "gives " + std::to_string(a->size()) + " colours for " +
                             std::to_string(values) + " values (2^" +
                             std::to_string(design.curds.size()) +
-                            " curds); give one per value, value 0 first");
+                            " curds); give one per value, value 0 first" + value_names(design));
     if (a->size() > values)
       r.fail("colours", "gives " + std::to_string(a->size()) + " colours but there are only " +
                             std::to_string(values) + " values");

@@ -84,6 +84,34 @@ void BM_Density_Report_4096(benchmark::State& state) {
 }
 BENCHMARK(BM_Density_Report_4096)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// A Markov curd of three states (dark, mid and dead) on a 4096 x 4096 plane (b = 2, K = 12),
+// each living cell keeping 3/4 of its children alive, beside the overlay of two plain curds of
+// p = 3/4 on the same plane: one chain's two bit planes against two curds' (engine alone).
+curdle::Design markov_plane(bool markov) {
+  std::string text = "name = \"bench\"\n[lattice]\nbase = 2\ndimension = 2\nstages = 12\n";
+  if (markov) {
+    text +=
+        "[[curds]]\nname = \"tone\"\nstates = [\"dark\", \"mid\"]\nstart = \"dark\"\n"
+        "stages = 12\ntransitions = [[\"1\", \"0\", \"0\"], [\"1/4\", \"1/2\", \"1/4\"], "
+        "[\"1/4\", \"1/4\", \"1/2\"]]\n";
+  } else {
+    std::string p;
+    for (int k = 0; k < 12; ++k) p += k ? ", \"3/4\"" : "\"3/4\"";
+    for (const char* name : {"a", "b"})
+      text += std::string("[[curds]]\nname = \"") + name + "\"\nprobabilities = [" + p + "]\n";
+  }
+  return curdle::parse_recipe(text, "bench.toml").design;
+}
+void BM_Markov_Engine_4096(benchmark::State& state) {
+  const curdle::Design d = markov_plane(state.range(0) != 0);
+  for (auto _ : state) {
+    const curdle::CurdField f = curdle::curdle(d, 1, d.field);
+    benchmark::DoNotOptimize(f.curds.data());
+  }
+  state.counters["cells"] = static_cast<double>(d.field.cells());
+}
+BENCHMARK(BM_Markov_Engine_4096)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // Seed search as the peer does it: 64 x 64 curds (b = 4; 2/3, 1/2, 1/3), each scored by
 // |survivor ratio - target| + |box dimension - target|, through search_seeds, which is what
 // `curdle search` runs.
