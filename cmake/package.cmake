@@ -78,9 +78,13 @@ if(CURDLE_PYTHON)
     OUTPUT_NAME _curdle LIBRARY_OUTPUT_DIRECTORY ${CURDLE_PYTHON_DIR}/curdle
     CXX_VISIBILITY_PRESET hidden
     INSTALL_RPATH "$ORIGIN/${module_to_library}")
-  add_custom_command(TARGET curdle_python POST_BUILD
+  # The package's Python beside the module, copied again whenever it changes.
+  add_custom_command(OUTPUT ${CURDLE_PYTHON_DIR}/curdle/__init__.py
     COMMAND ${CMAKE_COMMAND} -E copy_if_different ${PROJECT_SOURCE_DIR}/src/python/curdle/__init__.py
-            ${CURDLE_PYTHON_DIR}/curdle/__init__.py)
+            ${CURDLE_PYTHON_DIR}/curdle/__init__.py
+    DEPENDS ${PROJECT_SOURCE_DIR}/src/python/curdle/__init__.py)
+  add_custom_target(curdle_python_files DEPENDS ${CURDLE_PYTHON_DIR}/curdle/__init__.py)
+  add_dependencies(curdle_python curdle_python_files)
   install(TARGETS curdle_python LIBRARY DESTINATION ${CURDLE_SITE_PACKAGES}/curdle)
   install(FILES src/python/curdle/__init__.py DESTINATION ${CURDLE_SITE_PACKAGES}/curdle)
 endif()

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "curdle/error.h"
+#include "curdle/markov.h"
 #include "curdle/palette.h"
 #include "curdle/stop.h"
 #include "export/gltf_json.h"
@@ -163,10 +164,12 @@ tinygltf::Value element_extras(const Element& e, const Provenance& design) {
   tinygltf::Value::Object o;
   o["value"] = tinygltf::Value(static_cast<int>(e.value));
   tinygltf::Value::Array bits, names;
-  for (size_t c = 0; c < design.curds.size(); ++c) {
+  for (size_t c = 0; c < design.curds.size(); ++c)
     bits.push_back(tinygltf::Value(static_cast<int>(e.value >> c & 1)));
-    if (e.value >> c & 1) names.push_back(tinygltf::Value(design.curds[c].name));
-  }
+  // What the value holds: each plain curd by name, a Markov curd by its state's name.
+  const std::vector<CurdMember> members = curd_members(design.curds);
+  for (const size_t m : members_of(design.curds, e.value))
+    names.push_back(tinygltf::Value(members[m].name));
   o["curd_bits"] = tinygltf::Value(bits);
   o["curds"] = tinygltf::Value(names);
   o["row"] = tinygltf::Value(static_cast<int>(e.row));

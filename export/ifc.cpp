@@ -1,6 +1,7 @@
 #include "export/ifc.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -8,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "curdle/markov.h"
 #include "curdle/palette.h"
 #include "curdle/stop.h"
 #include "export/schedule.h"
@@ -131,7 +133,11 @@ class IfcModel {
         label("Window", fmt::format("{},{},{} + {} x {} x {} cells", v.origin[0], v.origin[1],
                                     v.origin[2], v.size[0], v.size[1], v.size[2]))};
     std::string curds;
-    for (const CurdSpec& c : s.curds) curds += (curds.empty() ? "" : ", ") + c.name;
+    for (const CurdGroup& g : curd_groups(s.curds)) {
+      curds += (curds.empty() ? "" : ", ") + s.curds[g.first].name;
+      if (g.chain)
+        curds += " (Markov: " + fmt::format("{}", fmt::join(g.chain->states, ", ")) + ")";
+    }
     props.push_back(label("Curds", curds));
     const int64_t set = add(
         fmt::format("IFCPROPERTYSET({},$,'Curdle_Recipe',$,{})", guid("recipe"), step_refs(props)));

@@ -6,6 +6,7 @@
 #include <map>
 #include <tuple>
 
+#include "curdle/markov.h"
 #include "curdle/palette.h"
 #include "export/csv_field.h"
 #include "export/wkt.h"
@@ -94,13 +95,40 @@ namespace {
 
 std::string optional_mm(const std::optional<double>& v) { return v ? mm_text(*v) : ""; }
 
-void append_row(std::string& buffer, const ScheduleRow& r, size_t curds) {
+// A plain curd's column is 0 or 1; a Markov curd's holds its state's name, "dead" where none.
+struct CurdColumns {
+  std::vector<CurdGroup> groups;
+  std::vector<std::vector<std::string>> states;  // per group, ",name" per state code
+
+  explicit CurdColumns(const std::vector<CurdSpec>& curds) : groups(curd_groups(curds)) {
+    for (const CurdGroup& g : groups) {
+      states.emplace_back();
+      if (g.chain)
+        for (uint32_t s = 0; s < (1u << g.planes); ++s) {
+          std::string cell(1, ',');
+          cell += csv_field(g.chain->state_name(s));
+          states.back().push_back(std::move(cell));
+        }
+    }
+  }
+  void append(std::string& buffer, uint32_t value) const {
+    for (size_t g = 0; g < groups.size(); ++g) {
+      const uint32_t state = groups[g].state(value);
+      if (groups[g].chain)
+        buffer += states[g][state];
+      else
+        buffer += state ? ",1" : ",0";
+    }
+  }
+};
+
+void append_row(std::string& buffer, const ScheduleRow& r, const CurdColumns& curds) {
   fmt::format_to(std::back_inserter(buffer), "{},{},{},{},{},{},{},{},{},{},{},{:.6f},{},{},{}",
                  r.id, r.lot, r.level ? std::to_string(*r.level) : "", r.row, r.column,
                  mm_text(r.x), mm_text(r.y), mm_text(r.z), mm_text(r.width), mm_text(r.height),
                  optional_mm(r.depth), area_m2(r.area), optional_mm(r.stock_width),
                  optional_mm(r.stock_height), r.value);
-  for (size_t c = 0; c < curds; ++c) buffer += (r.value >> c & 1) ? ",1" : ",0";
+  curds.append(buffer, r.value);
   fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{},{},{},{}\r\n",
                  csv_field(r.element_type), r.colour, csv_field(r.material), r.cut ? 1 : 0,
                  csv_field(outlines_wkt(r.outlines)), optional_mm(r.opening_x),
@@ -115,9 +143,10 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
   header +=
       "element_id,lot,level,row,column,x_mm,y_mm,z_mm,width_mm,height_mm,depth_mm,area_m2,"
       "stock_width_mm,stock_height_mm,value";
-  for (const CurdSpec& c : design.curds) {
+  const CurdColumns columns(design.curds);
+  for (const CurdGroup& g : columns.groups) {
     header += ',';
-    header += csv_field(c.name);
+    header += csv_field(design.curds[g.first].name);
   }
   header +=
       ",element_type,colour,material,cut,shape_wkt,opening_x_mm,opening_y_mm,"
@@ -126,7 +155,7 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
   std::string buffer;
   buffer.reserve(1 << 20);
   for (size_t i = 0; i < layout.elements.size(); ++i) {
-    append_row(buffer, schedule_row(layout, i), design.curds.size());
+    append_row(buffer, schedule_row(layout, i), columns);
     if (buffer.size() > (1 << 20) - 4096) {
       out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
       buffer.clear();

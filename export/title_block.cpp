@@ -6,8 +6,6 @@
 
 #include "curdle/markov.h"
 
-#include "curdle/markov.h"
-
 namespace curdle {
 
 std::string segment_text(const Layout& layout) {

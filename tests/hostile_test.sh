@@ -91,6 +91,22 @@ section_options() {
   refused "at most 2^40 cells" search "$f3" --seeds 1..1 --target empty=4611687117939015680,0,4611686018427387904,1
   refused "at most 2^40 seeds" search "$f3" --seeds 0..18446744073709551614
   refused "above the budget" search "$f3" --set 'field.cells=[1024,1024]' --seeds 0..100000000
+  # Markov curds: matrices that are not transition matrices, too many states, bad numbers.
+  local m="$p/paving-three-tone-markov.toml"
+  refused "sums to 1 + 1/4" generate "$m" --set 'curds.0.transitions.1.1=["1/2","1/2","1/4"]'
+  refused "from 0 to 1" generate "$m" --set 'curds.0.transitions.0.1.0=nan'
+  refused "from 0 to 1" generate "$m" --set 'curds.0.transitions.0.1.0=inf'
+  refused "from 0 to 1" generate "$m" --set 'curds.0.transitions.0.1.0=-0.5'
+  refused "from 0 to 1" generate "$m" --set 'curds.0.transitions.0.1.0=1e308'
+  refused "must have 3 rows" generate "$m" --set 'curds.0.transitions.2=[["1","0"],["0","1"]]'
+  refused "named twice" generate "$m" --set 'curds.0.states=["dark","dark"]'
+  refused "implicit" generate "$m" --set 'curds.0.states=["dead","mid"]'
+  refused "at most 15 living states" generate "$m" \
+    --set 'curds.0.states=["a","b","c","d","e","f","g","h","i","j","k","l","m","n","o","p"]'
+  refused "names no state" generate "$m" --set 'curds.0.start="light"'
+  refused "sums to 1 - 1/2" generate "$m" --set 'curds.0.start=["1/4","1/4"]'
+  refused "multiples of 1/4" generate "$m" --set 'lattice.mode="exact"' --set lattice.base=2
+  refused "3 (never occurs)" generate "$m" --set 'layout.materials=["a","b","c"]'
 }
 
 # Round 4: pictures that would be minutes of decoding, keys deep enough to overflow a stack,

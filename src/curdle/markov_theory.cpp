@@ -33,17 +33,13 @@ Matrix times(const Matrix& a, const Matrix& b) {
   return m;
 }
 
-// E[f(x) f(y)] for two given distinct children x, y of a state-i cell at `stage`.
-double sibling_pair(const Lattice& l, const Matrix& P, size_t i, const std::vector<double>& f) {
-  double mean = 0, square = 0;
-  for (size_t x = 0; x < P.size(); ++x) {
-    mean += P[i][x] * f[x];
-    square += P[i][x] * f[x] * f[x];
-  }
+// E[f(x) f(y)] for two given distinct children x, y of a cell, from mean = E[f(x)] and
+// square = E[f(x)^2] over one child: independent (canonical) or dealt without replacement
+// (exact: (B^2 mean^2 - B square) / (B (B - 1))).
+double sibling_pair(const Lattice& l, double mean, double square) {
   if (l.mode != Mode::exact) return mean * mean;
   const double B = static_cast<double>(l.children());
   if (B < 2) return square;
-  // Dealt without replacement: E[f(x) f(y)] = (B^2 mean^2 - B square) / (B (B - 1)).
   return (B * B * mean * mean - B * square) / (B * (B - 1));
 }
 
@@ -109,25 +105,30 @@ std::vector<double> state_count_sd(const Lattice& l, const MarkovChain& chain, i
   const size_t n = chain.start.size();
   const double C = static_cast<double>(cells_meeting(l, k, box));
   const std::vector<double> s_k = state_shares(chain, k);
-  std::vector<double> T(static_cast<size_t>(k) + 1);
-  for (int m = 0; m <= k; ++m) T[static_cast<size_t>(m)] = sum_of_squares(l, k, m, box);
-  std::vector<double> sd(n);
-  for (size_t j = 0; j < n; ++j) {
-    double var = C * s_k[j] * (1 - s_k[j]);
-    // Q = P_(m+2) ... P_k, built from the top down; f[x] = Q[x][j].
-    Matrix Q = identity(n);
-    for (int m = k - 1; m >= 0; --m) {
-      const Matrix P = values_of(chain.transitions[static_cast<size_t>(m)]);  // P_(m+1)
-      std::vector<double> f(n);
-      for (size_t x = 0; x < n; ++x) f[x] = Q[x][j];
-      const std::vector<double> s_m = state_shares(chain, m);
+  std::vector<double> var(n);
+  for (size_t j = 0; j < n; ++j) var[j] = C * s_k[j] * (1 - s_k[j]);
+  // From the top down: Q = P_(m+2) ... P_k, so that a sibling's chance of ending in j is
+  // PQ[x][j] with PQ = P_(m+1) Q, and E[f(x) f(y)] over two siblings needs PQ and P (Q o Q).
+  Matrix Q = identity(n);
+  std::vector<double> s_m = state_shares(chain, k - 1);
+  for (int m = k - 1; m >= 0; --m) {
+    const Matrix P = values_of(chain.transitions[static_cast<size_t>(m)]);  // P_(m+1)
+    const Matrix PQ = times(P, Q);
+    Matrix QQ = Q;
+    for (auto& row : QQ)
+      for (double& x : row) x *= x;
+    const Matrix PQQ = times(P, QQ);
+    const double T = sum_of_squares(l, k, m, box) - sum_of_squares(l, k, m + 1, box);
+    for (size_t j = 0; j < n; ++j) {
       double c = 0;
-      for (size_t i = 0; i < n; ++i) c += s_m[i] * sibling_pair(l, P, i, f);
-      var += (T[static_cast<size_t>(m)] - T[static_cast<size_t>(m) + 1]) * (c - s_k[j] * s_k[j]);
-      Q = times(P, Q);
+      for (size_t i = 0; i < n; ++i) c += s_m[i] * sibling_pair(l, PQ[i][j], PQQ[i][j]);
+      var[j] += T * (c - s_k[j] * s_k[j]);
     }
-    sd[j] = var > 0 ? std::sqrt(var) : 0.0;
+    Q = PQ;
+    if (m > 0) s_m = state_shares(chain, m - 1);
   }
+  std::vector<double> sd(n);
+  for (size_t j = 0; j < n; ++j) sd[j] = var[j] > 0 ? std::sqrt(var[j]) : 0.0;
   return sd;
 }
 

@@ -14,6 +14,7 @@
 #include "app/search_run.h"
 #include "app/version.h"
 #include "curdle/error.h"
+#include "curdle/markov.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
 #include "export/measure_files.h"
@@ -332,13 +333,22 @@ void bind_run(py::module_& m) {
       .def_property_readonly("seed", [](const app::GeneratedRun& g) { return g.run.seed; })
       .def_property_readonly("name",
                              [](const app::GeneratedRun& g) { return g.run.recipe.design.name; })
-      .def_property_readonly("curd_names",
-                             [](const app::GeneratedRun& g) {
-                               std::vector<std::string> names;
-                               for (const CurdSpec& c : g.run.recipe.design.curds)
-                                 names.push_back(c.name);
-                               return names;
-                             })
+      // One per [[curds]] table: its name, its first bit in a value, how many bits it takes,
+      // and a Markov curd's states (dead first; empty for a plain curd).
+      .def_property_readonly(
+          "curd_bits",
+          [](const app::GeneratedRun& g) {
+            const auto& curds = g.run.recipe.design.curds;
+            py::list out;
+            for (const CurdGroup& c : curd_groups(curds)) {
+              std::vector<std::string> states;
+              if (c.chain)
+                for (uint32_t s = 0; s <= c.chain->living(); ++s)
+                  states.push_back(c.chain->state_name(s));
+              out.append(py::make_tuple(curds[c.first].name, c.first, c.planes, states));
+            }
+            return out;
+          })
       .def_property_readonly("origin", view_origin)
       .def_property_readonly("has_layout",
                              [](const app::GeneratedRun& g) { return g.layout.has_value(); })

@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include "curdle/overlay.h"
-#include "curdle/overlay.h"
 #include "curdle/text.h"
 #include "kinds/registry.h"
 #include "layout/builder.h"

@@ -11,8 +11,9 @@
 namespace curdle::reading {
 namespace {
 
-// A chain's matrices are (S+1)^2 per stage, and its theory cubic in S: 255 states is 8 bits.
-constexpr size_t kMostStates = 255;
+// A chain's matrices are (S+1)^2 per stage and its report's theory takes K^2 (S+1)^3 steps:
+// 15 living states, 4 bits of a value, keep both small. More tones are another curd's.
+constexpr size_t kMostStates = 15;
 
 constexpr const char* kMatrixForm =
     "a matrix of (S+1) x (S+1) probabilities, rows and columns \"dead\" first and then the "
@@ -171,7 +172,8 @@ std::vector<CurdSpec> read_markov_curd(TableReader& r, const std::string& name,
   const size_t S = chain->states.size();
   if (S > kMostStates)
     r.fail("states", "has " + std::to_string(S) + " states; a Markov curd takes at most " +
-                         std::to_string(kMostStates) + " (a matrix of 256 x 256 per stage)");
+                         std::to_string(kMostStates) +
+                         " living states (4 bits of a cell's value); give more tones another curd");
   const int planes = std::max(1, static_cast<int>(std::bit_width(S)));
   if (planes > planes_left)
     r.fail("states", std::to_string(S) + " living states take " + std::to_string(planes) +

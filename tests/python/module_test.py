@@ -28,7 +28,8 @@ import curdle
 PROGRAM = sys.argv[1]
 SOURCE = Path(sys.argv[2])
 PATTERNS = ["patterns/terrace-curved-edge.toml", "patterns/paper/fig4-perforation.toml",
-            "patterns/paper/fig5a-park.toml", "patterns/stacked-blocks.toml"]
+            "patterns/paper/fig5a-park.toml", "patterns/stacked-blocks.toml",
+            "patterns/paving-three-tone-markov.toml"]
 SEED = 11
 def outputs_for(pattern):
     """Every output the pattern's layout kind takes (parks add their schedules)."""
@@ -80,8 +81,12 @@ class AgainstTheCommandLine(unittest.TestCase):
             for r in rows:
                 at = tuple(int(r[a]) - origin[i] for i, a in enumerate(axes))[::-1]
                 self.assertEqual(values[at], int(r["value"]), (pattern, r))
-                for i, name in enumerate(run.curd_names):
-                    self.assertEqual(run.curd(name)[at], r[name] == "1", (pattern, name))
+                for name in run.curd_names:
+                    if name in run.curd_states:  # a Markov curd's column names the state
+                        state = run.curd_states[name][run.states(name)[at]]
+                        self.assertEqual(state, r[name], (pattern, name))
+                    else:
+                        self.assertEqual(run.curd(name)[at], r[name] == "1", (pattern, name))
 
     def test_report_equals_report_json(self):
         for pattern, (run, out) in self.runs.items():
@@ -112,8 +117,11 @@ class AgainstTheCommandLine(unittest.TestCase):
                                     (where, key))
                 self.assertEqual(f"{e.area_m2:.6f}", r["area_m2"], where)
                 for name in run.curd_names:
-                    self.assertEqual(e.curds[name], int(r[name]), where)
-                    self.assertEqual(int(t[name]), int(r[name]), where)
+                    # schedule.csv names a Markov curd's state; the element and table number it.
+                    cell = r[name] if name not in run.curd_states else \
+                        str(run.curd_states[name].index(r[name]))
+                    self.assertEqual(e.curds[name], int(cell), where)
+                    self.assertEqual(int(t[name]), int(cell), where)
                 centre = (r["opening_x_mm"], r["opening_y_mm"], r["opening_diameter_mm"])
                 if centre[0]:
                     for text, value in zip(centre, e.opening):

@@ -168,16 +168,17 @@ class Layout:
             names.append(name)
             arrays.append(values)
             if name == "value":
-                for i, curd in enumerate(self._run.curd_names):
+                # A plain curd's field is 0/1; a Markov curd's its state (0 dead, i state i).
+                for curd, bit, planes, _ in self._run._native.curd_bits:
                     names.append(curd)
-                    arrays.append(((values >> i) & 1).astype(np.uint8))
+                    arrays.append(((values >> bit) & ((1 << planes) - 1)).astype(np.uint8))
         return np.rec.fromarrays(arrays, names=names)
 
     @property
     def elements(self):
         """Every row of schedule.csv as an Element, in the same order."""
         c = self.columns()
-        curds = self._run.curd_names
+        curds = self._run._native.curd_bits
         out = []
         for i in range(len(c["element_id"])):
             value = int(c["value"][i])
@@ -193,7 +194,8 @@ class Layout:
                 depth_mm=_optional(c["depth_mm"][i]), area_m2=float(c["area_m2"][i]),
                 stock_width_mm=_optional(c["stock_width_mm"][i]),
                 stock_height_mm=_optional(c["stock_height_mm"][i]),
-                value=value, curds={n: value >> b & 1 for b, n in enumerate(curds)},
+                value=value,
+                curds={n: value >> b & ((1 << p) - 1) for n, b, p, _ in curds},
                 element_type=c["element_type"][i], colour=c["colour"][i],
                 material=c["material"][i], cut=bool(c["cut"][i]), shape_wkt=c["shape_wkt"][i],
                 opening=None if centre[0] is None else centre + (diameter,),
@@ -213,7 +215,11 @@ class Run:
 
     seed = property(lambda self: self._native.seed)
     name = property(lambda self: self._native.name)
-    curd_names = property(lambda self: self._native.curd_names)
+    curd_names = property(lambda self: [c[0] for c in self._native.curd_bits],
+                          doc="The recipe's curds by name, one per [[curds]] table")
+    curd_states = property(
+        lambda self: {c[0]: list(c[3]) for c in self._native.curd_bits if c[3]},
+        doc="Each Markov curd's states by name, \"dead\" first: index i is state i")
     origin = property(lambda self: tuple(self._native.origin),
                       doc="The view's first cell (x[, y[, z]]) in cells from the lattice origin")
 
@@ -226,13 +232,28 @@ class Run:
             self._values.flags.writeable = False
         return self._values
 
+    def _curd_bits(self, which):
+        names = self.curd_names
+        index = names.index(which) if isinstance(which, str) and which in names else which
+        if isinstance(index, str) or not 0 <= int(index) < len(names):
+            raise InputError(f"curd: {which!r} is not a curd; the curds are " + ", ".join(names))
+        return self._native.curd_bits[int(index)]
+
     def curd(self, which):
-        """One curd's cells (by name or index) as a bool array shaped like `values`."""
-        index = self.curd_names.index(which) if isinstance(which, str) else int(which)
-        if not 0 <= index < len(self.curd_names):
-            raise InputError(f"curd: {which!r} is not a curd; the curds are "
-                             + ", ".join(self.curd_names))
-        return (self.values >> index & 1).astype(bool)
+        """One plain curd's cells (by name or index) as a bool array shaped like `values`."""
+        name, bit, _, states = self._curd_bits(which)
+        if states:
+            raise InputError(f"curd: {name!r} is a Markov curd; its cells' states are "
+                             f"states({name!r})")
+        return (self.values >> bit & 1).astype(bool)
+
+    def states(self, which):
+        """A Markov curd's state in each cell (by name or index), uint8 shaped like `values`:
+        0 dead, i its i-th state (curd_states names them); cells.csv's column of the curd."""
+        name, bit, planes, states = self._curd_bits(which)
+        if not states:
+            raise InputError(f"states: {name!r} is a plain curd; its cells are curd({name!r})")
+        return (self.values >> bit & ((1 << planes) - 1)).astype("uint8")
 
     @property
     def report(self):
