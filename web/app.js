@@ -244,7 +244,7 @@ function renderCurdControls() {
       note.className = "note";
       note.textContent = "Markov curd: states " + curd.states.map((s) => s.name).join(", ") +
         " (and dead); its transition matrices are edited in the recipe.";
-      for (const s of curd.states) {
+      for (const s of curd.states.slice().reverse()) {  // prepended: the first state first
         const swatch = document.createElement("span");
         swatch.className = "state-swatch";
         swatch.style.background = s.colour;

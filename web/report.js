@@ -14,7 +14,10 @@ function renderReport() {
   const cells = whole.report.cells, segCells = seg ? seg.report.cells : 0;
   const head = ["Value", "Whole", "ratio", "expected"].concat(seg ? ["Segment", "ratio", "÷ exp."] : []);
   let html = "<tr>" + head.map((h, i) => `<th class="${i >= 4 ? "seg" : ""}">${h}</th>`).join("") + "</tr>";
+  const markov = whole.report.markov_curds || [];
   whole.report.values.forEach((v, i) => {
+    // A code a Markov curd's bits can hold but no state has: never there, not listed.
+    if (markov.length && v.count === 0 && v.expected === 0 && i > 0) return;
     const expectedRatio = v.expected / cells;
     html += `<tr><td><span class="chip" style="background:${legend[i] ? legend[i].colour : "#fff"}"></span>${escapeHtml(v.label)}</td>` +
       `<td>${v.count}</td><td>${fmt(v.count / cells)}</td><td>${fmt(expectedRatio)}</td>`;
@@ -48,6 +51,16 @@ function renderReport() {
              '') +
         '</tr>';
   });
+  // A Markov curd: each state's set and the living set, beside their theory (no segment
+  // columns: the segment's sets are in its report.json).
+  markov.forEach((m) => {
+    m.sets.forEach((set) => {
+      const fit = set.box_dimension, expected = set.expected_box_dimension;
+      dims += `<tr><td>${escapeHtml(m.name + ": " + set.name)}</td><td>${fmt(set.theory_dimension, 3)}</td><td>${
+                  fmt(expected && expected.slope, 3)}</td><td>${fmt(fit && fit.slope, 3)}</td><td>${
+                  fmt(fit && fit.r2, 3)}</td>` + (seg ? '<td class="seg" colspan="3"></td>' : '') + '</tr>';
+    });
+  });
   $("dimension-table").innerHTML = dims;
 
   const stages = $("stages-tables");
@@ -63,6 +76,19 @@ function renderReport() {
       rows += `<tr><td>${k.stage}</td><td>${escapeHtml(k.probability_text)}</td><td>${k.survivors}</td>` +
         `<td>${fmt(k.expected, 1)} ± ${fmt(k.expected_sd, 1)}</td><td>${k.box_count}</td><td>${fmt(k.local_dimension, 3)}</td>` +
         (s ? `<td class="seg">${s.stages[j].survivors}</td><td class="seg">${fmt(s.stages[j].expected, 1)}</td>` : "") + "</tr>";
+    });
+    t.innerHTML = rows;
+    stages.append(t);
+  });
+  // A Markov curd's stages: each state's count beside its expectation and z.
+  markov.forEach((m) => {
+    const t = document.createElement("table");
+    let rows = `<caption>${escapeHtml(m.name)} (Markov)</caption><tr><th title="stage">k</th><th>state</th>` +
+      `<th title="expected share">share</th><th>N</th><th title="expected ± standard deviation">expected</th><th>z</th></tr>`;
+    m.stages.forEach((k) => {
+      if (k.stage === 0) return;
+      rows += `<tr><td>${k.stage}</td><td>${escapeHtml(k.state)}</td><td>${fmt(k.expected_share, 4)}</td><td>${k.count}</td>` +
+        `<td>${fmt(k.expected, 1)} ± ${fmt(k.expected_sd, 1)}</td><td>${fmt(k.z, 2)}</td></tr>`;
     });
     t.innerHTML = rows;
     stages.append(t);

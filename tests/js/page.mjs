@@ -345,6 +345,33 @@ try {
   } finally {
     yard.server.kill('SIGINT');
   }
+  // A Markov curd: listed once with its states, its matrices left to the recipe; the values are
+  // its states, the code no state has is not offered; a base change is still sent.
+  const tones = await serve([path.join(source, 'patterns/paving-three-tone-markov.toml')]);
+  try {
+    await page.goto(tones.url);
+    await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+    check(await page.locator('#curds .curd').count() === 1, 'the Markov curd is listed once, not by its bit planes');
+    const note = await page.textContent('#curds .curd .note');
+    check(note.includes('states dark, mid') && await page.locator('#curds .state-swatch').count() === 2,
+          'it names its states with a swatch each');
+    check(await page.isDisabled('#curd-count') && await page.isDisabled('#stages') &&
+          await page.locator('#curds input[type=range]').count() === 0,
+          'the curds\' count, the stages and probability sliders are not offered for it');
+    const table = await page.textContent('#values-table');
+    check(table.includes('dark') && table.includes('mid') && !table.includes('state 3'),
+          'the values table lists its states and not the code no state has');
+    const rebased = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+    await page.selectOption('#mode', 'quota');
+    const rebasedUrl = decodeURIComponent((await rebased).url());
+    check(rebasedUrl.includes('lattice.mode="quota"') && !rebasedUrl.includes('curds'),
+          'a mode change is sent alone, the Markov curd untouched');
+    await page.waitForFunction(() => document.querySelector('#status').textContent.includes('server'));
+    check(await page.locator('#error').isHidden(), 'the Markov curd generates in quota mode without error');
+    await page.locator('#canvas-wrap').screenshot({ path: path.join(shots, '8-markov-paving.png') });
+  } finally {
+    tones.server.kill('SIGINT');
+  }
   check(pageErrors.length === 0, `no script errors on the page ${pageErrors.join('; ')}`);
 } finally {
   await browser.close();
