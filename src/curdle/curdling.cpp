@@ -1,7 +1,5 @@
 #include "curdle/curdling.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -14,6 +12,7 @@
 #include "curdle/child_filter.h"
 #include "curdle/error.h"
 #include "curdle/markov_curdling.h"
+#include "curdle/parent_tasks.h"
 #include "curdle/philox_batch.h"
 #include "curdle/random_stream.h"
 #include "curdle/smallest_keys.h"
@@ -25,7 +24,6 @@ namespace curdle {
 namespace {
 
 constexpr uint64_t kLow56 = (uint64_t{1} << 56) - 1;
-constexpr uint64_t kParentsPerTask = 64 * 128;  // a multiple of 64: tasks write disjoint words
 
 std::string human_bytes(uint64_t bytes) {
   char buf[64];
@@ -415,15 +413,7 @@ void canonical_or_exact_stage(const StageWork& w, const Bitset& parents, Bitset&
                       [&](uint64_t i, uint64_t path, uint32_t code) { batch.add(i, path, code); });
     }
   };
-  const uint64_t n = parents.size;
-  if (n <= kParentsPerTask) {
-    run(0, n);
-    return;
-  }
-  const uint64_t tasks = (n + kParentsPerTask - 1) / kParentsPerTask;
-  tbb::parallel_for(uint64_t{0}, tasks, [&](uint64_t t) {
-    run(t * kParentsPerTask, std::min(n, (t + 1) * kParentsPerTask));
-  });
+  in_parent_tasks(parents.size, run);
 }
 
 // Quota mode: of all candidates (children of survivors inside the field), exactly `target`

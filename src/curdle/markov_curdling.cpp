@@ -1,16 +1,14 @@
 #include "curdle/markov_curdling.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
-#include <functional>
 #include <numeric>
 #include <vector>
 
 #include "curdle/child_filter.h"
+#include "curdle/parent_tasks.h"
 #include "curdle/philox_batch.h"
 #include "curdle/smallest_keys.h"
 #include "curdle/theory.h"
@@ -19,7 +17,6 @@ namespace curdle {
 namespace {
 
 constexpr uint64_t kLow56 = (uint64_t{1} << 56) - 1;
-constexpr uint64_t kParentsPerTask = 64 * 128;  // a multiple of 64: tasks write disjoint words
 constexpr uint8_t kUndecided = 0xff;
 
 // A row's states by the top byte of u: decided, or kUndecided when the byte ties with a
@@ -100,17 +97,6 @@ void for_each_parent(const MarkovWork& w, std::span<const Curd> planes, int k, u
       f(i, i - root_start, code, state);
     }
   }
-}
-
-void in_tasks(uint64_t parents, const std::function<void(uint64_t, uint64_t)>& run) {
-  if (parents <= kParentsPerTask) {
-    run(0, parents);
-    return;
-  }
-  const uint64_t tasks = (parents + kParentsPerTask - 1) / kParentsPerTask;
-  tbb::parallel_for(uint64_t{0}, tasks, [&](uint64_t t) {
-    run(t * kParentsPerTask, std::min(parents, (t + 1) * kParentsPerTask));
-  });
 }
 
 // Canonical stage for a batch of parents: their survival draws made at once, eight lanes at a
@@ -219,13 +205,14 @@ class CanonicalBatch {
 void canonical_stage(const MarkovWork& w, int k, std::span<Curd> planes,
                      const std::vector<RowTable>& rows) {
   const bool dead_too = !rows[0].all_dead;
-  in_tasks(planes[0].stages[static_cast<size_t>(k - 1)].size, [&](uint64_t begin, uint64_t end) {
-    CanonicalBatch batch(w, k, planes, rows);
-    for_each_parent(w, planes, k, begin, end, dead_too,
-                    [&](uint64_t i, uint64_t path, uint32_t code, uint32_t state) {
-                      batch.add(i, path, code, state);
-                    });
-  });
+  in_parent_tasks(planes[0].stages[static_cast<size_t>(k - 1)].size,
+                  [&](uint64_t begin, uint64_t end) {
+                    CanonicalBatch batch(w, k, planes, rows);
+                    for_each_parent(w, planes, k, begin, end, dead_too,
+                                    [&](uint64_t i, uint64_t path, uint32_t code, uint32_t state) {
+                                      batch.add(i, path, code, state);
+                                    });
+                  });
 }
 
 void exact_stage(const MarkovWork& w, int k, std::span<Curd> planes) {
@@ -236,34 +223,36 @@ void exact_stage(const MarkovWork& w, int k, std::span<Curd> planes) {
   for (size_t i = 0; i <= S; ++i)
     for (size_t j = 1; j <= S; ++j) counts[i].push_back(w.chain.row(k, i)[j].round_times(B));
   const bool dead_too = w.chain.revives(k);
-  in_tasks(planes[0].stages[static_cast<size_t>(k - 1)].size, [&](uint64_t begin, uint64_t end) {
-    std::vector<std::pair<uint64_t, uint32_t>> keys(B);
-    for_each_parent(
-        w, planes, k, begin, end, dead_too,
-        [&](uint64_t i, uint64_t path, uint32_t code, uint32_t state) {
-          for (uint64_t j = 0; 2 * j < B; ++j) {
-            const auto r = w.rng.draw(path, code, w.curd, static_cast<uint32_t>(k),
-                                      DrawKind::exact_key, static_cast<uint32_t>(j));
-            keys[2 * j] = {RandomStream::high_word(r), static_cast<uint32_t>(2 * j)};
-            if (2 * j + 1 < B)
-              keys[2 * j + 1] = {RandomStream::low_word(r), static_cast<uint32_t>(2 * j + 1)};
-          }
-          const uint64_t living =
-              std::accumulate(counts[state].begin(), counts[state].end(), uint64_t{0});
-          if (living == 0) return;
-          if (living < B) std::nth_element(keys.begin(), keys.begin() + (living - 1), keys.end());
-          std::sort(keys.begin(), keys.begin() + living);
-          const ChildFilter filter =
-              w.prune ? children_in_box(w.index, w.box, k, i) : ChildFilter{};
-          uint64_t next = 0;
-          for (size_t s = 1; s <= S; ++s)
-            for (uint64_t n = 0; n < counts[state][s - 1]; ++n, ++next) {
-              const uint32_t c = keys[next].second;
-              if (filter.all || filter.allows(digits[c]))
-                set_state(planes, k, i * B + c, static_cast<uint32_t>(s));
-            }
-        });
-  });
+  in_parent_tasks(
+      planes[0].stages[static_cast<size_t>(k - 1)].size, [&](uint64_t begin, uint64_t end) {
+        std::vector<std::pair<uint64_t, uint32_t>> keys(B);
+        for_each_parent(
+            w, planes, k, begin, end, dead_too,
+            [&](uint64_t i, uint64_t path, uint32_t code, uint32_t state) {
+              for (uint64_t j = 0; 2 * j < B; ++j) {
+                const auto r = w.rng.draw(path, code, w.curd, static_cast<uint32_t>(k),
+                                          DrawKind::exact_key, static_cast<uint32_t>(j));
+                keys[2 * j] = {RandomStream::high_word(r), static_cast<uint32_t>(2 * j)};
+                if (2 * j + 1 < B)
+                  keys[2 * j + 1] = {RandomStream::low_word(r), static_cast<uint32_t>(2 * j + 1)};
+              }
+              const uint64_t living =
+                  std::accumulate(counts[state].begin(), counts[state].end(), uint64_t{0});
+              if (living == 0) return;
+              if (living < B)
+                std::nth_element(keys.begin(), keys.begin() + (living - 1), keys.end());
+              std::sort(keys.begin(), keys.begin() + living);
+              const ChildFilter filter =
+                  w.prune ? children_in_box(w.index, w.box, k, i) : ChildFilter{};
+              uint64_t next = 0;
+              for (size_t s = 1; s <= S; ++s)
+                for (uint64_t n = 0; n < counts[state][s - 1]; ++n, ++next) {
+                  const uint32_t c = keys[next].second;
+                  if (filter.all || filter.allows(digits[c]))
+                    set_state(planes, k, i * B + c, static_cast<uint32_t>(s));
+                }
+            });
+      });
 }
 
 std::vector<uint64_t> quota_stage(const MarkovWork& w, int k, std::span<Curd> planes,
