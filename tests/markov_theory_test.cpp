@@ -124,6 +124,15 @@ TEST(MarkovTheory, ExactModeMatchesOverAThousandSeeds) {
   check_against_theory(d, kSeeds);
 }
 
+TEST(MarkovTheory, AFieldThatCutsRootCellsMatchesOverAThousandSeeds) {
+  // 100 x 70 cells of roots 32 a side: every level has cells the field cuts.
+  const Design d = markov_design("base = 2\ndimension = 2\nstages = 5",
+                                 markov_curd(R"(["dark", "mid"])", "\"dark\"", kStationary) +
+                                     "stages = 5\n",
+                                 "cells = [100, 70]");
+  check_against_theory(d, kSeeds);
+}
+
 TEST(MarkovTheory, OneLivingStateIsTheCurdsTheory) {
   // P = [[1, 0], [1 - p, p]]: the plain curd's expectation and Galton-Watson SD.
   const Design d =
