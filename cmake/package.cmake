@@ -79,12 +79,16 @@ if(CURDLE_PYTHON)
     CXX_VISIBILITY_PRESET hidden
     INSTALL_RPATH "$ORIGIN/${module_to_library}")
   # The package's Python beside the module, copied again whenever it changes.
-  add_custom_command(OUTPUT ${CURDLE_PYTHON_DIR}/curdle/__init__.py
+  # py.typed: the package's annotations are its types (PEP 561).
+  add_custom_command(OUTPUT ${CURDLE_PYTHON_DIR}/curdle/__init__.py ${CURDLE_PYTHON_DIR}/curdle/py.typed
     COMMAND ${CMAKE_COMMAND} -E copy_if_different ${PROJECT_SOURCE_DIR}/src/python/curdle/__init__.py
-            ${CURDLE_PYTHON_DIR}/curdle/__init__.py
-    DEPENDS ${PROJECT_SOURCE_DIR}/src/python/curdle/__init__.py)
-  add_custom_target(curdle_python_files DEPENDS ${CURDLE_PYTHON_DIR}/curdle/__init__.py)
+            ${PROJECT_SOURCE_DIR}/src/python/curdle/py.typed ${CURDLE_PYTHON_DIR}/curdle/
+    DEPENDS ${PROJECT_SOURCE_DIR}/src/python/curdle/__init__.py
+            ${PROJECT_SOURCE_DIR}/src/python/curdle/py.typed)
+  add_custom_target(curdle_python_files DEPENDS ${CURDLE_PYTHON_DIR}/curdle/__init__.py
+                                              ${CURDLE_PYTHON_DIR}/curdle/py.typed)
   add_dependencies(curdle_python curdle_python_files)
   install(TARGETS curdle_python LIBRARY DESTINATION ${CURDLE_SITE_PACKAGES}/curdle)
-  install(FILES src/python/curdle/__init__.py DESTINATION ${CURDLE_SITE_PACKAGES}/curdle)
+  install(FILES src/python/curdle/__init__.py src/python/curdle/py.typed
+          DESTINATION ${CURDLE_SITE_PACKAGES}/curdle)
 endif()

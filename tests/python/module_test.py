@@ -8,6 +8,8 @@ Usage: module_test.py CURDLE_PROGRAM SOURCE_DIR   (with the module on PYTHONPATH
 """
 
 import csv
+import decimal
+import fractions
 import io
 import json
 import math
@@ -164,6 +166,22 @@ class Calls(unittest.TestCase):
                              (Path(tmp) / "cells.csv").read_bytes())
         self.assertFalse(run.values.flags.writeable)
         self.assertIsNone(run.layout)
+
+    def test_probabilities_as_python_numbers_and_documented_calls(self):
+        # A Fraction stays exact, as "1/5" in the recipe; ints, floats and Decimals are taken.
+        run = curdle.generate(SOURCE / "patterns/paper/fig3-two-curds.toml", overrides={
+            "curds.0.probabilities": [fractions.Fraction(1, 5), 0.5],
+            "curds.1.probabilities": [1, decimal.Decimal("0.25")]})
+        texts = [[s["probability_text"] for s in c["stages"]] for c in run.report["curds"]]
+        self.assertEqual(texts, [["1/5", "0.5"], ["1", "0.25"]])
+        with self.assertRaises(curdle.InputError):
+            curdle.generate(SOURCE / "patterns/paper/fig3-two-curds.toml",
+                            overrides={"curds.0.probabilities": [decimal.Decimal("NaN"), 1]})
+        for call in (curdle.Recipe.generate, curdle.generate, curdle.search, curdle.measure,
+                     curdle.fit, curdle.Recipe.from_file, curdle.Run.write, curdle.Run.states):
+            self.assertTrue(call.__doc__ and len(call.__doc__) > 40, call.__name__)
+        self.assertIn("Fraction", curdle.Recipe.generate.__doc__)
+        self.assertEqual(curdle.generate.__annotations__["return"], "Run")
 
     def test_bad_input_raises_the_command_lines_message(self):
         bad = "name = \"x\"\n[lattice]\nbase = 1\ndimension = 2\n"

@@ -17,10 +17,15 @@ The same library as the `curdle` program: a run from Python writes the same byte
 The GIL is released while the engine runs; Ctrl-C stops a long run with KeyboardInterrupt.
 """
 
+from __future__ import annotations
+
+import decimal
+import fractions
 import json
 import os
 import warnings
 from dataclasses import dataclass, field
+from typing import Iterable, Mapping, Sequence
 
 import numpy as np
 
@@ -40,12 +45,20 @@ def _toml_value(value, key):
         return str(int(value))
     if isinstance(value, (float, np.floating)):
         return repr(float(value))
+    if isinstance(value, fractions.Fraction):
+        # Kept exact, as a recipe writes it: "1/5".
+        return json.dumps(f"{value.numerator}/{value.denominator}")
+    if isinstance(value, decimal.Decimal):
+        if not value.is_finite():
+            raise InputError(f"overrides {key}: {value} is not a finite number")
+        return json.dumps(format(value, "f"))
     if isinstance(value, str):
         return json.dumps(value, ensure_ascii=False)
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(_toml_value(v, key) for v in value) + "]"
     raise InputError(f"overrides {key}: {type(value).__name__} is not a recipe value; allowed: "
-                     "bool, int, float, str and lists of them")
+                     "bool, int, float, fractions.Fraction, decimal.Decimal, str and lists "
+                     "of them")
 
 
 def _overrides(overrides):
@@ -86,16 +99,32 @@ class Recipe:
     path: str = "recipe.toml"
 
     @classmethod
-    def from_file(cls, path):
+    def from_file(cls, path: str | os.PathLike) -> Recipe:
+        """The recipe in the TOML file at `path` (a regular file of at most 4 MiB)."""
         path = os.fspath(path)
         return cls(_curdle.read_recipe(path), path)
 
     @classmethod
-    def from_text(cls, text, path="recipe.toml"):
+    def from_text(cls, text: str, path: str = "recipe.toml") -> Recipe:
+        """A recipe from its TOML text; `path` names it in messages."""
         return cls(text, path)
 
-    def generate(self, seed=None, window=None, overrides=None, layout=True, threads=0,
-                 max_memory=0):
+    def generate(self, seed: int | str | None = None,
+                 window: Sequence[int] | str | None = None,
+                 overrides: Mapping[str, object] | None = None, layout: bool = True,
+                 threads: int = 0, max_memory: int = 0) -> Run:
+        """Curdles this recipe; see curdle.generate, which this calls.
+
+        seed:       0 to 2^64 - 1; None: the recipe's `seed`.
+        window:     (x, y, w, h) in cells, or "x,y,w,h"; None: the recipe's or the field.
+        overrides:  dotted recipe keys and their values, e.g.
+                    {"lattice.base": 3, "curds.0.probabilities": [Fraction(1, 5), 0.5, "2/3"]}
+                    (probabilities as Fraction, float, int or text such as "1/5").
+        layout:     build the [layout] when the recipe has one.
+        threads:    worker threads (0: all cores).
+        max_memory: bytes (0: half the machine's).
+        Raises InputError naming the key and what is allowed, ResourceLimitError above
+        max_memory, KeyboardInterrupt on Ctrl-C."""
         return generate(self, seed, window, overrides, layout, threads, max_memory)
 
 
@@ -284,12 +313,16 @@ class Run:
         return files
 
 
-def generate(recipe, seed=None, window=None, overrides=None, layout=True, threads=0,
-             max_memory=0):
+def generate(recipe: Recipe | str | os.PathLike, seed: int | str | None = None,
+             window: Sequence[int] | str | None = None,
+             overrides: Mapping[str, object] | None = None, layout: bool = True,
+             threads: int = 0, max_memory: int = 0) -> Run:
     """Curdles `recipe` (a Recipe, or a path) with `seed` (None: the recipe's), over `window`
     ((x, y, w, h) in cells; None: the recipe's or the field), with `overrides` as a dict of
-    dotted keys ({"lattice.base": 3}). The layout is built when the recipe has one and
-    `layout` is true. `max_memory` in bytes (0: half the machine's)."""
+    dotted keys ({"lattice.base": 3}; probabilities as fractions.Fraction, float, int or text
+    such as "1/5"). The layout is built when the recipe has one and `layout` is true.
+    `max_memory` in bytes (0: half the machine's). Returns a Run: its values, report, layout
+    and every output's bytes."""
     if not isinstance(recipe, Recipe):
         recipe = Recipe.from_file(recipe)
     native = _curdle.generate(text=recipe.text, path=recipe.path,
@@ -299,8 +332,10 @@ def generate(recipe, seed=None, window=None, overrides=None, layout=True, thread
     return Run(native, recipe)
 
 
-def search(recipe, seeds="1..1000", segment=None, targets=(), top=10, stride=0, overrides=None,
-           threads=0, max_memory=0):
+def search(recipe: Recipe | str | os.PathLike, seeds: str | range = "1..1000",
+           segment: Sequence[int] | str | None = None, targets: Iterable[str] | str = (),
+           top: int = 10, stride: int = 0, overrides: Mapping[str, object] | None = None,
+           threads: int = 0, max_memory: int = 0) -> dict:
     """The seeds (and segments of size `segment`, (w, h)) that best meet `targets`, as
     `curdle search` finds them: {"targets": [...], "hits": [{rank, seed, window, score,
     measured, command}, ...]}, best first."""
@@ -318,13 +353,15 @@ def search(recipe, seeds="1..1000", segment=None, targets=(), top=10, stride=0, 
     return json.loads(hits)
 
 
-def measure(path, values=2, threshold=None, base=2, max_memory=0):
+def measure(path: str | os.PathLike, values: int = 2, threshold: float | None = None,
+            base: int = 2, max_memory: int = 0) -> dict:
     """A picture quantised to `values` values and box-counted: measure.json as dicts."""
     return json.loads(_curdle.measure(os.fspath(path), int(values), threshold, int(base),
                                       int(max_memory)))
 
 
-def fit(source, base=2, stages=0, curds=1, cell_pixels=0, max_memory=0):
+def fit(source: str | os.PathLike, base: int = 2, stages: int = 0, curds: int = 1,
+        cell_pixels: int = 0, max_memory: int = 0) -> dict:
     """A recipe fitted to a picture or a cells.csv, as `curdle fit` fits it: the lattice, each
     curd's per-stage probability with its 95 % interval, measured and expected counts and the
     test of its branching, the warnings, and the recipe's TOML (Recipe.from_text(result["toml"])
@@ -333,7 +370,7 @@ def fit(source, base=2, stages=0, curds=1, cell_pixels=0, max_memory=0):
                        int(max_memory))
 
 
-def outputs():
+def outputs() -> list:
     """Every output a run can write: name, description, whether it needs a [layout] and
     whether it is written by default."""
     return _curdle.outputs()
