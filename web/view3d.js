@@ -21,11 +21,29 @@ sun.position.set(-3, 8, 5);
 scene.add(sun);
 const camera = new THREE.PerspectiveCamera(50, 4 / 3, 0.05, 2000);
 const controls = new OrbitControls(camera, renderer.domElement);
-controls.addEventListener("change", render);
+// The camera stays above the ground: however far it is dragged or zoomed, its eye is at least
+// ABOVE over the model's lowest point (a drag that went under the paving showed it from below).
+const ABOVE = 0.3;  // m
+let ground = 0;
+function keepAboveGround() {
+  const distance = camera.position.distanceTo(controls.target);
+  if (!(distance > 0)) return;
+  // The polar angle (from straight up) at which the eye would sink below ground + ABOVE.
+  const lowest = (ground + ABOVE - controls.target.y) / distance;
+  controls.maxPolarAngle = lowest <= -1 ? Math.PI : lowest >= 1 ? 0 : Math.acos(lowest);
+}
+controls.addEventListener("start", keepAboveGround);
+controls.addEventListener("change", () => {
+  keepAboveGround();
+  render();
+});
+controls.minDistance = 0.2;
 let model = null;
 let loading = null;
-// What the page's tests read: the model shown, how much of the picture it covers.
-window.view3d = { src: null, loads: 0, drawn: 0, error: null, pointOnElement };
+// What the page's tests read: the model shown, how much of the picture it covers, the eye's
+// height over the model's lowest point.
+window.view3d = { src: null, loads: 0, drawn: 0, error: null, pointOnElement,
+                  eyeAboveGround: () => camera.position.y - ground };
 
 function size() {
   const w = box.clientWidth || 600;
@@ -71,9 +89,20 @@ function frame(root) {
     camera.position.set(c.x - s.x * 0.1, bounds.max.y + EYE, bounds.max.z + Math.max(1.5, s.z * 0.08));
     controls.target.set(c.x, bounds.max.y, bounds.max.z - s.z * 0.3);
   }
+  ground = bounds.min.y;
+  camera.far = Math.max(camera.far, reach * 40);  // zoomed out, the model stays in view
+  controls.maxDistance = reach * 10;
   camera.updateProjectionMatrix();
+  keepAboveGround();
   controls.update();
 }
+
+// Back to the first view of the model.
+document.getElementById("view3d-reset").addEventListener("click", () => {
+  if (!model) return;
+  frame(model);
+  render();
+});
 
 // The element under a point of the canvas: the nearest named node holding its value.
 function elementAt(clientX, clientY) {
@@ -146,7 +175,9 @@ async function show(src) {
     window.view3d.drawn = drawnShare();
     window.view3d.error = null;
     box.classList.remove("stale");
-    caption.textContent = "The same layout.glb in 3-D: drag to turn, scroll to zoom, click an element";
+    caption.textContent =
+      "The same layout.glb in 3-D: drag to turn (the eye stays above ground), scroll to zoom, " +
+      "click an element; Reset view goes back to this view";
   } catch (err) {
     if (err.name === "AbortError") return;
     window.view3d.error = String(err.message || err);

@@ -181,6 +181,21 @@ try {
           `a click on ${target.id} in 3-D shows its ID, value and material as schedule.csv has them: ${said}`);
   }
   await page.locator('#view3d-figure').screenshot({ path: path.join(shots, '2b-segment-3d.png') });
+  // Dragged upwards (60 pixels once put the eye under the paving) and far beyond, the eye stays
+  // above ground; Reset view brings back the first view.
+  const eye0 = await page.evaluate(() => window.view3d.eyeAboveGround());
+  const canvas3d = await page.locator('#view3d canvas').boundingBox();
+  for (const dy of [60, 400]) {
+    await page.mouse.move(canvas3d.x + canvas3d.width / 2, canvas3d.y + canvas3d.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(canvas3d.x + canvas3d.width / 2, canvas3d.y + canvas3d.height / 2 - dy, { steps: 8 });
+    await page.mouse.up();
+    const eye = await page.evaluate(() => window.view3d.eyeAboveGround());
+    check(eye >= 0.29, `a ${dy}-pixel upward drag leaves the eye above ground (${eye.toFixed(2)} m)`);
+  }
+  await page.click('#view3d-reset');
+  const eyeReset = await page.evaluate(() => window.view3d.eyeAboveGround());
+  check(Math.abs(eyeReset - eye0) < 1e-6, `Reset view returns to the first view (eye ${eyeReset.toFixed(2)} m)`);
   const loads = await page.evaluate(() => window.view3d.loads);
 
   // Downloads, and the same files from the command line with the command the page shows.
