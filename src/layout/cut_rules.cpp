@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <tuple>
 
 #include "curdle/stop.h"
 #include "layout/builder.h"
@@ -44,6 +45,11 @@ uint64_t slivers_in(double a, double b, double module, double pitch, double shif
     if (k1 == k0) break;
   }
   return count;
+}
+
+// The cut pieces of any width there: what a shift trades its slivers against.
+uint64_t cuts_in(double a, double b, double module, double pitch, double shift) {
+  return slivers_in(a, b, module, pitch, shift, module);
 }
 
 }  // namespace
@@ -122,21 +128,29 @@ ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis) {
     if (band.lines) bands.push_back(std::move(band));
   }
   const double least = least_cut(spec, axis);
+  // Per shift: the slivers, then the cut pieces of any width (a shift that clears the slivers
+  // by cutting a whole course more is worse than one that clears them with fewer cuts).
   auto count = [&](double shift) {
-    uint64_t n = 0;
+    std::pair<uint64_t, uint64_t> n{0, 0};
     for (const Band& band : bands)
-      for (const Span& s : band.material)
-        n += band.lines * slivers_in(s.first, s.second, module, pitch, shift, least);
+      for (const Span& s : band.material) {
+        n.first += band.lines * slivers_in(s.first, s.second, module, pitch, shift, least);
+        n.second += band.lines * cuts_in(s.first, s.second, module, pitch, shift);
+      }
     return n;
   };
   ShiftAdvice advice;
   advice.shift = spec.shift[axis];
-  advice.slivers = advice.now = count(spec.shift[axis]);
+  std::tie(advice.slivers, advice.cuts) = count(spec.shift[axis]);
+  advice.now = advice.slivers;
+  advice.cuts_now = advice.cuts;
+  if (advice.slivers == 0) return advice;
   // Whole millimetres (coarser for elements over 4 m): what a setter-out can mark.
   const double step = std::max(1.0, std::ceil(module / 4000));
-  for (double s = 0; s < module - kEps && advice.slivers > 0; s += step) {
-    const uint64_t n = count(s);
-    if (n < advice.slivers) advice.slivers = n, advice.shift = s;
+  for (double s = 0; s < module - kEps; s += step) {
+    const auto n = count(s);
+    if (n < std::pair{advice.slivers, advice.cuts})
+      std::tie(advice.slivers, advice.cuts) = n, advice.shift = s;
   }
   return advice;
 }
@@ -253,13 +267,22 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<
   // The counts along rows and columns find each axis's best shift; laying the surface with them
   // (both, or one) checks what they leave, and only a shift that leaves fewer is advised.
   const ShiftAdvice x = best_shift(layout, spec, 0), y = best_shift(layout, spec, 1);
+  // Trials are ranked by the slivers they leave, then by the pieces they cut: the rules first,
+  // then as few cuts as the rules allow.
   struct Trial {
     LayoutSpec spec;
     Layout blank;
     std::vector<Sliver> left;
+    size_t cut = 0;
   };
+  auto cut_pieces = [](const Layout& l) {
+    size_t n = 0;
+    for (const Element& e : l.elements) n += e.cut ? 1 : 0;
+    return n;
+  };
+  const size_t cut_now = cut_pieces(layout);
   std::optional<Trial> best;
-  size_t fewest = slivers.size();
+  std::pair<size_t, size_t> fewest{slivers.size(), cut_now};
   for (const std::array<double, 2> shift :
        {std::array{x.shift, y.shift}, std::array{x.shift, spec.shift[1]},
         std::array{spec.shift[0], y.shift}}) {
@@ -268,9 +291,10 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<
     trial.shift = shift;
     Layout blank = lay_blank_grid(trial, openings);
     std::vector<Sliver> left = find_slivers(blank, trial);
-    if (left.size() < fewest) {
-      fewest = left.size();
-      best.emplace(Trial{std::move(trial), std::move(blank), std::move(left)});
+    const std::pair<size_t, size_t> leaves{left.size(), cut_pieces(blank)};
+    if (leaves < fewest) {
+      fewest = leaves;
+      best.emplace(Trial{std::move(trial), std::move(blank), std::move(left), leaves.second});
     }
   }
   if (!best) {
@@ -281,10 +305,12 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<
   const auto cells = elements_to_cover(best->spec);
   note += fmt::format(
       "; layout.shift = [{:g}, {:g}] leaves {} (checked by laying it; the window then takes {} x "
-      "{} cells)",
+      "{} cells) and cuts {} {}s, against {} now{}",
       best->spec.shift[0] + 0.0, best->spec.shift[1] + 0.0,
-      fewest ? std::to_string(fewest) : "none", cells[0], cells[1]);
-  if (fewest)
+      fewest.first ? std::to_string(fewest.first) : "none", cells[0], cells[1], best->cut,
+      layout.element_type, cut_now,
+      best->cut > cut_now ? ": fewer specials for more cut pieces, weigh the two" : "");
+  if (fewest.first)
     note += fmt::format("; what it leaves needs specials or closers: {}",
                         specials(best->blank, best->left));
   layout.notes.push_back(note);

@@ -29,7 +29,8 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<
 // less its openings.
 struct ShiftAdvice {
   double shift = 0;
-  uint64_t slivers = 0, now = 0;
+  uint64_t slivers = 0, now = 0;    // below the rule with the advised shift, and now
+  uint64_t cuts = 0, cuts_now = 0;  // cut pieces of any width, the same
 };
 ShiftAdvice best_shift(const Layout& layout, const LayoutSpec& spec, int axis);
 
