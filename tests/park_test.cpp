@@ -90,3 +90,40 @@ TEST(Park, ElementsShareCellsWithoutOverlapAndSurfacesCoverTheArea) {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+// The clearance holds all round: an object stands at least `clearance` from its cell's edges
+// and from the other objects in the cell, or is left out and the note says so. On 2 m cells
+// with 300 mm clearance, two objects of 1000 mm once stood 75 mm from the cell's edge.
+TEST(Park, ObjectsKeepTheirClearanceOrAreLeftOutWithANote) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  for (const double cell : {3000.0, 2000.0}) {
+    LayoutSpec spec = test::trees_and_benches();
+    spec.module_w = spec.module_h = cell;
+    const double c = spec.own<ParkKeys>().clearance;
+    const Layout layout = make_layout(d, curdle(d, 3, d.field), d.field, spec);
+    std::map<std::pair<int64_t, int64_t>, std::vector<Rect>> objects;
+    for (const Element& e : layout.elements) {
+      if (!e.stands) continue;
+      const Rect box = laid_bounds(e);
+      const Rect cell_box{e.column * cell, e.row * cell, cell, cell};
+      EXPECT_GE(box.x - cell_box.x, c - 1e-6) << e.id;
+      EXPECT_GE(box.y - cell_box.y, c - 1e-6) << e.id;
+      EXPECT_GE(cell_box.right() - box.right(), c - 1e-6) << e.id;
+      EXPECT_GE(cell_box.top() - box.top(), c - 1e-6) << e.id;
+      for (const Rect& other : objects[{e.row, e.column}]) {
+        const double gap = std::max({other.x - box.right(), box.x - other.right(),
+                                     other.y - box.top(), box.y - other.top()});
+        EXPECT_GE(gap, c - 1e-6) << e.id;
+      }
+      objects[{e.row, e.column}].push_back(box);
+    }
+    bool noted = false;
+    for (const std::string& note : layout.notes)
+      noted |= note.find("with the clearance of 300 mm all round") != std::string::npos;
+    EXPECT_EQ(noted, cell == 2000.0) << cell;  // 3 m cells hold both; 2 m cells cannot
+  }
+}
+
+}  // namespace curdle

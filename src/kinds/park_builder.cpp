@@ -115,7 +115,14 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
       const double cx = slots[i].x + slots[i].w / 2, cy = slots[i].y + slots[i].h / 2;
       const Rect footprint = kind.round ? Rect{cx - kind.w / 2, cy - kind.w / 2, kind.w, kind.w}
                                         : Rect{cx - kind.w / 2, cy - kind.h / 2, kind.w, kind.h};
-      if (within(cell, footprint).area() < footprint.area() - kEps) {
+      // The clearance holds all round: to the cell's laid edges (the area's edge, an outline,
+      // the neighbouring cells) and to the other objects, whose slots it separates.
+      const double c = spec.own<ParkKeys>().clearance;
+      const Rect room{footprint.x - c, footprint.y - c, footprint.w + 2 * c, footprint.h + 2 * c};
+      const bool in_slot = footprint.x >= slots[i].x - kEps && footprint.y >= slots[i].y - kEps &&
+                           footprint.right() <= slots[i].right() + kEps &&
+                           footprint.top() <= slots[i].top() + kEps;
+      if (!in_slot || within(cell, room).area() < room.area() - kEps) {
         ++left_out;
         continue;
       }
@@ -128,9 +135,10 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
   }
   if (left_out > 0)
     layout.notes.push_back(fmt::format(
-        "{} object{} left out where the area's edge or outline cuts the cell and {} would not "
-        "stand whole",
-        left_out, left_out == 1 ? " is" : "s are", left_out == 1 ? "it" : "they"));
+        "{} object{} left out where {} would not stand whole with the clearance of {:g} mm "
+        "all round (to the cell's edges, the area's edge or outline, and the other objects)",
+        left_out, left_out == 1 ? " is" : "s are", left_out == 1 ? "it" : "they",
+        spec.own<ParkKeys>().clearance));
 }
 
 }  // namespace curdle
