@@ -162,8 +162,10 @@ TEST(Layout, ZonesExcludeOrSetTheirValue) {
     } else if (contains(corner, cx, cy)) {
       EXPECT_EQ(e.value, 2u) << e.id;
     }
+    // A value zone holds the pieces whose centre it holds; an excluded zone none: a piece cut
+    // along it keeps its parts outside it, whatever its bounds' centre.
     for (const auto& z : spec.zones)
-      if (contains(z.polygon, cx, cy)) ++held[z.name][e.value];
+      if (z.rule == ZoneRule::value && contains(z.polygon, cx, cy)) ++held[z.name][e.value];
   }
   for (const Rect& o : layout.openings) openings += o.area();
   EXPECT_NEAR(openings, 6e6 + 4e6, 1e-3);
@@ -173,6 +175,24 @@ TEST(Layout, ZonesExcludeOrSetTheirValue) {
   EXPECT_GT(layout.zones[2].by_value[3], 30u);  // the band holds two courses' worth
   EXPECT_NEAR(layout.zones[1].area, 4e6, 1e-6);
   EXPECT_GT(layout.zones[0].cut, 0u);
+}
+
+// A drain 100 mm wide through the middle of a column of 600 mm slabs cuts each in two, parts
+// either side: the drain holds none of them (it was said to hold them all), and they are its cut.
+TEST(Layout, ADrainThroughSlabsHoldsNoneOfThem) {
+  const Design d = design(2, 2, {{"3/4", "3/4", "2/3", "2/3"}});
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("paving"));
+  spec.module_w = 600, spec.module_h = 300, spec.joint = 5;
+  spec.size = std::array<double, 2>{6000, 3000};
+  const Polygon drain = rect_polygon(Rect{3025 + 250, 0, 100, 3000});  // mid-slab, column 5
+  spec.zones = {{"drain", ZoneRule::exclude, 0, drain, *as_rectangles(drain)}};
+  const Layout layout = lay_floor(d, spec, 3);
+  ASSERT_EQ(layout.zones.size(), 1u);
+  uint64_t held = 0;
+  for (const uint64_t n : layout.zones[0].by_value) held += n;
+  EXPECT_EQ(held, 0u);
+  EXPECT_EQ(layout.zones[0].cut, 10u);  // the column's ten courses
 }
 
 TEST(Layout, AnOutlineIsCoveredExactly) {

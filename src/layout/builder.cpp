@@ -113,6 +113,35 @@ void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
   e.cut = true;
 }
 
+// A point inside a ring (an outer ring of a piece's outline): the middle of the first span a
+// line across its middle height cuts through it. None for a degenerate ring.
+// The signed area of a ring: positive for an outer ring (counter-clockwise).
+double ring_area(const Ring& ring) {
+  double twice = 0;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const auto& a = ring[i];
+    const auto& b = ring[(i + 1) % ring.size()];
+    twice += a[0] * b[1] - b[0] * a[1];
+  }
+  return twice / 2;
+}
+
+std::optional<std::array<double, 2>> point_inside(const Ring& ring) {
+  if (ring.size() < 3) return std::nullopt;
+  double lo = ring[0][1], hi = ring[0][1];
+  for (const auto& p : ring) lo = std::min(lo, p[1]), hi = std::max(hi, p[1]);
+  const double y = (lo + hi) / 2;
+  std::vector<double> xs;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const auto& a = ring[i];
+    const auto& b = ring[(i + 1) % ring.size()];
+    if ((a[1] <= y) != (b[1] <= y)) xs.push_back(a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
+  }
+  if (xs.size() < 2) return std::nullopt;
+  std::sort(xs.begin(), xs.end());
+  return std::array<double, 2>{(xs[0] + xs[1]) / 2, y};
+}
+
 // Value zones give their value to the elements whose centre they hold (the first zone listed
 // that holds it decides); every zone counts what it holds, and an excluded zone the pieces cut
 // along it.
@@ -135,7 +164,23 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
                            : std::any_of(z.rects.begin(), z.rects.end(),
                                          [&](const Rect& r) { return overlaps(r, e.nominal); })))
         ++layout.zones[i].cut;
-      if (contains(z.polygon, cx, cy)) holding.push_back(i);
+      // An excluded zone holds a piece only where a part of it lies: a slab cut in two by a
+      // drain has its parts either side and its bounds' centre in the drain, a slab cut round
+      // a tree pit its bounds' centre in the pit.
+      bool held = contains(z.polygon, cx, cy);
+      if (held && z.rule == ZoneRule::exclude) {
+        if (e.outline)
+          held = std::any_of(e.outline->rings.begin(), e.outline->rings.end(), [&](const Ring& r) {
+            if (ring_area(r) <= 0) return false;  // an island: its inside is not the piece's
+            const auto p = point_inside(r);
+            return p && contains(z.polygon, (*p)[0], (*p)[1]);
+          });
+        else if (e.shape.size() > 1)
+          held = std::any_of(e.shape.begin(), e.shape.end(), [&](const Rect& r) {
+            return contains(z.polygon, r.x + r.w / 2, r.y + r.h / 2);
+          });
+      }
+      if (held) holding.push_back(i);
     }
     for (const size_t i : holding)
       if (spec.zones[i].rule == ZoneRule::value) {

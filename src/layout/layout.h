@@ -83,11 +83,13 @@ struct ZoneCount {
   std::string name;
   ZoneRule rule = ZoneRule::exclude;
   uint32_t value = 0;
-  Polygon polygon;                 // as the zone was given
-  double area = 0;                 // of the zone on the surface, mm²
-  std::vector<uint64_t> by_value;  // elements whose centre it holds, per value
-  uint64_t cut = 0;                // exclude: elements cut along it
-  Contour contour;                 // with its arcs, where it has any
+  Polygon polygon;  // as the zone was given
+  double area = 0;  // of the zone on the surface, mm²
+  // Per value, the elements whose centre it holds; an excluded zone only those with a part in
+  // it (a piece cut along it keeps its parts outside, whatever its bounds' centre).
+  std::vector<uint64_t> by_value;
+  uint64_t cut = 0;  // exclude: elements cut along it
+  Contour contour;   // with its arcs, where it has any
 };
 
 enum class Combine {
