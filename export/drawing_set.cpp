@@ -76,7 +76,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   std::map<uint32_t, Quantity> quantities;
   for (const Element& e : layout.elements) {
     stop_point();
-    Quantity& q = quantities[e.value];
+    Quantity& q = quantities[layout.legend[e.value].same_as];  // by legend line
     (e.cut ? q.cut : q.whole) += 1;
     q.area += e.area() / 1e6;
   }
@@ -84,8 +84,8 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   const double room = w - kMargin - title_width(w) - kLeftMargin - 6;
   const size_t columns = room >= 200 ? 2 : 1;
   const double column_w = room / static_cast<double>(columns);
-  for (const LegendEntry& e : layout.legend) {
-    if (e.count == 0) continue;  // only what the plan shows
+  for (const LegendLine& legend_line : legend_lines(layout.legend)) {
+    const LegendEntry& e = *legend_line.entry;
     if (shown == 8 * columns) break;
     const double x = kLeftMargin + 3 + column_w * static_cast<double>(shown / 8);
     const double y = strip + 4 + 5.6 * static_cast<double>(shown % 8);
@@ -102,7 +102,8 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
     colour(cr, kInk);
     box(cr, x, y, 8, 4, 0.2);
     const Quantity q = quantities.count(e.value) ? quantities[e.value] : Quantity{};
-    std::string line = fmt::format("{} {}: {}", e.value, e.label, legend_count(layout, e.count));
+    std::string line = fmt::format("{} {}: {}", legend_line.values, e.label,
+                                   legend_count(layout, legend_line.count));
     if (q.cut) line += fmt::format(" ({} cut)", q.cut);
     if (q.area > 0 && layout.kind->ground() != Ground::sheet)  // not a sheet's holes
       line += fmt::format(", {:.2f} m²", q.area);
@@ -154,11 +155,12 @@ InstallerDrawing installer_set(const Layout& layout, const InstallerPlan& plan) 
       c.row0 = std::min(c.row0, e.row), c.row1 = std::max(c.row1, e.row);
       c.column0 = std::min(c.column0, e.column), c.column1 = std::max(c.column1, e.column);
     }
-    const uint32_t value = e.type.empty() ? e.value : 0;
+    // Values that lay the same product are one line, hatched alike (LegendEntry::same_as).
+    const uint32_t value = e.type.empty() ? layout.legend[e.value].same_as : 0;
     SheetContents::KeyLine& line = c.key[{piece_material(layout, e), value}];
     if (line.count++ == 0) {
       const LegendEntry& l = layout.legend[e.value];
-      line.value = e.value;
+      line.value = l.same_as;
       line.swatch = e.type.empty() && layout.combine == Combine::keep && l.parts.size() > 1
                         ? l.parts
                         : std::vector<Rgb>{piece_colour(layout, e)};

@@ -217,7 +217,8 @@ void write_key(std::ostream& out, const Layout& layout, double x, double y, doub
   };
   std::map<std::pair<std::string, uint32_t>, Line> lines;  // by material, then value
   for (const Element& e : layout.elements) {
-    Line& l = lines[{piece_material(layout, e), e.type.empty() ? e.value : 0}];
+    Line& l =
+        lines[{piece_material(layout, e), e.type.empty() ? layout.legend[e.value].same_as : 0}];
     if (l.count++ == 0) l.colour = piece_colour(layout, e);
   }
   const double cap = 2.5 / kCapHeightEm * s, row = 6 * s;

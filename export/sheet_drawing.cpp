@@ -185,7 +185,9 @@ void hatch(cairo_t* cr, uint32_t value, const Rgb& under, double x0, double y0, 
 void draw_hatches(cairo_t* cr, const Layout& layout, const View& v) {
   std::map<uint32_t, std::vector<const Element*>> by_value;
   for (const Element& e : layout.elements) {
-    if (e.value != 0 && v.shows(laid_bounds(e))) by_value[e.value].push_back(&e);
+    // Values that lay the same product share a hatch, as they share a key line.
+    if (e.value != 0 && v.shows(laid_bounds(e)))
+      by_value[e.type.empty() ? layout.legend[e.value].same_as : e.value].push_back(&e);
   }
   const double x0 = v.x(v.window.x), x1 = v.x(v.window.right());
   const double y0 = v.y(v.window.top()), y1 = v.y(v.window.y);

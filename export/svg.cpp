@@ -422,18 +422,19 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
   const double tx = margin + W * 0.42;  // the title block's left edge
   // The legend's text shrinks, when its longest line would run into the title block, to about
   // 0.6 em a character.
+  const std::vector<LegendLine> legend = legend_lines(layout.legend);
   size_t longest_entry = 0;
-  for (const LegendEntry& e : layout.legend)
-    longest_entry =
-        std::max(longest_entry,
-                 fmt::format("{} {}: {}", e.value, e.label, legend_count(layout, e.count)).size());
+  for (const LegendLine& l : legend)
+    longest_entry = std::max(
+        longest_entry,
+        fmt::format("{} {}: {}", l.values, l.entry->label, legend_count(layout, l.count)).size());
   const double legend_room = tx - unit * 1.2 - (margin + unit * 2.6);
   const double legend_font =
       std::min(unit, legend_room / (0.6 * static_cast<double>(std::max<size_t>(longest_entry, 1))));
   out << fmt::format("<g id=\"legend\" font-size=\"{}\" fill=\"#222\">\n", mm(legend_font));
   size_t shown = 0;
-  for (const LegendEntry& e : layout.legend) {
-    if (e.count == 0) continue;  // only what the plan shows
+  for (const LegendLine& l : legend) {
+    const LegendEntry& e = *l.entry;
     if (shown == 16) break;
     const double y = top + unit * 1.6 * static_cast<double>(shown++);
     const bool striped = layout.combine == Combine::keep && layout.kind->ground() != Ground::sheet;
@@ -444,8 +445,8 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
         "height=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\">"
         "{} {}: {}</text></g>\n",
         e.value, mm(margin), mm(y), mm(unit * 2), mm(unit * 1.2), fill, mm(unit * 0.05),
-        mm(margin + unit * 2.6), mm(y + unit), e.value, escape(e.label),
-        escape(legend_count(layout, e.count)));
+        mm(margin + unit * 2.6), mm(y + unit), l.values, escape(e.label),
+        escape(legend_count(layout, l.count)));
   }
   out << "</g>\n";
   const std::vector<std::string> lines = title_lines(layout);

@@ -126,10 +126,10 @@ TEST(MarkovTheory, ExactModeMatchesOverAThousandSeeds) {
 
 TEST(MarkovTheory, AFieldThatCutsRootCellsMatchesOverAThousandSeeds) {
   // 100 x 70 cells of roots 32 a side: every level has cells the field cuts.
-  const Design d = markov_design("base = 2\ndimension = 2\nstages = 5",
-                                 markov_curd(R"(["dark", "mid"])", "\"dark\"", kStationary) +
-                                     "stages = 5\n",
-                                 "cells = [100, 70]");
+  const Design d =
+      markov_design("base = 2\ndimension = 2\nstages = 5",
+                    markov_curd(R"(["dark", "mid"])", "\"dark\"", kStationary) + "stages = 5\n",
+                    "cells = [100, 70]");
   check_against_theory(d, kSeeds);
 }
 
