@@ -5,19 +5,22 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "curdle/text.h"
+#include "export/sheet_drawing.h"
 #include "export/wkt.h"
 #include "layout/piece.h"
 
 namespace curdle {
 namespace {
 
+using namespace sheet_drawing;
+
 // Positions to the micrometre, as in the schedule and the DXF.
 std::string num(double v) { return mm_text(v); }
 
 constexpr double kRowStripMm = 14, kColumnStripMm = 8, kHeadingMm = 11;  // paper mm
-constexpr double kKeyMm = 80;  // the key's column beside the map, paper mm
 const char* const kRed = "#c92a2a";
 const char* const kBlue = "#1864ab";
 
@@ -49,15 +52,13 @@ std::string rings_path(const std::vector<Ring>& rings, const Frame& f) {
   return d;
 }
 
-void write_element(std::ostream& out, const Layout& layout, const Element& e, const Frame& f) {
-  const Rgb& c = piece_colour(layout, e);
-  const std::string fill = fmt::format("rgb({},{},{})", c.r, c.g, c.b);
-  out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">",
-                     xml_escape(e.id), e.row, e.column);
+// A piece's shape in `fill`: its circle, its outline (merged openings, a piece cut along a
+// sloping edge) or its rectangles.
+void write_shape(std::ostream& out, const Element& e, const Frame& f, const std::string& fill) {
   if (e.circle) {
     out << fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/>", num(f.x(e.circle->cx)),
                        num(f.y(e.circle->cy)), num(e.circle->d / 2), fill);
-  } else if (e.outline) {  // merged openings, or a piece cut along a sloping edge
+  } else if (e.outline) {
     out << fmt::format("<path d=\"{}\" fill=\"{}\" fill-rule=\"evenodd\"/>",
                        rings_path(e.outline->rings, f), fill);
   } else {
@@ -65,7 +66,47 @@ void write_element(std::ostream& out, const Layout& layout, const Element& e, co
       out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
                          num(f.x(r.x)), num(f.y(r.top())), num(r.w), num(r.h), fill);
   }
+}
+
+void write_element(std::ostream& out, const Layout& layout, const Element& e, const Frame& f) {
+  const Rgb& c = piece_colour(layout, e);
+  out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">",
+                     xml_escape(e.id), e.row, e.column);
+  write_shape(out, e, f, fmt::format("rgb({},{},{})", c.r, c.g, c.b));
   out << "</g>\n";
+}
+
+// The hatch a piece is drawn with, as on the PDF sheets (sheet_drawing.h): one per product
+// (LegendEntry::same_as); none for value 0, a park's elements and openings.
+std::optional<uint32_t> hatched(const Layout& layout, const Element& e) {
+  if (!e.type.empty() || e.form == ElementForm::opening || e.value == 0) return std::nullopt;
+  return layout.legend[e.value].same_as;
+}
+
+// The hatches as SVG patterns, `s` drawing units a paper millimetre: lines across a tile of
+// the spacing, turned to the hatch's direction.
+void write_hatch_patterns(std::ostream& out, const Layout& layout, double s) {
+  out << "<defs>\n";
+  for (const LegendLine& l : legend_lines(layout.legend)) {
+    // The ink over the colour as drawn: faint on white paper.
+    const auto faint = [](uint8_t c) {
+      return static_cast<uint8_t>(std::lround(255 - (255 - c) * kFaintAlpha));
+    };
+    const Rgb& c = l.entry->colour;
+    const std::optional<HatchStyle> h =
+        hatch_style(l.entry->same_as, Rgb{faint(c.r), faint(c.g), faint(c.b)});
+    if (!h) continue;
+    const double t = h->spacing * s;
+    std::string d = fmt::format("M0 {}H{}", num(t / 2), num(t));
+    if (h->degrees.size() > 1) d += fmt::format("M{} 0V{}", num(t / 2), num(t));  // crossed
+    out << fmt::format(
+        "<pattern id=\"hatch-{}\" patternUnits=\"userSpaceOnUse\" width=\"{}\" height=\"{}\" "
+        "patternTransform=\"rotate({})\"><path d=\"{}\" stroke=\"rgb({},{},{})\" "
+        "stroke-opacity=\"{}\" stroke-width=\"{}\"/></pattern>\n",
+        l.entry->same_as, num(t), num(t), num(-h->degrees.front()), d, h->ink.r, h->ink.g, h->ink.b,
+        kHatchAlpha, num(kHatchLineMm * s));
+  }
+  out << "</defs>\n";
 }
 
 // What is laid: paper beyond the outline, the outline, openings, fabrication sheets and the
@@ -100,9 +141,15 @@ void write_surface(std::ostream& out, const Layout& layout, const Frame& f, doub
         num(f.x(sheet.area.x)), num(f.y(sheet.area.top())), num(sheet.area.w), num(sheet.area.h),
         num(0.1 * s));
   out << fmt::format(
-      "<g id=\"elements\" fill-opacity=\"0.35\" stroke=\"#555\" stroke-width=\"{}\">\n",
+      "<g id=\"elements\" fill-opacity=\"{}\" stroke=\"#555\" stroke-width=\"{}\">\n", kFaintAlpha,
       num(0.1 * s));
   for (const Element& e : layout.elements) write_element(out, layout, e, f);
+  out << "</g>\n<g id=\"hatches\">\n";  // over the faint colours, for black-and-white prints
+  for (const Element& e : layout.elements)
+    if (const auto h = hatched(layout, e)) {
+      write_shape(out, e, f, fmt::format("url(#hatch-{})", *h));
+      out << "\n";
+    }
   out << "</g>\n";
 }
 
@@ -207,36 +254,58 @@ void write_courses(std::ostream& out, const Layout& layout, const Rect& first, c
       kStartText);
 }
 
-}  // namespace
-
-// The key beside the map: what every piece is made of, its colour as drawn, and how many.
-void write_key(std::ostream& out, const Layout& layout, double x, double y, double s) {
-  struct Line {
-    Rgb colour;
-    size_t count = 0;
-  };
-  std::map<std::pair<std::string, uint32_t>, Line> lines;  // by material, then value
+// The key beside the map: what every piece is made of, its colour and hatch as drawn (the
+// pieces' faint fill), and how many; one line per product (LegendEntry::same_as).
+struct KeyLine {
+  Rgb colour;
+  std::optional<uint32_t> hatch;
+  size_t count = 0;
+};
+std::map<std::pair<std::string, uint32_t>, KeyLine> key_lines(const Layout& layout) {
+  std::map<std::pair<std::string, uint32_t>, KeyLine> lines;  // by material, then product
   for (const Element& e : layout.elements) {
-    Line& l =
-        lines[{piece_material(layout, e), e.type.empty() ? layout.legend[e.value].same_as : 0}];
-    if (l.count++ == 0) l.colour = piece_colour(layout, e);
+    const std::optional<uint32_t> h = hatched(layout, e);
+    KeyLine& l = lines[{piece_material(layout, e), h.value_or(0)}];
+    if (l.count++ == 0) l.colour = piece_colour(layout, e), l.hatch = h;
   }
-  const double cap = 2.5 / kCapHeightEm * s, row = 6 * s;
+  return lines;
+}
+
+constexpr double kKeyCapMm = 2.5, kKeyCharEm = 0.62;  // a character's width, in ems
+
+// The key's width in paper mm: its longest line at about 0.62 em a character, so that no line
+// runs off the drawing ("Dark brown ...: 3105" once read "310").
+double key_width_mm(const Layout& layout) {
+  size_t longest = 3;
+  for (const auto& [what, line] : key_lines(layout))
+    longest = std::max(longest, fmt::format("{}: {}", what.first, line.count).size());
+  return 10 + kKeyCharEm * kKeyCapMm / kCapHeightEm * static_cast<double>(longest) + 4;
+}
+
+void write_key(std::ostream& out, const Layout& layout, double x, double y, double s) {
+  const double cap = kKeyCapMm / kCapHeightEm * s, row = 6 * s;
   out << fmt::format(
       "<g id=\"key\" font-size=\"{}\" fill=\"#222\"><text x=\"{}\" y=\"{}\" "
       "font-weight=\"bold\">key</text>\n",
       num(cap), num(x), num(y));
   double at = y + row;
-  for (const auto& [what, line] : lines) {
+  for (const auto& [what, line] : key_lines(layout)) {
+    const std::string box = fmt::format("x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"", num(x),
+                                        num(at - 3.5 * s), num(8 * s), num(4 * s));
     out << fmt::format(
-        "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"rgb({},{},{})\" "
-        "stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\">{}: {}</text>\n",
-        num(x), num(at - 3.5 * s), num(8 * s), num(4 * s), line.colour.r, line.colour.g,
-        line.colour.b, num(0.2 * s), num(x + 10 * s), num(at), xml_escape(what.first), line.count);
+        "<rect {} fill=\"#fff\"/><rect {} fill=\"rgb({},{},{})\" fill-opacity=\"{}\"/>", box, box,
+        line.colour.r, line.colour.g, line.colour.b, kFaintAlpha);
+    if (line.hatch) out << fmt::format("<rect {} fill=\"url(#hatch-{})\"/>", box, *line.hatch);
+    out << fmt::format(
+        "<rect {} fill=\"none\" stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" "
+        "y=\"{}\">{}: {}</text>\n",
+        box, num(0.2 * s), num(x + 10 * s), num(at), xml_escape(what.first), line.count);
     at += row;
   }
   out << "</g>\n";
 }
+
+}  // namespace
 
 void write_install_svg(std::ostream& out, const Layout& layout, const InstallerPlan& plan) {
   const Provenance& title = layout.source;
@@ -245,7 +314,7 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
   const Rect& last = plan.sheets.back().window;
   // The sheets' grid, the row strip on its left, column numbers under it and a heading above.
   const Frame f{first.x - kRowStripMm * s, last.top() + kHeadingMm * s};
-  const double width = last.right() + (2 + kKeyMm) * s - f.left;
+  const double width = last.right() + (6 + key_width_mm(layout)) * s - f.left;
   const double height = f.top - (first.y - kColumnStripMm * s);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out << fmt::format(
@@ -268,6 +337,7 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
       "{:.1f} mm; the grid: the sheets of layout.pdf</text></g>\n",
       num(heading), num(f.x(first.x)), num(3.5 * s), xml_escape(title.recipe), num(f.x(first.x)),
       num(8 * s), s, plan.text_mm);
+  write_hatch_patterns(out, layout, s);
   write_surface(out, layout, f, s);
   if (plan.sheets.size() > 1) write_sheet_grid(out, plan, f, s);
   write_labels(out, plan, f, s);

@@ -156,24 +156,32 @@ void ring_paths(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {
   add_rings(cr, rings, v);
 }
 
-void hatch(cairo_t* cr, uint32_t value, const Rgb& under, double x0, double y0, double x1,
-           double y1) {
-  if (value == 0) return;
+std::optional<HatchStyle> hatch_style(uint32_t value, const Rgb& under) {
+  if (value == 0) return std::nullopt;
   // Directions of the lines (degrees from the paper's x axis), per value within each eight.
   static const std::vector<std::vector<double>> kStyles = {{45}, {135},   {45, 135}, {0},
                                                            {90}, {0, 90}, {45}};
   const size_t round = (value - 1) / kStyles.size();
   const size_t style = (value - 1) % kStyles.size();
-  const double spacing =
-      (style + 1 == kStyles.size() ? 0.6 : 1.2) + 0.6 * static_cast<double>(round);
+  HatchStyle h;
+  h.degrees = kStyles[style];
+  h.spacing = (style + 1 == kStyles.size() ? 0.6 : 1.2) + 0.6 * static_cast<double>(round);
   const double luminance = 0.299 * under.r + 0.587 * under.g + 0.114 * under.b;
-  colour(cr, luminance < 110 ? Rgb{255, 255, 255} : kInk, 0.85);
-  cairo_set_line_width(cr, 0.12);
+  h.ink = luminance < 110 ? Rgb{255, 255, 255} : kInk;
+  return h;
+}
+
+void hatch(cairo_t* cr, uint32_t value, const Rgb& under, double x0, double y0, double x1,
+           double y1) {
+  const std::optional<HatchStyle> h = hatch_style(value, under);
+  if (!h) return;
+  colour(cr, h->ink, kHatchAlpha);
+  cairo_set_line_width(cr, kHatchLineMm);
   const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
-  const double reach = std::hypot(x1 - x0, y1 - y0) / 2 + spacing;
-  for (const double degrees : kStyles[style]) {
+  const double reach = std::hypot(x1 - x0, y1 - y0) / 2 + h->spacing;
+  for (const double degrees : h->degrees) {
     const double a = degrees * M_PI / 180, dx = std::cos(a), dy = -std::sin(a);
-    for (double t = -reach; t <= reach; t += spacing) {  // offsets along the normal (-dy, dx)
+    for (double t = -reach; t <= reach; t += h->spacing) {  // offsets along the normal (-dy, dx)
       const double px = cx - dy * t, py = cy + dx * t;
       cairo_move_to(cr, px - dx * reach, py - dy * reach);
       cairo_line_to(cr, px + dx * reach, py + dy * reach);

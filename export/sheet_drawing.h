@@ -6,6 +6,7 @@
 
 #include <cairo.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,16 @@ void ring_paths(cairo_t* cr, const std::vector<Ring>& rings, const View& v);
 // one diagonal, the other, both, level lines, upright lines, a square grid and close
 // diagonals, wider apart for each further eight values; in ink over light colours and in
 // white over dark ones. `hatch` fills the current clip within the paper box (x0, y0)-(x1, y1).
+struct HatchStyle {
+  std::vector<double> degrees;  // the lines' directions from the paper's x axis, anticlockwise
+  double spacing = 0;           // paper mm between lines
+  Rgb ink;                      // with kHatchAlpha
+};
+inline constexpr double kHatchAlpha = 0.85;
+inline constexpr double kHatchLineMm = 0.12;
+// The hatch of a value over a colour (none for value 0): what the PDF sheets and install.svg
+// both draw, so that a key reads the same on either.
+std::optional<HatchStyle> hatch_style(uint32_t value, const Rgb& under);
 void hatch(cairo_t* cr, uint32_t value, const Rgb& under, double x0, double y0, double x1,
            double y1);
 // Every element in view hatched by its value, over draw_pieces.
