@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include "curdle/markov.h"
@@ -166,20 +167,26 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
 
 namespace {
 
-// One order line: pieces of one type, material, colour and stock size.
+// One order line: pieces of one type, material, colour and stock size; openings of one size
+// (a tool's diameter), whichever curds cut them.
 struct OrderLine {
   std::map<uint32_t, bool> values;
+  std::set<std::string> materials, colours;  // an opening line's, joined
   uint64_t count = 0, whole = 0, cut = 0;
   double laid_area = 0, stock_area = 0;
 };
 using OrderKey = std::tuple<std::string, std::string, std::string, std::string>;
 
 OrderKey order_key(const Layout& layout, const Element& e) {
+  if (e.form == ElementForm::opening)  // punched or cut by size: one line per diameter
+    return {element_type_of(layout, e), "", "", stock_size_of(layout, e)};
   return {element_type_of(layout, e), piece_material(layout, e),
           hex_colour(piece_colour(layout, e)), stock_size_of(layout, e)};
 }
 
-void add_to(OrderLine& l, const Element& e) {
+void add_to(OrderLine& l, const Layout& layout, const Element& e) {
+  l.materials.insert(piece_material(layout, e));
+  l.colours.insert(hex_colour(piece_colour(layout, e)));
   ++l.count;
   (e.cut ? l.cut : l.whole) += 1;
   // schedule.csv prints each piece's area to the mm² (m² to 6 places): the sum of those, so that
@@ -201,8 +208,15 @@ std::string value_list(const OrderLine& l) {
 // The columns quantities.csv and lots.csv share: element_type, material, colour, size_mm,
 // values, count, whole, cut, laid_area_m2, stock_area_m2.
 std::string order_fields(const OrderKey& key, const OrderLine& l) {
+  auto joined = [](const std::set<std::string>& items) {
+    std::string s;
+    for (const std::string& item : items) s += (s.empty() ? "" : " + ") + item;
+    return s;
+  };
+  const std::string material = std::get<1>(key).empty() ? joined(l.materials) : std::get<1>(key);
+  const std::string colour = std::get<2>(key).empty() ? joined(l.colours) : std::get<2>(key);
   return fmt::format("{},{},{},{},{},{},{},{},{:.6f},{:.6f}", csv_field(std::get<0>(key)),
-                     csv_field(std::get<1>(key)), std::get<2>(key), csv_field(std::get<3>(key)),
+                     csv_field(material), csv_field(colour), csv_field(std::get<3>(key)),
                      value_list(l), l.count, l.whole, l.cut, l.laid_area / 1e6, l.stock_area / 1e6);
 }
 
@@ -211,11 +225,15 @@ std::string order_fields(const OrderKey& key, const OrderLine& l) {
 void write_quantities_csv(std::ostream& out, const Layout& layout) {
   const OrderingKeys& spec = layout.ordering;
   std::map<OrderKey, OrderLine> lines;
-  for (const Element& e : layout.elements) add_to(lines[order_key(layout, e)], e);
+  for (const Element& e : layout.elements) add_to(lines[order_key(layout, e)], layout, e);
   out << kUtf8Mark
       << "element_type,material,colour,size_mm,values,count,whole,cut,laid_area_m2,"
          "stock_area_m2,spare,count_with_spare,area_to_buy_m2,pack_size,packs\r\n";
   for (const auto& [key, l] : lines) {
+    if (std::get<1>(key).empty()) {  // openings: nothing is bought, no spare and no packs
+      out << fmt::format("{},0,{},0.000000,,\r\n", order_fields(key, l), l.count);
+      continue;
+    }
     // Every piece, whole or cut, takes one stock element: offcuts are not reused.
     const auto with_spare = static_cast<uint64_t>(std::ceil(l.count * (1 + spec.spare) - 1e-9));
     const auto packs = (with_spare + spec.pack - 1) / spec.pack;
@@ -234,7 +252,7 @@ void write_lots_csv(std::ostream& out, const Layout& layout) {
     if (e.form == ElementForm::block)
       lot = "level " + std::to_string(e.cell_z - layout.view.origin[2]);
     if (!lots.count(lot)) order.push_back(lot);
-    add_to(lots[lot][order_key(layout, e)], e);
+    add_to(lots[lot][order_key(layout, e)], layout, e);
   }
   out << kUtf8Mark
       << "lot,element_type,material,colour,size_mm,values,count,whole,cut,laid_area_m2,"

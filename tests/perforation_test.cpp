@@ -136,9 +136,11 @@ TEST(Perforation, MixMakesOneOpeningOfTheSummedAreaAndKeepCutsTheUnion) {
     EXPECT_GT(e.area(), one * 1.2);
   }
   EXPECT_TRUE(merged);
-  // Counts per value are the cells of each value, as in the report.
+  // Nothing dropped, one opening a cell: the legend's openings are the cells of each value;
+  // the bare sheet (value 0) is drawn, not counted.
   const auto counts = value_counts(curdle(mix.design, 3, mix.design.field));
-  for (uint32_t v = 0; v < 8; ++v) EXPECT_EQ(mix.layout.legend[v].count, counts[v]);
+  for (uint32_t v = 1; v < 8; ++v) EXPECT_EQ(mix.layout.legend[v].count, counts[v]);
+  EXPECT_EQ(mix.layout.legend[0].count, 0u);
 }
 
 TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
@@ -157,6 +159,48 @@ TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
     const double pixels = static_cast<double>(png.width) * png.height;
     EXPECT_NEAR(open / pixels, s.layout.open_area, 0.004) << static_cast<int>(combine);
   }
+}
+
+}  // namespace curdle
+
+#include <sstream>
+
+#include "export/schedule.h"
+
+namespace curdle {
+
+// What is punched is counted as punched: the legend counts the openings laid per value (it
+// counted cells, holes dropped by the rules and merged ones included: "2,082 D16" where 1,938
+// were punched), and quantities.csv gives one line per diameter, whichever curds cut it, with
+// nothing to buy in packs.
+TEST(Perforation, TheLegendAndQuantitiesCountWhatIsPunched) {
+  const Sheet s = perforated(Combine::mix, HoleFix::drop, 8, 2);
+  std::vector<uint64_t> laid(s.layout.legend.size(), 0);
+  for (const Element& e : s.layout.elements) ++laid[e.value];
+  for (const LegendEntry& e : s.layout.legend) {
+    if (e.value != 0) {
+      EXPECT_EQ(e.count, laid[e.value]) << e.value;
+    }
+  }
+  std::ostringstream out;
+  write_quantities_csv(out, s.layout);
+  std::istringstream lines(out.str());
+  std::string line;
+  std::getline(lines, line);  // the header
+  size_t d16 = 0;
+  uint64_t d16_count = 0;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> f;
+    std::istringstream cells(line.substr(0, line.find('\r')) + ",");
+    for (std::string cell; std::getline(cells, cell, ',');) f.push_back(cell);
+    if (f.size() < 15 || f[3] != "D16") continue;
+    ++d16;
+    EXPECT_EQ(f[1], "c0 + c1 + c2");  // the curds whose holes are 16 mm
+    EXPECT_EQ(f[13] + f[14], "");     // no pack size, no packs: nothing is bought
+    d16_count = std::stoull(f[5]);
+  }
+  EXPECT_EQ(d16, 1u);
+  EXPECT_EQ(d16_count, laid[1] + laid[2] + laid[4]);  // every single hole, in one line
 }
 
 }  // namespace curdle

@@ -44,7 +44,7 @@ TEST(TitleBlock, SaysWhatWasLaidFromWhatAndCountsInTheKindsUnit) {
   EXPECT_EQ(sheet_lines[3].rfind("1200 x 600 mm sheet: 4 x 2 cells of 300 x 300 mm", 0), 0u)
       << sheet_lines[3];
   EXPECT_EQ(sheet_lines[4].rfind("sheet 3 mm thick, ", 0), 0u) << sheet_lines[4];
-  EXPECT_EQ(legend_count(perforated, 2), "2 cells");  // the report counts cells, not openings
+  EXPECT_EQ(legend_count(perforated, 2), "2 openings");  // the legend counts what is punched
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ class PerforationKind : public SurfaceKind {
  public:
   std::string_view name() const override { return "perforation"; }
   std::string_view element_noun() const override { return "cell"; }
-  std::string_view legend_unit() const override { return "cell"; }
+  std::string_view legend_unit() const override { return "opening"; }
   char id_letter() const override { return 'C'; }  // cells; their openings become "H-..."
   double thickness(const LayoutSpec& spec) const override;
   Finish finish() const override { return {0.9, 0.4}; }

@@ -312,9 +312,14 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
   layout.open_area = keep_on_sheets(holes, layout);
   const size_t broken = layout.violations.size();
   summarise_sheets(layout, spec);
-  // The legend keeps counting cells of each value (as the report does); value 0 is bare sheet.
+  // The legend counts what is punched, by value: the openings laid (merged ones under the value
+  // of their cell, dropped ones not at all), as punching.csv and quantities.csv count them; the
+  // report's values count the cells. Value 0 is bare sheet, drawn but not counted.
   layout.legend[0].colour = Rgb{201, 205, 210};
   layout.legend[0].label = "sheet";
+  for (LegendEntry& entry : layout.legend) entry.count = 0;
+  for (const Element& e : layout.elements)
+    if (e.value != 0) ++layout.legend[e.value].count;
   if (broken)
     layout.notes.push_back(fmt::format("{} openings break the fabrication rules{}", broken,
                                        fix ? " and were dropped" : " (see the report)"));

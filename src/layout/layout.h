@@ -270,7 +270,7 @@ struct LegendEntry {
   std::string label;
   Rgb colour;
   std::vector<Rgb> parts;  // keep mode: the colours shown side by side
-  uint64_t count = 0;      // elements of this value (perforation: cells with holes)
+  uint64_t count = 0;      // elements of this value (perforation: openings punched)
   // The first value with the same label, colour and parts: values that lay the same product
   // are one line wherever they are listed (legends, keys, hatches), as quantities.csv has them.
   uint32_t same_as = 0;

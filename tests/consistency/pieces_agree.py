@@ -266,14 +266,23 @@ def check(curdle, recipe, out, corner):
     # Exactly, per order line: the schedule's rows (to the mm²) sum to the line's laid area.
     def micro(text):
         return round(float(text) * 1e6)
+    # Openings are one line per size (a tool's diameter), whichever curds cut them.
+    def opening_size(size):
+        return size if size.startswith("D") else "merged" if size == "merged opening" else "other"
     by_line = {}
     for row in rows:
-        key = (row["element_type"], row["material"], row["colour"])
+        if row["element_type"] == "opening":
+            d = row["opening_diameter_mm"]
+            key = ("opening", f"D{d}" if d and not row["shape_wkt"] else
+                   "merged" if row["shape_wkt"] else "other")
+        else:
+            key = (row["element_type"], row["material"], row["colour"])
         by_line.setdefault(key, 0)
         by_line[key] += micro(row["area_m2"])
     lines = {}
     for q in read_csv(os.path.join(out, "quantities.csv")):
-        key = (q["element_type"], q["material"], q["colour"])
+        key = (("opening", opening_size(q["size_mm"])) if q["element_type"] == "opening" else
+               (q["element_type"], q["material"], q["colour"]))
         lines[key] = lines.get(key, 0) + micro(q["laid_area_m2"])
     if by_line != lines:
         wrong = [k for k in set(by_line) | set(lines) if by_line.get(k) != lines.get(k)]
