@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "search_support.h"
 
 namespace curdle {
@@ -69,6 +71,34 @@ TEST(SearchTargets, SheetOpenAreaIsARangeEverySheetMustMeet) {
   ASSERT_EQ(hits.size(), 1u);
   EXPECT_EQ(hits[0].score, 0);
   EXPECT_EQ(hits[0].segment.origin[0], 0);
+}
+
+// Passes are ranked by how far inside their bounds they are, the tightest sheet deciding:
+// 82 seeds of 200 once passed a sheet_open_area band, all scored 0, and came out in seed order.
+TEST(SearchTargets, PassesRankByTheirMarginInsideTheBand) {
+  const Design d = two_curds_128();
+  const Target t = parse_target("sheet_open_area=0.25..0.35", d);
+  EXPECT_NEAR(margin(t, 0.3), 0.05, 1e-12);
+  EXPECT_NEAR(margin(t, 0.26), 0.01, 1e-12);
+  EXPECT_NEAR(margin(t, 0.2), -0.05, 1e-12);
+  EXPECT_TRUE(std::isinf(margin(parse_target("ratio:c0=0.2", d), 0.2)));
+  SearchSpec spec;
+  spec.targets = {t};
+  // Seed 1's sheets are nearest the band's edge, seed 3's most central, all pass.
+  spec.sheet_open_areas = [](const CurdField& f, const Box&) {
+    return f.seed == 1   ? std::vector<double>{0.3, 0.26}
+           : f.seed == 2 ? std::vector<double>{0.28, 0.32}
+                         : std::vector<double>{0.3, 0.31};
+  };
+  spec.window = std::array<int64_t, 2>{128, 128};
+  spec.top = 3;
+  const auto hits = search_seeds(d, box(0, 0, 128, 128), spec, 1, 3);
+  ASSERT_EQ(hits.size(), 3u);
+  EXPECT_EQ(hits[0].seed, 3u);
+  EXPECT_EQ(hits[1].seed, 2u);
+  EXPECT_EQ(hits[2].seed, 1u);
+  EXPECT_NEAR(hits[0].margin, 0.04, 1e-12);
+  EXPECT_NEAR(hits[2].margin, 0.01, 1e-12);
 }
 
 TEST(SearchTargets, ShortfallIsZeroWhenMet) {

@@ -153,6 +153,9 @@ nlohmann::ordered_json search_hits_json(const SearchRun& s, const std::vector<Se
     hit["seed"] = std::to_string(h.seed);
     hit["window"] = window_text(h.segment, d.lattice.dimension);
     hit["score"] = h.score;
+    // How far inside its bounds the tightest <=, >= or range target is: what ranks passes.
+    hit["margin"] = std::isfinite(h.margin) ? nlohmann::ordered_json(h.margin)
+                                            : nlohmann::ordered_json(nullptr);
     hit["meets_empty_zones"] = h.meets_empty_zones;
     nlohmann::ordered_json measured = nlohmann::json::object();
     for (size_t i = 0; i < targets.size(); ++i)
@@ -179,13 +182,14 @@ std::vector<std::string> write_search_outputs(const SearchRun& s,
                                               const nlohmann::ordered_json& j, bool previews,
                                               OutputSink& sink) {
   sink.write("search.csv", [&](std::ostream& out) {
-    out << "rank,seed,window,score,meets_empty_zones";
+    out << "rank,seed,window,score,margin,meets_empty_zones";
     for (const auto& t : j["targets"]) out << ',' << csv_field(t.get<std::string>());
     out << ",command\r\n";
     for (const auto& h : j["hits"]) {
       out << h["rank"].get<int>() << ',' << h["seed"].get<std::string>() << ','
           << csv_field(h["window"].get<std::string>()) << ',' << h["score"].get<double>() << ','
-          << (h["meets_empty_zones"].get<bool>() ? 1 : 0);
+          << (h["margin"].is_null() ? std::string() : std::to_string(h["margin"].get<double>()))
+          << ',' << (h["meets_empty_zones"].get<bool>() ? 1 : 0);
       for (const auto& [name, x] : h["measured"].items())
         out << ',' << (x.is_null() ? std::string() : std::to_string(x.get<double>()));
       out << ',' << csv_field(h["command"].get<std::string>()) << "\r\n";

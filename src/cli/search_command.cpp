@@ -88,7 +88,10 @@ int run_search(const SearchOptions& o) {
                           : "the whole field");
   std::printf("targets:");
   for (const auto& t : j["targets"]) std::printf(" %s", t.get<std::string>().c_str());
-  std::printf("\n%4s %20s %16s %10s  %s\n", "rank", "seed", "window", "score", "measured");
+  // The margin ranks hits of equal score: how far inside its bounds the tightest <=, >= or
+  // range target is.
+  std::printf("\n%4s %20s %16s %10s %10s  %s\n", "rank", "seed", "window", "score", "margin",
+              "measured");
   for (const auto& h : j["hits"]) {
     std::string measured;
     for (const auto& [name, x] : h["measured"].items()) {
@@ -97,9 +100,12 @@ int run_search(const SearchOptions& o) {
       measured +=
           (measured.empty() ? "" : "  ") + name.substr(0, name.find_first_of("<>=")) + " " + v;
     }
-    std::printf("%4d %20s %16s %10.4f  %s%s\n", h["rank"].get<int>(),
+    char margin[32] = "-";
+    if (!h["margin"].is_null())
+      std::snprintf(margin, sizeof margin, "%.4f", h["margin"].get<double>());
+    std::printf("%4d %20s %16s %10.4f %10s  %s%s\n", h["rank"].get<int>(),
                 h["seed"].get<std::string>().c_str(), h["window"].get<std::string>().c_str(),
-                h["score"].get<double>(), measured.c_str(),
+                h["score"].get<double>(), margin, measured.c_str(),
                 h["meets_empty_zones"].get<bool>() ? "" : "  (an empty zone is occupied)");
   }
   if (!hits.empty()) std::printf("best: %s\n", j["hits"][0]["command"].get<std::string>().c_str());

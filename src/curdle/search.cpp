@@ -89,6 +89,8 @@ double parse_number(const std::string& text, const std::string& number) {
 
 bool before(const SearchHit& a, const SearchHit& b) {
   if (a.score != b.score) return a.score < b.score;
+  // Equal scores (every target met, say): the one further inside its bounds first.
+  if (a.margin != b.margin) return a.margin > b.margin;
   if (a.seed != b.seed) return a.seed < b.seed;
   if (a.segment.origin[1] != b.segment.origin[1]) return a.segment.origin[1] < b.segment.origin[1];
   return a.segment.origin[0] < b.segment.origin[0];
@@ -290,6 +292,17 @@ double shortfall(const Target& t, double x) {
   return relative ? miss / std::max(t.goal, 1.0) : miss;
 }
 
+double margin(const Target& t, double x) {
+  if (t.measure == Measure::empty || t.compare == Compare::equal || std::isnan(x))
+    return std::numeric_limits<double>::infinity();
+  double inside = t.compare == Compare::at_most  ? t.goal - x
+                  : t.compare == Compare::within ? std::min(x - t.goal, t.goal_high - x)
+                                                 : x - t.goal;
+  const bool relative = t.measure != Measure::ratio && t.measure != Measure::dimension &&
+                        t.measure != Measure::sheet_open_area;
+  return relative ? inside / std::max(t.goal, 1.0) : inside;
+}
+
 double worst_sheet(const Target& t, const std::vector<double>& shares) {
   if (shares.empty()) return std::numeric_limits<double>::quiet_NaN();
   double worst = shares.front();
@@ -413,6 +426,8 @@ std::vector<SearchHit> search_seeds(const Design& d, const Box& view, const Sear
           hit.seed = seed;
           hit.segment = view;
           hit.score = score_bitsets(d, spec, s);
+          for (size_t t = 0; t < spec.targets.size(); ++t)
+            hit.margin = std::min(hit.margin, margin(spec.targets[t], s.measured[t]));
           // Most seeds lose to the worst kept: skip building their hit.
           if (mine.size() < top || before(hit, mine.back())) {
             hit.measured = s.measured;
@@ -428,9 +443,15 @@ std::vector<SearchHit> search_seeds(const Design& d, const Box& view, const Sear
           hit.seed = seed;
           hit.segment = segment;
           for (const Target& t : spec.targets) {
-            const double x = t.measure == Measure::sheet_open_area
-                                 ? worst_sheet(t, spec.sheet_open_areas(s.field, segment))
-                                 : measure(t, s.measures, d, segment, spec.lacunarity_box);
+            double x = 0;
+            if (t.measure == Measure::sheet_open_area) {
+              const std::vector<double> shares = spec.sheet_open_areas(s.field, segment);
+              x = worst_sheet(t, shares);
+              for (const double share : shares) hit.margin = std::min(hit.margin, margin(t, share));
+            } else {
+              x = measure(t, s.measures, d, segment, spec.lacunarity_box);
+              hit.margin = std::min(hit.margin, margin(t, x));
+            }
             hit.measured.push_back(x);
             hit.score += shortfall(t, x);
             if (t.measure == Measure::empty && x > 0) hit.meets_empty_zones = false;

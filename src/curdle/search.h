@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,12 +59,21 @@ struct SearchHit {
   double score = 0;              // sum of the targets' shortfalls; 0 meets every target
   std::vector<double> measured;  // per target (NaN when undefined, e.g. no survivor)
   bool meets_empty_zones = true;
+  // How far inside its bounds the tightest <=, >= or range target is (every sheet's, for
+  // sheet_open_area), in the units of its shortfall: what ranks hits of equal score (82 seeds
+  // passing a sheet's open-area band all scored 0 and nothing ranked them). Infinite when
+  // there is no such target.
+  double margin = std::numeric_limits<double>::infinity();
 };
 
 // How far `measured` misses the target: |x - goal| for ratios, dimensions and open areas,
 // relative for counts, clusters, runs and lacunarity, only the excess or shortfall for <=, >=
 // and a range; an empty zone adds 100 times the share of its cells that are occupied.
 double shortfall(const Target& target, double measured);
+
+// How far inside its bound(s) `measured` is for a <=, >= or range target (negative outside),
+// relative as the shortfall is; infinite for the other targets.
+double margin(const Target& target, double measured);
 
 // Of the sheets' open shares, the one that misses `target` most (the first of equals): what a
 // sheet_open_area target measures, so that it is met only when every sheet meets it.
