@@ -415,6 +415,26 @@ std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, 
   return lines;
 }
 
+std::vector<std::string> wrap_lines(cairo_t* cr, const std::vector<std::string>& lines,
+                                    double width, double height, size_t most) {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    std::string rest = lines[i];
+    // Room for the lines still to come, one each.
+    while (text_width(cr, rest, height) > width && out.size() + (lines.size() - i) < most) {
+      size_t cut = rest.rfind(' ');
+      while (cut != std::string::npos && cut > 0 &&
+             text_width(cr, rest.substr(0, cut), height) > width)
+        cut = rest.rfind(' ', cut - 1);
+      if (cut == std::string::npos || cut == 0) break;  // one word wider than the line
+      out.push_back(rest.substr(0, cut));
+      rest = rest.substr(cut + 1);
+    }
+    out.push_back(std::move(rest));
+  }
+  return fit_lines(cr, std::move(out), width, height);
+}
+
 double title_width(double w) { return std::min(150.0, (w - kLeftMargin - kMargin) * 0.55); }
 
 // A north arrow 9 mm tall standing on (x, y), with its N above.
@@ -443,18 +463,31 @@ void title_block(cairo_t* cr, const Layout& layout, double w, double h, const st
   box(cr, x, y, tw, kTitleStrip, 0.35);
   std::vector<std::string> lines = title_lines(layout);
   lines.insert(lines.begin() + 1, what);
-  lines = fit_lines(cr, lines, tw - 6, 2);
-  // The first is bold at 2.5 mm: about 1.4 times as wide as the same at 2 mm.
+  // The first is bold at 2.5 mm, about 1.4 times as wide as the same at 2 mm: a long title
+  // gives its description a line of its own rather than an ellipsis; long lines wrap, so that
+  // only what ten lines cannot hold is cut.
+  // Plans carry a north arrow under the ninth line: then nine lines, else ten.
+  const bool arrow = !layout.kind->upright() && layout.views.empty();
+  const size_t most = arrow ? 9 : 10;
+  const std::string title = lines[0];
+  const size_t dash = title.find(" - ");
+  if (text_width(cr, title, 2) * 1.4 > tw - 6 && dash != std::string::npos) {
+    lines[0] = title.substr(0, dash);
+    lines.insert(lines.begin() + 1, title.substr(dash + 3));
+  }
   lines[0] = fit_lines(cr, {lines[0]}, (tw - 6) / 1.4, 2)[0];
-  for (size_t i = 0; i < lines.size() && i < 8; ++i)
+  std::vector<std::string> rest(lines.begin() + 1, lines.end());
+  rest = wrap_lines(cr, rest, tw - 6, 2, most - 1);
+  lines.resize(1);
+  lines.insert(lines.end(), rest.begin(), rest.end());
+  for (size_t i = 0; i < lines.size() && i < most; ++i)
     text(cr, x + 3, y + 5 + 4.2 * static_cast<double>(i), lines[i], i == 0 ? 2.5 : 2, Align::left,
          false, i == 0);
   text(cr, x + 3, y + kTitleStrip - 3, fmt::format("scale 1 : {:g} on {}", scale, paper), 2.5);
   text(cr, x + tw - 3, y + kTitleStrip - 3, fmt::format("sheet {} of {}", number, total), 3.5,
        Align::right, false, true);
   // Plans carry a north arrow: +y of the layout, as its glTF and IFC take north.
-  if (!layout.kind->upright() && layout.views.empty())
-    north_arrow(cr, x + tw * 0.55, y + kTitleStrip - 4);
+  if (arrow) north_arrow(cr, x + tw * 0.55, y + kTitleStrip - 1);
 }
 
 }  // namespace curdle::sheet_drawing

@@ -29,6 +29,10 @@ double text_width(cairo_t* cr, const std::string& s, double height);
 // Each line cut short with "..." where it is wider than `width` mm at `height`.
 std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,
                                    double height);
+// The lines broken at spaces where they are wider than `width` mm at `height`, a break's rest
+// on a line of its own, up to `most` lines; only what still does not fit is cut with "...".
+std::vector<std::string> wrap_lines(cairo_t* cr, const std::vector<std::string>& lines,
+                                    double width, double height, size_t most);
 
 void box(cairo_t* cr, double x, double y, double w, double h, double line);
 

@@ -28,6 +28,23 @@ TEST(SheetDrawing, ViewsAndTextFitTheSheet) {
   EXPECT_NE(lines[0].find("..."), std::string::npos);
   EXPECT_LE(text_width(cr, lines[0], 2.5), wide / 2 + 1e-9);
   EXPECT_EQ(lines[1], "ok");
+  // Wrapped at spaces where there is room for more lines, not cut: every word is kept.
+  const std::string long_line =
+      "Square in three granites from two overlaid curds with the same shares";
+  const auto wrapped = wrap_lines(cr, {long_line, "ok"}, wide, 2.5, 6);
+  ASSERT_GT(wrapped.size(), 2u);
+  std::string joined;
+  for (size_t i = 0; i + 1 < wrapped.size(); ++i) {
+    EXPECT_LE(text_width(cr, wrapped[i], 2.5), wide + 1e-9) << wrapped[i];
+    EXPECT_EQ(wrapped[i].find("..."), std::string::npos);
+    joined += (i ? " " : "") + wrapped[i];
+  }
+  EXPECT_EQ(joined, long_line);
+  EXPECT_EQ(wrapped.back(), "ok");
+  // With no room for more lines, the rest is cut as before.
+  const auto tight = wrap_lines(cr, {long_line, "ok"}, wide, 2.5, 2);
+  ASSERT_EQ(tight.size(), 2u);
+  EXPECT_NE(tight[0].find("..."), std::string::npos);
   cairo_destroy(cr);
   cairo_surface_destroy(surface);
 }
