@@ -237,10 +237,13 @@ void draw_labels(cairo_t* cr, const InstallerPlan& plan, const View& v, size_t i
     for (size_t k = 0; k < lines.size(); ++k) {
       const double step = (static_cast<double>(k) - (static_cast<double>(lines.size()) - 1) / 2) *
                           label_height_mm(plan.text_mm);
+      // On the piece, the ID stands on a halo: a zone's outline or a joint under it would
+      // strike it through.
       if (l.rotated)
-        text(cr, cx + step + plan.text_mm / 2, cy, lines[k], plan.text_mm, Align::centre, true);
+        text_on_halo(cr, cx + step + plan.text_mm / 2, cy, lines[k], plan.text_mm, Align::centre,
+                     true);
       else
-        text(cr, cx, cy + step + plan.text_mm / 2, lines[k], plan.text_mm, Align::centre);
+        text_on_halo(cr, cx, cy + step + plan.text_mm / 2, lines[k], plan.text_mm, Align::centre);
     }
   }
 }

@@ -82,6 +82,28 @@ void text(cairo_t* cr, double x, double y, const std::string& s, double height, 
   cairo_restore(cr);
 }
 
+void text_on_halo(cairo_t* cr, double x, double y, const std::string& s, double height, Align align,
+                  bool rotated) {
+  font(cr, height, false);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  const double shift = align == Align::left     ? 0
+                       : align == Align::centre ? e.x_advance / 2
+                                                : e.x_advance;
+  cairo_save(cr);
+  cairo_translate(cr, x, y);
+  if (rotated) cairo_rotate(cr, -M_PI / 2);
+  cairo_move_to(cr, -shift, 0);
+  cairo_text_path(cr, s.c_str());
+  cairo_set_line_width(cr, height * 0.28);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  colour(cr, Rgb{255, 255, 255}, 0.9);
+  cairo_stroke_preserve(cr);
+  colour(cr, kInk);
+  cairo_fill(cr);
+  cairo_restore(cr);
+}
+
 double text_width(cairo_t* cr, const std::string& s, double height) {
   font(cr, height, false);
   cairo_text_extents_t e;

@@ -25,6 +25,10 @@ void colour(cairo_t* cr, const Rgb& c, double alpha = 1);
 enum class Align { left, centre, right };
 void text(cairo_t* cr, double x, double y, const std::string& s, double height,
           Align align = Align::left, bool rotated = false, bool bold = false);
+// The same in ink on a white halo, so that a line under it (a zone's dashed outline, a joint)
+// does not strike through it.
+void text_on_halo(cairo_t* cr, double x, double y, const std::string& s, double height,
+                  Align align = Align::left, bool rotated = false);
 double text_width(cairo_t* cr, const std::string& s, double height);
 // Each line cut short with "..." where it is wider than `width` mm at `height`.
 std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,

@@ -49,5 +49,31 @@ TEST(SheetDrawing, ViewsAndTextFitTheSheet) {
   cairo_surface_destroy(surface);
 }
 
+// An ID on its piece stands on a white halo, so that a zone's outline or a joint under it does
+// not strike it through: drawn over a dark line, the line is broken round the letters.
+TEST(SheetDrawing, TextOnAHaloBreaksTheLineUnderIt) {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 200, 60);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);  // a mid-grey piece
+  cairo_paint(cr);
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);  // a dark dashed zone line through the text
+  cairo_set_line_width(cr, 2);
+  cairo_move_to(cr, 0, 27);
+  cairo_line_to(cr, 200, 27);
+  cairo_stroke(cr);
+  text_on_halo(cr, 100, 33, "P-R10-C11", 16, Align::centre);
+  cairo_surface_flush(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  int white = 0;
+  for (int x = 30; x < 170; ++x) {
+    const unsigned char* p = data + 27 * stride + 4 * x;
+    white += p[0] > 200 && p[1] > 200 && p[2] > 200;
+  }
+  EXPECT_GT(white, 10);  // the line is broken by the halo along the text
+  cairo_destroy(cr);
+  cairo_surface_destroy(surface);
+}
+
 }  // namespace
 }  // namespace curdle::sheet_drawing
