@@ -127,3 +127,64 @@ TEST(Park, ObjectsKeepTheirClearanceOrAreLeftOutWithANote) {
 }
 
 }  // namespace curdle
+
+#include <sstream>
+
+#include "export/park_schedules.h"
+#include "recipe/recipe.h"
+
+namespace curdle {
+
+// A park's recipe takes [[layout.zones]] (it refused them as an unknown key, so the schedules'
+// zone column was always empty): a play area kept free, a lawn of trees, named in planting.csv.
+TEST(Park, ARecipesZonesAreLaidAndNamedInTheSchedules) {
+  const std::string text = R"(name = "pz"
+seed = 5
+[lattice]
+base = 4
+dimension = 2
+[[curds]]
+name = "tree"
+probabilities = ["3/4", "1/2"]
+[[curds]]
+name = "bench"
+probabilities = ["1/2", "1/2"]
+[layout]
+kind = "park"
+cell = [3000, 3000]
+area = [48000, 48000]
+clearance = 300
+elements = [
+  { type = "tree", form = "object", shape = "circle", size = [1000, 1000] },
+  { type = "bench", form = "object", shape = "rectangle", size = [1000, 450] },
+]
+[[layout.zones]]
+name = "play area"
+rect = [3000, 3000, 9000, 9000]
+rule = "exclude"
+[[layout.zones]]
+name = "west lawn"
+rect = [24000, 0, 24000, 48000]
+rule = "value"
+value = 1
+)";
+  const Recipe r = parse_recipe(text, "pz.toml");
+  ASSERT_EQ(r.layout->zones.size(), 2u);
+  Design d = r.design;
+  const Box view = r.window.value_or(d.field);
+  const Layout layout = make_layout(d, curdle(d, r.seed, d.field), view, *r.layout);
+  std::ostringstream planting;
+  write_planting_csv(planting, layout);
+  size_t in_lawn = 0;
+  for (size_t at = planting.str().find(",west lawn"); at != std::string::npos;
+       at = planting.str().find(",west lawn", at + 1))
+    ++in_lawn;
+  EXPECT_EQ(in_lawn, 128u);  // every cell of the lawn, 8 x 16, holds a tree and only a tree
+  for (const Element& e : layout.elements) {
+    const Rect b = laid_bounds(e);
+    EXPECT_FALSE(b.x >= 3000 && b.right() <= 12000 && b.y >= 3000 && b.top() <= 12000)
+        << e.id << " stands in the play area";
+  }
+}
+
+}  // namespace curdle

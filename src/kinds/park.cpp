@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "layout/drawing_sheet.h"
+#include "recipe/layout_reader.h"
 
 namespace curdle {
 
@@ -19,6 +20,7 @@ std::unique_ptr<KindKeys> ParkKind::default_keys() const { return std::make_uniq
 
 void ParkKind::read_own(reading::TableReader& r, const Design& design, LayoutSpec& spec) const {
   reading::read_park(r, design, spec);
+  reading::read_zones(r, design, spec);
 }
 
 void ParkKind::replace_cells(Layout& layout, const Design& design, const LayoutSpec& spec) const {

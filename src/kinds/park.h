@@ -40,12 +40,14 @@ class ParkKind : public SurfaceKind {
   Depiction depiction() const override { return Depiction::objects; }
   std::string size_line(const Layout& layout) const override;
   std::unique_ptr<KindKeys> default_keys() const override;
+  // Zones on a park: a play area kept free, a lawn of one value; its schedules name them.
+  bool takes_zones() const override { return true; }
 
  protected:
   reading::SurfaceKeys surface() const override { return {"cell", "area", false, false, false}; }
   bool laid_on_a_grid() const override { return false; }
   std::vector<std::string> own_keys() const override {
-    return {"elements", "ground", "clearance", "outline"};
+    return {"elements", "ground", "clearance", "outline", "zones"};
   }
   void read_own(reading::TableReader& r, const Design& design, LayoutSpec& spec) const override;
   void replace_cells(Layout& layout, const Design& design, const LayoutSpec& spec) const override;

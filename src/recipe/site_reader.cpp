@@ -145,7 +145,7 @@ void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
   const size_t values = size_t{1} << design.curds.size();
   site::LayerMap map = read_layer_map(sr, spec, values);
   if (!map.zones.empty() && !spec.kind->takes_zones())
-    sr.fail("zones", "are for tile, paving and facade layouts");
+    sr.fail("zones", "are for tile, paving, facade and park layouts");
   sr.report_unused("is not a [layout.site] key");
   if (!r.source().files)
     sr.fail("file",
@@ -178,7 +178,8 @@ void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
     ++number;
     const auto rect = as_rectangle(o);
     if (rect && spec.kind->take_opening(spec, {rect->x, rect->y, rect->w, rect->h})) continue;
-    if (!spec.kind->takes_zones()) sr.fail("openings", "are for tile, paving and facade layouts");
+    if (!spec.kind->takes_zones())
+      sr.fail("openings", "are for tile, paving, facade and park layouts");
     spec.zones.push_back(
         zone_of(fmt::format("opening {}", number), ZoneRule::exclude, 0, o, spec.chord_tolerance));
   }
