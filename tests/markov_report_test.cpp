@@ -64,4 +64,31 @@ TEST(MarkovReport, CountsAddUpAndSitBesideTheirTheory) {
   EXPECT_NE(table.find("living: box dimension fit"), std::string::npos);
 }
 
+// Beside a plain curd with a density field, the values' expectations take the Markov curd's
+// state shares (they took its bit planes for curds): they add up to the cells, and a code no
+// state has is never expected.
+TEST(MarkovReport, ValuesBesideADensityFieldTakeTheStateShares) {
+  const Design d = markov_design(
+      "base = 2\ndimension = 2\nstages = 4",
+      "[[curds]]\nname = \"red\"\nprobabilities = [\"3/4\", \"3/4\", \"3/4\", \"3/4\"]\n"
+      "[curds.density]\nkind = \"radial\"\ncentre = [8, 8]\nradius = 8\nvalues = [2, 0.5]\n" +
+          markov_curd(R"(["dark", "mid"])", "\"dark\"",
+                      R"([[["1", "0", "0"], ["1/4", "1/2", "1/4"], ["1/4", "1/4", "1/2"]]])") +
+          "stages = 4\n");
+  const Report r = make_report(d, 3, curdle(d, 3, d.field), d.field);
+  double total = 0;
+  for (const ValueRow& v : r.values) {
+    total += v.expected;
+    if ((v.value >> 1) == 3) {
+      EXPECT_EQ(v.expected, 0.0) << v.label;
+    }
+  }
+  EXPECT_NEAR(total, 256.0, 1e-6);
+  // The Markov curd's dark share is (3/4)^4 / 2 of the cells whatever the red curd does.
+  double dark = 0;
+  for (const ValueRow& v : r.values)
+    if ((v.value >> 1) == 1) dark += v.expected;
+  EXPECT_NEAR(dark, 256.0 * state_shares(*d.curds[1].chain, 4)[1], 1e-6);
+}
+
 }  // namespace curdle

@@ -25,9 +25,18 @@ std::vector<double> expected_values_with_density(const Design& design, const Box
   if (std::none_of(curds.begin(), curds.end(), [](const CurdSpec& c) { return c.density; }))
     return {};
   const Lattice& l = design.lattice;
+  // A Markov curd (no density field) takes its state shares, the same in every cell.
+  const std::vector<CurdGroup> groups = curd_groups(curds);
   std::vector<double> P(curds.size());
-  for (size_t c = 0; c < curds.size(); ++c)
-    P[c] = survival_probability(curds[c].probabilities, l.stages);
+  std::vector<std::vector<double>> shares(groups.size());
+  for (size_t g = 0; g < groups.size(); ++g) {
+    if (groups[g].chain) {
+      shares[g] = state_shares(*groups[g].chain, l.stages);
+      shares[g].resize(size_t{1} << groups[g].planes, 0.0);
+    } else {
+      P[groups[g].first] = survival_probability(curds[groups[g].first].probabilities, l.stages);
+    }
+  }
   std::vector<double> expected(size_t{1} << curds.size(), 0.0), alive(curds.size());
   for (int64_t z = 0; z < view.size[2]; ++z)
     for (int64_t y = 0; y < view.size[1]; ++y)
@@ -35,9 +44,13 @@ std::vector<double> expected_values_with_density(const Design& design, const Box
         const Coord cell{view.origin[0] + x, view.origin[1] + y, view.origin[2] + z};
         for (size_t c = 0; c < curds.size(); ++c)
           alive[c] = curds[c].density ? curds[c].density->survival(l, l.stages, cell, P[c]) : P[c];
-        for (size_t v = 0; v < expected.size(); ++v) {
+        for (uint32_t v = 0; v < expected.size(); ++v) {
           double p = 1;
-          for (size_t c = 0; c < curds.size(); ++c) p *= (v >> c & 1) ? alive[c] : 1 - alive[c];
+          for (size_t g = 0; g < groups.size(); ++g) {
+            const size_t c = groups[g].first;
+            const uint32_t state = groups[g].state(v);
+            p *= groups[g].chain ? shares[g][state] : state ? alive[c] : 1 - alive[c];
+          }
           expected[v] += p;
         }
       }
