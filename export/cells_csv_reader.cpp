@@ -1,6 +1,7 @@
 #include "export/cells_csv_reader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <limits>
 
@@ -139,7 +140,12 @@ CellsTable parse_cells_csv(std::string_view text, uint64_t max_cells) {
     int64_t value = 0;
     for (size_t c = 0; c < t.curds.size(); ++c) {
       const std::string_view bit = f[value_column + 1 + c];
-      if (bit != "0" && bit != "1") refuse(n, "curd '" + t.curds[c] + "' must be 0 or 1");
+      if (bit != "0" && bit != "1")
+        refuse(n, "curd '" + t.curds[c] + "' must be 0 or 1" +
+                      (bit.empty() || std::isdigit(static_cast<unsigned char>(bit[0]))
+                           ? std::string()
+                           : std::string(", not a state's name: fit takes plain curds, and a "
+                                         "Markov curd's states cannot be fitted yet")));
       if (bit == "1") value |= int64_t{1} << c, t.cells[c][i] = true;
     }
     if (whole(f[value_column], n, "value") != value)

@@ -55,6 +55,9 @@ TEST(CellsCsv, ReadsBackWhatItWritesAndRefusesWhatItCannotTrust) {
             std::string::npos);
   EXPECT_NE(refusal("value,a\n1,1\n").find("the header must be"), std::string::npos);
   EXPECT_NE(refusal("x,value,a\nnan,1,1\n").find("x must be a whole number"), std::string::npos);
+  // A Markov curd's column names its state: said plainly, as fit cannot take it yet.
+  EXPECT_NE(refusal("x,y,value,tone\n0,0,1,dark\n").find("Markov curd's states cannot be fitted"),
+            std::string::npos);
 }
 
 }  // namespace curdle
