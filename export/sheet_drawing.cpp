@@ -66,8 +66,12 @@ void colour(cairo_t* cr, const Rgb& c, double alpha) {
   cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
 }
 
-void text(cairo_t* cr, double x, double y, const std::string& s, double height, Align align,
-          bool rotated, bool bold) {
+namespace {
+
+// Saves the state, turns it as the text reads and moves to where `s` starts; the caller draws
+// and restores.
+void begin_text(cairo_t* cr, double x, double y, const std::string& s, double height, Align align,
+                bool rotated, bool bold) {
   font(cr, height, bold);
   cairo_text_extents_t e;
   cairo_text_extents(cr, s.c_str(), &e);
@@ -78,22 +82,20 @@ void text(cairo_t* cr, double x, double y, const std::string& s, double height, 
   cairo_translate(cr, x, y);
   if (rotated) cairo_rotate(cr, -M_PI / 2);
   cairo_move_to(cr, -shift, 0);
+}
+
+}  // namespace
+
+void text(cairo_t* cr, double x, double y, const std::string& s, double height, Align align,
+          bool rotated, bool bold) {
+  begin_text(cr, x, y, s, height, align, rotated, bold);
   cairo_show_text(cr, s.c_str());
   cairo_restore(cr);
 }
 
 void text_on_halo(cairo_t* cr, double x, double y, const std::string& s, double height, Align align,
                   bool rotated) {
-  font(cr, height, false);
-  cairo_text_extents_t e;
-  cairo_text_extents(cr, s.c_str(), &e);
-  const double shift = align == Align::left     ? 0
-                       : align == Align::centre ? e.x_advance / 2
-                                                : e.x_advance;
-  cairo_save(cr);
-  cairo_translate(cr, x, y);
-  if (rotated) cairo_rotate(cr, -M_PI / 2);
-  cairo_move_to(cr, -shift, 0);
+  begin_text(cr, x, y, s, height, align, rotated, false);
   cairo_text_path(cr, s.c_str());
   cairo_set_line_width(cr, height * 0.28);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
