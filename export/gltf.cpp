@@ -160,16 +160,22 @@ std::pair<Vec3, Vec3> box_of(const Layout& l, const Rect& r, double base, double
           Vec3{std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]), std::fabs(b[2] - a[2])}};
 }
 
-tinygltf::Value element_extras(const Element& e, const Provenance& design) {
+// What a value holds: each plain curd by name, a Markov curd by its state's name.
+tinygltf::Value::Array value_names(const Provenance& design, uint32_t value) {
+  tinygltf::Value::Array names;
+  const std::vector<CurdMember> members = curd_members(design.curds);
+  for (const size_t m : members_of(design.curds, value))
+    names.push_back(tinygltf::Value(members[m].name));
+  return names;
+}
+
+tinygltf::Value element_extras(const Element& e, const Provenance& design,
+                               const tinygltf::Value::Array& names) {
   tinygltf::Value::Object o;
   o["value"] = tinygltf::Value(static_cast<int>(e.value));
-  tinygltf::Value::Array bits, names;
+  tinygltf::Value::Array bits;
   for (size_t c = 0; c < design.curds.size(); ++c)
     bits.push_back(tinygltf::Value(static_cast<int>(e.value >> c & 1)));
-  // What the value holds: each plain curd by name, a Markov curd by its state's name.
-  const std::vector<CurdMember> members = curd_members(design.curds);
-  for (const size_t m : members_of(design.curds, e.value))
-    names.push_back(tinygltf::Value(members[m].name));
   o["curd_bits"] = tinygltf::Value(bits);
   o["curds"] = tinygltf::Value(names);
   o["row"] = tinygltf::Value(static_cast<int>(e.row));
@@ -235,6 +241,7 @@ struct Scene {
   double metallic;
   std::vector<int> material;  // per value
   std::map<int, int> box_mesh;
+  std::map<uint32_t, tinygltf::Value::Array> names;  // per value, worked out once
 
   explicit Scene(const Layout& l)
       : layout(l), design(l.source), t(l.thickness), metallic(l.kind->finish().metallic) {
@@ -270,7 +277,9 @@ struct Scene {
   // A root node named by the element's ID, carrying its value and curds.
   void add_named(const Element& e, tinygltf::Node n) {
     n.name = e.id;
-    n.extras = element_extras(e, design);
+    auto it = names.find(e.value);
+    if (it == names.end()) it = names.emplace(e.value, value_names(design, e.value)).first;
+    n.extras = element_extras(e, design, it->second);
     roots.push_back(b.add_node(std::move(n)));
   }
 };
