@@ -177,7 +177,15 @@ struct OrderLine {
 };
 using OrderKey = std::tuple<std::string, std::string, std::string, std::string>;
 
+// A park's surface (gravel, a path, the ground): laid to the cells' shapes and bought by area,
+// one line per material, not as pieces of odd "stock sizes" sold in packs.
+constexpr const char* kByArea = "by area";
+bool bought_by_area(const Element& e) { return e.form == ElementForm::object && !e.stands; }
+
 OrderKey order_key(const Layout& layout, const Element& e) {
+  if (bought_by_area(e))
+    return {element_type_of(layout, e), piece_material(layout, e),
+            hex_colour(piece_colour(layout, e)), kByArea};
   if (e.form == ElementForm::opening)  // punched or cut by size: one line per diameter
     return {element_type_of(layout, e), "", "", stock_size_of(layout, e)};
   return {element_type_of(layout, e), piece_material(layout, e),
@@ -192,7 +200,7 @@ void add_to(OrderLine& l, const Layout& layout, const Element& e) {
   // schedule.csv prints each piece's area to the mm² (m² to 6 places): the sum of those, so that
   // its column adds up to this one exactly.
   l.laid_area += std::round(e.area());
-  l.stock_area += stock_area(e);
+  l.stock_area += bought_by_area(e) ? std::round(e.area()) : stock_area(e);
   l.values[e.value] = true;
 }
 
@@ -232,6 +240,11 @@ void write_quantities_csv(std::ostream& out, const Layout& layout) {
   for (const auto& [key, l] : lines) {
     if (std::get<1>(key).empty()) {  // openings: nothing is bought, no spare and no packs
       out << fmt::format("{},0,{},0.000000,,\r\n", order_fields(key, l), l.count);
+      continue;
+    }
+    if (std::get<3>(key) == kByArea) {  // an area and its spare, no pieces or packs to buy
+      out << fmt::format("{},{},{},{:.6f},,\r\n", order_fields(key, l), spec.spare, l.count,
+                         l.laid_area * (1 + spec.spare) / 1e6);
       continue;
     }
     // Every piece, whole or cut, takes one stock element: offcuts are not reused.

@@ -188,3 +188,39 @@ value = 1
 }
 
 }  // namespace curdle
+
+#include "export/schedule.h"
+
+namespace curdle {
+
+// A park's surfaces are bought by area, one line per material, however the cells cut them; the
+// lawn was split into six odd "stock sizes" sold in packs.
+TEST(Park, SurfacesAreOrderedByAreaOneLineAMaterial) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  const LayoutSpec spec = test::trees_and_benches();
+  const Layout layout = make_layout(d, curdle(d, 4, d.field), d.field, spec);
+  std::ostringstream out;
+  write_quantities_csv(out, layout);
+  std::map<std::string, int> lines;
+  double laid = 0;
+  for (const Element& e : layout.elements)
+    if (!e.stands) laid += std::round(e.area());
+  double ordered = 0;
+  std::istringstream rows(out.str());
+  std::string row;
+  std::getline(rows, row);
+  while (std::getline(rows, row)) {
+    if (row.find(",by area,") == std::string::npos) continue;
+    ++lines[row.substr(0, row.find(','))];
+    EXPECT_EQ(row.substr(row.size() - 3), ",,\r") << row;  // no pack size, no packs
+    std::vector<std::string> f;
+    std::istringstream cells(row);
+    for (std::string cell; std::getline(cells, cell, ',');) f.push_back(cell);
+    ordered += std::stod(f[8]) * 1e6;
+  }
+  EXPECT_EQ(lines["grey paving"], 1) << out.str();  // strips of cells shared with others too
+  EXPECT_EQ(lines["white paving"], 1);
+  EXPECT_NEAR(ordered, laid, 1.0);
+}
+
+}  // namespace curdle
