@@ -17,6 +17,7 @@
 #include "layout/arc_setting_out.h"
 #include "layout/installer_sheets.h"
 #include "layout/laying_pattern.h"
+#include "layout/legend.h"
 #include "layout/piece.h"
 
 namespace curdle {

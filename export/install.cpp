@@ -10,6 +10,7 @@
 #include "curdle/text.h"
 #include "export/sheet_drawing.h"
 #include "export/wkt.h"
+#include "layout/legend.h"
 #include "layout/piece.h"
 
 namespace curdle {

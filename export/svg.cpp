@@ -11,6 +11,7 @@
 #include "curdle/text.h"
 #include "export/title_block.h"
 #include "layout/contour.h"
+#include "layout/legend.h"
 #include "layout/union.h"
 
 namespace curdle {

@@ -23,3 +23,20 @@ TEST(Geometry, RectilinearPolygonsBecomeRectangles) {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+// An outline's outer rings run anticlockwise (positive), its islands clockwise; a point inside
+// a ring lies inside it however it bends (an L's corner is outside it).
+TEST(Geometry, SignedAreaAndAPointInsideARing) {
+  const Polygon l = {{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 4}, {0, 4}};
+  EXPECT_DOUBLE_EQ(signed_area(l), 7);
+  EXPECT_DOUBLE_EQ(signed_area(Polygon(l.rbegin(), l.rend())), -7);
+  EXPECT_DOUBLE_EQ(polygon_area(Polygon(l.rbegin(), l.rend())), 7);
+  const auto p = point_inside(l);
+  ASSERT_TRUE(p);
+  EXPECT_TRUE(contains(l, (*p)[0], (*p)[1]));
+  EXPECT_FALSE(point_inside(Polygon{{0, 0}, {1, 1}}));
+}
+
+}  // namespace curdle

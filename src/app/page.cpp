@@ -11,6 +11,7 @@
 #include "export/report_json.h"
 #include "layout/builder.h"
 #include "layout/cell_placement.h"
+#include "layout/legend.h"
 
 using nlohmann::ordered_json;
 

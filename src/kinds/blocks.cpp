@@ -9,6 +9,7 @@
 #include "curdle/overlay.h"
 #include "layout/builder.h"
 #include "layout/drawing_sheet.h"
+#include "layout/legend.h"
 #include "recipe/layout_reader.h"
 
 namespace curdle {

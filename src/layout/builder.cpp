@@ -5,9 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <stdexcept>
-#include <tuple>
 
 #include "curdle/error.h"
 #include "curdle/overlay.h"
@@ -17,6 +15,7 @@
 #include "layout/cut_rules.h"
 #include "layout/guidance.h"
 #include "layout/laying_pattern.h"
+#include "layout/legend.h"
 #include "layout/piece.h"
 #include "layout/union.h"
 #include "layout/zone.h"
@@ -67,46 +66,6 @@ std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec) {
       rows};
 }
 
-std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spec) {
-  const std::vector<Rgb> blend = value_colours(design.curds);
-  std::vector<LegendEntry> legend(blend.size());
-  auto packed = [](const Rgb& c) { return uint32_t{c.r} << 16 | uint32_t{c.g} << 8 | c.b; };
-  std::map<std::tuple<std::string, uint32_t, std::vector<uint32_t>>, uint32_t> first_alike;
-  for (uint32_t v = 0; v < blend.size(); ++v) {
-    LegendEntry& entry = legend[v];
-    entry.value = v;
-    entry.label = v < spec.materials.size() ? spec.materials[v] : value_label(v, design.curds);
-    entry.colour =
-        v < spec.value_colours.size() && spec.value_colours[v] ? *spec.value_colours[v] : blend[v];
-    if (spec.combine == Combine::keep) {
-      entry.parts = value_parts(design.curds, v);
-      if (entry.parts.empty()) entry.parts.push_back(entry.colour);
-    }
-    std::vector<uint32_t> parts;
-    for (const Rgb& c : entry.parts) parts.push_back(packed(c));
-    entry.same_as =
-        first_alike.try_emplace({entry.label, packed(entry.colour), parts}, v).first->second;
-  }
-  return legend;
-}
-
-std::vector<LegendLine> legend_lines(const std::vector<LegendEntry>& legend) {
-  std::vector<LegendLine> lines;
-  std::vector<size_t> line_of(legend.size(), SIZE_MAX);
-  for (const LegendEntry& e : legend) {
-    if (e.count == 0) continue;
-    size_t& at = line_of[e.same_as];
-    if (at == SIZE_MAX) {
-      at = lines.size();
-      lines.push_back({&e, std::to_string(e.value), 0});
-    } else {
-      lines[at].values += ", " + std::to_string(e.value);
-    }
-    lines[at].count += e.count;
-  }
-  return lines;
-}
-
 namespace {
 
 // Where a piece crosses a sloping or curved edge (of the outline or an excluded zone), its
@@ -135,35 +94,6 @@ void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
   e.outline = std::move(piece);
   e.form = ElementForm::cut_piece;
   e.cut = true;
-}
-
-// A point inside a ring (an outer ring of a piece's outline): the middle of the first span a
-// line across its middle height cuts through it. None for a degenerate ring.
-// The signed area of a ring: positive for an outer ring (counter-clockwise).
-double ring_area(const Ring& ring) {
-  double twice = 0;
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const auto& a = ring[i];
-    const auto& b = ring[(i + 1) % ring.size()];
-    twice += a[0] * b[1] - b[0] * a[1];
-  }
-  return twice / 2;
-}
-
-std::optional<std::array<double, 2>> point_inside(const Ring& ring) {
-  if (ring.size() < 3) return std::nullopt;
-  double lo = ring[0][1], hi = ring[0][1];
-  for (const auto& p : ring) lo = std::min(lo, p[1]), hi = std::max(hi, p[1]);
-  const double y = (lo + hi) / 2;
-  std::vector<double> xs;
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const auto& a = ring[i];
-    const auto& b = ring[(i + 1) % ring.size()];
-    if ((a[1] <= y) != (b[1] <= y)) xs.push_back(a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
-  }
-  if (xs.size() < 2) return std::nullopt;
-  std::sort(xs.begin(), xs.end());
-  return std::array<double, 2>{(xs[0] + xs[1]) / 2, y};
 }
 
 // Value zones give their value to the elements whose centre they hold (the first zone listed
@@ -195,7 +125,7 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
       if (held && z.rule == ZoneRule::exclude) {
         if (e.outline)
           held = std::any_of(e.outline->rings.begin(), e.outline->rings.end(), [&](const Ring& r) {
-            if (ring_area(r) <= 0) return false;  // an island: its inside is not the piece's
+            if (signed_area(r) <= 0) return false;  // an island: its inside is not the piece's
             const auto p = point_inside(r);
             return p && contains(z.polygon, (*p)[0], (*p)[1]);
           });

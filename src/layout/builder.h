@@ -24,10 +24,6 @@ double largest_offset(const LayoutSpec& spec, int64_t rows);
 // at both ends equal (0 when whole elements fill it).
 double centring_shift(double extent, double module, double joint);
 
-// One legend entry per value: label, colour (the spec's, or the blend of the curds'), and in
-// keep mode the colours shown side by side. Counts are left at zero.
-std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spec);
-
 // Elements x corners of sloping or curved edges that cutting may test: about ten seconds (90,000
 // elements along a 10,000-corner ellipse, 9e8, took 35 s).
 inline constexpr uint64_t kMaxCuttingWork = uint64_t{1} << 28;

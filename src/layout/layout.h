@@ -276,15 +276,6 @@ struct LegendEntry {
   uint32_t same_as = 0;
 };
 
-// The lines of a legend: one per product, each with the values it covers ("2, 3") and their
-// summed count, in value order of their first; values with no element are left out.
-struct LegendLine {
-  const LegendEntry* entry = nullptr;  // the first value's entry: label, colour, parts
-  std::string values;                  // "2" or "2, 3"
-  uint64_t count = 0;
-};
-std::vector<LegendLine> legend_lines(const std::vector<LegendEntry>& legend);
-
 // A built layout: everything an exporter reads, so that writers take a Layout and nothing else.
 struct Layout {
   const LayoutKind* kind = nullptr;  // what was laid; never null once built

@@ -47,11 +47,29 @@ bool contains(const Polygon& polygon, double x, double y) {
   return in;
 }
 
-double polygon_area(const Polygon& polygon) {
+double signed_area(const Polygon& polygon) {
   double twice = 0;
   for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
     twice += polygon[j][0] * polygon[i][1] - polygon[i][0] * polygon[j][1];
-  return std::fabs(twice) / 2;
+  return twice / 2;
+}
+
+double polygon_area(const Polygon& polygon) { return std::fabs(signed_area(polygon)); }
+
+std::optional<std::array<double, 2>> point_inside(const Polygon& ring) {
+  if (ring.size() < 3) return std::nullopt;
+  double lo = ring[0][1], hi = ring[0][1];
+  for (const auto& p : ring) lo = std::min(lo, p[1]), hi = std::max(hi, p[1]);
+  const double y = (lo + hi) / 2;
+  std::vector<double> xs;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const auto& a = ring[i];
+    const auto& b = ring[(i + 1) % ring.size()];
+    if ((a[1] <= y) != (b[1] <= y)) xs.push_back(a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
+  }
+  if (xs.size() < 2) return std::nullopt;
+  std::sort(xs.begin(), xs.end());
+  return std::array<double, 2>{(xs[0] + xs[1]) / 2, y};
 }
 
 bool is_simple(const Polygon& polygon) {

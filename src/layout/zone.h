@@ -16,6 +16,11 @@ bool contains(const Polygon& polygon, double x, double y);
 
 // The polygon's area, mm² (any orientation).
 double polygon_area(const Polygon& polygon);
+// The signed area: positive for a counter-clockwise ring (an outline's outer ring).
+double signed_area(const Polygon& polygon);
+// A point inside a ring: the middle of the first span a line across its middle height cuts
+// through it. None for a degenerate ring.
+std::optional<std::array<double, 2>> point_inside(const Polygon& ring);
 
 // Whether no two edges of the polygon cross or touch, other than neighbours at their vertex.
 bool is_simple(const Polygon& polygon);
