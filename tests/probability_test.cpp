@@ -74,3 +74,17 @@ TEST(PhiloxBatch, MatchesRandom123BitForBit) {
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+TEST(Probability, ExactSumsInLowestTermsWhileTheyFit) {
+  std::vector<Probability> p;
+  for (const char* t : {"1/3", "1/6", "1/4", "0.25"}) p.push_back(*Probability::parse(t));
+  EXPECT_EQ(exact_sum(p, 2), (std::pair<uint64_t, uint64_t>{1, 2}));
+  EXPECT_EQ(exact_sum(p, 4), (std::pair<uint64_t, uint64_t>{1, 1}));
+  EXPECT_EQ(exact_sum(p, 0), (std::pair<uint64_t, uint64_t>{0, 1}));
+  p.push_back(*Probability::from_double(0.1));
+  EXPECT_EQ(exact_sum(p, 5).has_value(), p[4].is_rational());
+}
+
+}  // namespace curdle

@@ -1,8 +1,8 @@
 #include "curdle/markov.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
-#include <numeric>
 
 namespace curdle {
 
@@ -29,26 +29,12 @@ std::string MarkovChain::state_name(uint32_t state) const {
 }
 
 Probability probability_sum(const std::vector<Probability>& terms, size_t n) {
-  unsigned __int128 num = 0, den = 1;
-  bool exact = true;
+  if (const auto sum = exact_sum(terms, n)) {
+    if (sum->first >= sum->second) return Probability::fraction(1, 1);
+    return Probability::fraction(sum->first, sum->second);
+  }
   double sum = 0;
-  for (size_t i = 0; i < n; ++i) {
-    sum += terms[i].value();
-    if (!exact || !terms[i].is_rational()) {
-      exact = false;
-      continue;
-    }
-    const unsigned __int128 d = terms[i].denominator();
-    num = num * d + terms[i].numerator() * den;
-    den *= d;
-    const uint64_t g = std::gcd(static_cast<uint64_t>(num % den), static_cast<uint64_t>(den));
-    if (g > 1) num /= g, den /= g;
-    if (den >> 62 || num >> 62) exact = false;
-  }
-  if (exact) {
-    if (num >= den) return Probability::fraction(1, 1);
-    return Probability::fraction(static_cast<uint64_t>(num), static_cast<uint64_t>(den));
-  }
+  for (size_t i = 0; i < n; ++i) sum += terms[i].value();
   return *Probability::from_double(std::min(1.0, sum));
 }
 

@@ -118,4 +118,18 @@ uint64_t Probability::round_times(uint64_t n) const {
   return static_cast<uint64_t>(std::floor(value_ * static_cast<double>(n) + 0.5));
 }
 
+std::optional<std::pair<uint64_t, uint64_t>> exact_sum(const std::vector<Probability>& terms,
+                                                       size_t n) {
+  unsigned __int128 num = 0, den = 1;
+  for (size_t i = 0; i < n; ++i) {
+    if (!terms[i].is_rational()) return std::nullopt;
+    num = num * terms[i].denominator() + static_cast<unsigned __int128>(terms[i].numerator()) * den;
+    den *= terms[i].denominator();
+    const uint64_t g = std::gcd(static_cast<uint64_t>(num % den), static_cast<uint64_t>(den));
+    if (g > 1) num /= g, den /= g;
+    if (den >> 62 || num >> 62) return std::nullopt;
+  }
+  return std::pair{static_cast<uint64_t>(num), static_cast<uint64_t>(den)};
+}
+
 }  // namespace curdle

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace curdle {
 
@@ -43,5 +45,10 @@ class Probability {
   uint64_t threshold_ = 0;
   bool certain_ = false;
 };
+
+// p_1 + ... + p_n as numerator and denominator in lowest terms, exact while both stay below
+// 2^62; nothing when a term is not a fraction or the sum outgrows that.
+std::optional<std::pair<uint64_t, uint64_t>> exact_sum(const std::vector<Probability>& terms,
+                                                       size_t n);
 
 }  // namespace curdle

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <memory>
-#include <numeric>
 #include <set>
 
 #include "curdle/markov.h"
@@ -22,34 +21,19 @@ constexpr const char* kMatrixForm =
 // The row's sum minus 1, exactly where the entries are fractions: "1/4" (over), "-1/6"
 // (short); empty when it is 1.
 std::string row_excess(const std::vector<Probability>& row) {
-  unsigned __int128 num = 0, den = 1;
-  bool exact = true;
-  double sum = 0;
-  for (const Probability& p : row) {
-    sum += p.value();
-    if (!exact || !p.is_rational()) {
-      exact = false;
-      continue;
-    }
-    num = num * p.denominator() + static_cast<unsigned __int128>(p.numerator()) * den;
-    den *= p.denominator();
-    const uint64_t g = std::gcd(static_cast<uint64_t>(num % den), static_cast<uint64_t>(den));
-    if (g > 1) num /= g, den /= g;
-    if (den >> 62 || num >> 62) exact = false;
-  }
-  if (exact) {
+  if (const auto sum = exact_sum(row, row.size())) {
+    const auto [num, den] = *sum;
     if (num == den) return {};
-    const bool over = num > den;
-    const auto diff = static_cast<uint64_t>(over ? num - den : den - num);
-    const auto d = static_cast<uint64_t>(den);
-    std::string text(over ? "" : "-");
-    text += std::to_string(diff);
-    if (d != 1) {
+    std::string text(num > den ? "" : "-");
+    text += std::to_string(num > den ? num - den : den - num);
+    if (den != 1) {
       text += '/';
-      text += std::to_string(d);
+      text += std::to_string(den);
     }
     return text;
   }
+  double sum = 0;
+  for (const Probability& p : row) sum += p.value();
   if (std::fabs(sum - 1) <= 1e-9) return {};
   char text[32];
   std::snprintf(text, sizeof text, "%+.6g", sum - 1);
