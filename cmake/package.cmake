@@ -14,7 +14,7 @@ set(CURDLE_PUBLIC_HEADERS
   src/curdle/overlay.h src/curdle/probability.h
   src/curdle/report.h src/curdle/search.h src/curdle/stop.h
   src/layout/drawing_sheet.h src/layout/element_id.h src/layout/installer_sheets.h
-  src/layout/layout.h src/layout/layout_kind.h
+  src/layout/layout.h src/layout/layout_kind.h src/layout/planting_spec.h
   src/recipe/recipe.h src/recipe/recipe_files.h
   export/atomic_file.h export/image.h export/measure_files.h export/report_json.h
   export/schedule.h export/wkt.h)

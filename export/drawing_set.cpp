@@ -30,6 +30,37 @@ struct Quantity {
   double area = 0;  // m2
 };
 
+// Sheet 1's legend, a swatch and a line each: a park's materials as planted and built, else one
+// line a product with its values, count, cut pieces and area.
+std::vector<std::pair<std::vector<Rgb>, std::string>> sheet_legend(const Layout& layout) {
+  std::vector<std::pair<std::vector<Rgb>, std::string>> rows;
+  if (layout.kind->depiction() == Depiction::objects) {
+    for (const MaterialLine& l : material_lines(layout)) rows.push_back({{l.colour}, l.text()});
+    return rows;
+  }
+  std::map<uint32_t, Quantity> quantities;
+  for (const Element& e : layout.elements) {
+    stop_point();
+    Quantity& q = quantities[layout.legend[e.value].same_as];  // by legend line
+    (e.cut ? q.cut : q.whole) += 1;
+    q.area += e.area() / 1e6;
+  }
+  for (const LegendLine& legend_line : legend_lines(layout.legend)) {
+    const LegendEntry& e = *legend_line.entry;
+    const Quantity q = quantities.count(e.value) ? quantities[e.value] : Quantity{};
+    std::string line = fmt::format("{} {}: {}", legend_line.values, e.label,
+                                   legend_count(layout, legend_line.count));
+    if (q.cut) line += fmt::format(" ({} cut)", q.cut);
+    if (q.area > 0 && layout.kind->ground() != Ground::sheet)  // not a sheet's holes
+      line += fmt::format(", {:.2f} m²", q.area);
+    rows.push_back({e.parts.size() > 1 && layout.combine == Combine::keep
+                        ? e.parts
+                        : std::vector<Rgb>{e.colour},
+                    line});
+  }
+  return rows;
+}
+
 // Sheet 1: the layout, legend with counts, quantities per value, scale bar, title block.
 void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, size_t total,
                    const PreviewImage* raster) {
@@ -74,26 +105,15 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
 
   // Legend: up to 8 rows a column, 62 mm a column, from the strip's left.
   const double strip = h - kMargin - kTitleStrip;
-  std::map<uint32_t, Quantity> quantities;
-  for (const Element& e : layout.elements) {
-    stop_point();
-    Quantity& q = quantities[layout.legend[e.value].same_as];  // by legend line
-    (e.cut ? q.cut : q.whole) += 1;
-    q.area += e.area() / 1e6;
-  }
   size_t shown = 0;
   const double room = w - kMargin - title_width(w) - kLeftMargin - 6;
   const size_t columns = room >= 200 ? 2 : 1;
   const double column_w = room / static_cast<double>(columns);
-  for (const LegendLine& legend_line : legend_lines(layout.legend)) {
-    const LegendEntry& e = *legend_line.entry;
+  for (const auto& [parts, line] : sheet_legend(layout)) {
     if (shown == 8 * columns) break;
     const double x = kLeftMargin + 3 + column_w * static_cast<double>(shown / 8);
     const double y = strip + 4 + 5.6 * static_cast<double>(shown % 8);
     ++shown;
-    const auto& parts = e.parts.size() > 1 && layout.combine == Combine::keep
-                            ? e.parts
-                            : std::vector<Rgb>{e.colour};
     for (size_t i = 0; i < parts.size(); ++i) {
       colour(cr, parts[i]);
       cairo_rectangle(cr, x + 8.0 * static_cast<double>(i) / static_cast<double>(parts.size()), y,
@@ -102,12 +122,6 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
     }
     colour(cr, kInk);
     box(cr, x, y, 8, 4, 0.2);
-    const Quantity q = quantities.count(e.value) ? quantities[e.value] : Quantity{};
-    std::string line = fmt::format("{} {}: {}", legend_line.values, e.label,
-                                   legend_count(layout, legend_line.count));
-    if (q.cut) line += fmt::format(" ({} cut)", q.cut);
-    if (q.area > 0 && layout.kind->ground() != Ground::sheet)  // not a sheet's holes
-      line += fmt::format(", {:.2f} m²", q.area);
     text(cr, x + 10, y + 3.4, fit_lines(cr, {line}, column_w - 12, 2)[0], 2);
   }
   scale_bar(cr, w - kMargin - title_width(w), strip - 6, s.scale, title_width(w) - 20);

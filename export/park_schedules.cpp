@@ -8,6 +8,7 @@
 
 #include "export/csv_field.h"
 #include "export/wkt.h"
+#include "layout/edging.h"
 #include "layout/piece.h"
 #include "layout/zone.h"
 
@@ -26,26 +27,42 @@ std::array<double, 2> centre(const Element& e) {
   return {b.x + b.w / 2, b.y + b.h / 2};
 }
 
+// A size the recipe gave, or an empty cell.
+std::string given(double mm) { return mm > 0 ? mm_text(mm) : ""; }
+
+std::string girth_text(const PlantingSpec& p) {
+  if (p.girth[0] <= 0) return "";
+  return p.girth[0] == p.girth[1] ? fmt::format("{:g}", p.girth[0])
+                                  : fmt::format("{:g}-{:g}", p.girth[0], p.girth[1]);
+}
+
 }  // namespace
 
 void write_planting_csv(std::ostream& out, const Layout& layout) {
-  out << kUtf8Mark << "element_id,plant,x_mm,y_mm,canopy_diameter_mm,value,zone\r\n";
+  out << kUtf8Mark
+      << "element_id,plant,species,x_mm,y_mm,canopy_diameter_mm,girth_cm,root_ball_mm,"
+         "pit_width_mm,pit_length_mm,value,zone\r\n";
   for (const Element& e : layout.elements) {
     if (!e.stands || !e.circle) continue;
     const auto [x, y] = centre(e);
-    out << fmt::format("{},{},{},{},{},{},{}\r\n", e.id, csv_field(e.type), mm_text(x), mm_text(y),
-                       mm_text(e.circle->d), e.value, csv_field(zone_of(layout, x, y)));
+    const PlantingSpec& p = planting_of(layout, e);
+    out << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\r\n", e.id, csv_field(e.type),
+                       csv_field(p.species), mm_text(x), mm_text(y), mm_text(e.circle->d),
+                       girth_text(p), given(p.root_ball), given(p.pit[0]), given(p.pit[1]), e.value,
+                       csv_field(zone_of(layout, x, y)));
   }
 }
 
 void write_furniture_csv(std::ostream& out, const Layout& layout) {
-  out << kUtf8Mark << "element_id,item,x_mm,y_mm,width_mm,depth_mm,value,zone\r\n";
+  out << kUtf8Mark
+      << "element_id,item,product,x_mm,y_mm,width_mm,depth_mm,long_side_deg,value,zone\r\n";
   for (const Element& e : layout.elements) {
     if (!e.stands || e.circle) continue;
     const auto [x, y] = centre(e);
     const Rect b = laid_bounds(e);
-    out << fmt::format("{},{},{},{},{},{},{},{}\r\n", e.id, csv_field(e.type), mm_text(x),
-                       mm_text(y), mm_text(b.w), mm_text(b.h), e.value,
+    out << fmt::format("{},{},{},{},{},{},{},{:g},{},{}\r\n", e.id, csv_field(e.type),
+                       csv_field(planting_of(layout, e).species), mm_text(x), mm_text(y),
+                       mm_text(b.w), mm_text(b.h), e.turn, e.value,
                        csv_field(zone_of(layout, x, y)));
   }
 }
@@ -54,20 +71,30 @@ void write_surfaces_csv(std::ostream& out, const Layout& layout) {
   struct Line {
     double area = 0;  // mm², each piece's to the mm² as schedule.csv gives it
     uint64_t pieces = 0, cut = 0;
+    double edging = 0;  // mm
   };
   std::map<std::pair<std::string, std::string>, Line> lines;  // material, zone
+  std::map<std::string, uint32_t> material_group;
+  std::vector<EdgedPiece> pieces;
+  std::vector<Line*> line_of;
   for (const Element& e : layout.elements) {
     if (e.stands) continue;
     const auto [x, y] = centre(e);
-    Line& l = lines[{piece_material(layout, e), zone_of(layout, x, y)}];
+    const std::string& material = piece_material(layout, e);
+    Line& l = lines[{material, zone_of(layout, x, y)}];
     l.area += std::round(e.area());
     l.pieces += 1;
     l.cut += e.cut ? 1 : 0;
+    const auto group = material_group.try_emplace(material, material_group.size()).first->second;
+    pieces.push_back({piece_rings(e), static_cast<uint32_t>(group)});
+    line_of.push_back(&l);
   }
-  out << kUtf8Mark << "material,zone,area_m2,pieces,cut\r\n";
+  const std::vector<double> edging = unshared_edge_lengths(pieces);
+  for (size_t i = 0; i < pieces.size(); ++i) line_of[i]->edging += edging[i];
+  out << kUtf8Mark << "material,zone,area_m2,pieces,cut,edging_m\r\n";
   for (const auto& [key, l] : lines)
-    out << fmt::format("{},{},{:.6f},{},{}\r\n", csv_field(key.first), csv_field(key.second),
-                       l.area / 1e6, l.pieces, l.cut);
+    out << fmt::format("{},{},{:.6f},{},{},{:.3f}\r\n", csv_field(key.first), csv_field(key.second),
+                       l.area / 1e6, l.pieces, l.cut, l.edging / 1e3);
 }
 
 }  // namespace curdle

@@ -154,6 +154,15 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
       cairo_arc(cr, v.x(e.circle->cx), v.y(e.circle->cy), e.circle->d / 2 / v.scale, 0, 2 * M_PI);
       cairo_fill(cr);
     }
+    if (const std::optional<Rect> pit = tree_pit(layout, e)) {  // dashed, as dug below ground
+      colour(cr, kInk);
+      const double dash[] = {1.0, 0.6};
+      cairo_set_dash(cr, dash, 2, 0);
+      cairo_set_line_width(cr, 0.2);
+      v.rect(cr, *pit);
+      cairo_stroke(cr);
+      cairo_set_dash(cr, nullptr, 0, 0);
+    }
     if (e.outline) {
       colour(cr, c, alpha);
       ring_paths(cr, e.outline->rings, v);

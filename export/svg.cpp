@@ -12,6 +12,7 @@
 #include "export/title_block.h"
 #include "layout/contour.h"
 #include "layout/legend.h"
+#include "layout/piece.h"
 #include "layout/union.h"
 
 namespace curdle {
@@ -218,6 +219,12 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
             "stroke=\"#1d3b26\" stroke-width=\"{}\"/>\n",
             e->id, mm(s.x(e->circle->cx)), mm(s.y(e->circle->cy)), mm(e->circle->d / 2),
             mm(unit * 0.04));
+        if (const std::optional<Rect> pit = tree_pit(layout, *e))  // dashed, as dug
+          out << fmt::format(
+              "<rect class=\"tree-pit\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" "
+              "fill=\"none\" stroke=\"#222\" stroke-width=\"{}\" stroke-dasharray=\"{} {}\"/>\n",
+              mm(s.x(pit->x)), mm(s.y(pit->top())), mm(pit->w), mm(pit->h), mm(unit * 0.04),
+              mm(unit * 0.3), mm(unit * 0.2));
         continue;
       }
       std::string d;
@@ -354,6 +361,48 @@ void draw_modules(std::ostream& out, const Layout& layout, const Sheet& s, doubl
   }
 }
 
+// The legend under the drawing from `top`: one row a product (a park: a material as planted
+// and built), a swatch and its line.
+void write_legend(std::ostream& out, const Layout& layout, double top, double legend_room,
+                  double margin, double unit) {
+  // One row a product (a park: a material as planted and built): its value, fill and text.
+  struct Row {
+    uint32_t value;
+    std::string fill, text;
+  };
+  std::vector<Row> rows;
+  const bool striped = layout.combine == Combine::keep && layout.kind->ground() != Ground::sheet;
+  if (layout.kind->depiction() == Depiction::objects) {
+    for (const MaterialLine& l : material_lines(layout))
+      rows.push_back({0, hex_colour(l.colour), l.text()});
+  } else {
+    for (const LegendLine& l : legend_lines(layout.legend))
+      rows.push_back(
+          {l.entry->value,
+           striped ? fmt::format("url(#parts-{})", l.entry->value) : hex_colour(l.entry->colour),
+           fmt::format("{} {}: {}", l.values, l.entry->label, legend_count(layout, l.count))});
+  }
+  // The text shrinks, when its longest line would run into the title block (`legend_room`
+  // from the legend's text), to about 0.6 em a character.
+  size_t longest_entry = 0;
+  for (const Row& r : rows) longest_entry = std::max(longest_entry, r.text.size());
+  const double legend_font =
+      std::min(unit, legend_room / (0.6 * static_cast<double>(std::max<size_t>(longest_entry, 1))));
+  out << fmt::format("<g id=\"legend\" font-size=\"{}\" fill=\"#222\">\n", mm(legend_font));
+  size_t shown = 0;
+  for (const Row& r : rows) {
+    if (shown == 16) break;
+    const double y = top + unit * 1.6 * static_cast<double>(shown++);
+    out << fmt::format(
+        "<g class=\"legend-entry\" data-value=\"{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" "
+        "height=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\">"
+        "{}</text></g>\n",
+        r.value, mm(margin), mm(y), mm(unit * 2), mm(unit * 1.2), r.fill, mm(unit * 0.05),
+        mm(margin + unit * 2.6), mm(y + unit), escape(r.text));
+  }
+  out << "</g>\n";
+}
+
 void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Sheet& s, double unit,
                              double margin) {
   const Provenance& source = layout.source;
@@ -421,35 +470,7 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
   // Legend and title block, under the drawing.
   const double top = margin * 1.5 + H;
   const double tx = margin + W * 0.42;  // the title block's left edge
-  // The legend's text shrinks, when its longest line would run into the title block, to about
-  // 0.6 em a character.
-  const std::vector<LegendLine> legend = legend_lines(layout.legend);
-  size_t longest_entry = 0;
-  for (const LegendLine& l : legend)
-    longest_entry = std::max(
-        longest_entry,
-        fmt::format("{} {}: {}", l.values, l.entry->label, legend_count(layout, l.count)).size());
-  const double legend_room = tx - unit * 1.2 - (margin + unit * 2.6);
-  const double legend_font =
-      std::min(unit, legend_room / (0.6 * static_cast<double>(std::max<size_t>(longest_entry, 1))));
-  out << fmt::format("<g id=\"legend\" font-size=\"{}\" fill=\"#222\">\n", mm(legend_font));
-  size_t shown = 0;
-  for (const LegendLine& l : legend) {
-    const LegendEntry& e = *l.entry;
-    if (shown == 16) break;
-    const double y = top + unit * 1.6 * static_cast<double>(shown++);
-    const bool striped = layout.combine == Combine::keep && layout.kind->ground() != Ground::sheet;
-    const std::string fill =
-        striped ? fmt::format("url(#parts-{})", e.value) : hex_colour(e.colour);
-    out << fmt::format(
-        "<g class=\"legend-entry\" data-value=\"{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" "
-        "height=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\">"
-        "{} {}: {}</text></g>\n",
-        e.value, mm(margin), mm(y), mm(unit * 2), mm(unit * 1.2), fill, mm(unit * 0.05),
-        mm(margin + unit * 2.6), mm(y + unit), l.values, escape(e.label),
-        escape(legend_count(layout, l.count)));
-  }
-  out << "</g>\n";
+  write_legend(out, layout, top, tx - unit * 1.2 - (margin + unit * 2.6), margin, unit);
   const std::vector<std::string> lines = title_lines(layout);
   // Sized to fit the longest line at about half an em per character.
   std::vector<std::string> all = lines;

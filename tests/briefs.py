@@ -10,7 +10,7 @@ checked for what its user needs from it:
   sheet of that seed (punching.csv) is 25-35 % open;
 - entrance paving: the segment the search chose keeps the entrance clear of dark setts, and the
   title block names the window;
-- café park: planting.csv holds every tree of the schedule, by name and centre, and the
+- café park: planting.csv holds every tree of the schedule, by species, sizes, pit and centre, and the
   furniture and surfaces schedules are written.
 
 Usage: briefs.py CURDLE SOURCE_DIR (Debian's python3 with python3-ezdxf; poppler-utils)
@@ -124,12 +124,16 @@ with tempfile.TemporaryDirectory() as tmp:
     run("generate", str(briefs / "cafe-park.toml"), "--out", str(out), "--outputs",
         "schedule.csv,planting.csv,furniture.csv,surfaces.csv")
     trees = {r["element_id"] for r in rows(out / "schedule.csv")
-             if r["element_type"].startswith("Tilia")}
+             if r["element_type"] == "tree"}
     planted = rows(out / "planting.csv")
     check({r["element_id"] for r in planted} == trees and trees,
           f"café park: planting.csv holds {len(planted)} trees, the schedule {len(trees)}")
-    check(all(r["plant"].startswith("Tilia cordata") and float(r["canopy_diameter_mm"]) == 1200
-              for r in planted), "café park: a tree is planted without its name or canopy")
+    check(all(r["species"] == "Tilia cordata 'Greenspire'" and float(r["canopy_diameter_mm"]) == 1200
+              and r["girth_cm"] == "18-20" and r["root_ball_mm"] == "600"
+              and r["pit_width_mm"] == r["pit_length_mm"] == "1500" for r in planted),
+          "café park: a tree is planted without its species, canopy, girth, root ball or pit")
+    check(all(float(r["edging_m"]) > 0 for r in rows(out / "surfaces.csv")),
+          "café park: a surface without its edging")
     check(rows(out / "furniture.csv") and rows(out / "surfaces.csv"),
           "café park: no furniture or surfaces schedule")
     print(f"café park: {len(planted)} trees in planting.csv")

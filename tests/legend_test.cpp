@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
+#include "kinds/park.h"
 #include "layout_support.h"
 
 namespace curdle {
@@ -28,6 +31,37 @@ TEST(Legend, ValuesOfOneProductAreOneLine) {
   // The same label in another colour is another product.
   spec.value_colours[3] = Rgb{20, 20, 20};
   EXPECT_EQ(make_layout(d, f, d.field, spec).legend[3].same_as, 3u);
+}
+
+}  // namespace curdle
+
+namespace curdle {
+
+// A park's legend lists what is planted and built, one line a material with its count or area
+// and the pit drawn dashed; it listed value combinations ("3 tree+bench: 5 cells").
+TEST(Legend, AParkListsWhatIsPlantedAndBuilt) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = test::trees_and_benches();
+  spec.own<ParkKeys>().elements[0].order = {"tree", "Tilia cordata", {18, 20}, 600, {900, 900}};
+  const Layout layout = make_layout(d, curdle(d, 4, d.field), d.field, spec);
+  const std::vector<MaterialLine> lines = material_lines(layout);
+  std::map<std::string, uint64_t> standing;
+  double ground = 0, listed = 0;
+  for (const Element& e : layout.elements) {
+    if (e.stands) ++standing[e.type];
+    if (!e.stands) ground += e.area();
+  }
+  ASSERT_EQ(lines.size(), 4u);  // tree, bench, grey and white paving
+  EXPECT_EQ(lines[0].text(), "bench: " + std::to_string(standing["bench"]));
+  EXPECT_EQ(lines[1].text(),
+            "tree (Tilia cordata), pit 900 x 900 dashed: " + std::to_string(standing["tree"]));
+  EXPECT_GT(lines[2].area, lines[3].area);  // surfaces largest first
+  for (const MaterialLine& l : lines) {
+    EXPECT_EQ(l.text().find('+'), std::string::npos) << l.text();
+    if (!l.stands) listed += l.area;
+  }
+  EXPECT_NEAR(listed, ground, 1e-3);
+  EXPECT_NE(lines[2].text().find(" m², "), std::string::npos) << lines[2].text();
 }
 
 }  // namespace curdle

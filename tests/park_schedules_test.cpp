@@ -5,12 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 
 #include "export/schedule.h"
 #include "export_support.h"
 #include "kinds/park.h"
+#include "layout/piece.h"
 #include "layout/zone.h"
 #include "layout_support.h"
 
@@ -46,29 +49,94 @@ TEST(ParkSchedules, PlantsFurnitureAndSurfacesInLandscapeTerms) {
   ASSERT_GT(benches, 0u);
   ASSERT_EQ(plants.size(), trees + 1);
   ASSERT_EQ(items.size(), benches + 1);
-  EXPECT_EQ(plants[0], (std::vector<std::string>{"element_id", "plant", "x_mm", "y_mm",
-                                                 "canopy_diameter_mm", "value", "zone"}));
+  EXPECT_EQ(plants[0],
+            (std::vector<std::string>{"element_id", "plant", "species", "x_mm", "y_mm",
+                                      "canopy_diameter_mm", "girth_cm", "root_ball_mm",
+                                      "pit_width_mm", "pit_length_mm", "value", "zone"}));
   std::map<std::string, const Element*> by_id;
   for (const Element& e : layout.elements) by_id[e.id] = &e;
   size_t in_lawn = 0;
   for (size_t r = 1; r < plants.size(); ++r) {
     const Element& e = *by_id.at(plants[r][0]);
     EXPECT_EQ(plants[r][1], "Tilia cordata");
-    EXPECT_NEAR(std::stod(plants[r][2]), e.circle->cx, 1e-3);
-    EXPECT_NEAR(std::stod(plants[r][3]), e.circle->cy, 1e-3);
-    EXPECT_EQ(plants[r][4], "1000");
-    in_lawn += plants[r][6] == "lawn";
-    EXPECT_EQ(plants[r][6] == "lawn", e.circle->cx < 12000 && e.circle->cy < 6000) << e.id;
+    EXPECT_EQ(plants[r][2], "");  // no species given: the type says it
+    EXPECT_NEAR(std::stod(plants[r][3]), e.circle->cx, 1e-3);
+    EXPECT_NEAR(std::stod(plants[r][4]), e.circle->cy, 1e-3);
+    EXPECT_EQ(plants[r][5], "1000");
+    in_lawn += plants[r][11] == "lawn";
+    EXPECT_EQ(plants[r][11] == "lawn", e.circle->cx < 12000 && e.circle->cy < 6000) << e.id;
   }
   EXPECT_GT(in_lawn, 0u);
   for (size_t r = 1; r < items.size(); ++r) {
     const Element& e = *by_id.at(items[r][0]);
     EXPECT_EQ(items[r][1], "bench");
-    EXPECT_EQ(std::stod(items[r][4]) * std::stod(items[r][5]), e.area());
+    EXPECT_EQ(std::stod(items[r][5]) * std::stod(items[r][6]), e.area());
+    EXPECT_EQ(items[r][7], "0");  // 1000 x 450: its long side along x
   }
   double listed = 0;
   for (size_t r = 1; r < areas.size(); ++r) listed += std::stod(areas[r][2]) * 1e6;
   EXPECT_NEAR(listed, ground, 1e-3);  // to the mm², as schedule.csv's rows
+}
+
+// The landscape contractor's columns: the species, girth, root ball and pit the recipe gives,
+// each bench's bearing, and edging per material that adds up to the edges between materials
+// and round the site.
+TEST(ParkSchedules, SpeciesSizesPitsBearingsAndEdging) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = test::trees_and_benches("tree");
+  ParkKeys& park = spec.own<ParkKeys>();
+  park.elements[0].order = {"tree", "Acer campestre 'Elsrijk'", {16, 18}, 500, {1200, 1400}};
+  park.elements[1].w = 450, park.elements[1].h = 1000;  // a bench turned along y
+  park.elements[1].order = {"bench", "Oak slats", {0, 0}, 0, {0, 0}};
+  spec.size = std::array<double, 2>{24000, 18000};
+  const Layout layout = lay_floor(d, spec, 4);
+  std::ostringstream planting, furniture, surfaces;
+  write_planting_csv(planting, layout);
+  write_furniture_csv(furniture, layout);
+  write_surfaces_csv(surfaces, layout);
+  const auto plants = strict_csv(planting.str().substr(3));
+  const auto items = strict_csv(furniture.str().substr(3));
+  const auto areas = strict_csv(surfaces.str().substr(3));
+  ASSERT_GT(plants.size(), 1u);
+  ASSERT_GT(items.size(), 1u);
+  for (size_t r = 1; r < plants.size(); ++r)
+    EXPECT_EQ((std::vector<std::string>(plants[r].begin() + 1, plants[r].begin() + 3)),
+              (std::vector<std::string>{"tree", "Acer campestre 'Elsrijk'"}));
+  for (size_t r = 1; r < plants.size(); ++r)
+    EXPECT_EQ((std::vector<std::string>(plants[r].begin() + 6, plants[r].begin() + 10)),
+              (std::vector<std::string>{"16-18", "500", "1200", "1400"}));
+  for (size_t r = 1; r < items.size(); ++r) {
+    EXPECT_EQ(items[r][2], "Oak slats");
+    EXPECT_EQ(items[r][7], "90");
+  }
+  // Every surface piece is a rectangle of the park's grid: each one's edge to another
+  // material or the site's edge, summed by brute force, is what surfaces.csv lists.
+  ASSERT_EQ(areas[0].back(), "edging_m");
+  double listed = 0, brute = 0;
+  for (size_t r = 1; r < areas.size(); ++r) listed += std::stod(areas[r][5]) * 1e3;
+  std::vector<const Element*> ground;
+  for (const Element& e : layout.elements)
+    if (!e.stands) ground.push_back(&e);
+  for (const Element* a : ground)
+    for (const Rect& ra : a->shape) {
+      double shared = 0;
+      for (const Element* b : ground)
+        if (piece_material(layout, *a) == piece_material(layout, *b))
+          for (const Rect& rb : b->shape) {
+            if (&ra == &rb) continue;
+            const double along_x =
+                std::max(0.0, std::min(ra.right(), rb.right()) - std::max(ra.x, rb.x));
+            const double along_y =
+                std::max(0.0, std::min(ra.top(), rb.top()) - std::max(ra.y, rb.y));
+            if (std::abs(ra.top() - rb.y) < 1e-6 || std::abs(rb.top() - ra.y) < 1e-6)
+              shared += along_x;
+            if (std::abs(ra.right() - rb.x) < 1e-6 || std::abs(rb.right() - ra.x) < 1e-6)
+              shared += along_y;
+          }
+      brute += 2 * (ra.w + ra.h) - shared;
+    }
+  EXPECT_GT(listed, 2 * (24000 + 18000) - 1e-3);  // at least round the site
+  EXPECT_NEAR(listed, brute, 1.0);                // 3 decimals of a metre per line
 }
 
 }  // namespace

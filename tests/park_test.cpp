@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "layout/piece.h"
 #include "layout_support.h"
 
 namespace curdle {
@@ -221,6 +222,71 @@ TEST(Park, SurfacesAreOrderedByAreaOneLineAMaterial) {
   EXPECT_EQ(lines["grey paving"], 1) << out.str();  // strips of cells shared with others too
   EXPECT_EQ(lines["white paving"], 1);
   EXPECT_NEAR(ordered, laid, 1.0);
+}
+
+}  // namespace curdle
+
+namespace curdle {
+
+// A tree's nursery sizes and pit are read from its element; a pit smaller than the root ball, a
+// girth out of order or in NaN is refused by name; a tree whose pit would leave its cell (here
+// the site's edge) is left out, with a note, where it stood before with its pit beyond the site.
+TEST(Park, TreesCarrySpeciesGirthRootBallAndAPitWithinTheSite) {
+  const std::string head = R"(name = "pits"
+seed = 5
+[lattice]
+base = 2
+dimension = 2
+[[curds]]
+name = "tree"
+probabilities = ["1", "1"]
+[layout]
+kind = "park"
+cell = [3000, 3000]
+area = [11000, 12000]
+elements = [
+  { type = "tree", species = "Acer campestre", form = "object", shape = "circle", size = [1000, 1000], )";
+  const Recipe r =
+      parse_recipe(head + "girth = [16, 18], root_ball = 500, pit = [2000, 1200] },\n]\n", "p");
+  const PlantingSpec& p = r.layout->own<ParkKeys>().elements[0].order;
+  EXPECT_EQ(p.species, "Acer campestre");
+  EXPECT_EQ(p.girth, (std::array<double, 2>{16, 18}));
+  EXPECT_EQ(p.root_ball, 500);
+  EXPECT_EQ(p.pit, (std::array<double, 2>{2000, 1200}));
+  EXPECT_EQ(parse_recipe(head + "girth = 20 },\n]\n", "p")
+                .layout->own<ParkKeys>()
+                .elements[0]
+                .order.girth,
+            (std::array<double, 2>{20, 20}));
+  for (const auto& [keys, says] : std::vector<std::pair<std::string, std::string>>{
+           {"root_ball = 800, pit = [2000, 700]", "each side at least its 800 mm"},
+           {"girth = [18, 16]", "from <= to"},
+           {"girth = nan", "girth"},
+           {"girth = [18, 16, 14]", "girth"},
+           {"pit = [0, 1000]", "pit"}}) {
+    try {
+      parse_recipe(head + keys + " },\n]\n", "p");
+      ADD_FAILURE() << keys << " was taken";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
+  // Cells 3 m, the site 11 m wide: the fourth column's cell is 2 m wide, a 2 m pit centred in
+  // its 3 m slot would run 0.5 m past the site's edge.
+  Design d = r.design;
+  const Layout layout = make_layout(d, curdle(d, r.seed, d.field), d.field, *r.layout);
+  size_t trees = 0;
+  for (const Element& e : layout.elements) {
+    if (!e.stands) continue;
+    ++trees;
+    const std::optional<Rect> pit = tree_pit(layout, e);
+    ASSERT_TRUE(pit) << e.id;
+    EXPECT_LE(pit->right(), layout.width + 1e-9) << e.id;
+    EXPECT_LE(pit->top(), layout.height + 1e-9) << e.id;
+  }
+  EXPECT_EQ(trees, 12u);  // 4 x 4 cells, one column too narrow for its pit
+  ASSERT_FALSE(layout.notes.empty());
+  EXPECT_NE(layout.notes.back().find("tree pit"), std::string::npos) << layout.notes.back();
 }
 
 }  // namespace curdle

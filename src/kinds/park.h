@@ -11,6 +11,7 @@
 #include "curdle/curd.h"
 #include "kinds/surface_kind.h"
 #include "layout/layout.h"
+#include "layout/planting_spec.h"
 
 namespace curdle {
 
@@ -21,6 +22,7 @@ struct ParkElement {
   bool round = false;    // objects: a circle of diameter size[0] (a canopy), or a rectangle
   double w = 0, h = 0;   // objects: footprint, mm
   Rgb colour;
+  PlantingSpec order;  // objects: species, girth, root ball and pit (order.type is `type`)
 };
 
 struct ParkKeys : KindKeysOf<ParkKeys> {

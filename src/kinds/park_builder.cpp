@@ -70,6 +70,9 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
   layout.elements.clear();
   layout.element_type = "element";
   const std::vector<CurdMember> members = curd_members(design.curds);
+  layout.planting.clear();
+  for (const ParkElement& kind : spec.own<ParkKeys>().elements)
+    if (!kind.surface) layout.planting.push_back(kind.order);
   size_t left_out = 0;
   for (const Element& cell : cells) {
     std::vector<size_t> surfaces, objects;
@@ -122,21 +125,28 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
       const bool in_slot = footprint.x >= slots[i].x - kEps && footprint.y >= slots[i].y - kEps &&
                            footprint.right() <= slots[i].right() + kEps &&
                            footprint.top() <= slots[i].top() + kEps;
-      if (!in_slot || within(cell, room).area() < room.area() - kEps) {
+      // A tree pit is dug within the cell as laid (never beyond the site's edge).
+      const PlantingSpec& order = kind.order;
+      const Rect pit = order.pit_given() ? centred_on(cx, cy, order.pit[0], order.pit[1]) : Rect{};
+      if (!in_slot || within(cell, room).area() < room.area() - kEps ||
+          within(cell, pit).area() < pit.area() - kEps) {
         ++left_out;
         continue;
       }
-      if (kind.round)
+      if (kind.round) {
         add(kind, {}, Circle{cx, cy, kind.w}, members[objects[i]].name, footprint);
-      else
+      } else {
         add(kind, Region{{footprint}, std::nullopt}, std::nullopt, members[objects[i]].name,
             footprint);
+        layout.elements.back().turn = kind.w >= kind.h ? 0 : 90;  // its long side, from x
+      }
     }
   }
   if (left_out > 0)
     layout.notes.push_back(fmt::format(
         "{} object{} left out where {} would not stand whole with the clearance of {:g} mm "
-        "all round (to the cell's edges, the area's edge or outline, and the other objects)",
+        "all round (to the cell's edges, the area's edge or outline, and the other objects), "
+        "or its tree pit would not lie within the cell",
         left_out, left_out == 1 ? " is" : "s are", left_out == 1 ? "it" : "they",
         spec.own<ParkKeys>().clearance));
 }

@@ -7,6 +7,48 @@
 namespace curdle::reading {
 namespace {
 
+// Stem girth at 1 m, cm, as nurseries sell it: [from, to], or one number for both.
+std::array<double, 2> read_girth(TableReader& r) {
+  const toml::node* n = r.get("girth");
+  if (!n) return {0, 0};
+  const char* allowed =
+      "must be the stem girth at 1 m in cm, 1 to 1000: a number, or [from, to] "
+      "with from <= to, e.g. [18, 20]";
+  std::vector<const toml::node*> parts;
+  if (const toml::array* a = n->as_array())
+    for (size_t i = 0; i < a->size(); ++i) parts.push_back(a->get(i));
+  else
+    parts = {n, n};
+  if (parts.size() != 2) r.fail("girth", allowed);
+  std::array<double, 2> g{};
+  for (size_t i = 0; i < 2; ++i) {
+    const std::optional<double> v = finite_number(parts[i]);
+    if (!v || *v < 1 || *v > 1000) r.fail("girth", allowed);
+    g[i] = *v;
+  }
+  if (g[0] > g[1]) r.fail("girth", allowed);
+  return g;
+}
+
+// What the contractor orders for an object: its species (or product), girth, root ball and pit.
+PlantingSpec read_planting(TableReader& r, const std::string& type) {
+  PlantingSpec p;
+  p.type = type;
+  p.species = read_name(r, "species",
+                        "a botanical or product name, e.g. \"Tilia cordata "
+                        "'Greenspire'\"")
+                  .value_or("");
+  p.girth = read_girth(r);
+  p.root_ball = read_mm(r, "root_ball", 0, 1);
+  if (const auto pit = read_mm_pair(r, "pit")) {
+    p.pit = *pit;
+    if (p.root_ball > 0 && (p.pit[0] < p.root_ball || p.pit[1] < p.root_ball))
+      r.fail("pit", "must take the root ball: each side at least its " +
+                        std::to_string(static_cast<int>(p.root_ball)) + " mm");
+  }
+  return p;
+}
+
 ParkElement read_park_element(TableReader& r, bool ground) {
   ParkElement e;
   e.type = read_name(r, "type", "a name such as \"tree\"").value_or(ground ? "white paving" : "");
@@ -32,6 +74,7 @@ ParkElement read_park_element(TableReader& r, bool ground) {
     e.round = shape == "circle";
     const auto size = read_mm_pair(r, "size", true);
     e.w = (*size)[0], e.h = e.round ? (*size)[0] : (*size)[1];
+    e.order = read_planting(r, e.type);
   }
   return e;
 }
@@ -58,8 +101,9 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
     const std::string path = "layout.elements." + std::to_string(i);
     if (!a->get(i)->as_table())
       r.fail_node(*a->get(i), path, "must be a table {type = ..., form = ...}");
-    TableReader er(*a->get(i)->as_table(), path, r.source(),
-                   {"type", "form", "shape", "size", "colour"});
+    TableReader er(
+        *a->get(i)->as_table(), path, r.source(),
+        {"type", "form", "shape", "size", "colour", "species", "girth", "root_ball", "pit"});
     spec.own<ParkKeys>().elements.push_back(read_park_element(er, false));
     objects += !spec.own<ParkKeys>().elements.back().surface;
   }

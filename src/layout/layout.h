@@ -17,6 +17,7 @@
 #include "curdle/curd.h"
 #include "layout/element_id.h"
 #include "layout/layout_kind.h"
+#include "layout/planting_spec.h"
 
 namespace curdle {
 
@@ -261,7 +262,9 @@ struct Element {
   int sheet = -1;                   // perforation: the fabrication sheet it is cut in
   Rgb colour;                       // park: the element's own colour
   bool stands = false;              // park: an object standing on the ground (tree, bench)
-  double turn = 0;  // a pattern's unit: its long side (a hexagon: a flat's normal) from x, °
+  // A pattern's unit: its long side (a hexagon: a flat's normal) from x, °; a park's object
+  // standing in a rectangle (a bench): its long side from x, 0 or 90.
+  double turn = 0;
   double area() const;
 };
 
@@ -341,8 +344,9 @@ struct Layout {
   // and its material (layout.sheet_material), for the order list.
   std::array<double, 2> sheet_stock{0, 0};
   std::string sheet_material;
-  std::vector<std::string> notes;  // what a builder should know (cut slivers, ...)
-  Box view;                        // the cells laid, in field coordinates
+  std::vector<PlantingSpec> planting;  // park: per object type, what the contractor orders
+  std::vector<std::string> notes;      // what a builder should know (cut slivers, ...)
+  Box view;                            // the cells laid, in field coordinates
   // Blocks: the drawing is a plan and an elevation of the voxels, side by side; each shape
   // with the value it shows and the blocks behind it, the one shown first. Captions say which
   // view is which.

@@ -1,11 +1,15 @@
 #include "layout/legend.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <tuple>
 
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
+#include "layout/piece.h"
 
 namespace curdle {
 
@@ -46,6 +50,37 @@ std::vector<LegendLine> legend_lines(const std::vector<LegendEntry>& legend) {
     }
     lines[at].count += e.count;
   }
+  return lines;
+}
+
+std::string MaterialLine::text() const {
+  if (stands) return fmt::format("{}: {}", label, count);
+  std::string line =
+      fmt::format("{}: {:.2f} m², {} piece{}", label, area / 1e6, count, count == 1 ? "" : "s");
+  if (cut > 0) line += fmt::format(" ({} cut)", cut);
+  return line;
+}
+
+std::vector<MaterialLine> material_lines(const Layout& layout) {
+  std::vector<MaterialLine> lines;
+  std::map<std::pair<bool, std::string>, size_t> line_of;
+  for (const Element& e : layout.elements) {
+    std::string label = piece_material(layout, e);
+    if (const PlantingSpec& p = planting_of(layout, e); e.stands) {
+      if (!p.species.empty()) label += " (" + p.species + ")";
+      if (p.pit_given()) label += fmt::format(", pit {:g} x {:g} dashed", p.pit[0], p.pit[1]);
+    }
+    const auto [at, added] = line_of.try_emplace({e.stands, label}, lines.size());
+    if (added) lines.push_back({label, piece_colour(layout, e), e.stands});
+    MaterialLine& l = lines[at->second];
+    l.count += 1;
+    l.cut += e.cut ? 1 : 0;
+    l.area += e.area();
+  }
+  std::stable_sort(lines.begin(), lines.end(), [](const MaterialLine& a, const MaterialLine& b) {
+    if (a.stands != b.stands) return a.stands;
+    return a.stands ? a.label < b.label : a.area > b.area;
+  });
   return lines;
 }
 

@@ -1,6 +1,6 @@
 // A layout's legend: one entry per value (its label, colour and, in keep mode, the curds'
 // colours side by side), and the lines a legend or key lists, values that lay one product
-// together.
+// together; a park's, what it plants and builds.
 #pragma once
 
 #include <cstdint>
@@ -25,5 +25,17 @@ struct LegendLine {
   uint64_t count = 0;
 };
 std::vector<LegendLine> legend_lines(const std::vector<LegendEntry>& legend);
+
+// What a park plants and builds (its value combinations say nothing to a contractor): one line a
+// material, the standing objects first (how many), then the surfaces (area laid), largest first.
+struct MaterialLine {
+  std::string label;  // the object's type and species, or the surface's material
+  Rgb colour;
+  bool stands = false;
+  uint64_t count = 0, cut = 0;  // pieces (objects: how many stand), cut ones
+  double area = 0;              // laid, mm²
+  std::string text() const;     // "tree (Tilia cordata): 13", "gravel: 204.85 m², 15 pieces"
+};
+std::vector<MaterialLine> material_lines(const Layout& layout);
 
 }  // namespace curdle

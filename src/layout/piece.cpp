@@ -79,4 +79,19 @@ LayingExtents laying_extents(const Layout& layout) {
   return x;
 }
 
+const PlantingSpec& planting_of(const Layout& layout, const Element& e) {
+  static const PlantingSpec none;
+  if (!e.stands) return none;
+  for (const PlantingSpec& p : layout.planting)
+    if (p.type == e.type) return p;
+  return none;
+}
+
+std::optional<Rect> tree_pit(const Layout& layout, const Element& e) {
+  const PlantingSpec& p = planting_of(layout, e);
+  if (!p.pit_given()) return std::nullopt;
+  const Rect b = laid_bounds(e);
+  return centred_on(b.x + b.w / 2, b.y + b.h / 2, p.pit[0], p.pit[1]);
+}
+
 }  // namespace curdle

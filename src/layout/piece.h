@@ -26,6 +26,12 @@ std::vector<Outline> piece_outlines(const Element& e);
 const std::string& piece_material(const Layout& layout, const Element& e);
 const Rgb& piece_colour(const Layout& layout, const Element& e);
 
+// What the contractor orders for a standing object (a park's tree, bench), by its type; an empty
+// spec when the recipe gave none.
+const PlantingSpec& planting_of(const Layout& layout, const Element& e);
+// The tree pit dug for a standing object, centred on it; none when the recipe gave no pit.
+std::optional<Rect> tree_pit(const Layout& layout, const Element& e);
+
 // Keep mode: the stripe of the element each curd present keeps, side by side from the side
 // laying starts from, cut to the piece as laid; one part, the whole piece, in mix mode.
 struct ColouredRect {

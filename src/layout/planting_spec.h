@@ -1,0 +1,19 @@
+// What the landscape contractor orders for a kind of standing object (a park's tree, bench):
+// the recipe's botanical or product name and the nursery's sizes, by the element's type.
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace curdle {
+
+struct PlantingSpec {
+  std::string type;                   // Element::type it describes
+  std::string species;                // botanical or product name; empty: the type says it
+  std::array<double, 2> girth{0, 0};  // stem girth at 1 m above ground, cm, from-to; 0: not given
+  double root_ball = 0;               // root ball diameter, mm; 0: not given
+  std::array<double, 2> pit{0, 0};    // the tree pit dug in plan, mm, width x length; 0: none
+  bool pit_given() const { return pit[0] > 0 && pit[1] > 0; }
+};
+
+}  // namespace curdle
