@@ -11,6 +11,7 @@
 
 #include "curdle/error.h"
 #include "curdle/stop.h"
+#include "export/course_marks.h"
 #include "export/layout_png.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
@@ -297,40 +298,6 @@ void draw_match_lines(cairo_t* cr, const InstallerPlan& plan, const View& v, siz
   }
 }
 
-// Row numbers on the left, column numbers along the bottom (under the viewport), where their
-// rows show.
-void draw_course_numbers(cairo_t* cr, const InstallerDrawing& set, const InstallerSheet& sheet,
-                         const View& v) {
-  const double B = v.top + set.plan.viewport[1];
-  // A coursed set numbers courses and columns alone (no IDs carry R and C), under headings.
-  const bool coursed = set.plan.coursed;
-  const std::string row_prefix = coursed ? "" : "R", column_prefix = coursed ? "" : "C";
-  colour(cr, kRed);
-  if (coursed) {
-    text(cr, v.left - 10, v.top + set.plan.viewport[1] / 2, "course", 2, Align::centre, true);
-    text(cr, v.left - 1.5, B + 4.5, "column", 2, Align::right);
-  }
-  double last = -1e300;
-  for (const auto& [row, extent] : set.extents.rows) {
-    const double mid = (extent.first + extent.second) / 2;
-    if (mid < sheet.window.y || mid > sheet.window.top()) continue;
-    const double y = v.y(mid);
-    if (std::fabs(y - last) < 3.2) continue;
-    last = y;
-    text(cr, v.left - 1.5, y + 1.25, fmt::format("{}{}", row_prefix, row), 2.5, Align::right);
-  }
-  last = -1e300;
-  for (const auto& [column, extent] : set.extents.columns) {
-    const double mid = (extent.first + extent.second) / 2;
-    if (mid < sheet.window.x || mid > sheet.window.right()) continue;
-    const double x = v.x(mid);
-    const std::string t = fmt::format("{}{}", column_prefix, column);
-    if (std::fabs(x - last) < text_width(cr, t, 2.5) + 1.5) continue;
-    last = x;
-    text(cr, x, B + 4.5, t, 2.5, Align::centre);
-  }
-}
-
 // The key plan in the title strip: the whole grid of sheets, this one filled, and the start
 // corner's dot.
 void draw_key_plan(cairo_t* cr, const Layout& layout, const InstallerPlan& plan, size_t index,
@@ -457,7 +424,11 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   draw_match_lines(cr, plan, v, index);
   // A pattern's rows are not straight courses: its units are found by their IDs' rows.
   if (layout.kind->laid_in_courses() && layout.pattern == LayingPattern::grid)
-    draw_course_numbers(cr, set, sheet, v);
+    draw_course_numbers(cr, plan, set.extents, v);
+  if (plan.coursed && layout.pattern == LayingPattern::grid) {
+    draw_gauge_rod(cr, layout, set.extents, v, plan.viewport);
+    draw_dimension_chain(cr, layout, v, plan.viewport);
+  }
   const double strip = h - kMargin - kTitleStrip;
   const double kx = kLeftMargin + 4, kw = 70;
   draw_key_plan(cr, layout, plan, index, kx, strip + 8, kw, kTitleStrip - 12);
@@ -469,7 +440,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   const double info_x = kx + kw + 8;
   // The key takes the right part of the strip beside the title block, the notes the left.
   const double room = w - kMargin - title_width(w) - 4 - info_x;
-  const double key_w = std::min(room * 0.45, 110.0), info_w = room - key_w - 6;
+  const double key_w = std::min(room * 0.38, 110.0), info_w = room - key_w - 6;
   draw_sheet_key(cr, set.contents[index], plan.coursed, info_x + info_w + 4, strip + 6, key_w);
   const std::string unit = legend_unit(layout);
   const std::string holds =
@@ -487,7 +458,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
           ? fmt::format("each {} in its key's colour and hatch", unit)
           : fmt::format("IDs {:.1f} mm high; a label off its piece points to it", plan.text_mm)};
   if (plan.coursed && layout.pattern == LayingPattern::grid)
-    info.push_back("courses numbered on the left, columns below");
+    info.push_back("courses left, columns below; gauge rod in mm right");
   else if (plan.coursed)
     info.push_back(fmt::format("laid {}: each unit as drawn", pattern_name(layout.pattern)));
   for (std::string& line : sheet_setting_out(layout, sheet.window)) info.push_back(std::move(line));

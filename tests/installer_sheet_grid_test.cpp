@@ -59,5 +59,40 @@ TEST(InstallerSheetGrid, ANamedScaleOfTooManySheetsIsRefusedWithOneThatFits) {
   EXPECT_NO_THROW(check_named_scale(layout, plan, 5));  // about 486 sheets
 }
 
+// Sheets are balanced by what they hold: a joint running straight across near where a sheet
+// must end no longer draws the edge there, leaving the next sheet a sliver (the herringbone
+// driveway's second row held its curved edge's tip, half the A3 empty).
+TEST(InstallerSheetGrid, SheetsAreBalancedByWhatTheyHold) {
+  const double scale = 20;
+  InstallerPlan plan;
+  plan.paper = *paper_sheet("A3");
+  plan.viewport = installer_viewport(plan.paper, true, true);
+  const double sheet = plan.viewport[1] * scale;  // a sheet's height on the ground
+  const Layout layout = paving(2400, 1.2 * sheet);
+  // Courses of 150 mm units in columns staggered by half a unit, so that only one line
+  // crosses no unit: where every column stops, just below the first sheet's reach.
+  const double straight = std::floor((sheet - 16 * scale) / 150 - 1) * 150;
+  std::vector<InstallerPiece> pieces;
+  for (int c = 0; c < 8; ++c)
+    for (double y = c % 2 ? -75 : 0; y < layout.height; y += 150) {
+      const double y0 = y < straight && y + 150 > straight ? straight : std::max(0.0, y);
+      const double y1 =
+          y < straight && y + 150 > straight ? y + 150 : std::min(y + 150, layout.height);
+      for (const auto& [a, b] : {std::pair{std::max(0.0, y), std::min(y0, y1)}, std::pair{y0, y1}})
+        if (b > a + 1e-9) {
+          const Rect r{c * 300.0, a, 300, b - a};
+          pieces.push_back({"P" + std::to_string(pieces.size()), {r}, r});
+        }
+    }
+  lay_sheets(pieces, scale, layout, plan);
+  ASSERT_EQ(plan.grid_rows, 2u);
+  std::vector<size_t> held(2, 0);
+  for (const InstallerPiece& p : pieces)
+    ++held[sheet_holding(plan, p.bounds.x + p.bounds.w / 2, p.bounds.y + p.bounds.h / 2)];
+  for (const size_t h : held)
+    EXPECT_GE(static_cast<double>(h), 0.4 * static_cast<double>(pieces.size()))
+        << held[0] << " and " << held[1] << " pieces";
+}
+
 }  // namespace
 }  // namespace curdle

@@ -60,9 +60,11 @@ std::vector<Rect> start_corner_area(const Layout& layout, double scale) {
           spanning(X - sx * far, Y - sy * far, X - sx * near, Y + sy * up)};
 }
 
-// Where sheets meet along one axis, covering [from, to] with as few sheets as `length` allows:
-// each edge, within the slack the sheets leave, where the fewest pieces cross (a joint, so that
-// pieces are not split by a match line and hold their own labels), nearest the even spacing.
+// Where sheets meet along one axis, covering [from, to] with as few sheets as `length` allows,
+// balanced by what they hold: each edge aims at the share of the pieces' centres its sheets
+// should hold (a curved edge's sliver of pieces does not get a sheet to itself), and within a
+// quarter of a sheet of that, and the slack the sheets leave, goes where the fewest pieces cross
+// (a joint, so that pieces are not split by a match line and hold their own labels).
 struct SheetEdges {
   std::vector<double> at;
   std::ptrdiff_t crossing = 0;  // pieces split by the edges between sheets
@@ -72,10 +74,12 @@ SheetEdges edges_between(const std::vector<std::pair<double, double>>& spans, do
   const double e = 1e-6;
   const auto count =
       std::max<size_t>(1, static_cast<size_t>(std::ceil((to - from) / length - 1e-9)));
-  std::vector<double> lows, highs;
-  for (const auto& [lo, hi] : spans) lows.push_back(lo), highs.push_back(hi);
+  std::vector<double> lows, highs, centres;
+  for (const auto& [lo, hi] : spans)
+    lows.push_back(lo), highs.push_back(hi), centres.push_back((lo + hi) / 2);
   std::sort(lows.begin(), lows.end());
   std::sort(highs.begin(), highs.end());
+  std::sort(centres.begin(), centres.end());
   auto crossing = [&](double c) {  // pieces that start before c and end after it
     return (std::lower_bound(lows.begin(), lows.end(), c - e) - lows.begin()) -
            (std::upper_bound(highs.begin(), highs.end(), c + e) - highs.begin());
@@ -83,16 +87,20 @@ SheetEdges edges_between(const std::vector<std::pair<double, double>>& spans, do
   std::vector<double> edges{from};
   std::ptrdiff_t split = 0;
   for (size_t i = 1; i < count; ++i) {
-    const double even = from + (to - from) * static_cast<double>(i) / static_cast<double>(count);
-    const double lo = to - static_cast<double>(count - i) * length;  // the rest must still fit
+    // The rest must still fit, and this sheet no longer than a sheet.
+    const double lo = to - static_cast<double>(count - i) * length;
     const double hi = edges.back() + length;
-    double best = std::clamp(even, lo, hi);
+    double aim = from + (to - from) * static_cast<double>(i) / static_cast<double>(count);
+    if (!centres.empty()) aim = centres[centres.size() * i / count];
+    aim = std::clamp(aim, lo, hi);
+    const double near_lo = std::max(lo, aim - length / 4), near_hi = std::min(hi, aim + length / 4);
+    double best = aim;
     auto best_count = crossing(best);
-    for (auto it = std::lower_bound(highs.begin(), highs.end(), lo); it != highs.end() && *it <= hi;
-         ++it) {
+    for (auto it = std::lower_bound(highs.begin(), highs.end(), near_lo);
+         it != highs.end() && *it <= near_hi; ++it) {
       if (it != highs.begin() && *it == *(it - 1)) continue;
       const auto n = crossing(*it);
-      if (n < best_count || (n == best_count && std::fabs(*it - even) < std::fabs(best - even)))
+      if (n < best_count || (n == best_count && std::fabs(*it - aim) < std::fabs(best - aim)))
         best = *it, best_count = n;
     }
     edges.push_back(best);

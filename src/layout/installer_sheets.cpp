@@ -17,7 +17,10 @@ namespace {
 
 constexpr double kRowStripMm = 14;    // row numbers, left of the frame
 constexpr double kColumnStripMm = 8;  // column numbers, under the frame
-constexpr size_t kScalesTried = 6;    // smaller scales tried when labels do not all find room
+// A coursed sheet's setting-out marks: the gauge rod right of the frame, the chain of
+// dimensions under the column numbers (gauge.h).
+constexpr double kGaugeStripMm = 24, kDimensionStripMm = 10;
+constexpr size_t kScalesTried = 6;  // smaller scales tried when labels do not all find room
 
 bool contains(const Rect& outer, const Rect& inner) {
   const double e = 1e-6;
@@ -345,8 +348,10 @@ double label_width_mm(size_t characters, double text_mm) {
 }
 double label_height_mm(double text_mm) { return 1.7 * text_mm; }
 
-std::array<double, 2> installer_viewport(const PaperSheet& paper, bool landscape) {
+std::array<double, 2> installer_viewport(const PaperSheet& paper, bool landscape, bool coursed) {
   const auto area = drawing_area(paper, landscape);
+  if (coursed)
+    return {area[0] - kRowStripMm - kGaugeStripMm, area[1] - kColumnStripMm - kDimensionStripMm};
   return {area[0] - kRowStripMm, area[1] - kColumnStripMm};
 }
 
@@ -413,7 +418,7 @@ InstallerPlan plan_installer_sheets(const Layout& layout) {
     // the key and the courses a sheet holds beside the title block.
     plan.coursed = true;
     plan.landscape = true;
-    plan.viewport = installer_viewport(plan.paper, true);
+    plan.viewport = installer_viewport(plan.paper, true, true);
     if (keys.installer_scale > 0) check_named_scale(layout, plan, keys.installer_scale);
     lay_sheets(pieces, keys.installer_scale > 0 ? keys.installer_scale : kCoursedScale, layout,
                plan);

@@ -124,7 +124,9 @@ InstallerPlan plan_installer_sheets(const Layout& layout);
 inline size_t installer_sheet_number(size_t index) { return index + 2; }
 
 // The frame of the drawing on an installer's sheet of `paper`: its drawing area less a strip
-// for row numbers on the left and column numbers along the bottom.
-std::array<double, 2> installer_viewport(const PaperSheet& paper, bool landscape);
+// for row numbers on the left and column numbers along the bottom; a coursed set's also less
+// the gauge rod's strip on the right and the dimensions' under the column numbers.
+std::array<double, 2> installer_viewport(const PaperSheet& paper, bool landscape,
+                                         bool coursed = false);
 
 }  // namespace curdle

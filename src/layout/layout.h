@@ -119,6 +119,7 @@ struct DrawingKeys {
   double installer_scale = 0;    // 1 : installer_scale; 0 picks one
   std::string installer_paper;   // empty: `paper`
   InstallerSet installer_set = InstallerSet::automatic;
+  double storey = 0;  // floor to floor, mm: level marks on the coursed sheets; 0: none
 };
 
 // Ordering: spare share added to each quantity, elements per pack, and lots in laying order

@@ -18,10 +18,10 @@ namespace curdle::reading {
 namespace {
 
 const std::vector<std::string> kEveryKind = {
-    "kind",         "colours",  "materials",       "scale",
-    "dpi",          "paper",    "spare",           "pack",
-    "lot_size",     "lot_rows", "installer_scale", "installer_paper",
-    "installer_set"};
+    "kind",          "colours",  "materials",       "scale",
+    "dpi",           "paper",    "spare",           "pack",
+    "lot_size",      "lot_rows", "installer_scale", "installer_paper",
+    "installer_set", "storey"};
 
 // "; the values are 0 empty, 1 dark, ..." for up to 16 values: a Markov curd's planes make
 // values no state has (they never occur, yet a list gives them an entry), so they are named.
@@ -283,7 +283,7 @@ void read_cut_rules(TableReader& r, const Design& design, LayoutSpec& spec) {
 
 namespace {
 
-// layout.installer_scale, installer_paper and installer_set: the installer's sheets.
+// layout.installer_scale, installer_paper, installer_set and storey: the installer's sheets.
 void read_installer_keys(TableReader& r, DrawingKeys& drawing) {
   if (const auto paper = read_string(r, "installer_paper", "an ISO sheet name such as \"A3\"")) {
     if (!paper_sheet(*paper))
@@ -302,6 +302,7 @@ void read_installer_keys(TableReader& r, DrawingKeys& drawing) {
              "200, 250, 500 or 1000)");
     drawing.installer_scale = n;
   }
+  drawing.storey = read_mm(r, "storey", 0, 1);
   const auto set = read_string(r, "installer_set", "a kind of set");
   if (!set || *set == "automatic")
     drawing.installer_set = InstallerSet::automatic;
