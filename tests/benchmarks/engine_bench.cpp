@@ -206,8 +206,8 @@ void BM_Serve_LayoutSvg_256x256(benchmark::State& state) {
 }
 BENCHMARK(BM_Serve_LayoutSvg_256x256)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The perforated screen's layout.glb (patterns/perforated-aluminium-screen.toml, 8,354
-// openings in six sheets) as /api/export writes it: the recipe read, the curd and layout built
+// The perforated screen's layout.glb (patterns/perforated-aluminium-screen.toml, 2,255
+// openings in its fabrication sheets) as /api/export writes it: the recipe read, the curd and layout built
 // and the glTF written, the same bytes as `curdle generate --outputs layout.glb`.
 void BM_Screen_LayoutGlb(benchmark::State& state) {
   curdle::server::ApiContext context;
