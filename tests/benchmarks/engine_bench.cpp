@@ -207,8 +207,8 @@ void BM_Serve_LayoutSvg_256x256(benchmark::State& state) {
 BENCHMARK(BM_Serve_LayoutSvg_256x256)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The perforated screen's layout.glb (patterns/perforated-aluminium-screen.toml, 2,255
-// openings in its fabrication sheets) as /api/export writes it: the recipe read, the curd and layout built
-// and the glTF written, the same bytes as `curdle generate --outputs layout.glb`.
+// openings in its fabrication sheets) as /api/export writes it: the recipe read, the curd and
+// layout built and the glTF written, the same bytes as `curdle generate --outputs layout.glb`.
 void BM_Screen_LayoutGlb(benchmark::State& state) {
   curdle::server::ApiContext context;
   context.recipe_path =
