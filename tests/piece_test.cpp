@@ -45,5 +45,28 @@ TEST(Piece, BoundsOutlinesMaterialsAndExtentsOfPiecesAsLaid) {
   EXPECT_NEAR(extents.columns.at(4).second, 1500, 1e-9);
 }
 
+// Two curds' trees of one type are ordered by their species (quantities.csv, the keys and the
+// DXF layers read piece_material), and a tree's pit is centred on it.
+TEST(Piece, ATreeIsOrderedByItsSpeciesAndItsPitIsCentredOnIt) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = test::trees_and_benches();
+  spec.own<ParkKeys>().elements[1] = spec.own<ParkKeys>().elements[0];  // a second tree
+  spec.own<ParkKeys>().elements[0].order = {"tree", "Acer campestre", {}, 0, {900, 900}};
+  spec.own<ParkKeys>().elements[1].order = {"tree", "Tilia cordata", {}, 0, {0, 0}};
+  spec.own<ParkKeys>().elements[1].type = "tree";
+  const Layout layout = make_layout(d, curdle(d, 4, d.field), d.field, spec);
+  std::map<std::string, size_t> by_species;
+  for (const Element& e : layout.elements) {
+    if (!e.stands) continue;
+    ++by_species[piece_material(layout, e)];
+    const std::optional<Rect> pit = tree_pit(layout, e);
+    EXPECT_EQ(pit.has_value(), piece_material(layout, e) == "Acer campestre");
+    if (pit) EXPECT_EQ(*pit, centred_on(e.circle->cx, e.circle->cy, 900, 900));
+  }
+  EXPECT_EQ(by_species.size(), 2u);
+  EXPECT_GT(by_species["Acer campestre"], 0u);
+  EXPECT_GT(by_species["Tilia cordata"], 0u);
+}
+
 }  // namespace
 }  // namespace curdle

@@ -71,8 +71,11 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
   layout.element_type = "element";
   const std::vector<CurdMember> members = curd_members(design.curds);
   layout.planting.clear();
-  for (const ParkElement& kind : spec.own<ParkKeys>().elements)
-    if (!kind.surface) layout.planting.push_back(kind.order);
+  for (size_t m = 0; m < members.size(); ++m)
+    if (const ParkElement& kind = spec.own<ParkKeys>().elements[m]; !kind.surface) {
+      layout.planting.push_back(kind.order);
+      layout.planting.back().member = members[m].name;  // as the elements' IDs end
+    }
   size_t left_out = 0;
   for (const Element& cell : cells) {
     std::vector<size_t> surfaces, objects;

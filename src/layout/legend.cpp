@@ -67,7 +67,7 @@ std::vector<MaterialLine> material_lines(const Layout& layout) {
   for (const Element& e : layout.elements) {
     std::string label = piece_material(layout, e);
     if (const PlantingSpec& p = planting_of(layout, e); e.stands) {
-      if (!p.species.empty()) label += " (" + p.species + ")";
+      if (!p.species.empty()) label = e.type + " (" + p.species + ")";
       if (p.pit_given()) label += fmt::format(", pit {:g} x {:g} dashed", p.pit[0], p.pit[1]);
     }
     const auto [at, added] = line_of.try_emplace({e.stands, label}, lines.size());

@@ -41,7 +41,11 @@ std::vector<Outline> piece_outlines(const Element& e) {
 }
 
 const std::string& piece_material(const Layout& layout, const Element& e) {
-  return e.type.empty() ? layout.legend[e.value].label : e.type;
+  if (e.type.empty()) return layout.legend[e.value].label;
+  // A tree is ordered by its species: two curds' trees of one type but two species are two
+  // lines of quantities.csv and the keys.
+  if (const PlantingSpec& p = planting_of(layout, e); !p.species.empty()) return p.species;
+  return e.type;
 }
 
 const Rgb& piece_colour(const Layout& layout, const Element& e) {
@@ -83,7 +87,7 @@ const PlantingSpec& planting_of(const Layout& layout, const Element& e) {
   static const PlantingSpec none;
   if (!e.stands) return none;
   for (const PlantingSpec& p : layout.planting)
-    if (p.type == e.type) return p;
+    if (p.member == e.key.part) return p;
   return none;
 }
 

@@ -21,13 +21,14 @@ bool is_rectangle(const Element& e);
 // rectangles (an L-shaped panel cut at a window), or a merged opening. Empty otherwise.
 std::vector<Outline> piece_outlines(const Element& e);
 
-// What the piece is made of and its colour: a park element's own, else its value's (the
-// legend's label is the material's name, layout.materials or the curds').
+// What the piece is made of and its colour: a park element's own (a standing object's species
+// where the recipe names one, else its type), else its value's (the legend's label is the
+// material's name, layout.materials or the curds').
 const std::string& piece_material(const Layout& layout, const Element& e);
 const Rgb& piece_colour(const Layout& layout, const Element& e);
 
-// What the contractor orders for a standing object (a park's tree, bench), by its type; an empty
-// spec when the recipe gave none.
+// What the contractor orders for a standing object (a park's tree, bench), by the curd or state
+// that placed it; an empty spec when the recipe gave none.
 const PlantingSpec& planting_of(const Layout& layout, const Element& e);
 // The tree pit dug for a standing object, centred on it; none when the recipe gave no pit.
 std::optional<Rect> tree_pit(const Layout& layout, const Element& e);

@@ -1,5 +1,6 @@
 // What the landscape contractor orders for a kind of standing object (a park's tree, bench):
-// the recipe's botanical or product name and the nursery's sizes, by the element's type.
+// the recipe's botanical or product name and the nursery's sizes, one per curd (or Markov
+// state) that places objects: two curds' trees of one type may be two species.
 #pragma once
 
 #include <array>
@@ -13,6 +14,7 @@ struct PlantingSpec {
   std::array<double, 2> girth{0, 0};  // stem girth at 1 m above ground, cm, from-to; 0: not given
   double root_ball = 0;               // root ball diameter, mm; 0: not given
   std::array<double, 2> pit{0, 0};    // the tree pit dug in plan, mm, width x length; 0: none
+  std::string member;                 // the curd or state placing it: its elements' key.part
   bool pit_given() const { return pit[0] > 0 && pit[1] > 0; }
 };
 
