@@ -46,6 +46,7 @@ foreach(header ${CURDLE_PUBLIC_HEADERS})
 endforeach()
 
 set(CURDLE_PACKAGE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/curdle)
+install(FILES LICENSE THIRD-PARTY-NOTICES DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(EXPORT curdleTargets NAMESPACE curdle:: DESTINATION ${CURDLE_PACKAGE_DIR})
 configure_package_config_file(cmake/curdleConfig.cmake.in
   ${CMAKE_BINARY_DIR}/curdleConfig.cmake INSTALL_DESTINATION ${CURDLE_PACKAGE_DIR})

@@ -91,6 +91,8 @@ expect 2 "threads" generate "$fig3" --threads 0 --out "$o"
 expect 2 "seed" generate "$fig3" --seed minus-one --out "$o"
 expect 2 "not a seed" generate "$fig3" --seed -1 --out "$o"
 expect 2 "not a seed" generate "$fig3" --seed 18446744073709551616 --out "$o"
+version=$(sed -n 's/^project(curdle VERSION \([0-9.]*\).*/\1/p' "$src/CMakeLists.txt")
+expect 0 "curdle $version (GPL-3.0-or-later" --version
 expect 2 "unknown command" frobnicate "$fig3"
 expect 2 "A subcommand is required"
 expect_empty "$o" "bad command lines"

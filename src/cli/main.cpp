@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <string>
 
 #include "cli/exit_code.h"
 #include "cli/fit_command.h"
@@ -25,6 +26,10 @@ int run(int argc, char** argv) {
       "curdle: random curds (Mandelbrot curdling, overlaid after Cirovic 2014) "
       "for facade, paving, perforation and park layouts"};
   app.require_subcommand(1);
+  // The project's version (CMakeLists.txt's project(), the one place it is written), as the
+  // library and the Python module's __version__ give it.
+  app.set_version_flag("--version", std::string("curdle ") + CURDLE_VERSION +
+                                        " (GPL-3.0-or-later; see LICENSE and THIRD-PARTY-NOTICES)");
 
   CommonOptions gen_options, report_options;
   std::string out_dir;
@@ -70,6 +75,8 @@ int run(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);

@@ -14,7 +14,8 @@ prefix=$tmp/prefix
 cmake --install "$build" --prefix "$prefix" > "$tmp/install.log"
 for f in lib/cmake/curdle/curdleConfig.cmake lib/cmake/curdle/curdleConfigVersion.cmake \
          lib/cmake/curdle/curdleTargets.cmake include/curdle/app/generated_run.h \
-         include/curdle/curdle/report.h bin/curdle; do
+         include/curdle/curdle/report.h bin/curdle share/doc/curdle/LICENSE \
+         share/doc/curdle/THIRD-PARTY-NOTICES; do
   [ -e "$prefix/$f" ] || fail "the install has no $f"
 done
 ls "$prefix"/lib/libcurdle.so.* > /dev/null || fail "no versioned libcurdle.so"
@@ -47,4 +48,9 @@ assert any(l.startswith(prefix + "/lib/libcurdle.so") for l in libs), libs
 assert any(l.startswith(prefix + "/lib/curdle/") for l in libs), libs  # the image module
 print("python: curdle", curdle.__version__, "from", curdle.__file__)
 PY
+# One version: the program's, the module's and the package's are the project's.
+version=$(sed -n 's/^project(curdle VERSION \([0-9.]*\).*/\1/p' "$src/CMakeLists.txt")
+"$prefix/bin/curdle" --version | grep -q "^curdle $version " || fail "curdle --version is not $version"
+PYTHONPATH=$site "$python" -c "import curdle, sys; sys.exit(curdle.__version__ != '$version')" ||
+  fail "curdle.__version__ is not $version"
 echo "package: installed, consumed by CMake and Python"
