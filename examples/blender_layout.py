@@ -73,17 +73,14 @@ def own_colour_material(bpy, materials, element):
 
 
 def outline(element, segments=32):
-    """The element's outline in plan (mm): its polygon's outer ring, a round opening's circle,
-    or its rectangle."""
+    """The element's outline in plan (mm): a round opening's circle (through its extremes, so
+    that it spans the schedule's box), else its polygon's outer ring."""
     import math
-    if element.polygon:
-        return max((part[0] for part in element.polygon), key=len)
     if element.opening and element.opening[2]:
         cx, cy, d = element.opening
         return [(cx + d / 2 * math.cos(2 * math.pi * i / segments),
                  cy + d / 2 * math.sin(2 * math.pi * i / segments)) for i in range(segments)]
-    x, y, w, h = element.x_mm, element.y_mm, element.width_mm, element.height_mm
-    return [(x, y), (x + w, y), (x + w, y + h), (x, y + h)]
+    return max((part[0] for part in element.polygon), key=len)
 
 
 def prism(ring, bottom, top, place):

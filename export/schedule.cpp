@@ -12,6 +12,7 @@
 #include "export/csv_field.h"
 #include "export/wkt.h"
 #include "layout/piece.h"
+#include "layout/union.h"
 
 namespace curdle {
 namespace {
@@ -80,7 +81,14 @@ ScheduleRow schedule_row(const Layout& layout, size_t index) {
     r.stock_width = e.stock_w;
     r.stock_height = block ? layout.level_height : e.stock_h;
   }
+  // Every piece's shape, so that a GIS reads the schedule as features: a cut piece's outline,
+  // else its rectangle, or its circle within the layout's chord tolerance.
   r.outlines = piece_outlines(e);
+  if (r.outlines.empty() && e.circle)
+    r.outlines.push_back({{polygonise(*e.circle, layout.chord_tolerance)}, e.area()});
+  else if (r.outlines.empty())
+    r.outlines.push_back(
+        {{{{b.x, b.y}, {b.right(), b.y}, {b.right(), b.top()}, {b.x, b.top()}}}, b.area()});
   if (e.circle) {
     r.opening_x = e.circle->cx;
     r.opening_y = e.circle->cy;

@@ -5,8 +5,9 @@
 //                   in plan, height the storey) of the piece's bounding box from the layout's
 //                   bottom-left corner, x right, y up; its own area; the stock element it is
 //                   cut from; value and a 0/1 column per curd; type, colour, material; cut;
-//                   shape_wkt, a WKT POLYGON for pieces that are not one rectangle (empty
-//                   otherwise); an opening's centre and diameter;
+//                   shape_wkt, the piece as laid in WKT (a POLYGON, a MULTIPOLYGON for a piece
+//                   in parts; a circle within the chord tolerance), for every piece, so that
+//                   GIS reads every row as a feature; an opening's centre and diameter;
 //   quantities.csv  per element type, material, colour and stock size (diameter for openings):
 //                   count, whole and cut, laid area, stock area, spare, count and area to buy,
 //                   pack size and packs. Every piece takes one stock element;
@@ -46,7 +47,7 @@ struct ScheduleRow {
   uint32_t value = 0;
   std::string element_type, colour, material;  // colour as "#rrggbb"
   bool cut = false;
-  std::vector<Outline> outlines;  // when the piece is not one rectangle (shape_wkt)
+  std::vector<Outline> outlines;  // the piece as laid, for shape_wkt: every piece has one
   std::optional<double> opening_x, opening_y, opening_diameter;
 };
 ScheduleRow schedule_row(const Layout& layout, size_t index);

@@ -147,3 +147,49 @@ TEST(Install, TheMapNamesEveryElementAndWhereLayingStarts) {
 }
 
 }  // namespace curdle
+
+#include <fmt/format.h>
+
+#include "export/wkt.h"
+#include "layout/piece.h"
+#include "layout_support.h"
+
+namespace curdle {
+
+// Every row of schedule.csv carries its piece's shape, rectangles and circles too, so that a GIS
+// reads each as a feature (QGIS showed 5 of 470 courtyard pieces: only the cut ones had one).
+TEST(Schedule, EveryPieceHasItsShapeInWkt) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = test::trees_and_benches();
+  spec.size = std::array<double, 2>{20000, 14500};  // cut edge cells
+  const Layout layout = lay_floor(d, spec, 4);
+  std::ostringstream out;
+  write_schedule_csv(out, layout);
+  const auto rows = strict_csv(out.str().substr(3));
+  const auto& head = rows[0];
+  const size_t wkt = std::find(head.begin(), head.end(), "shape_wkt") - head.begin();
+  ASSERT_LT(wkt, head.size());
+  ASSERT_EQ(rows.size(), layout.elements.size() + 1);
+  size_t circles = 0, rectangles = 0;
+  for (size_t i = 0; i < layout.elements.size(); ++i) {
+    const Element& e = layout.elements[i];
+    const std::string& shape = rows[i + 1][wkt];
+    EXPECT_TRUE(shape.starts_with("POLYGON ((") || shape.starts_with("MULTIPOLYGON (((")) << e.id;
+    if (e.circle) {
+      ++circles;
+      EXPECT_GT(std::count(shape.begin(), shape.end(), ','), 16) << e.id << ": " << shape;
+    } else if (is_rectangle(e)) {
+      ++rectangles;
+      const Rect b = laid_bounds(e);
+      const std::string x0 = mm_text(b.x), y0 = mm_text(b.y), x1 = mm_text(b.right()),
+                        y1 = mm_text(b.top());
+      EXPECT_EQ(shape, fmt::format("POLYGON (({0} {1}, {2} {1}, {2} {3}, {0} {3}, {0} {1}))", x0,
+                                   y0, x1, y1))
+          << e.id;
+    }
+  }
+  EXPECT_GT(circles, 0u);
+  EXPECT_GT(rectangles, 0u);
+}
+
+}  // namespace curdle

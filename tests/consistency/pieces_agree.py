@@ -261,7 +261,7 @@ def check(curdle, recipe, out, corner):
             dia = float(row["opening_diameter_mm"])
             if not (near(w, dia) and near(h, dia)):
                 fail(f"{where}: {eid} is {w} x {h}, its diameter {dia}")
-        if row["shape_wkt"] and not row["shape_wkt"].startswith(("POLYGON ((", "MULTIPOLYGON (((")):
+        if not row["shape_wkt"].startswith(("POLYGON ((", "MULTIPOLYGON (((")):
             fail(f"{where}: {eid} has shape_wkt {row['shape_wkt'][:40]}")
     # Exactly, per order line: the schedule's rows (to the mm²) sum to the line's laid area.
     def micro(text):
@@ -273,8 +273,8 @@ def check(curdle, recipe, out, corner):
     for row in rows:
         if row["element_type"] == "opening":
             d = row["opening_diameter_mm"]
-            key = ("opening", f"D{d}" if d and not row["shape_wkt"] else
-                   "merged" if row["shape_wkt"] else "other")
+            key = ("opening", f"D{d}" if d else
+                   "merged" if row["shape_wkt"].startswith(("POLYGON", "MULTIPOLYGON")) else "other")
         else:
             key = (row["element_type"], row["material"], row["colour"])
         by_line.setdefault(key, 0)

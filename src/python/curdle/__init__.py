@@ -131,8 +131,9 @@ class Recipe:
 @dataclass(frozen=True)
 class Element:
     """One row of schedule.csv: a piece as laid, lengths in mm from the layout's bottom-left
-    corner. `polygon` holds the outline of a piece that is not one rectangle (rings of (x, y),
-    outer first, per part), `opening` the centre and diameter of a round opening."""
+    corner. `polygon` holds the piece's outline as `shape_wkt` gives it (rings of (x, y), outer
+    first, per part; a rectangle's four corners, a circle's chords), `opening` the centre and
+    diameter of a round opening."""
     element_id: str
     lot: str
     level: int | None
@@ -228,7 +229,7 @@ class Layout:
                 element_type=c["element_type"][i], colour=c["colour"][i],
                 material=c["material"][i], cut=bool(c["cut"][i]), shape_wkt=c["shape_wkt"][i],
                 opening=None if centre[0] is None else centre + (diameter,),
-                polygon=self._run._native.element_outlines(i) if c["shape_wkt"][i] else None))
+                polygon=self._run._native.element_outlines(i)))
         return out
 
 
