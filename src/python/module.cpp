@@ -21,6 +21,7 @@
 #include "export/schedule.h"
 #include "export/wkt.h"
 #include "python/interruptible.h"
+#include "recipe/toml_reader.h"
 
 namespace py = pybind11;
 
@@ -380,6 +381,11 @@ PYBIND11_MODULE(_curdle, m) {
   bind_run(m);
   m.def("version", &app::version);
   m.def("read_recipe", &app::read_recipe_file);
+  // A recipe's text parsed as TOML, as generate parses it, so that broken TOML is refused where
+  // the recipe is made; its keys are checked when it runs, after the overrides.
+  m.def("check_toml", [](const std::string& text, const std::string& path) {
+    (void)reading::parse_toml(text, path);
+  });
   m.def(
       "generate",
       [](const std::string& text, const std::string& path,

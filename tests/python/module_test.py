@@ -183,6 +183,24 @@ class Calls(unittest.TestCase):
         self.assertIn("Fraction", curdle.Recipe.generate.__doc__)
         self.assertEqual(curdle.generate.__annotations__["return"], "Run")
 
+    def test_reprs_say_what_each_is_and_broken_toml_is_refused_at_once(self):
+        recipe = curdle.Recipe.from_file(SOURCE / "patterns/paper/fig3-two-curds.toml")
+        run = recipe.generate(seed=3)
+        for thing, words in ((recipe, ["fig3-two-curds.toml", "lines"]),
+                             (run, ["seed=3", "curds=", "cells 16 x 16"]),
+                             (run.layout, [run.layout.kind, " mm, ", "tiles"])):
+            text = repr(thing)
+            self.assertNotIn("\n", text)
+            self.assertLess(len(text), 200, text)
+            for word in words:
+                self.assertIn(word, text)
+        self.assertNotIn("[lattice]", repr(recipe))  # not its whole TOML
+        with self.assertRaises(curdle.InputError) as caught:
+            curdle.Recipe.from_text('name = "x"\n[lattice\nbase = 2\n', "broken.toml")
+        self.assertIn("broken.toml:2", str(caught.exception))
+        for name in ("seed", "name", "curd_names"):
+            self.assertTrue(getattr(curdle.Run, name).__doc__, name)
+
     def test_bad_input_raises_the_command_lines_message(self):
         bad = "name = \"x\"\n[lattice]\nbase = 1\ndimension = 2\n"
         with tempfile.TemporaryDirectory() as tmp:

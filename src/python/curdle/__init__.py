@@ -23,6 +23,7 @@ import decimal
 import fractions
 import json
 import os
+import re
 import warnings
 from dataclasses import dataclass, field
 from typing import Iterable, Mapping, Sequence
@@ -100,14 +101,23 @@ class Recipe:
 
     @classmethod
     def from_file(cls, path: str | os.PathLike) -> Recipe:
-        """The recipe in the TOML file at `path` (a regular file of at most 4 MiB)."""
+        """The recipe in the TOML file at `path` (a regular file of at most 4 MiB). Raises
+        InputError for a file that cannot be read or is not TOML, as from_text."""
         path = os.fspath(path)
-        return cls(_curdle.read_recipe(path), path)
+        return cls.from_text(_curdle.read_recipe(path), path)
 
     @classmethod
     def from_text(cls, text: str, path: str = "recipe.toml") -> Recipe:
-        """A recipe from its TOML text; `path` names it in messages."""
+        """A recipe from its TOML text; `path` names it in messages. Raises InputError, naming
+        the line, for text that is not TOML; its keys are checked when it runs (overrides may
+        still change them)."""
+        _curdle.check_toml(text, path)
         return cls(text, path)
+
+    def __repr__(self):
+        name = re.search(r'^name\s*=\s*"([^"]*)"', self.text, re.M)
+        return (f"Recipe({self.path!r}, name={name.group(1) if name else None!r}, "
+                f"{self.text.count(chr(10)) + 1} lines)")
 
     def generate(self, seed: int | str | None = None,
                  window: Sequence[int] | str | None = None,
@@ -180,6 +190,11 @@ class Layout:
         except KeyError:
             raise AttributeError(name) from None
 
+    def __repr__(self):
+        f = self._facts
+        return (f"Layout({f['kind']!r}, {f['width_mm']:g} x {f['height_mm']:g} mm, "
+                f"{f['elements']} {f['element_type']}s)")
+
     def columns(self):
         """schedule.csv as columns: NumPy arrays of numbers (NaN where the CSV is empty) and
         lists of words."""
@@ -243,8 +258,16 @@ class Run:
         self._report = None
         self._layout = None
 
-    seed = property(lambda self: self._native.seed)
-    name = property(lambda self: self._native.name)
+    seed = property(lambda self: self._native.seed,
+                    doc="The seed the curds were drawn with, 0 to 2^64 - 1")
+    name = property(lambda self: self._native.name, doc="The recipe's `name`")
+
+    def __repr__(self):
+        shape = " x ".join(str(n) for n in reversed(self.values.shape))
+        layout = f", layout={self._native.layout_facts()['kind']!r}" if self._native.has_layout \
+            else ""
+        return (f"Run({self.name!r}, seed={self.seed}, curds={self.curd_names}, "
+                f"cells {shape}{layout})")
     curd_names = property(lambda self: [c[0] for c in self._native.curd_bits],
                           doc="The recipe's curds by name, one per [[curds]] table")
     curd_states = property(
