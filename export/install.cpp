@@ -74,6 +74,12 @@ void write_element(std::ostream& out, const Layout& layout, const Element& e, co
   out << fmt::format("<g id=\"{}\" class=\"element\" data-row=\"{}\" data-column=\"{}\">",
                      xml_escape(e.id), e.row, e.column);
   write_shape(out, e, f, fmt::format("rgb({},{},{})", c.r, c.g, c.b));
+  if (const std::optional<Rect> pit = tree_pit(layout, e))  // dashed, as the sheets draw it
+    out << fmt::format(
+        "<rect class=\"tree-pit\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
+        "stroke=\"#222\" stroke-dasharray=\"{} {}\"/>",
+        num(f.x(pit->x)), num(f.y(pit->top())), num(pit->w), num(pit->h), num(pit->w / 15),
+        num(pit->w / 25));
   out << "</g>\n";
 }
 
