@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "export/schedule.h"
 #include "export_support.h"
@@ -19,6 +20,18 @@
 
 namespace curdle {
 namespace {
+
+using Rows = std::vector<std::vector<std::string>>;
+
+// planting.csv, furniture.csv and surfaces.csv of `layout`, each as strict CSV rows.
+std::tuple<Rows, Rows, Rows> park_csvs(const Layout& layout) {
+  std::ostringstream planting, furniture, surfaces;
+  write_planting_csv(planting, layout);
+  write_furniture_csv(furniture, layout);
+  write_surfaces_csv(surfaces, layout);
+  return {strict_csv(planting.str().substr(3)), strict_csv(furniture.str().substr(3)),
+          strict_csv(surfaces.str().substr(3))};
+}
 
 TEST(ParkSchedules, PlantsFurnitureAndSurfacesInLandscapeTerms) {
   const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
@@ -31,13 +44,7 @@ TEST(ParkSchedules, PlantsFurnitureAndSurfacesInLandscapeTerms) {
   spec.zones = {lawn};
   spec.size = std::array<double, 2>{24000, 18000};
   const Layout layout = lay_floor(d, spec, 4);
-  std::ostringstream planting, furniture, surfaces;
-  write_planting_csv(planting, layout);
-  write_furniture_csv(furniture, layout);
-  write_surfaces_csv(surfaces, layout);
-  const auto plants = strict_csv(planting.str().substr(3));
-  const auto items = strict_csv(furniture.str().substr(3));
-  const auto areas = strict_csv(surfaces.str().substr(3));
+  const auto [plants, items, areas] = park_csvs(layout);
   size_t trees = 0, benches = 0;
   double ground = 0;
   for (const Element& e : layout.elements) {
@@ -90,13 +97,7 @@ TEST(ParkSchedules, SpeciesSizesPitsBearingsAndEdging) {
   park.elements[1].order = {"bench", "Oak slats", {0, 0}, 0, {0, 0}};
   spec.size = std::array<double, 2>{24000, 18000};
   const Layout layout = lay_floor(d, spec, 4);
-  std::ostringstream planting, furniture, surfaces;
-  write_planting_csv(planting, layout);
-  write_furniture_csv(furniture, layout);
-  write_surfaces_csv(surfaces, layout);
-  const auto plants = strict_csv(planting.str().substr(3));
-  const auto items = strict_csv(furniture.str().substr(3));
-  const auto areas = strict_csv(surfaces.str().substr(3));
+  const auto [plants, items, areas] = park_csvs(layout);
   ASSERT_GT(plants.size(), 1u);
   ASSERT_GT(items.size(), 1u);
   for (size_t r = 1; r < plants.size(); ++r)
