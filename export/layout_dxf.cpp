@@ -56,6 +56,9 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
   std::vector<DxfLayer> layers{{"OUTLINE", kInk, true}};
   if (layout.openings_given > 0) layers.push_back({"OPENINGS", Rgb{90, 90, 90}, true});
   if (!layout.zones.empty()) layers.push_back({"ZONES", Rgb{68, 81, 92}, true});
+  const bool pits = std::any_of(layout.planting.begin(), layout.planting.end(),
+                                [](const PlantingSpec& p) { return p.pit_given(); });
+  if (pits) layers.push_back({"TREE_PITS", Rgb{110, 80, 50}, true});
   std::map<std::string, bool> seen;
   for (const Element& e : layout.elements) {
     stop_point();
@@ -86,6 +89,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
   for (const Element& e : layout.elements) {
     stop_point();
     const std::string layer = layer_of(layout, e);
+    if (const std::optional<Rect> pit = tree_pit(layout, e)) dxf.rect("TREE_PITS", *pit);
     if (e.circle) {
       dxf.circle(layer, e.circle->cx, e.circle->cy, e.circle->d);
       continue;

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "kinds/park.h"
 #include "layout_support.h"
 #include "picture_support.h"
 
@@ -40,6 +41,27 @@ TEST(LayoutDxf, EveryPieceOnItsMaterialsLayerWithItsId) {
   EXPECT_EQ(occurrences(s, "LWPOLYLINE"), layout.elements.size() + 1);
   EXPECT_GE(occurrences(s, "\nBasalt\n"), basalt);
   EXPECT_NE(s.find("\nOUTLINE\n"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// A park's tree pits are rectangles on their own layer, one per tree with a pit, so that the
+// groundworks contractor sets them out from the DXF as from the sheets.
+TEST(LayoutDxf, TreePitsOnTheirOwnLayer) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = test::trees_and_benches();
+  spec.own<ParkKeys>().elements[0].order = {"tree", "Tilia cordata", {}, 600, {1200, 1200}};
+  spec.size = std::array<double, 2>{24000, 18000};
+  const Layout layout = lay_floor(d, spec, 4);
+  size_t trees = 0;
+  for (const Element& e : layout.elements) trees += e.circle.has_value();
+  ASSERT_GT(trees, 0u);
+  const auto dir = test::scratch("layout-dxf-pits");
+  write_layout_dxf(dir / "layout.dxf", layout);
+  std::ifstream in(dir / "layout.dxf");
+  std::stringstream text;
+  text << in.rdbuf();
+  // The layer's table entry, then one LWPOLYLINE per pit: "8\nTREE_PITS" per entity.
+  EXPECT_EQ(occurrences(text.str(), "\n  8\nTREE_PITS\n"), trees);
   std::filesystem::remove_all(dir);
 }
 
