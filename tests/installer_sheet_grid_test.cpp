@@ -81,7 +81,9 @@ TEST(InstallerSheetGrid, SheetsAreBalancedByWhatTheyHold) {
       for (const auto& [a, b] : {std::pair{std::max(0.0, y), std::min(y0, y1)}, std::pair{y0, y1}})
         if (b > a + 1e-9) {
           const Rect r{c * 300.0, a, 300, b - a};
-          pieces.push_back({"P" + std::to_string(pieces.size()), {r}, r});
+          std::string id = "P";  // appended: GCC 12 warns falsely on "P" + std::string
+          id += std::to_string(pieces.size());
+          pieces.push_back({id, {r}, r});
         }
     }
   lay_sheets(pieces, scale, layout, plan);

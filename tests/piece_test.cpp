@@ -61,7 +61,9 @@ TEST(Piece, ATreeIsOrderedByItsSpeciesAndItsPitIsCentredOnIt) {
     ++by_species[piece_material(layout, e)];
     const std::optional<Rect> pit = tree_pit(layout, e);
     EXPECT_EQ(pit.has_value(), piece_material(layout, e) == "Acer campestre");
-    if (pit) EXPECT_EQ(*pit, centred_on(e.circle->cx, e.circle->cy, 900, 900));
+    if (pit) {
+      EXPECT_EQ(*pit, centred_on(e.circle->cx, e.circle->cy, 900, 900));
+    }
   }
   EXPECT_EQ(by_species.size(), 2u);
   EXPECT_GT(by_species["Acer campestre"], 0u);
