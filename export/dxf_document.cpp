@@ -8,6 +8,7 @@
 #include "curdle/error.h"
 #include "curdle/text.h"
 #include "export/wkt.h"
+#include "layout/zone.h"
 
 namespace curdle {
 namespace {
@@ -199,9 +200,7 @@ void DxfDocument::contour(const std::string& layer, const Contour& c) {
   dxf_.writePolylineEnd(*dw_);
 }
 
-void DxfDocument::rect(const std::string& layer, const Rect& r) {
-  polygon(layer, Ring{{r.x, r.y}, {r.right(), r.y}, {r.right(), r.top()}, {r.x, r.top()}});
-}
+void DxfDocument::rect(const std::string& layer, const Rect& r) { polygon(layer, rect_polygon(r)); }
 
 void DxfDocument::circle(const std::string& layer, double cx, double cy, double d) {
   dxf_.writeCircle(*dw_, DL_CircleData(cx, cy, 0, d / 2), on_layer(layer));

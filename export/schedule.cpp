@@ -13,6 +13,7 @@
 #include "export/wkt.h"
 #include "layout/piece.h"
 #include "layout/union.h"
+#include "layout/zone.h"
 
 namespace curdle {
 namespace {
@@ -87,8 +88,7 @@ ScheduleRow schedule_row(const Layout& layout, size_t index) {
   if (r.outlines.empty() && e.circle)
     r.outlines.push_back({{polygonise(*e.circle, layout.chord_tolerance)}, e.area()});
   else if (r.outlines.empty())
-    r.outlines.push_back(
-        {{{{b.x, b.y}, {b.right(), b.y}, {b.right(), b.top()}, {b.x, b.top()}}}, b.area()});
+    r.outlines.push_back({{rect_polygon(b)}, b.area()});
   if (e.circle) {
     r.opening_x = e.circle->cx;
     r.opening_y = e.circle->cy;

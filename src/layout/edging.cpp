@@ -5,6 +5,8 @@
 #include <map>
 #include <tuple>
 
+#include "layout/zone.h"
+
 namespace curdle {
 namespace {
 
@@ -25,8 +27,7 @@ struct Span {
 std::vector<Ring> piece_rings(const Element& e) {
   if (e.outline) return e.outline->rings;
   std::vector<Ring> rings;
-  for (const Rect& r : e.shape)
-    rings.push_back({{r.x, r.y}, {r.right(), r.y}, {r.right(), r.top()}, {r.x, r.top()}});
+  for (const Rect& r : e.shape) rings.push_back(rect_polygon(r));
   return rings;
 }
 

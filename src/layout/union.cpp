@@ -25,9 +25,7 @@ ExactPolygon exact(const std::vector<std::array<double, 2>>& points) {
   return p;
 }
 
-ExactPolygon exact(const Rect& r) {
-  return exact(Ring{{r.x, r.y}, {r.right(), r.y}, {r.right(), r.top()}, {r.x, r.top()}});
-}
+ExactPolygon exact(const Rect& r) { return exact(rect_polygon(r)); }
 
 }  // namespace
 
