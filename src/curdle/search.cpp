@@ -279,28 +279,37 @@ std::vector<Target> default_targets(const Design& d) {
   return targets;
 }
 
+namespace {
+
+// A distance from a target's bound in the target's terms, so that shortfalls and margins add
+// and compare across targets: relative to the goal for counts, clusters, runs and lacunarity,
+// as measured for ratios, dimensions and open shares.
+double in_target_terms(const Target& t, double distance) {
+  const bool relative = t.measure != Measure::ratio && t.measure != Measure::dimension &&
+                        t.measure != Measure::sheet_open_area;
+  return relative ? distance / std::max(t.goal, 1.0) : distance;
+}
+
+}  // namespace
+
 double shortfall(const Target& t, double x) {
   if (t.measure == Measure::empty) return 100 * x / static_cast<double>(t.zone.cells());
   if (std::isnan(x)) return 1;
-  double miss = t.compare == Compare::equal     ? std::fabs(x - t.goal)
-                : t.compare == Compare::at_most ? std::max(0.0, x - t.goal)
-                : t.compare == Compare::within
-                    ? std::max(0.0, t.goal - x) + std::max(0.0, x - t.goal_high)
-                    : std::max(0.0, t.goal - x);
-  const bool relative = t.measure != Measure::ratio && t.measure != Measure::dimension &&
-                        t.measure != Measure::sheet_open_area;
-  return relative ? miss / std::max(t.goal, 1.0) : miss;
+  const double miss = t.compare == Compare::equal     ? std::fabs(x - t.goal)
+                      : t.compare == Compare::at_most ? std::max(0.0, x - t.goal)
+                      : t.compare == Compare::within
+                          ? std::max(0.0, t.goal - x) + std::max(0.0, x - t.goal_high)
+                          : std::max(0.0, t.goal - x);
+  return in_target_terms(t, miss);
 }
 
 double margin(const Target& t, double x) {
   if (t.measure == Measure::empty || t.compare == Compare::equal || std::isnan(x))
     return std::numeric_limits<double>::infinity();
-  double inside = t.compare == Compare::at_most  ? t.goal - x
-                  : t.compare == Compare::within ? std::min(x - t.goal, t.goal_high - x)
-                                                 : x - t.goal;
-  const bool relative = t.measure != Measure::ratio && t.measure != Measure::dimension &&
-                        t.measure != Measure::sheet_open_area;
-  return relative ? inside / std::max(t.goal, 1.0) : inside;
+  const double inside = t.compare == Compare::at_most  ? t.goal - x
+                        : t.compare == Compare::within ? std::min(x - t.goal, t.goal_high - x)
+                                                       : x - t.goal;
+  return in_target_terms(t, inside);
 }
 
 double worst_sheet(const Target& t, const std::vector<double>& shares) {
