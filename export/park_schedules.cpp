@@ -60,9 +60,10 @@ void write_furniture_csv(std::ostream& out, const Layout& layout) {
     if (!e.stands || e.circle) continue;
     const auto [x, y] = centre(e);
     const Rect b = laid_bounds(e);
-    out << fmt::format("{},{},{},{},{},{},{},{:g},{},{}\r\n", e.id, csv_field(e.type),
+    const int long_side = b.w >= b.h ? 0 : 90;  // objects stand square to the grid
+    out << fmt::format("{},{},{},{},{},{},{},{},{},{}\r\n", e.id, csv_field(e.type),
                        csv_field(planting_of(layout, e).species), mm_text(x), mm_text(y),
-                       mm_text(b.w), mm_text(b.h), e.turn, e.value,
+                       mm_text(b.w), mm_text(b.h), long_side, e.value,
                        csv_field(zone_of(layout, x, y)));
   }
 }
@@ -86,7 +87,7 @@ void write_surfaces_csv(std::ostream& out, const Layout& layout) {
     l.pieces += 1;
     l.cut += e.cut ? 1 : 0;
     const auto group = material_group.try_emplace(material, material_group.size()).first->second;
-    pieces.push_back({piece_rings(e), static_cast<uint32_t>(group)});
+    pieces.push_back({piece_rings(e), group});
     line_of.push_back(&l);
   }
   const std::vector<double> edging = unshared_edge_lengths(pieces);

@@ -49,7 +49,7 @@ TEST(LayoutDxf, EveryPieceOnItsMaterialsLayerWithItsId) {
 TEST(LayoutDxf, TreePitsOnTheirOwnLayer) {
   const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
   LayoutSpec spec = test::trees_and_benches();
-  spec.own<ParkKeys>().elements[0].order = {"tree", "Tilia cordata", {}, 600, {1200, 1200}};
+  spec.own<ParkKeys>().elements[0].order = {"Tilia cordata", {}, 600, {1200, 1200}};
   spec.size = std::array<double, 2>{24000, 18000};
   const Layout layout = lay_floor(d, spec, 4);
   size_t trees = 0;

@@ -27,9 +27,17 @@ namespace curdle {
 
 using test::design;
 
-// The floor or wall of `spec` laid from a field of exactly its elements, curdled with `seed`.
-// The paper's park (fig. 5): trees, benches and grey paving on 3 x 3 m cells, 300 mm clear.
 namespace test {
+// 100 mm tiles of four values, 2 and 3 laid in one product (the same name and colour).
+inline LayoutSpec two_values_one_product() {
+  LayoutSpec spec = layout_spec();
+  spec.module_w = spec.module_h = 100;
+  spec.value_colours = {Rgb{230, 230, 220}, Rgb{140, 140, 130}, Rgb{60, 60, 60}, Rgb{60, 60, 60}};
+  spec.materials = {"Buff", "Grey", "Black", "Black"};
+  return spec;
+}
+
+// The paper's park (fig. 5): trees, benches and grey paving on 3 x 3 m cells, 300 mm clear.
 inline LayoutSpec trees_and_benches(const std::string& tree = "tree") {
   LayoutSpec spec = layout_spec();
   spec.set_kind(layout_kind("park"));
@@ -42,6 +50,7 @@ inline LayoutSpec trees_and_benches(const std::string& tree = "tree") {
 }
 }  // namespace test
 
+// The floor or wall of `spec` laid from a field of exactly its elements, curdled with `seed`.
 inline Layout lay_floor(const Design& d, const LayoutSpec& spec, uint64_t seed) {
   Design sized = d;
   const auto cells = elements_to_cover(spec);

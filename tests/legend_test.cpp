@@ -17,10 +17,7 @@ using test::design;
 TEST(Legend, ValuesOfOneProductAreOneLine) {
   Design d = design(4, 2, {{"3/4", "3/4"}, {"3/4", "3/4"}});
   const CurdField f = curdle(d, 2, d.field);
-  LayoutSpec spec = test::layout_spec();
-  spec.module_w = spec.module_h = 100;
-  spec.value_colours = {Rgb{230, 230, 220}, Rgb{140, 140, 130}, Rgb{60, 60, 60}, Rgb{60, 60, 60}};
-  spec.materials = {"Buff", "Grey", "Black", "Black"};
+  LayoutSpec spec = test::two_values_one_product();
   const Layout layout = make_layout(d, f, d.field, spec);
   EXPECT_EQ(layout.legend[3].same_as, 2u);
   EXPECT_EQ(layout.legend[1].same_as, 1u);
@@ -42,7 +39,7 @@ namespace curdle {
 TEST(Legend, AParkListsWhatIsPlantedAndBuilt) {
   const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
   LayoutSpec spec = test::trees_and_benches();
-  spec.own<ParkKeys>().elements[0].order = {"tree", "Tilia cordata", {18, 20}, 600, {900, 900}};
+  spec.own<ParkKeys>().elements[0].order = {"Tilia cordata", {18, 20}, 600, {900, 900}};
   const Layout layout = make_layout(d, curdle(d, 4, d.field), d.field, spec);
   const std::vector<MaterialLine> lines = material_lines(layout);
   std::map<std::string, uint64_t> standing;

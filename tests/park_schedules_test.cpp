@@ -92,9 +92,9 @@ TEST(ParkSchedules, SpeciesSizesPitsBearingsAndEdging) {
   const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
   LayoutSpec spec = test::trees_and_benches("tree");
   ParkKeys& park = spec.own<ParkKeys>();
-  park.elements[0].order = {"tree", "Acer campestre 'Elsrijk'", {16, 18}, 500, {1200, 1400}};
+  park.elements[0].order = {"Acer campestre 'Elsrijk'", {16, 18}, 500, {1200, 1400}};
   park.elements[1].w = 450, park.elements[1].h = 1000;  // a bench turned along y
-  park.elements[1].order = {"bench", "Oak slats", {0, 0}, 0, {0, 0}};
+  park.elements[1].order = {"Oak slats", {0, 0}, 0, {0, 0}};
   spec.size = std::array<double, 2>{24000, 18000};
   const Layout layout = lay_floor(d, spec, 4);
   const auto [plants, items, areas] = park_csvs(layout);

@@ -51,8 +51,8 @@ TEST(Piece, ATreeIsOrderedByItsSpeciesAndItsPitIsCentredOnIt) {
   const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
   LayoutSpec spec = test::trees_and_benches();
   spec.own<ParkKeys>().elements[1] = spec.own<ParkKeys>().elements[0];  // a second tree
-  spec.own<ParkKeys>().elements[0].order = {"tree", "Acer campestre", {}, 0, {900, 900}};
-  spec.own<ParkKeys>().elements[1].order = {"tree", "Tilia cordata", {}, 0, {0, 0}};
+  spec.own<ParkKeys>().elements[0].order = {"Acer campestre", {}, 0, {900, 900}};
+  spec.own<ParkKeys>().elements[1].order = {"Tilia cordata", {}, 0, {0, 0}};
   spec.own<ParkKeys>().elements[1].type = "tree";
   const Layout layout = make_layout(d, curdle(d, 4, d.field), d.field, spec);
   std::map<std::string, size_t> by_species;

@@ -93,10 +93,7 @@ namespace curdle {
 TEST(Layout, ValuesOfOneProductAreOneLineWhereverTheyAreListed) {
   Design d = design(4, 2, {{"3/4", "3/4"}, {"3/4", "3/4"}});
   const CurdField f = curdle(d, 2, d.field);
-  LayoutSpec spec = test::layout_spec();
-  spec.module_w = spec.module_h = 100;
-  spec.value_colours = {Rgb{230, 230, 220}, Rgb{140, 140, 130}, Rgb{60, 60, 60}, Rgb{60, 60, 60}};
-  spec.materials = {"Buff", "Grey", "Black", "Black"};
+  const LayoutSpec spec = test::two_values_one_product();
   const Layout layout = make_layout(d, f, d.field, spec);
   const std::string svg = svg_of(layout);
   EXPECT_NE(svg.find(">2, 3 Black: "), std::string::npos);

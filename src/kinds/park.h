@@ -22,7 +22,7 @@ struct ParkElement {
   bool round = false;    // objects: a circle of diameter size[0] (a canopy), or a rectangle
   double w = 0, h = 0;   // objects: footprint, mm
   Rgb colour;
-  PlantingSpec order;  // objects: species, girth, root ball and pit (order.type is `type`)
+  PlantingSpec order;  // objects: species, girth, root ball and pit
 };
 
 struct ParkKeys : KindKeysOf<ParkKeys> {

@@ -136,13 +136,11 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
         ++left_out;
         continue;
       }
-      if (kind.round) {
+      if (kind.round)
         add(kind, {}, Circle{cx, cy, kind.w}, members[objects[i]].name, footprint);
-      } else {
+      else
         add(kind, Region{{footprint}, std::nullopt}, std::nullopt, members[objects[i]].name,
             footprint);
-        layout.elements.back().turn = kind.w >= kind.h ? 0 : 90;  // its long side, from x
-      }
     }
   }
   if (left_out > 0)

@@ -31,9 +31,8 @@ std::array<double, 2> read_girth(TableReader& r) {
 }
 
 // What the contractor orders for an object: its species (or product), girth, root ball and pit.
-PlantingSpec read_planting(TableReader& r, const std::string& type) {
+PlantingSpec read_planting(TableReader& r) {
   PlantingSpec p;
-  p.type = type;
   p.species = read_name(r, "species",
                         "a botanical or product name, e.g. \"Tilia cordata "
                         "'Greenspire'\"")
@@ -74,7 +73,7 @@ ParkElement read_park_element(TableReader& r, bool ground) {
     e.round = shape == "circle";
     const auto size = read_mm_pair(r, "size", true);
     e.w = (*size)[0], e.h = e.round ? (*size)[0] : (*size)[1];
-    e.order = read_planting(r, e.type);
+    e.order = read_planting(r);
   }
   return e;
 }

@@ -263,9 +263,7 @@ struct Element {
   int sheet = -1;                   // perforation: the fabrication sheet it is cut in
   Rgb colour;                       // park: the element's own colour
   bool stands = false;              // park: an object standing on the ground (tree, bench)
-  // A pattern's unit: its long side (a hexagon: a flat's normal) from x, °; a park's object
-  // standing in a rectangle (a bench): its long side from x, 0 or 90.
-  double turn = 0;
+  double turn = 0;  // a pattern's unit: its long side (a hexagon: a flat's normal) from x, °
   double area() const;
 };
 
@@ -345,7 +343,7 @@ struct Layout {
   // and its material (layout.sheet_material), for the order list.
   std::array<double, 2> sheet_stock{0, 0};
   std::string sheet_material;
-  std::vector<PlantingSpec> planting;  // park: per object type, what the contractor orders
+  std::vector<PlantingSpec> planting;  // park: what the contractor orders, per curd of objects
   std::vector<std::string> notes;      // what a builder should know (cut slivers, ...)
   Box view;                            // the cells laid, in field coordinates
   // Blocks: the drawing is a plan and an elevation of the voxels, side by side; each shape

@@ -9,7 +9,6 @@
 namespace curdle {
 
 struct PlantingSpec {
-  std::string type;                   // Element::type it describes
   std::string species;                // botanical or product name; empty: the type says it
   std::array<double, 2> girth{0, 0};  // stem girth at 1 m above ground, cm, from-to; 0: not given
   double root_ball = 0;               // root ball diameter, mm; 0: not given
