@@ -12,11 +12,14 @@
 #include "curdle/markov.h"
 #include "curdle/palette.h"
 #include "curdle/stop.h"
+#include "export/ifc_geometry.h"
+#include "export/ifc_standard_sets.h"
 #include "export/schedule.h"
 #include "export/step_file.h"
 #include "layout/contour.h"
 #include "layout/piece.h"
 #include "layout/union.h"
+#include "layout/zone.h"
 
 namespace curdle {
 namespace {
@@ -54,7 +57,9 @@ IfcClass class_of(const Layout& layout, const Element& e) {
 class IfcModel {
  public:
   IfcModel(std::ostream& out, const Layout& layout)
-      : w_(out, "layout.ifc", "IFC4", "ReferenceView_V1.2"), l_(layout) {
+      : w_(out, "layout.ifc", "IFC4", "ReferenceView_V1.2"),
+        g_(w_, layout.chord_tolerance),
+        l_(layout) {
     const Box& v = layout.view;
     key_ = fmt::format("{}/{}/{},{},{}+{}x{}x{}/", layout.source.recipe, layout.source.seed,
                        v.origin[0], v.origin[1], v.origin[2], v.size[0], v.size[1], v.size[2]);
@@ -75,35 +80,29 @@ class IfcModel {
 
  private:
   std::string guid(std::string_view what) const { return text(ifc_guid(key_ + std::string(what))); }
+  // A rooted entity's first attributes: its GlobalId and the model's one owner history.
+  std::string root(std::string_view what) const { return guid(what) + "," + ref(owner_); }
   int64_t add(const std::string& s) { return w_.add(s); }
-  int64_t point(double x, double y) {
-    return add(fmt::format("IFCCARTESIANPOINT(({},{}))", real(x), real(y)));
-  }
-  int64_t point(double x, double y, double z) {
-    return add(fmt::format("IFCCARTESIANPOINT(({},{},{}))", real(x), real(y), real(z)));
-  }
-  int64_t direction(double x, double y, double z) {
-    return add(fmt::format("IFCDIRECTION(({},{},{}))", real(x), real(y), real(z)));
-  }
-
   void context() {
-    origin_ = point(0, 0, 0);
-    z_ = direction(0, 0, 1);
-    world_ = add(fmt::format("IFCAXIS2PLACEMENT3D({},$,$)", ref(origin_)));
+    world_ = g_.world();
     // Upright surfaces are drawn in their own plane: layout x along X, layout y up Z, and the
     // thickness out of the wall towards -Y (the street side).
-    const int64_t out_of_wall = direction(0, -1, 0), along = direction(1, 0, 0);
-    plane_ = l_.kind->upright() ? add(fmt::format("IFCAXIS2PLACEMENT3D({},{},{})", ref(origin_),
-                                                  ref(out_of_wall), ref(along)))
-                                : world_;
+    if (l_.kind->upright()) {
+      out_of_wall_ = g_.direction(0, -1, 0);
+      along_ = g_.direction(1, 0, 0);
+    }
     const int64_t model =
         add(fmt::format("IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-05,{},$)", ref(world_)));
-    body_ = add(fmt::format(
+    g_.set_body_context(add(fmt::format(
         "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Body','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
-        ref(model)));
+        ref(model))));
     if (has_arc_contours())
       annotation_ = add(fmt::format(
           "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Annotation','Plan',*,*,*,*,{},$,.PLAN_VIEW.,$)",
+          ref(model)));
+    if (l_.kind->ground() == Ground::sheet)
+      profile_context_ = add(fmt::format(
+          "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Profile','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
           ref(model)));
     // Added one by one: arguments of one call are evaluated in no fixed order, and the bytes
     // must not depend on the compiler.
@@ -112,11 +111,25 @@ class IfcModel {
                                         add("IFCSIUNIT(*,.VOLUMEUNIT.,$,.CUBIC_METRE.)"),
                                         add("IFCSIUNIT(*,.PLANEANGLEUNIT.,$,.RADIAN.)")};
     const int64_t units = add("IFCUNITASSIGNMENT(" + step_refs(unit_ids) + ")");
+    owner_history();
     const std::string description =
         l_.source.description.empty() ? "$" : text(l_.source.description);
-    project_ = add(fmt::format("IFCPROJECT({},$,{},{},$,$,$,({}),{})", guid("project"),
+    project_ = add(fmt::format("IFCPROJECT({},{},{},$,$,$,({}),{})", root("project"),
                                text(l_.source.recipe), description, ref(model), ref(units)));
     recipe_properties();
+  }
+
+  // Who made the model and when, as Revit and Solibri expect of every rooted entity: curdle, at
+  // the STEP header's fixed time (2000-01-01), so that the same run gives the same bytes.
+  void owner_history() {
+    const int64_t person = add("IFCPERSON($,$,'curdle',$,$,$,$,$)");
+    const int64_t organisation = add("IFCORGANIZATION($,'curdle',$,$,$)");
+    const int64_t both =
+        add(fmt::format("IFCPERSONANDORGANIZATION({},{},$)", ref(person), ref(organisation)));
+    const int64_t application = add(fmt::format("IFCAPPLICATION({},{},'curdle','curdle')",
+                                                ref(organisation), text(CURDLE_VERSION)));
+    owner_ = add(fmt::format("IFCOWNERHISTORY({},{},$,.NOCHANGE.,$,$,$,946684800)", ref(both),
+                             ref(application)));
   }
 
   // How to make the model again: recipe, seed, lattice and the window of cells laid.
@@ -140,9 +153,9 @@ class IfcModel {
     }
     props.push_back(label("Curds", curds));
     const int64_t set = add(
-        fmt::format("IFCPROPERTYSET({},$,'Curdle_Recipe',$,{})", guid("recipe"), step_refs(props)));
-    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,$,({}),{})", guid("recipe-rel"),
-                    ref(project_), ref(set)));
+        fmt::format("IFCPROPERTYSET({},'Curdle_Recipe',$,{})", root("recipe"), step_refs(props)));
+    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("recipe-rel"), ref(project_),
+                    ref(set)));
   }
 
   // A property of a set: its name and its typed value ("IFCINTEGER(3)").
@@ -159,168 +172,162 @@ class IfcModel {
     return property(name, "IFCPOSITIVELENGTHMEASURE(" + real(value) + ")");
   }
 
-  // Ground works stand on a site; façades, screens and blocks in a building's storey.
+  // Façades, screens and blocks stand in a building's storey. Ground works stand in an external
+  // space on the site (IfcSpace .EXTERNAL.): IFC4 has no facility part, and a storey would
+  // invent a building where there is none; the space is what a BIM user filters them by.
   void spatial_structure() {
     const int64_t site_place = add(fmt::format("IFCLOCALPLACEMENT($,{})", ref(world_)));
-    const int64_t site = add(fmt::format("IFCSITE({},$,'Site',$,$,{},$,$,.ELEMENT.,$,$,$,$,$)",
-                                         guid("site"), ref(site_place)));
-    add(fmt::format("IFCRELAGGREGATES({},$,$,$,{},({}))", guid("project-site"), ref(project_),
+    const int64_t site = add(fmt::format("IFCSITE({},'Site',$,$,{},$,$,.ELEMENT.,$,$,$,$,$)",
+                                         root("site"), ref(site_place)));
+    add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("project-site"), ref(project_),
                     ref(site)));
-    container_ = site, container_place_ = site_place;
-    const bool ground_works = !l_.kind->upright() && l_.kind->ground() != Ground::sheet &&
-                              l_.kind->depiction() != Depiction::views;
-    if (ground_works) return;
+    if (ground_works()) {
+      const int64_t space_place =
+          add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_)));
+      const int64_t space =
+          add(fmt::format("IFCSPACE({},'External works',$,$,{},$,{},.ELEMENT.,.EXTERNAL.,0.)",
+                          root("space"), ref(space_place), text("Ground works")));
+      add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("site-space"), ref(site),
+                      ref(space)));
+      container_ = space, container_place_ = space_place;
+      return;
+    }
     const int64_t building_place =
         add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_)));
     const int64_t building =
-        add(fmt::format("IFCBUILDING({},$,'Building',$,$,{},$,$,.ELEMENT.,$,$,$)", guid("building"),
+        add(fmt::format("IFCBUILDING({},'Building',$,$,{},$,$,.ELEMENT.,$,$,$)", root("building"),
                         ref(building_place)));
-    add(fmt::format("IFCRELAGGREGATES({},$,$,$,{},({}))", guid("site-building"), ref(site),
+    add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("site-building"), ref(site),
                     ref(building)));
     const int64_t storey_place =
         add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(building_place), ref(world_)));
     const int64_t storey =
-        add(fmt::format("IFCBUILDINGSTOREY({},$,'Level 0',$,$,{},$,$,.ELEMENT.,0.)", guid("storey"),
+        add(fmt::format("IFCBUILDINGSTOREY({},'Level 0',$,$,{},$,$,.ELEMENT.,0.)", root("storey"),
                         ref(storey_place)));
-    add(fmt::format("IFCRELAGGREGATES({},$,$,$,{},({}))", guid("building-storey"), ref(building),
+    add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("building-storey"), ref(building),
                     ref(storey)));
     container_ = storey, container_place_ = storey_place;
   }
 
-  // Profiles, in the surface's plane, in millimetres from its bottom-left corner.
-  int64_t rectangle(const Rect& r) {
-    const int64_t at =
-        add(fmt::format("IFCAXIS2PLACEMENT2D({},$)", ref(point(r.x + r.w / 2, r.y + r.h / 2))));
-    return add(
-        fmt::format("IFCRECTANGLEPROFILEDEF(.AREA.,$,{},{},{})", ref(at), real(r.w), real(r.h)));
-  }
-  // A circle as a polygon within the layout's chord tolerance, as the DXF and glTF draw it,
-  // with corners at its four extremes so that its extent is the circle's in every reader
-  // (readers tessellate IfcCircleProfileDef each their own way: web-ifc's missed by 0.3 mm).
-  int64_t circle(const Circle& c) {
-    const double r = c.d / 2, pi = 3.14159265358979323846;
-    const double step = 2 * std::acos(std::max(-1.0, 1 - l_.chord_tolerance / r));
-    const int quarter = std::clamp(static_cast<int>(std::ceil(pi / 2 / step)), 2, 256);
-    Ring ring;
-    for (int k = 0; k < 4 * quarter; ++k) {
-      const double a = pi / 2 * k / quarter;
-      // The extremes exactly, not through sin and cos.
-      const int q = k % quarter == 0 ? k / quarter : -1;
-      ring.push_back(q < 0 ? std::array<double, 2>{c.cx + r * std::cos(a), c.cy + r * std::sin(a)}
-                           : std::array<double, 2>{c.cx + (q == 0   ? r
-                                                           : q == 2 ? -r
-                                                                    : 0),
-                                                   c.cy + (q == 1   ? r
-                                                           : q == 3 ? -r
-                                                                    : 0)});
-    }
-    return add(fmt::format("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})", ref(polyline(ring))));
-  }
-  int64_t polyline(const Ring& ring) {
-    std::vector<int64_t> points;
-    for (const auto& v : ring) points.push_back(point(v[0], v[1]));
-    points.push_back(points.front());
-    return add("IFCPOLYLINE(" + step_refs(points) + ")");
-  }
-  // One outer ring with the islands inside it (outline_parts splits an outline so).
-  int64_t outline_profile(const Outline& part) {
-    const int64_t outer = polyline(part.rings.front());
-    if (part.rings.size() == 1)
-      return add(fmt::format("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})", ref(outer)));
-    std::vector<int64_t> inner;
-    for (size_t i = 1; i < part.rings.size(); ++i) inner.push_back(polyline(part.rings[i]));
-    return add(fmt::format("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,{},{})", ref(outer),
-                           step_refs(inner)));
+  bool ground_works() const {
+    return !l_.kind->upright() && l_.kind->ground() != Ground::sheet &&
+           l_.kind->depiction() != Depiction::views;
   }
 
-  // A solid from `base` to `base + depth` out of the surface's plane, in `colour`.
-  int64_t solid(int64_t profile, double base, double depth, const Rgb& colour) {
-    const int64_t s = add(fmt::format("IFCEXTRUDEDAREASOLID({},{},{},{})", ref(profile),
-                                      ref(base_placement(base)), ref(z_), real(depth)));
-    add(fmt::format("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour))));
-    return s;
+  // A product's placement: at its own corner (x, y in the surface's plane), relative to its
+  // spatial container, as Revit and ArchiCAD expect; its profiles are drawn from that corner.
+  int64_t placement_at(double x, double y) {
+    g_.set_local_origin(x, y);
+    const int64_t frame =
+        l_.kind->upright()
+            ? add(fmt::format("IFCAXIS2PLACEMENT3D({},{},{})", ref(g_.point(x, 0, y)),
+                              ref(out_of_wall_), ref(along_)))
+            : add(fmt::format("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x, y, 0))));
+    return add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(frame)));
   }
-  int64_t base_placement(double base) {
-    if (base == 0) return world_;
-    auto it = bases_.find(base);
-    if (it != bases_.end()) return it->second;
-    return bases_[base] = add(fmt::format("IFCAXIS2PLACEMENT3D({},$,$)", ref(point(0, 0, base))));
-  }
-  int64_t style(const Rgb& c) {
-    const uint32_t key = uint32_t{c.r} << 16 | uint32_t{c.g} << 8 | c.b;
-    auto it = styles_.find(key);
-    if (it != styles_.end()) return it->second;
-    const int64_t colour = add(fmt::format("IFCCOLOURRGB($,{},{},{})", real(c.r / 255.0),
-                                           real(c.g / 255.0), real(c.b / 255.0)));
-    const int64_t shading = add(fmt::format("IFCSURFACESTYLESHADING({},0.)", ref(colour)));
-    return styles_[key] = add(
-               fmt::format("IFCSURFACESTYLE({},.BOTH.,({}))", text(hex_colour(c)), ref(shading)));
+  // An opening's placement: at its own corner, relative to the sheet it voids (whose frame is
+  // already the surface's plane), as IFC places openings in their host.
+  int64_t placement_in_sheet(double x, double y, size_t sheet) {
+    g_.set_local_origin(x, y);
+    const Rect& s = l_.sheets[sheet].area;
+    const int64_t frame =
+        add(fmt::format("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x - s.x, y - s.y, 0))));
+    return add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[sheet]), ref(frame)));
   }
 
-  // The element's solids as laid.
+  // The element's body as laid: one solid, whatever its shape (an L-shaped cut piece is one
+  // profile, a piece in two parts one composite profile); a tree is a trunk and a canopy.
   std::vector<int64_t> solids(const Element& e, const Rgb& colour) {
     const double t = l_.thickness;
-    std::vector<int64_t> out;
     if (e.form == ElementForm::block) {
       const double w = l_.module_w, d = l_.module_h, h = l_.level_height;
       const Rect plan{static_cast<double>(e.cell_x - l_.view.origin[0]) * w,
                       static_cast<double>(e.cell_y - l_.view.origin[1]) * d, w, d};
-      out.push_back(
-          solid(rectangle(plan), static_cast<double>(e.cell_z - l_.view.origin[2]) * h, h, colour));
-      return out;
-    }
-    if (e.form == ElementForm::opening) {  // through the sheet, a millimetre beyond each face
-      if (e.circle) out.push_back(solid(circle(*e.circle), -1, t + 2, colour));
-      if (e.outline)
-        for (const Outline& part : outline_parts(*e.outline))
-          out.push_back(solid(outline_profile(part), -1, t + 2, colour));
-      return out;
+      return {g_.solid(g_.rectangle(plan), static_cast<double>(e.cell_z - l_.view.origin[2]) * h, h,
+                       colour)};
     }
     if (e.circle) {  // a tree: a trunk of 200 mm to 2.2 m, then its canopy as a drum
-      out.push_back(
-          solid(circle(Circle{e.circle->cx, e.circle->cy, 200}), t, 2200, Rgb{92, 64, 44}));
-      out.push_back(solid(circle(*e.circle), t + 2200, e.circle->d, colour));
-      return out;
+      const int64_t trunk =
+          g_.solid(g_.circle(Circle{e.circle->cx, e.circle->cy, 200}), t, 2200, Rgb{92, 64, 44});
+      return {trunk, g_.solid(g_.circle(*e.circle), t + 2200, e.circle->d, colour)};
     }
     const double base = e.stands ? t : 0, depth = e.stands ? 450 : t;
-    if (e.outline) {
-      for (const Outline& part : outline_parts(*e.outline))
-        out.push_back(solid(outline_profile(part), base, depth, colour));
-      return out;
-    }
-    for (const Rect& r : e.shape) out.push_back(solid(rectangle(r), base, depth, colour));
-    return out;
+    const std::vector<Outline> parts = piece_outlines(e);
+    const int64_t profile = parts.empty() ? g_.rectangle(laid_bounds(e)) : g_.profile(parts);
+    return {g_.solid(profile, base, depth, colour)};
   }
 
-  // The fabrication sheets a perforated surface is cut into, each a plate its openings void.
+  // An opening's outline, as a 'Profile' curve in the sheet's plane: its hole is in the sheet's
+  // body already, so no reader has to subtract it (a screen has thousands).
+  std::vector<Ring> opening_rings(const Element& e) const {
+    if (e.circle) return {ifc_circle_ring(*e.circle, l_.chord_tolerance)};
+    std::vector<Ring> rings;
+    if (e.outline)
+      for (const Outline& part : outline_parts(*e.outline)) rings.push_back(part.rings.front());
+    return rings;
+  }
+  int64_t opening_shape(const Element& e) {
+    std::vector<int64_t> curves;
+    for (const Ring& ring : opening_rings(e)) curves.push_back(g_.polyline(ring));
+    const int64_t rep = add(fmt::format("IFCSHAPEREPRESENTATION({},'Profile','Curve2D',{})",
+                                        ref(profile_context_), step_refs(curves)));
+    return add(fmt::format("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep)));
+  }
+
+  // The fabrication sheets a perforated surface is cut into: each a plate whose body has its
+  // openings as voids in its profile (one solid a reader meshes in a moment), each opening
+  // still an element voiding it, with its data.
   void sheets() {
     const double t = l_.thickness;
     const Rgb metal{201, 205, 210};
     const int64_t material =
-        add(fmt::format("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {} mm", real(t)))));
-    for (const Layout::FabricationSheet& s : l_.sheets) {
-      std::vector<int64_t> items;
-      if (s.outline.empty()) {
-        items.push_back(solid(rectangle(s.area), 0, t, metal));
-      } else {
-        Outline whole;
-        whole.rings = s.outline;
-        for (const Outline& part : outline_parts(whole))
-          items.push_back(solid(outline_profile(part), 0, t, metal));
-      }
-      const int64_t where = placement(), body = shape(items);
+        add(fmt::format("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {:g} mm", t))));
+    std::vector<std::vector<Ring>> holes(l_.sheets.size());
+    std::vector<Outline> islands;  // merged openings' islands: metal the outline leaves standing
+    for (const Element& e : l_.elements) {
+      if (e.form != ElementForm::opening || e.sheet < 0) continue;
+      for (const Ring& ring : opening_rings(e)) holes[static_cast<size_t>(e.sheet)].push_back(ring);
+      if (e.outline)
+        for (const Outline& part : outline_parts(*e.outline))
+          for (size_t i = 1; i < part.rings.size(); ++i) islands.push_back({{part.rings[i]}, 0});
+    }
+    for (size_t k = 0; k < l_.sheets.size(); ++k) {
+      const Layout::FabricationSheet& s = l_.sheets[k];
+      const int64_t where = placement_at(s.area.x, s.area.y);
+      const int64_t body = g_.body({g_.solid(sheet_profile(s, holes[k], islands), 0, t, metal)});
       const int64_t plate =
-          add(fmt::format("IFCPLATE({},$,{},$,'perforated sheet',{},{},{},.SHEET.)",
-                          guid("sheet " + s.id), text(s.id), ref(where), ref(body), text(s.id)));
+          add(fmt::format("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)",
+                          root("sheet " + s.id), text(s.id), ref(where), ref(body), text(s.id)));
       contained_.push_back(plate);
       sheet_plates_.push_back(plate);
+      sheet_places_.push_back(where);
+      const double net = s.surface * (1 - s.open_area) / 1e6;
+      sets(plate, "sheet " + s.id, "IFCPLATE",
+           {s.id, true, true, t, s.area.w, s.area.h, s.surface / 1e6, net});
     }
-    add(fmt::format("IFCRELASSOCIATESMATERIAL({},$,$,$,{},{})", guid("sheet-material"),
+    add(fmt::format("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("sheet-material"),
                     step_refs(sheet_plates_), ref(material)));
   }
-
-  int64_t placement() {
-    return add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(plane_)));
+  // A sheet (its rectangle, or each part of its outline) less the holes inside it; the islands
+  // of merged openings inside it as parts of their own.
+  int64_t sheet_profile(const Layout::FabricationSheet& s, const std::vector<Ring>& holes,
+                        const std::vector<Outline>& islands) {
+    std::vector<Outline> parts;
+    if (s.outline.empty()) {
+      parts.push_back({{rect_polygon(s.area)}, s.area.area()});
+    } else {
+      Outline whole;
+      whole.rings = s.outline;
+      parts = outline_parts(whole);
+    }
+    for (Outline& part : parts)
+      for (const Ring& hole : holes)
+        if (contains(part.rings.front(), hole.front()[0], hole.front()[1]))
+          part.rings.push_back(hole);
+    for (const Outline& island : islands)
+      if (contains(rect_polygon(s.area), island.rings[0][0][0], island.rings[0][0][1]))
+        parts.push_back(island);
+    return g_.profile(parts);
   }
 
   bool has_arc_contours() const {
@@ -369,31 +376,28 @@ class IfcModel {
                                           ref(annotation_), ref(indexed_curve(c))));
       const int64_t shape = add(fmt::format("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep)));
       contained_.push_back(
-          add(fmt::format("IFCANNOTATION({},$,{},$,'setting out',{},{})",
-                          guid("annotation " + name), text(name), ref(placement()), ref(shape))));
+          add(fmt::format("IFCANNOTATION({},{},$,'setting out',{},{})", root("annotation " + name),
+                          text(name), ref(placement_at(0, 0)), ref(shape))));
     };
     if (!l_.outline_contour.empty()) annotate("Outline", l_.outline_contour);
     for (const ZoneCount& z : l_.zones)
       if (!z.contour.empty()) annotate("Zone " + z.name, z.contour);
   }
-  int64_t shape(const std::vector<int64_t>& items) {
-    const int64_t rep = add(fmt::format("IFCSHAPEREPRESENTATION({},'Body','SweptSolid',{})",
-                                        ref(body_), step_refs(items)));
-    return add(fmt::format("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep)));
-  }
-
   void element(const Element& e, size_t index) {
     const IfcClass c = class_of(l_, e);
-    const Rgb& colour = piece_colour(l_, e);
-    const int64_t product_shape = shape(solids(e, colour));
-    const std::string type = element_type_of(l_, e);
-    const int64_t where = placement();
-    const int64_t id =
-        add(fmt::format("{}({},$,{},$,{},{},{},{},{})", c.entity, guid(e.id), text(e.id),
-                        text(type), ref(where), ref(product_shape), text(e.id), c.predefined));
-    if (e.form == ElementForm::opening) {
+    const Rect b = laid_bounds(e);
+    const bool opening = e.form == ElementForm::opening;
+    const int64_t where = opening && e.sheet >= 0
+                              ? placement_in_sheet(b.x, b.y, static_cast<size_t>(e.sheet))
+                              : placement_at(b.x, b.y);
+    const int64_t product_shape =
+        opening ? opening_shape(e) : g_.body(solids(e, piece_colour(l_, e)));
+    const int64_t id = add(fmt::format("{}({},{},$,{},{},{},{},{})", c.entity, root(e.id),
+                                       text(e.id), text(element_type_of(l_, e)), ref(where),
+                                       ref(product_shape), text(e.id), c.predefined));
+    if (opening) {
       if (e.sheet >= 0)
-        add(fmt::format("IFCRELVOIDSELEMENT({},$,$,$,{},{})", guid("void " + e.id),
+        add(fmt::format("IFCRELVOIDSELEMENT({},$,$,{},{})", root("void " + e.id),
                         ref(sheet_plates_[static_cast<size_t>(e.sheet)]), ref(id)));
     } else {
       contained_.push_back(id);
@@ -407,6 +411,51 @@ class IfcModel {
     }
     properties(e, index, id);
     quantities(e, id);
+    const double t = e.form == ElementForm::block ? l_.level_height : l_.thickness;
+    const bool known =
+        l_.kind->upright() || l_.kind->name() == "paving" || l_.kind->name() == "park";
+    sets(id, e.id, c.entity,
+         {e.id, known, known, t, b.w, b.h, gross_area(e) / 1e6, e.area() / 1e6});
+  }
+  // The piece's area without what is cut away inside it (its outer rings).
+  static double gross_area(const Element& e) {
+    const std::vector<Outline> parts = piece_outlines(e);
+    if (parts.empty() || e.form == ElementForm::opening) return e.area();
+    double area = 0;
+    for (const Outline& part : parts) area += std::abs(signed_area(part.rings.front()));
+    return area;
+  }
+
+  // IFC4's standard property and quantity sets for an element of class `entity`.
+  void sets(int64_t id, const std::string& key, std::string_view entity, const IfcMeasures& m) {
+    for (const IfcSet& set : standard_sets(entity, m)) {
+      std::vector<int64_t> entries;
+      for (const IfcSetEntry& entry : set.entries) entries.push_back(set_entry(entry));
+      const bool quantities = set.name.rfind("Qto_", 0) == 0;
+      const int64_t definition =
+          quantities ? add(fmt::format("IFCELEMENTQUANTITY({},{},$,$,{})", root(set.name + key),
+                                       text(set.name), step_refs(entries)))
+                     : add(fmt::format("IFCPROPERTYSET({},{},$,{})", root(set.name + key),
+                                       text(set.name), step_refs(entries)));
+      add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root(set.name + "-rel " + key),
+                      ref(id), ref(definition)));
+    }
+  }
+  int64_t set_entry(const IfcSetEntry& entry) {
+    using K = IfcSetEntry::Kind;
+    switch (entry.kind) {
+      case K::property:
+        return property(entry.name, entry.value);
+      case K::length:
+        return add(
+            fmt::format("IFCQUANTITYLENGTH({},$,$,{},$)", text(entry.name), real(entry.amount)));
+      case K::area:
+        return add(
+            fmt::format("IFCQUANTITYAREA({},$,$,{},$)", text(entry.name), real(entry.amount)));
+      case K::volume:
+        break;
+    }
+    return add(fmt::format("IFCQUANTITYVOLUME({},$,$,{},$)", text(entry.name), real(entry.amount)));
   }
 
   void properties(const Element& e, size_t index, int64_t id) {
@@ -422,12 +471,13 @@ class IfcModel {
                                label("StockSize", stock_size_of(l_, e))};
     if (e.form == ElementForm::block)
       props.push_back(integer("Level", e.cell_z - l_.view.origin[2]));
-    const int64_t set = add(fmt::format("IFCPROPERTYSET({},$,'Curdle_Element',$,{})",
-                                        guid("pset " + e.id), step_refs(props)));
-    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,$,({}),{})", guid("pset-rel " + e.id),
-                    ref(id), ref(set)));
+    const int64_t set = add(fmt::format("IFCPROPERTYSET({},'Curdle_Element',$,{})",
+                                        root("pset " + e.id), step_refs(props)));
+    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("pset-rel " + e.id), ref(id),
+                    ref(set)));
   }
 
+  // curdle's own quantities: the piece's extent, thickness and area as the schedule gives them.
   void quantities(const Element& e, int64_t id) {
     const Rect b = laid_bounds(e);
     const double t = e.form == ElementForm::block ? l_.level_height : l_.thickness;
@@ -436,20 +486,20 @@ class IfcModel {
         add(fmt::format("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h))),
         add(fmt::format("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(t))),
         add(fmt::format("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6)))};
-    const int64_t set = add(fmt::format("IFCELEMENTQUANTITY({},$,'BaseQuantities',$,$,{})",
-                                        guid("qto " + e.id), step_refs(q)));
-    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,$,({}),{})", guid("qto-rel " + e.id), ref(id),
+    const int64_t set = add(fmt::format("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})",
+                                        root("qto " + e.id), step_refs(q)));
+    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("qto-rel " + e.id), ref(id),
                     ref(set)));
   }
 
   // What groups elements: containment, materials and covering types.
   void closing_relations() {
     if (!contained_.empty())
-      add(fmt::format("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,$,{},{})", guid("contained"),
+      add(fmt::format("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})", root("contained"),
                       step_refs(contained_), ref(container_)));
     for (const auto& [name, ids] : materials_) {
       const int64_t m = add(fmt::format("IFCMATERIAL({},$,$)", text(name)));
-      add(fmt::format("IFCRELASSOCIATESMATERIAL({},$,$,$,{},{})", guid("material " + name),
+      add(fmt::format("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("material " + name),
                       step_refs(ids), ref(m)));
     }
     const char* predefined = l_.kind->upright() ? ".CLADDING." : ".FLOORING.";
@@ -459,14 +509,14 @@ class IfcModel {
       if (covering.stock[0] > 0) {
         const std::vector<int64_t> tiling{length("TileLength", covering.stock[0]),
                                           length("TileWidth", covering.stock[1])};
-        sets.push_back(add(fmt::format("IFCPROPERTYSET({},$,'Pset_Tiling',$,{})",
-                                       guid("tiling " + material + size), step_refs(tiling))));
+        sets.push_back(add(fmt::format("IFCPROPERTYSET({},'Pset_Tiling',$,{})",
+                                       root("tiling " + material + size), step_refs(tiling))));
       }
       const std::string name = material + ", " + size;
       const int64_t type = add(
-          fmt::format("IFCCOVERINGTYPE({},$,{},$,$,{},$,$,{},{})", guid("type " + name), text(name),
+          fmt::format("IFCCOVERINGTYPE({},{},$,$,{},$,$,{},{})", root("type " + name), text(name),
                       sets.empty() ? "$" : step_refs(sets), text(l_.element_type), predefined));
-      add(fmt::format("IFCRELDEFINESBYTYPE({},$,$,$,{},{})", guid("type-rel " + name),
+      add(fmt::format("IFCRELDEFINESBYTYPE({},$,$,{},{})", root("type-rel " + name),
                       step_refs(covering.elements), ref(type)));
     }
   }
@@ -478,13 +528,12 @@ class IfcModel {
   };
 
   StepWriter w_;
+  IfcGeometryWriter g_;
   const Layout& l_;
   std::string key_;
-  int64_t origin_ = 0, z_ = 0, world_ = 0, plane_ = 0, body_ = 0, annotation_ = 0, project_ = 0;
-  int64_t container_ = 0, container_place_ = 0;
-  std::map<double, int64_t> bases_;
-  std::map<uint32_t, int64_t> styles_;
-  std::vector<int64_t> contained_, sheet_plates_;
+  int64_t owner_ = 0, world_ = 0, out_of_wall_ = 0, along_ = 0, annotation_ = 0;
+  int64_t profile_context_ = 0, project_ = 0, container_ = 0, container_place_ = 0;
+  std::vector<int64_t> contained_, sheet_plates_, sheet_places_;
   std::map<std::string, std::vector<int64_t>> materials_;
   std::map<std::pair<std::string, std::string>, CoveringType> types_;
 };

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <regex>
+#include <set>
 
 #include "app/outputs.h"
 #include "test_support.h"
@@ -33,6 +34,22 @@ size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
+// The model's owner history, "#n": every rooted entity refers to it.
+std::string owner_history(const std::string& ifc) {
+  const size_t at = ifc.find("=IFCOWNERHISTORY(");
+  return at == std::string::npos ? "" : ifc.substr(ifc.rfind('#', at), at - ifc.rfind('#', at));
+}
+
+// An element's owner history and name as the courtyard's paving tiles are written.
+std::string named_by(const std::string& owner, const std::string& id) {
+  std::string text = ",";
+  text += owner;
+  text += ",'";
+  text += id;
+  text += "',$,'paving tile',";
+  return text;
+}
+
 std::vector<std::string> schedule_ids(const std::string& schedule) {
   std::vector<std::string> ids;
   std::istringstream in(schedule);
@@ -48,10 +65,12 @@ TEST(Ifc, EveryScheduleRowIsAnElementNamedAndTaggedByItsId) {
   ASSERT_GT(ids.size(), 100u);
   EXPECT_EQ(count(w.ifc, "=IFCCOVERING("), ids.size());
   for (const std::string& id : ids)
-    EXPECT_NE(w.ifc.find("$,'" + id + "',$,'paving tile',"), std::string::npos) << id;
-  // Ground works: a site, no building.
+    EXPECT_NE(w.ifc.find(named_by(owner_history(w.ifc), id)), std::string::npos) << id;
+  // Ground works: in an external space on the site, no building.
   EXPECT_EQ(count(w.ifc, "=IFCSITE("), 1u);
   EXPECT_EQ(count(w.ifc, "=IFCBUILDING("), 0u);
+  EXPECT_EQ(count(w.ifc, "'External works',$,$,"), 1u);
+  EXPECT_NE(w.ifc.find(".ELEMENT.,.EXTERNAL.,0.);"), std::string::npos);
   EXPECT_NE(w.ifc.find(".FLOORING.);"), std::string::npos);
   // Types per material and stock size, with Pset_Tiling.
   EXPECT_EQ(count(w.ifc, "=IFCCOVERINGTYPE("), 2u);
@@ -77,12 +96,52 @@ TEST(Ifc, KindsBecomeTheClassesABimModellerWouldChoose) {
   EXPECT_EQ(count(blocks.ifc, "=IFCBUILDINGELEMENTPROXY("), schedule_ids(blocks.schedule).size());
 }
 
-TEST(Ifc, OpeningsVoidTheSheetTheyAreCutIn) {
+// The holes are in the sheet's body (a profile with voids: one solid, no Boolean operation for
+// a reader to run), and each opening is still an element voiding it, drawn by its outline.
+TEST(Ifc, OpeningsVoidTheSheetTheyAreCutInAndAreHolesInItsProfile) {
   const Written w = written("paper/fig4-perforation.toml");
   const size_t openings = schedule_ids(w.schedule).size();
   EXPECT_EQ(count(w.ifc, "=IFCOPENINGELEMENT("), openings);
   EXPECT_EQ(count(w.ifc, "=IFCRELVOIDSELEMENT("), openings);
   EXPECT_EQ(count(w.ifc, "=IFCPLATE("), 1u);
+  EXPECT_EQ(count(w.ifc, "=IFCEXTRUDEDAREASOLID("), 1u);  // the sheet's, and no opening's
+  EXPECT_EQ(count(w.ifc, "'Profile','Curve2D'"), openings);
+  const std::regex voids("IFCARBITRARYPROFILEDEFWITHVOIDS\\(\\.AREA\\.,\\$,#\\d+,\\(([^)]*)\\)\\)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(w.ifc, m, voids));
+  EXPECT_EQ(count(m[1].str(), "#"), openings);
+  EXPECT_NE(w.ifc.find("'Qto_PlateBaseQuantities'"), std::string::npos);
+}
+
+// What Revit, ArchiCAD and Solibri look for: one owner history on every rooted entity, IFC4's
+// standard sets beside curdle's own, each element placed at its own corner, and one solid per
+// element, an L-shaped cut piece included.
+TEST(Ifc, ElementsCarryOwnerHistoryStandardSetsTheirOwnPlacementAndOneSolid) {
+  const Written w = written("brick-facade-five-storeys.toml");
+  const size_t elements = schedule_ids(w.schedule).size();
+  EXPECT_EQ(count(w.ifc, "=IFCOWNERHISTORY("), 1u);
+  const std::regex rooted("=IFC[A-Z]+\\('[0-9A-Za-z_$]{22}',([^,]*),");
+  size_t roots = 0;
+  for (auto it = std::sregex_iterator(w.ifc.begin(), w.ifc.end(), rooted);
+       it != std::sregex_iterator(); ++it, ++roots)
+    ASSERT_EQ((*it)[1].str(), owner_history(w.ifc)) << (*it)[0].str();
+  EXPECT_GT(roots, 4 * elements);
+  EXPECT_EQ(count(w.ifc, "'Pset_CoveringCommon'"), elements);
+  EXPECT_EQ(count(w.ifc, "'Qto_CoveringBaseQuantities'"), elements);
+  EXPECT_EQ(count(w.ifc, "'Curdle_Quantities'"), elements);
+  EXPECT_EQ(count(w.ifc, "'BaseQuantities'"), 0u);
+  EXPECT_EQ(count(w.ifc, "IFCPROPERTYSINGLEVALUE('IsExternal',$,IFCBOOLEAN(.T.),$)"), elements);
+  // One solid per element, whatever its shape: the façade has pieces cut round its windows.
+  ASSERT_NE(w.schedule.find("F-R07-C18,"), std::string::npos);  // cut round a window: L-shaped
+  EXPECT_EQ(count(w.ifc, "=IFCEXTRUDEDAREASOLID("), elements);
+  // Each element at its own corner: as many element placements as elements, none at the origin.
+  const std::regex element_placement(
+      "=IFCCOVERING\\('[^']{22}',#\\d+,'[^']*',\\$,'[^']*',(#\\d+),");
+  std::set<std::string> placements;
+  for (auto it = std::sregex_iterator(w.ifc.begin(), w.ifc.end(), element_placement);
+       it != std::sregex_iterator(); ++it)
+    placements.insert((*it)[1].str());
+  EXPECT_EQ(placements.size(), elements);
 }
 
 TEST(Ifc, TheSameRunGivesTheSameBytesAndAnotherSeedOtherIds) {

@@ -1,22 +1,31 @@
 #!/usr/bin/env bash
-# Writes every pattern's layout.ifc with its schedule.csv, twice for one of them (the bytes
-# must agree), and reads them all back with web-ifc (ifc_check.mjs).
-# Usage: CURDLE=path/to/curdle ifc_run.sh SOURCE_DIR
+# layout.ifc read back by two independent readers, in steps ctest runs side by side:
+#   write    writes every pattern's layout.ifc with its schedule.csv into MODELS (one of them
+#            twice: the bytes must agree);
+#   web-ifc  reads them back with web-ifc (ifc_check.mjs);
+#   ifclite  reads them back with IFClite, checking every entity against the IFC4 schema
+#            (ifc_lite_check.mjs).
+# Usage: CURDLE=path/to/curdle ifc_run.sh SOURCE_DIR MODELS write|web-ifc|ifclite
 set -euo pipefail
 src=${1:?source dir}
-curdle=${CURDLE:?path to curdle}
+models=${2:?models dir}
+step=${3:?write, web-ifc or ifclite}
 here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-dirs=()
-while IFS= read -r recipe; do
-  grep -q '^\[layout\]' "$recipe" || continue
-  out="$work/$(basename "$recipe" .toml)"
-  "$curdle" generate "$recipe" --out "$out" --outputs layout.ifc,schedule.csv > /dev/null
-  dirs+=("$out")
-done < <(find "$src/patterns" -name '*.toml' | sort)
-"$curdle" generate "$src/patterns/courtyard-l-shaped.toml" --out "$work/again" --outputs layout.ifc > /dev/null
-cmp "$work/courtyard-l-shaped/layout.ifc" "$work/again/layout.ifc"
-cd "$here"
-node ifc_check.mjs "${dirs[@]}"
-echo "ifc: ${#dirs[@]} models read back by web-ifc"
+case $step in
+  write)
+    curdle=${CURDLE:?path to curdle}
+    rm -rf "$models" && mkdir -p "$models"
+    while IFS= read -r recipe; do
+      grep -q '^\[layout\]' "$recipe" || continue
+      "$curdle" generate "$recipe" --out "$models/$(basename "$recipe" .toml)" \
+        --outputs layout.ifc,schedule.csv > /dev/null
+    done < <(find "$src/patterns" -name '*.toml' | sort)
+    again=$(mktemp -d)
+    trap 'rm -rf "$again"' EXIT
+    "$curdle" generate "$src/patterns/courtyard-l-shaped.toml" --out "$again" --outputs layout.ifc > /dev/null
+    cmp "$models/courtyard-l-shaped/layout.ifc" "$again/layout.ifc"
+    echo "ifc: $(ls "$models" | wc -l) models written, the same bytes twice" ;;
+  web-ifc) cd "$here" && node ifc_check.mjs "$models"/*/ ;;
+  ifclite) cd "$here" && node ifc_lite_check.mjs "$models"/*/ ;;
+  *) echo "ifc_run.sh: unknown step '$step' (write, web-ifc or ifclite)" >&2; exit 2 ;;
+esac

@@ -1,0 +1,130 @@
+#include "export/ifc_geometry.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "curdle/palette.h"
+#include "layout/zone.h"
+
+namespace curdle {
+namespace {
+
+std::string real(double v) { return step_real(v); }
+std::string ref(int64_t id) { return fmt::format("#{}", id); }
+
+// Inner boundaries run clockwise, against the outer ring, as every reader expects of a void.
+Ring clockwise(Ring ring) {
+  if (signed_area(ring) > 0) std::reverse(ring.begin(), ring.end());
+  return ring;
+}
+
+}  // namespace
+
+Ring ifc_circle_ring(const Circle& c, double chord_tolerance) {
+  const double r = c.d / 2, pi = 3.14159265358979323846;
+  const double step = 2 * std::acos(std::max(-1.0, 1 - chord_tolerance / r));
+  const int quarter = std::clamp(static_cast<int>(std::ceil(pi / 2 / step)), 2, 256);
+  Ring ring;
+  for (int k = 0; k < 4 * quarter; ++k) {
+    const double a = pi / 2 * k / quarter;
+    // The extremes exactly, not through sin and cos.
+    const int q = k % quarter == 0 ? k / quarter : -1;
+    const double dx = q == 0 ? r : q == 2 ? -r : 0, dy = q == 1 ? r : q == 3 ? -r : 0;
+    ring.push_back(q < 0 ? std::array<double, 2>{c.cx + r * std::cos(a), c.cy + r * std::sin(a)}
+                         : std::array<double, 2>{c.cx + dx, c.cy + dy});
+  }
+  return ring;
+}
+
+IfcGeometryWriter::IfcGeometryWriter(StepWriter& w, double chord_tolerance)
+    : w_(w), chord_tolerance_(chord_tolerance) {
+  const int64_t origin = point(0, 0, 0);
+  z_ = direction(0, 0, 1);
+  world_ = add(fmt::format("IFCAXIS2PLACEMENT3D({},$,$)", ref(origin)));
+}
+
+int64_t IfcGeometryWriter::point(double x, double y) {
+  return add(fmt::format("IFCCARTESIANPOINT(({},{}))", real(x - local_[0]), real(y - local_[1])));
+}
+int64_t IfcGeometryWriter::point(double x, double y, double z) {
+  return add(fmt::format("IFCCARTESIANPOINT(({},{},{}))", real(x), real(y), real(z)));
+}
+int64_t IfcGeometryWriter::direction(double x, double y, double z) {
+  return add(fmt::format("IFCDIRECTION(({},{},{}))", real(x), real(y), real(z)));
+}
+
+int64_t IfcGeometryWriter::polyline(const Ring& ring) {
+  std::vector<int64_t> points;
+  for (const auto& v : ring) points.push_back(point(v[0], v[1]));
+  points.push_back(points.front());
+  return add("IFCPOLYLINE(" + step_refs(points) + ")");
+}
+
+int64_t IfcGeometryWriter::rectangle(const Rect& r) {
+  const int64_t at =
+      add(fmt::format("IFCAXIS2PLACEMENT2D({},$)", ref(point(r.x + r.w / 2, r.y + r.h / 2))));
+  return add(
+      fmt::format("IFCRECTANGLEPROFILEDEF(.AREA.,$,{},{},{})", ref(at), real(r.w), real(r.h)));
+}
+
+int64_t IfcGeometryWriter::circle(const Circle& c) {
+  return add(fmt::format("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})",
+                         ref(polyline(ifc_circle_ring(c, chord_tolerance_)))));
+}
+
+int64_t IfcGeometryWriter::part_profile(const Outline& part) {
+  return profile_with_holes(part.rings.front(),
+                            std::vector<Ring>(part.rings.begin() + 1, part.rings.end()));
+}
+
+int64_t IfcGeometryWriter::profile(const std::vector<Outline>& parts) {
+  if (parts.size() == 1) return part_profile(parts.front());
+  std::vector<int64_t> profiles;
+  for (const Outline& part : parts) profiles.push_back(part_profile(part));
+  return add(fmt::format("IFCCOMPOSITEPROFILEDEF(.AREA.,$,{},$)", step_refs(profiles)));
+}
+
+int64_t IfcGeometryWriter::profile_with_holes(const Ring& outer, const std::vector<Ring>& holes) {
+  const int64_t boundary = polyline(outer);
+  if (holes.empty())
+    return add(fmt::format("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})", ref(boundary)));
+  std::vector<int64_t> inner;
+  for (const Ring& hole : holes) inner.push_back(polyline(clockwise(hole)));
+  return add(fmt::format("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,{},{})", ref(boundary),
+                         step_refs(inner)));
+}
+
+int64_t IfcGeometryWriter::solid(int64_t profile, double base, double depth, const Rgb& colour) {
+  const int64_t s = add(fmt::format("IFCEXTRUDEDAREASOLID({},{},{},{})", ref(profile),
+                                    ref(base_placement(base)), ref(z_), real(depth)));
+  add(fmt::format("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour))));
+  return s;
+}
+
+int64_t IfcGeometryWriter::body(const std::vector<int64_t>& items) {
+  const int64_t rep = add(fmt::format("IFCSHAPEREPRESENTATION({},'Body','SweptSolid',{})",
+                                      ref(body_), step_refs(items)));
+  return add(fmt::format("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep)));
+}
+
+int64_t IfcGeometryWriter::base_placement(double base) {
+  if (base == 0) return world_;
+  auto it = bases_.find(base);
+  if (it != bases_.end()) return it->second;
+  return bases_[base] = add(fmt::format("IFCAXIS2PLACEMENT3D({},$,$)", ref(point(0, 0, base))));
+}
+
+int64_t IfcGeometryWriter::style(const Rgb& c) {
+  const uint32_t key = uint32_t{c.r} << 16 | uint32_t{c.g} << 8 | c.b;
+  auto it = styles_.find(key);
+  if (it != styles_.end()) return it->second;
+  const int64_t colour = add(fmt::format("IFCCOLOURRGB($,{},{},{})", real(c.r / 255.0),
+                                         real(c.g / 255.0), real(c.b / 255.0)));
+  const int64_t shading = add(fmt::format("IFCSURFACESTYLESHADING({},0.)", ref(colour)));
+  return styles_[key] = add(fmt::format("IFCSURFACESTYLE({},.BOTH.,({}))",
+                                        step_string(hex_colour(c)), ref(shading)));
+}
+
+}  // namespace curdle

@@ -1,0 +1,68 @@
+// The geometry of layout.ifc, written into its STEP file: profiles in a surface's plane (a
+// rectangle, a polygon with islands, several parts as one composite profile, a sheet with its
+// holes as voids), each extruded as one solid in its colour. Profile points are relative to
+// the product being written, which is placed at its own corner (ifc.cpp), as BIM tools expect
+// of every element; 3-D points and directions are absolute.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include "export/step_file.h"
+#include "layout/layout.h"
+
+namespace curdle {
+
+class IfcGeometryWriter {
+ public:
+  // `chord_tolerance`: how far a circle's polygon may stray inside it, mm (the layout's).
+  IfcGeometryWriter(StepWriter& w, double chord_tolerance);
+
+  int64_t world() const { return world_; }  // the identity placement
+  // The representation context solids are drawn in (the model's 'Body' subcontext).
+  void set_body_context(int64_t body) { body_ = body; }
+  // The corner of the product being written: its profiles are drawn from there.
+  void set_local_origin(double x, double y) { local_ = {x, y}; }
+
+  int64_t point(double x, double y, double z);
+  int64_t direction(double x, double y, double z);
+  // A closed polyline through the ring's points, relative to the local origin.
+  int64_t polyline(const Ring& ring);
+
+  // Profiles.
+  int64_t rectangle(const Rect& r);
+  int64_t circle(const Circle& c);
+  // One part: its outer ring, and its islands as voids.
+  int64_t part_profile(const Outline& part);
+  // A piece in any number of parts as one profile: a composite profile when there are several.
+  int64_t profile(const std::vector<Outline>& parts);
+  // An outer ring less `holes` (a sheet and the openings punched in it).
+  int64_t profile_with_holes(const Ring& outer, const std::vector<Ring>& holes);
+
+  // A solid from `base` to `base + depth` out of the profile's plane, in `colour`.
+  int64_t solid(int64_t profile, double base, double depth, const Rgb& colour);
+  // The product's shape: a 'Body' representation of `items`.
+  int64_t body(const std::vector<int64_t>& items);
+
+ private:
+  int64_t add(const std::string& s) { return w_.add(s); }
+  int64_t point(double x, double y);
+  int64_t base_placement(double base);
+  int64_t style(const Rgb& c);
+
+  StepWriter& w_;
+  double chord_tolerance_;
+  std::array<double, 2> local_{0, 0};
+  int64_t z_ = 0, world_ = 0, body_ = 0;
+  std::map<double, int64_t> bases_;
+  std::map<uint32_t, int64_t> styles_;
+};
+
+// A circle as a polygon within `chord_tolerance`, as the DXF and glTF draw it, with corners at
+// its four extremes so that its extent is the circle's in every reader (readers tessellate
+// IfcCircleProfileDef each their own way: web-ifc's missed by 0.3 mm). Counter-clockwise.
+Ring ifc_circle_ring(const Circle& c, double chord_tolerance);
+
+}  // namespace curdle

@@ -1,0 +1,61 @@
+// The IFC model's geometry: circles as polygons with their extremes exact, a piece in parts as
+// one composite profile, holes as clockwise voids, and profiles drawn from the product's own
+// corner.
+#include "export/ifc_geometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "layout/zone.h"
+
+namespace curdle {
+namespace {
+
+TEST(IfcGeometry, ACircleRingHasItsExtremesExactlyAndStaysWithinTheTolerance) {
+  const Circle c{100, 50, 20};
+  const Ring ring = ifc_circle_ring(c, 0.05);
+  double min_x = 1e9, max_x = -1e9, min_y = 1e9, max_y = -1e9;
+  for (const auto& [x, y] : ring) {
+    min_x = std::min(min_x, x), max_x = std::max(max_x, x);
+    min_y = std::min(min_y, y), max_y = std::max(max_y, y);
+    EXPECT_NEAR(std::hypot(x - 100, y - 50), 10, 1e-9);
+  }
+  EXPECT_EQ(min_x, 90);
+  EXPECT_EQ(max_x, 110);
+  EXPECT_EQ(min_y, 40);
+  EXPECT_EQ(max_y, 60);
+  EXPECT_GT(signed_area(ring), 0);  // counter-clockwise
+  // No chord strays more than the tolerance inside the circle.
+  const double half = 3.14159265358979323846 / static_cast<double>(ring.size());
+  EXPECT_LE(10 * (1 - std::cos(half)), 0.05);
+}
+
+TEST(IfcGeometry, APieceInPartsIsOneCompositeProfileAndHolesRunClockwise) {
+  std::ostringstream out;
+  StepWriter w(out, "t.ifc", "IFC4", "ReferenceView_V1.2");
+  IfcGeometryWriter g(w, 0.1);
+  g.set_local_origin(10, 20);
+  const Outline a{{rect_polygon({10, 20, 100, 50})}, 5000};
+  const Outline b{{rect_polygon({200, 20, 100, 50})}, 5000};
+  const int64_t profile = g.profile({a, b});
+  g.profile_with_holes(rect_polygon({10, 20, 100, 50}), {rect_polygon({30, 30, 10, 10})});
+  w.finish();
+  const std::string text = out.str();
+  std::string composite = "#";
+  composite += std::to_string(profile);
+  composite += "=IFCCOMPOSITEPROFILEDEF(.AREA.,$,(";
+  EXPECT_NE(text.find(composite), std::string::npos);
+  // Drawn from the product's corner (10, 20): the first part starts at the origin.
+  EXPECT_NE(text.find("IFCCARTESIANPOINT((0.,0.))"), std::string::npos);
+  EXPECT_NE(text.find("IFCCARTESIANPOINT((190.,0.))"), std::string::npos);
+  // The hole (20, 10)-(30, 20) from the corner, clockwise: (30, 20) before (30, 10).
+  const size_t hole = text.find("IFCCARTESIANPOINT((30.,20.))");
+  ASSERT_NE(hole, std::string::npos);
+  EXPECT_LT(hole, text.find("IFCCARTESIANPOINT((30.,10.))"));
+  EXPECT_NE(text.find("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace curdle
