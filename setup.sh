@@ -2,7 +2,8 @@
 # Installs what curdle needs to build, test and benchmark, from Debian packages only.
 # Idempotent: installs only what is missing, and runs `apt-get update` at most once.
 # Usage: setup.sh           everything: the build, the tests' readers (Blender, Chromium, ezdxf,
-#                           poppler, rsvg, Node.js and the npm packages) and clang-format
+#                           GDAL, FreeCAD, LibreCAD, poppler, rsvg, Node.js and the npm
+#                           packages) and clang-format
 #        setup.sh --main    what building and running curdle needs, for README command 1
 set -euo pipefail
 
@@ -19,6 +20,8 @@ packages=(
 if ! $main_only; then
   # The programs the tests read every output back with.
   packages+=(blender python3-ezdxf librsvg2-bin libxml2-utils poppler-utils chromium clang-format)
+  # DXF text read by four programs: ezdxf (above), GDAL, FreeCAD and LibreCAD.
+  packages+=(gdal-bin python3-gdal freecad-python3 librecad)
   # Node.js and npm for the glTF validator and the browser checks, when the machine has none.
   command -v node > /dev/null || packages+=(nodejs npm)
 fi

@@ -1,5 +1,5 @@
 // Cutting files for each fabrication sheet of a perforated surface:
-//   DXF (AutoCAD 2000, millimetres, through dxf_document.h): the sheet outline, the openings as
+//   DXF (AutoCAD 2007, millimetres, through dxf_document.h): the sheet outline, the openings as
 //     circles on one layer per diameter (HOLE_D16, HOLE_D22_6), merged openings as closed
 //     polylines (OPENING_OUTLINE), each opening's element ID as text on layer ID (does not
 //     plot), and the sheet ID on layer TEXT; millimetres from the sheet's bottom-left corner;

@@ -33,38 +33,23 @@ std::string hole_layer(double diameter) { return "HOLE_D" + mm_text(diameter); }
 
 namespace {
 
-// Windows-1252's bytes 0x80 to 0x9F, the characters they stand for (0: none); 0xA0 to 0xFF
-// stand for U+00A0 to U+00FF.
-constexpr uint16_t kCp1252High[32] = {
-    0x20AC, 0,      0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
-    0x2039, 0x0152, 0,      0x017D, 0,      0,      0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
-    0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0,      0x017E, 0x0178};
-
-// The Windows-1252 byte for a character, 0 when it has none.
-unsigned char cp1252_byte(uint32_t c) {
-  if (c >= 0xA0 && c <= 0xFF) return static_cast<unsigned char>(c);
-  for (unsigned i = 0; i < 32; ++i)
-    if (kCp1252High[i] == c) return static_cast<unsigned char>(0x80 + i);
-  return 0;
-}
-
-// `text` for a DXF of AutoCAD 2000, which has no UTF-8: its header names the code page
-// ANSI_1252, so the accented letters of the Latin scripts (Grès cérame) are their one byte
-// there, as ezdxf writes them and every reader (AutoCAD, ezdxf, GDAL, LibreCAD) decodes them;
-// any other character is DXF's \U+XXXX, which AutoCAD and LibreCAD decode. `forbidden` and
-// control characters (a line break would start a group code of its own) become `instead`.
+// `text` for a DXF of AutoCAD 2007, whose strings are UTF-8 whatever the code page: every
+// letter as it is, in any script (Grès cérame, Łódź, Ψ, 瓦, an emoji beyond the BMP), which
+// ezdxf, GDAL, FreeCAD and LibreCAD all decode so. `forbidden` and control characters (a line
+// break would start a group code of its own) become `instead`; bytes that are not UTF-8 too.
 std::string dxf_encoded(const std::string& text, std::string_view forbidden, char instead) {
   std::string out;
   for (size_t i = 0; i < text.size();) {
+    const size_t start = i;
     const uint32_t c = next_code_point(text, i);
-    if (c >= 0x80) {
-      const unsigned char b = cp1252_byte(c);
-      out += b ? std::string(1, static_cast<char>(b)) : fmt::format("\\U+{:04X}", c);
-    } else if (c < 0x20 || c == 0x7F || forbidden.find(static_cast<char>(c)) != std::string::npos) {
+    if (c == 0xFFFD && i - start == 1)  // a byte that is not UTF-8
       out += instead;
-    } else {
+    else if (c >= 0x80)
+      out.append(text, start, i - start);
+    else if (c < 0x20 || c == 0x7F || forbidden.find(static_cast<char>(c)) != std::string::npos)
+      out += instead;
+    else
       out += static_cast<char>(c);
-    }
   }
   return out;
 }
@@ -81,15 +66,20 @@ std::string dxf_text(const std::string& text) { return dxf_encoded(text, "", ' '
 
 DxfDocument::DxfDocument(const std::filesystem::path& path, const std::vector<DxfLayer>& layers,
                          const Rect& extents) {
-  // R2000 (AC1015), dxf_'s own version from its construction, through a buffered writer.
+  // Entities as dxflib writes them for AutoCAD 2000 (their form is the same in 2007), under a
+  // 2007 header ($ACADVER AC1021): readers then take every string as UTF-8.
   path_ = path;
   dw_ = std::make_unique<BufferedDxfWriter>(path);
   if (dw_->failed()) throw InputError("cannot write " + path.string());
   DL_WriterA& dw = *dw_;
-  dxf_.writeHeader(dw);
-  // Millimetres, metric, and where the drawing lies, so that it opens at true size and in view.
-  dw.dxfString(9, "$DWGCODEPAGE");  // text is Windows-1252 (dxf_encoded)
+  dw.sectionHeader();
+  dw.dxfString(9, "$ACADVER");
+  dw.dxfString(1, "AC1021");
+  dw.dxfString(9, "$HANDSEED");
+  dw.dxfHex(5, 0xFFFF);
+  dw.dxfString(9, "$DWGCODEPAGE");  // what AutoCAD 2007 writes; its strings are UTF-8 regardless
   dw.dxfString(3, "ANSI_1252");
+  // Millimetres, metric, and where the drawing lies, so that it opens at true size and in view.
   dw.dxfString(9, "$INSUNITS");
   dw.dxfInt(70, 4);
   dw.dxfString(9, "$MEASUREMENT");

@@ -1,6 +1,7 @@
-// A DXF drawing in millimetres that CAD programs open at true size: AutoCAD 2000 (AC1015)
-// through dxflib, with $INSUNITS = 4 (mm), metric measurement and the drawing's extents in the
-// header, one layer per material (true colour), closed polylines, and layers that do not plot.
+// A DXF drawing in millimetres that CAD programs open at true size: AutoCAD 2007 (AC1021, so
+// that its text is UTF-8) with dxflib's entities, $INSUNITS = 4 (mm), metric measurement and
+// the drawing's extents in the header, one layer per material (true colour), closed polylines, and
+// layers that do not plot.
 #pragma once
 
 #include <dxflib/dl_dxf.h>
@@ -21,8 +22,8 @@ struct DxfLayer {
   bool plot = true;  // false: shown on screen, never plotted or cut (IDs, notes)
 };
 
-// A valid DXF layer name: characters DXF forbids become '_', letters beyond ASCII are in
-// Windows-1252 (the header's $DWGCODEPAGE) where it has them, else \U+XXXX.
+// A valid DXF layer name: characters DXF forbids become '_'; letters in any script are kept,
+// in UTF-8 as AutoCAD 2007 writes them.
 std::string dxf_layer_name(const std::string& name);
 // Text as a DXF TEXT entity holds it: one line (control characters and line breaks become
 // spaces, so that no text can write group codes of its own), encoded as layer names are.

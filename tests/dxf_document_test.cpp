@@ -14,11 +14,15 @@ namespace {
 
 TEST(DxfDocument, MillimetresExtentsLayersAndClosedPolylines) {
   EXPECT_EQ(dxf_layer_name(hole_layer(22.6)), "HOLE_D22_6");
-  // Text is one line (a line break would start a group code of its own); Latin letters are in
-  // the header's code page, Windows-1252, and other characters escaped.
-  EXPECT_EQ(dxf_text("Grès\n  8\r\nINJECTED"), "Gr\xE8s   8  INJECTED");
-  EXPECT_EQ(dxf_layer_name("Grès"), "Gr\xE8s");
-  EXPECT_EQ(dxf_text("O'Hare 瓦 – €"), "O'Hare \\U+74E6 \x96 \x80");
+  // Text is one line (a line break would start a group code of its own); letters in any script
+  // stay as they are, UTF-8 as AutoCAD 2007 writes them, beyond the BMP too; a byte that is not
+  // UTF-8 does not pass.
+  EXPECT_EQ(dxf_text("Grès\n  8\r\nINJECTED"), "Grès   8  INJECTED");
+  EXPECT_EQ(dxf_layer_name("Grès Łódź Ψ"), "Grès Łódź Ψ");
+  EXPECT_EQ(dxf_text("O'Hare 瓦 – € 🌳"), "O'Hare 瓦 – € 🌳");
+  EXPECT_EQ(dxf_text("a\xE8"
+                     "b"),
+            "a b");
   const std::string layer = dxf_layer_name("Brick <red>/2");
   EXPECT_EQ(layer.find_first_of("<>/\\\":;?*|=`"), std::string::npos) << layer;
   const auto dir = test::scratch("dxf");

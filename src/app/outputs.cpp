@@ -241,7 +241,7 @@ std::vector<Output> make_registry() {
        .size = view_cells,
        .write = write_schedule});
   add({.name = "layout.dxf",
-       .description = "the pieces as laid for CAD: AutoCAD 2000 DXF in millimetres, a layer "
+       .description = "the pieces as laid for CAD: AutoCAD 2007 DXF in millimetres, a layer "
                       "per material, IDs on a layer that does not plot",
        .needs_layout = true,
        .skip_above = 2'000'000,

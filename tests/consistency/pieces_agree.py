@@ -6,7 +6,7 @@ each element of schedule.csv against the other files within 0.01 mm: the DXF's p
 material layer (bounding box, or circle) and its ID on layer ID at the piece's centre; the glTF
 node named by its ID (the extent of its boxes, or an opening's centre); its ID in layout.svg;
 the installer's map's drawing of the element; a perforation's sheet DXF. Also that the DXF is in
-millimetres (AutoCAD 2000, $INSUNITS 4) and audits clean, and that the schedule's areas add up
+millimetres (AutoCAD 2007, $INSUNITS 4) and audits clean, and that the schedule's areas add up
 to the quantities' laid areas.
 
 Usage: pieces_agree.py CURDLE RECIPE WORKDIR [CORNER,CORNER,...]
@@ -55,8 +55,8 @@ def dxf_pieces(path, dx=0.0, dy=0.0):
     auditor = doc.audit()
     if auditor.errors or auditor.fixes:
         fail(f"{path}: ezdxf audit found {len(auditor.errors)} errors, {len(auditor.fixes)} fixes")
-    if doc.dxfversion < "AC1015":
-        fail(f"{path}: DXF {doc.dxfversion}, not AutoCAD 2000 or later")
+    if doc.dxfversion < "AC1021":
+        fail(f"{path}: DXF {doc.dxfversion}, not AutoCAD 2007 or later (UTF-8 text)")
     if doc.header.get("$INSUNITS") != 4:
         fail(f"{path}: $INSUNITS is {doc.header.get('$INSUNITS')}, not 4 (millimetres)")
     # The header's extents are the drawing's: what CAD zooms to fits what is drawn (geometry;
