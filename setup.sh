@@ -22,6 +22,8 @@ if ! $main_only; then
   packages+=(blender python3-ezdxf librsvg2-bin libxml2-utils poppler-utils chromium clang-format)
   # DXF text read by four programs: ezdxf (above), GDAL, FreeCAD and LibreCAD.
   packages+=(gdal-bin python3-gdal freecad-python3 librecad)
+  # layout.gpkg: the GeoPackage module is built against GDAL.
+  packages+=(libgdal-dev)
   # Node.js and npm for the glTF validator and the browser checks, when the machine has none.
   command -v node > /dev/null || packages+=(nodejs npm)
 fi

@@ -83,6 +83,33 @@ TEST(Recipe, InstallerSheetKeys) {
   EXPECT_NE(e.find("\"labelled\""), std::string::npos) << e;
 }
 
+// Where layout.gpkg puts the layout: an EPSG code, the datum's easting and northing, the x
+// axis's turn; each checked, and refused for an elevation.
+TEST(Recipe, Georef) {
+  const std::string floor =
+      with_layout("kind = \"paving\"\ntile = [600, 300]\nfloor = [12000, 8000]\n");
+  const Recipe r =
+      parse_recipe(floor +
+                       "[layout.georef]\nepsg = 25832\neasting = 500000.5\nnorthing = 5700000\n"
+                       "rotation = 12.5\n",
+                   "r.toml");
+  ASSERT_TRUE(r.layout->georef);
+  EXPECT_EQ(r.layout->georef->epsg, 25832);
+  EXPECT_EQ(r.layout->georef->easting, 500000.5);
+  EXPECT_EQ(r.layout->georef->rotation, 12.5);
+  EXPECT_FALSE(parse_recipe(floor, "r.toml").layout->georef);
+  for (const char* bad :
+       {"epsg = 12", "easting = nan\nepsg = 25832", "epsg = 25832\nrotation = inf",
+        "epsg = 25832\nzone = 32", "northing = 1"}) {
+    const std::string e = error_of(floor + "[layout.georef]\n" + bad + "\n");
+    EXPECT_NE(e.find("layout.georef"), std::string::npos) << bad << ": " << e;
+  }
+  const std::string e =
+      error_of(with_layout("kind = \"facade\"\npanel = [215, 65]\nwall = [4000, 2000]\n") +
+               "[layout.georef]\nepsg = 25832\n");
+  EXPECT_NE(e.find("elevation"), std::string::npos) << e;
+}
+
 TEST(Recipe, Zones) {
   const std::string floor =
       with_layout("kind = \"paving\"\ntile = [600, 300]\nfloor = [12000, 8000]\n");

@@ -50,6 +50,9 @@ struct Notes : RunObserver {
                uint64_t) override {
     notes.push_back(output + " skipped: " + std::to_string(count) + " " + unit);
   }
+  void not_installed(const std::string& output, const std::string& why) override {
+    notes.push_back(output + " not installed: " + why);
+  }
 };
 
 }  // namespace curdle::app

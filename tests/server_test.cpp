@@ -162,7 +162,7 @@ TEST_F(ServerTest, RecipeDescribesTheDesignAndTheFloor) {
   EXPECT_EQ(j["downloads"],
             json({"report.json", "cells.csv", "preview.png", "layout.svg", "layout.png",
                   "layout.pdf", "layout.glb", "layout.ifc", "schedule.csv", "layout.dxf",
-                  "quantities.csv", "lots.csv", "install.svg", "recipe.toml"}));
+                  "layout.gpkg", "quantities.csv", "lots.csv", "install.svg", "recipe.toml"}));
   EXPECT_EQ(j["seed"], "8");  // the recipe's, as a string
 }
 

@@ -23,6 +23,9 @@ class RunObserver {
   // how to ask for it anyway in its own words.
   virtual void skipped(const std::string& output, uint64_t count, const std::string& unit,
                        uint64_t limit) = 0;
+  // A default output left out because this installation lacks what writes it; `why` says what
+  // to install.
+  virtual void not_installed(const std::string& output, const std::string& why) = 0;
 };
 
 }  // namespace curdle::app

@@ -10,6 +10,7 @@
 #include "export/cutting.h"
 #include "export/drawing_set.h"
 #include "export/gltf.h"
+#include "export/gpkg.h"
 #include "export/ifc.h"
 #include "export/install.h"
 #include "export/layout_dxf.h"
@@ -106,6 +107,11 @@ void write_quantities(const OutputContext& c, OutputSink& sink) {
 void write_layout_dxf_output(const OutputContext& c, OutputSink& sink) {
   sink.write_via_file("layout.dxf",
                       [&](const fs::path& path) { write_layout_dxf(path, *c.layout); });
+}
+
+void write_layout_gpkg_output(const OutputContext& c, OutputSink& sink) {
+  sink.write_via_file("layout.gpkg",
+                      [&](const fs::path& path) { write_layout_gpkg(path, *c.layout); });
 }
 
 void write_lots(const OutputContext& c, OutputSink& sink) {
@@ -248,6 +254,15 @@ std::vector<Output> make_registry() {
        .size_unit = "elements",
        .size = view_cells,
        .write = write_layout_dxf_output});
+  add({.name = "layout.gpkg",
+       .description = "the pieces as a GeoPackage for QGIS: a feature per piece with its "
+                      "schedule attributes, a layer per kind, in layout.georef's CRS",
+       .needs_layout = true,
+       .skip_above = 2'000'000,
+       .size_unit = "elements",
+       .size = view_cells,
+       .installed = gpkg_installed,
+       .write = write_layout_gpkg_output});
   add({.name = "quantities.csv",
        .description =
            "per element type, material and size: whole and cut, laid area, stock to buy, packs",
@@ -327,12 +342,18 @@ std::vector<const Output*> select_outputs(const Run& run, const std::vector<std:
         throw InputError(parameter("outputs"),
                          "unknown output '" + name + "'; allowed: " + known_outputs());
       check_output_applies(*o, run);
+      if (std::string why; o->installed && !o->installed(&why))
+        throw InputError(parameter("outputs"), o->name + " cannot be written here: " + why);
       if (std::find(chosen.begin(), chosen.end(), o) == chosen.end()) chosen.push_back(o);
     }
     return chosen;
   }
   for (const Output& o : output_registry()) {
     if (!o.by_default || !output_applies(o, run)) continue;
+    if (std::string why; o.installed && !o.installed(&why)) {
+      if (observer) observer->not_installed(o.name, why);
+      continue;
+    }
     if (o.skip_above && o.size(run) > o.skip_above) {
       if (observer) observer->skipped(o.name, o.size(run), o.size_unit, o.skip_above);
       continue;

@@ -45,6 +45,9 @@ struct Output {
   uint64_t skip_above = 0;
   const char* size_unit = "";  // what size() counts: "cells", "elements"
   uint64_t (*size)(const Run& run) = nullptr;
+  // Whether this installation can write it (an optional module); null: always. A default
+  // output that cannot is left out with a note, a named one is an error saying why.
+  bool (*installed)(std::string* why) = nullptr;
   // Bytes needed beyond the curds and the layout while writing it.
   uint64_t (*memory)(const Run& run) = nullptr;
   void (*write)(const OutputContext& context, OutputSink& sink) = nullptr;
@@ -58,7 +61,8 @@ const Output* find_output(const std::string& name);
 
 // The outputs a run writes: those named (a name without its extension is taken too, e.g.
 // "schedule"), or every default one. Named outputs that need a layout the recipe lacks are an
-// InputError (parameter "outputs"); defaults too large are skipped with a note.
+// InputError (parameter "outputs"), as are named outputs this installation cannot write;
+// defaults too large, or not installed, are skipped with a note.
 std::vector<const Output*> select_outputs(const Run& run, const std::vector<std::string>& named,
                                           RunObserver* observer);
 

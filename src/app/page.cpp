@@ -77,9 +77,10 @@ ordered_json surface_json(const LayoutSpec& spec) {
 
 std::vector<std::string> page_downloads(bool with_layout, std::string_view kind) {
   std::vector<std::string> names;
+  std::string why;
   for (const Output& o : output_registry())
     if (o.download && (with_layout || !o.needs_layout) &&
-        (!o.for_kind || kind.empty() || kind == o.for_kind))
+        (!o.for_kind || kind.empty() || kind == o.for_kind) && (!o.installed || o.installed(&why)))
       names.push_back(o.name);
   names.push_back("recipe.toml");
   return names;

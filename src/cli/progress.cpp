@@ -26,6 +26,10 @@ void Progress::update(double fraction) {
   std::fflush(stderr);
 }
 
+void TerminalObserver::not_installed(const std::string& output, const std::string& why) {
+  std::fprintf(stderr, "note: %s left out: %s\n", output.c_str(), why.c_str());
+}
+
 }  // namespace curdle::cli
 
 namespace curdle::cli {

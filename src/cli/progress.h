@@ -33,6 +33,7 @@ class TerminalObserver : public app::RunObserver {
   std::unique_ptr<app::ProgressTask> begin(const std::string& what) override;
   void skipped(const std::string& output, uint64_t count, const std::string& unit,
                uint64_t limit) override;
+  void not_installed(const std::string& output, const std::string& why) override;
 };
 
 }  // namespace curdle::cli

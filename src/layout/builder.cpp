@@ -417,6 +417,7 @@ Layout make_layout(const Design& design, const CurdField& field, const Box& view
   layout.thickness = spec.kind->thickness(spec);
   layout.centred = spec.centred;
   layout.drawing = spec.drawing;
+  layout.georef = spec.georef;
   layout.ordering = spec.ordering;
   layout.source.recipe = design.name;
   layout.source.description = design.description;

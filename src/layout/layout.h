@@ -108,6 +108,16 @@ constexpr bool from_top(Corner c) { return c == Corner::top_left || c == Corner:
 // colour and hatch with its courses and columns numbered; automatic picks by the unit's size.
 enum class InstallerSet { automatic, labelled, coursed };
 
+// Where the layout lies in a project's projected coordinate reference system (layout.georef),
+// for layout.gpkg: the datum (the layout's bottom-left corner, x = y = 0) at `easting`,
+// `northing` metres of EPSG `epsg`, and its x axis turned `rotation` degrees anticlockwise from
+// grid east.
+struct Georef {
+  int epsg = 0;
+  double easting = 0, northing = 0;
+  double rotation = 0;
+};
+
 // The recipe's drawing keys: layout.png's scale, sheet and resolution, and what it overlays;
 // the installer's sheets' scale, sheet and set.
 struct DrawingKeys {
@@ -224,6 +234,7 @@ struct LayoutSpec {
   std::vector<std::string> materials;  // per value, the product's name; empty: the curds' names
   DrawingKeys drawing;
   OrderingKeys ordering;
+  std::optional<Georef> georef;  // layout.georef
 };
 
 // Where a layout came from, for title blocks and the files' metadata.
@@ -296,8 +307,9 @@ struct Layout {
   double bond = 0;                              // each course's move along x, a share of the pitch
   LayingPattern pattern = LayingPattern::grid;  // units laid in a paver's pattern: outlines
   bool centred = false;                         // the grid centred on the surface
-  DrawingKeys drawing;    // the drawing's scale, sheet, resolution and overlays
-  OrderingKeys ordering;  // spare, packs and lots of the schedules
+  DrawingKeys drawing;           // the drawing's scale, sheet, resolution and overlays
+  OrderingKeys ordering;         // spare, packs and lots of the schedules
+  std::optional<Georef> georef;  // where layout.gpkg puts it on the map; none: local metres
   std::vector<Element> elements;
   // Every hole in the surface: a façade's openings, then the excluded zones' rectangles.
   std::vector<Rect> openings;

@@ -212,6 +212,9 @@ struct Skipped : app::RunObserver {
     notes.push_back(output + " left out: " + std::to_string(count) + " " + unit + ", above " +
                     std::to_string(limit) + "; name it in outputs to write it");
   }
+  void not_installed(const std::string& output, const std::string& why) override {
+    notes.push_back(output + " left out: " + why);
+  }
 };
 
 // The run a native call was given: None (a Run made by hand, or an unbound method called

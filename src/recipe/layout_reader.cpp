@@ -21,7 +21,7 @@ const std::vector<std::string> kEveryKind = {
     "kind",          "colours",  "materials",       "scale",
     "dpi",           "paper",    "spare",           "pack",
     "lot_size",      "lot_rows", "installer_scale", "installer_paper",
-    "installer_set", "storey"};
+    "installer_set", "storey",   "georef"};
 
 // "; the values are 0 empty, 1 dark, ..." for up to 16 values: a Markov curd's planes make
 // values no state has (they never occur, yet a list gives them an entry), so they are named.
@@ -341,6 +341,43 @@ void read_drawing_scale(TableReader& r, LayoutSpec& spec) {
                std::string(spec.kind->name()) + " layout's sheets are \"labelled\"");
 }
 
+namespace {
+
+// layout.georef: where layout.gpkg puts the layout in the project's projected CRS. Whether GDAL
+// knows the EPSG code is the GeoPackage writer's to say; here, that it can be one.
+void read_georef(TableReader& r, LayoutSpec& spec) {
+  if (!r.get("georef")) return;
+  const toml::table* t = read_table(r, "georef");
+  if (!t)
+    r.fail("georef", "must be a table: [layout.georef] with epsg, easting, northing, rotation");
+  TableReader g(*t, r.key_path("georef"), r.source(), {"epsg", "easting", "northing", "rotation"});
+  if (spec.kind->upright())
+    r.fail("georef", std::string("places a plan on the map; a ") + std::string(spec.kind->name()) +
+                         " layout is an elevation, drawn in its wall's own metres");
+  Georef geo;
+  geo.epsg = static_cast<int>(read_int(g, "epsg", 0, 1024, 32767, true));
+  auto coordinate = [&](const char* key, double lo, double hi, const char* what) {
+    const toml::node* n = g.get(key);
+    if (!n) return 0.0;
+    const auto v = finite_number(n);
+    if (!v || *v < lo || *v > hi) g.fail(key, what);
+    return *v;
+  };
+  geo.easting = coordinate("easting", -1e8, 1e8,
+                           "must be the datum's easting in the CRS's metres, a finite number "
+                           "within 100,000 km");
+  geo.northing = coordinate("northing", -1e8, 1e8,
+                            "must be the datum's northing in the CRS's metres, a finite number "
+                            "within 100,000 km");
+  geo.rotation = coordinate("rotation", -360, 360,
+                            "must be the layout's x axis in degrees anticlockwise from grid east, "
+                            "from -360 to 360");
+  g.report_unused("is not a key of layout.georef (epsg, easting, northing, rotation)");
+  spec.georef = geo;
+}
+
+}  // namespace
+
 std::vector<std::string> layout_keys(const LayoutKind& kind) {
   std::vector<std::string> keys = kEveryKind;
   const std::vector<std::string> own = kind.keys();
@@ -367,6 +404,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   spec.set_kind(*kind);
   r.get("kind");  // read above
   read_ordering(r, spec);
+  read_georef(r, spec);
   read_materials(r, design, spec);
   const int dimension = kind->dimension();
   if (design.lattice.dimension != dimension)

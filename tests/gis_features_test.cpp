@@ -1,0 +1,62 @@
+// The layout as GIS features: a feature per schedule row with its attributes, a layer per kind
+// of element, shapes in metres, and layout.georef placing them in the project's CRS.
+#include "export/gis_features.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "app/run.h"
+#include "layout/builder.h"
+#include "test_support.h"
+
+namespace curdle {
+namespace {
+
+Layout pattern_layout(const std::string& name) {
+  const std::string path = std::string(CURDLE_SOURCE_DIR) + "/patterns/" + name;
+  const app::Run run = test::run_recipe(path, app::read_recipe_file(path), {});
+  const CurdField field = app::run_engine(run, 0);
+  return make_layout(run.recipe.design, field, run.view, *run.recipe.layout);
+}
+
+TEST(GisFeatures, AFeaturePerPieceInALayerPerKindWithTheScheduleAttributes) {
+  const Layout layout = pattern_layout("paper/fig5a-park.toml");
+  const GisDataset data = gis_features(layout);
+  EXPECT_EQ(data.epsg, 0);
+  size_t features = 0;
+  std::vector<std::string> names;
+  for (const GisLayer& l : data.layers) {
+    names.push_back(l.name);
+    features += l.features.size();
+    for (const GisFeature& f : l.features) {
+      ASSERT_EQ(f.values.size(), data.fields.size());
+      ASSERT_FALSE(f.polygons.empty());
+    }
+  }
+  EXPECT_EQ(features, layout.elements.size());
+  EXPECT_EQ(names, (std::vector<std::string>{"white_paving", "tree", "bench"}));
+  EXPECT_EQ(data.fields.front().name, "element_id");
+  // The tree's attributes as schedule.csv has them: its ID first, its species as material.
+  const GisFeature& tree = data.layers[1].features.front();
+  EXPECT_TRUE(tree.values.front().ends_with("-tree")) << tree.values.front();
+}
+
+TEST(GisFeatures, GeorefPlacesTheDatumAndTurnsTheAxes) {
+  Layout layout = pattern_layout("courtyard-l-shaped.toml");
+  EXPECT_EQ(map_point(layout, 1500, 2000), (std::array<double, 2>{1.5, 2.0}));
+  layout.georef = Georef{25832, 500000, 5700000, 90};
+  const auto p = map_point(layout, 1000, 0);  // one metre along x: north, turned 90°
+  EXPECT_NEAR(p[0], 500000, 1e-9);
+  EXPECT_NEAR(p[1], 5700001, 1e-9);
+  const GisDataset data = gis_features(layout);
+  EXPECT_EQ(data.epsg, 25832);
+  const Ring& ring = data.layers[0].features[0].polygons[0][0];
+  for (const auto& [e, n] : ring) {
+    EXPECT_GT(e, 499000);
+    EXPECT_GT(n, 5699990);
+  }
+}
+
+}  // namespace
+}  // namespace curdle

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""Every pattern's layout.gpkg read back by GDAL (python3-gdal, the library under QGIS and
+ogrinfo) beside the schedule.csv written with it: a layer per kind of element, one feature per
+schedule row with the same ID, material and area_m2, and its geometry the row's shape_wkt in
+metres (shape_wkt is written to the micrometre: extents within 1 µm, areas within a millionth). And one park placed with layout.georef: the layers in
+its EPSG code, every piece where the datum, the rotation and its schedule put it.
+
+Usage: gpkg_read_back.py CURDLE SOURCE_DIR   (Debian's python3 with GDAL)"""
+import csv
+import math
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+from osgeo import ogr, osr
+
+ogr.UseExceptions()
+curdle, source = sys.argv[1], Path(sys.argv[2])
+failures = []
+
+
+def fail(message):
+    failures.append(message)
+    if len(failures) <= 20:
+        print("FAIL:", message)
+
+
+def generate(recipe, out, *sets):
+    args = [curdle, "generate", str(recipe), "--out", str(out), "--outputs", "layout.gpkg,schedule.csv"]
+    for s in sets:
+        args += ["--set", s]
+    subprocess.run(args, check=True, capture_output=True)
+    with open(out / "schedule.csv", encoding="utf-8-sig", newline="") as f:
+        return {row["element_id"]: row for row in csv.DictReader(f)}
+
+
+def features(path):
+    data = ogr.Open(str(path))
+    for i in range(data.GetLayerCount()):
+        layer = data.GetLayer(i)
+        for feature in layer:
+            yield layer, feature
+
+
+def near(a, b, tolerance=1e-9):
+    return abs(a - b) <= tolerance * max(1.0, abs(a), abs(b))
+
+
+def check_pattern(recipe, work):
+    rows = generate(recipe, work)
+    seen, tables = set(), set()
+    for layer, feature in features(work / "layout.gpkg"):
+        tables.add(layer.GetName())
+        key = feature.GetField("element_id")
+        row = rows.get(key)
+        if row is None:
+            fail(f"{recipe.name}: {key} is in no schedule row")
+            continue
+        seen.add(key)
+        if feature.GetField("material") != row["material"]:
+            fail(f"{recipe.name} {key}: material {feature.GetField('material')!r}, schedule {row['material']!r}")
+        if not near(feature.GetField("area_m2"), float(row["area_m2"])):
+            fail(f"{recipe.name} {key}: area_m2 {feature.GetField('area_m2')}, schedule {row['area_m2']}")
+        shape = ogr.CreateGeometryFromWkt(row["shape_wkt"])
+        geometry = feature.GetGeometryRef()
+        if not near(geometry.GetArea(), shape.GetArea() / 1e6, 1e-6):
+            fail(f"{recipe.name} {key}: {geometry.GetArea()} m², shape_wkt {shape.GetArea() / 1e6}")
+        a, b = geometry.GetEnvelope(), shape.GetEnvelope()
+        if any(abs(x - y / 1000) > 1e-6 for x, y in zip(a, b)):
+            fail(f"{recipe.name} {key}: extent {a}, shape_wkt's {b} mm")
+    if seen != set(rows):
+        fail(f"{recipe.name}: {len(rows) - len(seen)} schedule rows have no feature")
+    kinds = {row["element_type"] for row in rows.values()}
+    if len(tables) != len(kinds):
+        fail(f"{recipe.name}: layers {sorted(tables)} for kinds {sorted(kinds)}")
+    return len(seen)
+
+
+def check_georef(work):
+    """fig. 5a's park at 500,000 E, 5,700,000 N of ETRS89 / UTM 32N, turned 30°."""
+    rows = generate(source / "patterns/paper/fig5a-park.toml", work,
+                    "layout.georef={epsg = 25832, easting = 500000, northing = 5700000, rotation = 30}")
+    turn = math.radians(30)
+    count = 0
+    for layer, feature in features(work / "layout.gpkg"):
+        srs = layer.GetSpatialRef()
+        if srs is None or srs.GetAuthorityCode(None) != "25832":
+            fail(f"georef: layer {layer.GetName()} not in EPSG:25832")
+            return
+        row = rows[feature.GetField("element_id")]
+        # A piece's centroid, turned and moved as the georef says, is the feature's.
+        shape = ogr.CreateGeometryFromWkt(row["shape_wkt"])
+        cx, cy = shape.Centroid().GetX() / 1000, shape.Centroid().GetY() / 1000
+        ce = 500000 + cx * math.cos(turn) - cy * math.sin(turn)
+        cn = 5700000 + cx * math.sin(turn) + cy * math.cos(turn)
+        c = feature.GetGeometryRef().Centroid()
+        if abs(c.GetX() - ce) > 1e-5 or abs(c.GetY() - cn) > 1e-5:
+            fail(f"georef {row['element_id']}: centroid ({c.GetX()}, {c.GetY()}), expected ({ce}, {cn})")
+        count += 1
+    if count != len(rows):
+        fail(f"georef: {count} features for {len(rows)} rows")
+
+
+total = 0
+patterns = sorted(p for p in (source / "patterns").rglob("*.toml") if "[layout]" in p.read_text(encoding="utf-8"))
+with tempfile.TemporaryDirectory() as tmp:
+    for i, recipe in enumerate(patterns):
+        total += check_pattern(recipe, Path(tmp) / str(i))
+    check_georef(Path(tmp) / "georef")
+if failures:
+    print(f"{len(failures)} failures")
+    sys.exit(1)
+print(f"gpkg: {len(patterns)} patterns' {total} pieces read back by GDAL as the schedules give them; "
+      "the georeferenced park in EPSG:25832 where its datum and rotation put it")
