@@ -24,6 +24,8 @@ if ! $main_only; then
   packages+=(gdal-bin python3-gdal freecad-python3 librecad)
   # layout.gpkg: the GeoPackage module is built against GDAL.
   packages+=(libgdal-dev)
+  # The Python module as pip builds it, and mypy's stubtest for its types.
+  packages+=(python3-pip python3-venv python3-mypy)
   # Node.js and npm for the glTF validator and the browser checks, when the machine has none.
   command -v node > /dev/null || packages+=(nodejs npm)
 fi

@@ -81,15 +81,17 @@ if(CURDLE_PYTHON)
     INSTALL_RPATH "$ORIGIN/${module_to_library}")
   # The package's Python beside the module, copied again whenever it changes.
   # py.typed: the package's annotations are its types (PEP 561).
-  add_custom_command(OUTPUT ${CURDLE_PYTHON_DIR}/curdle/__init__.py ${CURDLE_PYTHON_DIR}/curdle/py.typed
-    COMMAND ${CMAKE_COMMAND} -E copy_if_different ${PROJECT_SOURCE_DIR}/src/python/curdle/__init__.py
-            ${PROJECT_SOURCE_DIR}/src/python/curdle/py.typed ${CURDLE_PYTHON_DIR}/curdle/
-    DEPENDS ${PROJECT_SOURCE_DIR}/src/python/curdle/__init__.py
-            ${PROJECT_SOURCE_DIR}/src/python/curdle/py.typed)
-  add_custom_target(curdle_python_files DEPENDS ${CURDLE_PYTHON_DIR}/curdle/__init__.py
-                                              ${CURDLE_PYTHON_DIR}/curdle/py.typed)
+  # _curdle.pyi: the native module's types, for type checkers and stubtest.
+  set(python_files __init__.py py.typed _curdle.pyi)
+  list(TRANSFORM python_files PREPEND ${PROJECT_SOURCE_DIR}/src/python/curdle/ OUTPUT_VARIABLE python_sources)
+  list(TRANSFORM python_files PREPEND ${CURDLE_PYTHON_DIR}/curdle/ OUTPUT_VARIABLE python_copies)
+  add_custom_command(OUTPUT ${python_copies}
+    COMMAND ${CMAKE_COMMAND} -E copy_if_different ${python_sources} ${CURDLE_PYTHON_DIR}/curdle/
+    DEPENDS ${python_sources})
+  add_custom_target(curdle_python_files DEPENDS ${python_copies})
   add_dependencies(curdle_python curdle_python_files)
   install(TARGETS curdle_python LIBRARY DESTINATION ${CURDLE_SITE_PACKAGES}/curdle)
   install(FILES src/python/curdle/__init__.py src/python/curdle/py.typed
+                src/python/curdle/_curdle.pyi
           DESTINATION ${CURDLE_SITE_PACKAGES}/curdle)
 endif()

@@ -309,6 +309,13 @@ void register_errors(py::module_& m) {
   static py::exception<InputError> input(m, "InputError", PyExc_ValueError);
   static py::exception<ResourceLimitError> limit(m, "ResourceLimitError", input.ptr());
   static py::exception<WorkStopped> stopped(m, "WorkStopped", PyExc_RuntimeError);
+  input.attr("__doc__") =
+      "Bad input: a recipe key, a value, a file or a call's argument. The message names what "
+      "is wrong and what is allowed; `file`, `line`, `column`, `key` and `parameter` say where.";
+  limit.attr("__doc__") =
+      "A run that would need more memory, cells or time than allowed (max_memory); the message "
+      "says how much and how to ask for less.";
+  stopped.attr("__doc__") = "A run stopped before it finished (Ctrl-C, or its caller gave up).";
   py::register_exception_translator([](std::exception_ptr p) {
     auto raise = [](const py::object& type, const InputError& e) {
       py::object error = type(render_error(e, python_name));
@@ -359,17 +366,22 @@ void bind_run(py::module_& m) {
       .def("values", values_array)
       .def("layout_facts", layout_facts)
       .def("schedule_columns", schedule_columns)
-      .def("element_outlines",
-           [](const app::GeneratedRun& g, size_t i) {
-             const Layout& l = layout_of(g);
-             if (i >= l.elements.size()) throw py::index_error("no element " + std::to_string(i));
-             return outline_rings(schedule_row(l, i).outlines);
-           })
-      .def("output_bytes", [](const Generated& g, const std::string& name) {
-        const app::GeneratedRun& run = generated(g);
-        return py::bytes(
-            run_interruptible([&](InterruptWatch&) { return app::output_bytes(run, name); }));
-      });
+      .def(
+          "element_outlines",
+          [](const app::GeneratedRun& g, size_t i) {
+            const Layout& l = layout_of(g);
+            if (i >= l.elements.size()) throw py::index_error("no element " + std::to_string(i));
+            return outline_rings(schedule_row(l, i).outlines);
+          },
+          py::arg("index"))
+      .def(
+          "output_bytes",
+          [](const Generated& g, const std::string& name) {
+            const app::GeneratedRun& run = generated(g);
+            return py::bytes(
+                run_interruptible([&](InterruptWatch&) { return app::output_bytes(run, name); }));
+          },
+          py::arg("name"));
 }
 
 }  // namespace
@@ -383,12 +395,15 @@ PYBIND11_MODULE(_curdle, m) {
   register_errors(m);
   bind_run(m);
   m.def("version", &app::version);
-  m.def("read_recipe", &app::read_recipe_file);
+  m.def("read_recipe", &app::read_recipe_file, py::arg("path"));
   // A recipe's text parsed as TOML, as generate parses it, so that broken TOML is refused where
   // the recipe is made; its keys are checked when it runs, after the overrides.
-  m.def("check_toml", [](const std::string& text, const std::string& path) {
-    (void)reading::parse_toml(text, path);
-  });
+  m.def(
+      "check_toml",
+      [](const std::string& text, const std::string& path) {
+        (void)reading::parse_toml(text, path);
+      },
+      py::arg("text"), py::arg("path"));
   m.def(
       "generate",
       [](const std::string& text, const std::string& path,
@@ -398,16 +413,23 @@ PYBIND11_MODULE(_curdle, m) {
       },
       py::arg("text"), py::arg("path"), py::arg("overrides"), py::arg("seed"), py::arg("window"),
       py::arg("layout"), py::arg("threads"), py::arg("max_memory"));
-  m.def("write", write_outputs);
-  m.def("search", [](const std::string& text, const std::string& path,
-                     const std::vector<std::string>& overrides, const std::string& seeds,
-                     const std::string& segment, const std::vector<std::string>& targets, int top,
-                     int64_t stride, int threads, uint64_t max_memory) {
-    return search_json({text, path, overrides, "", "", max_memory}, seeds, segment, targets, top,
-                       stride, threads);
-  });
-  m.def("measure", measure_json);
-  m.def("fit", fit_source);
+  m.def("write", write_outputs, py::arg("run"), py::arg("outputs"), py::arg("out"));
+  m.def(
+      "search",
+      [](const std::string& text, const std::string& path,
+         const std::vector<std::string>& overrides, const std::string& seeds,
+         const std::string& segment, const std::vector<std::string>& targets, int top,
+         int64_t stride, int threads, uint64_t max_memory) {
+        return search_json({text, path, overrides, "", "", max_memory}, seeds, segment, targets,
+                           top, stride, threads);
+      },
+      py::arg("text"), py::arg("path"), py::arg("overrides"), py::arg("seeds"), py::arg("segment"),
+      py::arg("targets"), py::arg("top"), py::arg("stride"), py::arg("threads"),
+      py::arg("max_memory"));
+  m.def("measure", measure_json, py::arg("path"), py::arg("values"), py::arg("threshold"),
+        py::arg("base"), py::arg("max_memory"));
+  m.def("fit", fit_source, py::arg("source"), py::arg("base"), py::arg("stages"), py::arg("curds"),
+        py::arg("cell_pixels"), py::arg("max_memory"));
   m.def("outputs", [] {
     py::list list;
     for (const app::Output& o : app::output_registry())

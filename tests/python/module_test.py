@@ -177,9 +177,25 @@ class Calls(unittest.TestCase):
         with self.assertRaises(curdle.InputError):
             curdle.generate(SOURCE / "patterns/paper/fig3-two-curds.toml",
                             overrides={"curds.0.probabilities": [decimal.Decimal("NaN"), 1]})
-        for call in (curdle.Recipe.generate, curdle.generate, curdle.search, curdle.measure,
-                     curdle.fit, curdle.Recipe.from_file, curdle.Run.write, curdle.Run.states):
-            self.assertTrue(call.__doc__ and len(call.__doc__) > 40, call.__name__)
+        # Every public name has its help: functions and methods their parameters (when they
+        # take any), what they return and raise, and an example; properties and classes a line.
+        for name in curdle.__all__:
+            thing = getattr(curdle, name)
+            members = [(name, thing)]
+            if isinstance(thing, type):
+                members += [(f"{name}.{k}", v) for k, v in vars(thing).items()
+                            if not k.startswith("_") and (callable(v) or isinstance(
+                                v, (property, classmethod, staticmethod)))]
+            for label, member in members:
+                if isinstance(member, (classmethod, staticmethod)):
+                    member = member.__func__
+                doc = member.__doc__ or ""
+                self.assertTrue(len(doc) > 20, label)
+                if callable(member) and not isinstance(member, type):
+                    for section in ("Returns:", "Raises:", "Example:"):
+                        self.assertIn(section, doc, label)
+                    if member.__code__.co_argcount > (1 if "." in member.__qualname__ else 0):
+                        self.assertIn("Parameters:", doc, label)
         self.assertIn("Fraction", curdle.Recipe.generate.__doc__)
         self.assertEqual(curdle.generate.__annotations__["return"], "Run")
 
@@ -307,6 +323,32 @@ class Calls(unittest.TestCase):
             self.assertEqual(fitted["lattice"], {"base": 4, "dimension": 2, "stages": 3})
             again = curdle.Recipe.from_text(fitted["toml"], "fitted.toml").generate(seed=1)
             self.assertEqual(again.values.shape, run.values.shape)
+
+
+class MovedBuildTree(unittest.TestCase):
+    def test_a_build_tree_moved_elsewhere_finds_its_library_and_modules(self):
+        # The module finds libcurdle.so relative to itself, and the image module beside the
+        # library, wherever the tree now is.
+        package = Path(curdle.__file__).parent
+        built = package.parent.parent
+        with tempfile.TemporaryDirectory() as moved:
+            moved = Path(moved)
+            (moved / "python").mkdir()
+            subprocess.run(["cp", "-r", str(package), str(moved / "python")], check=True)
+            for library in built.glob("libcurdle*.so*"):
+                subprocess.run(["cp", "-a", str(library), str(moved)], check=True)
+            script = textwrap.dedent(f"""
+                import curdle, pathlib
+                run = curdle.generate({str((SOURCE / "patterns/paper/fig3-two-curds.toml").resolve())!r})
+                pathlib.Path("p.png").write_bytes(run.output_bytes("preview.png"))
+                print(curdle.measure("p.png")["size"], curdle.__file__)
+                print([l.split()[-1] for l in open("/proc/self/maps") if "curdle_image" in l][0])
+            """)
+            out = subprocess.run([sys.executable, "-c", script], cwd=moved, text=True,
+                                 capture_output=True, env=dict(os.environ, PYTHONPATH=str(moved / "python")))
+            self.assertEqual(out.returncode, 0, out.stderr)
+            self.assertIn(str(moved / "python" / "curdle"), out.stdout)
+            self.assertIn(str(moved / "libcurdle_image.so"), out.stdout)
 
 
 class Interrupting(unittest.TestCase):

@@ -19,14 +19,14 @@ The GIL is released while the engine runs; Ctrl-C stops a long run with Keyboard
 
 from __future__ import annotations
 
+import dataclasses
 import decimal
 import fractions
 import json
 import os
 import re
+import typing
 import warnings
-from dataclasses import dataclass, field
-from typing import Iterable, Mapping, Sequence
 
 import numpy as np
 
@@ -92,7 +92,7 @@ def _seed_text(seed):
     return str(seed)
 
 
-@dataclass(frozen=True)
+@dataclasses.dataclass(frozen=True)
 class Recipe:
     """A recipe's TOML text and the path that names it in messages (mask files are read
     beside it)."""
@@ -101,44 +101,71 @@ class Recipe:
 
     @classmethod
     def from_file(cls, path: str | os.PathLike) -> Recipe:
-        """The recipe in the TOML file at `path` (a regular file of at most 4 MiB). Raises
-        InputError for a file that cannot be read or is not TOML, as from_text."""
+        """The recipe in a TOML file.
+
+        Parameters:
+            path: a regular file of at most 4 MiB.
+        Returns:
+            the Recipe, its path naming it in messages.
+        Raises:
+            InputError: the file cannot be read, or is not TOML (naming the line).
+        Example:
+            >>> curdle.Recipe.from_file("patterns/courtyard-l-shaped.toml")
+            Recipe('patterns/courtyard-l-shaped.toml', name='courtyard-l-shaped', 41 lines)
+        """
         path = os.fspath(path)
         return cls.from_text(_curdle.read_recipe(path), path)
 
     @classmethod
     def from_text(cls, text: str, path: str = "recipe.toml") -> Recipe:
-        """A recipe from its TOML text; `path` names it in messages. Raises InputError, naming
-        the line, for text that is not TOML; its keys are checked when it runs (overrides may
-        still change them)."""
+        """A recipe from its TOML text.
+
+        Parameters:
+            text: the recipe's TOML.
+            path: the name messages give it (and where mask files are read beside).
+        Returns:
+            the Recipe; its keys are checked when it runs, after any overrides.
+        Raises:
+            InputError: the text is not TOML (naming the line).
+        Example:
+            >>> curdle.Recipe.from_text('name = "t"\\n[lattice]\\nbase = 2\\n...')
+        """
         _curdle.check_toml(text, path)
         return cls(text, path)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         name = re.search(r'^name\s*=\s*"([^"]*)"', self.text, re.M)
         return (f"Recipe({self.path!r}, name={name.group(1) if name else None!r}, "
                 f"{self.text.count(chr(10)) + 1} lines)")
 
     def generate(self, seed: int | str | None = None,
-                 window: Sequence[int] | str | None = None,
-                 overrides: Mapping[str, object] | None = None, layout: bool = True,
+                 window: typing.Sequence[int] | str | None = None,
+                 overrides: typing.Mapping[str, object] | None = None, layout: bool = True,
                  threads: int = 0, max_memory: int = 0) -> Run:
-        """Curdles this recipe; see curdle.generate, which this calls.
+        """Curdles this recipe (curdle.generate with this recipe).
 
-        seed:       0 to 2^64 - 1; None: the recipe's `seed`.
-        window:     (x, y, w, h) in cells, or "x,y,w,h"; None: the recipe's or the field.
-        overrides:  dotted recipe keys and their values, e.g.
-                    {"lattice.base": 3, "curds.0.probabilities": [Fraction(1, 5), 0.5, "2/3"]}
-                    (probabilities as Fraction, float, int or text such as "1/5").
-        layout:     build the [layout] when the recipe has one.
-        threads:    worker threads (0: all cores).
-        max_memory: bytes (0: half the machine's).
-        Raises InputError naming the key and what is allowed, ResourceLimitError above
-        max_memory, KeyboardInterrupt on Ctrl-C."""
+        Parameters:
+            seed: 0 to 2^64 - 1; None: the recipe's `seed`.
+            window: (x, y, w, h) in cells, or "x,y,w,h"; None: the recipe's or the field.
+            overrides: dotted recipe keys and their values, e.g. {"lattice.base": 3,
+                "curds.0.probabilities": [Fraction(1, 5), 0.5, "2/3"]} (probabilities as
+                Fraction, float, int, Decimal or text such as "1/5").
+            layout: build the [layout] when the recipe has one.
+            threads: worker threads (0: all cores).
+            max_memory: bytes (0: half the machine's).
+        Returns:
+            the Run: its values, report, layout and every output's bytes.
+        Raises:
+            InputError: a key or value is wrong (naming it and what is allowed).
+            ResourceLimitError: the run needs more than max_memory.
+            KeyboardInterrupt: Ctrl-C.
+        Example:
+            >>> run = recipe.generate(seed=7, overrides={"lattice.base": 3})
+        """
         return generate(self, seed, window, overrides, layout, threads, max_memory)
 
 
-@dataclass(frozen=True)
+@dataclasses.dataclass(frozen=True)
 class Element:
     """One row of schedule.csv: a piece as laid, lengths in mm from the layout's bottom-left
     corner. `polygon` holds the piece's outline as `shape_wkt` gives it (rings of (x, y), outer
@@ -166,7 +193,7 @@ class Element:
     cut: bool
     shape_wkt: str
     opening: tuple | None
-    polygon: list = field(default=None, repr=False)
+    polygon: list | None = dataclasses.field(default=None, repr=False)
 
 
 _WORDS = ("element_id", "lot", "element_type", "colour", "material", "shape_wkt")
@@ -190,21 +217,37 @@ class Layout:
         except KeyError:
             raise AttributeError(name) from None
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         f = self._facts
         return (f"Layout({f['kind']!r}, {f['width_mm']:g} x {f['height_mm']:g} mm, "
                 f"{f['elements']} {f['element_type']}s)")
 
-    def columns(self):
-        """schedule.csv as columns: NumPy arrays of numbers (NaN where the CSV is empty) and
-        lists of words."""
+    def columns(self) -> dict[str, typing.Any]:
+        """schedule.csv as columns.
+
+        Returns:
+            {column: values}: NumPy arrays of numbers (NaN where the CSV is empty) and lists
+            of words (element_id, lot, element_type, colour, material, shape_wkt).
+        Raises:
+            InputError: never for a layout made by generate.
+        Example:
+            >>> run.layout.columns()["area_m2"].sum()
+        """
         if self._columns is None:
             self._columns = self._run._native.schedule_columns()
         return self._columns
 
-    def table(self):
-        """schedule.csv as a NumPy structured array, one record per element, one field per
-        column (curds as 0/1 fields named after them)."""
+    def table(self) -> np.recarray:
+        """schedule.csv as a NumPy structured array.
+
+        Returns:
+            one record per element, one field per column (curds as 0/1 fields named after
+            them; a Markov curd's field its state).
+        Raises:
+            InputError: never for a layout made by generate.
+        Example:
+            >>> t = run.layout.table(); t[t.material == "Basalt"].area_m2.sum()
+        """
         c = self.columns()
         names, arrays = [], []
         for name, values in c.items():
@@ -217,10 +260,11 @@ class Layout:
                 for curd, bit, planes, _ in self._run._native.curd_bits:
                     names.append(curd)
                     arrays.append(((values >> bit) & ((1 << planes) - 1)).astype(np.uint8))
-        return np.rec.fromarrays(arrays, names=names)
+        arrays = [np.asarray(a) for a in arrays]
+        return np.rec.fromarrays(arrays, dtype=[(n, a.dtype) for n, a in zip(names, arrays)])
 
     @property
-    def elements(self):
+    def elements(self) -> list[Element]:
         """Every row of schedule.csv as an Element, in the same order."""
         c = self.columns()
         curds = self._run._native.curd_bits
@@ -258,26 +302,40 @@ class Run:
         self._report = None
         self._layout = None
 
-    seed = property(lambda self: self._native.seed,
-                    doc="The seed the curds were drawn with, 0 to 2^64 - 1")
-    name = property(lambda self: self._native.name, doc="The recipe's `name`")
+    @property
+    def seed(self) -> int:
+        """The seed the curds were drawn with, 0 to 2^64 - 1."""
+        return self._native.seed
 
-    def __repr__(self):
+    @property
+    def name(self) -> str:
+        """The recipe's `name`, as its files and drawings give it."""
+        return self._native.name
+
+    def __repr__(self) -> str:
         shape = " x ".join(str(n) for n in reversed(self.values.shape))
         layout = f", layout={self._native.layout_facts()['kind']!r}" if self._native.has_layout \
             else ""
         return (f"Run({self.name!r}, seed={self.seed}, curds={self.curd_names}, "
                 f"cells {shape}{layout})")
-    curd_names = property(lambda self: [c[0] for c in self._native.curd_bits],
-                          doc="The recipe's curds by name, one per [[curds]] table")
-    curd_states = property(
-        lambda self: {c[0]: list(c[3]) for c in self._native.curd_bits if c[3]},
-        doc="Each Markov curd's states by name, \"dead\" first: index i is state i")
-    origin = property(lambda self: tuple(self._native.origin),
-                      doc="The view's first cell (x[, y[, z]]) in cells from the lattice origin")
 
     @property
-    def values(self):
+    def curd_names(self) -> list[str]:
+        """The recipe's curds by name, one per [[curds]] table."""
+        return [c[0] for c in self._native.curd_bits]
+
+    @property
+    def curd_states(self) -> dict[str, list[str]]:
+        """Each Markov curd's states by name, "dead" first: index i is state i."""
+        return {c[0]: list(c[3]) for c in self._native.curd_bits if c[3]}
+
+    @property
+    def origin(self) -> tuple[int, ...]:
+        """The view's first cell (x[, y[, z]]) in cells from the lattice origin."""
+        return tuple(self._native.origin)
+
+    @property
+    def values(self) -> np.ndarray:
         """Each cell's value (bit i: curd i survived), uint16, indexed [x], [y, x] or [z, y, x]
         from `origin`: cells.csv's value column as an array."""
         if self._values is None:
@@ -292,45 +350,86 @@ class Run:
             raise InputError(f"curd: {which!r} is not a curd; the curds are " + ", ".join(names))
         return self._native.curd_bits[int(index)]
 
-    def curd(self, which):
-        """One plain curd's cells (by name or index) as a bool array shaped like `values`."""
+    def curd(self, which: str | int) -> np.ndarray:
+        """One plain curd's cells.
+
+        Parameters:
+            which: the curd's name or index.
+        Returns:
+            a bool array shaped like `values`: True where the curd survived.
+        Raises:
+            InputError: no such curd (the message lists the curds), or a Markov curd (use
+                states).
+        Example:
+            >>> run.curd("dark").mean()
+        """
         name, bit, _, states = self._curd_bits(which)
         if states:
             raise InputError(f"curd: {name!r} is a Markov curd; its cells' states are "
                              f"states({name!r})")
         return (self.values >> bit & 1).astype(bool)
 
-    def states(self, which):
-        """A Markov curd's state in each cell (by name or index), uint8 shaped like `values`:
-        0 dead, i its i-th state (curd_states names them); cells.csv's column of the curd."""
+    def states(self, which: str | int) -> np.ndarray:
+        """A Markov curd's state in each cell: cells.csv's column of the curd.
+
+        Parameters:
+            which: the curd's name or index.
+        Returns:
+            uint8 shaped like `values`: 0 dead, i its i-th state (curd_states names them).
+        Raises:
+            InputError: no such curd (the message lists the curds), or a plain curd (use curd).
+        Example:
+            >>> run.states("wheys")
+        """
         name, bit, planes, states = self._curd_bits(which)
         if not states:
             raise InputError(f"states: {name!r} is a plain curd; its cells are curd({name!r})")
         return (self.values >> bit & ((1 << planes) - 1)).astype("uint8")
 
     @property
-    def report(self):
+    def report(self) -> dict[str, typing.Any]:
         """report.json as plain dicts and lists."""
         if self._report is None:
             self._report = json.loads(self.output_bytes("report.json"))
         return self._report
 
     @property
-    def layout(self):
+    def layout(self) -> Layout | None:
         """The layout, or None when the recipe has no [layout] or it was not asked for."""
         if self._layout is None and self._native.has_layout:
             self._layout = Layout(self)
         return self._layout
 
-    def output_bytes(self, name):
-        """One output as `curdle generate` writes it: "layout.svg", "schedule.csv",
-        "layout.bin", "sheets/S-R1-C1.dxf", ..."""
+    def output_bytes(self, name: str) -> bytes:
+        """One output as `curdle generate` writes it.
+
+        Parameters:
+            name: "layout.svg", "schedule.csv", "layout.gpkg", "layout.bin",
+                "sheets/S-R1-C1.dxf", ... (curdle.outputs() lists them).
+        Returns:
+            the file's bytes.
+        Raises:
+            InputError: no such output, or one this run cannot write (naming why).
+        Example:
+            >>> open("layout.svg", "wb").write(run.output_bytes("layout.svg"))
+        """
         return self._native.output_bytes(name)
 
-    def write(self, outputs=None, out="."):
-        """Writes the outputs named (None: the defaults) into the directory `out`, replaced
-        whole or not at all; returns the paths written. Defaults left out for their size are
-        named in a warning."""
+    def write(self, outputs: typing.Iterable[str] | None = None,
+              out: str | os.PathLike = ".") -> list[str]:
+        """Writes outputs into a directory, replaced whole or not at all.
+
+        Parameters:
+            outputs: names as curdle.outputs() lists them; None: the defaults.
+            out: the directory.
+        Returns:
+            the paths written. Defaults left out (for their size, or not installed here) are
+            named in a warning.
+        Raises:
+            InputError: an unknown output, or a directory that cannot be written.
+        Example:
+            >>> run.write(["layout.pdf", "schedule.csv"], out="out/courtyard")
+        """
         files, skipped = _curdle.write(self._native, list(outputs or []), os.fspath(out))
         for note in skipped:
             warnings.warn(note, stacklevel=2)
@@ -338,15 +437,29 @@ class Run:
 
 
 def generate(recipe: Recipe | str | os.PathLike, seed: int | str | None = None,
-             window: Sequence[int] | str | None = None,
-             overrides: Mapping[str, object] | None = None, layout: bool = True,
+             window: typing.Sequence[int] | str | None = None,
+             overrides: typing.Mapping[str, object] | None = None, layout: bool = True,
              threads: int = 0, max_memory: int = 0) -> Run:
-    """Curdles `recipe` (a Recipe, or a path) with `seed` (None: the recipe's), over `window`
-    ((x, y, w, h) in cells; None: the recipe's or the field), with `overrides` as a dict of
-    dotted keys ({"lattice.base": 3}; probabilities as fractions.Fraction, float, int or text
-    such as "1/5"). The layout is built when the recipe has one and `layout` is true.
-    `max_memory` in bytes (0: half the machine's). Returns a Run: its values, report, layout
-    and every output's bytes."""
+    """Curdles a recipe, as `curdle generate` does.
+
+    Parameters:
+        recipe: a Recipe, or the path of its TOML file.
+        seed: 0 to 2^64 - 1; None: the recipe's.
+        window: (x, y, w, h) in cells, or "x,y,w,h"; None: the recipe's or the field.
+        overrides: dotted keys and values ({"lattice.base": 3}; probabilities as
+            fractions.Fraction, float, int, Decimal or text such as "1/5").
+        layout: build the layout when the recipe has one.
+        threads: worker threads (0: all cores).
+        max_memory: bytes (0: half the machine's).
+    Returns:
+        a Run: its values, report, layout and every output's bytes.
+    Raises:
+        InputError: a key or value is wrong (naming it and what is allowed).
+        ResourceLimitError: the run needs more than max_memory.
+        KeyboardInterrupt: Ctrl-C.
+    Example:
+        >>> run = curdle.generate("patterns/courtyard-l-shaped.toml", seed=7)
+    """
     if not isinstance(recipe, Recipe):
         recipe = Recipe.from_file(recipe)
     native = _curdle.generate(text=recipe.text, path=recipe.path,
@@ -357,12 +470,27 @@ def generate(recipe: Recipe | str | os.PathLike, seed: int | str | None = None,
 
 
 def search(recipe: Recipe | str | os.PathLike, seeds: str | range = "1..1000",
-           segment: Sequence[int] | str | None = None, targets: Iterable[str] | str = (),
-           top: int = 10, stride: int = 0, overrides: Mapping[str, object] | None = None,
+           segment: typing.Sequence[int] | str | None = None, targets: typing.Iterable[str] | str = (),
+           top: int = 10, stride: int = 0, overrides: typing.Mapping[str, object] | None = None,
            threads: int = 0, max_memory: int = 0) -> dict:
-    """The seeds (and segments of size `segment`, (w, h)) that best meet `targets`, as
-    `curdle search` finds them: {"targets": [...], "hits": [{rank, seed, window, score,
-    measured, command}, ...]}, best first."""
+    """The seeds (and segments) that best meet targets, as `curdle search` finds them.
+
+    Parameters:
+        recipe: a Recipe, or the path of its TOML file.
+        seeds: "from..to", or a range of step 1.
+        segment: (w, h) in cells to search segments of that size too; None: whole views.
+        targets: such as "density:dark=0.3..0.4" (README: Searching seeds and segments).
+        top: how many hits to return.
+        stride: cells between segments tried (0: a quarter of the segment).
+        overrides, threads, max_memory: as generate.
+    Returns:
+        {"targets": [...], "hits": [{rank, seed, window, score, measured, command}, ...]},
+        best first.
+    Raises:
+        InputError: a target, range or key is wrong (naming it and what is allowed).
+    Example:
+        >>> curdle.search("patterns/fig7-paving-20m.toml", range(1, 201), top=3)
+    """
     if not isinstance(recipe, Recipe):
         recipe = Recipe.from_file(recipe)
     if isinstance(seeds, range):
@@ -379,22 +507,57 @@ def search(recipe: Recipe | str | os.PathLike, seeds: str | range = "1..1000",
 
 def measure(path: str | os.PathLike, values: int = 2, threshold: float | None = None,
             base: int = 2, max_memory: int = 0) -> dict:
-    """A picture quantised to `values` values and box-counted: measure.json as dicts."""
+    """A picture quantised and box-counted, as `curdle measure` does.
+
+    Parameters:
+        path: a PNG, JPEG, TIFF or BMP (at most 64 MiB and 8192 x 8192 pixels).
+        values: 2 to 16 values by luminance (value 0 the lightest).
+        threshold: instead of values, darker than this (0 to 1) is value 1.
+        base: the box sides' base.
+        max_memory: bytes (0: half the machine's).
+    Returns:
+        measure.json as dicts: size, per value its count, share, lacunarity and box dimension.
+    Raises:
+        InputError: not a readable picture, or a value out of range.
+    Example:
+        >>> curdle.measure("facade.png", values=3)["values"][1]["box_dimension"]
+    """
     return json.loads(_curdle.measure(os.fspath(path), int(values), threshold, int(base),
                                       int(max_memory)))
 
 
 def fit(source: str | os.PathLike, base: int = 2, stages: int = 0, curds: int = 1,
         cell_pixels: int = 0, max_memory: int = 0) -> dict:
-    """A recipe fitted to a picture or a cells.csv, as `curdle fit` fits it: the lattice, each
-    curd's per-stage probability with its 95 % interval, measured and expected counts and the
-    test of its branching, the warnings, and the recipe's TOML (Recipe.from_text(result["toml"])
-    runs it). `cell_pixels`: a picture's cells in pixels a side (0: found)."""
+    """A recipe fitted to a picture or a cells.csv, as `curdle fit` fits it.
+
+    Parameters:
+        source: a picture or a cells.csv.
+        base: the lattice's base.
+        stages: how many stages (0: as many as the source holds).
+        curds: how many curds (a picture's values are 2^curds).
+        cell_pixels: a picture's cells in pixels a side (0: found).
+        max_memory: bytes (0: half the machine's).
+    Returns:
+        the lattice, each curd's per-stage probability with its 95 % interval, measured and
+        expected counts and the test of its branching, the warnings, and the recipe's TOML.
+    Raises:
+        InputError: the source cannot be read or does not fit (saying why).
+    Example:
+        >>> curdle.Recipe.from_text(curdle.fit("preview.png", stages=6)["toml"]).generate()
+    """
     return _curdle.fit(os.fspath(source), int(base), int(stages), int(curds), int(cell_pixels),
                        int(max_memory))
 
 
-def outputs() -> list:
-    """Every output a run can write: name, description, whether it needs a [layout] and
-    whether it is written by default."""
+def outputs() -> list[dict[str, typing.Any]]:
+    """Every output a run can write.
+
+    Returns:
+        per output its name, description, whether it needs a [layout], whether it is written
+        by default and the layout kind it is for (None: any).
+    Raises:
+        InputError: never.
+    Example:
+        >>> [o["name"] for o in curdle.outputs() if o["by_default"]]
+    """
     return _curdle.outputs()
