@@ -51,17 +51,22 @@ def check_pattern(recipe, work):
     rows = generate(recipe, work)
     seen, tables = set(), set()
     for layer, feature in features(work / "layout.gpkg"):
-        tables.add(layer.GetName())
-        key = feature.GetField("element_id")
+        if layer.GetName() not in tables:  # fields by index: a lookup by name per call is slow
+            tables.add(layer.GetName())
+            defn = layer.GetLayerDefn()
+            at = {f: defn.GetFieldIndex(f) for f in ("element_id", "material", "area_m2")}
+        key = feature.GetFieldAsString(at["element_id"])
         row = rows.get(key)
         if row is None:
             fail(f"{recipe.name}: {key} is in no schedule row")
             continue
         seen.add(key)
-        if feature.GetField("material") != row["material"]:
-            fail(f"{recipe.name} {key}: material {feature.GetField('material')!r}, schedule {row['material']!r}")
-        if not near(feature.GetField("area_m2"), float(row["area_m2"])):
-            fail(f"{recipe.name} {key}: area_m2 {feature.GetField('area_m2')}, schedule {row['area_m2']}")
+        material = feature.GetFieldAsString(at["material"])
+        if material != row["material"]:
+            fail(f"{recipe.name} {key}: material {material!r}, schedule {row['material']!r}")
+        area = feature.GetFieldAsDouble(at["area_m2"])
+        if not near(area, float(row["area_m2"])):
+            fail(f"{recipe.name} {key}: area_m2 {area}, schedule {row['area_m2']}")
         shape = ogr.CreateGeometryFromWkt(row["shape_wkt"])
         geometry = feature.GetGeometryRef()
         if not near(geometry.GetArea(), shape.GetArea() / 1e6, 1e-6):
@@ -88,7 +93,7 @@ def check_georef(work):
         if srs is None or srs.GetAuthorityCode(None) != "25832":
             fail(f"georef: layer {layer.GetName()} not in EPSG:25832")
             return
-        row = rows[feature.GetField("element_id")]
+        row = rows[feature.GetFieldAsString(feature.GetFieldIndex("element_id"))]
         # A piece's centroid, turned and moved as the georef says, is the feature's.
         shape = ogr.CreateGeometryFromWkt(row["shape_wkt"])
         cx, cy = shape.Centroid().GetX() / 1000, shape.Centroid().GetY() / 1000

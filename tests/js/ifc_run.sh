@@ -5,12 +5,22 @@
 #   web-ifc  reads them back with web-ifc (ifc_check.mjs);
 #   ifclite  reads them back with IFClite, checking every entity against the IFC4 schema
 #            (ifc_lite_check.mjs).
-# Usage: CURDLE=path/to/curdle ifc_run.sh SOURCE_DIR MODELS write|web-ifc|ifclite
+# A reader's step may take a shard, K/N: every N-th model from the K-th, so that ctest runs the
+# shards side by side.
+# Usage: CURDLE=path/to/curdle ifc_run.sh SOURCE_DIR MODELS write|web-ifc|ifclite [K/N]
 set -euo pipefail
 src=${1:?source dir}
 models=${2:?models dir}
 step=${3:?write, web-ifc or ifclite}
+shard=${4:-1/1}
 here=$(cd "$(dirname "$0")" && pwd)
+# The models of this shard.
+shard_models() {
+  local k=${shard%/*} n=${shard#*/} i=0
+  for dir in "$models"/*/; do
+    (( i++ % n == k - 1 )) && echo "$dir"
+  done
+}
 case $step in
   write)
     curdle=${CURDLE:?path to curdle}
@@ -25,7 +35,7 @@ case $step in
     "$curdle" generate "$src/patterns/courtyard-l-shaped.toml" --out "$again" --outputs layout.ifc > /dev/null
     cmp "$models/courtyard-l-shaped/layout.ifc" "$again/layout.ifc"
     echo "ifc: $(ls "$models" | wc -l) models written, the same bytes twice" ;;
-  web-ifc) cd "$here" && node ifc_check.mjs "$models"/*/ ;;
-  ifclite) cd "$here" && node ifc_lite_check.mjs "$models"/*/ ;;
+  web-ifc) mapfile -t dirs < <(shard_models) && cd "$here" && node ifc_check.mjs "${dirs[@]}" ;;
+  ifclite) mapfile -t dirs < <(shard_models) && cd "$here" && node ifc_lite_check.mjs "${dirs[@]}" ;;
   *) echo "ifc_run.sh: unknown step '$step' (write, web-ifc or ifclite)" >&2; exit 2 ;;
 esac

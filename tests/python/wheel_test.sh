@@ -16,8 +16,9 @@ $py -m pip wheel --quiet --no-build-isolation --no-deps --no-index -w "$work/dis
   --config-settings "build-dir=$build" "$src" > "$work/wheel.log" 2>&1 \
   || { cat "$work/wheel.log"; exit 1; }
 wheel=$(ls "$work"/dist/curdle-*.whl)
-$py -m venv --system-site-packages "$work/venv"
-"$work/venv/bin/pip" install --quiet --no-index --no-deps "$wheel"
+# A venv without its own pip (Debian's installs into it), NumPy from Debian's site packages.
+$py -m venv --without-pip --system-site-packages "$work/venv"
+$py -m pip --python "$work/venv/bin/python" install --quiet --no-index --no-deps "$wheel"
 "$work/venv/bin/curdle" --version | grep -q "^curdle $("$work/venv/bin/python" -c 'import curdle; print(curdle.__version__)')"
 "$work/venv/bin/python" - "$src" <<'PY'
 import sys
