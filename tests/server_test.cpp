@@ -163,6 +163,9 @@ TEST_F(ServerTest, RecipeDescribesTheDesignAndTheFloor) {
             json({"report.json", "cells.csv", "preview.png", "layout.svg", "layout.png",
                   "layout.pdf", "layout.glb", "layout.ifc", "schedule.csv", "layout.dxf",
                   "layout.gpkg", "quantities.csv", "lots.csv", "install.svg", "recipe.toml"}));
+  // Each with what it is for, as the links say on hover.
+  EXPECT_NE(j["download_descriptions"]["layout.gpkg"].get<std::string>().find("QGIS"),
+            std::string::npos);
   EXPECT_EQ(j["seed"], "8");  // the recipe's, as a string
 }
 

@@ -115,6 +115,8 @@ function renderExports() {
     a.href = "/api/export?" + query({ file: name, window: win || undefined });
     a.download = name;
     a.textContent = name;
+    const about = ((state.whole || state.recipe).download_descriptions || {})[name];
+    if (about) a.title = about;
     box.append(a);
   }
   // The recipe text and the drawn layout cost more than a regenerate: they wait until the

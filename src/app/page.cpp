@@ -160,8 +160,14 @@ ordered_json describe_run(const Run& s) {
   }
   j["legend"] = legend;
   // What this recipe can download, from the registry: the page lists no names of its own.
-  j["downloads"] = page_downloads(s.recipe.layout.has_value(),
-                                  s.recipe.layout ? s.recipe.layout->kind->name() : "");
+  const std::vector<std::string> downloads = page_downloads(
+      s.recipe.layout.has_value(), s.recipe.layout ? s.recipe.layout->kind->name() : "");
+  j["downloads"] = downloads;
+  // What each is for, as the page's links say on hover ("... for QGIS").
+  ordered_json about = ordered_json::object();
+  for (const std::string& name : downloads)
+    if (const Output* o = find_output(name)) about[name] = o->description;
+  j["download_descriptions"] = about;
   return j;
 }
 
