@@ -7,7 +7,6 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <set>
 
 #include "curdle/markov.h"
 #include "curdle/palette.h"
