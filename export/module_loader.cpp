@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <vector>
 
@@ -41,10 +42,14 @@ std::vector<fs::path> candidates(const std::string& name) {
 
 void* load_curdle_module(const std::string& file_name, std::string* failure) {
   std::string tried;
+  std::vector<fs::path> seen;
   for (const fs::path& path : candidates(file_name)) {
+    const fs::path place = path.lexically_normal();
+    if (std::find(seen.begin(), seen.end(), place) != seen.end()) continue;
+    seen.push_back(place);
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) {
-      tried += (tried.empty() ? "" : ", ") + path.lexically_normal().string();
+      tried += (tried.empty() ? "" : ", ") + place.string();
       continue;
     }
     void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
