@@ -26,6 +26,8 @@ if ! $main_only; then
   packages+=(libgdal-dev)
   # The Python module as pip builds it, and mypy's stubtest for its types.
   packages+=(python3-pip python3-venv python3-mypy)
+  # The benchmarks time whole processes and compiles with /usr/bin/time.
+  packages+=(time)
   # Node.js and npm for the glTF validator and the browser checks, when the machine has none.
   command -v node > /dev/null || packages+=(nodejs npm)
 fi
