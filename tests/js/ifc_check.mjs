@@ -68,15 +68,17 @@ function annotationArcs(model, problems) {
 // A local placement's frame in the model (millimetres, Z up) as [origin, x axis, y axis, z axis].
 function placementFrame(model, id, cache) {
   if (cache.has(id)) return cache.get(id);
-  const local = api.GetLine(model, id);
-  const parent = local.PlacementRelTo ? placementFrame(model, local.PlacementRelTo.value, cache)
-                                      : [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]];
-  const a = api.GetLine(model, local.RelativePlacement.value);
-  const vec = (d, fallback) => (d ? api.GetLine(model, d.value).DirectionRatios.map((c) => c.value) : fallback);
-  const z = vec(a.Axis, [0, 0, 1]), x = vec(a.RefDirection, [1, 0, 0]);
+  // Read raw: an element's placement is its own, and the typed reader is the slow part.
+  const [relTo, relative] = api.GetRawLineData(model, id).arguments;
+  const parent = relTo?.value ? placementFrame(model, relTo.value, cache)
+                              : [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]];
+  const [location, axis, refDirection] = api.GetRawLineData(model, relative.value).arguments;
+  const numbers = (ref) => api.GetRawLineData(model, ref.value).arguments[0].map((c) => c.value);
+  const vec = (d, fallback) => (d?.value ? numbers(d) : fallback);
+  const z = vec(axis, [0, 0, 1]), x = vec(refDirection, [1, 0, 0]);
   const y = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]];
   const at = (v) => [0, 1, 2].map((k) => parent[1][k] * v[0] + parent[2][k] * v[1] + parent[3][k] * v[2]);
-  const o = a.Location ? api.GetLine(model, a.Location.value).Coordinates.map((c) => c.value) : [0, 0, 0];
+  const o = location?.value ? numbers(location) : [0, 0, 0];
   const origin = at(o).map((v, k) => v + parent[0][k]);
   const frame = [origin, at(x), at(y), at(z)];
   cache.set(id, frame);
@@ -86,26 +88,38 @@ function placementFrame(model, id, cache) {
 // A point of the surface's plane (layout mm) in the model: a wall's y is up (Z), a plan's is Y.
 function modelPoint(x, y, upright) { return upright ? [x, 0, y] : [x, y, 0]; }
 
-// The sets named `names` of each element: { setName: { property: value } }.
-function setsOf(model, rels, names) {
+// The sets named `names` of each element: { setName: { property: value } }. Sets and relations
+// are read raw first (their names and targets), and only the wanted sets' values typed: a model
+// has a few sets per element and the typed reader is the slow part.
+function setsOf(model, names) {
+  const wanted = new Map();  // set id -> its name and values
+  for (const type of [W.IFCPROPERTYSET, W.IFCELEMENTQUANTITY]) {
+    const ids = api.GetLineIDsWithType(model, type);
+    for (let i = 0; i < ids.size(); ++i) {
+      const name = api.GetRawLineData(model, ids.get(i)).arguments[2]?.value;
+      if (names.includes(name)) wanted.set(ids.get(i), { name, values: null });
+    }
+  }
   const out = new Map();
+  const rels = api.GetLineIDsWithType(model, W.IFCRELDEFINESBYPROPERTIES);
   for (let i = 0; i < rels.size(); ++i) {
-    const rel = api.GetLine(model, rels.get(i));
-    const set = api.GetLine(model, rel.RelatingPropertyDefinition.value);
-    if (!names.includes(set.Name?.value)) continue;
-    const values = {};
-    for (const p of set.HasProperties ?? []) {
-      const prop = api.GetLine(model, p.value);
-      values[prop.Name.value] = prop.NominalValue?.value;
+    const raw = api.GetRawLineData(model, rels.get(i));
+    const set = wanted.get(raw.arguments[5].value);
+    if (!set) continue;
+    if (!set.values) {
+      // Raw: a property set's members are its 5th attribute, a quantity set's its 6th; a
+      // property's name is its 1st and its value its 3rd, a quantity's value its 4th.
+      const quantities = set.name.startsWith('Qto_');
+      set.values = {};
+      const members = api.GetRawLineData(model, raw.arguments[5].value).arguments[quantities ? 5 : 4];
+      for (const member of members) {
+        const a = api.GetRawLineData(model, member.value).arguments;
+        set.values[a[0].value] = (quantities ? a[3] : a[2])?.value;
+      }
     }
-    for (const q of set.Quantities ?? []) {
-      const quantity = api.GetLine(model, q.value);
-      values[quantity.Name.value] =
-        (quantity.LengthValue ?? quantity.AreaValue ?? quantity.VolumeValue)?.value;
-    }
-    for (const object of rel.RelatedObjects) {
+    for (const object of raw.arguments[4]) {
       if (!out.has(object.value)) out.set(object.value, {});
-      out.get(object.value)[set.Name.value] = values;
+      out.get(object.value)[set.name] = set.values;
     }
   }
   return out;
@@ -161,15 +175,17 @@ function check(dir) {
   for (const type of kClasses) {
     const ids = api.GetLineIDsWithType(model, type);
     for (let i = 0; i < ids.size(); ++i) {
-      const line = api.GetLine(model, ids.get(i));
-      if (line.Name?.value !== line.Tag?.value) problems.push(`#${line.expressID}: Name and Tag differ`);
-      if (line.OwnerHistory?.value !== owners.get(0)) problems.push(`${line.Tag?.value}: no owner history`);
-      byTag.set(line.Tag?.value, { id: line.expressID, type, line, material: null });
+      // Raw: GlobalId, OwnerHistory, Name, Description, ObjectType, ObjectPlacement,
+      // Representation, Tag.
+      const a = api.GetRawLineData(model, ids.get(i)).arguments;
+      const line = { ObjectPlacement: a[5], Representation: a[6] };
+      if (a[2]?.value !== a[7]?.value) problems.push(`#${ids.get(i)}: Name and Tag differ`);
+      if (a[1]?.value !== owners.get(0)) problems.push(`${a[7]?.value}: no owner history`);
+      byTag.set(a[7]?.value, { id: ids.get(i), type, line, material: null });
     }
   }
   const byId = new Map([...byTag.values()].map((e) => [e.id, e]));
-  const sets = setsOf(model, api.GetLineIDsWithType(model, W.IFCRELDEFINESBYPROPERTIES),
-                      ['Curdle_Element', 'Qto_PlateBaseQuantities']);
+  const sets = setsOf(model, ['Curdle_Element', 'Qto_PlateBaseQuantities']);
   const materials = api.GetLineIDsWithType(model, W.IFCRELASSOCIATESMATERIAL);
   for (let i = 0; i < materials.size(); ++i) {
     const rel = api.GetLine(model, materials.get(i));
@@ -189,7 +205,8 @@ function check(dir) {
     if (e.type !== W.IFCOPENINGELEMENT) {
       const holder = heldBy.get(e.id);
       if (holder !== W.IFCSPACE && holder !== W.IFCBUILDINGSTOREY) problems.push(`${row.element_id}: not in a space or a storey`);
-      const items = api.GetLine(model, api.GetLine(model, e.line.Representation.value).Representations[0].value).Items;
+      const shape = api.GetRawLineData(model, e.line.Representation.value).arguments[2][0].value;
+      const items = api.GetRawLineData(model, shape).arguments[3];
       if (items.length !== (e.type === W.IFCGEOGRAPHICELEMENT ? 2 : 1)) problems.push(`${row.element_id}: ${items.length} solids`);
       wanted.push(e.id);
     }
