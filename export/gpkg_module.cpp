@@ -78,12 +78,12 @@ std::string gdal_error(const char* what) {
 
 int write_layers(GDALDatasetH ds, const GisDataset& data, OGRSpatialReferenceH srs,
                  std::string* error) {
-  char** options = CSLSetNameValue(nullptr, "GEOMETRY_NAME", "geom");
-  options = CSLSetNameValue(options, "FID", "fid");
+  const std::unique_ptr<char*, decltype(&CSLDestroy)> options(
+      CSLSetNameValue(CSLSetNameValue(nullptr, "GEOMETRY_NAME", "geom"), "FID", "fid"), CSLDestroy);
   for (const curdle::GisLayer& l : data.layers) {
-    OGRLayerH layer = GDALDatasetCreateLayer(ds, l.name.c_str(), srs, wkbMultiPolygon, options);
+    OGRLayerH layer =
+        GDALDatasetCreateLayer(ds, l.name.c_str(), srs, wkbMultiPolygon, options.get());
     if (!layer) {
-      CSLDestroy(options);
       *error = gdal_error(("cannot create the layer " + l.name).c_str());
       return 2;
     }
@@ -101,17 +101,41 @@ int write_layers(GDALDatasetH ds, const GisDataset& data, OGRSpatialReferenceH s
       const OGRErr e = OGR_L_CreateFeature(layer, feature);
       OGR_F_Destroy(feature);
       if (e != OGRERR_NONE) {
-        CSLDestroy(options);
         *error = gdal_error(("cannot add a feature to " + l.name).c_str());
         return 2;
       }
     }
   }
-  CSLDestroy(options);
   return 0;
 }
 
-int write_dataset(const char* path, const GisDataset& data, std::string* error);
+// 0 written, 1 a CRS the recipe names that will not do, 2 GDAL failed (gpkg.cpp's WriteFn).
+int write_dataset(const char* path, const GisDataset& data, std::string* error) {
+  Srs srs;
+  if (data.epsg) {
+    srs = projected_crs(data.epsg, error);
+    if (!srs) return 1;
+  }
+  GDALDriverH driver = GDALGetDriverByName("GPKG");
+  if (!driver) {
+    *error = "GDAL has no GeoPackage driver";
+    return 2;
+  }
+  GDALDatasetH ds = GDALCreate(driver, path, 0, 0, 0, GDT_Unknown, nullptr);
+  if (!ds) {
+    *error = gdal_error("cannot create the GeoPackage");
+    return 2;
+  }
+  // One transaction: a feature per insert would sync the file thousands of times.
+  GDALDatasetStartTransaction(ds, FALSE);
+  int result = write_layers(ds, data, srs.get(), error);
+  if (result == 0 && GDALDatasetCommitTransaction(ds) != OGRERR_NONE) {
+    *error = gdal_error("cannot commit the GeoPackage");
+    result = 2;
+  }
+  GDALClose(ds);
+  return result;
+}
 
 }  // namespace
 
@@ -130,36 +154,3 @@ extern "C" __attribute__((visibility("default"))) int curdle_gpkg_write(const ch
   CPLPopErrorHandler();
   return result;
 }
-
-namespace {
-
-int write_dataset(const char* path, const GisDataset& data_set, std::string* error) {
-  const GisDataset* data = &data_set;
-  Srs srs;
-  if (data->epsg) {
-    srs = projected_crs(data->epsg, error);
-    if (!srs) return 1;
-  }
-  GDALDriverH driver = GDALGetDriverByName("GPKG");
-  if (!driver) {
-    *error = "GDAL has no GeoPackage driver";
-    return 2;
-  }
-  GDALDatasetH ds = GDALCreate(driver, path, 0, 0, 0, GDT_Unknown, nullptr);
-  if (!ds) {
-    *error = gdal_error("cannot create the GeoPackage");
-    return 2;
-  }
-  // One transaction: a feature per insert would sync the file thousands of times.
-  GDALDatasetStartTransaction(ds, FALSE);
-  const int result = write_layers(ds, *data, srs.get(), error);
-  if (result == 0 && GDALDatasetCommitTransaction(ds) != OGRERR_NONE) {
-    *error = gdal_error("cannot commit the GeoPackage");
-    GDALClose(ds);
-    return 2;
-  }
-  GDALClose(ds);
-  return result;
-}
-
-}  // namespace
