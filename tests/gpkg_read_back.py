@@ -5,7 +5,9 @@ schedule row with the same ID, material and area_m2, and its geometry the row's 
 metres (shape_wkt is written to the micrometre: extents within 1 µm, areas within a millionth). And one park placed with layout.georef: the layers in
 its EPSG code, every piece where the datum, the rotation and its schedule put it.
 
-Usage: gpkg_read_back.py CURDLE SOURCE_DIR   (Debian's python3 with GDAL)"""
+Usage: gpkg_read_back.py CURDLE SOURCE_DIR [MODELS]   (Debian's python3 with GDAL)
+MODELS: the directories js.ifc_write wrote (one per pattern, with layout.gpkg and schedule.csv);
+without it, every pattern is generated here."""
 import csv
 import math
 import subprocess
@@ -17,6 +19,7 @@ from osgeo import ogr, osr
 
 ogr.UseExceptions()
 curdle, source = sys.argv[1], Path(sys.argv[2])
+models = Path(sys.argv[3]) if len(sys.argv) > 3 else None
 failures = []
 
 
@@ -31,8 +34,7 @@ def generate(recipe, out, *sets):
     for s in sets:
         args += ["--set", s]
     subprocess.run(args, check=True, capture_output=True)
-    with open(out / "schedule.csv", encoding="utf-8-sig", newline="") as f:
-        return {row["element_id"]: row for row in csv.DictReader(f)}
+    return schedule(out)
 
 
 def features(path):
@@ -47,8 +49,13 @@ def near(a, b, tolerance=1e-9):
     return abs(a - b) <= tolerance * max(1.0, abs(a), abs(b))
 
 
+def schedule(out):
+    with open(out / "schedule.csv", encoding="utf-8-sig", newline="") as f:
+        return {row["element_id"]: row for row in csv.DictReader(f)}
+
+
 def check_pattern(recipe, work):
-    rows = generate(recipe, work)
+    rows = schedule(work) if models else generate(recipe, work)
     seen, tables = set(), set()
     for layer, feature in features(work / "layout.gpkg"):
         if layer.GetName() not in tables:  # fields by index: a lookup by name per call is slow
@@ -111,7 +118,7 @@ total = 0
 patterns = sorted(p for p in (source / "patterns").rglob("*.toml") if "[layout]" in p.read_text(encoding="utf-8"))
 with tempfile.TemporaryDirectory() as tmp:
     for i, recipe in enumerate(patterns):
-        total += check_pattern(recipe, Path(tmp) / str(i))
+        total += check_pattern(recipe, models / recipe.stem if models else Path(tmp) / str(i))
     check_georef(Path(tmp) / "georef")
 if failures:
     print(f"{len(failures)} failures")

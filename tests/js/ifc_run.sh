@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # layout.ifc read back by two independent readers, in steps ctest runs side by side:
 #   write    writes every pattern's layout.ifc with its schedule.csv into MODELS (one of them
-#            twice: the bytes must agree);
+#            twice: the bytes must agree), and its layout.gpkg, which gpkg_read_back.py reads;
 #   web-ifc  reads them back with web-ifc (ifc_check.mjs);
 #   ifclite  reads them back with IFClite, checking every entity against the IFC4 schema
 #            (ifc_lite_check.mjs).
@@ -28,7 +28,7 @@ case $step in
     while IFS= read -r recipe; do
       grep -q '^\[layout\]' "$recipe" || continue
       "$curdle" generate "$recipe" --out "$models/$(basename "$recipe" .toml)" \
-        --outputs layout.ifc,schedule.csv > /dev/null
+        --outputs layout.ifc,schedule.csv,layout.gpkg > /dev/null
     done < <(find "$src/patterns" -name '*.toml' | sort)
     again=$(mktemp -d)
     trap 'rm -rf "$again"' EXIT
