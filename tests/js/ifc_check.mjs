@@ -1,12 +1,14 @@
 // Reads every layout.ifc back with web-ifc (an independent IFC reader, WASM) beside the
 // schedule.csv written with it, and checks: one element per schedule row, named and tagged by
 // its ID, with the model's owner history; its value, lot and material as the schedule gives
-// them (the standard sets are ifc_lite_check.mjs's to read); its placement at its own corner; its body one solid (a tree: trunk and canopy) whose extent (from
-// web-ifc's own meshes) is the row's box within 0.01 mm; ground works in an external space,
-// the rest in a storey; every opening a void of a plate, its outline (a 'Profile' curve) the
-// row's box, and each plate's mesh as open as its sheet (the holes are in its body); every
-// setting-out annotation's IfcIndexedPolyCurve with its arcs as IfcArcIndex through three
-// distinct points on a circle (read raw: web-ifc's typed reader has no select values).
+// them (the standard sets are ifc_lite_check.mjs's to read); its placement at its own corner;
+// its body one solid (a tree: trunk and canopy) whose extent (from web-ifc's own meshes) is the
+// row's box within 0.01 mm; each element but the openings in a space or a storey; every
+// opening a void of a plate, its outline (a 'Profile' curve) the row's box, and each plate's
+// mesh as open as its sheet (the holes are in its body); every setting-out annotation's
+// IfcIndexedPolyCurve with its arcs as IfcArcIndex through three distinct points on a circle.
+// Lines are read raw where only a few attributes are needed (and where web-ifc's typed reader
+// has no select values).
 // Prints the slowest model's time to open and mesh.
 // Usage: node ifc_check.mjs DIR... (each with layout.ifc and schedule.csv).
 import fs from 'fs';
@@ -68,7 +70,6 @@ function annotationArcs(model, problems) {
 // A local placement's frame in the model (millimetres, Z up) as [origin, x axis, y axis, z axis].
 function placementFrame(model, id, cache) {
   if (cache.has(id)) return cache.get(id);
-  // Read raw: an element's placement is its own, and the typed reader is the slow part.
   const [relTo, relative] = api.GetRawLineData(model, id).arguments;
   const parent = relTo?.value ? placementFrame(model, relTo.value, cache)
                               : [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]];
@@ -88,9 +89,8 @@ function placementFrame(model, id, cache) {
 // A point of the surface's plane (layout mm) in the model: a wall's y is up (Z), a plan's is Y.
 function modelPoint(x, y, upright) { return upright ? [x, 0, y] : [x, y, 0]; }
 
-// The sets named `names` of each element: { setName: { property: value } }. Sets and relations
-// are read raw first (their names and targets), and only the wanted sets' values typed: a model
-// has a few sets per element and the typed reader is the slow part.
+// The sets named `names` of each element: { setName: { property: value } }: every set's name
+// and every relation's target first, then only the wanted sets' values.
 function setsOf(model, names) {
   const wanted = new Map();  // set id -> its name and values
   for (const type of [W.IFCPROPERTYSET, W.IFCELEMENTQUANTITY]) {
