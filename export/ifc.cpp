@@ -236,7 +236,9 @@ class IfcModel {
 
   // The element's body as laid: one solid, whatever its shape (an L-shaped cut piece is one
   // profile, a piece in two parts one composite profile); a tree is a trunk and a canopy.
-  std::vector<int64_t> solids(const Element& e, const Rgb& colour) {
+  // `parts`: piece_outlines(e), worked out once by the caller (a cut piece's is a union).
+  std::vector<int64_t> solids(const Element& e, const std::vector<Outline>& parts,
+                              const Rgb& colour) {
     const double t = l_.thickness;
     if (e.form == ElementForm::block) {
       const double w = l_.module_w, d = l_.module_h, h = l_.level_height;
@@ -251,7 +253,6 @@ class IfcModel {
       return {trunk, g_.solid(g_.circle(*e.circle), t + 2200, e.circle->d, colour)};
     }
     const double base = e.stands ? t : 0, depth = e.stands ? 450 : t;
-    const std::vector<Outline> parts = piece_outlines(e);
     const int64_t profile = parts.empty() ? g_.rectangle(laid_bounds(e)) : g_.profile(parts);
     return {g_.solid(profile, base, depth, colour)};
   }
@@ -282,18 +283,20 @@ class IfcModel {
     const int64_t material =
         add(fmt::format("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {:g} mm", t))));
     std::vector<std::vector<Ring>> holes(l_.sheets.size());
-    std::vector<Outline> islands;  // merged openings' islands: metal the outline leaves standing
+    // Merged openings' islands, per sheet: metal the outline leaves standing.
+    std::vector<std::vector<Outline>> islands(l_.sheets.size());
     for (const Element& e : l_.elements) {
       if (e.form != ElementForm::opening || e.sheet < 0) continue;
       for (const Ring& ring : opening_rings(e)) holes[static_cast<size_t>(e.sheet)].push_back(ring);
       if (e.outline)
         for (const Outline& part : outline_parts(*e.outline))
-          for (size_t i = 1; i < part.rings.size(); ++i) islands.push_back({{part.rings[i]}, 0});
+          for (size_t i = 1; i < part.rings.size(); ++i)
+            islands[static_cast<size_t>(e.sheet)].push_back({{part.rings[i]}, 0});
     }
     for (size_t k = 0; k < l_.sheets.size(); ++k) {
       const Layout::FabricationSheet& s = l_.sheets[k];
       const int64_t where = placement_at(s.area.x, s.area.y);
-      const int64_t body = g_.body({g_.solid(sheet_profile(s, holes[k], islands), 0, t, metal)});
+      const int64_t body = g_.body({g_.solid(sheet_profile(s, holes[k], islands[k]), 0, t, metal)});
       const int64_t plate =
           add(fmt::format("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)",
                           root("sheet " + s.id), text(s.id), ref(where), ref(body), text(s.id)));
@@ -323,9 +326,7 @@ class IfcModel {
       for (const Ring& hole : holes)
         if (contains(part.rings.front(), hole.front()[0], hole.front()[1]))
           part.rings.push_back(hole);
-    for (const Outline& island : islands)
-      if (contains(rect_polygon(s.area), island.rings[0][0][0], island.rings[0][0][1]))
-        parts.push_back(island);
+    parts.insert(parts.end(), islands.begin(), islands.end());
     return g_.profile(parts);
   }
 
@@ -389,8 +390,9 @@ class IfcModel {
     const int64_t where = opening && e.sheet >= 0
                               ? placement_in_sheet(b.x, b.y, static_cast<size_t>(e.sheet))
                               : placement_at(b.x, b.y);
+    const std::vector<Outline> parts = opening ? std::vector<Outline>{} : piece_outlines(e);
     const int64_t product_shape =
-        opening ? opening_shape(e) : g_.body(solids(e, piece_colour(l_, e)));
+        opening ? opening_shape(e) : g_.body(solids(e, parts, piece_colour(l_, e)));
     const int64_t id = add(fmt::format("{}({},{},$,{},{},{},{},{})", c.entity, root(e.id),
                                        text(e.id), text(element_type_of(l_, e)), ref(where),
                                        ref(product_shape), text(e.id), c.predefined));
@@ -414,12 +416,11 @@ class IfcModel {
     const bool known =
         l_.kind->upright() || l_.kind->name() == "paving" || l_.kind->name() == "park";
     sets(id, e.id, c.entity,
-         {e.id, known, known, t, b.w, b.h, gross_area(e) / 1e6, e.area() / 1e6});
+         {e.id, known, known, t, b.w, b.h, gross_area(e, parts) / 1e6, e.area() / 1e6});
   }
   // The piece's area without what is cut away inside it (its outer rings).
-  static double gross_area(const Element& e) {
-    const std::vector<Outline> parts = piece_outlines(e);
-    if (parts.empty() || e.form == ElementForm::opening) return e.area();
+  static double gross_area(const Element& e, const std::vector<Outline>& parts) {
+    if (parts.empty()) return e.area();
     double area = 0;
     for (const Outline& part : parts) area += std::abs(signed_area(part.rings.front()));
     return area;
