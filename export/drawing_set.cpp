@@ -402,6 +402,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   colour(cr, Rgb{85, 85, 85});
   cairo_set_line_width(cr, 0.1);
   for (const InstallerPiece& p : plan.pieces) {
+    if (!v.shows(p.bounds)) continue;  // clipped away: 31 sheets would each stroke every piece
     if (p.outline) {
       ring_paths(cr, p.outline->rings, v);
       cairo_stroke(cr);
