@@ -1,5 +1,6 @@
 #include "export/gltf.h"
 
+#include <fmt/format.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -14,22 +15,14 @@
 #include "curdle/palette.h"
 #include "curdle/stop.h"
 #include "export/gltf_json.h"
+#include "export/gltf_solids.h"
+#include "export/sheet_tiles.h"
 #include "layout/piece.h"
 #include "layout/triangulation.h"
 #include "layout/union.h"
 
 namespace curdle {
 namespace {
-
-using Vec3 = std::array<float, 3>;
-
-bool upright(const Layout& l) { return l.kind->upright(); }
-
-// Layout millimetres (x, y in the plane; up out of it) to glTF metres.
-Vec3 to_gltf(const Layout& l, double x, double y, double up) {
-  if (upright(l)) return {float(x / 1000), float(y / 1000), float(up / 1000)};
-  return {float(x / 1000), float(up / 1000), float(-y / 1000)};
-}
 
 std::string fmt_value_name(const LegendEntry& e) {
   return "value " + std::to_string(e.value) + " " + e.label;
@@ -185,51 +178,6 @@ tinygltf::Value element_extras(const Element& e, const Provenance& design,
   return tinygltf::Value(o);
 }
 
-// A solid from `base` to `top` over rings with the material on their left (outer rings
-// counter-clockwise, islands clockwise, as union.h makes them): its top and bottom faces
-// (triangulated with CGAL) and a wall along every edge.
-void add_prism(const Layout& layout, const std::vector<Ring>& rings, double base, double top,
-               std::vector<Vec3>& p, std::vector<Vec3>& n, std::vector<uint32_t>& idx) {
-  // The caps share their corners between triangles (one normal a face): a perforated
-  // sheet's 8,000 openings took a third more bytes with three corners a triangle.
-  struct CornerHash {
-    size_t operator()(const std::array<double, 2>& v) const {
-      return std::hash<double>()(v[0]) * 31 + std::hash<double>()(v[1]);
-    }
-  };
-  const std::vector<std::array<std::array<double, 2>, 3>> triangles = triangulate(rings);
-  for (int face = 0; face < 2; ++face) {  // top, then bottom facing down
-    std::unordered_map<std::array<double, 2>, uint32_t, CornerHash> corner;
-    corner.reserve(triangles.size() * 2);
-    auto index_of = [&](const std::array<double, 2>& v) {
-      const auto [it, added] = corner.try_emplace(v, static_cast<uint32_t>(p.size()));
-      if (added) {
-        p.push_back(to_gltf(layout, v[0], v[1], face ? base : top));
-        n.push_back(face ? Vec3{0, -1, 0} : Vec3{0, 1, 0});
-      }
-      return it->second;
-    };
-    for (const auto& tri : triangles)
-      for (int k = 0; k < 3; ++k) idx.push_back(index_of(tri[face ? 2 - k : k]));
-  }
-  for (const Ring& ring : rings)
-    for (size_t i = 0; i < ring.size(); ++i) {
-      const auto a = ring[i], c = ring[(i + 1) % ring.size()];
-      const double dx = c[0] - a[0], dy = c[1] - a[1], len = std::hypot(dx, dy);
-      if (len == 0) continue;
-      const Vec3 normal = to_gltf(layout, dy / len * 1000, -dx / len * 1000, 0);
-      const uint32_t first = static_cast<uint32_t>(p.size());
-      for (const auto& [x, y, up] : {std::array<double, 3>{a[0], a[1], base},
-                                     {c[0], c[1], base},
-                                     {c[0], c[1], top},
-                                     {a[0], a[1], top}}) {
-        p.push_back(to_gltf(layout, x, y, up));
-        n.push_back(normal);
-      }
-      idx.insert(idx.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
-    }
-}
-
 // A glTF scene of a layout under construction: the model, the value materials, and the
 // unit boxes every box-shaped element shares.
 struct Scene {
@@ -313,36 +261,50 @@ void add_bed(Scene& sc) {
   }
 }
 
-// A perforated sheet: one solid with its openings as holes, and a named node per opening.
+// A perforated sheet: one solid with its openings as holes, drawn as the sheet less the
+// squares of its tiled openings and a shared tile per diameter in each (sheet_tiles.h), and a
+// named node per opening.
 void add_sheet(Scene& sc) {
   const Layout& layout = sc.layout;
   ModelBuilder& b = sc.b;
-  std::vector<int>& roots = sc.roots;
   const double t = sc.t;
-  // The sheet: one solid over the surface (the rectangle, or its outline) whose openings are
-  // its holes, triangulated with CGAL. Openings run clockwise, so that material lies on the
-  // left of every ring, as add_prism takes it.
-  std::vector<Ring> rings;
+  std::vector<Ring> rings;  // the surface (the rectangle, or its outline)
   for (const Outline& o :
        surfaced(Rect{0, 0, layout.width, layout.height}, layout.outside, layout.cut_away))
     rings.insert(rings.end(), o.rings.begin(), o.rings.end());
-  for (const Element& e : layout.elements) {
-    stop_point();
-    if (e.circle) rings.push_back(polygonise(*e.circle, layout.chord_tolerance));
-    if (e.outline) rings.insert(rings.end(), e.outline->rings.begin(), e.outline->rings.end());
-    if (e.circle || e.outline)
-      for (size_t k = rings.size() - (e.outline ? e.outline->rings.size() : 1); k < rings.size();
-           ++k)
-        std::reverse(rings[k].begin(), rings[k].end());
-  }
+  const SheetTiles tiles = sheet_tiles(layout, rings);
+  rings.insert(rings.end(), tiles.holes.begin(), tiles.holes.end());
+  std::vector<Ring> cut = rings;
+  cut.insert(cut.end(), tiles.squares.begin(), tiles.squares.end());
   std::vector<Vec3> p, n;
   std::vector<uint32_t> idx;
-  add_prism(layout, rings, 0, t, p, n, idx);
+  add_caps(layout, triangulate(cut), 0, t, p, n, idx);
+  add_walls(layout, rings, 0, t, p, n, idx);
   const int metal = b.add_material("aluminium sheet", Rgb{201, 205, 210}, 0.9, 0.4);
   tinygltf::Node node;
   node.name = "sheet";
   node.mesh = b.add_mesh("sheet", {b.primitive(p, n, idx, metal)});
-  roots.push_back(b.add_node(std::move(node)));
+  std::map<double, int> tile_mesh;  // by diameter
+  for (const size_t i : tiles.tiled) {
+    stop_point();
+    const Circle& c = *layout.elements[i].circle;
+    auto it = tile_mesh.find(c.d);
+    if (it == tile_mesh.end()) {
+      const OpeningTile tile = opening_tile(c.d, layout.chord_tolerance);
+      std::vector<Vec3> tp, tn;
+      std::vector<uint32_t> ti;
+      add_caps(layout, tile.triangles, 0, t, tp, tn, ti);
+      add_walls(layout, {tile.hole}, 0, t, tp, tn, ti);
+      const std::string name = fmt::format("sheet round a {:g} mm opening", c.d);
+      it = tile_mesh.emplace(c.d, b.add_mesh(name, {b.primitive(tp, tn, ti, metal)})).first;
+    }
+    tinygltf::Node part;
+    part.mesh = it->second;
+    const Vec3 at = to_gltf(layout, c.cx, c.cy, 0);
+    part.translation = {at[0], at[1], at[2]};
+    node.children.push_back(b.add_node(std::move(part)));
+  }
+  sc.roots.push_back(b.add_node(std::move(node)));
   for (const Element& e : layout.elements) {  // each opening, named, at its centre
     stop_point();
     tinygltf::Node h;

@@ -156,21 +156,32 @@ TEST(Gltf, PerforatedSheetIsASolidWithItsOpenings) {
   size_t openings = 0;
   for (const Element& e : layout.elements) openings += t.names.count(e.id);
   EXPECT_EQ(openings, layout.elements.size());
-  // The top face's area is the sheet less its openings: sum the triangles facing +Y.
-  const auto& prim = m.meshes[0].primitives[0];
-  const auto& pos = m.accessors[prim.attributes.at("POSITION")];
-  const auto& view = m.bufferViews[pos.bufferView];
-  const float* p = reinterpret_cast<const float*>(m.buffers[0].data.data() + view.byteOffset);
-  const auto& ia = m.accessors[prim.indices];
-  const auto& iv = m.bufferViews[ia.bufferView];
-  const uint32_t* idx = reinterpret_cast<const uint32_t*>(m.buffers[0].data.data() + iv.byteOffset);
+  // The top face's area is the sheet less its openings: sum the triangles facing +Y over the
+  // sheet's own mesh and the tiles it places round its round openings (sheet_tiles.h).
+  const tinygltf::Node* sheet = nullptr;
+  for (const tinygltf::Node& node : m.nodes)
+    if (node.name == "sheet") sheet = &node;
+  ASSERT_NE(sheet, nullptr);
+  std::vector<int> meshes{sheet->mesh};
+  for (int c : sheet->children) meshes.push_back(m.nodes[c].mesh);
+  EXPECT_GT(sheet->children.size(), layout.elements.size() / 2) << "most openings are tiles";
   double top = 0;
-  for (size_t i = 0; i < ia.count; i += 3) {
-    const float* a = p + 3 * idx[i];
-    const float* b = p + 3 * idx[i + 1];
-    const float* c = p + 3 * idx[i + 2];
-    if (a[1] < 0.0029 || b[1] < 0.0029 || c[1] < 0.0029) continue;
-    top += 0.5 * std::fabs((b[0] - a[0]) * (c[2] - a[2]) - (c[0] - a[0]) * (b[2] - a[2]));
+  for (const int mesh : meshes) {
+    const auto& prim = m.meshes[mesh].primitives[0];
+    const auto& pos = m.accessors[prim.attributes.at("POSITION")];
+    const auto& view = m.bufferViews[pos.bufferView];
+    const float* p = reinterpret_cast<const float*>(m.buffers[0].data.data() + view.byteOffset);
+    const auto& ia = m.accessors[prim.indices];
+    const auto& iv = m.bufferViews[ia.bufferView];
+    const uint32_t* idx =
+        reinterpret_cast<const uint32_t*>(m.buffers[0].data.data() + iv.byteOffset);
+    for (size_t i = 0; i < ia.count; i += 3) {
+      const float* a = p + 3 * idx[i];
+      const float* b = p + 3 * idx[i + 1];
+      const float* c = p + 3 * idx[i + 2];
+      if (a[1] < 0.0029 || b[1] < 0.0029 || c[1] < 0.0029) continue;
+      top += 0.5 * std::fabs((b[0] - a[0]) * (c[2] - a[2]) - (c[0] - a[0]) * (b[2] - a[2]));
+    }
   }
   // Polygons inscribed in the circles make openings a little smaller: the sheet keeps more
   // material than the exact circles leave, by at most perimeter x chord tolerance.

@@ -1,0 +1,37 @@
+// A perforated sheet in 3-D, drawn as tiles: a sheet's round openings come in a few diameters,
+// so the glTF draws each as one shared tile (the square of sheet round the opening, with its
+// hole) placed at the opening, and cuts only the tiles' squares from the sheet. Triangulating
+// the sheet with thousands of round holes was three quarters of a screen's layout.glb, in time
+// and in bytes. An opening whose square would touch another's, the sheet's edge or a merged
+// opening stays a round hole of the sheet itself, so that the solid is the same either way.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace curdle {
+
+struct SheetTiles {
+  std::vector<Ring> holes;    // cut from the sheet, with walls: merged and untiled openings
+  std::vector<Ring> squares;  // cut from the sheet without walls: the tiles fill them
+  std::vector<size_t> tiled;  // indices in layout.elements of the openings drawn as tiles
+};
+
+// Every ring runs clockwise (material on its left, the sheet round it). `sheet` is the
+// sheet's own outline (its outer rings and the islands cut from it).
+SheetTiles sheet_tiles(const Layout& layout, const std::vector<Ring>& sheet);
+
+// The tile of a round opening of diameter `d` centred on (0, 0): the triangles of its face
+// between the d x d square and the hole (counter-clockwise), and the hole, clockwise, its
+// corners no further than `tolerance` inside the circle and one at each point where the circle
+// touches the square, so that the tile meets the sheet along the square's edges.
+struct OpeningTile {
+  std::vector<std::array<std::array<double, 2>, 3>> triangles;
+  Ring hole;
+};
+OpeningTile opening_tile(double d, double tolerance);
+
+}  // namespace curdle
