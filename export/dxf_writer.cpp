@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <charconv>
 #include <stdexcept>
 
 namespace curdle {
@@ -25,9 +27,13 @@ void BufferedDxfWriter::group(int gc) const {
 }
 
 void BufferedDxfWriter::dxfReal(int gc, double value) const {
-  // Fixed with 16 decimals in the C locale (fmt never writes a decimal comma), then the zeros
-  // after the last significant decimal cut, keeping at least one: 12.5000 -> 12.5, 3.0 -> 3.0.
-  std::string text = fmt::format("{:.16f}", value);
+  // Fixed with 16 decimals in the C locale (to_chars never writes a decimal comma, and is
+  // exact without fmt's slow path for long precisions), then the zeros after the last
+  // significant decimal cut, keeping at least one: 12.5000 -> 12.5, 3.0 -> 3.0.
+  std::array<char, 400> buffer{};  // DBL_MAX has 309 digits before the point
+  const auto written = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                     std::chars_format::fixed, 16);
+  std::string text(buffer.data(), written.ptr);
   const size_t dot = text.find('.');
   if (dot != std::string::npos) {
     size_t end = dot + 2;

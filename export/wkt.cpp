@@ -1,14 +1,18 @@
 #include "export/wkt.h"
 
-#include <fmt/format.h>
-
+#include <array>
+#include <charconv>
 #include <cmath>
 
 namespace curdle {
 
 std::string mm_text(double v) {
   const double rounded = std::round(v * 1000) / 1000;
-  std::string s = fmt::format("{:.3f}", rounded == 0 ? 0.0 : rounded);  // no "-0"
+  std::array<char, 400> buffer{};  // to_chars: exact, and without fmt's slow path
+  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(),
+                                 rounded == 0 ? 0.0 : rounded,  // no "-0"
+                                 std::chars_format::fixed, 3);
+  std::string s(buffer.data(), end.ptr);
   while (s.back() == '0') s.pop_back();
   if (s.back() == '.') s.pop_back();
   return s;
