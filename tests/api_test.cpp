@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <nlohmann/json.hpp>
 
 namespace curdle::server {
@@ -50,6 +51,54 @@ TEST(Api, EndpointsAnswerJsonAndNameBadParameters) {
   const auto error = nlohmann::json::parse(api_error(413, "too large").body);
   EXPECT_EQ(error["status"], 413);
   EXPECT_EQ(error["error"], "too large");
+}
+
+// /api/field: "CRD1", the head's length, the head (generate's answer without the values,
+// padded to four bytes), then the values as raw bytes: the same cells generate sends in base64.
+TEST(Api, FieldIsTheHeadThenTheValuesAsBytes) {
+  const ApiContext c = context();
+  const Params params{{"seed", "9"}, {"field.cells", "[37,21]"}};
+  const ApiResponse field = api_field(c, params);
+  ASSERT_EQ(field.status, 200) << field.body;
+  EXPECT_EQ(field.content_type, "application/octet-stream");
+  ASSERT_GE(field.body.size(), 8u);
+  EXPECT_EQ(field.body.substr(0, 4), kFieldMagic);
+  uint32_t n = 0;
+  for (int k = 0; k < 4; ++k)
+    n |= static_cast<uint32_t>(static_cast<uint8_t>(field.body[4 + k])) << (8 * k);
+  EXPECT_EQ(n % 4, 0u);
+  const auto head = nlohmann::json::parse(field.body.substr(8, n));
+  EXPECT_FALSE(head.contains("values"));
+  EXPECT_EQ(head["value_bits"], 1) << "one curd, one bit a cell";
+  EXPECT_EQ(head["view"], nlohmann::json::parse("[0,0,37,21]"));
+  const std::string packed = field.body.substr(8 + n);
+  ASSERT_EQ(packed.size(), (37u * 21u + 7) / 8);
+  std::string values;
+  for (size_t i = 0; i < 37u * 21u; ++i)
+    values.push_back(static_cast<char>(static_cast<uint8_t>(packed[i / 8]) >> (i % 8) & 1));
+  Params with_cells = params;
+  with_cells.insert({"cells", "1"});
+  const auto generated = nlohmann::json::parse(api_generate(c, with_cells).body);
+  EXPECT_EQ(head["report"], generated["report"]);
+  // Base64 of the same bytes.
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string decoded;
+  uint32_t bits = 0;
+  int have = 0;
+  for (const char ch : generated["values"].get<std::string>()) {
+    const char* at = std::strchr(digits, ch);
+    if (ch == '=' || !at) break;
+    bits = bits << 6 | static_cast<uint32_t>(at - digits);
+    if ((have += 6) >= 8) decoded.push_back(static_cast<char>(bits >> (have -= 8) & 0xff));
+  }
+  EXPECT_EQ(values, decoded);
+  size_t dark = 0;
+  for (const char v : values) dark += v == 1;
+  EXPECT_GT(dark, 0u);
+  // Bad input is a JSON error, as generate's.
+  const ApiResponse bad = api_field(c, {{"seed", "x"}});
+  EXPECT_EQ(bad.status, 400);
+  EXPECT_NE(bad.body.find("seed"), std::string::npos) << bad.body;
 }
 
 }  // namespace

@@ -520,6 +520,14 @@ TEST_F(ServerTest, TheApisJsonIsNotCompressed) {
   EXPECT_EQ(r->status, 200);
   EXPECT_FALSE(r->has_header("Content-Encoding")) << r->get_header_value("Content-Encoding");
   EXPECT_EQ(r->body.front(), '{');
+  // Nor is the canvas's binary field.
+  auto field = client.Get("/api/field?seed=3", {{"Accept-Encoding", "gzip, deflate, br"}});
+  ASSERT_TRUE(field) << httplib::to_string(field.error());
+  EXPECT_EQ(field->status, 200);
+  EXPECT_FALSE(field->has_header("Content-Encoding"))
+      << field->get_header_value("Content-Encoding");
+  EXPECT_EQ(field->get_header_value("Content-Type"), "application/octet-stream");
+  EXPECT_EQ(field->body.substr(0, 4), "CRD1");
 }
 
 TEST_F(ServerTest, ThePageIsServedFromItsFiles) {

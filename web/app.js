@@ -1,5 +1,5 @@
 // The curdle page: edits a recipe as overrides (the same --set the command line takes), draws
-// the curd from /api/generate, selects segments snapped to cells, shows the segment's report
+// the curd from /api/field, selects segments snapped to cells, shows the segment's report
 // beside the whole field's, and links the downloads /api/export makes.
 "use strict";
 
@@ -28,7 +28,7 @@ const state = {
   field: [1, 1],
   curds: [],         // {name, colour, probabilities: [text]}
   valueColours: [],  // layout.colours, when the recipe has them
-  whole: null,       // the last /api/generate of the whole field
+  whole: null,       // the last /api/field of the whole field (values: its cells, typed)
   segment: null,     // [x, y, w, h] in cells, or null for the whole field
   segmentReport: null,
   zones: [],  // the layout's zones: the recipe's, then those added on the page
@@ -104,7 +104,6 @@ function windowText() {
 // ---- requests ----
 
 let generation = 0;
-let wholeController = null;
 
 // A request's JSON; its message thrown when it failed. `init` as fetch takes it (a POST's body).
 async function getJson(url, signal, init) {
@@ -126,24 +125,62 @@ function showError(message) {
   e.hidden = !message;
 }
 
+// The whole field comes through a worker (field_worker.js) as bytes: nothing decodes the
+// cells on this thread. A newer request makes the worker drop the older, whose promise is
+// rejected here as aborted.
+const fieldWorker = new Worker("field_worker.js");
+const fieldWaiting = new Map();
+let fieldIds = 0;
+fieldWorker.onmessage = ({ data }) => {
+  const waiting = fieldWaiting.get(data.id);
+  if (!waiting) return;
+  fieldWaiting.delete(data.id);
+  if (data.error) { waiting.reject(new Error(data.error)); return; }
+  const head = data.head;
+  // The values packed value_bits to a cell (src/server/api.h); unpacked on the GPU
+  // (field_gl.js) and one at a time under the pointer (valueAt).
+  head.values = head.value_bits ? new Uint8Array(data.buffer, data.offset) : null;
+  waiting.resolve(head);
+};
+function fetchField(url) {
+  for (const [id, waiting] of fieldWaiting) {
+    const abort = new Error("a newer field was asked for");
+    abort.name = "AbortError";
+    waiting.reject(abort);
+    fieldWaiting.delete(id);
+  }
+  const id = ++fieldIds;
+  return new Promise((resolve, reject) => {
+    fieldWaiting.set(id, { resolve, reject });
+    fieldWorker.postMessage({ id, url });
+  });
+}
+
+// From each change to its pixels drawn, as performance measures "curd-redraw" (the benchmark
+// tests/benchmarks/page_redraw.mjs reads them).
 async function regenerate() {
   const mine = ++generation;
-  if (wholeController) wholeController.abort();
-  wholeController = new AbortController();
   const started = performance.now();
-  $("status").textContent = "generating…";
+  // Said only when it takes a while: the text would flicker on every fast change, and each
+  // change of it lays out the page while the field is on its way.
+  const slow = setTimeout(() => { if (mine === generation) $("status").textContent = "generating…"; }, 150);
   try {
-    const whole = await getJson("/api/generate?" + query({ cells: "1" }), wholeController.signal);
+    const whole = await fetchField("/api/field?" + query());
+    clearTimeout(slow);
     if (mine !== generation) return;
+    performance.measure("curd-fetch", { start: started, end: performance.now() });
     state.whole = whole;
     showError("");
     fitSegmentToField();
     draw();
+    performance.measure("curd-redraw", { start: started, end: performance.now(),
+                                         detail: { cells: whole.report.cells } });
     await refreshSegment();
     const total = performance.now() - started;
     $("status").textContent =
       `${whole.report.cells.toLocaleString()} cells · server ${whole.server_ms.toFixed(1)} ms · page ${total.toFixed(0)} ms`;
   } catch (err) {
+    clearTimeout(slow);
     if (err.name === "AbortError") return;
     showError(err.message);
     $("status").textContent = "";
@@ -309,7 +346,13 @@ function renderPalette() {
     const input = document.createElement("input");
     input.type = "color";
     input.value = colour;
-    input.addEventListener("input", () => { state.valueColours[v] = input.value; schedule(); });
+    input.addEventListener("input", () => {
+      state.valueColours[v] = input.value;
+      // Redrawn at once from the cells the page holds; the server's answer (legend, downloads)
+      // follows when the picker rests.
+      if (state.whole && state.whole.legend[v]) { state.whole.legend[v].colour = input.value; recolour(); }
+      scheduleSoon();
+    });
     row.append(input, document.createTextNode(legend[v] ? legend[v].label : `value ${v}`));
     box.append(row);
   });
@@ -352,10 +395,16 @@ async function fillValueColours() {
   renderPalette();
 }
 
-let timer = null;
+// A control's change regenerates at once (an older request still running is dropped); a
+// colour being dragged waits until the picker rests.
 function schedule() {
   clearTimeout(timer);
-  timer = setTimeout(regenerate, 40);
+  regenerate();
+}
+let timer = null;
+function scheduleSoon() {
+  clearTimeout(timer);
+  timer = setTimeout(regenerate, 150);
 }
 
 // ---- search ----

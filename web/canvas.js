@@ -4,15 +4,6 @@
 
 // ---- drawing ----
 
-function decodeValues(b64, bytes) {
-  const raw = atob(b64);
-  const n = raw.length / bytes;
-  const out = new Uint16Array(n);
-  for (let i = 0; i < n; ++i)
-    out[i] = bytes === 1 ? raw.charCodeAt(i) : raw.charCodeAt(2 * i) | raw.charCodeAt(2 * i + 1) << 8;
-  return out;
-}
-
 function hexToRgb(h) {
   const n = parseInt(h.slice(1), 16);
   return [n >> 16 & 255, n >> 8 & 255, n & 255];
@@ -23,6 +14,12 @@ function fieldSize() {
   return state.whole.lattice.dimension === 1 ? [v[1], 1] : [v[2], v[3]];
 }
 
+function legendColours() {
+  return state.whole.legend.map((e) => hexToRgb(e.colour));
+}
+
+// Draws the curd (fieldGl, field_gl.js) at the size it is shown: the canvas's pixels are the
+// screen's, not the field's cells, so a 2048 x 2048 field costs no more to draw than a small one.
 function draw() {
   const canvas = $("curd");
   const whole = state.whole;
@@ -32,26 +29,23 @@ function draw() {
     return;
   }
   const [w, h] = fieldSize();
-  const values = decodeValues(whole.values, whole.value_bytes);
-  const colours = whole.legend.map((e) => hexToRgb(e.colour));
-  canvas.width = w;
-  canvas.height = h;
-  const ctx = canvas.getContext("2d");
-  const image = ctx.createImageData(w, h);
-  // Cell y grows upwards, as in the layouts; the canvas's rows grow downwards.
-  for (let y = 0; y < h; ++y)
-    for (let x = 0; x < w; ++x) {
-      const c = colours[values[y * w + x]] || [255, 0, 255];
-      const o = ((h - 1 - y) * w + x) * 4;
-      image.data[o] = c[0]; image.data[o + 1] = c[1]; image.data[o + 2] = c[2]; image.data[o + 3] = 255;
-    }
-  ctx.putImageData(image, 0, 0);
   const room = Math.min($("view").clientWidth - 4, window.innerHeight - 220);
   const scale = Math.max(1, Math.floor(Math.max(room, 200) / Math.max(w, h))) || 1;
   const cssScale = Math.max(w, h) * scale > room ? room / Math.max(w, h) : scale;
-  canvas.style.width = `${w * cssScale}px`;
-  canvas.style.height = `${Math.max(h * cssScale, h === 1 ? 40 : 0)}px`;
+  const cssW = w * cssScale, cssH = Math.max(h * cssScale, h === 1 ? 40 : 0);
+  canvas.style.width = `${cssW}px`;
+  canvas.style.height = `${cssH}px`;
+  const ratio = window.devicePixelRatio || 1;
+  canvas.width = Math.max(1, Math.round(cssW * ratio));
+  canvas.height = Math.max(1, Math.round(cssH * ratio));
+  if (!fieldGl.draw(canvas, whole.values, whole.value_bits, w, h, legendColours()))
+    showError("This browser has no WebGL 2, which the page draws the curd with.");
   placeSelection();
+}
+
+// The palette changed on the page: the same cells in new colours.
+function recolour() {
+  if (state.whole && state.whole.values) fieldGl.recolour(legendColours());
 }
 
 function placeSelection() {
@@ -181,11 +175,16 @@ function wireCanvas() {
   canvas.addEventListener("pointercancel", () => { dragFrom = null; });
 }
 
-let decodedCache = { key: null, values: null };
+// The value of cell i of the packed values (value_bits a cell, lowest bits first).
+function valueAt(i) {
+  const bits = state.whole.value_bits, bytes = state.whole.values;
+  const at = i * bits;
+  if (at >= bytes.length * 8) return null;
+  if (bits === 16) return bytes[at >> 3] | bytes[(at >> 3) + 1] << 8;
+  return bytes[at >> 3] >> (at & 7) & ((1 << bits) - 1);
+}
+
 function decodeValueAt([x, y]) {
-  const whole = state.whole;
-  if (decodedCache.key !== whole.values) decodedCache = { key: whole.values, values: decodeValues(whole.values, whole.value_bytes) };
   const [w] = fieldSize();
-  const v = decodedCache.values[y * w + x];
-  return v === undefined ? null : v;
+  return valueAt(y * w + x);
 }

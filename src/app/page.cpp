@@ -5,6 +5,7 @@
 #include "curdle/error.h"
 #include "curdle/markov.h"
 #include "curdle/overlay.h"
+#include "curdle/packed_values.h"
 #include "curdle/palette.h"
 #include "curdle/report.h"
 #include "export/measure_files.h"
@@ -171,27 +172,60 @@ ordered_json describe_run(const Run& s) {
   return j;
 }
 
-ordered_json segment_json(const Run& s, const Box& view, bool with_values) {
+namespace {
+
+// The head both answers share: the run, the view and its report.
+ordered_json segment_head(const Run& s, const Box& view, const CurdField& field) {
   const Design& d = s.recipe.design;
-  const int E = d.lattice.dimension;
-  const CurdField field = curdle(d, s.seed, view, s.generate);
   const Report report = make_report(d, s.seed, field, view);
   ordered_json j = describe_run(s);
   j["seed"] = std::to_string(s.seed);
-  j["view"] = box_json(view, E);
+  j["view"] = box_json(view, d.lattice.dimension);
   j["report"] = report_to_json(report);
-  if (with_values && E <= 2) {
-    const std::vector<uint16_t> values = values_in(field, view);
-    if (d.curds.size() <= 8) {
-      std::vector<uint8_t> bytes(values.begin(), values.end());
-      j["values"] = base64(bytes.data(), bytes.size());
-      j["value_bytes"] = 1;
-    } else {
-      j["values"] = base64(reinterpret_cast<const uint8_t*>(values.data()), values.size() * 2);
-      j["value_bytes"] = 2;
+  return j;
+}
+
+// The view's values as bytes: one a cell up to eight curds, else two, little-endian.
+std::string value_bytes(const Design& d, const CurdField& field, const Box& view, int& width) {
+  width = d.curds.size() <= 8 ? 1 : 2;
+  std::string bytes(view.cells() * static_cast<size_t>(width), '\0');
+  char* out = bytes.data();
+  scan_rows(field, view, [&](int64_t, int64_t, std::span<const uint16_t> row) {
+    for (const uint16_t v : row) {
+      *out++ = static_cast<char>(v & 0xff);
+      if (width == 2) *out++ = static_cast<char>(v >> 8);
     }
+  });
+  return bytes;
+}
+
+}  // namespace
+
+ordered_json segment_json(const Run& s, const Box& view, bool with_values) {
+  const Design& d = s.recipe.design;
+  const CurdField field = curdle(d, s.seed, view, s.generate);
+  ordered_json j = segment_head(s, view, field);
+  if (with_values && d.lattice.dimension <= 2) {
+    int width = 1;
+    const std::string bytes = value_bytes(d, field, view, width);
+    j["values"] = base64(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+    j["value_bytes"] = width;
   }
   return j;
+}
+
+PageField page_field(const Run& s, const Box& view) {
+  const Design& d = s.recipe.design;
+  const CurdField field = curdle(d, s.seed, view, s.generate);
+  PageField out{segment_head(s, view, field), {}};
+  int bits = 0;
+  if (d.lattice.dimension <= 2) {
+    PackedValues packed = pack_values(field, view);
+    bits = packed.bits;
+    out.values = std::move(packed.bytes);
+  }
+  out.head["value_bits"] = bits;
+  return out;
 }
 
 ordered_json picture_study_json(const PictureStudy& study) {

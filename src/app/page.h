@@ -31,6 +31,15 @@ nlohmann::ordered_json describe_run(const Run& run);
 // lattices, when asked) each cell's value, base64 bytes in rows from the view's corner.
 nlohmann::ordered_json segment_json(const Run& run, const Box& view, bool with_values);
 
+// The curd over `view` as the page draws it: segment_json's head without the values (with
+// "value_bits", 0 on a 3-D lattice) and the values packed as pack_values packs them
+// (curdle/packed_values.h), row by row from the view's corner, x fastest.
+struct PageField {
+  nlohmann::ordered_json head;
+  std::string values;
+};
+PageField page_field(const Run& run, const Box& view);
+
 // A picture measured and fitted: measure.json's content, and the fitted recipe's lattice,
 // curds, stages and text.
 nlohmann::ordered_json picture_study_json(const PictureStudy& study);

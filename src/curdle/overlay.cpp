@@ -119,29 +119,38 @@ void scan_rows(const CurdField& field, const Box& view,
   const CellIndex& index = field.index;
   const Lattice& l = index.lattice();
   const int64_t side = static_cast<int64_t>(l.root_side());
-  // Per-axis offsets, so that the inner loop is a sum of table entries.
+  // Per-axis offsets, so that the inner loop is a sum of table entries. A root's base is
+  // linear in its coordinates, so each axis's share of it goes into that axis's table
+  // (unsigned sums wrap alike in any order); the first axis's table carries the constant.
+  std::array<int64_t, 3> first_root{0, 0, 0};
+  for (int d = 0; d < l.dimension; ++d) first_root[d] = floor_div(view.origin[d], side);
+  const uint64_t base = index.root_base(first_root);
   std::array<std::vector<uint64_t>, 3> offset;
-  std::array<std::vector<int64_t>, 3> root;
   for (int d = 0; d < 3; ++d) {
     offset[d].resize(view.size[d]);
-    root[d].resize(view.size[d]);
     for (int64_t i = 0; i < view.size[d]; ++i) {
+      if (d >= l.dimension) {
+        offset[d][i] = d == 0 ? base : 0;
+        continue;
+      }
       const int64_t c = view.origin[d] + i;
-      const int64_t r = d < l.dimension ? floor_div(c, side) : 0;
-      root[d][i] = r;
-      offset[d][i] =
-          d < l.dimension ? index.axis_offset(d, static_cast<uint64_t>(c - r * side)) : 0;
+      Coord r = first_root;
+      r[d] = floor_div(c, side);
+      offset[d][i] = index.axis_offset(d, static_cast<uint64_t>(c - r[d] * side)) +
+                     (index.root_base(r) - base) + (d == 0 ? base : 0);
     }
   }
+  std::vector<const Bitset*> finest;
+  for (size_t c = 0; c < field.curds.size(); ++c) finest.push_back(&field.finest(c));
   std::vector<uint16_t> values(view.size[0]);
   for (int64_t z = 0; z < view.size[2]; ++z)
     for (int64_t y = 0; y < view.size[1]; ++y) {
+      const uint64_t row_start = offset[1][y] + offset[2][z];
       for (int64_t x = 0; x < view.size[0]; ++x) {
-        const uint64_t i = index.root_base({root[0][x], root[1][y], root[2][z]}) + offset[0][x] +
-                           offset[1][y] + offset[2][z];
+        const uint64_t i = offset[0][x] + row_start;
         uint16_t v = 0;
-        for (size_t c = 0; c < field.curds.size(); ++c)
-          v |= static_cast<uint16_t>(field.finest(c).test(i)) << c;
+        for (size_t c = 0; c < finest.size(); ++c)
+          v |= static_cast<uint16_t>(finest[c]->test(i)) << c;
         values[x] = v;
       }
       row(view.origin[1] + y, view.origin[2] + z, values);

@@ -200,6 +200,31 @@ ApiResponse api_generate(const ApiContext& c, const Params& params) {
   });
 }
 
+ApiResponse api_field(const ApiContext& c, const Params& params) {
+  return guarded([&] {
+    const auto start = std::chrono::steady_clock::now();
+    const RunRequest r = read_run(params, {});
+    const app::Run s = run_for(c, r);
+    const Box view = r.window.empty() ? s.recipe.design.field : s.view;
+    app::check_cells(s.recipe.design, view, c.limits.max_cells, "this request would generate");
+    app::PageField field = app::page_field(s, view);
+    field.head["command"] = app::generate_command(s);
+    field.head["server_ms"] =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::string head = field.head.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    head.append((4 - head.size() % 4) % 4, ' ');
+    ApiResponse out;
+    out.content_type = "application/octet-stream";
+    out.body.reserve(8 + head.size() + field.values.size());
+    out.body.append(kFieldMagic, 4);
+    const uint32_t n = static_cast<uint32_t>(head.size());
+    for (int k = 0; k < 4; ++k) out.body.push_back(static_cast<char>((n >> (8 * k)) & 0xff));
+    out.body += head;
+    out.body += field.values;
+    return out;
+  });
+}
+
 bool api_generate_is_light(const ApiContext& c, const Params& params) {
   try {
     const RunRequest r = read_run(params, {"cells"});

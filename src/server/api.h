@@ -46,6 +46,15 @@ ApiResponse api_recipe(const ApiContext& context);
 // GET /api/generate: seed, window, cells=0|1 and recipe keys (lattice.base=3, or
 // set=lattice.base=3): report, legend, values of the cells, command and recipe text.
 ApiResponse api_generate(const ApiContext& context, const Params& params);
+// GET /api/field: as generate with cells=1, for the page's canvas: the body is binary, so that
+// nothing encodes, compresses or parses the cells on the way (application/octet-stream, which
+// httplib never compresses):
+//   "CRD1", then n (uint32, little-endian), then n bytes of JSON: generate's answer without
+//   "values", with "value_bits" (1, 2, 4, 8 or 16 bits a cell; 0 on a 3-D lattice), padded
+//   with spaces to a multiple of four; then the values packed (curdle/packed_values.h): row
+//   by row from the view's corner, x fastest, cell i at bit i * value_bits, lowest first.
+inline constexpr const char* kFieldMagic = "CRD1";
+ApiResponse api_field(const ApiContext& context, const Params& params);
 // Whether a generate is as light as the page's own (a field of at most kLightCells cells, or
 // a request refused at once): the server runs those in a slot of their own.
 inline constexpr uint64_t kLightCells = uint64_t{1} << 18;

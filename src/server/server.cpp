@@ -2,6 +2,8 @@
 
 #include <httplib.h>
 #include <malloc.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
 
 #include <algorithm>
 #include <charconv>
@@ -122,6 +124,7 @@ struct Server::Impl {
   int bound_port = 0;
   std::counting_semaphore<64> slots;
   std::counting_semaphore<64> light_slot{1};  // a generate as small as the page's
+  std::counting_semaphore<64> field_slot{1};  // the page's canvas (/api/field)
 
   explicit Impl(ServerConfig c)
       : config(std::move(c)),
@@ -260,10 +263,15 @@ struct Server::Impl {
         [this](const httplib::Request& req, httplib::Response& res) { return screen(req, res); });
     // SO_REUSEADDR only: httplib's default SO_REUSEPORT would let a second server take the
     // same port silently, each answering half the requests.
+    // TCP_NODELAY (inherited by each connection): httplib sends the headers and the body
+    // apart, and with Nagle's algorithm the body waited for the browser's delayed ACK, 40 ms
+    // on every answer.
     http.set_socket_options([](socket_t sock) {
       int yes = 1;
       setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+      setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
     });
+    http.set_tcp_nodelay(true);
     // The recipe reads its pictures and drawings: in the light slot, so that a hundred page
     // loads decode them one at a time, never all at once.
     http.Get("/api/recipe", [this](const httplib::Request&, httplib::Response& res) {
@@ -276,6 +284,11 @@ struct Server::Impl {
       const Params params = query_params(req.target);
       run_in(api_generate_is_light(config.api, params) ? light_slot : slots, res,
              [&] { return api_generate(config.api, params); });
+    });
+    // The page's canvas has a slot of its own, so that a download or the 3-D view's model
+    // being made never holds up a redraw (a field is at most max_cells: tens of ms).
+    http.Get("/api/field", [this](const httplib::Request& req, httplib::Response& res) {
+      run_in(field_slot, res, [&] { return api_field(config.api, query_params(req.target)); });
     });
     http.Get("/api/export", [this](const httplib::Request& req, httplib::Response& res) {
       heavy(res, [&] { return api_export(config.api, query_params(req.target)); });
@@ -297,7 +310,8 @@ struct Server::Impl {
           api_error(
               get ? 404 : 405,
               get ? "no such endpoint " + req.path +
-                        "; the API has /api/recipe, /api/colours, /api/generate, /api/export, "
+                        "; the API has /api/recipe, /api/colours, /api/generate, /api/field, "
+                        "/api/export, "
                         "/api/search, /api/measure and /api/site"
                   : "the API takes GET requests only (and POST to " + std::string(kUpload) + ")"));
     };

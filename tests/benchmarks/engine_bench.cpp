@@ -178,6 +178,25 @@ void BM_Serve_Generate_256x256(benchmark::State& state) {
 }
 BENCHMARK(BM_Serve_Generate_256x256)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The page's canvas: /api/field of the fig. 8 pattern at 1024 x 1024 and 2048 x 2048 cells
+// (the largest field the server draws), the curd, its report and the values as bytes, a new
+// seed each time. The goal is under 20 ms at 2048 x 2048.
+void BM_Serve_Field(benchmark::State& state) {
+  const curdle::server::ApiContext context = api_context("fig8-segment-of-large-curd");
+  const std::string side = std::to_string(state.range(0));
+  uint64_t seed = 0;
+  size_t bytes = 0;
+  for (auto _ : state) {
+    const auto r = curdle::server::api_field(
+        context,
+        {{"seed", std::to_string(++seed)}, {"field.cells", "[" + side + "," + side + "]"}});
+    if (r.status != 200) state.SkipWithError(r.body.c_str());
+    bytes = r.body.size();
+  }
+  state.counters["response_bytes"] = static_cast<double>(bytes);
+}
+BENCHMARK(BM_Serve_Field)->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The segment's own report as the page asks for it after a drag (67 x 67 cells, no cells).
 void BM_Serve_Segment_67x67(benchmark::State& state) {
   const curdle::server::ApiContext context = api_context("fig8-segment-of-large-curd");

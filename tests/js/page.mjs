@@ -78,9 +78,49 @@ try {
   check(await page.locator('#values-table tr').count() === 3, 'the values table has a header and two values');
   check((await page.textContent('#segment-text')).includes('0,0,67,67'), 'the floor segment is preselected');
 
+  // The canvas (WebGL, field_gl.js) shows each cell in its value's colour, y up: 500 cells
+  // spread over the field, read back from the pixels at their centres. Then a colour picked in
+  // the palette redraws from the cells the page holds, in the same turn of the page's event
+  // loop: no new field is asked for until the picker rests.
+  const refreshed = page.waitForResponse((r) => r.url().includes('/api/field?') && r.url().includes('12ab34'));
+  const canvasCheck = await page.evaluate(async () => {
+    // The cells as /api/generate sends them (a byte a cell, base64), not as the canvas got them.
+    const sent = await (await fetch('/api/generate?' + query({ cells: '1' }))).json();
+    const cells = Uint8Array.from(atob(sent.values), (c) => c.charCodeAt(0));
+    const sample = () => {
+      const c = document.querySelector('#curd');
+      const copy = document.createElement('canvas');
+      copy.width = c.width;
+      copy.height = c.height;
+      const ctx = copy.getContext('2d');
+      ctx.drawImage(c, 0, 0);
+      const [w, h] = fieldSize();
+      const wrong = [];
+      for (let k = 0; k < 500; ++k) {
+        const x = (k * 7919) % w, y = (k * 104729) % h;
+        const px = Math.floor((x + 0.5) / w * c.width), py = Math.floor((h - 1 - y + 0.5) / h * c.height);
+        const got = ctx.getImageData(px, py, 1, 1).data;
+        const want = hexToRgb(state.whole.legend[cells[y * w + x]].colour);
+        if (want.some((v, i) => Math.abs(v - got[i]) > 2)) wrong.push(`${x},${y}: ${[...got].slice(0, 3)} not ${want}`);
+      }
+      return wrong;
+    };
+    const first = sample();
+    const asked = fieldIds;
+    const input = document.querySelectorAll('#palette input[type=color]')[1];
+    input.value = '#12ab34';
+    input.dispatchEvent(new Event('input'));
+    return { first, recoloured: sample(), asked: fieldIds - asked, colour: state.whole.legend[1].colour };
+  });
+  check(canvasCheck.first.length === 0, `every sampled cell is drawn in its value's colour (${canvasCheck.first.slice(0, 3).join('; ')})`);
+  check(canvasCheck.asked === 0 && canvasCheck.recoloured.length === 0 && canvasCheck.colour === '#12ab34',
+        `a palette colour redraws at once without a new field (${canvasCheck.asked} asked, ${canvasCheck.recoloured.length} cells wrong)`);
+  await refreshed;
+  await page.waitForFunction(() => state.whole.legend[1].colour === '#12ab34' && !document.querySelector('#status').textContent.includes('generating'));
+
   // A probability through its text field: the request carries the override, the report moves.
   const before = await page.textContent('#values-table');
-  const generated = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+  const generated = page.waitForResponse((r) => r.url().includes('/api/field?'));
   await page.fill('input[aria-label="Curd 0 stage 1 probability"]', '3/4');
   await page.press('input[aria-label="Curd 0 stage 1 probability"]', 'Enter');
   const response = await generated;
@@ -92,7 +132,7 @@ try {
   check((await page.textContent('#status')).includes('server'), 'the status shows the server time');
 
   // A slider sends its decimal.
-  const slid = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+  const slid = page.waitForResponse((r) => r.url().includes('/api/field?'));
   await page.locator('input[aria-label="Curd 0 stage 2 probability slider"]').fill('0.6');
   check(decodeURIComponent((await slid).url()).includes('curds.0.probabilities=["3/4","0.6","1/3"]'),
         'a slider move sends the new probability');
@@ -274,7 +314,7 @@ try {
   check(await page.locator('#measure-values tr').count() === 3, 'the picture is measured as two values');
   check(await page.locator('#measure-fit tr').count() === 1 + Number(stages), 'a fitted row per stage');
   check(await page.locator('#measure-plot').evaluate((c) => c.width > 0 && c.height > 0), 'the box counts are plotted');
-  const loaded = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+  const loaded = page.waitForResponse((r) => r.url().includes('/api/field?'));
   await page.click('#measure-load');
   const loadedUrl = decodeURIComponent((await loaded).url());
   check(loadedUrl.includes('field.cells=[240,120]'), 'loading the fit sets the field to the picture: 240 x 120 cells');
@@ -317,7 +357,7 @@ try {
     // A zone typed in metres: a drain kept free, then a search that keeps it empty.
     for (const [id, v] of [['#zone-x', '9'], ['#zone-y', '1'], ['#zone-w', '2'], ['#zone-h', '1.5']]) await page.fill(id, v);
     await page.fill('#zone-name', 'drain');
-    const zoned = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+    const zoned = page.waitForResponse((r) => r.url().includes('/api/field?'));
     await page.click('#zone-add');
     const zonedUrl = decodeURIComponent((await zoned).url()).replace(/\+/g, ' ');
     check(zonedUrl.includes('{name="drain",polygon=[[9000,1000],[11000,1000],[11000,2500],[9000,2500]],rule="exclude"}'),
@@ -345,7 +385,7 @@ try {
     check(await page.inputValue('select[aria-label="Role of layer A-OTLN"]') === 'outline' &&
           await page.inputValue('select[aria-label="Role of layer TREE_PIT"]') === 'zone',
           'the outline and the tree pit are guessed from their layers\' names');
-    const laid = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+    const laid = page.waitForResponse((r) => r.url().includes('/api/field?'));
     await page.click('#site-apply');
     const laidUrl = decodeURIComponent((await laid).url());
     check(laidUrl.includes('layout.outline=[[0,0],[14000,0],[14000,9000,-0.2'),
@@ -378,7 +418,7 @@ try {
     const table = await page.textContent('#values-table');
     check(table.includes('dark') && table.includes('mid') && !table.includes('state 3'),
           'the values table lists its states and not the code no state has');
-    const rebased = page.waitForResponse((r) => r.url().includes('/api/generate') && r.url().includes('cells=1'));
+    const rebased = page.waitForResponse((r) => r.url().includes('/api/field?'));
     await page.selectOption('#mode', 'quota');
     const rebasedUrl = decodeURIComponent((await rebased).url());
     check(rebasedUrl.includes('lattice.mode="quota"') && !rebasedUrl.includes('curds'),

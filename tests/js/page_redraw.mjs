@@ -1,0 +1,72 @@
+// How long the page takes from a change to the curd's pixels drawn, in headless Chromium over
+// loopback with the browser's own Accept-Encoding: for each recipe given, the next seed is
+// clicked ROUNDS times, 400 ms apart (so that the 3-D view's reload, 300 ms after a change, is
+// under way when the next change comes), and the page's "curd-redraw" measures (app.js: from
+// the change to the pixels drawn, gl.finish() included) are read back. Also a palette colour's
+// redraw, which takes no new data. fetch_ms is the part until the field is in the page,
+// server_ms the server's own part of that. Prints one JSON line per recipe.
+// Usage: node page_redraw.mjs CURDLE ROUNDS RECIPE...
+import { chromium } from 'playwright-core';
+import { serve } from './serve.mjs';
+
+const [curdle, roundsText, ...recipes] = process.argv.slice(2);
+const rounds = Number(roundsText);
+const browser = await chromium.launch({
+  executablePath: '/usr/bin/chromium',
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'],
+});
+const quantile = (xs, q) => [...xs].sort((a, b) => a - b)[Math.min(xs.length - 1, Math.floor(q * xs.length))];
+try {
+  for (const recipe of recipes) {
+    const { server, url } = await serve(curdle, [recipe]);
+    try {
+      const page = await browser.newPage({ viewport: { width: 1500, height: 1000 } });
+      const encodings = new Set();
+      page.on('request', async (r) => {
+        if (r.url().includes('/api/field?')) encodings.add((await r.allHeaders())['accept-encoding'] || '');
+      });
+      await page.goto(url);
+      await page.waitForSelector('body[data-ready="1"]', { timeout: 60000 });
+      const redraws = [];
+      const server_ms = [];
+      const fetch_ms = [];
+      for (let i = 0; i < rounds; ++i) {
+        const before = await page.evaluate(() => performance.getEntriesByName('curd-redraw').length);
+        await page.click('#seed-next');
+        await page.waitForFunction((n) => performance.getEntriesByName('curd-redraw').length > n, before,
+                                   { timeout: 60000 });
+        const [ms, fetched, server] = await page.evaluate(() => {
+          const all = performance.getEntriesByName('curd-redraw');
+          const fetches = performance.getEntriesByName('curd-fetch');
+          return [all[all.length - 1].duration, fetches[fetches.length - 1].duration, state.whole.server_ms];
+        });
+        redraws.push(ms);
+        fetch_ms.push(fetched);
+        server_ms.push(server);
+        await page.waitForTimeout(Number(process.env.GAP_MS || 400));
+      }
+      const recolour = await page.evaluate(() => {
+        const times = [];
+        for (let i = 0; i < 20; ++i) {
+          const t = performance.now();
+          state.whole.legend[0].colour = i % 2 ? '#ffffff' : '#eeeeee';
+          recolour();
+          times.push(performance.now() - t);
+        }
+        return times;
+      });
+      const [w, h] = await page.evaluate(() => fieldSize());
+      console.log(JSON.stringify({
+        recipe: recipe.split('/').pop(), cells: `${w}x${h}`, rounds,
+        redraw_ms_median: quantile(redraws, 0.5), redraw_ms_p90: quantile(redraws, 0.9),
+        fetch_ms_median: quantile(fetch_ms, 0.5), server_ms_median: quantile(server_ms, 0.5), recolour_ms_median: quantile(recolour, 0.5),
+        accept_encoding: [...encodings].join(' | '),
+      }));
+      await page.close();
+    } finally {
+      server.kill('SIGINT');
+    }
+  }
+} finally {
+  await browser.close();
+}
