@@ -1,9 +1,15 @@
 #include "app/generated_run.h"
 
+#include <tbb/parallel_for_each.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <filesystem>
+#include <mutex>
+#include <optional>
 
 #include "curdle/error.h"
+#include "curdle/stop.h"
 #include "export/layout_png.h"
 #include "export/mask_image.h"
 #include "export/report_json.h"
@@ -38,6 +44,46 @@ std::string single_file_outputs() {
   return names + ", layout.bin, sheets/<sheet>.dxf or .svg";
 }
 
+// The caller's observer, told one thing at a time: the outputs are written side by side.
+class SharedObserver : public RunObserver {
+ public:
+  explicit SharedObserver(RunObserver* to) : to_(to) {}
+  std::unique_ptr<ProgressTask> begin(const std::string& what) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::make_unique<Task>(to_->begin(what), mutex_);
+  }
+  void skipped(const std::string& output, uint64_t count, const std::string& unit,
+               uint64_t limit) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    to_->skipped(output, count, unit, limit);
+  }
+  void not_installed(const std::string& output, const std::string& why) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    to_->not_installed(output, why);
+  }
+
+ private:
+  class Task : public ProgressTask {
+   public:
+    Task(std::unique_ptr<ProgressTask> task, std::mutex& mutex)
+        : task_(std::move(task)), mutex_(mutex) {}
+    ~Task() override {
+      std::lock_guard<std::mutex> lock(mutex_);
+      task_.reset();
+    }
+    void update(double fraction) override {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (task_) task_->update(fraction);
+    }
+
+   private:
+    std::unique_ptr<ProgressTask> task_;
+    std::mutex& mutex_;
+  };
+  RunObserver* to_;
+  std::mutex mutex_;
+};
+
 }  // namespace
 
 GeneratedRun generate_run(Run run, bool with_layout, int threads, RunObserver* observer) {
@@ -59,7 +105,7 @@ GeneratedRun generate_run(Run run, bool with_layout, int threads, RunObserver* o
 }
 
 void write_generated(const GeneratedRun& g, const std::vector<const Output*>& outputs,
-                     OutputSink& sink, RunObserver* observer) {
+                     OutputSink& sink, RunObserver* observer, int threads) {
   for (const Output* o : outputs) {
     check_output_applies(*o, g.run);
     if (o->needs_layout && !g.layout)
@@ -67,9 +113,24 @@ void write_generated(const GeneratedRun& g, const std::vector<const Output*>& ou
                        o->name + " needs the layout, and this run was generated without it");
   }
   check_run_memory(g.run, outputs, g.layout.has_value());
-  const OutputContext context{g.run, g.field, g.report, g.layout ? &*g.layout : nullptr, observer};
+  SharedObserver shared(observer);
+  const OutputContext context{g.run, g.field, g.report, g.layout ? &*g.layout : nullptr,
+                              observer ? &shared : nullptr};
+  // The outputs read the same run and write files of their own: side by side, at most
+  // `threads` at once (the memory check above counts them all together). Each task works under
+  // this thread's stop rule, as the server sets one for a request.
+  std::vector<const Output*> others;
   for (const Output* o : outputs)
-    if (o->name != "report.json") o->write(context, sink);
+    if (o->name != "report.json") others.push_back(o);
+  StopRule* rule = current_stop_rule();
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for_each(others.begin(), others.end(), [&](const Output* o) {
+      std::optional<StopScope> scope;
+      if (rule) scope.emplace(*rule);
+      o->write(context, sink);
+    });
+  });
   for (const Output* o : outputs)
     if (o->name == "report.json") o->write(context, sink);
 }

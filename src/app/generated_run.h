@@ -27,11 +27,13 @@ struct GeneratedRun {
 // memory limit, before anything is allocated.
 GeneratedRun generate_run(Run run, bool with_layout, int threads, RunObserver* observer);
 
-// Writes `outputs` to the sink, report.json last (it describes the layout the others drew).
+// Writes `outputs` to the sink, at most `threads` side by side (0: as many as the cores),
+// report.json last (it describes the layout the others drew). The sink and the observer are
+// called from those threads: the sinks here keep what they hold under a lock.
 // InputError when one needs a layout the run was generated without; ResourceLimitError when
 // the outputs need more memory than the run may take.
 void write_generated(const GeneratedRun& generated, const std::vector<const Output*>& outputs,
-                     OutputSink& sink, RunObserver* observer);
+                     OutputSink& sink, RunObserver* observer, int threads = 0);
 
 // One output's bytes, as `curdle generate` writes that file. `name` is a file of the registry
 // (layout.svg, schedule.csv, layout.bin) or a fabrication sheet (sheets/S-R1-C1.dxf); InputError

@@ -251,14 +251,18 @@ void StagingDirectory::commit() {
 }
 
 std::vector<fs::path> StagingDirectory::files() const {
+  // By name: the outputs are written side by side, in no fixed order.
+  std::vector<std::string> names = names_;
+  std::sort(names.begin(), names.end());
   std::vector<fs::path> files;
-  for (const std::string& n : names_) files.push_back(dir_ / n);
+  for (const std::string& n : names) files.push_back(dir_ / n);
   return files;
 }
 
 void MemorySink::write(const std::string& name, const std::function<void(std::ostream&)>& fill) {
   std::ostringstream out;
   fill(out);
+  std::lock_guard<std::mutex> lock(mutex_);
   files_[name] = std::move(out).str();
 }
 

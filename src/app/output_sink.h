@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -42,7 +43,7 @@ class StagingDirectory : public OutputSink {
   void write_via_file(const std::string& name,
                       const std::function<void(const std::filesystem::path&)>& fill) override;
   void commit();
-  std::vector<std::filesystem::path> files() const;  // the targets, in the order written
+  std::vector<std::filesystem::path> files() const;  // the targets, by name
   const std::filesystem::path& dir() const { return dir_; }
   bool replaces_whole() const { return whole_; }
 
@@ -71,6 +72,7 @@ class MemorySink : public OutputSink {
   const std::map<std::string, std::string>& files() const { return files_; }
 
  private:
+  std::mutex mutex_;  // writers run side by side
   std::map<std::string, std::string> files_;
 };
 

@@ -412,7 +412,7 @@ RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outpu
                          OutputSink& sink, int threads, RunObserver* observer) {
   check_run_memory(run, outputs);
   const GeneratedRun generated = generate_run(run, builds_layout(run, outputs), threads, observer);
-  write_generated(generated, outputs, sink, observer);
+  write_generated(generated, outputs, sink, observer, threads);
   RunSummary summary{.report = generated.report};
   if (generated.layout) {
     const bool sheets = std::any_of(outputs.begin(), outputs.end(),

@@ -45,6 +45,10 @@ inline thread_local StopState stop_state;
 void ask_stop_rule();
 }  // namespace detail
 
+// The rule this thread's work runs under, or null: work handed to other threads installs it
+// there too (a StopScope per task), so that it stops as this thread's would.
+inline StopRule* current_stop_rule() { return detail::stop_state.rule; }
+
 // A point where this thread's work may be stopped: throws WorkStopped when its rule says so.
 // The rule is asked once every 256 points, so a loop may call it for every element.
 inline void stop_point() {
