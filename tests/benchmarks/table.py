@@ -1,0 +1,266 @@
+"""The benchmark table: measures every row in one run on this machine, beside the numpy peer
+(../shared/bench) where there is one, compares each row with the last committed results
+(tests/benchmarks/results.json) and fails when one is more than 20 % worse, and with --readme
+writes the table into README.md between its markers.
+
+Rows: the engine alone (in process, curdle_bench), start-up alone (`curdle --help`,
+`curdle --version`), and whole processes as a user runs them (start-up included, best of
+five), each against the peer's whole process where it has one; the page from a change to its
+pixels (headless Chromium, tests/js/page_redraw.mjs); every shipped pattern and brief whole with
+every default output (the slowest of each); the screen's layout.glb. The load of the machine is
+taken before and after, and kept with the results.
+
+Usage: table.py [--build DIR] [--peer DIR] [--accept] [--readme] [--no-peer] [--no-page]
+  --accept   keep this run as the new results (a regression is then reported, not failed)
+  --readme   write the table into README.md (between the benchmark-table markers)
+  --no-peer  leave out the peer (its cube takes half a minute and 6 GiB)
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from datetime import datetime, timezone
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+RESULTS = ROOT / "tests" / "benchmarks" / "results.json"
+BEGIN, END = "<!-- benchmark table: begin -->", "<!-- benchmark table: end -->"
+WORSE = 1.2  # a row more than 20 % worse than its committed result fails
+
+
+def load():
+    return " ".join(Path("/proc/loadavg").read_text().split()[:3])
+
+
+def best_ms(args, runs=5):
+    best = 1e18
+    for _ in range(runs):
+        t = time.perf_counter()
+        subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+        best = min(best, time.perf_counter() - t)
+    return best * 1e3
+
+
+def once_ms(args):
+    t = time.perf_counter()
+    out = subprocess.run(args, capture_output=True, text=True, check=True).stdout
+    return (time.perf_counter() - t) * 1e3, out
+
+
+def bench_ms(b):
+    return b["real_time"] * {"ms": 1, "us": 1e-3, "ns": 1e-6, "s": 1e3}[b["time_unit"]]
+
+
+class Rows:
+    def __init__(self):
+        self.rows = []
+
+    def add(self, key, what, value, unit, goal=None, better="lower", peer=None, source="",
+            against_peer=False):
+        """A row; `goal` is (operator, number) on the value, or, `against_peer`, on the ratio to
+        the peer (peer / value for times, value / peer for rates): not judged without the peer."""
+        ratio = None
+        if peer is not None and value:
+            ratio = value / peer if better == "higher" else peer / value
+        measured = ratio if against_peer else value
+        ok = None
+        if goal and measured is not None:
+            op, target = goal
+            ok = measured >= target if op == ">=" else measured < target
+        self.rows.append(dict(key=key, what=what, value=value, unit=unit, peer=peer, ratio=ratio,
+                              goal=goal, ok=ok, better=better, source=source,
+                              against_peer=against_peer))
+
+
+def engine_and_processes(build, peer_dir, rows, with_peer, work):
+    py = "/usr/bin/python3"
+    survey = Path(work, "survey")
+    survey.mkdir()
+    subprocess.run([py, str(ROOT / "patterns/sites/make_sites.py"), str(survey), "--survey"],
+                   check=True, stdout=subprocess.DEVNULL)
+    env = dict(os.environ, CURDLE_SURVEY_DIR=str(survey))
+    bench = json.loads(subprocess.run([str(build / "tests/curdle_bench"), "--benchmark_format=json"],
+                                      capture_output=True, text=True, check=True, env=env).stdout)
+    ours = {}
+    for b in bench["benchmarks"]:
+        ours.setdefault(b["name"].split("/")[0], b)
+        ours["/".join(b["name"].split("/")[:2])] = b
+    curdle = str(build / "curdle")
+    p07 = ",".join(["0.7"] * 14)
+    p08 = ",".join(["0.8"] * 5)
+    cases = Path(work, "cases")
+    cases.mkdir()
+    Path(cases, "plane.toml").write_text(
+        f'name = "plane"\n[lattice]\nbase = 2\ndimension = 2\n[[curds]]\nname = "c"\nprobabilities = [{p07}]\n')
+    Path(cases, "cube.toml").write_text(
+        f'name = "cube"\n[lattice]\nbase = 4\ndimension = 3\n[[curds]]\nname = "c"\nprobabilities = [{p08}]\n')
+    out = str(Path(work, "out"))
+    whole = {name: best_ms([curdle, "generate", str(cases / f"{name}.toml"), "--outputs",
+                            "report.json", "--out", out]) for name in ("plane", "cube")}
+    help_ms = best_ms([curdle, "--help"])
+    version_ms = best_ms([curdle, "--version"])
+    peer = {}
+    if with_peer:
+        for name, b, e, p in (("plane", 2, 2, p07), ("cube", 4, 3, p08)):
+            ms, text = once_ms([py, str(peer_dir / "peer_numpy.py"), str(b), str(e), p, "1", "1"])
+            j = json.loads(text)
+            peer[name] = dict(whole=ms, engine=(j["generate_s"] + j["boxcount_s"]) * 1e3)
+        search = json.loads(subprocess.run([py, str(peer_dir / "peer_numpy_search.py"), "4",
+                                            "2/3,1/2,1/3", "3000", "0.111", "1.5"],
+                                           capture_output=True, text=True, check=True).stdout)
+        peer["search"] = search["seeds_per_s"]
+    src = "tests/benchmarks/engine_bench.cpp"
+    for name, bm, goal, cells in (("plane", "BM_Plane_b2_K14_p07", 300, "b = 2, E = 2, 14 stages, p = 0.7 (2^28 cells)"),
+                                  ("cube", "BM_Cube_b4_K5_p08", 50, "b = 4, E = 3, 5 stages, p = 0.8 (2^30 cells)")):
+        pe = peer.get(name, {})
+        rows.add(f"{name}.engine", f"{cells}, generate + report, engine alone (in process)",
+                 bench_ms(ours[bm]), "ms", (">=", goal), peer=pe.get("engine"), source=f"`{bm}`, {src}",
+                 against_peer=True)
+        rows.add(f"{name}.whole", f"the same, whole process: `curdle generate --outputs report.json`, start-up included",
+                 whole[name], "ms", (">=", goal), peer=pe.get("whole"), source="tests/benchmarks/table.py",
+                 against_peer=True)
+    rows.add("startup.help", "start-up alone: `curdle --help`, whole process", help_ms, "ms", ("<", 20),
+             source="tests/benchmarks/table.py")
+    rows.add("startup.version", "start-up alone: `curdle --version`, whole process", version_ms, "ms", ("<", 20),
+             source="tests/benchmarks/table.py")
+    seeds = ours["BM_SeedSearch_64x64"]["seeds_per_s"]
+    rows.add("search", "seed search: 64 × 64 curds (b = 4; 2/3, 1/2, 1/3) generated and scored, seeds/s",
+             seeds, "seeds/s", (">=", 100), better="higher", peer=peer.get("search"),
+             source=f"`BM_SeedSearch_64x64`, {src}", against_peer=True)
+    rows.add("field.2048", "the page's field, `/api/field` of 2048 × 2048 cells, server alone",
+             bench_ms(ours["BM_Serve_Field/2048"]), "ms", ("<", 20), source=f"`BM_Serve_Field`, {src}")
+    glb = ours["BM_Screen_LayoutGlb"]
+    rows.add("screen.glb", f"the shipped screen's layout.glb ({glb['glb_bytes'] / 1e6:.1f} MB), recipe to bytes in process",
+             bench_ms(glb), "ms", ("<", 300), source=f"`BM_Screen_LayoutGlb`, {src}")
+    rows.add("survey", "a surveyor's DXF of 10,003 entities read and laid, to schedule.csv, in process",
+             bench_ms(ours["BM_Site_Survey_10000_entities"]), "ms", ("<", 1000),
+             source=f"`BM_Site_Survey_10000_entities`, {src}")
+    markov, overlay = bench_ms(ours["BM_Markov_Engine_4096/1"]), bench_ms(ours["BM_Markov_Engine_4096/0"])
+    rows.add("markov", "a three-state Markov curd on 4096 × 4096 against two overlaid curds, engine (ratio)",
+             markov / overlay, "×", ("<", 1.5), source=f"`BM_Markov_Engine_4096`, {src}")
+
+
+def patterns_whole(build, rows, work):
+    """Every shipped pattern and brief with every default output, best of three; the slowest."""
+    curdle = str(build / "curdle")
+    times = {}
+    for recipe in sorted(ROOT.glob("patterns/**/*.toml")) + sorted(ROOT.glob("examples/briefs/*.toml")):
+        times[recipe.relative_to(ROOT).as_posix()] = best_ms(
+            [curdle, "generate", str(recipe), "--out", str(Path(work, "p", recipe.stem))], runs=3)
+    shipped = {k: v for k, v in times.items() if k.startswith("patterns/")}
+    briefs = {k: v for k, v in times.items() if k.startswith("examples/")}
+    for key, group, what in (("patterns.slowest", shipped, "the slowest shipped pattern"),
+                             ("briefs.slowest", briefs, "the slowest brief")):
+        name = max(group, key=group.get)
+        rows.add(key, f"{what}, `curdle generate` with every default output, whole ({name})",
+                 group[name], "ms", ("<", 500), source="tests/benchmarks/table.py")
+    return times
+
+
+def page(build, rows):
+    lines = subprocess.run(["bash", str(ROOT / "tests/benchmarks/page_redraw.sh"), str(build), "10"],
+                           capture_output=True, text=True).stdout.splitlines()
+    for line in lines:
+        if not line.startswith("{"):
+            continue
+        r = json.loads(line)
+        goal = {"1024x1024": 16, "2048x2048": 50}.get(r["cells"])
+        if goal:
+            side = r["cells"].split("x")[0]
+            rows.add(f"page.{side}", f"the page, a change to the curd's pixels drawn, {r['cells']} cells "
+                     "(headless Chromium over loopback, median of 10)", r["redraw_ms_median"], "ms",
+                     ("<", goal), source="tests/benchmarks/page_redraw.sh")
+
+
+def compare(rows, previous):
+    """Rows more than 20 % worse than the committed results."""
+    old = {r["key"]: r for r in previous.get("rows", [])}
+    worse = []
+    for r in rows:
+        o = old.get(r["key"])
+        if not o:
+            continue
+        # Against the peer the ratio is the result; else the value.
+        new_v, old_v = (r["ratio"], o["ratio"]) if r.get("ratio") and o.get("ratio") else (r["value"], o["value"])
+        higher = r["better"] == "higher" or (r.get("ratio") and o.get("ratio"))
+        if (higher and new_v * WORSE < old_v) or (not higher and new_v > old_v * WORSE):
+            worse.append(f"{r['key']}: {new_v:.4g} against {old_v:.4g} last committed")
+    return worse
+
+
+def number(v, unit):
+    if unit == "seeds/s":
+        return f"{v / 1e6:.2f} M seeds/s" if v >= 1e5 else f"{v:,.0f} seeds/s"
+    if unit == "ms" and v >= 1000:
+        return f"{v / 1000:.2f} s"
+    if unit == "×":
+        return f"{v:.2f}×"
+    return f"{v:.1f} ms" if v < 100 else f"{v:.0f} ms"
+
+
+def table(result):
+    lines = [f"Measured {result['date']} on {result['machine']}, load {result['load_before']} before "
+             f"and {result['load_after']} after (`tests/benchmarks/table.py`, which writes this table):", "",
+             "| case | peer (numpy) | curdle | ratio | goal | met |", "|---|---|---|---|---|---|"]
+    for r in result["rows"]:
+        peer = number(r["peer"], r["unit"]) if r.get("peer") else ""
+        ratio = f"{r['ratio']:.0f}×" if r.get("ratio") else ""
+        goal = f"{r['goal'][0].replace('>=', '≥')} {r['goal'][1]:g}{'×' if r.get('against_peer') or r['unit'] == '×' else ' ' + r['unit']}" if r.get("goal") else ""
+        met = "" if r["ok"] is None else ("yes" if r["ok"] else "**no**")
+        lines.append(f"| {r['what']} ({r['source']}) | {peer} | {number(r['value'], r['unit'])} | {ratio} | {goal} | {met} |")
+    return "\n".join(lines)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=str(ROOT / "build/release"))
+    ap.add_argument("--peer", default=str(ROOT.parent / "shared/bench"))
+    ap.add_argument("--accept", action="store_true")
+    ap.add_argument("--readme", action="store_true")
+    ap.add_argument("--no-peer", action="store_true")
+    ap.add_argument("--no-page", action="store_true")
+    a = ap.parse_args()
+    build, peer = Path(a.build).resolve(), Path(a.peer)
+    if not (build / "tests/curdle_bench").exists():
+        sys.exit("build first: cmake --build --preset release")
+    with_peer = not a.no_peer and (peer / "peer_numpy.py").exists()
+    result = dict(date=datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+                  machine=f"{os.cpu_count()} cores", load_before=load())
+    rows = Rows()
+    with tempfile.TemporaryDirectory() as work:
+        engine_and_processes(build, peer, rows, with_peer, work)
+        result["patterns_ms"] = patterns_whole(build, rows, work)
+    if not a.no_page:
+        page(build, rows)
+    first = ROOT / "tests/benchmarks/first_run.json"
+    if first.exists():  # measured apart: it builds a fresh clone (tests/benchmarks/first_run.sh)
+        f = json.loads(first.read_text())
+        rows.add("first_run", f"README command 1 in a fresh clone: set-up, build `curdle`, the first layout "
+                 f"({f['date']}, load {f['load_before']})", f["seconds"] * 1e3, "ms", ("<", 300000),
+                 source="tests/benchmarks/first_run.sh")
+    result["load_after"] = load()
+    result["rows"] = rows.rows
+    for r in rows.rows:
+        met = "" if r["ok"] is None else ("ok" if r["ok"] else "NOT MET")
+        ratio = f"{r['ratio']:8.1f}x" if r.get("ratio") else " " * 9
+        print(f"{r['key']:18} {number(r['value'], r['unit']):>16} {ratio} {met:8} {r['what']}")
+    previous = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
+    worse = compare(rows.rows, previous)
+    for w in worse:
+        print("WORSE THAN COMMITTED (> 20 %):", w)
+    if a.accept or not previous:
+        RESULTS.write_text(json.dumps(result, indent=1, ensure_ascii=False) + "\n")
+        print(f"kept as {RESULTS.relative_to(ROOT)}")
+    if a.readme:
+        text = (ROOT / "README.md").read_text()
+        i, j = text.index(BEGIN) + len(BEGIN), text.index(END)
+        (ROOT / "README.md").write_text(text[:i] + "\n" + table(result) + "\n" + text[j:])
+        print("README.md: the benchmark table written")
+    sys.exit(1 if worse and not a.accept else 0)
+
+
+if __name__ == "__main__":
+    main()
