@@ -37,6 +37,7 @@ double srgb_to_linear(uint8_t c) {
 class ModelBuilder {
  public:
   tinygltf::Model model;
+  NodeText nodes;  // as text as they are made: the model's own stay empty
 
   ModelBuilder() {
     model.asset.version = "2.0";
@@ -120,10 +121,7 @@ class ModelBuilder {
     return static_cast<int>(model.meshes.size() - 1);
   }
 
-  int add_node(tinygltf::Node node) {
-    model.nodes.push_back(std::move(node));
-    return static_cast<int>(model.nodes.size() - 1);
-  }
+  int add_node(tinygltf::Node node) { return append_node(nodes, node); }
 };
 
 // Appends an axis-aligned box (glTF metres, min corner and size) with outward normals.
@@ -491,7 +489,12 @@ void add_provenance(Scene& sc) {
   b.model.scenes[0].extras = tinygltf::Value(scene);
 }
 
-tinygltf::Model build(const Layout& layout) {
+struct Built {
+  tinygltf::Model model;
+  NodeText nodes;
+};
+
+Built build(const Layout& layout) {
   Scene sc(layout);
   if (layout.kind->bedded()) add_bed(sc);
   if (layout.kind->ground() == Ground::sheet) {
@@ -511,19 +514,23 @@ tinygltf::Model build(const Layout& layout) {
     }
   }
   add_provenance(sc);
-  return std::move(sc.b.model);
+  return {std::move(sc.b.model), std::move(sc.b.nodes)};
 }
 
 }  // namespace
 
-void write_glb(std::ostream& out, const Layout& layout) { write_glb_container(out, build(layout)); }
+void write_glb(std::ostream& out, const Layout& layout) {
+  const Built built = build(layout);
+  write_glb_container(out, built.model, &built.nodes);
+}
 
 void write_gltf(std::ostream& json, std::ostream& bin, const std::string& bin_name,
                 const Layout& layout) {
-  const tinygltf::Model model = build(layout);
-  const auto& data = model.buffers[0].data;
+  const Built built = build(layout);
+  const auto& data = built.model.buffers[0].data;
   bin.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
-  json << gltf_json(model, bin_name) << "\n";
+  write_gltf_json(json, built.model, bin_name, built.nodes);
+  json << "\n";
 }
 
 }  // namespace curdle

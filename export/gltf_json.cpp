@@ -59,6 +59,11 @@ class JsonText {
     comma();
     fmt::format_to(std::back_inserter(text), "{}", v);
   }
+  // Text that is already JSON (a value).
+  void raw(const std::string& json) {
+    comma();
+    text += json;
+  }
   void boolean(bool v) {
     comma();
     text += v ? "true" : "false";
@@ -205,21 +210,32 @@ void meshes(JsonText& j, const tinygltf::Model& m) {
   j.close(']');
 }
 
-void nodes(JsonText& j, const tinygltf::Model& m) {
+void node(JsonText& j, const tinygltf::Node& n) {
+  j.open('{');
+  if (!n.children.empty()) j.key("children"), j.integers(n.children);
+  if (has_extras(n.extras)) j.key("extras"), value(j, n.extras);
+  if (!n.matrix.empty()) j.key("matrix"), j.numbers(n.matrix);
+  if (n.mesh >= 0) j.key("mesh"), j.integer(n.mesh);
+  if (!n.name.empty()) j.key("name"), j.string(n.name);
+  if (!n.rotation.empty()) j.key("rotation"), j.numbers(n.rotation);
+  if (!n.scale.empty()) j.key("scale"), j.numbers(n.scale);
+  if (!n.translation.empty()) j.key("translation"), j.numbers(n.translation);
+  j.close('}');
+}
+
+// With `split`, the nodes are left for the caller to put at *split, between '[' and ']'.
+void nodes(JsonText& j, const tinygltf::Model& m, size_t* split) {
   j.key("nodes");
+  if (split) {
+    j.raw("[");
+    *split = j.text.size();
+    j.text += ']';
+    return;
+  }
   j.open('[');
   for (const tinygltf::Node& n : m.nodes) {
     stop_point();
-    j.open('{');
-    if (!n.children.empty()) j.key("children"), j.integers(n.children);
-    if (has_extras(n.extras)) j.key("extras"), value(j, n.extras);
-    if (!n.matrix.empty()) j.key("matrix"), j.numbers(n.matrix);
-    if (n.mesh >= 0) j.key("mesh"), j.integer(n.mesh);
-    if (!n.name.empty()) j.key("name"), j.string(n.name);
-    if (!n.rotation.empty()) j.key("rotation"), j.numbers(n.rotation);
-    if (!n.scale.empty()) j.key("scale"), j.numbers(n.scale);
-    if (!n.translation.empty()) j.key("translation"), j.numbers(n.translation);
-    j.close('}');
+    node(j, n);
   }
   j.close(']');
 }
@@ -240,7 +256,19 @@ void scenes(JsonText& j, const tinygltf::Model& m) {
 
 }  // namespace
 
-std::string gltf_json(const tinygltf::Model& model, const std::string& buffer_uri) {
+int append_node(NodeText& nodes, const tinygltf::Node& n) {
+  stop_point();
+  JsonText j;
+  node(j, n);
+  if (nodes.count) nodes.json += ',';
+  nodes.json += j.text;
+  return static_cast<int>(nodes.count++);
+}
+
+namespace {
+
+// The model's JSON; with `split`, without its nodes, which go at *split.
+std::string model_json(const tinygltf::Model& model, const std::string& buffer_uri, size_t* split) {
   if (model.buffers.size() != 1 || !model.extensionsUsed.empty() || !model.images.empty() ||
       !model.textures.empty() || !model.animations.empty() || !model.skins.empty() ||
       !model.cameras.empty())
@@ -263,20 +291,43 @@ std::string gltf_json(const tinygltf::Model& model, const std::string& buffer_ur
   j.close(']');
   materials(j, model);
   meshes(j, model);
-  nodes(j, model);
+  nodes(j, model, split);
   scenes(j, model);
   j.close('}');
   return std::move(j.text);
 }
 
-void write_glb_container(std::ostream& out, const tinygltf::Model& model) {
+}  // namespace
+
+std::string gltf_json(const tinygltf::Model& model, const std::string& buffer_uri,
+                      const NodeText* nodes) {
+  size_t split = 0;
+  std::string json = model_json(model, buffer_uri, nodes ? &split : nullptr);
+  if (nodes) json.insert(split, nodes->json);
+  return json;
+}
+
+void write_gltf_json(std::ostream& out, const tinygltf::Model& model, const std::string& buffer_uri,
+                     const NodeText& nodes) {
+  size_t split = 0;
+  const std::string json = model_json(model, buffer_uri, &split);
+  out.write(json.data(), static_cast<std::streamsize>(split));
+  out.write(nodes.json.data(), static_cast<std::streamsize>(nodes.json.size()));
+  out.write(json.data() + split, static_cast<std::streamsize>(json.size() - split));
+}
+
+void write_glb_container(std::ostream& out, const tinygltf::Model& model, const NodeText* nodes) {
   // GLB (glTF 2.0, section 4.4): a 12-byte header, then chunks of 4-byte-aligned length: the
-  // JSON padded with spaces, the buffer padded with zeros.
-  std::string json = gltf_json(model, "");
-  json.append((4 - json.size() % 4) % 4, ' ');
+  // JSON padded with spaces, the buffer padded with zeros. The nodes' text is written where it
+  // is, never copied into the JSON.
+  size_t split = 0;
+  std::string json = model_json(model, "", nodes ? &split : nullptr);
+  const std::string& between = nodes ? nodes->json : std::string();
+  const size_t json_size = json.size() + between.size();
+  json.append((4 - json_size % 4) % 4, ' ');
   const std::vector<unsigned char>& bin = model.buffers[0].data;
   const size_t bin_padded = bin.size() + (4 - bin.size() % 4) % 4;
-  const uint64_t total = 12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin_padded);
+  const uint64_t total = 12 + 8 + json.size() + between.size() + (bin.empty() ? 0 : 8 + bin_padded);
   if (total > UINT32_MAX)
     throw std::runtime_error("the layout's glTF would be over 4 GiB, beyond what a .glb holds");
   auto u32 = [&](uint64_t v) {
@@ -287,9 +338,11 @@ void write_glb_container(std::ostream& out, const tinygltf::Model& model) {
   out.write("glTF", 4);
   u32(2);
   u32(total);
-  u32(json.size());
+  u32(json.size() + between.size());
   out.write("JSON", 4);
-  out.write(json.data(), static_cast<std::streamsize>(json.size()));
+  out.write(json.data(), static_cast<std::streamsize>(split));
+  out.write(between.data(), static_cast<std::streamsize>(between.size()));
+  out.write(json.data() + split, static_cast<std::streamsize>(json.size() - split));
   if (bin.empty()) return;
   u32(bin_padded);
   out.write("BIN\0", 4);

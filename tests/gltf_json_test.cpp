@@ -113,5 +113,28 @@ TEST(GltfJson, TheGlbIsLaidOutAsTheSpecificationAsks) {
   EXPECT_EQ(back.buffers[0].data.size(), m.buffers[0].data.size());
 }
 
+// Nodes kept as text as they are made write the same file as the model's own nodes.
+TEST(GltfJson, NodesKeptAsTextWriteTheSameBytes) {
+  const tinygltf::Model with_nodes = small_model();
+  ASSERT_FALSE(with_nodes.nodes.empty());
+  tinygltf::Model without = with_nodes;
+  without.nodes.clear();
+  NodeText text;
+  for (size_t i = 0; i < with_nodes.nodes.size(); ++i)
+    EXPECT_EQ(append_node(text, with_nodes.nodes[i]), static_cast<int>(i));
+  EXPECT_EQ(text.count, with_nodes.nodes.size());
+  EXPECT_EQ(gltf_json(without, "layout.bin", &text), gltf_json(with_nodes, "layout.bin"));
+  std::ostringstream streamed;
+  write_gltf_json(streamed, without, "layout.bin", text);
+  EXPECT_EQ(streamed.str(), gltf_json(with_nodes, "layout.bin"));
+  std::ostringstream a, b;
+  write_glb_container(a, with_nodes);
+  write_glb_container(b, without, &text);
+  EXPECT_EQ(a.str(), b.str());
+  // No nodes at all: an empty list, still JSON.
+  const NodeText none;
+  EXPECT_NO_THROW((void)nlohmann::json::parse(gltf_json(without, "", &none)));
+}
+
 }  // namespace
 }  // namespace curdle
