@@ -127,8 +127,9 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   }
   scale_bar(cr, w - kMargin - title_width(w), strip - 6, s.scale, title_width(w) - 20);
   const std::string segment = segment_text(layout);
-  title_block(cr, layout, w, h, segment.empty() ? "the whole layout" : "a segment: " + segment,
-              s.scale, 1, total, s.paper.name);
+  title_block(cr, layout, title_lines(layout), w, h,
+              segment.empty() ? "the whole layout" : "a segment: " + segment, s.scale, 1, total,
+              s.paper.name);
 }
 
 // An installer's sheet: the part of the layout in its window with every ID, match lines, row
@@ -152,17 +153,50 @@ struct InstallerDrawing {
   const InstallerPlan& plan;
   LayingExtents extents;
   std::vector<SheetContents> contents;
+  // What each sheet's view may show, by index: drawing every sheet from every element made a
+  // set's time grow with the square of its size (a million tiles: 195 s).
+  std::vector<std::vector<uint32_t>> elements_on, pieces_on, labels_on;
+  std::vector<std::string> title;  // title_lines(layout)
 };
+
+// Appends `index` to the list of every sheet whose window `bounds` meets (as View::shows
+// counts it, edges included): the sheets round the grid cells its corners fall in.
+void list_on_sheets(const InstallerPlan& plan, const Rect& bounds, uint32_t index,
+                    std::vector<std::vector<uint32_t>>& on) {
+  const size_t cols = plan.grid_columns, rows = plan.grid_rows;
+  const size_t low = sheet_holding(plan, bounds.x, bounds.y);
+  const size_t high = sheet_holding(plan, bounds.right(), bounds.top());
+  const size_t c0 = low % cols, r0 = low / cols, c1 = high % cols, r1 = high / cols;
+  for (size_t r = r0 ? r0 - 1 : 0; r <= std::min(rows - 1, r1 + 1); ++r)
+    for (size_t c = c0 ? c0 - 1 : 0; c <= std::min(cols - 1, c1 + 1); ++c) {
+      const Rect& w = plan.sheets[r * cols + c].window;
+      if (bounds.right() >= w.x && bounds.x <= w.right() && bounds.top() >= w.y &&
+          bounds.y <= w.top())
+        on[r * cols + c].push_back(index);
+    }
+}
 
 InstallerDrawing installer_set(const Layout& layout, const InstallerPlan& plan) {
   InstallerDrawing set{plan, laying_extents(layout),
                        std::vector<SheetContents>(plan.sheets.size())};
+  set.title = title_lines(layout);
   // Each piece belongs to the sheet that holds its centre, as its label does.
   auto sheet_holding_centre = [&](const Rect& b) {
     return sheet_holding(plan, b.x + b.w / 2, b.y + b.h / 2);
   };
   if (plan.sheets.empty()) return set;
-  for (const InstallerPiece& p : plan.pieces) ++set.contents[sheet_holding_centre(p.bounds)].pieces;
+  const size_t sheets = plan.sheets.size();
+  set.elements_on.resize(sheets);
+  set.pieces_on.resize(sheets);
+  set.labels_on.resize(sheets);
+  for (uint32_t i = 0; i < plan.pieces.size(); ++i) {
+    ++set.contents[sheet_holding_centre(plan.pieces[i].bounds)].pieces;
+    list_on_sheets(plan, plan.pieces[i].bounds, i, set.pieces_on);
+  }
+  for (uint32_t i = 0; i < plan.labels.size(); ++i)
+    if (plan.labels[i].sheet < sheets) set.labels_on[plan.labels[i].sheet].push_back(i);
+  for (uint32_t i = 0; i < layout.elements.size(); ++i)
+    list_on_sheets(plan, laid_bounds(layout.elements[i]), i, set.elements_on);
   const bool elements = layout.sheets.empty();  // else the pieces are fabrication sheets
   for (const Element& e : layout.elements) {
     stop_point();
@@ -223,11 +257,13 @@ void draw_sheet_key(cairo_t* cr, const SheetContents& held, bool coursed, double
 
 // Labels: inside their piece, or beside it on white with a leader that the plan keeps clear of
 // every other label and leader; leaders first, under the labels' white.
-void draw_labels(cairo_t* cr, const InstallerPlan& plan, const View& v, size_t index) {
+void draw_labels(cairo_t* cr, const InstallerPlan& plan, const View& v,
+                 const std::vector<uint32_t>& on_sheet) {
   colour(cr, kInk);
   cairo_set_line_width(cr, 0.15);
-  for (const InstallerLabel& l : plan.labels) {
-    if (l.sheet != index || l.inside) continue;
+  for (const uint32_t i : on_sheet) {
+    const InstallerLabel& l = plan.labels[i];
+    if (l.inside) continue;
     const auto [ax, ay] = leader_end(l);
     cairo_move_to(cr, v.x(l.anchor[0]), v.y(l.anchor[1]));
     cairo_line_to(cr, v.x(ax), v.y(ay));
@@ -236,8 +272,8 @@ void draw_labels(cairo_t* cr, const InstallerPlan& plan, const View& v, size_t i
     cairo_arc(cr, v.x(l.anchor[0]), v.y(l.anchor[1]), kLeaderDotMm, 0, 2 * M_PI);
     cairo_fill(cr);
   }
-  for (const InstallerLabel& l : plan.labels) {
-    if (l.sheet != index) continue;
+  for (const uint32_t i : on_sheet) {
+    const InstallerLabel& l = plan.labels[i];
     if (!l.inside) {
       colour(cr, Rgb{255, 255, 255});
       v.rect(cr, l.box);
@@ -393,6 +429,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   v.scale = plan.scale;
   v.left = kLeftMargin + 14;  // the row-number strip (installer_sheets.cpp)
   v.top = kMargin;
+  v.elements = &set.elements_on[index];
   cairo_save(cr);
   v.rect(cr, sheet.window);  // the window is the viewport, or less where it ends at a joint
   cairo_clip(cr);
@@ -401,8 +438,8 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   draw_zones(cr, layout, v, false);
   colour(cr, Rgb{85, 85, 85});
   cairo_set_line_width(cr, 0.1);
-  for (const InstallerPiece& p : plan.pieces) {
-    if (!v.shows(p.bounds)) continue;  // clipped away: 31 sheets would each stroke every piece
+  for (const uint32_t i : set.pieces_on[index]) {
+    const InstallerPiece& p = plan.pieces[i];
     if (p.outline) {
       ring_paths(cr, p.outline->rings, v);
       cairo_stroke(cr);
@@ -411,7 +448,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
     for (const Rect& r : p.parts) v.rect(cr, r), cairo_stroke(cr);
   }
   draw_boundary(cr, layout, v);
-  draw_labels(cr, plan, v, index);
+  draw_labels(cr, plan, v, set.labels_on[index]);
   cairo_restore(cr);
   // The start corner, when it is on this sheet.
   const double sx = from_right(layout.origin) ? layout.width : 0;
@@ -472,8 +509,8 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
     text(cr, info_x, strip + 8 + 4.2 * static_cast<double>(i), info[i], 2, Align::left, false,
          i == 0);
   scale_bar(cr, info_x, strip + 43, plan.scale, std::min(90.0, info_w));
-  title_block(cr, layout, w, h, "installer's sheet", plan.scale, installer_sheet_number(index),
-              total, plan.paper.name);
+  title_block(cr, layout, set.title, w, h, "installer's sheet", plan.scale,
+              installer_sheet_number(index), total, plan.paper.name);
 }
 
 cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {

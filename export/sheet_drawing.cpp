@@ -152,9 +152,9 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
     cairo_fill(cr);
   }
   if (!layout.views.empty()) return;  // blocks are drawn as their views
-  for (const Element& e : layout.elements) {
+  for_each_element(layout, v, [&](const Element& e) {
     stop_point();
-    if (!v.shows(laid_bounds(e))) continue;
+    if (!v.shows(laid_bounds(e))) return;
     const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
     if (e.circle) {
       colour(cr, c, alpha);
@@ -178,18 +178,18 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
       cairo_fill(cr);
       cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
     }
-    if (e.circle || e.outline) continue;
+    if (e.circle || e.outline) return;
     if (!e.type.empty()) {
       colour(cr, c, alpha);
       for (const Rect& r : e.shape) v.rect(cr, r), cairo_fill(cr);
-      continue;
+      return;
     }
     for (const ColouredRect& stripe : keep_stripes(layout, e)) {
       colour(cr, stripe.colour, alpha);
       v.rect(cr, stripe.rect);
       cairo_fill(cr);
     }
-  }
+  });
 }
 
 void ring_paths(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {
@@ -233,11 +233,11 @@ void hatch(cairo_t* cr, uint32_t value, const Rgb& under, double x0, double y0, 
 
 void draw_hatches(cairo_t* cr, const Layout& layout, const View& v) {
   std::map<uint32_t, std::vector<const Element*>> by_value;
-  for (const Element& e : layout.elements) {
+  for_each_element(layout, v, [&](const Element& e) {
     // Values that lay the same product share a hatch, as they share a key line.
     if (e.value != 0 && v.shows(laid_bounds(e)))
       by_value[e.type.empty() ? layout.legend[e.value].same_as : e.value].push_back(&e);
-  }
+  });
   const double x0 = v.x(v.window.x), x1 = v.x(v.window.right());
   const double y0 = v.y(v.window.top()), y1 = v.y(v.window.y);
   for (const auto& [value, elements] : by_value) {
@@ -496,13 +496,14 @@ void north_arrow(cairo_t* cr, double x, double y) {
   text(cr, x, y - 10.5, "N", 2.5, Align::centre, false, true);
 }
 
-void title_block(cairo_t* cr, const Layout& layout, double w, double h, const std::string& what,
-                 double scale, size_t number, size_t total, const std::string& paper) {
+void title_block(cairo_t* cr, const Layout& layout, const std::vector<std::string>& title_text,
+                 double w, double h, const std::string& what, double scale, size_t number,
+                 size_t total, const std::string& paper) {
   const double tw = title_width(w);
   const double x = w - kMargin - tw, y = h - kMargin - kTitleStrip;
   colour(cr, kInk);
   box(cr, x, y, tw, kTitleStrip, 0.35);
-  std::vector<std::string> lines = title_lines(layout);
+  std::vector<std::string> lines = title_text;
   lines.insert(lines.begin() + 1, what);
   // The first is bold at 2.5 mm, about 1.4 times as wide as the same at 2 mm: a long title
   // gives its description a line of its own rather than an ellipsis; long lines wrap, so that

@@ -6,6 +6,7 @@
 
 #include <cairo.h>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,9 @@ struct View {
   Rect window;
   double scale = 1;
   double left = 0, top = 0;
+  // The layout's elements that may show, by index, when the caller knows them (an installer's
+  // sheet of a large set); else every element is tested.
+  const std::vector<uint32_t>* elements = nullptr;
   double x(double v) const { return left + (v - window.x) / scale; }
   double y(double v) const { return top + (window.top() - v) / scale; }
   bool shows(const Rect& r) const {
@@ -55,6 +59,16 @@ struct View {
     cairo_rectangle(cr, x(r.x), y(r.top()), r.w / scale, r.h / scale);
   }
 };
+
+// Calls f(element) for each element of the layout that may show in `v`, shown or not.
+template <class F>
+void for_each_element(const Layout& layout, const View& v, F&& f) {
+  if (!v.elements) {
+    for (const Element& e : layout.elements) f(e);
+    return;
+  }
+  for (const uint32_t i : *v.elements) f(layout.elements[i]);
+}
 
 // The layout's pieces as vectors; `faint` washes the colours out so that labels read over them.
 // Installer's sheets draw pieces faint, so that IDs read on them; their keys show them so.
@@ -112,9 +126,11 @@ void setting_out(cairo_t* cr, const Layout& layout, const View& v);
 
 // The title block's width on a sheet `w` mm wide: 150 mm, less on narrow portrait sheets.
 double title_width(double w);
-// The title block at the right of the strip: the title lines, what the sheet shows, the scale
-// and the sheet number.
-void title_block(cairo_t* cr, const Layout& layout, double w, double h, const std::string& what,
-                 double scale, size_t number, size_t total, const std::string& paper);
+// The title block at the right of the strip: the title lines (title_lines(layout), worked out
+// once for a set: they count the layout's cut pieces), what the sheet shows, the scale and the
+// sheet number.
+void title_block(cairo_t* cr, const Layout& layout, const std::vector<std::string>& title_text,
+                 double w, double h, const std::string& what, double scale, size_t number,
+                 size_t total, const std::string& paper);
 
 }  // namespace curdle::sheet_drawing

@@ -36,8 +36,10 @@ function draw() {
   canvas.style.width = `${cssW}px`;
   canvas.style.height = `${cssH}px`;
   const ratio = window.devicePixelRatio || 1;
-  canvas.width = Math.max(1, Math.round(cssW * ratio));
-  canvas.height = Math.max(1, Math.round(cssH * ratio));
+  const pw = Math.max(1, Math.round(cssW * ratio)), ph = Math.max(1, Math.round(cssH * ratio));
+  // Set only when it changes: setting a canvas's size, even to the same, makes a new buffer.
+  if (canvas.width !== pw) canvas.width = pw;
+  if (canvas.height !== ph) canvas.height = ph;
   if (!fieldGl.draw(canvas, whole.values, whole.value_bits, w, h, legendColours()))
     showError("This browser has no WebGL 2, which the page draws the curd with.");
   placeSelection();
