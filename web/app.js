@@ -156,18 +156,32 @@ function fetchField(url) {
   });
 }
 
+// One field at a time: a change while one is on its way asks for another once it is drawn,
+// with the controls as they are then. A discrete change goes at once; a slider's stream of
+// changes makes as many requests as the server can answer, never a queue of stale ones.
+let fieldBusy = false, fieldAgain = false;
+function fieldDone() {
+  fieldBusy = false;
+  if (fieldAgain) {
+    fieldAgain = false;
+    regenerate();
+  }
+}
+
 // From each change to its pixels drawn, as performance measures "curd-redraw" (the benchmark
 // tests/benchmarks/page_redraw.mjs reads them).
 async function regenerate() {
+  if (fieldBusy) { fieldAgain = true; return; }
+  fieldBusy = true;
   const mine = ++generation;
   const started = performance.now();
   // Said only when it takes a while: the text would flicker on every fast change, and each
   // change of it lays out the page while the field is on its way.
   const slow = setTimeout(() => { if (mine === generation) $("status").textContent = "generating…"; }, 150);
+  let whole;
   try {
-    const whole = await fetchField("/api/field?" + query());
+    whole = await fetchField("/api/field?" + query());
     clearTimeout(slow);
-    if (mine !== generation) return;
     performance.measure("curd-fetch", { start: started, end: performance.now() });
     state.whole = whole;
     showError("");
@@ -175,15 +189,24 @@ async function regenerate() {
     draw();
     performance.measure("curd-redraw", { start: started, end: performance.now(),
                                          detail: { cells: whole.report.cells } });
+  } catch (err) {
+    clearTimeout(slow);
+    if (err.name !== "AbortError") {
+      showError(err.message);
+      $("status").textContent = "";
+    }
+    fieldDone();
+    return;
+  }
+  fieldDone();
+  try {
     await refreshSegment();
+    if (mine !== generation) return;
     const total = performance.now() - started;
     $("status").textContent =
       `${whole.report.cells.toLocaleString()} cells · server ${whole.server_ms.toFixed(1)} ms · page ${total.toFixed(0)} ms`;
   } catch (err) {
-    clearTimeout(slow);
-    if (err.name === "AbortError") return;
-    showError(err.message);
-    $("status").textContent = "";
+    if (err.name !== "AbortError") showError(err.message);
   }
 }
 
@@ -395,7 +418,7 @@ async function fillValueColours() {
   renderPalette();
 }
 
-// A control's change regenerates at once (an older request still running is dropped); a
+// A control's change regenerates at once (or as soon as the field on its way is drawn); a
 // colour being dragged waits until the picker rests.
 function schedule() {
   clearTimeout(timer);
