@@ -1,9 +1,10 @@
 #include "app/generated_run.h"
 
-#include <tbb/parallel_for_each.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <mutex>
 #include <optional>
@@ -122,13 +123,25 @@ void write_generated(const GeneratedRun& g, const std::vector<const Output*>& ou
   std::vector<const Output*> others;
   for (const Output* o : outputs)
     if (o->name != "report.json") others.push_back(o);
+  // The dearest writers first (measured on the briefs: each a tenth of a second or more), so
+  // that no long one starts last while the other threads sit idle.
+  static const std::vector<std::string> dearest = {"layout.pdf", "layout.gpkg", "layout.glb",
+                                                   "layout.ifc", "layout.png",  "sheets",
+                                                   "layout.dxf", "install.svg", "schedule.csv"};
+  auto rank = [&](const Output* o) {
+    return std::find(dearest.begin(), dearest.end(), o->name) - dearest.begin();
+  };
+  std::stable_sort(others.begin(), others.end(),
+                   [&](const Output* a, const Output* b) { return rank(a) < rank(b); });
   StopRule* rule = current_stop_rule();
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  std::atomic<size_t> next{0};
   arena.execute([&] {
-    tbb::parallel_for_each(others.begin(), others.end(), [&](const Output* o) {
+    // Each of the arena's threads takes the next output in that order until none is left.
+    tbb::parallel_for(0, arena.max_concurrency(), [&](int) {
       std::optional<StopScope> scope;
       if (rule) scope.emplace(*rule);
-      o->write(context, sink);
+      for (size_t i = next++; i < others.size(); i = next++) others[i]->write(context, sink);
     });
   });
   for (const Output* o : outputs)
