@@ -12,6 +12,7 @@
 #include "curdle/error.h"
 #include "curdle/stop.h"
 #include "export/course_marks.h"
+#include "export/installer_drawing.h"
 #include "export/layout_png.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
@@ -130,93 +131,6 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   title_block(cr, layout, title_lines(layout), w, h,
               segment.empty() ? "the whole layout" : "a segment: " + segment, s.scale, 1, total,
               s.paper.name);
-}
-
-// An installer's sheet: the part of the layout in its window with every ID, match lines, row
-// and column numbers, a key plan and the start corner.
-// What one installer's sheet holds: its pieces (those whose centre it shows) and their rows
-// and columns.
-struct SheetContents {
-  size_t pieces = 0;
-  int64_t row0 = INT64_MAX, row1 = INT64_MIN, column0 = INT64_MAX, column1 = INT64_MIN;
-  // The key: the elements whose centre the sheet shows, by what they are made of, as drawn.
-  struct KeyLine {
-    std::vector<Rgb> swatch;  // one colour, or keep mode's stripes
-    uint32_t value = 0;       // its hatch on a coursed set
-    size_t count = 0;
-  };
-  std::map<std::pair<std::string, uint32_t>, KeyLine> key;  // by material, then value
-};
-
-// The plan and what every sheet reads from the whole layout, worked out once for the set.
-struct InstallerDrawing {
-  const InstallerPlan& plan;
-  LayingExtents extents;
-  std::vector<SheetContents> contents;
-  // What each sheet's view may show, by index: drawing every sheet from every element made a
-  // set's time grow with the square of its size (a million tiles: 195 s).
-  std::vector<std::vector<uint32_t>> elements_on, pieces_on, labels_on;
-  std::vector<std::string> title;  // title_lines(layout)
-};
-
-// Appends `index` to the list of every sheet whose window `bounds` meets (as View::shows
-// counts it, edges included): the sheets round the grid cells its corners fall in.
-void list_on_sheets(const InstallerPlan& plan, const Rect& bounds, uint32_t index,
-                    std::vector<std::vector<uint32_t>>& on) {
-  const size_t cols = plan.grid_columns, rows = plan.grid_rows;
-  const size_t low = sheet_holding(plan, bounds.x, bounds.y);
-  const size_t high = sheet_holding(plan, bounds.right(), bounds.top());
-  const size_t c0 = low % cols, r0 = low / cols, c1 = high % cols, r1 = high / cols;
-  for (size_t r = r0 ? r0 - 1 : 0; r <= std::min(rows - 1, r1 + 1); ++r)
-    for (size_t c = c0 ? c0 - 1 : 0; c <= std::min(cols - 1, c1 + 1); ++c) {
-      const Rect& w = plan.sheets[r * cols + c].window;
-      if (bounds.right() >= w.x && bounds.x <= w.right() && bounds.top() >= w.y &&
-          bounds.y <= w.top())
-        on[r * cols + c].push_back(index);
-    }
-}
-
-InstallerDrawing installer_set(const Layout& layout, const InstallerPlan& plan) {
-  InstallerDrawing set{plan, laying_extents(layout),
-                       std::vector<SheetContents>(plan.sheets.size())};
-  set.title = title_lines(layout);
-  // Each piece belongs to the sheet that holds its centre, as its label does.
-  auto sheet_holding_centre = [&](const Rect& b) {
-    return sheet_holding(plan, b.x + b.w / 2, b.y + b.h / 2);
-  };
-  if (plan.sheets.empty()) return set;
-  const size_t sheets = plan.sheets.size();
-  set.elements_on.resize(sheets);
-  set.pieces_on.resize(sheets);
-  set.labels_on.resize(sheets);
-  for (uint32_t i = 0; i < plan.pieces.size(); ++i) {
-    ++set.contents[sheet_holding_centre(plan.pieces[i].bounds)].pieces;
-    list_on_sheets(plan, plan.pieces[i].bounds, i, set.pieces_on);
-  }
-  for (uint32_t i = 0; i < plan.labels.size(); ++i)
-    if (plan.labels[i].sheet < sheets) set.labels_on[plan.labels[i].sheet].push_back(i);
-  for (uint32_t i = 0; i < layout.elements.size(); ++i)
-    list_on_sheets(plan, laid_bounds(layout.elements[i]), i, set.elements_on);
-  const bool elements = layout.sheets.empty();  // else the pieces are fabrication sheets
-  for (const Element& e : layout.elements) {
-    stop_point();
-    SheetContents& c = set.contents[sheet_holding_centre(laid_bounds(e))];
-    if (elements) {
-      c.row0 = std::min(c.row0, e.row), c.row1 = std::max(c.row1, e.row);
-      c.column0 = std::min(c.column0, e.column), c.column1 = std::max(c.column1, e.column);
-    }
-    // Values that lay the same product are one line, hatched alike (LegendEntry::same_as).
-    const uint32_t value = e.type.empty() ? layout.legend[e.value].same_as : 0;
-    SheetContents::KeyLine& line = c.key[{piece_material(layout, e), value}];
-    if (line.count++ == 0) {
-      const LegendEntry& l = layout.legend[e.value];
-      line.value = l.same_as;
-      line.swatch = e.type.empty() && layout.combine == Combine::keep && l.parts.size() > 1
-                        ? l.parts
-                        : std::vector<Rgb>{piece_colour(layout, e)};
-    }
-  }
-  return set;
 }
 
 // The key of one installer's sheet: a swatch as drawn, the material and how many of it the
@@ -417,6 +331,8 @@ std::vector<std::string> sheet_setting_out(const Layout& layout, const Rect& win
   return lines;
 }
 
+// An installer's sheet: the part of the layout in its window with every ID, match lines, row
+// and column numbers, a key plan and the start corner.
 void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDrawing& set,
                           size_t index, size_t total) {
   const InstallerPlan& plan = set.plan;
