@@ -14,7 +14,7 @@ set(CURDLE_PUBLIC_HEADERS
   src/curdle/overlay.h src/curdle/probability.h
   src/curdle/report.h src/curdle/search.h src/curdle/stop.h
   src/layout/drawing_sheet.h src/layout/element_id.h src/layout/installer_sheets.h
-  src/layout/layout.h src/layout/layout_kind.h src/layout/planting_spec.h
+  src/layout/layout.h src/layout/layout_kind.h src/layout/planting_spec.h src/layout/surface_frame.h
   src/recipe/recipe.h src/recipe/recipe_files.h
   export/atomic_file.h export/image.h export/measure_files.h export/report_json.h
   export/schedule.h export/wkt.h)
@@ -25,7 +25,7 @@ target_compile_definitions(curdle_library PRIVATE CURDLE_VERSION="${PROJECT_VERS
 # Every object of the layers, so that the library holds what its headers declare. (CMake's
 # WHOLE_ARCHIVE feature refuses libraries that also come in as another's dependency.)
 target_link_libraries(curdle_library
-  PRIVATE -Wl,--whole-archive curdle_app curdle_export curdle_recipe curdle_site curdle_layout curdle_core
+  PRIVATE -Wl,--whole-archive curdle_app curdle_export curdle_recipe curdle_site curdle_building curdle_layout curdle_core
           -Wl,--no-whole-archive curdle_warnings
   PUBLIC nlohmann_json::nlohmann_json)
 target_include_directories(curdle_library PUBLIC

@@ -14,6 +14,7 @@
 #include "curdle/markov.h"
 #include "curdle/palette.h"
 #include "curdle/stop.h"
+#include "export/framed_boxes.h"
 #include "export/gltf_json.h"
 #include "export/gltf_solids.h"
 #include "export/sheet_tiles.h"
@@ -213,6 +214,17 @@ struct Scene {
     tinygltf::Node n;
     n.translation = {lo[0] + size[0] / 2.0, lo[1] + size[1] / 2.0, lo[2] + size[2] / 2.0};
     n.scale = {size[0], size[1], size[2]};
+    return n;
+  }
+  // A node that carries a unit box to a box of a building (framed_boxes.h): turned about the
+  // vertical to lie along its façade.
+  tinygltf::Node framed_node(const FramedBox& f, int mat) {
+    tinygltf::Node n;
+    n.translation = {f.centre[0] / 1000, f.centre[2] / 1000, -f.centre[1] / 1000};
+    const double turn = std::atan2(f.along[1], f.along[0]);
+    n.rotation = {0, std::sin(turn / 2), 0, std::cos(turn / 2)};
+    n.scale = {f.length / 1000, f.height / 1000, f.depth / 1000};
+    n.mesh = unit_box(mat);
     return n;
   }
   tinygltf::Node box_node(const Rect& r, double base, double height, int mat) {
@@ -471,6 +483,39 @@ void add_pieces(Scene& sc) {
   }
 }
 
+// A building's units, each placed through the frames of its façades (a unit that turns a
+// corner in one box on each face), and the mortar behind them, set back from the face.
+void add_framed_pieces(Scene& sc) {
+  const Layout& layout = sc.layout;
+  const double t = sc.t;
+  const int mortar = sc.b.add_material("mortar", layout.joint_colour, 0, 1);
+  const double kSetBack = 8;  // a recessed joint, mm
+  int part = 0;
+  for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, layout.holes()))
+    for (const FramedBox& f : framed_boxes(layout, r, kSetBack, t, 600)) {
+      tinygltf::Node n = sc.framed_node(f, mortar);
+      n.name = "mortar-" + std::to_string(part++);
+      sc.roots.push_back(sc.b.add_node(std::move(n)));
+    }
+  for (const Element& e : layout.elements) {
+    stop_point();
+    std::vector<FramedBox> boxes;
+    for (const Rect& r : e.shape) {
+      const std::vector<FramedBox> more = framed_boxes(layout, r, 0, t);
+      boxes.insert(boxes.end(), more.begin(), more.end());
+    }
+    const int mat = sc.material[e.value];
+    if (boxes.size() == 1) {
+      sc.add_named(e, sc.framed_node(boxes[0], mat));
+      continue;
+    }
+    tinygltf::Node parent;  // a unit that turns a corner, or cut at an opening
+    for (const FramedBox& f : boxes)
+      parent.children.push_back(sc.b.add_node(sc.framed_node(f, mat)));
+    sc.add_named(e, std::move(parent));
+  }
+}
+
 // The scene's extras: how to reproduce it.
 void add_provenance(Scene& sc) {
   const Provenance& design = sc.design;
@@ -497,7 +542,9 @@ struct Built {
 Built build(const Layout& layout) {
   Scene sc(layout);
   if (layout.kind->bedded()) add_bed(sc);
-  if (layout.kind->ground() == Ground::sheet) {
+  if (!layout.frames.empty()) {
+    add_framed_pieces(sc);
+  } else if (layout.kind->ground() == Ground::sheet) {
     add_sheet(sc);
   } else {
     switch (layout.kind->depiction()) {

@@ -1,7 +1,9 @@
 #include "export/report_json.h"
 
 #include <cmath>
+#include <map>
 
+#include "export/framed_boxes.h"
 #include "export/json_number.h"
 
 namespace curdle {
@@ -135,6 +137,52 @@ uint64_t cut_elements(const Layout& layout) {
   return cut;
 }
 
+namespace {
+
+// A building's façades: where each lies, its size, openings and units (a corner unit on the
+// face that holds its middle), by value.
+json facades_json(const Layout& layout) {
+  std::map<const SurfaceFrame*, std::vector<uint64_t>> units;
+  for (const Element& e : layout.elements) {
+    auto& counts = units[framed_facade(layout, e)];
+    counts.resize(layout.legend.size());
+    ++counts[e.value];
+  }
+  json out = json::array();
+  for (const SurfaceFrame& f : layout.frames) {
+    double open = 0;
+    size_t openings = 0;
+    for (size_t i = 0; i < layout.openings_given; ++i) {
+      const Rect& o = layout.openings[i];
+      if (o.x >= f.start - 1e-6 && o.right() <= f.start + f.length + 1e-6)
+        ++openings, open += o.area();
+    }
+    json by_value = json::array();
+    uint64_t total = 0;
+    const std::vector<uint64_t>& counts = units[&f];
+    for (uint32_t v = 0; v < counts.size(); ++v) {
+      total += counts[v];
+      by_value.push_back({{"value", v}, {"label", layout.legend[v].label}, {"units", counts[v]}});
+    }
+    out.push_back({{"name", f.name},
+                   {"index", f.index},
+                   {"facing_degrees", rounded(f.facing, 3)},
+                   {"start_mm", f.start},
+                   {"length_mm", f.length},
+                   {"height_mm", layout.height},
+                   {"curved", f.bulge != 0},
+                   {"area_m2", rounded(f.length * layout.height / 1e6, 6)},
+                   {"openings", openings},
+                   {"open_area_m2", rounded(open / 1e6, 6)},
+                   {"turn_at_end_degrees", rounded(f.turn_at_end, 3)},
+                   {"units", total},
+                   {"units_by_value", by_value}});
+  }
+  return out;
+}
+
+}  // namespace
+
 json report_to_json(const Report& report, const Layout& layout) {
   json j = report_to_json(report);
   j["layout"] = {{"element_type", layout.element_type}, {"width_mm", layout.width},
@@ -143,6 +191,7 @@ json report_to_json(const Report& report, const Layout& layout) {
                  {"open_area", layout.open_area},       {"notes", layout.notes},
                  {"rule_violations", layout.violations}};
   if (!layout.site.empty()) j["layout"]["site"] = layout.site;
+  if (!layout.frames.empty()) j["layout"]["facades"] = facades_json(layout);
   if (!layout.sheets.empty()) {
     json sheets = json::array();
     for (const Layout::FabricationSheet& sheet : layout.sheets) {

@@ -10,6 +10,7 @@
 #include "curdle/markov.h"
 #include "curdle/palette.h"
 #include "export/csv_field.h"
+#include "export/framed_boxes.h"
 #include "export/wkt.h"
 #include "layout/piece.h"
 #include "layout/union.h"
@@ -42,6 +43,10 @@ std::string stock_size_of(const Layout& layout, const Element& e) {
 }
 
 std::string lot_text(const Layout& layout, const Element& e, size_t index) {
+  // A building's units are lotted by façade (a corner unit by the face holding its middle), so
+  // that lots.csv gives each façade's quantities, unless the recipe asks for lots by size.
+  if (!layout.frames.empty() && layout.ordering.lot_rows == 0 && layout.ordering.lot_size == 0)
+    return framed_facade(layout, e)->name;
   // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in.
   return e.sheet >= 0 ? layout.sheets[static_cast<size_t>(e.sheet)].id
                       : std::to_string(lot_of(e, index, layout.ordering));
@@ -89,6 +94,12 @@ ScheduleRow schedule_row(const Layout& layout, size_t index) {
     r.outlines.push_back({{polygonise(*e.circle, layout.chord_tolerance)}, e.area()});
   else if (r.outlines.empty())
     r.outlines.push_back({{rect_polygon(b)}, b.area()});
+  if (!layout.frames.empty()) {
+    const BuildingPoint p = framed_centre(layout, e);
+    r.strip_x = r.x, r.strip_y = r.y;
+    r.x = p[0], r.y = p[1], r.z = p[2];
+    r.facade = framed_facade(layout, e)->name;
+  }
   if (e.circle) {
     r.opening_x = e.circle->cx;
     r.opening_y = e.circle->cy;
@@ -138,10 +149,14 @@ void append_row(std::string& buffer, const ScheduleRow& r, const CurdColumns& cu
                  optional_mm(r.depth), area_m2(r.area), optional_mm(r.stock_width),
                  optional_mm(r.stock_height), r.value);
   curds.append(buffer, r.value);
-  fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{},{},{},{}\r\n",
-                 csv_field(r.element_type), r.colour, csv_field(r.material), r.cut ? 1 : 0,
+  fmt::format_to(std::back_inserter(buffer), ",{},{},{},{},{},{},{},{}", csv_field(r.element_type),
+                 r.colour, csv_field(r.material), r.cut ? 1 : 0,
                  csv_field(outlines_wkt(r.outlines)), optional_mm(r.opening_x),
                  optional_mm(r.opening_y), optional_mm(r.opening_diameter));
+  if (r.strip_x)
+    fmt::format_to(std::back_inserter(buffer), ",{},{},{}", csv_field(r.facade),
+                   mm_text(*r.strip_x), optional_mm(r.strip_y));
+  buffer += "\r\n";
 }
 
 }  // namespace
@@ -159,7 +174,9 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
   }
   header +=
       ",element_type,colour,material,cut,shape_wkt,opening_x_mm,opening_y_mm,"
-      "opening_diameter_mm\r\n";
+      "opening_diameter_mm";
+  if (!layout.frames.empty()) header += ",facade,strip_x_mm,strip_y_mm";
+  header += "\r\n";
   out << header;
   std::string buffer;
   buffer.reserve(1 << 20);

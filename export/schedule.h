@@ -8,6 +8,9 @@
 //                   shape_wkt, the piece as laid in WKT (a POLYGON, a MULTIPOLYGON for a piece
 //                   in parts; a circle within the chord tolerance), for every piece, so that
 //                   GIS reads every row as a feature; an opening's centre and diameter;
+//                   A building's (layout frames) adds facade, strip_x_mm and strip_y_mm: x, y, z
+//                   are then the middle of the unit's outer face in the building (x east, y
+//                   north, z up), and shape_wkt its outline on the unrolled strip;
 //   quantities.csv  per element type, material, colour and stock size (diameter for openings):
 //                   count, whole and cut, laid area, stock area, spare, count and area to buy,
 //                   pack size and packs. Every piece takes one stock element;
@@ -49,6 +52,10 @@ struct ScheduleRow {
   bool cut = false;
   std::vector<Outline> outlines;  // the piece as laid, for shape_wkt: every piece has one
   std::optional<double> opening_x, opening_y, opening_diameter;
+  // A building's unit: its façade, and where it lies on the unrolled strip (its bounding box's
+  // corner there); x, y, z are then the middle of its outer face in the building, mm.
+  std::string facade;
+  std::optional<double> strip_x, strip_y;
 };
 ScheduleRow schedule_row(const Layout& layout, size_t index);
 // A piece's area in m² as the schedules give it: to the mm², so that schedule.csv's rows add up

@@ -31,9 +31,10 @@ TEST(Facades, TheLShapedPavilionUnrollsAnticlockwiseFromItsStart) {
   EXPECT_NEAR(f[0].facing, 180, 1e-9);
   EXPECT_NEAR(f[1].facing, 90, 1e-9);
   // The bite: the N face at 6 m turns into the building at its end (an inner corner).
-  EXPECT_TRUE(f[0].outer_corner_at_end);
-  EXPECT_FALSE(f[2].outer_corner_at_end);
-  EXPECT_TRUE(f[3].outer_corner_at_end);
+  EXPECT_NEAR(f[0].turn_at_end, 90, 1e-9);
+  EXPECT_NEAR(f[2].turn_at_end, -90, 1e-9);
+  EXPECT_NEAR(f[3].turn_at_end, 90, 1e-9);
+  EXPECT_NEAR(f[5].turn_at_end, 90, 1e-9);  // the closing corner, back into the first
 }
 
 TEST(Facades, AStartElsewhereAndAClockwisePlanGiveTheSameFacades) {

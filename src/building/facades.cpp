@@ -15,9 +15,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-[[noreturn]] void refuse(const std::string& what) {
+[[noreturn]] void refuse(const std::string& what, const char* key = "plan") {
   SourceLocation where;
-  where.key = "plan";
+  where.key = key;
   throw InputError(where, what);
 }
 
@@ -54,6 +54,24 @@ double bearing_of(double radians) {
   double b = 90 - radians * 180 / kPi;
   b = std::fmod(b, 360);
   return b < 0 ? b + 360 : b;
+}
+
+// Whether segments ab and cd cross or touch (other than sharing nothing).
+bool segments_cross(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                    const std::array<double, 2>& c, const std::array<double, 2>& d) {
+  auto side = [](const std::array<double, 2>& p, const std::array<double, 2>& q,
+                 const std::array<double, 2>& r) {
+    const double x = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    return x > 0 ? 1 : x < 0 ? -1 : 0;
+  };
+  return side(a, b, c) * side(a, b, d) <= 0 && side(c, d, a) * side(c, d, b) <= 0;
+}
+
+// The turn from the direction `arriving` to `leaving`, degrees in (-180, 180]: positive
+// anticlockwise, which on an anticlockwise plan is an outer corner.
+double turn_between(double arriving, double leaving) {
+  double t = std::remainder(leaving - arriving, 2 * kPi) * 180 / kPi;
+  return t <= -180 ? t + 360 : t;
 }
 
 }  // namespace
@@ -113,7 +131,7 @@ std::vector<Facade> unroll_plan(const Contour& given, size_t start, double short
     // an outer corner, right an inner one.
     const ContourVertex& c = plan[(i + 2) % plan.size()];
     const double arriving = tangent(a, b, true), leaving = tangent(b, c, false);
-    f.outer_corner_at_end = std::sin(leaving - arriving) >= 0;
+    f.turn_at_end = turn_between(arriving, leaving);
     along += shape.length;
     out.push_back(std::move(f));
   }
@@ -122,6 +140,54 @@ std::vector<Facade> unroll_plan(const Contour& given, size_t start, double short
 
 double strip_length(const std::vector<Facade>& facades) {
   return facades.empty() ? 0 : facades.back().start + facades.back().length;
+}
+
+}  // namespace curdle
+
+namespace curdle {
+
+std::vector<Facade> unroll_path(const Contour& path, double shortest) {
+  if (path.size() < 2) refuse("needs at least two vertices: [[x, y], [x, y, bulge], ...]", "path");
+  for (size_t i = 0; i + 1 < path.size(); ++i)
+    if (std::fabs(path[i].bulge) >= 1)
+      refuse("has an arc of half a turn or more on one edge: split it at a vertex", "path");
+  std::vector<Facade> out;
+  std::map<std::string, int> named;
+  double along = 0;
+  for (size_t i = 0; i + 1 < path.size(); ++i) {
+    const ContourVertex& a = path[i];
+    const ContourVertex& b = path[i + 1];
+    const EdgeShape shape = edge_shape(a, b);
+    if (shape.length < shortest)
+      refuse(fmt::format("edge {} is {:g} mm long, shorter than one unit ({:g} mm)", i,
+                         shape.length, shortest),
+             "path");
+    Facade f;
+    f.index = i;
+    f.from = {a.x, a.y};
+    f.to = {b.x, b.y};
+    f.bulge = a.bulge;
+    f.length = shape.length;
+    f.start = along;
+    f.facing = bearing_of(shape.outward);
+    const std::string point = compass_point(f.facing);
+    const int n = ++named[point];
+    f.name = n == 1 ? point : point + std::to_string(n);
+    if (i + 2 < path.size())
+      f.turn_at_end = turn_between(tangent(a, b, true), tangent(b, path[i + 2], false));
+    f.last_of_path = i + 2 == path.size();
+    along += shape.length;
+    out.push_back(std::move(f));
+  }
+  // A wall that meets itself is no wall: its faces would run through each other.
+  Polygon line;
+  for (const Facade& f : out) line.push_back(f.from);
+  line.push_back(out.back().to);
+  for (size_t i = 0; i + 1 < line.size(); ++i)
+    for (size_t j = i + 2; j + 1 < line.size(); ++j)
+      if (segments_cross(line[i], line[i + 1], line[j], line[j + 1]))
+        refuse("crosses itself: a free-standing wall runs one way without meeting itself", "path");
+  return out;
 }
 
 }  // namespace curdle

@@ -10,24 +10,22 @@
 #include <vector>
 
 #include "layout/layout.h"
+#include "layout/surface_frame.h"
 
 namespace curdle {
 
-struct Facade {
-  size_t index = 0;                            // the plan edge from vertex `index` to the next
-  std::string name;                            // "S", "NE", ...; "S2" for the second looking south
-  std::array<double, 2> from{0, 0}, to{0, 0};  // its ends in plan, mm
-  double bulge = 0;                            // the edge's arc (0: straight), as the plan gives it
-  double length = 0;                           // along the wall, mm: the chord, or the arc
-  double start = 0;                            // where it begins on the unrolled strip, mm
-  double facing = 0;                // the outer face's bearing, degrees clockwise from north
-  bool outer_corner_at_end = true;  // false: the building turns inwards at its end (an L's bite)
-};
+// A façade is a framed surface of the strip (layout/surface_frame.h).
+using Facade = SurfaceFrame;
 
 // The plan's façades from vertex `start`, anticlockwise (a clockwise plan is taken the other
 // way round). Throws InputError (key `plan`) for a plan of fewer than three vertices, one that
 // crosses itself, an edge shorter than `shortest` mm, or an arc of half a turn or more.
 std::vector<Facade> unroll_plan(const Contour& plan, size_t start, double shortest);
+
+// A free-standing wall along an open `path` (two or more vertices, straight edges or arcs): its
+// faces from the first vertex, the outer face on the right of the path, the last one's end
+// stopped. Throws InputError (key `path`) as unroll_plan does.
+std::vector<Facade> unroll_path(const Contour& path, double shortest);
 
 // The envelope's length round the building: the strip's, mm.
 double strip_length(const std::vector<Facade>& facades);

@@ -4,6 +4,10 @@
 
 #include <cmath>
 
+#include "building/coursing.h"
+#include "building/envelope_layout.h"
+#include "curdle/overlay.h"
+#include "layout/builder.h"
 #include "layout/cut_rules.h"
 
 namespace curdle {
@@ -29,8 +33,56 @@ void FacadeKind::after_laying(Layout& layout, const LayoutSpec& spec) const {
   report_open_area(layout, on_wall);
 }
 
+double FacadeKind::thickness(const LayoutSpec& spec) const {
+  const FacadeKeys& keys = spec.own<FacadeKeys>();
+  return keys.envelope ? keys.envelope->depth : 20;
+}
+
+void FacadeKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
+                      bool field_given) const {
+  SurfaceKind::read(r, design, spec, field_given);
+  FacadeKeys& keys = spec.own<FacadeKeys>();
+  if (!keys.building) return;
+  if (spec.origin != Corner::bottom_left)
+    r.fail("origin",
+           "a building's strip starts at its start corner, bottom left: give "
+           "layout.building.start instead");
+  if (spec.bond != 0 && spec.bond != 0.5)
+    r.fail("bond",
+           "a building's courses are laid in stretcher bond (\"half\", the default) or "
+           "\"stack\"");
+  keys.stack = r.get("bond") && spec.bond == 0;
+}
+
+Layout FacadeKind::build(const Design& design, const CurdField& field, const Box& view,
+                         const LayoutSpec& spec) const {
+  const FacadeKeys& keys = spec.own<FacadeKeys>();
+  if (!keys.envelope) return SurfaceKind::build(design, field, view, spec);
+  const Envelope& env = *keys.envelope;
+  Layout layout = lay_grid(design, field, view, spec, env.openings);
+  lay_envelope(layout, env, course_envelope(env, spec, keys.stack), values_in(field, view), spec);
+  report_open_area(layout, layout.openings_given);
+  count_values(layout, design, spec);
+  const std::vector<std::string> grid = corner_grid_notes(layout, design);
+  layout.notes.insert(layout.notes.end(), grid.begin(), grid.end());
+  return layout;
+}
+
 void FacadeKind::read_own(reading::TableReader& r, const Design&, LayoutSpec& spec) const {
   using namespace reading;
+  if (r.get("building")) {
+    for (const char* key :
+         {"wall", "openings", "mask", "outline", "site", "zones", "pattern", "shift"})
+      if (r.get(key))
+        r.fail(key,
+               "does not go with [layout.building]: the wall is the building's envelope, "
+               "its openings are [[layout.building.openings]]");
+    FacadeKeys& keys = spec.own<FacadeKeys>();
+    keys.building = read_building(r, spec);
+    keys.envelope = envelope_of(*keys.building, spec);
+    spec.size = std::array<double, 2>{keys.envelope->length, keys.envelope->height};
+    return;
+  }
   if (const toml::node* n = r.get("openings")) {
     const toml::array* a = n->as_array();
     if (!a) r.fail("openings", "must be an array of [x, y, width, height] in millimetres");

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "building/building.h"
 #include "kinds/surface_kind.h"
 
 namespace curdle {
@@ -12,6 +13,11 @@ namespace curdle {
 struct FacadeKeys : KindKeysOf<FacadeKeys> {
   std::vector<Rect> openings;  // windows and doors, mm from the wall's origin
   std::string mask;            // image whose dark pixels are openings (read by the application)
+  // [layout.building]: the wall is the building's envelope unrolled (building/), laid in
+  // courses round its corners; stretcher bond unless layout.bond = "stack".
+  std::optional<BuildingKeys> building;
+  std::optional<Envelope> envelope;
+  bool stack = false;
 };
 
 class FacadeKind : public SurfaceKind {
@@ -19,14 +25,18 @@ class FacadeKind : public SurfaceKind {
   std::string_view name() const override { return "facade"; }
   std::string_view element_noun() const override { return "panel"; }
   char id_letter() const override { return 'F'; }
-  double thickness(const LayoutSpec&) const override { return 20; }
+  double thickness(const LayoutSpec& spec) const override;
   bool upright() const override { return true; }
   std::unique_ptr<KindKeys> default_keys() const override;
   bool take_opening(LayoutSpec& spec, const std::array<double, 4>& rect) const override;
+  void read(reading::TableReader& r, Design& design, LayoutSpec& spec,
+            bool field_given) const override;
+  Layout build(const Design& design, const CurdField& field, const Box& view,
+               const LayoutSpec& spec) const override;
 
  protected:
   reading::SurfaceKeys surface() const override { return {"panel", "wall", true, true, true}; }
-  std::vector<std::string> own_keys() const override { return {"openings", "mask"}; }
+  std::vector<std::string> own_keys() const override { return {"openings", "mask", "building"}; }
   void read_own(reading::TableReader& r, const Design& design, LayoutSpec& spec) const override;
   std::vector<Rect> openings(const LayoutSpec& spec) const override;
   void after_laying(Layout& layout, const LayoutSpec& spec) const override;

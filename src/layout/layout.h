@@ -18,6 +18,7 @@
 #include "layout/element_id.h"
 #include "layout/layout_kind.h"
 #include "layout/planting_spec.h"
+#include "layout/surface_frame.h"
 
 namespace curdle {
 
@@ -275,6 +276,7 @@ struct Element {
   Rgb colour;                       // park: the element's own colour
   bool stands = false;              // park: an object standing on the ground (tree, bench)
   double turn = 0;  // a pattern's unit: its long side (a hexagon: a flat's normal) from x, °
+  int corner = -1;  // a building's unit that turns the corner at the end of frames[corner]
   double area() const;
 };
 
@@ -358,6 +360,11 @@ struct Layout {
   std::vector<PlantingSpec> planting;  // park: what the contractor orders, per curd of objects
   std::vector<std::string> notes;      // what a builder should know (cut slivers, ...)
   Box view;                            // the cells laid, in field coordinates
+  // A building's envelope (src/building): the strip's façades, each a frame that places its
+  // part of the strip in the building; empty for a flat surface. `closed`: round a building
+  // (the strip's end meets its start), else a free-standing wall.
+  std::vector<SurfaceFrame> frames;
+  bool closed_envelope = false;
   // Blocks: the drawing is a plan and an elevation of the voxels, side by side; each shape
   // with the value it shows and the blocks behind it, the one shown first. Captions say which
   // view is which.

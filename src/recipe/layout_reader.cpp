@@ -126,7 +126,8 @@ void read_surface(TableReader& r, const SurfaceKeys& k, const Design& design, La
            "along an arc or circle may stray from it, e.g. 0.05");
   // An outline (typed, or read from the site's drawing) can stand for the size: its bounding
   // rectangle.
-  spec.size = read_mm_pair(r, k.size_key, k.size_required && !r.get("outline") && !r.get("site"));
+  spec.size = read_mm_pair(
+      r, k.size_key, k.size_required && !r.get("outline") && !r.get("site") && !r.get("building"));
   read_site(r, design, spec);
   read_outline(r, spec);
   spec.origin = read_corner(r, k.grid_moves, spec);

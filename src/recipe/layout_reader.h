@@ -4,6 +4,7 @@
 
 #include <optional>
 
+#include "building/building.h"
 #include "layout/layout.h"
 #include "recipe/toml_reader.h"
 
@@ -46,6 +47,18 @@ void read_outline(TableReader& r, LayoutSpec& spec);
 // size key is left out. Openings become the kind's own where it takes rectangles (a façade's
 // windows), else excluded zones.
 void read_site(TableReader& r, const Design& design, LayoutSpec& spec);
+// A polygon's corners under `key`, each [x, y] or [x, y, bulge]: the contour with its arcs
+// (empty where it has none), and its polygon with the arcs as chords within `tolerance`.
+struct ReadContour {
+  Contour contour;
+  Polygon polygon;
+};
+ReadContour read_contour(TableReader& r, const std::string& key, double tolerance);
+
+// [layout.building] (facade): a building's plan or a free-standing wall's path, its height,
+// base, unit depth and openings (building/building.h).
+BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec);
+
 // [[layout.zones]], after the surface's size (tile, paving, facade).
 void read_zones(TableReader& r, const Design& design, LayoutSpec& spec);
 

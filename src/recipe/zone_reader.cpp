@@ -39,39 +39,6 @@ Polygon read_rect(TableReader& r) {
   return rect_polygon(Rect{v[0], v[1], v[2], v[3]});
 }
 
-// A polygon's corners, each [x, y] or [x, y, bulge]: the contour with its arcs, and its polygon
-// with the arcs as chords within the layout's chord tolerance.
-struct ReadContour {
-  Contour contour;
-  Polygon polygon;
-};
-
-ReadContour read_contour(TableReader& r, const std::string& key, double tolerance) {
-  const toml::array* a = r.get(key)->as_array();
-  const std::string allowed =
-      "must be at least 3 corners [[x, y], ...] in millimetres (at most 10000), a simple polygon "
-      "whose edges do not cross; [x, y, bulge] makes the edge to the next corner an arc (bulge "
-      "= tan(angle / 4), positive counter-clockwise, as CAD's polylines; at most 1000 in size)";
-  if (!a || a->size() < 2 || a->size() > kMostVertices) r.fail(key, allowed);
-  Contour contour;
-  for (const toml::node& item : *a) {
-    const toml::array* p = item.as_array();
-    const bool sized = p && (p->size() == 2 || p->size() == 3);
-    const auto x = sized ? finite_number(p->get(0)) : std::nullopt;
-    const auto y = sized ? finite_number(p->get(1)) : std::nullopt;
-    const auto bulge = sized && p->size() == 3 ? finite_number(p->get(2)) : std::optional(0.0);
-    if (!x || !y || !bulge || std::fabs(*bulge) > 1000) r.fail(key, allowed);
-    contour.push_back({*x, *y, tidy_bulge(*bulge)});
-  }
-  if (contour.size() > 2 && contour.front().x == contour.back().x &&
-      contour.front().y == contour.back().y)
-    contour.pop_back();  // closed by repeating the first
-  ReadContour read{contour, flatten(contour, tolerance)};
-  if (read.polygon.size() < 3 || !is_simple(read.polygon)) r.fail(key, allowed);
-  if (!has_arcs(read.contour)) read.contour.clear();
-  return read;
-}
-
 Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size, double tolerance) {
   Zone z;
   z.name = read_name(r, "name", "a name").value_or("");
@@ -110,6 +77,34 @@ Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size,
 }
 
 }  // namespace
+
+// A polygon's corners, each [x, y] or [x, y, bulge]: the contour with its arcs, and its polygon
+// with the arcs as chords within the layout's chord tolerance.
+ReadContour read_contour(TableReader& r, const std::string& key, double tolerance) {
+  const toml::array* a = r.get(key)->as_array();
+  const std::string allowed =
+      "must be at least 3 corners [[x, y], ...] in millimetres (at most 10000), a simple polygon "
+      "whose edges do not cross; [x, y, bulge] makes the edge to the next corner an arc (bulge "
+      "= tan(angle / 4), positive counter-clockwise, as CAD's polylines; at most 1000 in size)";
+  if (!a || a->size() < 2 || a->size() > kMostVertices) r.fail(key, allowed);
+  Contour contour;
+  for (const toml::node& item : *a) {
+    const toml::array* p = item.as_array();
+    const bool sized = p && (p->size() == 2 || p->size() == 3);
+    const auto x = sized ? finite_number(p->get(0)) : std::nullopt;
+    const auto y = sized ? finite_number(p->get(1)) : std::nullopt;
+    const auto bulge = sized && p->size() == 3 ? finite_number(p->get(2)) : std::optional(0.0);
+    if (!x || !y || !bulge || std::fabs(*bulge) > 1000) r.fail(key, allowed);
+    contour.push_back({*x, *y, tidy_bulge(*bulge)});
+  }
+  if (contour.size() > 2 && contour.front().x == contour.back().x &&
+      contour.front().y == contour.back().y)
+    contour.pop_back();  // closed by repeating the first
+  ReadContour read{contour, flatten(contour, tolerance)};
+  if (read.polygon.size() < 3 || !is_simple(read.polygon)) r.fail(key, allowed);
+  if (!has_arcs(read.contour)) read.contour.clear();
+  return read;
+}
 
 void read_outline(TableReader& r, LayoutSpec& spec) {
   if (!r.get("outline")) return;

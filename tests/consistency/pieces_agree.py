@@ -174,6 +174,46 @@ def glb_nodes(path, upright):
     return out
 
 
+def glb_faces(path):
+    """Per named node of a building's binary glTF: the outer face of each of its boxes, as
+    (centre, along, half length, half height) in building millimetres (x east, y north, z up):
+    a unit box turned about the vertical, its local +z the outside."""
+    import math
+    data = open(path, "rb").read()
+    length, _ = struct.unpack_from("<I4s", data, 12)
+    doc = json.loads(data[20:20 + length])
+    nodes = doc["nodes"]
+
+    def faces(index, out):
+        n = nodes[index]
+        if "mesh" in n and "scale" in n:
+            t, s, q = n["translation"], n["scale"], n.get("rotation", [0, 0, 0, 1])
+            turn = 2 * math.atan2(q[1], q[3])
+            along = (math.cos(turn), math.sin(turn))        # plan x east, y north
+            outward = (along[1], -along[0])
+            centre = (t[0] * 1000 + outward[0] * s[2] * 500, -t[2] * 1000 + outward[1] * s[2] * 500,
+                      t[1] * 1000)
+            out.append((centre, along, s[0] * 500, s[1] * 500))
+        for c in n.get("children", []):
+            faces(c, out)
+        return out
+
+    return {nodes[r]["name"]: faces(r, []) for r in doc["scenes"][0]["nodes"] if nodes[r].get("name")}
+
+
+def on_a_face(point, faces, exact):
+    """Whether a schedule position lies on one of a unit's outer faces (at its centre when the
+    unit is one box)."""
+    for centre, along, half_l, half_h in faces:
+        d = [point[i] - centre[i] for i in range(3)]
+        u = d[0] * along[0] + d[1] * along[1]
+        off = d[0] * -along[1] + d[1] * along[0]  # across the face: 0 on it
+        if abs(off) <= TOL and abs(d[2]) <= half_h + TOL and (
+                abs(u) <= TOL if exact else abs(u) <= half_l + TOL):
+            return True
+    return False
+
+
 def svg_ids(path):
     """Element IDs named in layout.svg: by id, in data-elements lists, and in ranges first:last."""
     text = open(path, encoding="utf-8").read()
@@ -226,7 +266,9 @@ def check(curdle, recipe, out, corner):
     drawn = install_boxes(os.path.join(out, "install.svg"))
     with open(recipe, "rb") as f:
         kind = tomllib.load(f).get("layout", {}).get("kind", "tile")
+    building = "building" in layout_table(recipe)
     modelled = glb_nodes(os.path.join(out, "layout.glb"), kind in ("facade", "façade", "rhythm"))
+    faces = glb_faces(os.path.join(out, "layout.glb")) if building else {}
     named, ranges = svg_ids(os.path.join(out, "layout.svg"))
     runs = ids_in_ranges(ranges)
     sheet_offsets = {}
@@ -235,6 +277,13 @@ def check(curdle, recipe, out, corner):
     for row in rows:
         eid = row["element_id"]
         x, y, w = float(row["x_mm"]), float(row["y_mm"]), float(row["width_mm"])
+        if building:  # x, y, z in the building; the strip's drawings from strip_x, strip_y
+            point = (x, y, float(row["z_mm"]))
+            f = faces.get(eid, [])
+            if not on_a_face(point, f, len(f) == 1):
+                fail(f"{where}: {eid} at {point} in the schedule is on no face of its node in "
+                     f"layout.glb")
+            x, y = float(row["strip_x_mm"]), float(row["strip_y_mm"])
         h = float(row["depth_mm"]) if row["depth_mm"] else float(row["height_mm"])
         b = (x, y, x + w, y + h)
         area += float(row["area_m2"])
@@ -245,7 +294,9 @@ def check(curdle, recipe, out, corner):
         if p is None or not (near(p[0], x + w / 2) and near(p[1], y + h / 2)):
             fail(f"{where}: {eid}'s ID in layout.dxf is at {p}, not at its centre")
         g = modelled.get(eid)
-        if g is None:
+        if building:
+            pass  # checked in 3-D above
+        elif g is None:
             fail(f"{where}: {eid} has no node in layout.glb")
         elif g[0] == g[2] and g[1] == g[3]:  # an opening: its node marks the centre
             if not (near(g[0], x + w / 2) and near(g[1], y + h / 2)):
@@ -317,6 +368,11 @@ def check(curdle, recipe, out, corner):
     print(f"{where}: {len(rows)} pieces checked")
 
 
+def layout_table(recipe):
+    with open(recipe, "rb") as f:
+        return tomllib.load(f).get("layout", {})
+
+
 def main():
     curdle, recipe, work = sys.argv[1:4]
     corners = sys.argv[4].split(",") if len(sys.argv) > 4 else CORNERS
@@ -326,7 +382,7 @@ def main():
         layout = tomllib.load(f).get("layout")
     if layout is None:
         print(f"{os.path.basename(recipe)}: no [layout], so no pieces to compare")
-    elif layout.get("kind", "tile") in ("rhythm", "blocks"):
+    elif layout.get("kind", "tile") in ("rhythm", "blocks") or "building" in layout:
         check(curdle, recipe, os.path.join(work, "out"), None)
     else:
         for i, corner in enumerate(corners):

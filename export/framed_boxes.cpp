@@ -1,0 +1,64 @@
+#include "export/framed_boxes.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace curdle {
+
+std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& r, double inward0,
+                                    double inward1, double longest) {
+  std::vector<FramedBox> out;
+  const double depth = inward1 - inward0;
+  for (const FramedSpan& s : framed_spans(layout.frames, layout.width, r.x, r.right())) {
+    const SurfaceFrame& f = *s.frame;
+    const int pieces =
+        f.bulge == 0 ? 1 : std::max(1, static_cast<int>(std::ceil((s.to - s.from) / longest)));
+    for (int k = 0; k < pieces; ++k) {
+      const double a = s.from + (s.to - s.from) * k / pieces;
+      const double b = s.from + (s.to - s.from) * (k + 1) / pieces;
+      // A chord between the outer face's points: a brick on a curved wall is straight.
+      const BuildingPoint p = frame_point(f, a, r.y, 0), q = frame_point(f, b, r.y, 0);
+      const double dx = q[0] - p[0], dy = q[1] - p[1];
+      const double length = std::hypot(dx, dy);
+      const std::array<double, 2> d{dx / length, dy / length};
+      const double middle = inward0 + depth / 2;  // inward is the left of the chord
+      FramedBox box;
+      box.centre = {(p[0] + q[0]) / 2 - d[1] * middle, (p[1] + q[1]) / 2 + d[0] * middle,
+                    p[2] + r.h / 2};
+      box.along = d;
+      box.length = length;
+      box.height = r.h;
+      box.depth = depth;
+      out.push_back(box);
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// The middle of a piece's laid face on the strip, u and v: a part that lies before its nominal
+// start is the closing corner unit's part at the strip's start, measured round the seam.
+std::array<double, 2> laid_middle(const Layout& layout, const Element& e) {
+  double lo = 1e300, hi = -1e300, bottom = 1e300, top = -1e300;
+  for (const Rect& r : e.shape) {
+    const double shift = r.x < e.nominal.x - 1e-6 ? layout.width : 0;
+    lo = std::min(lo, r.x + shift), hi = std::max(hi, r.right() + shift);
+    bottom = std::min(bottom, r.y), top = std::max(top, r.top());
+  }
+  if (e.shape.empty()) return {e.nominal.x + e.nominal.w / 2, e.nominal.y + e.nominal.h / 2};
+  return {wrap_along((lo + hi) / 2, layout.width), (bottom + top) / 2};
+}
+
+}  // namespace
+
+BuildingPoint framed_centre(const Layout& layout, const Element& e) {
+  const std::array<double, 2> m = laid_middle(layout, e);
+  return frame_point(*frame_at(layout.frames, m[0]), m[0], m[1], 0);
+}
+
+const SurfaceFrame* framed_facade(const Layout& layout, const Element& e) {
+  return frame_at(layout.frames, laid_middle(layout, e)[0]);
+}
+
+}  // namespace curdle

@@ -1,0 +1,30 @@
+// Pieces of a building's strip placed in 3-D through its frames (layout/surface_frame.h): a
+// rectangle of the strip, `inward0` to `inward1` mm behind the outer face, as boxes in the
+// building (one per frame it lies on; along an arc, one per chord of at most `longest` mm).
+// The 3-D writers place a unit box by each; they learn nothing of buildings.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "layout/layout.h"
+
+namespace curdle {
+
+struct FramedBox {
+  BuildingPoint centre;                      // mm, x east, y north, z up
+  std::array<double, 2> along;               // the box's length direction in plan (unit vector)
+  double length = 0, height = 0, depth = 0;  // mm: along, up, into the wall
+};
+
+std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& strip_rect, double inward0,
+                                    double inward1, double longest = 1e300);
+
+// Where a piece of the strip lies in the building: the middle of its laid outer face (a unit
+// that turns the closing corner measured round it), mm.
+BuildingPoint framed_centre(const Layout& layout, const Element& e);
+
+// The façade that holds the middle of a piece's laid outer face.
+const SurfaceFrame* framed_facade(const Layout& layout, const Element& e);
+
+}  // namespace curdle

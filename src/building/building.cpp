@@ -1,0 +1,139 @@
+#include "building/building.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "building/facades.h"
+#include "curdle/error.h"
+
+namespace curdle {
+namespace {
+
+constexpr double kEps = 1e-6;
+
+// Keys are named relative to [layout.building]; its reader adds the recipe's location.
+[[noreturn]] void refuse(const char* key, const std::string& what) {
+  SourceLocation where;
+  where.key = key;
+  throw InputError(where, what);
+}
+
+// A height from the base in whole courses of `pitch`, or refused naming the nearest two.
+int64_t whole_courses(double height, double pitch) {
+  const double n = height / pitch;
+  if (std::fabs(n - std::round(n)) * pitch < 0.01) return static_cast<int64_t>(std::round(n));
+  const double lower = std::floor(n) * pitch, upper = std::ceil(n) * pitch;
+  refuse("height", fmt::format("{:g} mm is not whole courses of {:g} mm (a unit and its bed "
+                               "joint): {:g} mm ({} courses) or {:g} mm ({} courses) are",
+                               height, pitch, lower, std::floor(n), upper, std::ceil(n)));
+}
+
+// y moved onto the nearest course line (a multiple of `pitch`).
+double on_course(double y, double pitch) { return std::round(y / pitch) * pitch; }
+
+// The openings a window rule places: each façade long enough, each storey.
+std::vector<BuildingOpening> ruled_windows(const WindowRule& rule,
+                                           const std::vector<SurfaceFrame>& facades, double height,
+                                           double storey) {
+  std::vector<BuildingOpening> out;
+  const double floor_to_floor = storey > 0 ? storey : height;
+  for (const SurfaceFrame& f : facades) {
+    const double room = f.length - 2 * rule.clear;
+    if (room < rule.size[0]) continue;
+    const int64_t n = static_cast<int64_t>(std::floor((room - rule.size[0]) / rule.every)) + 1;
+    const double margin = (f.length - static_cast<double>(n - 1) * rule.every - rule.size[0]) / 2;
+    for (double level = 0; level + rule.sill + rule.size[1] <= height + kEps;
+         level += floor_to_floor)
+      for (int64_t k = 0; k < n; ++k)
+        out.push_back({std::to_string(f.index),
+                       Rect{margin + static_cast<double>(k) * rule.every, level + rule.sill,
+                            rule.size[0], rule.size[1]},
+                       "window"});
+  }
+  return out;
+}
+
+}  // namespace
+
+const SurfaceFrame* facade_named(const std::vector<SurfaceFrame>& facades,
+                                 const std::string& name) {
+  for (const SurfaceFrame& f : facades)
+    if (f.name == name || std::to_string(f.index) == name) return &f;
+  return nullptr;
+}
+
+Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
+  Envelope env;
+  const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
+  env.closed = !keys.plan.empty();
+  env.facades = env.closed ? unroll_plan(keys.plan, keys.start, spec.module_w)
+                           : unroll_path(keys.path, spec.module_w);
+  for (SurfaceFrame& f : env.facades) f.base = keys.base;
+  env.length = strip_length(env.facades);
+  env.courses = whole_courses(keys.height, pitch_h);
+  env.height = keys.height;
+  env.depth = keys.depth > 0 ? keys.depth : (spec.module_w - spec.joint) / 2;
+  if (env.depth >= spec.module_w)
+    refuse("depth", fmt::format("{:g} mm is not less than the unit's length ({:g} mm): a unit "
+                                "turns a corner on its end",
+                                env.depth, spec.module_w));
+  const double units = std::ceil(env.length / pitch_w) * static_cast<double>(env.courses);
+  if (units > kMostEnvelopeUnits)
+    throw ResourceLimitError(
+        fmt::format("the envelope would hold about {:.0f} units, above the limit of {:.0f}: use "
+                    "larger units, a lower wall or a smaller plan",
+                    units, kMostEnvelopeUnits));
+  std::vector<BuildingOpening> given = keys.openings;
+  if (keys.windows) {
+    const auto ruled = ruled_windows(*keys.windows, env.facades, keys.height, keys.storey);
+    given.insert(given.end(), ruled.begin(), ruled.end());
+  }
+  size_t moved = 0;
+  for (size_t i = 0; i < given.size(); ++i) {
+    const BuildingOpening& o = given[i];
+    const SurfaceFrame* f = facade_named(env.facades, o.facade);
+    if (!f)
+      refuse("openings", fmt::format("opening {} names the façade \"{}\", which the plan does not "
+                                     "have: name one by its compass point ({}) or its index",
+                                     i, o.facade, [&] {
+                                       std::string names;
+                                       for (const SurfaceFrame& g : env.facades)
+                                         names += (names.empty() ? "" : ", ") + g.name;
+                                       return names;
+                                     }()));
+    Rect r = o.rect;
+    if (keys.coursed_openings) {
+      const double y = on_course(r.y, pitch_h), top = on_course(r.top(), pitch_h);
+      moved += y != r.y || top != r.top();
+      r.y = y, r.h = top - y;
+      if (r.h <= 0) refuse("openings", fmt::format("opening {} is lower than one course", i));
+    }
+    if (r.right() > f->length + kEps)
+      refuse("openings", fmt::format("opening {} on façade {} runs to {:g} mm, past its corner at "
+                                     "{:g} mm: an opening lies on one façade",
+                                     i, f->name, r.right(), f->length));
+    if (r.top() > env.height + kEps)
+      refuse("openings", fmt::format("opening {} on façade {} reaches {:g} mm, above the wall's "
+                                     "top at {:g} mm",
+                                     i, f->name, r.top(), env.height));
+    const Rect on_strip{f->start + r.x, r.y, r.w, r.h};
+    for (size_t k = 0; k < env.openings.size(); ++k)
+      if (overlaps(env.openings[k], on_strip))
+        refuse("openings", fmt::format("opening {} on façade {} overlaps opening {}: openings "
+                                       "must stand apart",
+                                       i, f->name, k));
+    env.openings.push_back(on_strip);
+    env.opening_facade.push_back(static_cast<size_t>(f - env.facades.data()));
+    env.opening_type.push_back(o.type);
+  }
+  if (moved)
+    env.notes.push_back(
+        fmt::format("{} opening(s) had their sill or head moved onto the nearest "
+                    "course line ({:g} mm courses)",
+                    moved, pitch_h));
+  return env;
+}
+
+}  // namespace curdle

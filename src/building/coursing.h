@@ -1,0 +1,48 @@
+// Courses round an envelope as a bricklayer sets them out: level all round, a unit turning
+// every corner (at an outer corner its stretcher on one face and its header on the other,
+// changing sides course by course, so that stretcher bond laps by half a unit; at an inner
+// corner one face's unit runs through behind the other's), stopped ends of a free-standing wall
+// with a half unit on alternate courses, and each run between them filled with whole units from
+// its ends, the cut needed to fit put in its middle (one closer, or two where one would be a
+// sliver). A bend of less than 15 degrees (an arc meeting its tangent) is no corner: the run
+// goes on round it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "building/building.h"
+
+namespace curdle {
+
+enum class UnitRole {
+  stretcher,  // a whole unit of a run
+  closer,     // cut to fit the run
+  corner,     // turns a corner: counted once, on both façades
+  end,        // a stopped end's half unit
+};
+
+// One unit on the strip: its course and extent along the strip, mm. The unit at the closing
+// corner of a building runs past the strip's end (`to` > the strip's length) and on from its
+// start: one unit, in two parts on the unrolled strip.
+struct CourseUnit {
+  int64_t course = 0;
+  double from = 0, to = 0;
+  UnitRole role = UnitRole::stretcher;
+  int corner = -1;  // the corner it turns: the end of facades[corner]
+};
+
+struct Coursing {
+  std::vector<CourseUnit> units;   // course by course, along the strip
+  std::vector<std::string> notes;  // how each corner is built, and what had to be cut
+};
+
+// Units of `length` (the spec's module_w) and `depth`, with the spec's joint; `stack` lays every
+// course alike (stack bond) instead of lapping by half.
+Coursing course_envelope(const Envelope& env, const LayoutSpec& spec, bool stack);
+
+// What a corner is: "outer", "inner" or "bend" (no corner), by its turn in degrees.
+const char* corner_kind(double turn);
+
+}  // namespace curdle

@@ -1,0 +1,94 @@
+#include "building/envelope_layout.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "curdle/stop.h"
+
+namespace curdle {
+namespace {
+constexpr double kEps = 1e-6;
+}  // namespace
+
+void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
+                  const std::vector<uint16_t>& values, const LayoutSpec& spec) {
+  const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
+  const std::vector<Rect> holes = layout.holes();
+  const Box& view = layout.view;
+  const int digits = static_cast<int>(std::to_string(std::max(layout.columns, layout.rows)).size());
+  layout.elements.clear();
+  layout.elements.reserve(coursing.units.size());
+  layout.omitted = 0;
+  layout.frames = env.facades;
+  layout.closed_envelope = env.closed;
+  layout.bond = 0.5;
+  int64_t course = -1, column = 0;
+  for (const CourseUnit& u : coursing.units) {
+    stop_point();
+    if (u.course != course) course = u.course, column = 0;
+    Element e;
+    e.row = u.course;
+    e.column = column++;
+    const double middle = wrap_along((u.from + u.to) / 2, env.length);
+    const int64_t i = std::min<int64_t>(static_cast<int64_t>(middle / pitch_w), view.size[0] - 1);
+    const int64_t j = std::min<int64_t>(u.course, view.size[1] - 1);
+    e.cell_x = view.origin[0] + i;
+    e.cell_y = view.origin[1] + j;
+    e.value = values[static_cast<size_t>(j * view.size[0] + i)];
+    const double y = static_cast<double>(u.course) * pitch_h;
+    e.nominal = Rect{u.from, y, u.to - u.from, spec.module_h};
+    e.stock_w = spec.module_w, e.stock_h = spec.module_h;
+    e.corner = u.corner;
+    std::vector<Rect> parts{Rect{u.from, y, std::min(u.to, env.length) - u.from, spec.module_h}};
+    if (u.to > env.length + kEps) parts.push_back(Rect{0, y, u.to - env.length, spec.module_h});
+    for (const Rect& p : parts)
+      for (const Rect& r : subtract(p, holes)) e.shape.push_back(r);
+    if (e.shape.empty() || e.area() < kEps) {
+      ++layout.omitted;  // wholly in an opening
+      continue;
+    }
+    e.cut = u.role == UnitRole::closer || u.role == UnitRole::end ||
+            e.area() < (u.to - u.from) * spec.module_h - kEps;
+    e.key = ElementId{spec.kind->id_letter(), digits, std::nullopt, e.row, e.column, ""};
+    e.id = e.key.text();
+    layout.elements.push_back(std::move(e));
+  }
+  // Writers index pieces by course and column: a course may hold a unit or two more than cells.
+  for (const Element& e : layout.elements) layout.columns = std::max(layout.columns, e.column + 1);
+  layout.notes.insert(layout.notes.end(), env.notes.begin(), env.notes.end());
+  layout.notes.insert(layout.notes.end(), coursing.notes.begin(), coursing.notes.end());
+}
+
+std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& design) {
+  std::vector<std::string> out;
+  const double pitch_w = layout.module_w + layout.joint;
+  const int b = design.lattice.base, stages = design.lattice.stages;
+  auto place = [&](double u) {
+    std::string s;
+    const double cell = u / pitch_w;  // in field cells from the strip's start
+    int64_t size = 1;
+    for (int k = 1; k < stages; ++k) size *= b;
+    for (int k = 1; k <= stages; ++k, size /= b) {
+      const double within = std::fmod(cell, static_cast<double>(size));
+      s += fmt::format("{}stage {}: {}", k == 1 ? "" : "; ", k,
+                       within < 1e-6 ? std::string("on a boundary")
+                                     : fmt::format("{:.2f} of a cell in", within / size));
+    }
+    return s;
+  };
+  for (const SurfaceFrame& f : layout.frames) {
+    if (f.last_of_path) continue;
+    const double u = f.start + f.length;
+    const bool closing = layout.closed_envelope && &f == &layout.frames.back();
+    out.push_back(fmt::format("corner at the end of {} ({:g} mm along the strip{}): {}", f.name, u,
+                              closing ? ", the closing seam, where the strip began on a "
+                                        "root-cell boundary"
+                                      : "",
+                              place(u)));
+  }
+  return out;
+}
+
+}  // namespace curdle

@@ -1,0 +1,24 @@
+// An envelope's courses as a layout's elements on its unrolled strip: one element per unit,
+// its value taken once from the field cell under the middle of its face (so that a corner
+// unit, on two façades, is one piece with one value), cut at the openings; the façades as the
+// layout's frames, so that the 3-D writers and schedules place every piece in the building.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "building/building.h"
+#include "building/coursing.h"
+
+namespace curdle {
+
+// Replaces `layout`'s elements (laid on the strip's grid, with its openings) by the units of
+// `coursing`, `values` being the view's cells (x fastest) as the grid had them.
+void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
+                  const std::vector<uint16_t>& values, const LayoutSpec& spec);
+
+// How corners and the closing seam fall against the stage grid, for the report: each corner's
+// place in the cells of every stage.
+std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& design);
+
+}  // namespace curdle

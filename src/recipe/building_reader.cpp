@@ -1,0 +1,150 @@
+// [layout.building]: plan = [[x, y], [x, y, bulge], ...] (closed, a building) or path = [...]
+// (open, a free-standing wall), height, storey, base, depth, start, coursed_openings,
+// [[layout.building.openings]] (facade, rect, type) and [layout.building.windows] (size,
+// every, clear, sill).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "curdle/error.h"
+#include "layout/contour.h"
+#include "recipe/layout_reader.h"
+
+namespace curdle::reading {
+namespace {
+
+constexpr size_t kMostVertices = 10000;
+constexpr size_t kMostOpenings = 10000;
+
+// An open path's vertices, each [x, y] or [x, y, bulge].
+Contour read_path(TableReader& r) {
+  const toml::array* a = r.get("path")->as_array();
+  const std::string allowed =
+      "must be 2 to 10000 points [[x, y], ...] in millimetres along the wall's outer face; [x, "
+      "y, bulge] makes the edge to the next point an arc (bulge = tan(angle / 4), positive "
+      "anticlockwise)";
+  if (!a || a->size() < 2 || a->size() > kMostVertices) r.fail("path", allowed);
+  Contour path;
+  for (const toml::node& item : *a) {
+    const toml::array* p = item.as_array();
+    const bool sized = p && (p->size() == 2 || p->size() == 3);
+    const auto x = sized ? finite_number(p->get(0)) : std::nullopt;
+    const auto y = sized ? finite_number(p->get(1)) : std::nullopt;
+    const auto bulge = sized && p->size() == 3 ? finite_number(p->get(2)) : std::optional(0.0);
+    if (!x || !y || !bulge || std::fabs(*x) > 1e7 || std::fabs(*y) > 1e7 ||
+        std::fabs(*bulge) > 1000)
+      r.fail("path", allowed);
+    path.push_back({*x, *y, tidy_bulge(*bulge)});
+  }
+  return path;
+}
+
+BuildingOpening read_opening(TableReader& o, size_t index) {
+  BuildingOpening b;
+  const toml::node* f = o.get("facade");
+  if (const auto i = f ? f->value<int64_t>() : std::nullopt; i && *i >= 0)
+    b.facade = std::to_string(*i);
+  else if (const auto s = f ? f->value<std::string>() : std::nullopt; s && !s->empty())
+    b.facade = *s;
+  else
+    o.fail("facade", fmt::format("opening {} needs facade = its façade's index (the plan edge "
+                                 "from that vertex) or its name (\"S\", \"E2\")",
+                                 index));
+  const toml::array* a = o.get("rect") ? o.get("rect")->as_array() : nullptr;
+  std::array<double, 4> v{};
+  bool ok = a && a->size() == 4;
+  for (size_t k = 0; ok && k < 4; ++k) {
+    const auto x = finite_number(a->get(k));
+    ok = x && *x <= 1e7 && (k < 2 ? *x >= 0 : *x > 0);
+    if (ok) v[k] = *x;
+  }
+  if (!ok)
+    o.fail("rect",
+           "must be [x, y, width, height] in millimetres, x along the façade from its start and "
+           "y up from the base, sizes above 0");
+  b.rect = Rect{v[0], v[1], v[2], v[3]};
+  b.type = read_string(o, "type", "\"window\" or \"door\"").value_or("window");
+  if (b.type != "window" && b.type != "door") o.fail("type", "must be \"window\" or \"door\"");
+  o.report_unused("is not a key of an opening (facade, rect, type)");
+  return b;
+}
+
+WindowRule read_windows(TableReader& w) {
+  WindowRule rule;
+  const auto size = read_mm_pair(w, "size", true);
+  rule.size = *size;
+  rule.every = read_mm(w, "every", 0, 1, true);
+  if (rule.every < rule.size[0])
+    w.fail("every", "must be at least the window's width: windows stand apart");
+  rule.clear = read_mm(w, "clear", 0, 0);
+  rule.sill = read_mm(w, "sill", 0, 0);
+  w.report_unused("is not a key of layout.building.windows (size, every, clear, sill)");
+  return rule;
+}
+
+}  // namespace
+
+BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
+  const toml::table* t = read_table(layout, "building");
+  if (!t)
+    layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
+  TableReader r(*t, layout.key_path("building"), layout.source(),
+                {"plan", "path", "height", "storey", "base", "depth", "start", "coursed_openings",
+                 "openings", "windows"});
+  BuildingKeys b;
+  const bool plan = r.get("plan"), path = r.get("path");
+  if (plan == path)
+    r.fail(plan ? "path" : "plan",
+           "a building needs plan = [[x, y], ...] (closed, anticlockwise) or path = [[x, y], "
+           "...] (a free-standing wall), not both");
+  if (plan) b.plan = read_contour(r, "plan", spec.chord_tolerance).contour;
+  if (plan && b.plan.empty()) {  // no arcs: read_contour keeps the polygon only
+    for (const toml::node& item : *r.get("plan")->as_array()) {
+      const toml::array* p = item.as_array();
+      b.plan.push_back({*finite_number(p->get(0)), *finite_number(p->get(1)), 0});
+    }
+    if (b.plan.size() > 2 && b.plan.front().x == b.plan.back().x &&
+        b.plan.front().y == b.plan.back().y)
+      b.plan.pop_back();
+  }
+  if (path) b.path = read_path(r);
+  b.height = read_mm(r, "height", 0, 1, true);
+  b.storey = read_mm(r, "storey", 0, 0);
+  b.base = r.get("base") ? *finite_number(r.get("base")) : 0;
+  if (!std::isfinite(b.base) || std::fabs(b.base) > 1e7)
+    r.fail("base", "must be the wall's base level in millimetres, within 10 km");
+  b.depth = read_mm(r, "depth", 0, 0);
+  const size_t corners = plan ? b.plan.size() : 0;
+  b.start = static_cast<size_t>(
+      read_int(r, "start", 0, 0, corners ? static_cast<int64_t>(corners) - 1 : 0));
+  b.coursed_openings = read_bool(r, "coursed_openings", true);
+  if (const toml::node* n = r.get("openings")) {
+    const toml::array* a = n->as_array();
+    if (!a || a->size() > kMostOpenings)
+      r.fail("openings", "must be [[layout.building.openings]] tables, at most 10000");
+    for (size_t i = 0; i < a->size(); ++i) {
+      const toml::table* o = a->get(i)->as_table();
+      const std::string where = r.key_path("openings") + "." + std::to_string(i);
+      if (!o) r.fail_node(*a->get(i), where, "must be a table: facade, rect, type");
+      TableReader ro(*o, where, r.source(), {"facade", "rect", "type"});
+      b.openings.push_back(read_opening(ro, i));
+    }
+  }
+  if (r.get("windows")) {
+    const toml::table* w = read_table(r, "windows");
+    if (!w) r.fail("windows", "must be a table: size, every, clear, sill");
+    TableReader rw(*w, r.key_path("windows"), r.source(), {"size", "every", "clear", "sill"});
+    b.windows = read_windows(rw);
+  }
+  r.report_unused("is not a key of layout.building");
+  try {
+    (void)envelope_of(b, spec);  // the plan, heights and openings checked where they are read
+  } catch (const ResourceLimitError&) {
+    throw;
+  } catch (const InputError& e) {
+    r.fail(e.where().key, e.message());
+  }
+  return b;
+}
+
+}  // namespace curdle::reading

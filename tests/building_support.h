@@ -1,0 +1,42 @@
+// Buildings the building tests share: the whole-buildings issue's L-shaped pavilion and curved
+// garden wall, as recipe text, laid from a seed.
+#pragma once
+
+#include <string>
+
+#include "curdle/curdling.h"
+#include "layout/builder.h"
+#include "recipe/recipe.h"
+
+namespace curdle::test {
+
+// The pavilion: 20 x 12 m with an 8 x 6 m bite, 7.05 m of 215 x 65 mm bricks, 10 mm joints;
+// `building` is added to its [layout.building] table (openings, start, ...).
+inline std::string pavilion_recipe(const std::string& building = "",
+                                   const std::string& layout = "") {
+  return R"(name = "pavilion"
+seed = 7
+[lattice]
+base = 2
+dimension = 2
+[[curds]]
+name = "dark"
+probabilities = ["7/8", "4/5", "3/4", "2/3", "2/3"]
+[layout]
+kind = "facade"
+panel = [215, 65]
+joint = 10
+)" + layout +
+         R"([layout.building]
+plan = [[0, 0], [20000, 0], [20000, 6000], [12000, 6000], [12000, 12000], [0, 12000]]
+height = 7050
+)" + building;
+}
+
+inline Layout lay_recipe(const std::string& text, uint64_t seed = 0) {
+  const Recipe r = parse_recipe(text, "building.toml");
+  const Design& d = r.design;
+  return make_layout(d, curdle(d, seed ? seed : r.seed, d.field), d.field, *r.layout);
+}
+
+}  // namespace curdle::test

@@ -1,0 +1,107 @@
+// Tests of building.h: the envelope's heights in whole courses, openings placed on the strip by
+// façade name or index and by a window rule, and every kind of bad building refused with a
+// message that says what is allowed.
+#include "building/building.h"
+
+#include <gtest/gtest.h>
+
+#include "curdle/error.h"
+#include "kinds/registry.h"
+#include "layout/contour.h"
+
+namespace curdle {
+namespace {
+
+LayoutSpec bricks() {
+  LayoutSpec spec;
+  spec.set_kind(layout_kind("facade"));
+  spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
+  return spec;
+}
+
+BuildingKeys pavilion() {
+  BuildingKeys keys;
+  keys.plan =
+      contour_of({{0, 0}, {20000, 0}, {20000, 6000}, {12000, 6000}, {12000, 12000}, {0, 12000}});
+  keys.height = 7050;
+  return keys;
+}
+
+std::string refusal(const BuildingKeys& keys, const LayoutSpec& spec = bricks()) {
+  try {
+    (void)envelope_of(keys, spec);
+  } catch (const InputError& e) {
+    return e.where().key + ": " + e.message();
+  }
+  return "";
+}
+
+TEST(Building, OpeningsArePlacedOnTheStripByFacadeNameOrIndex) {
+  BuildingKeys keys = pavilion();
+  keys.openings = {{"E", Rect{900, 900, 1200, 1500}, "window"},
+                   {"3", Rect{600, 0, 1000, 2100}, "door"}};
+  const Envelope env = envelope_of(keys, bricks());
+  EXPECT_DOUBLE_EQ(env.length, 64000);
+  EXPECT_EQ(env.courses, 94);
+  EXPECT_DOUBLE_EQ(env.depth, 102.5);
+  ASSERT_EQ(env.openings.size(), 2u);
+  EXPECT_DOUBLE_EQ(env.openings[0].x, 20000 + 900);
+  EXPECT_DOUBLE_EQ(env.openings[1].x, 34000 + 600);  // E2, the edge from vertex 3
+  EXPECT_EQ(env.opening_type[1], "door");
+  // Sills and heads on course lines: 2100 is 28 courses of 75 mm exactly; 900 and 2400 too.
+  EXPECT_DOUBLE_EQ(env.openings[0].y, 900);
+  EXPECT_DOUBLE_EQ(env.openings[1].top(), 2100);
+}
+
+TEST(Building, ARuleSetsWindowsOnEveryFacadeAndStoreyClearOfTheCorners) {
+  BuildingKeys keys = pavilion();
+  keys.storey = 3525;
+  keys.windows = WindowRule{{1200, 1500}, 3000, 900, 900};
+  const Envelope env = envelope_of(keys, bricks());
+  // Per storey: 6 on the 20 m front, 2 on each 6 and 8 m side, 4 on each 12 m side.
+  EXPECT_EQ(env.openings.size(), 2u * (6 + 2 + 2 + 2 + 4 + 4));
+  for (size_t i = 0; i < env.openings.size(); ++i) {
+    const SurfaceFrame& f = env.facades[env.opening_facade[i]];
+    EXPECT_GE(env.openings[i].x - f.start, 900 - 1e-9);
+    EXPECT_LE(env.openings[i].right() - f.start, f.length - 900 + 1e-9);
+  }
+}
+
+TEST(Building, BadBuildingsAreRefusedSayingWhatIsAllowed) {
+  BuildingKeys keys = pavilion();
+  keys.height = 7000;
+  EXPECT_EQ(refusal(keys),
+            "height: 7000 mm is not whole courses of 75 mm (a unit and its bed joint): 6975 mm "
+            "(93 courses) or 7050 mm (94 courses) are");
+  keys = pavilion();
+  keys.openings = {{"S", Rect{19500, 900, 1200, 1500}, "window"}};
+  EXPECT_NE(refusal(keys).find("past its corner at 20000 mm"), std::string::npos);
+  keys.openings = {{"S", Rect{900, 6000, 1200, 1500}, "window"}};
+  EXPECT_NE(refusal(keys).find("above the wall's top"), std::string::npos);
+  keys.openings = {{"S", Rect{900, 900, 1200, 1500}, "window"},
+                   {"S", Rect{1500, 1200, 1200, 1500}, "window"}};
+  EXPECT_NE(refusal(keys).find("overlaps opening 0"), std::string::npos);
+  keys.openings = {{"SE", Rect{900, 900, 1200, 1500}, "window"}};
+  EXPECT_NE(refusal(keys).find("S, E, N, E2, N2, W"), std::string::npos);
+  keys = pavilion();
+  keys.plan = contour_of({{0, 0}, {10000, 0}, {0, 10000}, {10000, 10000}});
+  EXPECT_NE(refusal(keys).find("plan: crosses itself"), std::string::npos);
+  keys.plan = contour_of({{0, 0}, {10000, 0}, {10000, 100}, {0, 100}});
+  EXPECT_NE(refusal(keys).find("shorter than one unit"), std::string::npos);
+  keys = pavilion();
+  keys.height = 750000;
+  EXPECT_THROW((void)envelope_of(keys, bricks()), ResourceLimitError);
+  keys = pavilion();
+  keys.depth = 300;
+  EXPECT_NE(refusal(keys).find("depth"), std::string::npos);
+}
+
+TEST(Building, AFacadeIsFoundByNameOrIndex) {
+  const Envelope env = envelope_of(pavilion(), bricks());
+  EXPECT_EQ(facade_named(env.facades, "N2")->index, 4u);
+  EXPECT_EQ(facade_named(env.facades, "4")->name, "N2");
+  EXPECT_EQ(facade_named(env.facades, "Q"), nullptr);
+}
+
+}  // namespace
+}  // namespace curdle

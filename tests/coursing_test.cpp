@@ -1,0 +1,160 @@
+// Tests of coursing.h: courses run level round the pavilion with one joint between units all the
+// way round (the closing corner too), every corner turned by one unit a course, the outer
+// corners' quoins changing sides course by course so that stretcher bond laps by half a unit at
+// every corner, the inner corners' through units likewise, cuts never below the narrowest
+// allowed, and a free-standing wall's stopped ends.
+#include "building/coursing.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "building/facades.h"
+#include "kinds/registry.h"
+#include "layout/contour.h"
+
+namespace curdle {
+namespace {
+
+LayoutSpec bricks() {
+  LayoutSpec spec;
+  spec.set_kind(layout_kind("facade"));
+  spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
+  return spec;
+}
+
+Envelope pavilion(const LayoutSpec& spec) {
+  BuildingKeys keys;
+  keys.plan =
+      contour_of({{0, 0}, {20000, 0}, {20000, 6000}, {12000, 6000}, {12000, 12000}, {0, 12000}});
+  keys.height = 7050;
+  return envelope_of(keys, spec);
+}
+
+std::map<int64_t, std::vector<CourseUnit>> by_course(const Coursing& c) {
+  std::map<int64_t, std::vector<CourseUnit>> out;
+  for (const CourseUnit& u : c.units) out[u.course].push_back(u);
+  return out;
+}
+
+TEST(Coursing, EveryCourseGoesRoundTheBuildingWithOneJointBetweenUnits) {
+  const LayoutSpec spec = bricks();
+  const Envelope env = pavilion(spec);
+  ASSERT_EQ(env.courses, 94);
+  const Coursing c = course_envelope(env, spec, false);
+  const auto courses = by_course(c);
+  ASSERT_EQ(courses.size(), 94u);
+  for (const auto& [r, units] : courses) {
+    double faces = 0;
+    for (size_t k = 0; k < units.size(); ++k) {
+      const CourseUnit& a = units[k];
+      // The next unit round the strip; the last one's joint is the closing corner's.
+      const double next = k + 1 < units.size() ? units[k + 1].from : units[0].from + env.length;
+      EXPECT_NEAR(next - a.to, 10, 1e-6) << "course " << r << " unit " << k;
+      EXPECT_GE(a.to - a.from, 215.0 / 3 - 1e-6);
+      faces += a.to - a.from;
+    }
+    EXPECT_NEAR(faces + 10.0 * units.size(), env.length, 1e-6) << "course " << r;
+  }
+}
+
+TEST(Coursing, EachCornerIsTurnedByOneUnitACourseChangingSides) {
+  const LayoutSpec spec = bricks();
+  const Envelope env = pavilion(spec);
+  const Coursing c = course_envelope(env, spec, false);
+  const auto courses = by_course(c);
+  for (const auto& [r, units] : courses) {
+    std::map<int, int> turned;
+    for (const CourseUnit& u : units)
+      if (u.role == UnitRole::corner) {
+        ++turned[u.corner];
+        const SurfaceFrame& f = env.facades[static_cast<size_t>(u.corner)];
+        const double at = f.start + f.length, before = at - u.from, after = u.to - at;
+        const bool first = (r + u.corner) % 2 == 0;
+        if (f.turn_at_end > 0) {  // outer: stretcher and header, sides changing
+          EXPECT_NEAR(before, first ? 215 : 102.5, 1e-9);
+          EXPECT_NEAR(after, first ? 102.5 : 215, 1e-9);
+        } else {  // inner: the through unit shows 112.5 mm on one side only
+          EXPECT_NEAR(before, first ? 112.5 : 0, 1e-9);
+          EXPECT_NEAR(after, first ? 0 : 112.5, 1e-9);
+        }
+      }
+    EXPECT_EQ(turned.size(), 6u);
+    for (const auto& [corner, n] : turned) EXPECT_EQ(n, 1) << "corner " << corner;
+  }
+  // The first joint past each corner moves by half a unit's pitch from course to course.
+  for (int64_t r = 0; r + 1 < 94; ++r)
+    for (const CourseUnit& a : courses.at(r))
+      if (a.role == UnitRole::corner && a.corner < 5)
+        for (const CourseUnit& b : courses.at(r + 1))
+          if (b.role == UnitRole::corner && b.corner == a.corner) {
+            EXPECT_NEAR(std::fabs(b.to - a.to), 112.5, 1e-9);
+          }
+}
+
+TEST(Coursing, RunsAreCutInTheirMiddleAndNeverBelowTheNarrowestCut) {
+  const LayoutSpec spec = bricks();
+  const Envelope env = pavilion(spec);
+  const Coursing c = course_envelope(env, spec, false);
+  size_t closers = 0;
+  for (const CourseUnit& u : c.units) {
+    if (u.role != UnitRole::closer) continue;
+    ++closers;
+    EXPECT_GE(u.to - u.from, 215.0 / 3 - 1e-9);
+    EXPECT_LT(u.to - u.from, 215);
+    // In the middle third of its façade.
+    const SurfaceFrame* f = frame_at(env.facades, (u.from + u.to) / 2);
+    const double along = (u.from + u.to) / 2 - f->start;
+    EXPECT_GT(along, f->length / 4);
+    EXPECT_LT(along, f->length * 3 / 4);
+  }
+  EXPECT_GT(closers, 0u);
+}
+
+TEST(Coursing, StackBondTurnsEveryCornerAlike) {
+  const LayoutSpec spec = bricks();
+  const Envelope env = pavilion(spec);
+  const Coursing c = course_envelope(env, spec, true);
+  for (const CourseUnit& u : c.units)
+    if (u.role == UnitRole::corner && u.corner == 0) {
+      EXPECT_NEAR(20000 - u.from, 215, 1e-9);
+      EXPECT_NEAR(u.to - 20000, 102.5, 1e-9);
+    }
+}
+
+TEST(Coursing, AFreeStandingWallHasStoppedEndsWithHalfUnitsOnAlternateCourses) {
+  const LayoutSpec spec = bricks();
+  BuildingKeys keys;
+  keys.path = {{0, 0, 0}, {9000, 0, 0}};
+  keys.height = 750;
+  const Envelope env = envelope_of(keys, spec);
+  EXPECT_FALSE(env.closed);
+  const auto courses = by_course(course_envelope(env, spec, false));
+  ASSERT_EQ(courses.size(), 10u);
+  for (const auto& [r, units] : courses) {
+    EXPECT_NEAR(units.front().from, 0, 1e-9);
+    EXPECT_NEAR(units.back().to, 9000, 1e-9);
+    EXPECT_EQ(units.front().role == UnitRole::end, r % 2 == 1);
+    if (r % 2 == 1) {
+      EXPECT_NEAR(units.front().to, 102.5, 1e-9);
+    }
+  }
+}
+
+TEST(Coursing, CornersAreDescribedForTheReport) {
+  const LayoutSpec spec = bricks();
+  const Coursing c = course_envelope(pavilion(spec), spec, false);
+  size_t outer = 0, inner = 0;
+  for (const std::string& n : c.notes) {
+    outer += n.find("an outer corner of 90.0°") != std::string::npos;
+    inner += n.find("an inner corner of 90.0°") != std::string::npos;
+  }
+  EXPECT_EQ(outer, 5u);
+  EXPECT_EQ(inner, 1u);
+  EXPECT_STREQ(corner_kind(5), "bend");
+  EXPECT_STREQ(corner_kind(-90), "inner");
+}
+
+}  // namespace
+}  // namespace curdle
