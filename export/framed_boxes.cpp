@@ -37,28 +37,43 @@ std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& r, double 
 
 namespace {
 
-// The middle of a piece's laid face on the strip, u and v: a part that lies before its nominal
-// start is the closing corner unit's part at the strip's start, measured round the seam.
-std::array<double, 2> laid_middle(const Layout& layout, const Element& e) {
+// The extent of a piece's laid face on the strip, u from and to, and v's middle: a part that
+// lies before its nominal start is the closing corner unit's part at the strip's start,
+// measured round the seam.
+struct LaidFace {
+  double from = 0, to = 0, v = 0;
+};
+LaidFace laid_face(const Element& e, double length) {
+  if (e.shape.empty()) return {e.nominal.x, e.nominal.right(), e.nominal.y + e.nominal.h / 2};
   double lo = 1e300, hi = -1e300, bottom = 1e300, top = -1e300;
   for (const Rect& r : e.shape) {
-    const double shift = r.x < e.nominal.x - 1e-6 ? layout.width : 0;
+    const double shift = r.x < e.nominal.x - 1e-6 ? length : 0;
     lo = std::min(lo, r.x + shift), hi = std::max(hi, r.right() + shift);
     bottom = std::min(bottom, r.y), top = std::max(top, r.top());
   }
-  if (e.shape.empty()) return {e.nominal.x + e.nominal.w / 2, e.nominal.y + e.nominal.h / 2};
-  return {wrap_along((lo + hi) / 2, layout.width), (bottom + top) / 2};
+  return {lo, hi, (bottom + top) / 2};
 }
 
 }  // namespace
 
 BuildingPoint framed_centre(const Layout& layout, const Element& e) {
-  const std::array<double, 2> m = laid_middle(layout, e);
-  return frame_point(*frame_at(layout.frames, m[0]), m[0], m[1], 0);
+  const LaidFace f = laid_face(e, layout.width);
+  const double middle = wrap_along((f.from + f.to) / 2, layout.width);
+  const SurfaceFrame* frame = frame_at(layout.frames, middle);
+  const double start = wrap_along(f.from, layout.width);
+  if (frame->bulge != 0 && start >= frame->start &&
+      start + (f.to - f.from) <= frame->start + frame->length + 1e-9) {
+    // A straight unit on a curve: the middle of its chord, inside the arc.
+    const BuildingPoint a = frame_point(*frame, start, f.v, 0);
+    const BuildingPoint b = frame_point(*frame, start + (f.to - f.from), f.v, 0);
+    return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, f.v + frame->base};
+  }
+  return frame_point(*frame, middle, f.v, 0);
 }
 
 const SurfaceFrame* framed_facade(const Layout& layout, const Element& e) {
-  return frame_at(layout.frames, laid_middle(layout, e)[0]);
+  const LaidFace f = laid_face(e, layout.width);
+  return frame_at(layout.frames, wrap_along((f.from + f.to) / 2, layout.width));
 }
 
 }  // namespace curdle

@@ -21,7 +21,8 @@ std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& strip_rect
                                     double inward1, double longest = 1e300);
 
 // Where a piece of the strip lies in the building: the middle of its laid outer face (a unit
-// that turns the closing corner measured round it), mm.
+// that turns the closing corner measured round it; a unit on a curve, the middle of its chord),
+// mm.
 BuildingPoint framed_centre(const Layout& layout, const Element& e);
 
 // The façade that holds the middle of a piece's laid outer face.

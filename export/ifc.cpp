@@ -11,6 +11,7 @@
 #include "curdle/markov.h"
 #include "curdle/palette.h"
 #include "curdle/stop.h"
+#include "export/ifc_envelope.h"
 #include "export/ifc_geometry.h"
 #include "export/ifc_standard_sets.h"
 #include "export/schedule.h"
@@ -48,6 +49,8 @@ IfcClass class_of(const Layout& layout, const Element& e) {
     case ElementForm::cut_piece:
       break;
   }
+  // A building's units are the parts its walls are made of.
+  if (!layout.frames.empty()) return {"IFCBUILDINGELEMENTPART", ".USERDEFINED."};
   return {"IFCCOVERING", layout.kind->upright() ? ".CLADDING." : ".FLOORING.", true};
 }
 
@@ -58,7 +61,8 @@ class IfcModel {
   IfcModel(std::ostream& out, const Layout& layout)
       : w_(out, "layout.ifc", "IFC4", "ReferenceView_V1.2"),
         g_(w_, layout.chord_tolerance),
-        l_(layout) {
+        l_(layout),
+        envelope_(w_, g_, layout, [this](std::string_view what) { return root(what); }) {
     const Box& v = layout.view;
     key_ = fmt::format("{}/{}/{},{},{}+{}x{}x{}/", layout.source.recipe, layout.source.seed,
                        v.origin[0], v.origin[1], v.origin[2], v.size[0], v.size[1], v.size[2]);
@@ -72,6 +76,10 @@ class IfcModel {
     for (size_t i = 0; i < l_.elements.size(); ++i) {
       stop_point();
       element(l_.elements[i], i);
+    }
+    if (!l_.frames.empty()) {
+      const std::vector<int64_t> walls = envelope_.walls(container_place_, parts_);
+      contained_.insert(contained_.end(), walls.begin(), walls.end());
     }
     closing_relations();
     w_.finish();
@@ -198,14 +206,25 @@ class IfcModel {
                         ref(building_place)));
     add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("site-building"), ref(site),
                     ref(building)));
-    const int64_t storey_place =
-        add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(building_place), ref(world_)));
-    const int64_t storey =
-        add(fmt::format("IFCBUILDINGSTOREY({},'Level 0',$,$,{},$,$,.ELEMENT.,0.)", root("storey"),
-                        ref(storey_place)));
-    add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("building-storey"), ref(building),
-                    ref(storey)));
-    container_ = storey, container_place_ = storey_place;
+    // A building of storeys (layout.drawing.storey floor to floor): what it holds stands in
+    // the lowest, its walls running up through the others.
+    std::vector<int64_t> storeys;
+    const double step = l_.drawing.storey;
+    const int levels = !l_.frames.empty() && step > 0
+                           ? std::max(1, static_cast<int>(std::ceil(l_.height / step - 1e-9)))
+                           : 1;
+    for (int k = 0; k < levels; ++k) {
+      const double at = k * step;
+      const int64_t place =
+          add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(building_place),
+                          ref(k ? g_.axes({0, 0, at}, {0, 0, 1}, {1, 0, 0}) : world_)));
+      storeys.push_back(add(fmt::format("IFCBUILDINGSTOREY({},{},$,$,{},$,$,.ELEMENT.,{})",
+                                        root(k ? "storey " + std::to_string(k) : "storey"),
+                                        text("Level " + std::to_string(k)), ref(place), real(at))));
+      if (k == 0) container_ = storeys.back(), container_place_ = place;
+    }
+    add(fmt::format("IFCRELAGGREGATES({},$,$,{},{})", root("building-storey"), ref(building),
+                    step_refs(storeys)));
   }
 
   bool ground_works() const {
@@ -387,12 +406,18 @@ class IfcModel {
     const IfcClass c = class_of(l_, e);
     const Rect b = laid_bounds(e);
     const bool opening = e.form == ElementForm::opening;
-    const int64_t where = opening && e.sheet >= 0
+    const bool framed = !l_.frames.empty();
+    const IfcEnvelopeWriter::Placed unit =
+        framed ? envelope_.unit(e, container_place_, piece_colour(l_, e))
+               : IfcEnvelopeWriter::Placed{};
+    const int64_t where = framed ? unit.placement
+                          : opening && e.sheet >= 0
                               ? placement_in_sheet(b.x, b.y, static_cast<size_t>(e.sheet))
                               : placement_at(b.x, b.y);
     const std::vector<Outline> parts = opening ? std::vector<Outline>{} : piece_outlines(e);
-    const int64_t product_shape =
-        opening ? opening_shape(e) : g_.body(solids(e, parts, piece_colour(l_, e)));
+    const int64_t product_shape = framed    ? unit.shape
+                                  : opening ? opening_shape(e)
+                                            : g_.body(solids(e, parts, piece_colour(l_, e)));
     const int64_t id = add(fmt::format("{}({},{},$,{},{},{},{},{})", c.entity, root(e.id),
                                        text(e.id), text(element_type_of(l_, e)), ref(where),
                                        ref(product_shape), text(e.id), c.predefined));
@@ -401,6 +426,7 @@ class IfcModel {
         add(fmt::format("IFCRELVOIDSELEMENT({},$,$,{},{})", root("void " + e.id),
                         ref(sheet_plates_[static_cast<size_t>(e.sheet)]), ref(id)));
     } else {
+      if (framed) parts_[envelope_.facade_of(e)].push_back(id);  // nested in its façade's wall
       contained_.push_back(id);
     }
     const std::string& material = piece_material(l_, e);
@@ -530,6 +556,8 @@ class IfcModel {
   StepWriter w_;
   IfcGeometryWriter g_;
   const Layout& l_;
+  IfcEnvelopeWriter envelope_;
+  std::vector<std::vector<int64_t>> parts_ = std::vector<std::vector<int64_t>>(l_.frames.size());
   std::string key_;
   int64_t owner_ = 0, world_ = 0, out_of_wall_ = 0, along_ = 0, annotation_ = 0;
   int64_t profile_context_ = 0, project_ = 0, container_ = 0, container_place_ = 0;

@@ -103,6 +103,25 @@ int64_t IfcGeometryWriter::solid(int64_t profile, double base, double depth, con
   return s;
 }
 
+int64_t IfcGeometryWriter::solid_placed(int64_t profile, int64_t position, double depth,
+                                        const Rgb& colour) {
+  const int64_t s = add(fmt::format("IFCEXTRUDEDAREASOLID({},{},{},{})", ref(profile),
+                                    ref(position), ref(z_), real(depth)));
+  add(fmt::format("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour))));
+  return s;
+}
+
+int64_t IfcGeometryWriter::axes(const std::array<double, 3>& o, const std::array<double, 3>& z,
+                                const std::array<double, 3>& x) {
+  auto once = [&](const std::array<double, 3>& d) {
+    auto it = directions_.find(d);
+    return it != directions_.end() ? it->second : directions_[d] = direction(d[0], d[1], d[2]);
+  };
+  const int64_t axis = once(z), ref_direction = once(x);
+  return add(fmt::format("IFCAXIS2PLACEMENT3D({},{},{})", ref(point(o[0], o[1], o[2])), ref(axis),
+                         ref(ref_direction)));
+}
+
 int64_t IfcGeometryWriter::body(const std::vector<int64_t>& items) {
   const int64_t rep = add(fmt::format("IFCSHAPEREPRESENTATION({},'Body','SweptSolid',{})",
                                       ref(body_), step_refs(items)));

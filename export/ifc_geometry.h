@@ -43,6 +43,12 @@ class IfcGeometryWriter {
 
   // A solid from `base` to `base + depth` out of the profile's plane, in `colour`.
   int64_t solid(int64_t profile, double base, double depth, const Rgb& colour);
+  // A solid of `depth` along the z of `position` (an IfcAxis2Placement3D in the product's
+  // frame), for pieces whose faces do not all lie in the product's plane (a corner unit).
+  int64_t solid_placed(int64_t profile, int64_t position, double depth, const Rgb& colour);
+  // An IfcAxis2Placement3D at `origin`, its z `axis` and x `ref`.
+  int64_t axes(const std::array<double, 3>& origin, const std::array<double, 3>& axis,
+               const std::array<double, 3>& ref);
   // The product's shape: a 'Body' representation of `items`.
   int64_t body(const std::vector<int64_t>& items);
 
@@ -57,6 +63,7 @@ class IfcGeometryWriter {
   std::array<double, 2> local_{0, 0};
   int64_t z_ = 0, world_ = 0, body_ = 0;
   std::map<double, int64_t> bases_;
+  std::map<std::array<double, 3>, int64_t> directions_;  // axes' directions, written once each
   std::map<uint32_t, int64_t> styles_;
 };
 

@@ -7,6 +7,7 @@
 
 #include "building/facades.h"
 #include "curdle/error.h"
+#include "layout/contour.h"
 
 namespace curdle {
 namespace {
@@ -55,6 +56,35 @@ std::vector<BuildingOpening> ruled_windows(const WindowRule& rule,
   return out;
 }
 
+// The least a joint may close to at the back of a curved wall, mm.
+constexpr double kNarrowestJoint = 3;
+
+// A curved façade laid as straight units on chords of its arc: how far each sits inside the arc
+// and how its joints taper from the face to the back, or refused where they would close.
+std::string joint_taper(const SurfaceFrame& f, const LayoutSpec& spec, double depth, bool path) {
+  const Arc arc = arc_between({f.from[0], f.from[1], f.bulge}, {f.to[0], f.to[1], 0});
+  const double l = spec.module_w, j = spec.joint, r = arc.radius;
+  // The turn from unit to unit: a unit's chord and a joint along the face.
+  const double turn = 2 * std::asin(std::min(1.0, l / (2 * r))) + j / r;
+  const bool convex = f.bulge > 0;  // the face outside the curve: the joints close behind it
+  const double back = convex ? j - depth * turn : j + depth * turn;
+  const double sagitta = r - std::sqrt(r * r - l * l / 4);
+  if (back < kNarrowestJoint) {
+    const double least = depth * (l + j) / (j - kNarrowestJoint);
+    refuse(path ? "path" : "plan",
+           fmt::format("façade {} curves on a radius of {:.0f} mm, too tight for {:g} mm units "
+                       "{:g} mm deep with {:g} mm joints: the joints would close to {:.1f} mm at "
+                       "the back (at least {:g} mm); use a radius of at least {:.0f} mm, shorter "
+                       "units or wider joints",
+                       f.name, r, l, depth, j, back, kNarrowestJoint, std::ceil(least)));
+  }
+  return fmt::format(
+      "façade {} is curved, radius {:.0f} mm at its face ({}): its {:g} mm units "
+      "lie on chords {:.2f} mm inside the arc at their middle; each {:g} mm joint "
+      "at the face is {:.1f} mm at the back, {:g} mm in",
+      f.name, r, convex ? "convex" : "concave", l, sagitta, j, back, depth);
+}
+
 }  // namespace
 
 const SurfaceFrame* facade_named(const std::vector<SurfaceFrame>& facades,
@@ -85,6 +115,8 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
         fmt::format("the envelope would hold about {:.0f} units, above the limit of {:.0f}: use "
                     "larger units, a lower wall or a smaller plan",
                     units, kMostEnvelopeUnits));
+  for (const SurfaceFrame& f : env.facades)
+    if (f.bulge != 0) env.notes.push_back(joint_taper(f, spec, env.depth, keys.plan.empty()));
   std::vector<BuildingOpening> given = keys.openings;
   if (keys.windows) {
     const auto ruled = ruled_windows(*keys.windows, env.facades, keys.height, keys.storey);

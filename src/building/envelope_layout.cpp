@@ -24,6 +24,7 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
   layout.frames = env.facades;
   layout.closed_envelope = env.closed;
   layout.bond = 0.5;
+  layout.opening_kinds = env.opening_type;
   int64_t course = -1, column = 0;
   for (const CourseUnit& u : coursing.units) {
     stop_point();

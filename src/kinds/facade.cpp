@@ -52,6 +52,8 @@ void FacadeKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
            "a building's courses are laid in stretcher bond (\"half\", the default) or "
            "\"stack\"");
   keys.stack = r.get("bond") && spec.bond == 0;
+  // The storeys mark the coursed sheets' levels and the model's building storeys.
+  if (spec.drawing.storey == 0) spec.drawing.storey = keys.building->storey;
 }
 
 Layout FacadeKind::build(const Design& design, const CurdField& field, const Box& view,

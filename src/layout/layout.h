@@ -315,9 +315,10 @@ struct Layout {
   std::vector<Element> elements;
   // Every hole in the surface: a façade's openings, then the excluded zones' rectangles.
   std::vector<Rect> openings;
-  size_t openings_given = 0;     // the first of `openings` are the surface's own (windows, doors),
-                                 // the rest excluded zones' rectangles
-  std::vector<ZoneCount> zones;  // one per [[layout.zones]], in order
+  size_t openings_given = 0;  // the first of `openings` are the surface's own (windows, doors),
+                              // the rest excluded zones' rectangles
+  std::vector<std::string> opening_kinds;  // a building's: "window" or "door" per own opening
+  std::vector<ZoneCount> zones;            // one per [[layout.zones]], in order
   // With layout.outline: the polygon, and the parts of the width x height rectangle outside it
   // (no elements; drawn as paper, not as openings).
   Polygon outline;

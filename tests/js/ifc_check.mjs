@@ -14,7 +14,7 @@
 import fs from 'fs';
 import path from 'path';
 import * as W from 'web-ifc';
-import { boxMiss, csvRows, expectedBox } from './schedule_rows.mjs';
+import { boxMiss, buildingMiss, csvRows, expectedBox, isBuilding } from './schedule_rows.mjs';
 
 const api = new W.IfcAPI();
 await api.Init();
@@ -23,7 +23,7 @@ await api.Init();
 api.SetLogLevel(W.LogLevel.LOG_LEVEL_OFF);
 const kTolerance = 1e-5;  // 0.01 mm, in web-ifc's metres
 const kClasses = [W.IFCCOVERING, W.IFCOPENINGELEMENT, W.IFCGEOGRAPHICELEMENT, W.IFCFURNITURE,
-                  W.IFCBUILDINGELEMENTPROXY];
+                  W.IFCBUILDINGELEMENTPROXY, W.IFCBUILDINGELEMENTPART];
 
 // Each element's extent in web-ifc's frame (metres, Y up, Z towards the viewer).
 function extents(model, ids) {
@@ -137,6 +137,36 @@ function containers(model) {
   return out;
 }
 
+// A building's parts: each unit's wall (by the wall's Tag, its façade's name), which nests it.
+function wallsOfParts(model) {
+  const out = new Map();
+  const rels = api.GetLineIDsWithType(model, W.IFCRELNESTS);
+  for (let i = 0; i < rels.size(); ++i) {
+    const raw = api.GetRawLineData(model, rels.get(i)).arguments;
+    const whole = raw[4].value;
+    if (api.GetLineType(model, whole) !== W.IFCWALL) continue;
+    const tag = api.GetRawLineData(model, whole).arguments[7]?.value;
+    for (const part of raw[5]) out.set(part.value, tag);
+  }
+  return out;
+}
+
+// A building's walls, openings, windows and doors against its report: one wall per façade, one
+// opening per window or door, each voiding its wall and filled.
+function buildingProblems(model, dir, problems) {
+  const report = JSON.parse(fs.readFileSync(path.join(dir, 'report.json'), 'utf8'));
+  const facades = report.layout.facades;
+  const count = (type) => api.GetLineIDsWithType(model, type).size();
+  const openings = facades.reduce((n, f) => n + f.openings, 0);
+  if (count(W.IFCWALL) !== facades.length) problems.push(`${count(W.IFCWALL)} walls for ${facades.length} façades`);
+  for (const [what, n] of [['openings', count(W.IFCOPENINGELEMENT)], ['voids', count(W.IFCRELVOIDSELEMENT)],
+                           ['fillings', count(W.IFCRELFILLSELEMENT)],
+                           ['windows and doors', count(W.IFCWINDOW) + count(W.IFCDOOR)]])
+    if (n !== openings) problems.push(`${n} ${what} for ${openings} openings in the report`);
+  if (count(W.IFCBUILDINGSTOREY) < 1) problems.push('no storey');
+  return { walls: facades.length, openings };
+}
+
 // The area of a plate's faces that look along `normal` (metres², web-ifc's frame): the sheet
 // as punched, holes out.
 function facingArea(model, id, normal) {
@@ -184,7 +214,11 @@ function check(dir) {
       byTag.set(a[7]?.value, { id: ids.get(i), type, line, material: null });
     }
   }
+  const building = isBuilding(rows);
+  if (building)  // a building's openings are its walls', not schedule rows
+    for (const [tag, e] of byTag) if (e.type === W.IFCOPENINGELEMENT) byTag.delete(tag);
   const byId = new Map([...byTag.values()].map((e) => [e.id, e]));
+  const wallOf = building ? wallsOfParts(model) : new Map();
   const sets = setsOf(model, ['Curdle_Element', 'Qto_PlateBaseQuantities']);
   const materials = api.GetLineIDsWithType(model, W.IFCRELASSOCIATESMATERIAL);
   for (let i = 0; i < materials.size(); ++i) {
@@ -204,10 +238,12 @@ function check(dir) {
     if (e.material !== row.material) problems.push(`${row.element_id}: material ${e.material}, schedule ${row.material}`);
     if (e.type !== W.IFCOPENINGELEMENT) {
       const holder = heldBy.get(e.id);
+      if (building && wallOf.get(e.id) !== row.facade) problems.push(`${row.element_id}: a part of wall ${wallOf.get(e.id)}, not ${row.facade}`);
       if (holder !== W.IFCSPACE && holder !== W.IFCBUILDINGSTOREY) problems.push(`${row.element_id}: not in a space or a storey`);
       const shape = api.GetRawLineData(model, e.line.Representation.value).arguments[2][0].value;
       const items = api.GetRawLineData(model, shape).arguments[3];
-      if (items.length !== (e.type === W.IFCGEOGRAPHICELEMENT ? 2 : 1)) problems.push(`${row.element_id}: ${items.length} solids`);
+      const solids = e.type === W.IFCGEOGRAPHICELEMENT ? 2 : 1;
+      if (building ? items.length < 1 : items.length !== solids) problems.push(`${row.element_id}: ${items.length} solids`);
       wanted.push(e.id);
     }
   }
@@ -218,9 +254,19 @@ function check(dir) {
   const first = byTag.get(rows[0]?.element_id);
   const upright = first ? Math.abs(placementFrame(model, first.line.ObjectPlacement.value, frames)[3][2]) < 0.5 : false;
   let worst = 0;
+  const built = building ? buildingProblems(model, dir, problems) : null;
+  const curved = building && JSON.parse(fs.readFileSync(path.join(dir, 'report.json'), 'utf8')).layout.facades.some((f) => f.curved);
   for (const row of rows) {
     const e = byTag.get(row.element_id);
     if (!e) continue;
+    if (building) {  // its face's middle on its mesh's outside, at its course's height
+      const extent = meshes.get(e.id);
+      if (!extent) { problems.push(`${row.element_id}: no mesh`); continue; }
+      const miss = buildingMiss(extent, row, curved);
+      worst = Math.max(worst, miss);
+      if (miss > kTolerance) problems.push(`${row.element_id}: ${(miss * 1000).toFixed(4)} mm from its face's middle`);
+      continue;
+    }
     // Placed at its own corner.
     const at = placementFrame(model, e.line.ObjectPlacement.value, frames)[0];
     const corner = modelPoint(Number(row.x_mm), Number(row.y_mm), upright);
@@ -235,7 +281,7 @@ function check(dir) {
   const arcs = annotationArcs(model, problems);
   const openings = rows.filter((r) => r.element_type === 'opening').length;
   const voids = api.GetLineIDsWithType(model, W.IFCRELVOIDSELEMENT).size();
-  if (voids !== openings) problems.push(`${voids} voids for ${openings} openings`);
+  if (!building && voids !== openings) problems.push(`${voids} voids for ${openings} openings`);
   const plates = api.GetLineIDsWithType(model, W.IFCPLATE);
   for (let i = 0; i < plates.size(); ++i) {
     const plate = plates.get(i);
@@ -251,7 +297,7 @@ function check(dir) {
     console.log(`${name}: ${problems.length} problems`);
     for (const p of problems.slice(0, 10)) console.log('  ' + p);
   } else {
-    console.log(`${name}: ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)${voids ? `, ${voids} voids` : ''}${plates.size() ? `, ${plates.size()} sheets as punched` : ''}${arcs ? `, ${arcs} arcs set out` : ''}; opened and meshed in ${(meshed / 1000).toFixed(2)} s`);
+    console.log(`${name}: ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)${built ? `, ${built.walls} walls with their ${built.openings} openings filled` : ''}${voids ? `, ${voids} voids` : ''}${plates.size() ? `, ${plates.size()} sheets as punched` : ''}${arcs ? `, ${arcs} arcs set out` : ''}; opened and meshed in ${(meshed / 1000).toFixed(2)} s`);
   }
   slowest = Math.max(slowest, meshed / 1000);
   return problems.length === 0;

@@ -13,12 +13,12 @@ import fs from 'fs';
 import path from 'path';
 import * as Lite from '@ifc-lite/parser';
 import init, { IfcAPI } from '@ifc-lite/wasm';
-import { boxMiss, csvRows, expectedBox } from './schedule_rows.mjs';
+import { boxMiss, buildingMiss, csvRows, expectedBox, isBuilding } from './schedule_rows.mjs';
 
 await init({ module_or_path: fs.readFileSync(new URL('./node_modules/@ifc-lite/wasm/pkg/ifc-lite_bg.wasm', import.meta.url)) });
 const geometry = new IfcAPI();
 const kTolerance = 1e-5;  // 0.01 mm, in metres
-const kClasses = ['IFCCOVERING', 'IFCOPENINGELEMENT', 'IFCGEOGRAPHICELEMENT', 'IFCFURNITURE', 'IFCBUILDINGELEMENTPROXY'];
+const kClasses = ['IFCCOVERING', 'IFCOPENINGELEMENT', 'IFCGEOGRAPHICELEMENT', 'IFCFURNITURE', 'IFCBUILDINGELEMENTPROXY', 'IFCBUILDINGELEMENTPART'];
 const kStandardSets = new Map([
   ['IFCCOVERING', ['Pset_CoveringCommon', 'Qto_CoveringBaseQuantities', 'NetArea']],
   ['IFCOPENINGELEMENT', ['Pset_OpeningElementCommon', 'Qto_OpeningElementBaseQuantities', 'Area']],
@@ -137,6 +137,15 @@ async function check(dir) {
       if (a.name !== a.tag) problems.push(`#${id}: Name and Tag differ`);
       byTag.set(a.tag, { id, type });
     }
+  const building = isBuilding(rows);
+  let curved = false;
+  if (building) {  // its openings are its walls', not schedule rows: one wall per façade
+    for (const [tag, e] of byTag) if (e.type === 'IFCOPENINGELEMENT') byTag.delete(tag);
+    const facades = JSON.parse(fs.readFileSync(path.join(dir, 'report.json'), 'utf8')).layout.facades;
+    curved = facades.some((f) => f.curved);
+    const walls = store.entityIndex.byType.get('IFCWALL')?.length ?? 0;
+    if (walls !== facades.length) problems.push(`${walls} walls for ${facades.length} façades`);
+  }
   if (byTag.size !== rows.length) problems.push(`${byTag.size} elements for ${rows.length} schedule rows`);
   const meshes = extents(bytes);
   const bodies = rows.filter((r) => byTag.get(r.element_id)?.type !== 'IFCOPENINGELEMENT');
@@ -164,7 +173,7 @@ async function check(dir) {
     if (e.type === 'IFCOPENINGELEMENT') continue;
     const extent = meshes.get(e.id);
     if (!extent) { problems.push(`${row.element_id}: no mesh`); continue; }
-    const miss = boxMiss(extent, expectedBox(row, upright));
+    const miss = building ? buildingMiss(extent, row, curved) : boxMiss(extent, expectedBox(row, upright));
     worst = Math.max(worst, miss);
     if (miss > kTolerance) problems.push(`${row.element_id}: extent off by ${(miss * 1000).toFixed(4)} mm`);
   }

@@ -28,7 +28,7 @@ case $step in
     while IFS= read -r recipe; do
       grep -q '^\[layout\]' "$recipe" || continue
       "$curdle" generate "$recipe" --out "$models/$(basename "$recipe" .toml)" \
-        --outputs layout.ifc,schedule.csv,layout.gpkg > /dev/null
+        --outputs layout.ifc,schedule.csv,layout.gpkg,report.json > /dev/null
     done < <(find "$src/patterns" -name '*.toml' | sort)
     again=$(mktemp -d)
     trap 'rm -rf "$again"' EXIT

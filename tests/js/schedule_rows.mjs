@@ -35,3 +35,23 @@ export function boxMiss(e, box) {
     if (box[a]) worst = Math.max(worst, Math.abs(e[i] - box[a][0]), Math.abs(e[3 + i] - box[a][1]));
   return worst;
 }
+
+// A building's schedule (layout.building): each row's x, y, z is the middle of the unit's outer
+// face in the building (mm, x east, y north, z up), and its façade is named.
+export function isBuilding(rows) { return rows.length > 0 && 'facade' in rows[0]; }
+
+// How far a building unit's mesh extent [min x, y, z, max x, y, z] (metres, Y up, Z towards the
+// viewer, south) lies from what its row says: its course's height about z, and the middle of
+// its face on the extent's outside (its faces stand along x and y on a square plan; on a curve
+// the face's middle lies inside the extent, behind no face).
+export function buildingMiss(e, row, curved = false) {
+  const p = [Number(row.x_mm) / 1000, Number(row.z_mm) / 1000, -Number(row.y_mm) / 1000];
+  const h = Number(row.height_mm) / 1000;
+  let worst = Math.max(Math.abs(e[1] - (p[1] - h / 2)), Math.abs(e[4] - (p[1] + h / 2)));
+  for (const a of [0, 2]) worst = Math.max(worst, e[a] - p[a], p[a] - e[3 + a]);
+  if (!curved) {
+    const onFace = Math.min(...[0, 2].flatMap((a) => [Math.abs(p[a] - e[a]), Math.abs(p[a] - e[3 + a])]));
+    worst = Math.max(worst, onFace);
+  }
+  return worst;
+}

@@ -1,0 +1,182 @@
+#include "export/ifc_envelope.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+
+#include "export/framed_boxes.h"
+
+namespace curdle {
+namespace {
+
+using Vec = std::array<double, 3>;
+
+std::string ref(int64_t id) { return fmt::format("#{}", id); }
+std::string text(std::string_view s) { return step_string(s); }
+std::string real(double v) { return step_real(v); }
+
+// A direction with rounding dust (6E-17 for 0) cleared.
+Vec tidy(Vec v) {
+  for (double& c : v)
+    if (std::fabs(c) < 1e-12) c = 0;
+  return v;
+}
+
+// A frame in the building: origin, x along the façade, y up, z out of the wall.
+struct Axes {
+  Vec origin, x, y{0, 0, 1}, z;
+  // A point or direction of the building in these axes' coordinates.
+  Vec local(const Vec& p, bool point) const {
+    Vec d = p;
+    if (point)
+      for (int k = 0; k < 3; ++k) d[k] -= origin[k];
+    return tidy({d[0] * x[0] + d[1] * x[1] + d[2] * x[2], d[0] * y[0] + d[1] * y[1] + d[2] * y[2],
+                 d[0] * z[0] + d[1] * z[1] + d[2] * z[2]});
+  }
+};
+
+// The axes of a face's piece: at its outer face's start, along its chord.
+Axes face_axes(const FramedBox& b) {
+  Axes a;
+  const Vec along{b.along[0], b.along[1], 0};
+  a.x = along;
+  a.z = {b.along[1], -b.along[0], 0};  // the outside is on the right of the strip
+  const double half = b.length / 2, in = b.depth / 2;
+  a.origin = {b.centre[0] - along[0] * half + a.z[0] * in,
+              b.centre[1] - along[1] * half + a.z[1] * in, b.centre[2] - b.height / 2};
+  return a;
+}
+
+}  // namespace
+
+IfcEnvelopeWriter::IfcEnvelopeWriter(StepWriter& w, IfcGeometryWriter& g, const Layout& layout,
+                                     std::function<std::string(std::string_view)> root)
+    : w_(w), g_(g), l_(layout), root_(std::move(root)) {}
+
+size_t IfcEnvelopeWriter::facade_of(const Element& e) const {
+  return static_cast<size_t>(framed_facade(l_, e) - l_.frames.data());
+}
+
+IfcEnvelopeWriter::Placed IfcEnvelopeWriter::unit(const Element& e, int64_t container,
+                                                  const Rgb& colour) {
+  const double t = l_.thickness;
+  std::vector<FramedBox> boxes;
+  for (const Rect& r : e.shape) {
+    const std::vector<FramedBox> more = framed_boxes(l_, r, 0, t);
+    boxes.insert(boxes.end(), more.begin(), more.end());
+  }
+  const Axes own = face_axes(boxes.front());
+  const int64_t frame = g_.axes(own.origin, tidy(own.z), tidy(own.x));
+  Placed p;
+  p.placement = add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame)));
+  std::vector<int64_t> solids;
+  for (const FramedBox& b : boxes) {
+    // Each face's solid from its outer face inwards: its own axes, `t` behind the face.
+    const Axes face = face_axes(b);
+    const Vec back{face.origin[0] - face.z[0] * t, face.origin[1] - face.z[1] * t, face.origin[2]};
+    const int64_t at =
+        position(own.local(back, true), own.local(face.z, false), own.local(face.x, false));
+    solids.push_back(g_.solid_placed(face_profile(b.length, b.height), at, t, colour));
+  }
+  p.shape = g_.body(solids);
+  return p;
+}
+
+int64_t IfcEnvelopeWriter::face_profile(double length, double height) {
+  auto it = profiles_.find({length, height});
+  if (it != profiles_.end()) return it->second;
+  g_.set_local_origin(0, 0);
+  return profiles_[{length, height}] = g_.rectangle(Rect{0, 0, length, height});
+}
+
+int64_t IfcEnvelopeWriter::position(const Vec& origin, const Vec& axis, const Vec& ref) {
+  // Rounded to a micrometre, so that the same position in two units is written once.
+  std::array<double, 9> key{};
+  for (int k = 0; k < 3; ++k)
+    key[k] = std::round(origin[k] * 1e3) / 1e3, key[3 + k] = std::round(axis[k] * 1e9) / 1e9,
+    key[6 + k] = std::round(ref[k] * 1e9) / 1e9;
+  auto it = positions_.find(key);
+  if (it != positions_.end()) return it->second;
+  return positions_[key] =
+             g_.axes({key[0], key[1], key[2]}, {key[3], key[4], key[5]}, {key[6], key[7], key[8]});
+}
+
+int64_t IfcEnvelopeWriter::placement_on(const SurfaceFrame& f, double u, double v,
+                                        int64_t container, double to) {
+  const BuildingPoint o = frame_point(f, u, v, 0);
+  std::array<double, 2> d = frame_direction(f, u);
+  if (to > u) {  // along the chord to `to`: an opening in a curved wall is straight
+    const BuildingPoint e = frame_point(f, to, v, 0);
+    const double n = std::hypot(e[0] - o[0], e[1] - o[1]);
+    d = {(e[0] - o[0]) / n, (e[1] - o[1]) / n};
+  }
+  const int64_t frame = g_.axes({o[0], o[1], o[2]}, tidy({d[1], -d[0], 0}), tidy({d[0], d[1], 0}));
+  return add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame)));
+}
+
+std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
+                                              const std::vector<std::vector<int64_t>>& parts) {
+  std::vector<int64_t> contained;
+  const double t = l_.thickness;
+  std::vector<int64_t> wall_ids;
+  for (size_t k = 0; k < l_.frames.size(); ++k) {
+    const SurfaceFrame& f = l_.frames[k];
+    const std::string name = "Wall " + f.name;
+    const int64_t wall = add(
+        fmt::format("IFCWALL({},{},{},$,{},$,{},.SOLIDWALL.)", root_("wall " + f.name), text(name),
+                    text(fmt::format("{:g} mm along the envelope from {:g} mm", f.length, f.start)),
+                    ref(placement_on(f, f.start, 0, container)), text(f.name)));
+    wall_ids.push_back(wall);
+    // Its units nested in it, and each also in the storey: IfcRelAggregates would say the same,
+    // but web-ifc then subtracts the wall's openings from every unit (already cut to them),
+    // taking 6 s to open the pavilion instead of 3.
+    if (!parts[k].empty())
+      add(fmt::format("IFCRELNESTS({},$,$,{},{})", root_("wall-parts " + f.name), ref(wall),
+                      step_refs(parts[k])));
+  }
+  contained = wall_ids;
+  int doors = 0, windows = 0;
+  for (size_t i = 0; i < l_.openings_given; ++i) {
+    const Rect& o = l_.openings[i];
+    const SurfaceFrame* f = frame_at(l_.frames, o.x + o.w / 2);
+    const size_t k = static_cast<size_t>(f - l_.frames.data());
+    const bool door = i < l_.opening_kinds.size() && l_.opening_kinds[i] == "door";
+    const std::string id = fmt::format("{}-{}", door ? "D" : "W", door ? ++doors : ++windows);
+    // The opening through the wall, 10 mm proud of both faces so that no reader leaves a skin
+    // (and on a curve by its chord's sagitta more, at the back).
+    g_.set_local_origin(0, 0);
+    const BuildingPoint a = frame_point(*f, o.x, 0, 0), b = frame_point(*f, o.right(), 0, 0);
+    const double chord = std::hypot(b[0] - a[0], b[1] - a[1]);
+    const double radius = f->bulge == 0 ? 0 : f->length / std::fabs(4 * std::atan(f->bulge));
+    const double sag = f->bulge == 0 ? 0 : radius - std::sqrt(radius * radius - chord * chord / 4);
+    const int64_t cut = g_.solid_placed(g_.rectangle(Rect{0, 0, chord, o.h}),
+                                        g_.axes({0, 0, -t - 10 - sag}, {0, 0, 1}, {1, 0, 0}),
+                                        t + 20 + sag, Rgb{255, 255, 255});
+    const int64_t opening = add(fmt::format(
+        "IFCOPENINGELEMENT({},{},$,'opening',{},{},{},.OPENING.)", root_("opening " + id), text(id),
+        ref(placement_on(*f, o.x, o.y, container, o.right())), ref(g_.body({cut})), text(id)));
+    add(fmt::format("IFCRELVOIDSELEMENT({},$,$,{},{})", root_("void " + id), ref(wall_ids[k]),
+                    ref(opening)));
+    // The window's glass or the door's leaf, 40 mm thick in the middle of the reveal.
+    const int64_t panel = g_.solid_placed(g_.rectangle(Rect{0, 0, chord, o.h}),
+                                          g_.axes({0, 0, -t / 2 - 20}, {0, 0, 1}, {1, 0, 0}), 40,
+                                          door ? Rgb{110, 80, 60} : Rgb{160, 200, 220});
+    const std::string entity =
+        door ? fmt::format("IFCDOOR({},{},$,'door',{},{},{},{},{},.DOOR.,.SINGLE_SWING_LEFT.,$)",
+                           root_("door " + id), text(id),
+                           ref(placement_on(*f, o.x, o.y, container, o.right())),
+                           ref(g_.body({panel})), text(id), real(o.h), real(o.w))
+             : fmt::format("IFCWINDOW({},{},$,'window',{},{},{},{},{},.WINDOW.,.SINGLE_PANEL.,$)",
+                           root_("window " + id), text(id),
+                           ref(placement_on(*f, o.x, o.y, container, o.right())),
+                           ref(g_.body({panel})), text(id), real(o.h), real(o.w));
+    const int64_t filler = add(entity);
+    add(fmt::format("IFCRELFILLSELEMENT({},$,$,{},{})", root_("fill " + id), ref(opening),
+                    ref(filler)));
+    contained.push_back(filler);
+  }
+  return contained;
+}
+
+}  // namespace curdle

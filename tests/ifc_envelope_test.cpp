@@ -1,0 +1,86 @@
+// Tests of ifc_envelope.h, through layout.ifc of the pavilion: a wall per façade nesting its
+// units, each unit a building element part in the storey, an opening per window and door
+// voiding its wall and filled, storeys at the recipe's floor-to-floor height, and a corner
+// unit one part with a solid on each face.
+#include "export/ifc_envelope.h"
+
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <sstream>
+
+#include "building_support.h"
+#include "export/ifc.h"
+
+namespace curdle {
+namespace {
+
+size_t count(const std::string& text, const std::string& entity) {
+  std::string key = "=";  // appended: GCC 12 warns falsely on "=" + string
+  key += entity;
+  key += '(';
+  size_t n = 0;
+  for (size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) ++n;
+  return n;
+}
+
+// The line of the entity `#id=...`.
+std::string line_of(const std::string& text, const std::string& id) {
+  std::string key = "\n#";
+  key += id;
+  key += '=';
+  const size_t at = text.find(key);
+  return at == std::string::npos ? "" : text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+}
+
+TEST(IfcEnvelope, WallsNestTheirUnitsAndOpeningsVoidThemFilledByWindowsAndDoors) {
+  const Layout l = test::lay_recipe(test::pavilion_recipe(R"(storey = 3525
+[layout.building.windows]
+size = [1200, 1500]
+every = 3000
+clear = 900
+sill = 900
+[[layout.building.openings]]
+facade = "S"
+rect = [9400, 0, 1200, 2400]
+type = "door"
+)"));
+  std::ostringstream out;
+  write_layout_ifc(out, l);
+  const std::string ifc = out.str();
+  EXPECT_EQ(count(ifc, "IFCWALL"), 6u);
+  EXPECT_EQ(count(ifc, "IFCRELNESTS"), 6u);
+  EXPECT_EQ(count(ifc, "IFCBUILDINGELEMENTPART"), l.elements.size());
+  EXPECT_EQ(count(ifc, "IFCCOVERING"), 0u);
+  EXPECT_EQ(count(ifc, "IFCOPENINGELEMENT"), 41u);  // 40 windows by rule and the door
+  EXPECT_EQ(count(ifc, "IFCRELVOIDSELEMENT"), 41u);
+  EXPECT_EQ(count(ifc, "IFCRELFILLSELEMENT"), 41u);
+  EXPECT_EQ(count(ifc, "IFCWINDOW"), 40u);
+  EXPECT_EQ(count(ifc, "IFCDOOR"), 1u);
+  EXPECT_NE(ifc.find("'Level 1',$,$,#"), std::string::npos);
+  EXPECT_NE(ifc.find(",.ELEMENT.,3525.);"), std::string::npos);
+  // A quoin is one part whose body has two solids, one on each face.
+  const Element* quoin = nullptr;
+  for (const Element& e : l.elements)
+    if (e.corner == 0 && !quoin) quoin = &e;
+  ASSERT_NE(quoin, nullptr);
+  std::string named = ",'";
+  named += quoin->id;
+  named += "',$,";
+  const size_t at = ifc.find(named);
+  ASSERT_NE(at, std::string::npos);
+  const std::string part =
+      ifc.substr(ifc.rfind('\n', at) + 1, ifc.find('\n', at) - ifc.rfind('\n', at) - 1);
+  ASSERT_EQ(part.find("IFCBUILDINGELEMENTPART("), part.find('=') + 1) << part;
+  // Its representation (after its placement), a product shape of one body of two solids.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(part, m, std::regex("',#\\d+,#(\\d+),'")));
+  const std::string shape = line_of(ifc, m[1].str());
+  ASSERT_TRUE(std::regex_search(shape, m, std::regex("\\(\\$,\\$,\\(#(\\d+)\\)\\)")));
+  const std::string line = line_of(ifc, m[1].str());
+  EXPECT_NE(line.find("'SweptSolid',(#"), std::string::npos);
+  EXPECT_EQ(std::count(line.begin(), line.end(), '#'), 4) << line;  // itself, context, 2 solids
+}
+
+}  // namespace
+}  // namespace curdle
