@@ -103,6 +103,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   cairo_set_line_width(cr, 0.25);
   cairo_stroke(cr);
   start_corner(cr, layout, v);
+  draw_facades(cr, layout, v);
   setting_out(cr, layout, v);
 
   // Legend: up to 8 rows a column, 62 mm a column, from the strip's left.
@@ -366,6 +367,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   draw_boundary(cr, layout, v);
   draw_labels(cr, plan, v, set.labels_on[index]);
   cairo_restore(cr);
+  draw_facades(cr, layout, v);
   // The start corner, when it is on this sheet.
   const double sx = from_right(layout.origin) ? layout.width : 0;
   const double sy = from_top(layout.origin) ? layout.height : 0;

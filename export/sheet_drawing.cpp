@@ -343,6 +343,44 @@ void start_corner(cairo_t* cr, const Layout& layout, const View& v) {
        right ? Align::right : Align::left);
 }
 
+void draw_facades(cairo_t* cr, const Layout& layout, const View& v) {
+  if (layout.frames.empty()) return;
+  const double bottom = v.y(0), top = v.y(layout.height);
+  const double below = bottom + kStartDotMm + 1.25;  // in line with the start corner's words
+  // Clear of those words where the strip starts on this sheet.
+  const double clear = v.shows(Rect{0, 0, 0, 0})
+                           ? v.x(0) + kStartArrowMm + 4 + text_width(cr, kStartText, kStartTextMm)
+                           : -1e300;
+  cairo_save(cr);
+  colour(cr, kBlue);
+  cairo_set_line_width(cr, 0.35);
+  const double dash[] = {2.0, 1.0};
+  for (const SurfaceFrame& f : layout.frames) {
+    const double from = std::max(f.start, v.window.x);
+    const double to = std::min(f.start + f.length, v.window.right());
+    if (to <= from) continue;
+    // The corner at the façade's end, dashed up the wall and down to the names.
+    const double end = f.start + f.length;
+    if (end >= v.window.x && end <= v.window.right() && !f.last_of_path) {
+      cairo_set_dash(cr, dash, 2, 0);
+      cairo_move_to(cr, v.x(end), top);
+      cairo_line_to(cr, v.x(end), below + 1);
+      cairo_stroke(cr);
+      cairo_set_dash(cr, nullptr, 0, 0);
+    }
+    std::string name = f.name;
+    name += f.bulge != 0 ? " (curved), " : ", ";
+    name += fmt::format("{:g} mm", std::round(f.length * 10) / 10);
+    const double left = std::max(v.x(from), clear), right = v.x(to);
+    for (const std::string& said : {name, f.name})
+      if (right - left > text_width(cr, said, 2.5) + 3) {
+        text_on_halo(cr, (left + right) / 2, below, said, 2.5, Align::centre);
+        break;
+      }
+  }
+  cairo_restore(cr);
+}
+
 namespace {
 
 // Each arc of the outline and zones named where it runs (A1 and its radius at its middle), with

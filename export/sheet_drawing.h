@@ -75,6 +75,10 @@ void for_each_element(const Layout& layout, const View& v, F&& f) {
 inline constexpr double kFaintAlpha = 0.35;
 void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint);
 
+// A building's façades on its unrolled strip: each corner dashed up the wall, and each façade
+// named under it with its length, as far as `v` shows them.
+void draw_facades(cairo_t* cr, const Layout& layout, const View& v);
+
 // The layout's zones ([[layout.zones]]) as layout.svg draws them: outlined, value zones dashed,
 // and named (with their value) when `named`; installer's sheets draw the outlines alone, so that
 // no name lies on an ID.

@@ -79,6 +79,19 @@ PY
     xmllint --noout "$work/named/$f" && pass || fail "$f with a name holding & and < is not XML"
     grep -q '<script' "$work/named/$f" && fail "$f holds a live <script>" || pass
   done
+  # Buildings: numbers and plans no wall can be built to.
+  local b="$p/pavilion-l-shaped.toml"
+  refused "must be at least 3 corners" generate "$b" --set 'layout.building.plan=[[0, 0], [nan, 0], [0, 5000]]'
+  refused "beyond 10 km" generate "$b" --set 'layout.building.plan=[[0, 0], [1e300, 0], [0, 5000]]'
+  refused "half a turn" generate "$b" --set 'layout.building.plan=[[0, 0, 5], [9000, 0], [9000, 6000], [0, 6000]]'
+  refused "above the limit of 500000" generate "$b" --set 'layout.building.height=9e6'
+  refused "a length in millimetres" generate "$b" --set 'layout.building.height=inf'
+  refused "start" generate "$b" --set 'layout.building.start=6'
+  refused "facade = its" generate "$b" --set 'layout.building.openings=[{facade=-1, rect=[0, 0, 900, 900]}]'
+  refused "at least the window's width" generate "$b" --set 'layout.building.windows.every=100'
+  refused "stretcher bond" generate "$b" --set 'layout.bond="third"'
+  refused "layout.building.start instead" generate "$b" --set 'layout.origin="top-right"'
+  refused "not whole courses" generate "$b" --set 'layout.joint=11'
 }
 
 section_options() {

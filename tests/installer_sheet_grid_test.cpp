@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "curdle/error.h"
+#include "building_support.h"
 #include "layout_support.h"
 
 namespace curdle {
@@ -94,6 +95,18 @@ TEST(InstallerSheetGrid, SheetsAreBalancedByWhatTheyHold) {
   for (const size_t h : held)
     EXPECT_GE(static_cast<double>(h), 0.4 * static_cast<double>(pieces.size()))
         << held[0] << " and " << held[1] << " pieces";
+}
+
+TEST(InstallerSheetGrid, ABuildingsSheetsEachHoldOneFacadeWithTheCornersOnTheirEdges) {
+  const Layout l = test::lay_recipe(test::pavilion_recipe());
+  const InstallerPlan plan = plan_installer_sheets(l);
+  ASSERT_GT(plan.grid_columns, l.frames.size() - 1);
+  for (const InstallerSheet& sheet : plan.sheets)
+    for (const SurfaceFrame& f : l.frames) {
+      const double corner = f.start + f.length;
+      EXPECT_FALSE(corner > sheet.window.x + 1e-6 && corner < sheet.window.right() - 1e-6)
+          << "the corner at " << corner << " mm crosses a sheet from " << sheet.window.x;
+    }
 }
 
 }  // namespace

@@ -71,12 +71,17 @@ std::string joint_taper(const SurfaceFrame& f, const LayoutSpec& spec, double de
   const double sagitta = r - std::sqrt(r * r - l * l / 4);
   if (back < kNarrowestJoint) {
     const double least = depth * (l + j) / (j - kNarrowestJoint);
-    refuse(path ? "path" : "plan",
-           fmt::format("façade {} curves on a radius of {:.0f} mm, too tight for {:g} mm units "
-                       "{:g} mm deep with {:g} mm joints: the joints would close to {:.1f} mm at "
-                       "the back (at least {:g} mm); use a radius of at least {:.0f} mm, shorter "
-                       "units or wider joints",
-                       f.name, r, l, depth, j, back, kNarrowestJoint, std::ceil(least)));
+    refuse(
+        path ? "path" : "plan",
+        fmt::format("façade {} curves on a radius of {:.0f} mm, too tight for {:g} mm units "
+                    "{:g} mm deep with {:g} mm joints: {} (a joint must keep {:g} mm); use a "
+                    "radius of at least {:.0f} mm, shorter units or wider joints",
+                    f.name, r, l, depth, j,
+                    back < 0 ? fmt::format("the units would run {:.1f} mm into each other at "
+                                           "the back",
+                                           -back)
+                             : fmt::format("the joints would close to {:.1f} mm at the back", back),
+                    kNarrowestJoint, std::ceil(least)));
   }
   return fmt::format(
       "façade {} is curved, radius {:.0f} mm at its face ({}): its {:g} mm units "

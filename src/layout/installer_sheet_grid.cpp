@@ -122,6 +122,29 @@ std::vector<double> sheet_edges(const std::vector<std::pair<double, double>>& sp
                                                                                : wide.at;
 }
 
+// A building's sheets along its strip: each façade its own run of sheets, so that a bricklayer
+// carries one façade's set and every corner lies on a sheet's edge. The closing corner's unit,
+// at both ends of the strip, is left to the façades it lies on.
+std::vector<double> facade_edges(const std::vector<std::pair<double, double>>& spans,
+                                 const Layout& layout, double length, double scale) {
+  std::vector<double> xs;
+  const std::vector<SurfaceFrame>& frames = layout.frames;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const SurfaceFrame& f = frames[k];
+    const double from = k == 0 ? -kBandMm * scale : f.start;
+    const double to = f.start + f.length + (k + 1 == frames.size() ? kBandMm * scale : 0);
+    std::vector<std::pair<double, double>> own;
+    for (const auto& s : spans) {
+      const double centre = (s.first + s.second) / 2;
+      if (centre >= f.start && centre < f.start + f.length && s.second - s.first < f.length)
+        own.push_back(s);
+    }
+    const SheetEdges e = edges_between(own, from, to, length);
+    xs.insert(xs.end(), e.at.begin() + (xs.empty() ? 0 : 1), e.at.end());
+  }
+  return xs;
+}
+
 size_t interval_of(const std::vector<double>& edges, double v) {
   const auto it = std::upper_bound(edges.begin() + 1, edges.end() - 1, v);
   return static_cast<size_t>(it - (edges.begin() + 1));
@@ -136,7 +159,9 @@ void lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, const L
   std::vector<std::pair<double, double>> across, up;
   for (const InstallerPiece& p : pieces)
     across.emplace_back(p.bounds.x, p.bounds.right()), up.emplace_back(p.bounds.y, p.bounds.top());
-  const std::vector<double> xs = sheet_edges(across, layout.width, plan.viewport[0] * scale, scale);
+  const std::vector<double> xs =
+      layout.frames.empty() ? sheet_edges(across, layout.width, plan.viewport[0] * scale, scale)
+                            : facade_edges(across, layout, plan.viewport[0] * scale, scale);
   const std::vector<double> ys = sheet_edges(up, layout.height, plan.viewport[1] * scale, scale);
   plan.grid_columns = xs.size() - 1;
   plan.grid_rows = ys.size() - 1;

@@ -107,6 +107,10 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
         b.plan.front().y == b.plan.back().y)
       b.plan.pop_back();
   }
+  for (const ContourVertex& v : b.plan)
+    if (std::fabs(v.x) > 1e7 || std::fabs(v.y) > 1e7)
+      r.fail("plan",
+             "has a vertex beyond 10 km: give the plan in millimetres from a datum near it");
   if (path) b.path = read_path(r);
   b.height = read_mm(r, "height", 0, 1, true);
   b.storey = read_mm(r, "storey", 0, 0);
@@ -139,8 +143,9 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
   r.report_unused("is not a key of layout.building");
   try {
     (void)envelope_of(b, spec);  // the plan, heights and openings checked where they are read
-  } catch (const ResourceLimitError&) {
-    throw;
+  } catch (const ResourceLimitError& e) {  // too big: where its height is, still a limit
+    throw ResourceLimitError(locate(r.source(), r.get("height")->source(), r.key_path("height")),
+                             e.message());
   } catch (const InputError& e) {
     r.fail(e.where().key, e.message());
   }
