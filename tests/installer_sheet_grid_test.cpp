@@ -104,6 +104,7 @@ TEST(InstallerSheetGrid, ABuildingsSheetsEachHoldOneFacadeWithTheCornersOnTheirE
   for (const InstallerSheet& sheet : plan.sheets)
     for (const SurfaceFrame& f : l.frames) {
       const double corner = f.start + f.length;
+      if (&f == &l.frames.back()) continue;  // the strip's end: the band of paper beyond it
       EXPECT_FALSE(corner > sheet.window.x + 1e-6 && corner < sheet.window.right() - 1e-6)
           << "the corner at " << corner << " mm crosses a sheet from " << sheet.window.x;
     }
