@@ -59,16 +59,16 @@ LaidFace laid_face(const Element& e, double length) {
 BuildingPoint framed_centre(const Layout& layout, const Element& e) {
   const LaidFace f = laid_face(e, layout.width);
   const double middle = wrap_along((f.from + f.to) / 2, layout.width);
-  const SurfaceFrame* frame = frame_at(layout.frames, middle);
-  const double start = wrap_along(f.from, layout.width);
-  if (frame->bulge != 0 && start >= frame->start &&
-      start + (f.to - f.from) <= frame->start + frame->length + 1e-9) {
-    // A straight unit on a curve: the middle of its chord, inside the arc.
-    const BuildingPoint a = frame_point(*frame, start, f.v, 0);
-    const BuildingPoint b = frame_point(*frame, start + (f.to - f.from), f.v, 0);
-    return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, f.v + frame->base};
+  // On the chord of the face the middle lies on, as the 3-D writers lay it: a straight unit on
+  // a curve lies inside the arc.
+  for (const FramedSpan& s : framed_spans(layout.frames, layout.width, f.from, f.to)) {
+    if (middle < s.from - 1e-9 || middle > s.to + 1e-9) continue;
+    const BuildingPoint a = frame_point(*s.frame, s.from, f.v, 0);
+    const BuildingPoint b = frame_point(*s.frame, s.to, f.v, 0);
+    const double t = (middle - s.from) / (s.to - s.from);
+    return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2]};
   }
-  return frame_point(*frame, middle, f.v, 0);
+  return frame_point(*frame_at(layout.frames, middle), middle, f.v, 0);
 }
 
 const SurfaceFrame* framed_facade(const Layout& layout, const Element& e) {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "curdle/error.h"
 #include "building_support.h"
+#include "curdle/error.h"
 #include "layout_support.h"
 
 namespace curdle {

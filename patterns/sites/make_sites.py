@@ -11,6 +11,10 @@ elevation.dxf: a 12 x 6.3 m brick elevation (wall outline on A-WALL) whose windo
 INSERTs of a window block (frame, sash and a glazing bar, on layer 0) on A-GLAZ, and whose
 door is a mirrored INSERT of a door block on A-DOOR.
 
+kiosk.dxf: the plan of an 8 x 5 m brick kiosk whose south front bows out on an arc (an
+LWPOLYLINE on A-WALL with a bulge of 0.2 on that edge: 800 mm out on its 8 m chord), with a
+title on A-ANNO; read as [layout.building.site].
+
     make_sites.py OUT_DIR [--units mm|cm|m|in]   (the courtyard in other units, for tests)
     make_sites.py OUT_DIR --survey                (survey.dxf and survey.toml, the benchmark's)
 
@@ -152,6 +156,20 @@ rule = "exclude"
 """)
 
 
+def kiosk(path):
+    doc = ezdxf.new("R2013", setup=False)
+    doc.header["$INSUNITS"] = 4
+    for name in ("A-WALL", "A-ANNO"):
+        doc.layers.add(name)
+    msp = doc.modelspace()
+    # Counter-clockwise from the south-west corner; the south edge's bulge bows it out.
+    msp.add_lwpolyline([(0, 0, 0, 0, 0.2), (8000, 0), (8000, 5000), (0, 5000)], format="xyseb",
+                       close=True, dxfattribs={"layer": "A-WALL"})
+    msp.add_text("KIOSK - PLAN", dxfattribs={"layer": "A-ANNO", "height": 200}).set_placement(
+        (0, 5600))
+    doc.saveas(path)
+
+
 if __name__ == "__main__":
     out = sys.argv[1]
     units = sys.argv[3] if len(sys.argv) > 3 and sys.argv[2] == "--units" else None
@@ -163,3 +181,4 @@ if __name__ == "__main__":
         courtyard(f"{out}/courtyard.dxf")
         courtyard_svg(f"{out}/courtyard.svg")
         elevation(f"{out}/elevation.dxf")
+        kiosk(f"{out}/kiosk.dxf")

@@ -30,8 +30,9 @@ struct WindowRule {
 };
 
 struct BuildingKeys {
-  Contour plan;  // closed (a building), or
-  Contour path;  // open (a free-standing wall)
+  Contour plan;              // closed (a building), or
+  Contour path;              // open (a free-standing wall)
+  std::string site_summary;  // where a drawn plan was read from, for the report
   size_t start = 0;
   double height = 0;  // mm, whole courses
   double storey = 0;  // floor to floor, mm; 0: one storey the wall's height

@@ -83,7 +83,8 @@ std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& d
     if (f.last_of_path) continue;
     const double u = f.start + f.length;
     const bool closing = layout.closed_envelope && &f == &layout.frames.back();
-    out.push_back(fmt::format("corner at the end of {} ({:g} mm along the strip{}): {}", f.name, u,
+    out.push_back(fmt::format("corner at the end of {} ({:.1f} mm along the strip{}): {}", f.name,
+                              u,
                               closing ? ", the closing seam, where the strip began on a "
                                         "root-cell boundary"
                                       : "",

@@ -82,6 +82,7 @@ void FacadeKind::read_own(reading::TableReader& r, const Design&, LayoutSpec& sp
     FacadeKeys& keys = spec.own<FacadeKeys>();
     keys.building = read_building(r, spec);
     keys.envelope = envelope_of(*keys.building, spec);
+    if (!keys.building->site_summary.empty()) spec.site_summary = keys.building->site_summary;
     spec.size = std::array<double, 2>{keys.envelope->length, keys.envelope->height};
     return;
   }

@@ -89,16 +89,19 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
   if (!t)
     layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
   TableReader r(*t, layout.key_path("building"), layout.source(),
-                {"plan", "path", "height", "storey", "base", "depth", "start", "coursed_openings",
-                 "openings", "windows"});
+                {"plan", "path", "site", "height", "storey", "base", "depth", "start",
+                 "coursed_openings", "openings", "windows"});
   BuildingKeys b;
-  const bool plan = r.get("plan"), path = r.get("path");
-  if (plan == path)
+  const bool drawn = r.get("site");
+  const bool plan = r.get("plan") || drawn, path = r.get("path");
+  if (plan == path || (drawn && r.get("plan")))
     r.fail(plan ? "path" : "plan",
-           "a building needs plan = [[x, y], ...] (closed, anticlockwise) or path = [[x, y], "
-           "...] (a free-standing wall), not both");
-  if (plan) b.plan = read_contour(r, "plan", spec.chord_tolerance).contour;
-  if (plan && b.plan.empty()) {  // no arcs: read_contour keeps the polygon only
+           "a building needs one of plan = [[x, y], ...] (closed, anticlockwise), "
+           "[layout.building.site] (its plan from a drawing's layer) or path = [[x, y], ...] (a "
+           "free-standing wall)");
+  if (drawn) b.plan = read_site_plan(r, spec, b.site_summary);
+  if (plan && !drawn) b.plan = read_contour(r, "plan", spec.chord_tolerance).contour;
+  if (plan && !drawn && b.plan.empty()) {  // no arcs: read_contour keeps the polygon only
     for (const toml::node& item : *r.get("plan")->as_array()) {
       const toml::array* p = item.as_array();
       b.plan.push_back({*finite_number(p->get(0)), *finite_number(p->get(1)), 0});

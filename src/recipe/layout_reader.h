@@ -55,6 +55,11 @@ struct ReadContour {
 };
 ReadContour read_contour(TableReader& r, const std::string& key, double tolerance);
 
+// [layout.building.site]: the building's plan (its outer face) from a layer of the architect's
+// drawing, arcs kept, in mm from the drawing's datum (file, plan, units, origin as [layout.site]);
+// `summary` says what was read.
+Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::string& summary);
+
 // [layout.building] (facade): a building's plan or a free-standing wall's path, its height,
 // base, unit depth and openings (building/building.h).
 BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec);

@@ -190,4 +190,41 @@ void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
   spec.site_notes = s.notes;
 }
 
+Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::string& summary) {
+  const toml::table* t = read_table(building, "site");
+  if (!t)
+    building.fail("site", "must be a table: [layout.building.site] with file and plan (a layer)");
+  TableReader sr(*t, building.key_path("site"), building.source(),
+                 {"file", "plan", "units", "origin"});
+  site::LayerMap map;
+  map.file = read_string(sr, "file", "a file name").value_or("");
+  std::string lower = map.file;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (map.file.empty() || map.file.size() > 1024 || lower.size() < 5 ||
+      (lower.substr(lower.size() - 4) != ".dxf" && lower.substr(lower.size() - 4) != ".svg"))
+    sr.fail("file", "must name the plan's drawing, a .dxf or .svg file relative to the recipe");
+  const auto plan = read_layers(sr, "plan");
+  if (plan.size() != 1)
+    sr.fail("plan", "must name the one layer that holds the building's outline, e.g. \"A-WALL\"");
+  map.outline = plan.front();
+  read_units_and_origin(sr, map);
+  map.chord_tolerance = spec.chord_tolerance;
+  sr.report_unused("is not a [layout.building.site] key (file, plan, units, origin)");
+  if (!building.source().files)
+    sr.fail("file",
+            "names a drawing, which is read only where the recipe is a file: run curdle on the "
+            "recipe's file");
+  const SourceLocation where = locate(building.source(), t->source(), sr.key_path("file"));
+  const std::string bytes = building.source().files->read(map.file, where, site::kMostDrawingBytes);
+  try {
+    const site::Site s = site::site_from(
+        site::read_drawing(bytes, map.file, spec.chord_tolerance, map.unit_mm), map);
+    summary = "plan: " + s.summary;
+    return s.outline;
+  } catch (const site::SiteError& e) {
+    sr.fail("file", e.what());
+  }
+}
+
 }  // namespace curdle::reading
