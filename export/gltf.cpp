@@ -530,6 +530,8 @@ void add_provenance(Scene& sc) {
   lattice["mode"] = tinygltf::Value(std::string(to_string(design.lattice.mode)));
   scene["lattice"] = tinygltf::Value(lattice);
   scene["units"] = tinygltf::Value(std::string("metres, +Y up"));
+  // A whole building (layout frames): x east, -z north; viewers frame it from above a corner.
+  if (!sc.layout.frames.empty()) scene["building"] = tinygltf::Value(true);
   b.model.scenes[0].name = design.recipe;
   b.model.scenes[0].extras = tinygltf::Value(scene);
 }

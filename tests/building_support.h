@@ -5,10 +5,19 @@
 #include <string>
 
 #include "curdle/curdling.h"
+#include "kinds/registry.h"
 #include "layout/builder.h"
 #include "recipe/recipe.h"
 
 namespace curdle::test {
+
+// A façade spec of 215 x 65 mm bricks with 10 mm joints.
+inline LayoutSpec bricks() {
+  LayoutSpec spec;
+  spec.set_kind(layout_kind("facade"));
+  spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
+  return spec;
+}
 
 // The pavilion: 20 x 12 m with an 8 x 6 m bite, 7.05 m of 215 x 65 mm bricks, 10 mm joints;
 // `building` is added to its [layout.building] table (openings, start, ...).

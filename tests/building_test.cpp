@@ -5,19 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "building_support.h"
 #include "curdle/error.h"
 #include "kinds/registry.h"
 #include "layout/contour.h"
 
 namespace curdle {
 namespace {
-
-LayoutSpec bricks() {
-  LayoutSpec spec;
-  spec.set_kind(layout_kind("facade"));
-  spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
-  return spec;
-}
 
 BuildingKeys pavilion() {
   BuildingKeys keys;
@@ -27,7 +21,7 @@ BuildingKeys pavilion() {
   return keys;
 }
 
-std::string refusal(const BuildingKeys& keys, const LayoutSpec& spec = bricks()) {
+std::string refusal(const BuildingKeys& keys, const LayoutSpec& spec = test::bricks()) {
   try {
     (void)envelope_of(keys, spec);
   } catch (const InputError& e) {
@@ -40,7 +34,7 @@ TEST(Building, OpeningsArePlacedOnTheStripByFacadeNameOrIndex) {
   BuildingKeys keys = pavilion();
   keys.openings = {{"E", Rect{900, 900, 1200, 1500}, "window"},
                    {"3", Rect{600, 0, 1000, 2100}, "door"}};
-  const Envelope env = envelope_of(keys, bricks());
+  const Envelope env = envelope_of(keys, test::bricks());
   EXPECT_DOUBLE_EQ(env.length, 64000);
   EXPECT_EQ(env.courses, 94);
   EXPECT_DOUBLE_EQ(env.depth, 102.5);
@@ -57,7 +51,7 @@ TEST(Building, ARuleSetsWindowsOnEveryFacadeAndStoreyClearOfTheCorners) {
   BuildingKeys keys = pavilion();
   keys.storey = 3525;
   keys.windows = WindowRule{{1200, 1500}, 3000, 900, 900};
-  const Envelope env = envelope_of(keys, bricks());
+  const Envelope env = envelope_of(keys, test::bricks());
   // Per storey: 6 on the 20 m front, 2 on each 6 and 8 m side, 4 on each 12 m side.
   EXPECT_EQ(env.openings.size(), 2u * (6 + 2 + 2 + 2 + 4 + 4));
   for (size_t i = 0; i < env.openings.size(); ++i) {
@@ -90,14 +84,14 @@ TEST(Building, BadBuildingsAreRefusedSayingWhatIsAllowed) {
   EXPECT_NE(refusal(keys).find("shorter than one unit"), std::string::npos);
   keys = pavilion();
   keys.height = 750000;
-  EXPECT_THROW((void)envelope_of(keys, bricks()), ResourceLimitError);
+  EXPECT_THROW((void)envelope_of(keys, test::bricks()), ResourceLimitError);
   keys = pavilion();
   keys.depth = 300;
   EXPECT_NE(refusal(keys).find("depth"), std::string::npos);
 }
 
 TEST(Building, AFacadeIsFoundByNameOrIndex) {
-  const Envelope env = envelope_of(pavilion(), bricks());
+  const Envelope env = envelope_of(pavilion(), test::bricks());
   EXPECT_EQ(facade_named(env.facades, "N2")->index, 4u);
   EXPECT_EQ(facade_named(env.facades, "4")->name, "N2");
   EXPECT_EQ(facade_named(env.facades, "Q"), nullptr);

@@ -11,18 +11,12 @@
 #include <map>
 
 #include "building/facades.h"
+#include "building_support.h"
 #include "kinds/registry.h"
 #include "layout/contour.h"
 
 namespace curdle {
 namespace {
-
-LayoutSpec bricks() {
-  LayoutSpec spec;
-  spec.set_kind(layout_kind("facade"));
-  spec.module_w = 215, spec.module_h = 65, spec.joint = 10;
-  return spec;
-}
 
 Envelope pavilion(const LayoutSpec& spec) {
   BuildingKeys keys;
@@ -39,7 +33,7 @@ std::map<int64_t, std::vector<CourseUnit>> by_course(const Coursing& c) {
 }
 
 TEST(Coursing, EveryCourseGoesRoundTheBuildingWithOneJointBetweenUnits) {
-  const LayoutSpec spec = bricks();
+  const LayoutSpec spec = test::bricks();
   const Envelope env = pavilion(spec);
   ASSERT_EQ(env.courses, 94);
   const Coursing c = course_envelope(env, spec, false);
@@ -60,7 +54,7 @@ TEST(Coursing, EveryCourseGoesRoundTheBuildingWithOneJointBetweenUnits) {
 }
 
 TEST(Coursing, EachCornerIsTurnedByOneUnitACourseChangingSides) {
-  const LayoutSpec spec = bricks();
+  const LayoutSpec spec = test::bricks();
   const Envelope env = pavilion(spec);
   const Coursing c = course_envelope(env, spec, false);
   const auto courses = by_course(c);
@@ -94,7 +88,7 @@ TEST(Coursing, EachCornerIsTurnedByOneUnitACourseChangingSides) {
 }
 
 TEST(Coursing, RunsAreCutInTheirMiddleAndNeverBelowTheNarrowestCut) {
-  const LayoutSpec spec = bricks();
+  const LayoutSpec spec = test::bricks();
   const Envelope env = pavilion(spec);
   const Coursing c = course_envelope(env, spec, false);
   size_t closers = 0;
@@ -113,7 +107,7 @@ TEST(Coursing, RunsAreCutInTheirMiddleAndNeverBelowTheNarrowestCut) {
 }
 
 TEST(Coursing, StackBondTurnsEveryCornerAlike) {
-  const LayoutSpec spec = bricks();
+  const LayoutSpec spec = test::bricks();
   const Envelope env = pavilion(spec);
   const Coursing c = course_envelope(env, spec, true);
   for (const CourseUnit& u : c.units)
@@ -124,7 +118,7 @@ TEST(Coursing, StackBondTurnsEveryCornerAlike) {
 }
 
 TEST(Coursing, AFreeStandingWallHasStoppedEndsWithHalfUnitsOnAlternateCourses) {
-  const LayoutSpec spec = bricks();
+  const LayoutSpec spec = test::bricks();
   BuildingKeys keys;
   keys.path = {{0, 0, 0}, {9000, 0, 0}};
   keys.height = 750;
@@ -143,7 +137,7 @@ TEST(Coursing, AFreeStandingWallHasStoppedEndsWithHalfUnitsOnAlternateCourses) {
 }
 
 TEST(Coursing, CornersAreDescribedForTheReport) {
-  const LayoutSpec spec = bricks();
+  const LayoutSpec spec = test::bricks();
   const Coursing c = course_envelope(pavilion(spec), spec, false);
   size_t outer = 0, inner = 0;
   for (const std::string& n : c.notes) {

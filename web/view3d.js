@@ -71,7 +71,8 @@ function drawnShare() {
   return drawn / (pixels.length / 16);
 }
 
-// A façade (standing up) from the street, a floor from eye height at its near edge.
+// A façade (standing up) from the street, a floor from eye height at its near edge, a whole
+// building (its scene says so) from above its south-west corner.
 function frame(root) {
   const bounds = new THREE.Box3().setFromObject(root);
   const s = bounds.getSize(new THREE.Vector3());
@@ -80,7 +81,11 @@ function frame(root) {
   const upright = s.y > 0.5 * Math.max(s.x, s.z);
   camera.near = reach / 500;
   camera.far = reach * 20;
-  if (upright) {
+  if (root.userData && root.userData.building) {
+    const away = reach / (2 * Math.tan(THREE.MathUtils.degToRad(25))) * 1.1;
+    camera.position.set(c.x - away * 0.55, c.y + away * 0.5, c.z + away * 0.75);
+    controls.target.set(c.x, c.y, c.z);
+  } else if (upright) {
     const away = Math.max(s.x / camera.aspect, s.y) / (2 * Math.tan(THREE.MathUtils.degToRad(25))) * 1.15;
     camera.position.set(c.x + s.x * 0.15, Math.min(EYE, bounds.max.y), bounds.max.z + away);
     controls.target.set(c.x, c.y, c.z);

@@ -74,6 +74,29 @@ double turn_between(double arriving, double leaving) {
   return t <= -180 ? t + 360 : t;
 }
 
+// The façade on the edge from a to b (plan edge `index`), starting `along` the strip, named by
+// the compass point it faces (numbered from the second facing the same way).
+Facade facade_on(const ContourVertex& a, const ContourVertex& b, size_t index, double along,
+                 double shortest, const char* key, std::map<std::string, int>& named) {
+  const EdgeShape shape = edge_shape(a, b);
+  if (shape.length < shortest)
+    refuse(fmt::format("edge {} is {:g} mm long, shorter than one unit ({:g} mm)", index,
+                       shape.length, shortest),
+           key);
+  Facade f;
+  f.index = index;
+  f.from = {a.x, a.y};
+  f.to = {b.x, b.y};
+  f.bulge = a.bulge;
+  f.length = shape.length;
+  f.start = along;
+  f.facing = bearing_of(shape.outward);
+  const std::string point = compass_point(f.facing);
+  const int n = ++named[point];
+  f.name = n == 1 ? point : point + std::to_string(n);
+  return f;
+}
+
 }  // namespace
 
 std::string compass_point(double bearing) {
@@ -112,27 +135,13 @@ std::vector<Facade> unroll_plan(const Contour& given, size_t start, double short
     const size_t i = (start + k) % plan.size();
     const ContourVertex& a = plan[i];
     const ContourVertex& b = plan[(i + 1) % plan.size()];
-    const EdgeShape shape = edge_shape(a, b);
-    if (shape.length < shortest)
-      refuse(fmt::format("edge {} is {:g} mm long, shorter than one unit ({:g} mm)", i,
-                         shape.length, shortest));
-    Facade f;
-    f.index = i;
-    f.from = {a.x, a.y};
-    f.to = {b.x, b.y};
-    f.bulge = a.bulge;
-    f.length = shape.length;
-    f.start = along;
-    f.facing = bearing_of(shape.outward);
-    const std::string point = compass_point(f.facing);
-    const int n = ++named[point];
-    f.name = n == 1 ? point : point + std::to_string(n);
+    Facade f = facade_on(a, b, i, along, shortest, "plan", named);
     // The turn at its end, from this edge's direction to the next's: left (anticlockwise) is
     // an outer corner, right an inner one.
     const ContourVertex& c = plan[(i + 2) % plan.size()];
     const double arriving = tangent(a, b, true), leaving = tangent(b, c, false);
     f.turn_at_end = turn_between(arriving, leaving);
-    along += shape.length;
+    along += f.length;
     out.push_back(std::move(f));
   }
   return out;
@@ -157,26 +166,11 @@ std::vector<Facade> unroll_path(const Contour& path, double shortest) {
   for (size_t i = 0; i + 1 < path.size(); ++i) {
     const ContourVertex& a = path[i];
     const ContourVertex& b = path[i + 1];
-    const EdgeShape shape = edge_shape(a, b);
-    if (shape.length < shortest)
-      refuse(fmt::format("edge {} is {:g} mm long, shorter than one unit ({:g} mm)", i,
-                         shape.length, shortest),
-             "path");
-    Facade f;
-    f.index = i;
-    f.from = {a.x, a.y};
-    f.to = {b.x, b.y};
-    f.bulge = a.bulge;
-    f.length = shape.length;
-    f.start = along;
-    f.facing = bearing_of(shape.outward);
-    const std::string point = compass_point(f.facing);
-    const int n = ++named[point];
-    f.name = n == 1 ? point : point + std::to_string(n);
+    Facade f = facade_on(a, b, i, along, shortest, "path", named);
     if (i + 2 < path.size())
       f.turn_at_end = turn_between(tangent(a, b, true), tangent(b, path[i + 2], false));
     f.last_of_path = i + 2 == path.size();
-    along += shape.length;
+    along += f.length;
     out.push_back(std::move(f));
   }
   // A wall that meets itself is no wall: its faces would run through each other.

@@ -16,27 +16,14 @@ namespace {
 constexpr size_t kMostVertices = 10000;
 constexpr size_t kMostOpenings = 10000;
 
-// An open path's vertices, each [x, y] or [x, y, bulge].
+// An open path's vertices, each [x, y] or [x, y, bulge], within 10 km.
 Contour read_path(TableReader& r) {
-  const toml::array* a = r.get("path")->as_array();
-  const std::string allowed =
-      "must be 2 to 10000 points [[x, y], ...] in millimetres along the wall's outer face; [x, "
-      "y, bulge] makes the edge to the next point an arc (bulge = tan(angle / 4), positive "
-      "anticlockwise)";
-  if (!a || a->size() < 2 || a->size() > kMostVertices) r.fail("path", allowed);
-  Contour path;
-  for (const toml::node& item : *a) {
-    const toml::array* p = item.as_array();
-    const bool sized = p && (p->size() == 2 || p->size() == 3);
-    const auto x = sized ? finite_number(p->get(0)) : std::nullopt;
-    const auto y = sized ? finite_number(p->get(1)) : std::nullopt;
-    const auto bulge = sized && p->size() == 3 ? finite_number(p->get(2)) : std::optional(0.0);
-    if (!x || !y || !bulge || std::fabs(*x) > 1e7 || std::fabs(*y) > 1e7 ||
-        std::fabs(*bulge) > 1000)
-      r.fail("path", allowed);
-    path.push_back({*x, *y, tidy_bulge(*bulge)});
-  }
-  return path;
+  return read_vertices(
+      r, "path",
+      "must be 2 to 10000 points [[x, y], ...] in millimetres along the wall's outer face, "
+      "within 10 km; [x, y, bulge] makes the edge to the next point an arc (bulge = tan(angle / "
+      "4), positive anticlockwise)",
+      2, kMostVertices, 1e7);
 }
 
 BuildingOpening read_opening(TableReader& o, size_t index) {

@@ -47,6 +47,11 @@ void read_outline(TableReader& r, LayoutSpec& spec);
 // size key is left out. Openings become the kind's own where it takes rectangles (a façade's
 // windows), else excluded zones.
 void read_site(TableReader& r, const Design& design, LayoutSpec& spec);
+// The vertices under `key`, each [x, y] or [x, y, bulge] (bulge within ±1000): `least` to `most`
+// of them, each coordinate within ±`reach` mm; else `allowed` is the message.
+Contour read_vertices(TableReader& r, const std::string& key, const std::string& allowed,
+                      size_t least, size_t most, double reach);
+
 // A polygon's corners under `key`, each [x, y] or [x, y, bulge]: the contour with its arcs
 // (empty where it has none), and its polygon with the arcs as chords within `tolerance`.
 struct ReadContour {

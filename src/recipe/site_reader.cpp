@@ -85,17 +85,23 @@ void read_units_and_origin(TableReader& r, site::LayerMap& map) {
   map.origin = std::array<double, 2>{*x, *y};
 }
 
-site::LayerMap read_layer_map(TableReader& r, const LayoutSpec& spec, size_t values) {
-  site::LayerMap map;
-  map.file = read_string(r, "file", "a file name").value_or("");
-  std::string lower = map.file;
+// `file`: a drawing's name, a .dxf or .svg relative to the recipe.
+std::string read_drawing_name(TableReader& r, const std::string& what) {
+  const std::string file = read_string(r, "file", "a file name").value_or("");
+  std::string lower = file;
   std::transform(lower.begin(), lower.end(), lower.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (map.file.empty() || map.file.size() > 1024 || lower.size() < 5 ||
+  if (file.empty() || file.size() > 1024 || lower.size() < 5 ||
       (lower.substr(lower.size() - 4) != ".dxf" && lower.substr(lower.size() - 4) != ".svg"))
-    r.fail("file",
-           "must name the site's drawing, a .dxf or .svg file relative to the recipe (in "
-           "CAD: save as DXF; in Inkscape or Illustrator: save as SVG)");
+    r.fail("file", "must name the " + what +
+                       ", a .dxf or .svg file relative to the recipe (in CAD: save as DXF; in "
+                       "Inkscape or Illustrator: save as SVG)");
+  return file;
+}
+
+site::LayerMap read_layer_map(TableReader& r, const LayoutSpec& spec, size_t values) {
+  site::LayerMap map;
+  map.file = read_drawing_name(r, "site's drawing");
   const auto outline = read_layers(r, "outline");
   if (outline.size() != 1)
     r.fail("outline", "must name the one layer that holds the surface's outline, e.g. \"A-OTLN\"");
@@ -197,13 +203,7 @@ Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::strin
   TableReader sr(*t, building.key_path("site"), building.source(),
                  {"file", "plan", "units", "origin"});
   site::LayerMap map;
-  map.file = read_string(sr, "file", "a file name").value_or("");
-  std::string lower = map.file;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (map.file.empty() || map.file.size() > 1024 || lower.size() < 5 ||
-      (lower.substr(lower.size() - 4) != ".dxf" && lower.substr(lower.size() - 4) != ".svg"))
-    sr.fail("file", "must name the plan's drawing, a .dxf or .svg file relative to the recipe");
+  map.file = read_drawing_name(sr, "plan's drawing");
   const auto plan = read_layers(sr, "plan");
   if (plan.size() != 1)
     sr.fail("plan", "must name the one layer that holds the building's outline, e.g. \"A-WALL\"");

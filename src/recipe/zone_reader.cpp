@@ -78,15 +78,10 @@ Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size,
 
 }  // namespace
 
-// A polygon's corners, each [x, y] or [x, y, bulge]: the contour with its arcs, and its polygon
-// with the arcs as chords within the layout's chord tolerance.
-ReadContour read_contour(TableReader& r, const std::string& key, double tolerance) {
+Contour read_vertices(TableReader& r, const std::string& key, const std::string& allowed,
+                      size_t least, size_t most, double reach) {
   const toml::array* a = r.get(key)->as_array();
-  const std::string allowed =
-      "must be at least 3 corners [[x, y], ...] in millimetres (at most 10000), a simple polygon "
-      "whose edges do not cross; [x, y, bulge] makes the edge to the next corner an arc (bulge "
-      "= tan(angle / 4), positive counter-clockwise, as CAD's polylines; at most 1000 in size)";
-  if (!a || a->size() < 2 || a->size() > kMostVertices) r.fail(key, allowed);
+  if (!a || a->size() < least || a->size() > most) r.fail(key, allowed);
   Contour contour;
   for (const toml::node& item : *a) {
     const toml::array* p = item.as_array();
@@ -94,9 +89,22 @@ ReadContour read_contour(TableReader& r, const std::string& key, double toleranc
     const auto x = sized ? finite_number(p->get(0)) : std::nullopt;
     const auto y = sized ? finite_number(p->get(1)) : std::nullopt;
     const auto bulge = sized && p->size() == 3 ? finite_number(p->get(2)) : std::optional(0.0);
-    if (!x || !y || !bulge || std::fabs(*bulge) > 1000) r.fail(key, allowed);
+    if (!x || !y || !bulge || std::fabs(*x) > reach || std::fabs(*y) > reach ||
+        std::fabs(*bulge) > 1000)
+      r.fail(key, allowed);
     contour.push_back({*x, *y, tidy_bulge(*bulge)});
   }
+  return contour;
+}
+
+// A polygon's corners, each [x, y] or [x, y, bulge]: the contour with its arcs, and its polygon
+// with the arcs as chords within the layout's chord tolerance.
+ReadContour read_contour(TableReader& r, const std::string& key, double tolerance) {
+  const std::string allowed =
+      "must be at least 3 corners [[x, y], ...] in millimetres (at most 10000), a simple polygon "
+      "whose edges do not cross; [x, y, bulge] makes the edge to the next corner an arc (bulge "
+      "= tan(angle / 4), positive counter-clockwise, as CAD's polylines; at most 1000 in size)";
+  Contour contour = read_vertices(r, key, allowed, 2, kMostVertices, 1e300);
   if (contour.size() > 2 && contour.front().x == contour.back().x &&
       contour.front().y == contour.back().y)
     contour.pop_back();  // closed by repeating the first
