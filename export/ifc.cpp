@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <unordered_map>
 
 #include "curdle/markov.h"
 #include "curdle/palette.h"
@@ -90,6 +91,14 @@ class IfcModel {
   // A rooted entity's first attributes: its GlobalId and the model's one owner history.
   std::string root(std::string_view what) const { return guid(what) + "," + ref(owner_); }
   int64_t add(const std::string& s) { return w_.add(s); }
+  // A property or quantity, written once for every set that holds the same one (IFC lets a
+  // property stand in many sets): most pieces share their material, lot, size and area, and
+  // the pavilion's model is a third smaller for it.
+  int64_t shared(const std::string& s) {
+    const auto [it, added] = shared_.try_emplace(s, 0);
+    if (added) it->second = add(s);
+    return it->second;
+  }
   void context() {
     world_ = g_.world();
     // Upright surfaces are drawn in their own plane: layout x along X, layout y up Z, and the
@@ -167,7 +176,7 @@ class IfcModel {
 
   // A property of a set: its name and its typed value ("IFCINTEGER(3)").
   int64_t property(const std::string& name, const std::string& value) {
-    return add(fmt::format("IFCPROPERTYSINGLEVALUE({},$,{},$)", text(name), value));
+    return shared(fmt::format("IFCPROPERTYSINGLEVALUE({},$,{},$)", text(name), value));
   }
   int64_t label(const std::string& name, const std::string& value) {
     return property(name, "IFCLABEL(" + text(value) + ")");
@@ -473,15 +482,16 @@ class IfcModel {
       case K::property:
         return property(entry.name, entry.value);
       case K::length:
-        return add(
+        return shared(
             fmt::format("IFCQUANTITYLENGTH({},$,$,{},$)", text(entry.name), real(entry.amount)));
       case K::area:
-        return add(
+        return shared(
             fmt::format("IFCQUANTITYAREA({},$,$,{},$)", text(entry.name), real(entry.amount)));
       case K::volume:
         break;
     }
-    return add(fmt::format("IFCQUANTITYVOLUME({},$,$,{},$)", text(entry.name), real(entry.amount)));
+    return shared(
+        fmt::format("IFCQUANTITYVOLUME({},$,$,{},$)", text(entry.name), real(entry.amount)));
   }
 
   void properties(const Element& e, size_t index, int64_t id) {
@@ -508,10 +518,10 @@ class IfcModel {
     const Rect b = laid_bounds(e);
     const double t = e.form == ElementForm::block ? l_.level_height : l_.thickness;
     std::vector<int64_t> q{
-        add(fmt::format("IFCQUANTITYLENGTH('Length',$,$,{},$)", real(b.w))),
-        add(fmt::format("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h))),
-        add(fmt::format("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(t))),
-        add(fmt::format("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6)))};
+        shared(fmt::format("IFCQUANTITYLENGTH('Length',$,$,{},$)", real(b.w))),
+        shared(fmt::format("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h))),
+        shared(fmt::format("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(t))),
+        shared(fmt::format("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6)))};
     const int64_t set = add(fmt::format("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})",
                                         root("qto " + e.id), step_refs(q)));
     add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("qto-rel " + e.id), ref(id),
@@ -563,6 +573,7 @@ class IfcModel {
   int64_t profile_context_ = 0, project_ = 0, container_ = 0, container_place_ = 0;
   std::vector<int64_t> contained_, sheet_plates_, sheet_places_;
   std::map<std::string, std::vector<int64_t>> materials_;
+  std::unordered_map<std::string, int64_t> shared_;
   std::map<std::pair<std::string, std::string>, CoveringType> types_;
 };
 

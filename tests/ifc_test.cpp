@@ -130,7 +130,16 @@ TEST(Ifc, ElementsCarryOwnerHistoryStandardSetsTheirOwnPlacementAndOneSolid) {
   EXPECT_EQ(count(w.ifc, "'Qto_CoveringBaseQuantities'"), elements);
   EXPECT_EQ(count(w.ifc, "'Curdle_Quantities'"), elements);
   EXPECT_EQ(count(w.ifc, "'BaseQuantities'"), 0u);
-  EXPECT_EQ(count(w.ifc, "IFCPROPERTYSINGLEVALUE('IsExternal',$,IFCBOOLEAN(.T.),$)"), elements);
+  // A property is written once and held by every set that has it: each covering's common set
+  // says it is external through the one IsExternal = true.
+  const std::string external = "=IFCPROPERTYSINGLEVALUE('IsExternal',$,IFCBOOLEAN(.T.),$)";
+  ASSERT_EQ(count(w.ifc, external), 1u);
+  const size_t at = w.ifc.find(external);
+  const std::string id = w.ifc.substr(w.ifc.rfind('#', at), at - w.ifc.rfind('#', at));
+  const std::regex holds("'Pset_CoveringCommon',\\$,\\([^)]*" + id + "[,)]");
+  EXPECT_EQ(static_cast<size_t>(std::distance(
+                std::sregex_iterator(w.ifc.begin(), w.ifc.end(), holds), std::sregex_iterator())),
+            elements);
   // One solid per element, whatever its shape: the façade has pieces cut round its windows.
   ASSERT_NE(w.schedule.find("F-R07-C18,"), std::string::npos);  // cut round a window: L-shaped
   EXPECT_EQ(count(w.ifc, "=IFCEXTRUDEDAREASOLID("), elements);
