@@ -374,13 +374,15 @@ class Interrupting(unittest.TestCase):
                                    text=True, env=os.environ)
         self.assertEqual(process.stdout.readline().strip(), "started")
         import time
-        time.sleep(1.0)
+        time.sleep(1.5)
         process.send_signal(signal.SIGINT)
         # Without the stop the search runs for hours: the bound only catches a hang.
         out, _ = process.communicate(timeout=60)
         self.assertIn("interrupted after", out)
         ticks = int(out.split()[2])
-        self.assertGreater(ticks, 20, "the tick thread did not run while the search did")
+        # Held, the GIL would let it tick once or twice at most; on a machine busy with other
+        # tests it may get a tenth of its 150 ticks, so the bound is well below that.
+        self.assertGreater(ticks, 5, "the tick thread did not run while the search did")
 
 
 if __name__ == "__main__":
