@@ -12,6 +12,7 @@
 
 #include "building/facades.h"
 #include "building_support.h"
+#include "curdle/error.h"
 #include "kinds/registry.h"
 #include "layout/contour.h"
 
@@ -148,6 +149,26 @@ TEST(Coursing, CornersAreDescribedForTheReport) {
   EXPECT_EQ(inner, 1u);
   EXPECT_STREQ(corner_kind(5), "bend");
   EXPECT_STREQ(corner_kind(-90), "inner");
+}
+
+TEST(Coursing, AFacadeTooShortForTheUnitsTurningItsCornersIsRefused) {
+  const LayoutSpec spec = test::bricks();
+  BuildingKeys keys;
+  // A 300 mm jog: an outer corner then an inner one, 215 + 112.5 + 10 mm needed on one course.
+  keys.plan = contour_of({{0, 0}, {5000, 0}, {5000, 300}, {5300, 300}, {5300, 3000}, {0, 3000}});
+  keys.height = 750;
+  try {
+    check_corner_room(envelope_of(keys, spec), spec);
+    ADD_FAILURE() << "a 300 mm façade between corners was taken";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, "plan");
+    EXPECT_NE(e.message().find("façade E is 300 mm long, too short for the units that turn its "
+                               "corners: at least 337.5 mm"),
+              std::string::npos)
+        << e.message();
+  }
+  keys.plan = contour_of({{0, 0}, {5000, 0}, {5000, 440}, {0, 440}});  // 2 x 215 + 10: room
+  EXPECT_NO_THROW(check_corner_room(envelope_of(keys, spec), spec));
 }
 
 }  // namespace

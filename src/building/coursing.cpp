@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include "curdle/error.h"
 
 namespace curdle {
 namespace {
@@ -52,7 +55,47 @@ void fill_run(double s, double e, int64_t course, double l, double j, double min
   }
 }
 
+// How far the unit turning the corner at the end of façade k reaches back along it and on
+// along the next in course r: at an outer corner a stretcher and a header, changing sides
+// course by course (stack bond: every course alike); at an inner corner the unit running
+// through shows length - depth on one side only.
+std::pair<double, double> corner_unit(const SurfaceFrame& f, size_t k, int64_t r, double l,
+                                      double d, bool stack) {
+  const bool first = stack || ((r + static_cast<int64_t>(k)) % 2 == 0);
+  if (f.turn_at_end > 0) return first ? std::pair{l, d} : std::pair{d, l};
+  return first ? std::pair{l - d, 0.0} : std::pair{0.0, l - d};
+}
+
 }  // namespace
+
+void check_corner_room(const Envelope& env, const LayoutSpec& spec) {
+  const double l = spec.module_w, j = spec.joint, d = env.depth;
+  const size_t n = env.facades.size();
+  auto turns = [&](size_t k) {
+    const SurfaceFrame& f = env.facades[k];
+    return !f.last_of_path && std::string(corner_kind(f.turn_at_end)) != "bend";
+  };
+  for (size_t k = 0; k < n; ++k) {
+    const SurfaceFrame& f = env.facades[k];
+    const size_t before = (k + n - 1) % n;
+    const bool from_corner = (env.closed || k > 0) && turns(before);
+    for (int64_t r = 0; r < 2; ++r) {  // the two courses of the bond
+      double need = 0;
+      if (from_corner) need += corner_unit(env.facades[before], before, r, l, d, false).second;
+      if (turns(k)) need += corner_unit(f, k, r, l, d, false).first;
+      if (need > 0) need += j;
+      if (f.length + 1e-6 < need) {
+        SourceLocation where;
+        where.key = env.closed ? "plan" : "path";
+        throw InputError(where,
+                         fmt::format("façade {} is {:g} mm long, too short for the units that "
+                                     "turn its corners: at least {:g} mm ({:g} mm units, {:g} mm "
+                                     "deep, {:g} mm joints)",
+                                     f.name, f.length, need, l, d, j));
+      }
+    }
+  }
+}
 
 const char* corner_kind(double turn) {
   if (std::fabs(turn) < kBend) return "bend";
@@ -72,13 +115,7 @@ Coursing course_envelope(const Envelope& env, const LayoutSpec& spec, bool stack
       const SurfaceFrame& f = env.facades[k];
       if (f.last_of_path || std::string(corner_kind(f.turn_at_end)) == "bend") continue;
       const double at = f.start + f.length;
-      const bool first = stack || ((r + static_cast<int64_t>(k)) % 2 == 0);
-      double a = 0, b = 0;
-      if (f.turn_at_end > 0) {
-        a = first ? l : d, b = first ? d : l;
-      } else {
-        a = first ? l - d : 0, b = first ? 0 : l - d;
-      }
+      const auto [a, b] = corner_unit(f, k, r, l, d, stack);
       fixed.push_back({at - a, at + b, UnitRole::corner, static_cast<int>(k)});
     }
     if (!env.closed && !stack && r % 2 == 1) {  // stopped ends: a half unit on alternate courses

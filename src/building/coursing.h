@@ -42,6 +42,10 @@ struct Coursing {
 // course alike (stack bond) instead of lapping by half.
 Coursing course_envelope(const Envelope& env, const LayoutSpec& spec, bool stack);
 
+// Throws InputError (key `plan` or `path`) where a façade is too short for the units that turn
+// the corners at its ends, in either course of the bond.
+void check_corner_room(const Envelope& env, const LayoutSpec& spec);
+
 // What a corner is: "outer", "inner" or "bend" (no corner), by its turn in degrees.
 const char* corner_kind(double turn);
 

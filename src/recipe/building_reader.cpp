@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "building/coursing.h"
 #include "curdle/error.h"
 #include "layout/contour.h"
 #include "recipe/layout_reader.h"
@@ -132,7 +133,8 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
   }
   r.report_unused("is not a key of layout.building");
   try {
-    (void)envelope_of(b, spec);  // the plan, heights and openings checked where they are read
+    // The plan, heights, openings and corners checked where they are read.
+    check_corner_room(envelope_of(b, spec), spec);
   } catch (const ResourceLimitError& e) {  // too big: where its height is, still a limit
     throw ResourceLimitError(locate(r.source(), r.get("height")->source(), r.key_path("height")),
                              e.message());
