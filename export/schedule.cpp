@@ -24,6 +24,14 @@ double stock_area(const Element& e) { return e.stock_w * e.stock_h; }
 std::string element_type_of(const Layout& layout, const Element& e) {
   if (!e.type.empty()) return e.type;
   if (e.form == ElementForm::opening) return "opening";
+  // A building's unit turning a corner of another angle than 90° is a special, ordered as one.
+  if (e.corner >= 0 && static_cast<size_t>(e.corner) < layout.frames.size()) {
+    const double turn = layout.frames[static_cast<size_t>(e.corner)].turn_at_end;
+    const double angle = 180 - std::fabs(turn);
+    if (std::fabs(angle - 90) >= 0.5)
+      return fmt::format("{}, special for a {:.1f}° {} corner", layout.element_type, angle,
+                         turn > 0 ? "outer" : "inner");
+  }
   return layout.element_type;
 }
 

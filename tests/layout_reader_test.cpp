@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
 
+#include "kinds/facade.h"
 #include "recipe_support.h"
 
 namespace curdle {
@@ -278,6 +280,58 @@ TEST(Recipe, SiteFromADrawing) {
   r = parse_recipe(floor + site + "openings = \"PIT\"\n", "r.toml", {}, &files);
   ASSERT_EQ(r.layout->zones.size(), 1u);
   EXPECT_EQ(r.layout->zones[0].name, "opening 1");
+}
+
+// A building's plan from a layer of a drawing (the kiosk's, its south front an arc), and a
+// façade's windows and door from its elevation (the 12 m brick elevation's INSERTs).
+TEST(Recipe, ABuildingsPlanAndOpeningsFromDrawings) {
+  FilesInMemory files;
+  for (const char* name : {"kiosk.dxf", "elevation.dxf"}) {
+    std::ifstream in(std::string(CURDLE_SOURCE_DIR) + "/patterns/sites/" + name, std::ios::binary);
+    files.files[name] = std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string bricks = with_layout("kind = \"facade\"\npanel = [215, 65]\njoint = 10\n");
+  const Recipe kiosk = parse_recipe(bricks + R"([layout.building]
+height = 3000
+[layout.building.site]
+file = "kiosk.dxf"
+plan = "A-WALL"
+)",
+                                    "r.toml", {}, &files);
+  const BuildingKeys& k = *kiosk.layout->own<FacadeKeys>().building;
+  ASSERT_EQ(k.plan.size(), 4u);
+  EXPECT_NEAR(k.plan[0].bulge, 0.2, 1e-9);  // the front's arc kept
+  EXPECT_NE(kiosk.layout->site_summary.find("1 arc"), std::string::npos);
+  const Recipe hall = parse_recipe(bricks + R"([layout.building]
+plan = [[0, 0], [12000, 0], [12000, 8000], [0, 8000]]
+height = 6300
+[[layout.building.elevations]]
+facade = "S"
+file = "elevation.dxf"
+wall = "A-WALL"
+openings = ["A-GLAZ", "A-DOOR"]
+)",
+                                   "r.toml", {}, &files);
+  const Envelope& env = *hall.layout->own<FacadeKeys>().envelope;
+  ASSERT_EQ(env.openings.size(), 8u);  // seven windows and the door
+  size_t doors = 0;
+  for (size_t i = 0; i < env.openings.size(); ++i) {
+    EXPECT_EQ(env.opening_facade[i], 0u);
+    doors += env.opening_type[i] == "door";
+  }
+  EXPECT_EQ(doors, 1u);
+  EXPECT_NE(site_error(bricks + R"([layout.building]
+plan = [[0, 0], [9000, 0], [9000, 8000], [0, 8000]]
+height = 6300
+[[layout.building.elevations]]
+facade = "S"
+file = "elevation.dxf"
+wall = "A-WALL"
+openings = ["A-GLAZ", "A-DOOR"]
+)",
+                       &files)
+                .find("past its corner at 9000 mm"),
+            std::string::npos);
 }
 
 }  // namespace curdle

@@ -78,7 +78,7 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
     layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
   TableReader r(*t, layout.key_path("building"), layout.source(),
                 {"plan", "path", "site", "height", "storey", "base", "depth", "start",
-                 "coursed_openings", "openings", "windows"});
+                 "coursed_openings", "openings", "windows", "elevations"});
   BuildingKeys b;
   const bool drawn = r.get("site");
   const bool plan = r.get("plan") || drawn, path = r.get("path");
@@ -124,6 +124,10 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
       TableReader ro(*o, where, r.source(), {"facade", "rect", "type"});
       b.openings.push_back(read_opening(ro, i));
     }
+  }
+  if (r.get("elevations")) {
+    const std::vector<BuildingOpening> drawn_openings = read_site_elevations(r, spec);
+    b.openings.insert(b.openings.end(), drawn_openings.begin(), drawn_openings.end());
   }
   if (r.get("windows")) {
     const toml::table* w = read_table(r, "windows");

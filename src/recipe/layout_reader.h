@@ -65,6 +65,11 @@ ReadContour read_contour(TableReader& r, const std::string& key, double toleranc
 // `summary` says what was read.
 Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::string& summary);
 
+// [[layout.building.elevations]]: each façade's windows and doors from its elevation drawing
+// (facade, file, wall: the façade's outline layer, openings: layers, units), in the façade's
+// own mm from the outline's bottom-left corner; an opening on the base is a door.
+std::vector<BuildingOpening> read_site_elevations(TableReader& building, const LayoutSpec& spec);
+
 // [layout.building] (facade): a building's plan or a free-standing wall's path, its height,
 // base, unit depth and openings (building/building.h).
 BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec);

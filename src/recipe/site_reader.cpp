@@ -227,4 +227,52 @@ Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::strin
   }
 }
 
+std::vector<BuildingOpening> read_site_elevations(TableReader& building, const LayoutSpec& spec) {
+  std::vector<BuildingOpening> out;
+  const toml::array* a = building.get("elevations")->as_array();
+  if (!a || !a->is_array_of_tables() || a->size() > 1000)
+    building.fail("elevations",
+                  "must be [[layout.building.elevations]] tables, each with facade, file, wall "
+                  "(the façade's outline layer) and openings (layers)");
+  for (size_t i = 0; i < a->size(); ++i) {
+    TableReader er(*a->get(i)->as_table(), building.key_path("elevations." + std::to_string(i)),
+                   building.source(), {"facade", "file", "wall", "openings", "units"});
+    const std::string facade = read_name(er, "facade", "a façade's name").value_or("");
+    if (facade.empty()) er.fail("facade", "must name the façade the drawing is of: \"S\", \"E2\"");
+    site::LayerMap map;
+    map.file = read_drawing_name(er, "façade's elevation");
+    const auto wall = read_layers(er, "wall");
+    if (wall.size() != 1)
+      er.fail("wall", "must name the one layer that holds the façade's outline, e.g. \"A-WALL\"");
+    map.outline = wall.front();
+    map.openings = read_layers(er, "openings");
+    if (map.openings.empty()) er.fail("openings", "must name the layers of the windows and doors");
+    read_units_and_origin(er, map);
+    map.origin_at_outline = true;  // the façade's own x and y: from its bottom-left corner
+    map.chord_tolerance = spec.chord_tolerance;
+    er.report_unused("is not a [[layout.building.elevations]] key");
+    if (!building.source().files)
+      er.fail("file", "names a drawing, which is read only where the recipe is a file");
+    const SourceLocation where =
+        locate(building.source(), a->get(i)->source(), er.key_path("file"));
+    const std::string bytes =
+        building.source().files->read(map.file, where, site::kMostDrawingBytes);
+    site::Site s;
+    try {
+      s = site::site_from(site::read_drawing(bytes, map.file, spec.chord_tolerance, map.unit_mm),
+                          map);
+    } catch (const site::SiteError& e) {
+      er.fail("file", e.what());
+    }
+    for (const Contour& o : s.openings) {
+      const auto r = as_rectangle(o);
+      if (!r)
+        er.fail("openings", map.file + ": a building's openings are rectangles in its elevation");
+      // A door stands on the base; a window above it.
+      out.push_back({facade, *r, r->y < 1 ? "door" : "window"});
+    }
+  }
+  return out;
+}
+
 }  // namespace curdle::reading

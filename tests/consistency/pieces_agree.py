@@ -63,7 +63,7 @@ def dxf_pieces(path, dx=0.0, dy=0.0):
     # text is measured by each program its own way, so within 3 % of the drawing's size).
     if "$EXTMIN" in doc.header and dx == 0 and dy == 0:
         from ezdxf import bbox
-        drawn = bbox.extents(e for e in doc.modelspace() if e.dxftype() != "TEXT")
+        drawn = bbox.extents((e for e in doc.modelspace() if e.dxftype() != "TEXT"), fast=True)
         lo, hi = doc.header["$EXTMIN"], doc.header["$EXTMAX"]
         size = max(drawn.size.x, drawn.size.y)
         if drawn.has_data and (lo[0] > drawn.extmin.x + 1e-6 or lo[1] > drawn.extmin.y + 1e-6 or
