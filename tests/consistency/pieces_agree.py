@@ -9,8 +9,10 @@ the installer's map's drawing of the element; a perforation's sheet DXF. Also th
 millimetres (AutoCAD 2007, $INSUNITS 4) and audits clean, and that the schedule's areas add up
 to the quantities' laid areas.
 
-Usage: pieces_agree.py CURDLE RECIPE WORKDIR [CORNER,CORNER,...]
-(Debian's python3 with python3-ezdxf; every corner unless some are named)
+Usage: pieces_agree.py CURDLE WORKDIR RECIPE[@CORNER,CORNER,...] ...
+(Debian's python3 with python3-ezdxf; each recipe at every corner unless some are named after
+an @, or at its own where the kind takes none; several recipes in one process, so that Python
+and ezdxf start once)
 """
 import csv
 import json
@@ -374,19 +376,22 @@ def layout_table(recipe):
 
 
 def main():
-    curdle, recipe, work = sys.argv[1:4]
-    corners = sys.argv[4].split(",") if len(sys.argv) > 4 else CORNERS
-    os.makedirs(work, exist_ok=True)
-    # Every corner when the kind takes one (the recipe's own is among them), else as written.
-    with open(recipe, "rb") as f:
-        layout = tomllib.load(f).get("layout")
-    if layout is None:
-        print(f"{os.path.basename(recipe)}: no [layout], so no pieces to compare")
-    elif layout.get("kind", "tile") in ("rhythm", "blocks") or "building" in layout:
-        check(curdle, recipe, os.path.join(work, "out"), None)
-    else:
-        for i, corner in enumerate(corners):
-            check(curdle, recipe, os.path.join(work, f"out{i}"), corner)
+    curdle, work = sys.argv[1:3]
+    for i, item in enumerate(sys.argv[3:]):
+        recipe, _, named = item.partition("@")
+        corners = named.split(",") if named else CORNERS
+        out = os.path.join(work, f"{i:02d}-{os.path.basename(recipe)[:-5]}")
+        os.makedirs(out, exist_ok=True)
+        # Every corner when the kind takes one (the recipe's own is among them), else as written.
+        with open(recipe, "rb") as f:
+            layout = tomllib.load(f).get("layout")
+        if layout is None:
+            print(f"{os.path.basename(recipe)}: no [layout], so no pieces to compare")
+        elif layout.get("kind", "tile") in ("rhythm", "blocks") or "building" in layout:
+            check(curdle, recipe, os.path.join(out, "out"), None)
+        else:
+            for k, corner in enumerate(corners):
+                check(curdle, recipe, os.path.join(out, f"out{k}"), corner)
     if failures:
         print(f"{len(failures)} disagreements")
         sys.exit(1)
