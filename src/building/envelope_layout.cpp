@@ -66,12 +66,14 @@ std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& d
   std::vector<std::string> out;
   const double pitch_w = layout.module_w + layout.joint;
   const int b = design.lattice.base, stages = design.lattice.stages;
+  int64_t root = 1;  // the lattice's whole cell, in field cells
+  for (int k = 0; k < stages; ++k) root *= b;
+  // Places in the field's own cells: a window may start the strip anywhere in a larger curd.
+  const int64_t origin = layout.view.origin[0];
   auto place = [&](double u) {
     std::string s;
-    const double cell = u / pitch_w;  // in field cells from the strip's start
-    int64_t size = 1;
-    for (int k = 1; k < stages; ++k) size *= b;
-    for (int k = 1; k <= stages; ++k, size /= b) {
+    const double cell = static_cast<double>(origin) + u / pitch_w;
+    for (int64_t size = root / b, k = 1; k <= stages; ++k, size /= b) {
       const double within = std::fmod(cell, static_cast<double>(size));
       s += fmt::format("{}stage {}: {}", k == 1 ? "" : "; ", k,
                        within < 1e-6 ? std::string("on a boundary")
@@ -79,16 +81,22 @@ std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& d
     }
     return s;
   };
+  const bool on_root = origin % root == 0;
   for (const SurfaceFrame& f : layout.frames) {
     if (f.last_of_path) continue;
     const double u = f.start + f.length;
     const bool closing = layout.closed_envelope && &f == &layout.frames.back();
+    std::string seam;
+    if (closing)
+      seam = on_root ? ", the closing seam: the strip begins on a root-cell boundary, so its "
+                       "start and end meet as two root cells do"
+                     : fmt::format(
+                           ", the closing seam: the strip begins at cell {}, inside a "
+                           "root cell of {}; a window from a multiple of {} starts it "
+                           "on a boundary",
+                           origin, root, root);
     out.push_back(fmt::format("corner at the end of {} ({:.1f} mm along the strip{}): {}", f.name,
-                              u,
-                              closing ? ", the closing seam, where the strip began on a "
-                                        "root-cell boundary"
-                                      : "",
-                              place(u)));
+                              u, seam, place(u)));
   }
   return out;
 }
