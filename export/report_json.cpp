@@ -164,19 +164,20 @@ json facades_json(const Layout& layout) {
       total += counts[v];
       by_value.push_back({{"value", v}, {"label", layout.legend[v].label}, {"units", counts[v]}});
     }
-    out.push_back({{"name", f.name},
-                   {"index", f.index},
-                   {"facing_degrees", rounded(f.facing, 3)},
-                   {"start_mm", f.start},
-                   {"length_mm", f.length},
-                   {"height_mm", layout.height},
-                   {"curved", f.bulge != 0},
-                   {"area_m2", rounded(f.length * layout.height / 1e6, 6)},
-                   {"openings", openings},
-                   {"open_area_m2", rounded(open / 1e6, 6)},
-                   {"turn_at_end_degrees", rounded(f.turn_at_end, 3)},
-                   {"units", total},
-                   {"units_by_value", by_value}});
+    out.push_back(
+        {{"name", f.name},
+         {"index", f.index},
+         {"facing_degrees", rounded(f.facing, 3)},
+         {"start_mm", f.start},
+         {"length_mm", f.length},
+         {"height_mm", f.height > 0 ? f.height : layout.height},
+         {"curved", f.bulge != 0},
+         {"area_m2", rounded(f.length * (f.height > 0 ? f.height : layout.height) / 1e6, 6)},
+         {"openings", openings},
+         {"open_area_m2", rounded(open / 1e6, 6)},
+         {"turn_at_end_degrees", rounded(f.turn_at_end, 3)},
+         {"units", total},
+         {"units_by_value", by_value}});
   }
   return out;
 }

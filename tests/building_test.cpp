@@ -86,6 +86,13 @@ TEST(Building, BadBuildingsAreRefusedSayingWhatIsAllowed) {
   keys.height = 750000;
   EXPECT_THROW((void)envelope_of(keys, test::bricks()), ResourceLimitError);
   keys = pavilion();
+  keys.heights = {7050, 7050, 3525};
+  EXPECT_NE(refusal(keys).find("heights: gives 3 heights for 6 edges"), std::string::npos);
+  keys.heights = {7050, 7050, 3500, 3525, 7050, 7050};
+  EXPECT_NE(refusal(keys).find("heights: 3500 mm is not whole courses"), std::string::npos);
+  keys.heights = {7050, 7125, 3525, 3525, 7050, 7050};
+  EXPECT_NE(refusal(keys).find("above the wall's height of 7050 mm"), std::string::npos);
+  keys = pavilion();
   keys.depth = 300;
   EXPECT_NE(refusal(keys).find("depth"), std::string::npos);
 }

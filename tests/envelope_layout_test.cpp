@@ -79,6 +79,24 @@ type = "door"
   EXPECT_NEAR(laid / faces, 65.0 / 75 * 215 / 225, 0.01);
 }
 
+TEST(EnvelopeLayout, AFacadeLowerThanTheWallHasNoUnitsAboveItsOwnTop) {
+  // The bite's two walls one storey high, the rest two.
+  const Layout l =
+      test::lay_recipe(test::pavilion_recipe("heights = [7050, 7050, 3525, 3525, 7050, 7050]\n"));
+  ASSERT_EQ(l.frames[2].height, 3525);
+  EXPECT_EQ(l.frames[1].height, 0);  // as tall as the wall
+  size_t above = 0;
+  for (const Element& e : l.elements)
+    for (const Rect& r : e.shape) {
+      const SurfaceFrame* f = frame_at(l.frames, r.x + r.w / 2);
+      if (f->height > 0) {
+        EXPECT_LE(r.top(), f->height + 1e-9) << e.id;
+      }
+      above += f == &l.frames[1] && r.y >= 3525;
+    }
+  EXPECT_GT(above, 0u);  // the east wall goes on up beside the bite's roof
+}
+
 // Tone continuity across a vertical line of the strip at `u` mm: the share of courses whose
 // cells either side hold the same value. Cells either side of the closing seam are the strip's
 // last and first.

@@ -22,13 +22,13 @@ constexpr double kEps = 1e-6;
 }
 
 // A height from the base in whole courses of `pitch`, or refused naming the nearest two.
-int64_t whole_courses(double height, double pitch) {
+int64_t whole_courses(double height, double pitch, const char* key = "height") {
   const double n = height / pitch;
   if (std::fabs(n - std::round(n)) * pitch < 0.01) return static_cast<int64_t>(std::round(n));
   const double lower = std::floor(n) * pitch, upper = std::ceil(n) * pitch;
-  refuse("height", fmt::format("{:g} mm is not whole courses of {:g} mm (a unit and its bed "
-                               "joint): {:g} mm ({} courses) or {:g} mm ({} courses) are",
-                               height, pitch, lower, std::floor(n), upper, std::ceil(n)));
+  refuse(key, fmt::format("{:g} mm is not whole courses of {:g} mm (a unit and its bed "
+                          "joint): {:g} mm ({} courses) or {:g} mm ({} courses) are",
+                          height, pitch, lower, std::floor(n), upper, std::ceil(n)));
 }
 
 // y moved onto the nearest course line (a multiple of `pitch`).
@@ -45,8 +45,8 @@ std::vector<BuildingOpening> ruled_windows(const WindowRule& rule,
     if (room < rule.size[0]) continue;
     const int64_t n = static_cast<int64_t>(std::floor((room - rule.size[0]) / rule.every)) + 1;
     const double margin = (f.length - static_cast<double>(n - 1) * rule.every - rule.size[0]) / 2;
-    for (double level = 0; level + rule.sill + rule.size[1] <= height + kEps;
-         level += floor_to_floor)
+    const double top = f.height > 0 ? f.height : height;
+    for (double level = 0; level + rule.sill + rule.size[1] <= top + kEps; level += floor_to_floor)
       for (int64_t k = 0; k < n; ++k)
         out.push_back({std::to_string(f.index),
                        Rect{margin + static_cast<double>(k) * rule.every, level + rule.sill,
@@ -109,6 +109,21 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
   env.length = strip_length(env.facades);
   env.courses = whole_courses(keys.height, pitch_h);
   env.height = keys.height;
+  if (!keys.heights.empty()) {
+    if (keys.heights.size() != env.facades.size())
+      refuse("heights", fmt::format("gives {} heights for {} edges: one per edge, in the plan's "
+                                    "order",
+                                    keys.heights.size(), env.facades.size()));
+    for (SurfaceFrame& f : env.facades) {
+      const double h = keys.heights[f.index];
+      if (h > keys.height + kEps)
+        refuse("heights", fmt::format("edge {} is {:g} mm high, above the wall's height of {:g} "
+                                      "mm: height is the tallest",
+                                      f.index, h, keys.height));
+      whole_courses(h, pitch_h, "heights");
+      if (h < keys.height - kEps) f.height = h;
+    }
+  }
   env.depth = keys.depth > 0 ? keys.depth : (spec.module_w - spec.joint) / 2;
   if (env.depth >= spec.module_w)
     refuse("depth", fmt::format("{:g} mm is not less than the unit's length ({:g} mm): a unit "
@@ -151,10 +166,11 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
       refuse("openings", fmt::format("opening {} on façade {} runs to {:g} mm, past its corner at "
                                      "{:g} mm: an opening lies on one façade",
                                      i, f->name, r.right(), f->length));
-    if (r.top() > env.height + kEps)
+    const double top = f->height > 0 ? f->height : env.height;
+    if (r.top() > top + kEps)
       refuse("openings", fmt::format("opening {} on façade {} reaches {:g} mm, above the wall's "
                                      "top at {:g} mm",
-                                     i, f->name, r.top(), env.height));
+                                     i, f->name, r.top(), top));
     const Rect on_strip{f->start + r.x, r.y, r.w, r.h};
     for (size_t k = 0; k < env.openings.size(); ++k)
       if (overlaps(env.openings[k], on_strip))

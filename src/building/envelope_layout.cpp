@@ -15,6 +15,10 @@ constexpr double kEps = 1e-6;
 void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
                   const std::vector<uint16_t>& values, const LayoutSpec& spec) {
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
+  // Above a façade lower than the wall: no units, drawn as paper.
+  for (const SurfaceFrame& f : env.facades)
+    if (f.height > 0)
+      layout.outside.push_back(Rect{f.start, f.height, f.length, env.height - f.height});
   const std::vector<Rect> holes = layout.holes();
   const Box& view = layout.view;
   const int digits = static_cast<int>(std::to_string(std::max(layout.columns, layout.rows)).size());

@@ -21,6 +21,7 @@ struct SurfaceFrame {
   double length = 0;                           // along the wall, mm: the chord, or the arc
   double start = 0;                            // where it begins on the unrolled strip, mm
   double base = 0;                             // its v = 0 above the datum, mm
+  double height = 0;  // its own height where it is lower than the wall's, mm; 0: the wall's
   double facing = 0;  // the outer face's bearing, degrees clockwise from north
   // The turn from this façade into the next at its end, degrees: positive turns outwards (an
   // outer corner, 90 on a rectangle), negative inwards (an L's bite); 0 where none follows.

@@ -78,7 +78,7 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
     layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
   TableReader r(*t, layout.key_path("building"), layout.source(),
                 {"plan", "path", "site", "height", "storey", "base", "depth", "start",
-                 "coursed_openings", "openings", "windows", "elevations"});
+                 "coursed_openings", "openings", "windows", "elevations", "heights"});
   BuildingKeys b;
   const bool drawn = r.get("site");
   const bool plan = r.get("plan") || drawn, path = r.get("path");
@@ -104,6 +104,17 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
              "has a vertex beyond 10 km: give the plan in millimetres from a datum near it");
   if (path) b.path = read_path(r);
   b.height = read_mm(r, "height", 0, 1, true);
+  if (const toml::node* n = r.get("heights")) {
+    const toml::array* a = n->as_array();
+    const std::string allowed =
+        "must be one height a plan edge, in the plan's order, each in mm up to `height`";
+    if (!a || a->empty() || a->size() > kMostVertices) r.fail("heights", allowed);
+    for (const toml::node& item : *a) {
+      const auto h = finite_number(&item);
+      if (!h || *h < 1 || *h > 1e7) r.fail("heights", allowed);
+      b.heights.push_back(*h);
+    }
+  }
   b.storey = read_mm(r, "storey", 0, 0);
   b.base = r.get("base") ? *finite_number(r.get("base")) : 0;
   if (!std::isfinite(b.base) || std::fabs(b.base) > 1e7)
