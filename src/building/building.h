@@ -34,11 +34,11 @@ struct BuildingKeys {
   Contour path;              // open (a free-standing wall)
   std::string site_summary;  // where a drawn plan was read from, for the report
   size_t start = 0;
-  double height = 0;  // mm, whole courses: the tallest façade's
+  double height = 0;            // mm, whole courses: the tallest façade's
   std::vector<double> heights;  // per plan edge where they differ, each at most `height`
-  double storey = 0;  // floor to floor, mm; 0: one storey the wall's height
-  double base = 0;    // the datum's level, mm
-  double depth = 0;   // the unit's depth into the wall, mm; 0: half a unit less half a joint
+  double storey = 0;            // floor to floor, mm; 0: one storey the wall's height
+  double base = 0;              // the datum's level, mm
+  double depth = 0;  // the unit's depth into the wall, mm; 0: half a unit less half a joint
   bool coursed_openings = true;  // sills and heads moved onto course lines
   std::vector<BuildingOpening> openings;
   std::optional<WindowRule> windows;
