@@ -92,6 +92,10 @@ PY
   refused "stretcher bond" generate "$b" --set 'layout.bond="third"'
   refused "layout.building.start instead" generate "$b" --set 'layout.origin="top-right"'
   refused "not whole courses" generate "$b" --set 'layout.joint=11'
+  refused "base level" generate "$b" --set 'layout.building.base="low"'
+  refused "at least 1000 mm" generate "$b" --set 'layout.building.storey=1'
+  refused "more than 10000 windows" generate "$b" --set 'layout.building.coursed_openings=false' \
+    --set 'layout.building.windows={size=[1, 1], every=1}'
 }
 
 section_options() {

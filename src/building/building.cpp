@@ -13,6 +13,7 @@ namespace curdle {
 namespace {
 
 constexpr double kEps = 1e-6;
+constexpr size_t kMostOpenings = 10000;  // as many as a recipe may list
 
 // Keys are named relative to [layout.building]; its reader adds the recipe's location.
 [[noreturn]] void refuse(const char* key, const std::string& what) {
@@ -46,12 +47,18 @@ std::vector<BuildingOpening> ruled_windows(const WindowRule& rule,
     const int64_t n = static_cast<int64_t>(std::floor((room - rule.size[0]) / rule.every)) + 1;
     const double margin = (f.length - static_cast<double>(n - 1) * rule.every - rule.size[0]) / 2;
     const double top = f.height > 0 ? f.height : height;
-    for (double level = 0; level + rule.sill + rule.size[1] <= top + kEps; level += floor_to_floor)
+    for (double level = 0; level + rule.sill + rule.size[1] <= top + kEps;
+         level += floor_to_floor) {
+      if (out.size() + static_cast<size_t>(n) > kMostOpenings)
+        refuse("windows", fmt::format("would set more than {} windows: fewer, larger or further "
+                                      "apart",
+                                      kMostOpenings));
       for (int64_t k = 0; k < n; ++k)
         out.push_back({std::to_string(f.index),
                        Rect{margin + static_cast<double>(k) * rule.every, level + rule.sill,
                             rule.size[0], rule.size[1]},
                        "window"});
+    }
   }
   return out;
 }

@@ -116,9 +116,16 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
     }
   }
   b.storey = read_mm(r, "storey", 0, 0);
-  b.base = r.get("base") ? *finite_number(r.get("base")) : 0;
-  if (!std::isfinite(b.base) || std::fabs(b.base) > 1e7)
-    r.fail("base", "must be the wall's base level in millimetres, within 10 km");
+  if (b.storey > 0 && b.storey < 1000)
+    r.fail("storey",
+           "must be a storey's floor-to-floor height, at least 1000 mm (or 0: one "
+           "storey the wall's height)");
+  if (const toml::node* n = r.get("base")) {
+    const auto base = finite_number(n);
+    if (!base || std::fabs(*base) > 1e7)
+      r.fail("base", "must be the wall's base level in millimetres, within 10 km");
+    b.base = *base;
+  }
   b.depth = read_mm(r, "depth", 0, 0);
   const size_t corners = plan ? b.plan.size() : 0;
   b.start = static_cast<size_t>(
