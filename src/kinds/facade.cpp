@@ -1,5 +1,6 @@
 // The façade kind: windows and doors as rectangles in millimetres, or a mask image, cut out of
-// the wall's grid; its open share reported.
+// the wall's grid; its open share reported. With [layout.building] the wall is a building's
+// envelope unrolled (src/building), laid in courses round its corners instead of on the grid.
 #include "kinds/facade.h"
 
 #include <cmath>
@@ -61,6 +62,7 @@ Layout FacadeKind::build(const Design& design, const CurdField& field, const Box
   const FacadeKeys& keys = spec.own<FacadeKeys>();
   if (!keys.envelope) return SurfaceKind::build(design, field, view, spec);
   const Envelope& env = *keys.envelope;
+  // The grid lays the strip's surface, openings and settings; its units are then replaced.
   Layout layout = lay_grid(design, field, view, spec, env.openings);
   lay_envelope(layout, env, course_envelope(env, spec, keys.stack), values_in(field, view), spec);
   report_open_area(layout, layout.openings_given);
