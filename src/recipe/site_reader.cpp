@@ -99,6 +99,24 @@ std::string read_drawing_name(TableReader& r, const std::string& what) {
   return file;
 }
 
+// The drawing that `r`'s table (`table`) names in `file`, read beside the recipe and turned into
+// a site by `map`; one that cannot be read or laid is refused at that `file`.
+site::Site drawn_site(const TableReader& r, const toml::node& table, const site::LayerMap& map,
+                      const LayoutSpec& spec) {
+  if (!r.source().files)
+    r.fail("file",
+           "names a drawing, which is read only where the recipe is a file: run curdle on the "
+           "recipe's file");
+  const SourceLocation where = locate(r.source(), table.source(), r.key_path("file"));
+  const std::string bytes = r.source().files->read(map.file, where, site::kMostDrawingBytes);
+  try {
+    return site::site_from(site::read_drawing(bytes, map.file, spec.chord_tolerance, map.unit_mm),
+                           map);
+  } catch (const site::SiteError& e) {
+    r.fail("file", e.what());
+  }
+}
+
 site::LayerMap read_layer_map(TableReader& r, const LayoutSpec& spec, size_t values) {
   site::LayerMap map;
   map.file = read_drawing_name(r, "site's drawing");
@@ -153,19 +171,7 @@ void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
   if (!map.zones.empty() && !spec.kind->takes_zones())
     sr.fail("zones", "are for tile, paving, facade and park layouts");
   sr.report_unused("is not a [layout.site] key");
-  if (!r.source().files)
-    sr.fail("file",
-            "names a drawing, which is read only where the recipe is a file: run "
-            "curdle on the recipe's file");
-  SourceLocation where = locate(r.source(), t->source(), sr.key_path("file"));
-  const std::string bytes = r.source().files->read(map.file, where, site::kMostDrawingBytes);
-  site::Site s;
-  try {
-    s = site::site_from(site::read_drawing(bytes, map.file, spec.chord_tolerance, map.unit_mm),
-                        map);
-  } catch (const site::SiteError& e) {
-    sr.fail("file", e.what());
-  }
+  const site::Site s = drawn_site(sr, *t, map, spec);
   spec.outline = flatten(s.outline, spec.chord_tolerance);
   if (has_arcs(s.outline)) spec.outline_contour = s.outline;
   const Rect bounds = contour_bounds(s.outline);
@@ -211,20 +217,9 @@ Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::strin
   read_units_and_origin(sr, map);
   map.chord_tolerance = spec.chord_tolerance;
   sr.report_unused("is not a [layout.building.site] key (file, plan, units, origin)");
-  if (!building.source().files)
-    sr.fail("file",
-            "names a drawing, which is read only where the recipe is a file: run curdle on the "
-            "recipe's file");
-  const SourceLocation where = locate(building.source(), t->source(), sr.key_path("file"));
-  const std::string bytes = building.source().files->read(map.file, where, site::kMostDrawingBytes);
-  try {
-    const site::Site s = site::site_from(
-        site::read_drawing(bytes, map.file, spec.chord_tolerance, map.unit_mm), map);
-    summary = "plan: " + s.summary;
-    return s.outline;
-  } catch (const site::SiteError& e) {
-    sr.fail("file", e.what());
-  }
+  const site::Site s = drawn_site(sr, *t, map, spec);
+  summary = "plan: " + s.summary;
+  return s.outline;
 }
 
 std::vector<BuildingOpening> read_site_elevations(TableReader& building, const LayoutSpec& spec) {
@@ -251,19 +246,7 @@ std::vector<BuildingOpening> read_site_elevations(TableReader& building, const L
     map.origin_at_outline = true;  // the façade's own x and y: from its bottom-left corner
     map.chord_tolerance = spec.chord_tolerance;
     er.report_unused("is not a [[layout.building.elevations]] key");
-    if (!building.source().files)
-      er.fail("file", "names a drawing, which is read only where the recipe is a file");
-    const SourceLocation where =
-        locate(building.source(), a->get(i)->source(), er.key_path("file"));
-    const std::string bytes =
-        building.source().files->read(map.file, where, site::kMostDrawingBytes);
-    site::Site s;
-    try {
-      s = site::site_from(site::read_drawing(bytes, map.file, spec.chord_tolerance, map.unit_mm),
-                          map);
-    } catch (const site::SiteError& e) {
-      er.fail("file", e.what());
-    }
+    const site::Site s = drawn_site(er, *a->get(i), map, spec);
     for (const Contour& o : s.openings) {
       const auto r = as_rectangle(o);
       if (!r)
