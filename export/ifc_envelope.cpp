@@ -128,6 +128,15 @@ std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
                     text(fmt::format("{:g} mm along the envelope from {:g} mm", f.length, f.start)),
                     ref(placement_on(f, f.start, 0, container)), text(f.name)));
     wall_ids.push_back(wall);
+    // Its common set, as BIM tools sort walls by it: the façade's name, and outside.
+    const int64_t reference =
+        add(fmt::format("IFCPROPERTYSINGLEVALUE('Reference',$,IFCIDENTIFIER({}),$)", text(f.name)));
+    const int64_t external = add("IFCPROPERTYSINGLEVALUE('IsExternal',$,IFCBOOLEAN(.T.),$)");
+    const int64_t common =
+        add(fmt::format("IFCPROPERTYSET({},'Pset_WallCommon',$,({},{}))",
+                        root_("wall-common " + f.name), ref(reference), ref(external)));
+    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root_("wall-common-rel " + f.name),
+                    ref(wall), ref(common)));
     // Its units nested in it, and each also in the storey: IfcRelAggregates would say the same,
     // but web-ifc then subtracts the wall's openings from every unit (already cut to them),
     // taking 6 s to open the pavilion instead of 3.

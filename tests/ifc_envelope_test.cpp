@@ -50,6 +50,11 @@ type = "door"
   const std::string ifc = out.str();
   EXPECT_EQ(count(ifc, "IFCWALL"), 6u);
   EXPECT_EQ(count(ifc, "IFCRELNESTS"), 6u);
+  size_t common = 0;  // each wall's common set, saying it stands outside
+  for (size_t at = ifc.find("'Pset_WallCommon'"); at != std::string::npos;
+       at = ifc.find("'Pset_WallCommon'", at + 1))
+    ++common;
+  EXPECT_EQ(common, 6u);
   EXPECT_EQ(count(ifc, "IFCBUILDINGELEMENTPART"), l.elements.size());
   EXPECT_EQ(count(ifc, "IFCCOVERING"), 0u);
   EXPECT_EQ(count(ifc, "IFCOPENINGELEMENT"), 41u);  // 40 windows by rule and the door
