@@ -4,21 +4,14 @@
 
 #include <gtest/gtest.h>
 
-#include "app/run.h"
 #include "export/sheet_drawing.h"
 #include "layout/builder.h"
+#include "pattern_support.h"
 
 namespace curdle {
 namespace {
 
-Layout pattern_layout(const std::string& name) {
-  app::RunRequest request;
-  request.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/" + name;
-  request.recipe_text = app::read_recipe_file(request.recipe_path);
-  const app::Run run = app::resolve_run(request);
-  const CurdField field = app::run_engine(run, 0);
-  return make_layout(run.recipe.design, field, run.view, *run.recipe.layout);
-}
+using test::pattern_layout;
 
 TEST(InstallerDrawing, EachSheetListsWhatItsViewShows) {
   for (const char* name :

@@ -11,25 +11,16 @@
 #include <map>
 #include <sstream>
 
-#include "app/run.h"
 #include "curdle/error.h"
 #include "export/drawing_set.h"
 #include "export/layout_png.h"
 #include "layout/builder.h"
+#include "pattern_support.h"
 
 namespace curdle {
 namespace {
 
-Layout pattern_layout(const std::string& name) {
-  app::RunRequest request;
-  request.recipe_path = std::string(CURDLE_SOURCE_DIR) + "/patterns/" + name;
-  request.recipe_text = app::read_recipe_file(request.recipe_path);
-  const app::Run run = app::resolve_run(request);
-  const CurdField field = app::run_engine(run, 0);
-  Layout layout = make_layout(run.recipe.design, field, run.view, *run.recipe.layout);
-  layout.source.seed = run.seed;
-  return layout;
-}
+using test::pattern_layout;
 
 bool within(const Rect& outer, const Rect& inner) {
   const double e = 1e-6;

@@ -302,16 +302,19 @@ plan = "A-WALL"
   ASSERT_EQ(k.plan.size(), 4u);
   EXPECT_NEAR(k.plan[0].bulge, 0.2, 1e-9);  // the front's arc kept
   EXPECT_NE(kiosk.layout->site_summary.find("1 arc"), std::string::npos);
-  const Recipe hall = parse_recipe(bricks + R"([layout.building]
-plan = [[0, 0], [12000, 0], [12000, 8000], [0, 8000]]
+  // A hall whose south front, `width` mm long, has the elevation's windows and door.
+  auto hall_of = [&](int width) {
+    return bricks + "[layout.building]\nplan = [[0, 0], [" + std::to_string(width) + ", 0], [" +
+           std::to_string(width) + R"(, 8000], [0, 8000]]
 height = 6300
 [[layout.building.elevations]]
 facade = "S"
 file = "elevation.dxf"
 wall = "A-WALL"
 openings = ["A-GLAZ", "A-DOOR"]
-)",
-                                   "r.toml", {}, &files);
+)";
+  };
+  const Recipe hall = parse_recipe(hall_of(12000), "r.toml", {}, &files);
   const Envelope& env = *hall.layout->own<FacadeKeys>().envelope;
   ASSERT_EQ(env.openings.size(), 8u);  // seven windows and the door
   size_t doors = 0;
@@ -320,17 +323,7 @@ openings = ["A-GLAZ", "A-DOOR"]
     doors += env.opening_type[i] == "door";
   }
   EXPECT_EQ(doors, 1u);
-  EXPECT_NE(site_error(bricks + R"([layout.building]
-plan = [[0, 0], [9000, 0], [9000, 8000], [0, 8000]]
-height = 6300
-[[layout.building.elevations]]
-facade = "S"
-file = "elevation.dxf"
-wall = "A-WALL"
-openings = ["A-GLAZ", "A-DOOR"]
-)",
-                       &files)
-                .find("past its corner at 9000 mm"),
+  EXPECT_NE(site_error(hall_of(9000), &files).find("past its corner at 9000 mm"),
             std::string::npos);
 }
 
