@@ -1,7 +1,8 @@
 // Pieces of a building's strip placed in 3-D through its frames (layout/surface_frame.h): a
 // rectangle of the strip, `inward0` to `inward1` mm behind the outer face, as boxes in the
 // building (one per frame it lies on; along an arc, one per chord of at most `longest` mm).
-// The 3-D writers place a unit box by each; they learn nothing of buildings.
+// The 3-D writers place a unit box by each (a corner unit laid whole as one prism instead,
+// framed_corner.h); they learn nothing of buildings.
 #pragma once
 
 #include <array>

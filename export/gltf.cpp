@@ -15,7 +15,9 @@
 #include "curdle/palette.h"
 #include "curdle/stop.h"
 #include "export/framed_boxes.h"
+#include "export/framed_corner.h"
 #include "export/gltf_json.h"
+#include "export/gltf_model.h"
 #include "export/gltf_solids.h"
 #include "export/sheet_tiles.h"
 #include "layout/piece.h"
@@ -28,102 +30,6 @@ namespace {
 std::string fmt_value_name(const LegendEntry& e) {
   return "value " + std::to_string(e.value) + " " + e.label;
 }
-
-double srgb_to_linear(uint8_t c) {
-  const double v = c / 255.0;
-  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-
-// A glTF model under construction: one buffer, appended to.
-class ModelBuilder {
- public:
-  tinygltf::Model model;
-  NodeText nodes;  // as text as they are made: the model's own stay empty
-
-  ModelBuilder() {
-    model.asset.version = "2.0";
-    model.asset.generator = "curdle";
-    model.buffers.emplace_back();
-    model.scenes.emplace_back();
-    model.defaultScene = 0;
-  }
-
-  int add_view(const void* data, size_t bytes, int target) {
-    auto& buffer = model.buffers[0].data;
-    while (buffer.size() % 4) buffer.push_back(0);
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = buffer.size();
-    view.byteLength = bytes;
-    if (target) view.target = target;
-    const auto* p = static_cast<const uint8_t*>(data);
-    buffer.insert(buffer.end(), p, p + bytes);
-    model.bufferViews.push_back(view);
-    return static_cast<int>(model.bufferViews.size() - 1);
-  }
-
-  int add_vec3(const std::vector<Vec3>& v, bool bounds) {
-    tinygltf::Accessor a;
-    a.bufferView = add_view(v.data(), v.size() * sizeof(Vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
-    a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    a.count = v.size();
-    a.type = TINYGLTF_TYPE_VEC3;
-    if (bounds) {
-      a.minValues = {1e30, 1e30, 1e30};
-      a.maxValues = {-1e30, -1e30, -1e30};
-      for (const Vec3& p : v)
-        for (int i = 0; i < 3; ++i)
-          a.minValues[i] = std::min<double>(a.minValues[i], p[i]),
-          a.maxValues[i] = std::max<double>(a.maxValues[i], p[i]);
-    }
-    model.accessors.push_back(a);
-    return static_cast<int>(model.accessors.size() - 1);
-  }
-
-  int add_indices(const std::vector<uint32_t>& idx) {
-    tinygltf::Accessor a;
-    a.bufferView = add_view(idx.data(), idx.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    a.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    a.count = idx.size();
-    a.type = TINYGLTF_TYPE_SCALAR;
-    model.accessors.push_back(a);
-    return static_cast<int>(model.accessors.size() - 1);
-  }
-
-  int add_material(const std::string& name, const Rgb& c, double metallic, double roughness) {
-    tinygltf::Material m;
-    m.name = name;
-    m.pbrMetallicRoughness.baseColorFactor = {srgb_to_linear(c.r), srgb_to_linear(c.g),
-                                              srgb_to_linear(c.b), 1.0};
-    m.pbrMetallicRoughness.metallicFactor = metallic;
-    m.pbrMetallicRoughness.roughnessFactor = roughness;
-    model.materials.push_back(m);
-    return static_cast<int>(model.materials.size() - 1);
-  }
-
-  // A triangle mesh; `positions` with their `normals`, triangles as index triples.
-  tinygltf::Primitive primitive(const std::vector<Vec3>& positions,
-                                const std::vector<Vec3>& normals,
-                                const std::vector<uint32_t>& indices, int material) {
-    tinygltf::Primitive p;
-    p.attributes["POSITION"] = add_vec3(positions, true);
-    p.attributes["NORMAL"] = add_vec3(normals, false);
-    p.indices = add_indices(indices);
-    p.material = material;
-    p.mode = TINYGLTF_MODE_TRIANGLES;
-    return p;
-  }
-
-  int add_mesh(const std::string& name, std::vector<tinygltf::Primitive> primitives) {
-    tinygltf::Mesh m;
-    m.name = name;
-    m.primitives = std::move(primitives);
-    model.meshes.push_back(m);
-    return static_cast<int>(model.meshes.size() - 1);
-  }
-
-  int add_node(tinygltf::Node node) { return append_node(nodes, node); }
-};
 
 // Appends an axis-aligned box (glTF metres, min corner and size) with outward normals.
 void add_box(std::vector<Vec3>& pos, std::vector<Vec3>& nrm, std::vector<uint32_t>& idx, Vec3 lo,
@@ -188,6 +94,7 @@ struct Scene {
   double metallic;
   std::vector<int> material;  // per value
   std::map<int, int> box_mesh;
+  std::map<std::vector<int64_t>, int> prism_mesh;    // a corner unit's, by shape and material
   std::map<uint32_t, tinygltf::Value::Array> names;  // per value, worked out once
 
   explicit Scene(const Layout& l)
@@ -226,6 +133,33 @@ struct Scene {
     n.scale = {f.length / 1000, f.height / 1000, f.depth / 1000};
     n.mesh = unit_box(mat);
     return n;
+  }
+  // A node that lays a corner unit's prism (framed_corner.h): one mesh per shape, moved to its
+  // footprint's first point and its course.
+  tinygltf::Node prism_node(const FramedPrism& f, int mat) {
+    const std::array<double, 2> o = f.footprint.front();
+    Ring ring;
+    std::vector<int64_t> key{mat, std::llround(f.height * 1e3)};
+    for (const auto& v : f.footprint) {
+      ring.push_back({v[0] - o[0], v[1] - o[1]});
+      key.push_back(std::llround(ring.back()[0] * 1e3)),
+          key.push_back(std::llround(ring.back()[1] * 1e3));
+    }
+    auto [it, added] = prism_mesh.try_emplace(key, 0);
+    if (added) {
+      std::vector<std::array<std::array<double, 2>, 3>> triangles;
+      for (const auto& tri : footprint_triangles(f.footprint))
+        triangles.push_back({ring[tri[0]], ring[tri[1]], ring[tri[2]]});
+      std::vector<Vec3> p, n;
+      std::vector<uint32_t> i;
+      add_caps(false, triangles, 0, f.height, p, n, i);
+      add_walls(false, {ring}, 0, f.height, p, n, i);
+      it->second = b.add_mesh("corner " + b.model.materials[mat].name, {b.primitive(p, n, i, mat)});
+    }
+    tinygltf::Node node;
+    node.translation = {o[0] / 1000, f.base / 1000, -o[1] / 1000};
+    node.mesh = it->second;
+    return node;
   }
   tinygltf::Node box_node(const Rect& r, double base, double height, int mat) {
     tinygltf::Node n = placed(r, base, height);
@@ -288,8 +222,8 @@ void add_sheet(Scene& sc) {
   cut.insert(cut.end(), tiles.squares.begin(), tiles.squares.end());
   std::vector<Vec3> p, n;
   std::vector<uint32_t> idx;
-  add_caps(layout, triangulate(cut), 0, t, p, n, idx);
-  add_walls(layout, rings, 0, t, p, n, idx);
+  add_caps(layout.kind->upright(), triangulate(cut), 0, t, p, n, idx);
+  add_walls(layout.kind->upright(), rings, 0, t, p, n, idx);
   const int metal = b.add_material("aluminium sheet", Rgb{201, 205, 210}, 0.9, 0.4);
   tinygltf::Node node;
   node.name = "sheet";
@@ -303,8 +237,8 @@ void add_sheet(Scene& sc) {
       const OpeningTile tile = opening_tile(c.d, layout.chord_tolerance);
       std::vector<Vec3> tp, tn;
       std::vector<uint32_t> ti;
-      add_caps(layout, tile.triangles, 0, t, tp, tn, ti);
-      add_walls(layout, {tile.hole}, 0, t, tp, tn, ti);
+      add_caps(layout.kind->upright(), tile.triangles, 0, t, tp, tn, ti);
+      add_walls(layout.kind->upright(), {tile.hole}, 0, t, tp, tn, ti);
       const std::string name = fmt::format("sheet round a {:g} mm opening", c.d);
       it = tile_mesh.emplace(c.d, b.add_mesh(name, {b.primitive(tp, tn, ti, metal)})).first;
     }
@@ -484,7 +418,8 @@ void add_pieces(Scene& sc) {
 }
 
 // A building's units, each placed through the frames of its façades (a unit that turns a
-// corner in one box on each face), and the mortar behind them, set back from the face.
+// corner whole as one prism, cut to the corner's angle), and the mortar behind them, set back
+// from the face.
 void add_framed_pieces(Scene& sc) {
   const Layout& layout = sc.layout;
   const double t = sc.t;
@@ -499,12 +434,16 @@ void add_framed_pieces(Scene& sc) {
     }
   for (const Element& e : layout.elements) {
     stop_point();
+    const int mat = sc.material[e.value];
+    if (const auto corner = framed_corner(layout, e, t)) {
+      sc.add_named(e, sc.prism_node(*corner, mat));
+      continue;
+    }
     std::vector<FramedBox> boxes;
     for (const Rect& r : e.shape) {
       const std::vector<FramedBox> more = framed_boxes(layout, r, 0, t);
       boxes.insert(boxes.end(), more.begin(), more.end());
     }
-    const int mat = sc.material[e.value];
     if (boxes.size() == 1) {
       sc.add_named(e, sc.framed_node(boxes[0], mat));
       continue;

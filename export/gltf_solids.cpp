@@ -7,14 +7,14 @@
 
 namespace curdle {
 
-Vec3 to_gltf(const Layout& l, double x, double y, double up) {
-  if (l.kind->upright()) return {float(x / 1000), float(y / 1000), float(up / 1000)};
+Vec3 to_gltf(bool upright, double x, double y, double up) {
+  if (upright) return {float(x / 1000), float(y / 1000), float(up / 1000)};
   return {float(x / 1000), float(up / 1000), float(-y / 1000)};
 }
 
-void add_caps(const Layout& layout,
-              const std::vector<std::array<std::array<double, 2>, 3>>& triangles, double base,
-              double top, std::vector<Vec3>& p, std::vector<Vec3>& n, std::vector<uint32_t>& idx) {
+void add_caps(bool upright, const std::vector<std::array<std::array<double, 2>, 3>>& triangles,
+              double base, double top, std::vector<Vec3>& p, std::vector<Vec3>& n,
+              std::vector<uint32_t>& idx) {
   // The caps share their corners between triangles (one normal a face): a perforated
   // sheet's 8,000 openings took a third more bytes with three corners a triangle.
   struct CornerHash {
@@ -28,7 +28,7 @@ void add_caps(const Layout& layout,
     auto index_of = [&](const std::array<double, 2>& v) {
       const auto [it, added] = corner.try_emplace(v, static_cast<uint32_t>(p.size()));
       if (added) {
-        p.push_back(to_gltf(layout, v[0], v[1], face ? base : top));
+        p.push_back(to_gltf(upright, v[0], v[1], face ? base : top));
         n.push_back(face ? Vec3{0, -1, 0} : Vec3{0, 1, 0});
       }
       return it->second;
@@ -38,7 +38,7 @@ void add_caps(const Layout& layout,
   }
 }
 
-void add_walls(const Layout& layout, const std::vector<Ring>& rings, double base, double top,
+void add_walls(bool upright, const std::vector<Ring>& rings, double base, double top,
                std::vector<Vec3>& p, std::vector<Vec3>& n, std::vector<uint32_t>& idx) {
   const double smooth = std::cos(30 * 3.14159265358979323846 / 180);
   for (const Ring& given : rings) {
@@ -59,10 +59,10 @@ void add_walls(const Layout& layout, const std::vector<Ring>& rings, double base
     std::vector<uint32_t> leaving(m), arriving(m);
     auto add_pair = [&](const std::array<double, 2>& v, std::array<double, 2> dir) {
       const double len = std::hypot(dir[0], dir[1]);
-      const Vec3 nv = to_gltf(layout, dir[0] / len * 1000, dir[1] / len * 1000, 0);
+      const Vec3 nv = to_gltf(upright, dir[0] / len * 1000, dir[1] / len * 1000, 0);
       const uint32_t first = static_cast<uint32_t>(p.size());
-      p.push_back(to_gltf(layout, v[0], v[1], base));
-      p.push_back(to_gltf(layout, v[0], v[1], top));
+      p.push_back(to_gltf(upright, v[0], v[1], base));
+      p.push_back(to_gltf(upright, v[0], v[1], top));
       n.push_back(nv);
       n.push_back(nv);
       return first;
@@ -86,8 +86,8 @@ void add_walls(const Layout& layout, const std::vector<Ring>& rings, double base
 
 void add_prism(const Layout& layout, const std::vector<Ring>& rings, double base, double top,
                std::vector<Vec3>& p, std::vector<Vec3>& n, std::vector<uint32_t>& idx) {
-  add_caps(layout, triangulate(rings), base, top, p, n, idx);
-  add_walls(layout, rings, base, top, p, n, idx);
+  add_caps(layout.kind->upright(), triangulate(rings), base, top, p, n, idx);
+  add_walls(layout.kind->upright(), rings, base, top, p, n, idx);
 }
 
 }  // namespace curdle

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "export/framed_boxes.h"
+#include "export/framed_corner.h"
 
 namespace curdle {
 namespace {
@@ -71,6 +72,14 @@ IfcEnvelopeWriter::Placed IfcEnvelopeWriter::unit(const Element& e, int64_t cont
   Placed p;
   p.placement = add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame)));
   std::vector<int64_t> solids;
+  if (const auto corner = framed_corner(l_, e, t)) {  // one prism, cut to the corner's angle
+    const Vec up = own.local({0, 0, 1}, false), east = own.local({1, 0, 0}, false);
+    const int64_t at = position(own.local({own.origin[0], own.origin[1], corner->base}, true),
+                                tidy(up), tidy(east));
+    solids.push_back(
+        g_.solid_placed(corner_profile(*corner, own.origin), at, corner->height, colour));
+    boxes.clear();
+  }
   for (const FramedBox& b : boxes) {
     // Each face's solid from its outer face inwards: its own axes, `t` behind the face.
     const Axes face = face_axes(b);
@@ -88,6 +97,20 @@ int64_t IfcEnvelopeWriter::face_profile(double length, double height) {
   if (it != profiles_.end()) return it->second;
   g_.set_local_origin(0, 0);
   return profiles_[{length, height}] = g_.rectangle(Rect{0, 0, length, height});
+}
+
+int64_t IfcEnvelopeWriter::corner_profile(const FramedPrism& p, const Vec& origin) {
+  Ring ring;
+  std::vector<int64_t> key;
+  for (const auto& v : p.footprint) {
+    ring.push_back({v[0] - origin[0], v[1] - origin[1]});
+    key.push_back(std::llround(ring.back()[0] * 1e3));
+    key.push_back(std::llround(ring.back()[1] * 1e3));
+  }
+  auto it = corner_profiles_.find(key);
+  if (it != corner_profiles_.end()) return it->second;
+  g_.set_local_origin(0, 0);
+  return corner_profiles_[key] = g_.profile_with_holes(ring, {});
 }
 
 int64_t IfcEnvelopeWriter::position(const Vec& origin, const Vec& axis, const Vec& ref) {

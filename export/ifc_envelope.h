@@ -1,5 +1,5 @@
 // layout.ifc's building (a layout with frames, src/building): each unit an
-// IfcBuildingElementPart placed in 3-D on its façade (a corner unit a solid on each face, a
+// IfcBuildingElementPart placed in 3-D on its façade (a corner unit one prism cut to its corner, a
 // unit of a curved wall a chord), each façade an IfcWall that nests its units, each opening
 // an IfcOpeningElement voiding its wall and filled by an IfcWindow or IfcDoor. ifc.cpp writes
 // the rest of the model (context, storeys, sets) as for any layout.
@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "export/framed_corner.h"
 #include "export/ifc_geometry.h"
 #include "export/step_file.h"
 #include "layout/layout.h"
@@ -50,6 +51,8 @@ class IfcEnvelopeWriter {
 
   // A face's rectangle profile and its solid's position, shared by every unit that has them.
   int64_t face_profile(double length, double height);
+  // A corner unit's footprint from the unit's origin (plan, mm), shared likewise.
+  int64_t corner_profile(const FramedPrism& prism, const std::array<double, 3>& origin);
   int64_t position(const std::array<double, 3>& origin, const std::array<double, 3>& axis,
                    const std::array<double, 3>& ref);
 
@@ -57,6 +60,7 @@ class IfcEnvelopeWriter {
   IfcGeometryWriter& g_;
   std::map<std::array<double, 2>, int64_t> profiles_;
   std::map<std::array<double, 9>, int64_t> positions_;
+  std::map<std::vector<int64_t>, int64_t> corner_profiles_;
   const Layout& l_;
   std::function<std::string(std::string_view)> root_;
 };

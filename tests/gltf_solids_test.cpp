@@ -59,7 +59,7 @@ TEST(GltfSolids, ARoundHoleSharesItsWallCornersAndASquareKeepsItsOwn) {
   const Layout l = laid("paving");
   std::vector<Vec3> p, n;
   std::vector<uint32_t> idx;
-  add_walls(l, {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}}, 0, 1, p, n, idx);
+  add_walls(l.kind->upright(), {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}}, 0, 1, p, n, idx);
   EXPECT_EQ(p.size(), 16u) << "a square's corners turn 90 degrees: two pairs each";
   Ring round;
   for (int i = 0; i < 64; ++i)
@@ -67,7 +67,7 @@ TEST(GltfSolids, ARoundHoleSharesItsWallCornersAndASquareKeepsItsOwn) {
   p.clear();
   n.clear();
   idx.clear();
-  add_walls(l, {round}, 0, 1, p, n, idx);
+  add_walls(l.kind->upright(), {round}, 0, 1, p, n, idx);
   EXPECT_EQ(p.size(), 128u) << "one pair a corner";
   EXPECT_EQ(idx.size(), 64u * 6);
 }

@@ -1,7 +1,7 @@
 // Tests of ifc_envelope.h, through layout.ifc of the pavilion: a wall per façade nesting its
 // units, each unit a building element part in the storey, an opening per window and door
 // voiding its wall and filled, storeys at the recipe's floor-to-floor height, and a corner
-// unit one part with a solid on each face.
+// unit one part with one prism.
 #include "export/ifc_envelope.h"
 
 #include <gtest/gtest.h>
@@ -64,7 +64,7 @@ type = "door"
   EXPECT_EQ(count(ifc, "IFCDOOR"), 1u);
   EXPECT_NE(ifc.find("'Level 1',$,$,#"), std::string::npos);
   EXPECT_NE(ifc.find(",.ELEMENT.,3525.);"), std::string::npos);
-  // A quoin is one part whose body has two solids, one on each face.
+  // A quoin is one part whose body is one prism, its footprint cut to the corner.
   const Element* quoin = nullptr;
   for (const Element& e : l.elements)
     if (e.corner == 0 && !quoin) quoin = &e;
@@ -77,14 +77,18 @@ type = "door"
   const std::string part =
       ifc.substr(ifc.rfind('\n', at) + 1, ifc.find('\n', at) - ifc.rfind('\n', at) - 1);
   ASSERT_EQ(part.find("IFCBUILDINGELEMENTPART("), part.find('=') + 1) << part;
-  // Its representation (after its placement), a product shape of one body of two solids.
+  // Its representation (after its placement), a product shape of one body of one solid.
   std::smatch m;
   ASSERT_TRUE(std::regex_search(part, m, std::regex("',#\\d+,#(\\d+),'")));
   const std::string shape = line_of(ifc, m[1].str());
   ASSERT_TRUE(std::regex_search(shape, m, std::regex("\\(\\$,\\$,\\(#(\\d+)\\)\\)")));
   const std::string line = line_of(ifc, m[1].str());
   EXPECT_NE(line.find("'SweptSolid',(#"), std::string::npos);
-  EXPECT_EQ(std::count(line.begin(), line.end(), '#'), 4) << line;  // itself, context, 2 solids
+  EXPECT_EQ(std::count(line.begin(), line.end(), '#'), 3) << line;  // itself, context, 1 solid
+  ASSERT_TRUE(std::regex_search(line, m, std::regex("'SweptSolid',\\(#(\\d+)\\)")));
+  const std::string solid = line_of(ifc, m[1].str());
+  ASSERT_TRUE(std::regex_search(solid, m, std::regex("IFCEXTRUDEDAREASOLID\\(#(\\d+),")));
+  EXPECT_NE(line_of(ifc, m[1].str()).find("IFCARBITRARYCLOSEDPROFILEDEF"), std::string::npos);
 }
 
 }  // namespace

@@ -55,6 +55,14 @@ void fill_run(double s, double e, int64_t course, double l, double j, double min
   }
 }
 
+// The header's reach along the face at an outer corner: the unit's depth, or at a corner
+// sharper than a right angle as far as its back's mitre, d tan(turn / 2), so that the special
+// cut to the angle closes behind its face.
+double header_reach(double turn, double d) {
+  constexpr double kPi = 3.14159265358979323846;
+  return turn > 90 ? d * std::tan(turn / 2 * kPi / 180) : d;
+}
+
 // How far the unit turning the corner at the end of façade k reaches back along it and on
 // along the next in course r: at an outer corner a stretcher and a header, changing sides
 // course by course (stack bond: every course alike); at an inner corner the unit running
@@ -62,7 +70,8 @@ void fill_run(double s, double e, int64_t course, double l, double j, double min
 std::pair<double, double> corner_unit(const SurfaceFrame& f, size_t k, int64_t r, double l,
                                       double d, bool stack) {
   const bool first = stack || ((r + static_cast<int64_t>(k)) % 2 == 0);
-  if (f.turn_at_end > 0) return first ? std::pair{l, d} : std::pair{d, l};
+  const double h = header_reach(f.turn_at_end, d);
+  if (f.turn_at_end > 0) return first ? std::pair{l, h} : std::pair{h, l};
   return first ? std::pair{l - d, 0.0} : std::pair{0.0, l - d};
 }
 
@@ -77,6 +86,16 @@ void check_corner_room(const Envelope& env, const LayoutSpec& spec) {
   };
   for (size_t k = 0; k < n; ++k) {
     const SurfaceFrame& f = env.facades[k];
+    if (turns(k) && f.turn_at_end > 0 && header_reach(f.turn_at_end, d) > l) {
+      SourceLocation where;
+      where.key = env.closed ? "plan" : "path";
+      throw InputError(
+          where, fmt::format("the corner at the end of façade {} is {:.1f}°, too sharp for a "
+                             "{:g} mm unit {:g} mm deep to turn: its back meets the next face's "
+                             "{:.0f} mm from the arris; corners of at least {:.1f}° can be laid",
+                             f.name, 180 - f.turn_at_end, l, d, header_reach(f.turn_at_end, d),
+                             180 - 2 * std::atan(l / d) * 180 / 3.14159265358979323846));
+    }
     const size_t before = (k + n - 1) % n;
     const bool from_corner = (env.closed || k > 0) && turns(before);
     for (int64_t r = 0; r < 2; ++r) {  // the two courses of the bond

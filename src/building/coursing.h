@@ -4,8 +4,9 @@
 // corner one face's unit runs through behind the other's), stopped ends of a free-standing wall
 // with a half unit on alternate courses, and each run between them filled with whole units from
 // its ends, the cut needed to fit put in its middle (one closer, or two where one would be a
-// sliver). A bend of less than 15 degrees (an arc meeting its tangent) is no corner: the run
-// goes on round it.
+// sliver). At an outer corner sharper than a right angle the header reaches as far as the
+// backs' mitre, a special cut to the angle. A bend of less than 15 degrees (an arc meeting its
+// tangent) is no corner: the run goes on round it.
 #pragma once
 
 #include <cstdint>
@@ -43,7 +44,8 @@ struct Coursing {
 Coursing course_envelope(const Envelope& env, const LayoutSpec& spec, bool stack);
 
 // Throws InputError (key `plan` or `path`) where a façade is too short for the units that turn
-// the corners at its ends, in either course of the bond.
+// the corners at its ends, in either course of the bond, or a corner is too sharp for a unit
+// to turn (its header would reach past the unit's length to the mitre).
 void check_corner_room(const Envelope& env, const LayoutSpec& spec);
 
 // What a corner is: "outer", "inner" or "bend" (no corner), by its turn in degrees.

@@ -179,16 +179,51 @@ def glb_nodes(path, upright):
 def glb_faces(path):
     """Per named node of a building's binary glTF: the outer face of each of its boxes, as
     (centre, along, half length, half height) in building millimetres (x east, y north, z up):
-    a unit box turned about the vertical, its local +z the outside."""
+    a unit box turned about the vertical, its local +z the outside; or, for a corner unit's
+    prism (a mesh moved by its node), each of its upright walls likewise."""
     import math
     data = open(path, "rb").read()
     length, _ = struct.unpack_from("<I4s", data, 12)
     doc = json.loads(data[20:20 + length])
     nodes = doc["nodes"]
+    binary = data[20 + length + 8:]
+
+    def read(accessor, width):
+        a = doc["accessors"][accessor]
+        view = doc["bufferViews"][a["bufferView"]]
+        at = view.get("byteOffset", 0) + a.get("byteOffset", 0)
+        form = {5126: "f", 5125: "I", 5123: "H"}[a["componentType"]]
+        size = {"SCALAR": 1, "VEC3": 3}[a["type"]]
+        flat = struct.unpack_from(f"<{a['count'] * size}{form}", binary, at)
+        return [flat[k:k + width] for k in range(0, len(flat), width)]
+
+    def prism_walls(n, out):
+        t = n["translation"]
+        for prim in doc["meshes"][n["mesh"]]["primitives"]:
+            pos = read(prim["attributes"]["POSITION"], 3)
+            tris = read(prim["indices"], 3)
+            for a, b, c in tris:
+                pts = [((pos[v][0] + t[0]) * 1000, -(pos[v][2] + t[2]) * 1000,
+                        (pos[v][1] + t[1]) * 1000) for v in (a, b, c)]
+                xs, ys, zs = zip(*pts)
+                if max(zs) - min(zs) < 1e-6:
+                    continue  # a cap
+                # An upright triangle: its wall's horizontal extent and height.
+                i, j = max(((i, j) for i in range(3) for j in range(3)),
+                           key=lambda ij: math.dist(pts[ij[0]][:2], pts[ij[1]][:2]))
+                span = math.dist(pts[i][:2], pts[j][:2])
+                if span < 1e-6:
+                    continue
+                along = ((pts[j][0] - pts[i][0]) / span, (pts[j][1] - pts[i][1]) / span)
+                centre = ((pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2,
+                          (max(zs) + min(zs)) / 2)
+                out.append((centre, along, span / 2, (max(zs) - min(zs)) / 2))
 
     def faces(index, out):
         n = nodes[index]
-        if "mesh" in n and "scale" in n:
+        if "mesh" in n and "scale" not in n and "translation" in n:
+            prism_walls(n, out)
+        elif "mesh" in n and "scale" in n:
             t, s, q = n["translation"], n["scale"], n.get("rotation", [0, 0, 0, 1])
             turn = 2 * math.atan2(q[1], q[3])
             along = (math.cos(turn), math.sin(turn))        # plan x east, y north

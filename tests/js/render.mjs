@@ -1,7 +1,8 @@
 // Opens each model the way a user would: three.js's GLTFLoader in headless Chromium, over a
 // server on the loopback address. Each must load, show a picture (not a blank canvas) and
 // keep its extent; a screenshot of each is written for a person to look at.
-// Usage: node render.mjs SCREENSHOT_DIR MODEL.glb ...
+// Usage: node render.mjs SCREENSHOT_DIR MODEL.glb ... (CURDLE_LOOK=x,y,z,dx,dy,dz for a close look
+// at a point, metres in glTF axes)
 import { createServer } from 'node:http';
 import { readFile, mkdir } from 'node:fs/promises';
 import path from 'node:path';
@@ -43,7 +44,8 @@ let failed = 0;
 try {
   const page = await browser.newPage({ viewport: { width: 800, height: 600 } });
   for (const [name, model] of byName) {
-    await page.goto(`http://127.0.0.1:${port}/?model=${name}`);
+    await page.goto(`http://127.0.0.1:${port}/?model=${name}` +
+                    (process.env.CURDLE_LOOK ? `&look=${process.env.CURDLE_LOOK}` : ''));
     await page.waitForFunction(() => window.result !== undefined, null, { timeout: 60000, polling: 50 });
     const result = await page.evaluate(() => window.result);
     const shot = path.join(shots, path.basename(path.dirname(model)) + '.png');
