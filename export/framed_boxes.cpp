@@ -37,6 +37,41 @@ std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& r, double 
 
 namespace {
 
+// How far short of an outer corner turning `turn` degrees a backing from `set_back` to `depth`
+// behind one face stops, for its end to lie `set_back` behind the other face.
+double backing_trim(double turn, double set_back, double depth) {
+  if (turn < 15) return 0;  // an inner corner or a bend: the other face is not in front of it
+  const double a = turn * 3.14159265358979323846 / 180;
+  return std::max(set_back - set_back * std::cos(a), set_back - depth * std::cos(a)) / std::sin(a);
+}
+
+}  // namespace
+
+std::vector<FramedBox> framed_backing(const Layout& layout, const Rect& r, double set_back,
+                                      double depth, double longest) {
+  std::vector<FramedBox> out;
+  const std::vector<SurfaceFrame>& frames = layout.frames;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const SurfaceFrame& f = frames[k];
+    const bool after_corner = layout.closed_envelope || k > 0;
+    const double from =
+        f.start + (after_corner
+                       ? backing_trim(frames[(k + frames.size() - 1) % frames.size()].turn_at_end,
+                                      set_back, depth)
+                       : 0);
+    const double to =
+        f.start + f.length - (f.last_of_path ? 0 : backing_trim(f.turn_at_end, set_back, depth));
+    const double lo = std::max(r.x, from), hi = std::min(r.right(), to);
+    if (hi <= lo + 1e-9) continue;
+    const std::vector<FramedBox> more =
+        framed_boxes(layout, Rect{lo, r.y, hi - lo, r.h}, set_back, depth, longest);
+    out.insert(out.end(), more.begin(), more.end());
+  }
+  return out;
+}
+
+namespace {
+
 // The extent of a piece's laid face on the strip, u from and to, and v's middle: a part that
 // lies before its nominal start is the closing corner unit's part at the strip's start,
 // measured round the seam.

@@ -21,6 +21,12 @@ struct FramedBox {
 std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& strip_rect, double inward0,
                                     double inward1, double longest = 1e300);
 
+// The backing behind the strip (the mortar the joints show), `set_back` mm behind the outer face
+// to `depth`: as framed_boxes, but each face's stopped short of an outer corner far enough that
+// its end lies `set_back` behind the other face as well, not flush with it.
+std::vector<FramedBox> framed_backing(const Layout& layout, const Rect& strip_rect, double set_back,
+                                      double depth, double longest);
+
 // Where a piece of the strip lies in the building: the middle of its laid outer face (a unit
 // that turns the closing corner measured round it; a unit on a curve, the middle of its chord),
 // mm.

@@ -427,7 +427,7 @@ void add_framed_pieces(Scene& sc) {
   const double kSetBack = 8;  // a recessed joint, mm
   int part = 0;
   for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, layout.holes()))
-    for (const FramedBox& f : framed_boxes(layout, r, kSetBack, t, 600)) {
+    for (const FramedBox& f : framed_backing(layout, r, kSetBack, t, 600)) {
       tinygltf::Node n = sc.framed_node(f, mortar);
       n.name = "mortar-" + std::to_string(part++);
       sc.roots.push_back(sc.b.add_node(std::move(n)));
@@ -440,8 +440,8 @@ void add_framed_pieces(Scene& sc) {
       continue;
     }
     std::vector<FramedBox> boxes;
-    for (const Rect& r : e.shape) {
-      const std::vector<FramedBox> more = framed_boxes(layout, r, 0, t);
+    for (const Rect& r : e.shape) {  // a header runs into the wall by its length
+      const std::vector<FramedBox> more = framed_boxes(layout, r, 0, e.depth > 0 ? e.depth : t);
       boxes.insert(boxes.end(), more.begin(), more.end());
     }
     if (boxes.size() == 1) {

@@ -61,7 +61,7 @@ size_t IfcEnvelopeWriter::facade_of(const Element& e) const {
 
 IfcEnvelopeWriter::Placed IfcEnvelopeWriter::unit(const Element& e, int64_t container,
                                                   const Rgb& colour) {
-  const double t = l_.thickness;
+  const double t = e.depth > 0 ? e.depth : l_.thickness;  // a header runs in by its length
   std::vector<FramedBox> boxes;
   for (const Rect& r : e.shape) {
     const std::vector<FramedBox> more = framed_boxes(l_, r, 0, t);

@@ -37,7 +37,7 @@ TEST(Coursing, EveryCourseGoesRoundTheBuildingWithOneJointBetweenUnits) {
   const LayoutSpec spec = test::bricks();
   const Envelope env = pavilion(spec);
   ASSERT_EQ(env.courses, 94);
-  const Coursing c = course_envelope(env, spec, false);
+  const Coursing c = course_envelope(env, spec, CourseBond::stretcher);
   const auto courses = by_course(c);
   ASSERT_EQ(courses.size(), 94u);
   for (const auto& [r, units] : courses) {
@@ -54,10 +54,118 @@ TEST(Coursing, EveryCourseGoesRoundTheBuildingWithOneJointBetweenUnits) {
   }
 }
 
+TEST(Coursing, EveryBondGoesRoundTheBuildingWithOneJointBetweenUnits) {
+  const LayoutSpec spec = test::bricks();
+  const Envelope env = pavilion(spec);
+  for (CourseBond bond : {CourseBond::stack, CourseBond::third, CourseBond::quarter,
+                          CourseBond::english, CourseBond::flemish}) {
+    const auto courses = by_course(course_envelope(env, spec, bond));
+    ASSERT_EQ(courses.size(), 94u);
+    for (const auto& [r, units] : courses) {
+      std::map<int, int> turned;
+      for (size_t k = 0; k < units.size(); ++k) {
+        const CourseUnit& a = units[k];
+        const double next = k + 1 < units.size() ? units[k + 1].from : units[0].from + env.length;
+        ASSERT_NEAR(next - a.to, 10, 1e-6) << int(bond) << " course " << r << " unit " << k;
+        // No piece under the narrowest cut but a queen closer, half a header.
+        EXPECT_GE(a.to - a.from, 46.25 - 1e-6) << int(bond) << " course " << r;
+        turned[a.corner] += a.role == UnitRole::corner;
+      }
+      for (int c = 0; c < 6; ++c) EXPECT_EQ(turned[c], 1) << int(bond) << " corner " << c;
+    }
+  }
+}
+
+// The pieces of course r wholly on façade k that are neither corner units nor closers.
+std::vector<CourseUnit> run_of(const std::vector<CourseUnit>& course, const SurfaceFrame& f) {
+  std::vector<CourseUnit> out;
+  for (const CourseUnit& u : course)
+    if (u.role != UnitRole::corner && u.role != UnitRole::closer && u.from >= f.start &&
+        u.to <= f.start + f.length)
+      out.push_back(u);
+  return out;
+}
+
+TEST(Coursing, EnglishBondLaysCoursesOfStretchersAndOfHeadersByTurnsLappingByAQuarter) {
+  const LayoutSpec spec = test::bricks();
+  const Envelope env = pavilion(spec);
+  const auto courses = by_course(course_envelope(env, spec, CourseBond::english));
+  for (const auto& [r, units] : courses)
+    for (size_t k = 0; k < 6; ++k) {
+      const SurfaceFrame& f = env.facades[k];
+      const bool headers = (r + static_cast<int64_t>(k)) % 2 == 1;
+      for (const CourseUnit& u : run_of(units, f)) {
+        ASSERT_EQ(u.role, headers ? UnitRole::header : UnitRole::stretcher) << r << " " << k;
+        EXPECT_NEAR(u.depth, headers ? 215 : 0, 1e-9);
+      }
+      if (!headers) continue;
+      // A queen closer beside the corner unit at the façade's end, outer or inner.
+      const double end = f.start + f.length;
+      for (size_t i = 0; i + 1 < units.size(); ++i)
+        if (units[i + 1].role == UnitRole::corner && units[i + 1].corner == int(k)) {
+          EXPECT_NEAR(units[i].to - units[i].from, 46.25, 1e-9) << r << " " << k;
+          // The quoin's header at an outer corner; at the inner one the other face's unit runs
+          // through.
+          EXPECT_NEAR(end - units[i + 1].from, f.turn_at_end > 0 ? 102.5 : 0, 1e-9);
+        }
+    }
+  // Over the south face's first 2 m, every joint of a stretcher course lies under the middle
+  // of a header of the course above: the quarter lap.
+  for (int64_t r = 0; r + 1 < 94; r += 2) {
+    for (const CourseUnit& s : courses.at(r)) {
+      if (s.to > 2000 || s.from < 0) continue;
+      bool centred = false;
+      for (const CourseUnit& h : courses.at(r + 1))
+        centred |= h.role == UnitRole::header && std::fabs((h.from + h.to) / 2 - s.to - 5) < 1e-6;
+      EXPECT_TRUE(centred) << "course " << r << " joint at " << s.to + 5;
+    }
+  }
+}
+
+TEST(Coursing, FlemishBondAlternatesHeadersAndStretchersEachHeaderCentredOnAStretcher) {
+  const LayoutSpec spec = test::bricks();
+  const Envelope env = pavilion(spec);
+  const auto courses = by_course(course_envelope(env, spec, CourseBond::flemish));
+  for (const auto& [r, units] : courses) {
+    std::vector<CourseUnit> near;  // the south face's first 2 m, past the corner's pieces
+    for (const CourseUnit& u : run_of(units, env.facades[0]))
+      if (u.to < 2000) near.push_back(u);
+    ASSERT_GE(near.size(), 6u);
+    for (size_t i = 1; i < near.size(); ++i)
+      EXPECT_NE(near[i].role, near[i - 1].role) << "course " << r << " piece " << i;
+    if (r == 0) continue;
+    for (const CourseUnit& h : near) {
+      if (h.role != UnitRole::header) continue;
+      bool centred = false;
+      for (const CourseUnit& s : courses.at(r - 1))
+        centred |= s.role == UnitRole::stretcher &&
+                   std::fabs((s.from + s.to) / 2 - (h.from + h.to) / 2) < 1e-6;
+      EXPECT_TRUE(centred) << "course " << r << " header at " << h.from;
+    }
+  }
+}
+
+TEST(Coursing, ThirdAndQuarterBondMoveEachCourseAlongByTheirShare) {
+  const LayoutSpec spec = test::bricks();
+  const Envelope env = pavilion(spec);
+  for (const auto& [bond, share] :
+       {std::pair{CourseBond::third, 1.0 / 3}, std::pair{CourseBond::quarter, 0.25}}) {
+    size_t whole = 0;
+    for (const CourseUnit& u : course_envelope(env, spec, bond).units) {
+      if (u.role != UnitRole::stretcher) continue;
+      ++whole;
+      const double phase = std::fmod(static_cast<double>(u.course) * share, 1.0) * 225;
+      const double off = std::fmod(u.from - phase + 225 * 1000, 225);
+      EXPECT_TRUE(off < 1e-6 || off > 225 - 1e-6) << u.course << " at " << u.from;
+    }
+    EXPECT_GT(whole, 20000u);
+  }
+}
+
 TEST(Coursing, EachCornerIsTurnedByOneUnitACourseChangingSides) {
   const LayoutSpec spec = test::bricks();
   const Envelope env = pavilion(spec);
-  const Coursing c = course_envelope(env, spec, false);
+  const Coursing c = course_envelope(env, spec, CourseBond::stretcher);
   const auto courses = by_course(c);
   for (const auto& [r, units] : courses) {
     std::map<int, int> turned;
@@ -91,7 +199,7 @@ TEST(Coursing, EachCornerIsTurnedByOneUnitACourseChangingSides) {
 TEST(Coursing, RunsAreCutInTheirMiddleAndNeverBelowTheNarrowestCut) {
   const LayoutSpec spec = test::bricks();
   const Envelope env = pavilion(spec);
-  const Coursing c = course_envelope(env, spec, false);
+  const Coursing c = course_envelope(env, spec, CourseBond::stretcher);
   size_t closers = 0;
   for (const CourseUnit& u : c.units) {
     if (u.role != UnitRole::closer) continue;
@@ -110,7 +218,7 @@ TEST(Coursing, RunsAreCutInTheirMiddleAndNeverBelowTheNarrowestCut) {
 TEST(Coursing, StackBondTurnsEveryCornerAlike) {
   const LayoutSpec spec = test::bricks();
   const Envelope env = pavilion(spec);
-  const Coursing c = course_envelope(env, spec, true);
+  const Coursing c = course_envelope(env, spec, CourseBond::stack);
   for (const CourseUnit& u : c.units)
     if (u.role == UnitRole::corner && u.corner == 0) {
       EXPECT_NEAR(20000 - u.from, 215, 1e-9);
@@ -125,7 +233,7 @@ TEST(Coursing, AFreeStandingWallHasStoppedEndsWithHalfUnitsOnAlternateCourses) {
   keys.height = 750;
   const Envelope env = envelope_of(keys, spec);
   EXPECT_FALSE(env.closed);
-  const auto courses = by_course(course_envelope(env, spec, false));
+  const auto courses = by_course(course_envelope(env, spec, CourseBond::stretcher));
   ASSERT_EQ(courses.size(), 10u);
   for (const auto& [r, units] : courses) {
     EXPECT_NEAR(units.front().from, 0, 1e-9);
@@ -139,7 +247,7 @@ TEST(Coursing, AFreeStandingWallHasStoppedEndsWithHalfUnitsOnAlternateCourses) {
 
 TEST(Coursing, CornersAreDescribedForTheReport) {
   const LayoutSpec spec = test::bricks();
-  const Coursing c = course_envelope(pavilion(spec), spec, false);
+  const Coursing c = course_envelope(pavilion(spec), spec, CourseBond::stretcher);
   size_t outer = 0, inner = 0;
   for (const std::string& n : c.notes) {
     outer += n.find("an outer corner of 90.0°") != std::string::npos;

@@ -89,7 +89,7 @@ PY
   refused "start" generate "$b" --set 'layout.building.start=6'
   refused "facade = its" generate "$b" --set 'layout.building.openings=[{facade=-1, rect=[0, 0, 900, 900]}]'
   refused "at least the window's width" generate "$b" --set 'layout.building.windows.every=100'
-  refused "stretcher bond" generate "$b" --set 'layout.bond="third"'
+  refused "\"english\" or \"flemish\"" generate "$b" --set 'layout.bond="dutch"'
   refused "layout.building.start instead" generate "$b" --set 'layout.origin="top-right"'
   refused "not whole courses" generate "$b" --set 'layout.joint=11'
   refused "base level" generate "$b" --set 'layout.building.base="low"'

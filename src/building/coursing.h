@@ -18,11 +18,17 @@
 namespace curdle {
 
 enum class UnitRole {
-  stretcher,  // a whole unit of a run
-  closer,     // cut to fit the run
+  stretcher,  // a whole unit of a run, its length on the face
+  header,     // a whole unit of a run showing its end, its length into the wall
+  closer,     // cut to fit the run, or a queen closer beside a header at a corner
   corner,     // turns a corner: counted once, on both façades
   end,        // a stopped end's half unit
 };
+
+// The bonds a building's courses are laid in: every course alike (stack); moved along by a half
+// (stretcher), a third or a quarter of a unit from the course below; English (courses of
+// stretchers and of headers by turns); Flemish (a header and a stretcher by turns in each course).
+enum class CourseBond { stack, stretcher, third, quarter, english, flemish };
 
 // One unit on the strip: its course and extent along the strip, mm. The unit at the closing
 // corner of a building runs past the strip's end (`to` > the strip's length) and on from its
@@ -31,7 +37,8 @@ struct CourseUnit {
   int64_t course = 0;
   double from = 0, to = 0;
   UnitRole role = UnitRole::stretcher;
-  int corner = -1;  // the corner it turns: the end of facades[corner]
+  int corner = -1;   // the corner it turns: the end of facades[corner]
+  double depth = 0;  // into the wall, mm: a header's or queen closer's unit length; 0: the wall's
 };
 
 struct Coursing {
@@ -39,9 +46,9 @@ struct Coursing {
   std::vector<std::string> notes;  // how each corner is built, and what had to be cut
 };
 
-// Units of `length` (the spec's module_w) and `depth`, with the spec's joint; `stack` lays every
-// course alike (stack bond) instead of lapping by half.
-Coursing course_envelope(const Envelope& env, const LayoutSpec& spec, bool stack);
+// Units of `length` (the spec's module_w) and `depth` (a header's width on the face), with the
+// spec's joint, in `bond`.
+Coursing course_envelope(const Envelope& env, const LayoutSpec& spec, CourseBond bond);
 
 // Throws InputError (key `plan` or `path`) where a façade is too short for the units that turn
 // the corners at its ends, in either course of the bond, or a corner is too sharp for a unit

@@ -46,6 +46,7 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
     e.nominal = Rect{u.from, y, u.to - u.from, spec.module_h};
     e.stock_w = spec.module_w, e.stock_h = spec.module_h;
     e.corner = u.corner;
+    e.depth = u.depth;
     std::vector<Rect> parts{Rect{u.from, y, std::min(u.to, env.length) - u.from, spec.module_h}};
     if (u.to > env.length + kEps) parts.push_back(Rect{0, y, u.to - env.length, spec.module_h});
     for (const Rect& p : parts)

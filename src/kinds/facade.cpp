@@ -48,11 +48,16 @@ void FacadeKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
     r.fail("origin",
            "a building's strip starts at its start corner, bottom left: give "
            "layout.building.start instead");
-  if (spec.bond != 0 && spec.bond != 0.5)
-    r.fail("bond",
-           "a building's courses are laid in stretcher bond (\"half\", the default) or "
-           "\"stack\"");
-  keys.stack = r.get("bond") && spec.bond == 0;
+  if (!r.get("bond"))
+    keys.bond = CourseBond::stretcher;
+  else if (!spec.header_bond.empty())
+    keys.bond = spec.header_bond == "english" ? CourseBond::english : CourseBond::flemish;
+  else if (spec.bond == 0)
+    keys.bond = CourseBond::stack;
+  else
+    keys.bond = spec.bond == 0.5  ? CourseBond::stretcher
+                : spec.bond < 0.3 ? CourseBond::quarter
+                                  : CourseBond::third;
   // The storeys mark the coursed sheets' levels and the model's building storeys.
   if (spec.drawing.storey == 0) spec.drawing.storey = keys.building->storey;
 }
@@ -64,7 +69,7 @@ Layout FacadeKind::build(const Design& design, const CurdField& field, const Box
   const Envelope& env = *keys.envelope;
   // The grid lays the strip's surface, openings and settings; its units are then replaced.
   Layout layout = lay_grid(design, field, view, spec, env.openings);
-  lay_envelope(layout, env, course_envelope(env, spec, keys.stack), values_in(field, view), spec);
+  lay_envelope(layout, env, course_envelope(env, spec, keys.bond), values_in(field, view), spec);
   report_open_area(layout, layout.openings_given);
   count_values(layout, design, spec);
   const std::vector<std::string> grid = corner_grid_notes(layout, design);

@@ -1,4 +1,5 @@
-// Façades: a wall of panels or bricks in stack or stretcher bond, standing upright, with its
+// Façades: a wall of panels or bricks in stack or stretcher bond (a building also in English or
+// Flemish), standing upright, with its
 // windows and doors given as rectangles or as the dark pixels of a mask image.
 #pragma once
 
@@ -6,6 +7,7 @@
 #include <vector>
 
 #include "building/building.h"
+#include "building/coursing.h"
 #include "kinds/surface_kind.h"
 
 namespace curdle {
@@ -14,10 +16,10 @@ struct FacadeKeys : KindKeysOf<FacadeKeys> {
   std::vector<Rect> openings;  // windows and doors, mm from the wall's origin
   std::string mask;            // image whose dark pixels are openings (read by the application)
   // [layout.building]: the wall is the building's envelope unrolled (building/), laid in
-  // courses round its corners; stretcher bond unless layout.bond = "stack".
+  // courses round its corners in layout.bond (stretcher bond unless given).
   std::optional<BuildingKeys> building;
   std::optional<Envelope> envelope;
-  bool stack = false;
+  CourseBond bond = CourseBond::stretcher;
 };
 
 class FacadeKind : public SurfaceKind {

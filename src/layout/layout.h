@@ -223,6 +223,9 @@ struct LayoutSpec {
   // course below, counted from the origin corner: 0 stack, 1/2 stretcher or running bond, 1/3,
   // 1/4. Every element still stands for one cell; courses are cut at the ends.
   double bond = 0;
+  // "english" or "flemish": bonds of headers and stretchers, laid round a building only
+  // (src/building/coursing.h); empty otherwise.
+  std::string header_bond;
   LayingPattern pattern = LayingPattern::grid;  // layout.pattern
   // layout.origin = "centre": the grid centred on the surface so that the cut pieces at
   // opposite edges are equal (the shift is worked out from the size); laying still starts at
@@ -275,8 +278,9 @@ struct Element {
   int sheet = -1;                   // perforation: the fabrication sheet it is cut in
   Rgb colour;                       // park: the element's own colour
   bool stands = false;              // park: an object standing on the ground (tree, bench)
-  double turn = 0;  // a pattern's unit: its long side (a hexagon: a flat's normal) from x, °
-  int corner = -1;  // a building's unit that turns the corner at the end of frames[corner]
+  double turn = 0;   // a pattern's unit: its long side (a hexagon: a flat's normal) from x, °
+  int corner = -1;   // a building's unit that turns the corner at the end of frames[corner]
+  double depth = 0;  // a building's unit: into the wall (a header's length), mm; 0: the wall's
   double area() const;
 };
 

@@ -151,11 +151,18 @@ void read_bond(TableReader& r, LayoutSpec& spec) {
     spec.bond = 1.0 / 3;
   else if (bond == "quarter")
     spec.bond = 0.25;
+  else if ((bond == "english" || bond == "flemish") && r.get("building"))
+    spec.header_bond = bond, spec.bond = 0.5;
+  else if (bond == "english" || bond == "flemish")
+    r.fail("bond", fmt::format("\"{}\" bond lays headers through the wall, round a building "
+                               "([layout.building]) only; a flat surface takes \"stack\", "
+                               "\"half\", \"third\" or \"quarter\"",
+                               bond));
   else
     r.fail("bond",
            "must be \"stack\" (joints in line), \"half\" (stretcher or running bond), "
            "\"third\" or \"quarter\": the share of an element each course moves along from the "
-           "one below");
+           "one below; round a building also \"english\" or \"flemish\"");
   if (spec.bond > 0 && spec.combine == Combine::keep)
     r.fail("bond", "needs combine = \"mix\": kept curds are drawn as stripes of a stacked grid");
 }
