@@ -215,15 +215,15 @@ class IfcModel {
                         ref(building_place)));
     add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("site-building"), ref(site),
                     ref(building)));
-    // A building of storeys (layout.drawing.storey floor to floor): what it holds stands in
-    // the lowest, its walls running up through the others.
+    // A building of storeys (layout.drawing's floor to floor): what it holds stands in the
+    // lowest, its walls running up through the others.
     std::vector<int64_t> storeys;
-    const double step = l_.drawing.storey;
-    const int levels = !l_.frames.empty() && step > 0
-                           ? std::max(1, static_cast<int>(std::ceil(l_.height / step - 1e-9)))
-                           : 1;
-    for (int k = 0; k < levels; ++k) {
-      const double at = k * step;
+    std::vector<double> levels{0};
+    if (!l_.frames.empty())
+      levels = storey_levels(l_.drawing.storey, l_.drawing.storeys, l_.height);
+    while (levels.size() > 1 && levels.back() >= l_.height - 1e-9) levels.pop_back();  // the top
+    for (size_t k = 0; k < levels.size(); ++k) {
+      const double at = levels[k];
       const int64_t place =
           add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(building_place),
                           ref(k ? g_.axes({0, 0, at}, {0, 0, 1}, {1, 0, 0}) : world_)));

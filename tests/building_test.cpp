@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "building_support.h"
 #include "curdle/error.h"
 #include "kinds/registry.h"
@@ -59,6 +61,19 @@ TEST(Building, ARuleSetsWindowsOnEveryFacadeAndStoreyClearOfTheCorners) {
     EXPECT_GE(env.openings[i].x - f.start, 900 - 1e-9);
     EXPECT_LE(env.openings[i].right() - f.start, f.length - 900 + 1e-9);
   }
+}
+
+TEST(Building, StoreysOfDifferentHeightsSetEachStoreysWindowsFromItsOwnFloor) {
+  BuildingKeys keys = pavilion();
+  keys.storeys = {4200, 2850};  // a tall ground floor
+  keys.windows = WindowRule{{1200, 1500}, 3000, 900, 900};
+  const Envelope env = envelope_of(keys, test::bricks());
+  std::set<double> sills;
+  for (const Rect& o : env.openings) sills.insert(o.y);
+  EXPECT_EQ(sills, (std::set<double>{900, 5100}));
+  EXPECT_EQ(storey_levels(0, keys.storeys, 7050), (std::vector<double>{0, 4200, 7050}));
+  EXPECT_EQ(storey_levels(3525, {}, 7050), (std::vector<double>{0, 3525, 7050}));
+  EXPECT_EQ(storey_levels(0, {}, 7050), (std::vector<double>{0}));
 }
 
 TEST(Building, BadBuildingsAreRefusedSayingWhatIsAllowed) {

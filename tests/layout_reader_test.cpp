@@ -328,3 +328,36 @@ openings = ["A-GLAZ", "A-DOOR"]
 }
 
 }  // namespace curdle
+
+namespace curdle {
+
+// Storeys of different heights and a bond of headers: read into the building and its drawings;
+// both ways of giving storeys at once, storeys taller than the wall and English bond on a flat
+// wall refused.
+TEST(Recipe, ABuildingsStoreysAndBond) {
+  const std::string bricks =
+      with_layout("kind = \"facade\"\npanel = [215, 65]\njoint = 10\nbond = \"english\"\n");
+  const std::string building = R"([layout.building]
+plan = [[0, 0], [9000, 0], [9000, 6000], [0, 6000]]
+height = 7050
+)";
+  const Recipe r = parse_recipe(bricks + building + "storeys = [4200, 2850]\n", "r.toml");
+  EXPECT_EQ(r.layout->own<FacadeKeys>().building->storeys, (std::vector<double>{4200, 2850}));
+  EXPECT_EQ(r.layout->drawing.storeys, (std::vector<double>{4200, 2850}));
+  EXPECT_EQ(r.layout->own<FacadeKeys>().bond, CourseBond::english);
+  EXPECT_NE(site_error(bricks + building + "storey = 3000\nstoreys = [4200]\n", nullptr)
+                .find("cannot be given with `storey`"),
+            std::string::npos);
+  EXPECT_NE(site_error(bricks + building + "storeys = [4200, 4200]\n", nullptr)
+                .find("add up to 8400 mm, more than the wall's height (7050 mm)"),
+            std::string::npos);
+  EXPECT_NE(site_error(bricks + building + "storeys = [200]\n", nullptr).find("at least 1000"),
+            std::string::npos);
+  EXPECT_NE(site_error(with_layout("kind = \"facade\"\npanel = [215, 65]\nwall = [2000, 975]\n"
+                                   "bond = \"flemish\"\n"),
+                       nullptr)
+                .find("round a building ([layout.building]) only"),
+            std::string::npos);
+}
+
+}  // namespace curdle

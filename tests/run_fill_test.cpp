@@ -34,7 +34,9 @@ void expect_covers(std::vector<CourseUnit> units, double s, double e, double nar
   for (size_t k = 0; k < units.size(); ++k) {
     EXPECT_GE(units[k].to - units[k].from, narrowest - 1e-9) << "piece " << k;
     EXPECT_LE(units[k].to - units[k].from, kL + 1e-9) << "piece " << k;
-    if (k > 0) EXPECT_NEAR(units[k].from - units[k - 1].to, kJ, 1e-9) << "piece " << k;
+    if (k > 0) {
+      EXPECT_NEAR(units[k].from - units[k - 1].to, kJ, 1e-9) << "piece " << k;
+    }
   }
 }
 

@@ -37,18 +37,19 @@ double on_course(double y, double pitch) { return std::round(y / pitch) * pitch;
 
 // The openings a window rule places: each façade long enough, each storey.
 std::vector<BuildingOpening> ruled_windows(const WindowRule& rule,
-                                           const std::vector<SurfaceFrame>& facades, double height,
-                                           double storey) {
+                                           const std::vector<SurfaceFrame>& facades,
+                                           const BuildingKeys& keys) {
   std::vector<BuildingOpening> out;
-  const double floor_to_floor = storey > 0 ? storey : height;
+  const double height = keys.height;
+  const std::vector<double> levels = storey_levels(keys.storey, keys.storeys, height);
   for (const SurfaceFrame& f : facades) {
     const double room = f.length - 2 * rule.clear;
     if (room < rule.size[0]) continue;
     const int64_t n = static_cast<int64_t>(std::floor((room - rule.size[0]) / rule.every)) + 1;
     const double margin = (f.length - static_cast<double>(n - 1) * rule.every - rule.size[0]) / 2;
     const double top = f.height > 0 ? f.height : height;
-    for (double level = 0; level + rule.sill + rule.size[1] <= top + kEps;
-         level += floor_to_floor) {
+    for (const double level : levels) {
+      if (level + rule.sill + rule.size[1] > top + kEps) break;
       if (out.size() + static_cast<size_t>(n) > kMostOpenings)
         refuse("windows", fmt::format("would set more than {} windows: fewer, larger or further "
                                       "apart",
@@ -146,7 +147,7 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
     if (f.bulge != 0) env.notes.push_back(joint_taper(f, spec, env.depth, keys.plan.empty()));
   std::vector<BuildingOpening> given = keys.openings;
   if (keys.windows) {
-    const auto ruled = ruled_windows(*keys.windows, env.facades, keys.height, keys.storey);
+    const auto ruled = ruled_windows(*keys.windows, env.facades, keys);
     given.insert(given.end(), ruled.begin(), ruled.end());
   }
   size_t moved = 0;

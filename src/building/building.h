@@ -37,6 +37,7 @@ struct BuildingKeys {
   double height = 0;            // mm, whole courses: the tallest façade's
   std::vector<double> heights;  // per plan edge where they differ, each at most `height`
   double storey = 0;            // floor to floor, mm; 0: one storey the wall's height
+  std::vector<double> storeys;  // each storey's floor to floor from the base, where they differ
   double base = 0;              // the datum's level, mm
   double depth = 0;  // the unit's depth into the wall, mm; 0: half a unit less half a joint
   bool coursed_openings = true;  // sills and heads moved onto course lines

@@ -59,7 +59,10 @@ void FacadeKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
                 : spec.bond < 0.3 ? CourseBond::quarter
                                   : CourseBond::third;
   // The storeys mark the coursed sheets' levels and the model's building storeys.
-  if (spec.drawing.storey == 0) spec.drawing.storey = keys.building->storey;
+  if (spec.drawing.storey == 0 && spec.drawing.storeys.empty()) {
+    spec.drawing.storey = keys.building->storey;
+    spec.drawing.storeys = keys.building->storeys;
+  }
 }
 
 Layout FacadeKind::build(const Design& design, const CurdField& field, const Box& view,

@@ -23,13 +23,13 @@ std::vector<GaugeMark> gauge_marks(const Layout& layout, const LayingExtents& ex
   for (const auto& [row, extent] : extents.rows)
     if (within(extent.first, lo, hi)) marks.push_back({extent.first, mm_label(extent.first)});
   if (within(layout.height, lo, hi)) marks.push_back({layout.height, mm_label(layout.height)});
-  const double storey = layout.drawing.storey;
-  if (storey > 0)
-    for (int64_t k = 0; static_cast<double>(k) * storey <= layout.height + kEps; ++k) {
-      const double at = static_cast<double>(k) * storey;
-      if (within(at, lo, hi))
-        marks.push_back({at, fmt::format("level {} {}{}", k, k ? "+" : "±", mm_label(at)), true});
-    }
+  const auto& d = layout.drawing;
+  const std::vector<double> levels = storey_levels(d.storey, d.storeys, layout.height);
+  for (size_t k = 0; levels.size() > 1 && k < levels.size(); ++k) {
+    const double at = levels[k];
+    if (within(at, lo, hi))
+      marks.push_back({at, fmt::format("level {} {}{}", k, k ? "+" : "±", mm_label(at)), true});
+  }
   std::stable_sort(marks.begin(), marks.end(), [](const GaugeMark& a, const GaugeMark& b) {
     return a.at != b.at ? a.at < b.at : a.level > b.level;
   });

@@ -130,8 +130,21 @@ struct DrawingKeys {
   double installer_scale = 0;    // 1 : installer_scale; 0 picks one
   std::string installer_paper;   // empty: `paper`
   InstallerSet installer_set = InstallerSet::automatic;
-  double storey = 0;  // floor to floor, mm: level marks on the coursed sheets; 0: none
+  double storey = 0;            // floor to floor, mm: level marks on the coursed sheets; 0: none
+  std::vector<double> storeys;  // each storey's floor to floor from the base, where they differ
 };
+
+// The storeys' levels from the base up to `height`, mm: 0, then each floor to floor of
+// `storeys` in turn where given, else every `storey`; {0} for neither.
+inline std::vector<double> storey_levels(double storey, const std::vector<double>& storeys,
+                                         double height) {
+  std::vector<double> out{0};
+  for (size_t k = 0; k < storeys.size() && out.back() + storeys[k] <= height + 1e-6; ++k)
+    out.push_back(out.back() + storeys[k]);
+  if (storeys.empty() && storey > 0)
+    while (out.back() + storey <= height + 1e-6) out.push_back(out.back() + storey);
+  return out;
+}
 
 // Ordering: spare share added to each quantity, elements per pack, and lots in laying order
 // (a number of elements, e.g. a pallet, or a number of rows, e.g. a floor; 0: one lot).

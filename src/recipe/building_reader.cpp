@@ -72,12 +72,35 @@ WindowRule read_windows(TableReader& w) {
 
 }  // namespace
 
+// storeys: each storey's floor to floor from the base where they differ (a taller ground
+// floor), instead of one `storey`.
+void read_storeys(TableReader& r, BuildingKeys& b) {
+  const toml::node* n = r.get("storeys");
+  if (!n) return;
+  if (b.storey > 0) r.fail("storeys", "cannot be given with `storey`: give one or the other");
+  const toml::array* a = n->as_array();
+  const std::string allowed =
+      "must be each storey's floor-to-floor height from the base, in mm, each at least 1000, "
+      "together at most the wall's height";
+  if (!a || a->empty() || a->size() > 1000) r.fail("storeys", allowed);
+  double sum = 0;
+  for (const toml::node& item : *a) {
+    const auto h = finite_number(&item);
+    if (!h || *h < 1000 || *h > 1e6) r.fail("storeys", allowed);
+    b.storeys.push_back(*h);
+    sum += *h;
+  }
+  if (sum > b.height + 1e-6)
+    r.fail("storeys",
+           fmt::format("add up to {:g} mm, more than the wall's height ({:g} mm)", sum, b.height));
+}
+
 BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
   const toml::table* t = read_table(layout, "building");
   if (!t)
     layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
   TableReader r(*t, layout.key_path("building"), layout.source(),
-                {"plan", "path", "site", "height", "storey", "base", "depth", "start",
+                {"plan", "path", "site", "height", "storey", "storeys", "base", "depth", "start",
                  "coursed_openings", "openings", "windows", "elevations", "heights"});
   BuildingKeys b;
   const bool drawn = r.get("site");
@@ -120,6 +143,7 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
     r.fail("storey",
            "must be a storey's floor-to-floor height, at least 1000 mm (or 0: one "
            "storey the wall's height)");
+  read_storeys(r, b);
   if (const toml::node* n = r.get("base")) {
     const auto base = finite_number(n);
     if (!base || std::fabs(*base) > 1e7)
