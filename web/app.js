@@ -217,6 +217,11 @@ function readRecipeIntoState(r) {
   state.segment = r.default_window && r.lattice.dimension === 2 ? r.default_window.slice() : null;
   const floor = r.layout && r.layout.segment_cells;
   $("fix-floor-label").hidden = !floor;
+  // A building's floor is its envelope unrolled: the strip.
+  const building = Boolean(r.layout && r.layout.building);
+  $("fix-floor-label").lastChild.textContent = building ? " the strip" : " the floor";
+  // Its plan is read by [layout.building.site] in the recipe, not laid as a floor's site.
+  $("site-box").hidden = building;
   setFix(floor ? "floor" : "free");
 }
 

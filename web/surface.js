@@ -50,11 +50,36 @@ function svgPolygon(points, segment, h, cls) {
   return el;
 }
 
+// A building's façades on its unrolled strip: a dashed line at each corner and each face's
+// name along the top, so that a segment is chosen knowing where the corners fall.
+function drawFacades(overlay, building, segment, h) {
+  for (const f of building.facades) {
+    const [u0] = mmToCell([f.start_mm, 0], segment);
+    const [u1] = mmToCell([f.start_mm + f.length_mm, 0], segment);
+    if (f.corner !== 'end' && f.corner !== 'bend') {
+      const line = document.createElementNS(svgNS, 'line');
+      line.setAttribute('x1', u1), line.setAttribute('x2', u1);
+      line.setAttribute('y1', 0), line.setAttribute('y2', h);
+      line.setAttribute('class', `corner ${f.corner}`);
+      overlay.append(line);
+    }
+    const name = document.createElementNS(svgNS, 'text');
+    name.setAttribute('x', (u0 + u1) / 2);
+    name.setAttribute('y', 0);
+    name.setAttribute('class', 'facade-name');
+    name.setAttribute('font-size', (h / 9).toFixed(2));  // in cells, as the strip is drawn
+    name.textContent = f.name;
+    overlay.append(name);
+  }
+}
+
 // Redraws the outline, the zones and the zone being drawn over the canvas.
 function drawSurface() {
   const overlay = $('surface-overlay');
   overlay.textContent = '';
-  $('zone-box').hidden = !surface();
+  const building = surface() && surface().building;
+  // A building's strip takes no zones: its openings come from the recipe.
+  $('zone-box').hidden = !surface() || Boolean(building);
   const segment = floorSegment();
   if (!segment) {
     overlay.setAttribute('hidden', '');
@@ -65,6 +90,7 @@ function drawSurface() {
   overlay.setAttribute('viewBox', `0 0 ${w} ${h}`);
   const s = surface().surface;
   overlay.append(svgPolygon(s.outline_mm, segment, h, 'outline'));
+  if (building) drawFacades(overlay, building, segment, h);
   for (const z of s.zones) {
     const el = svgPolygon(z.polygon, segment, h, `zone ${z.rule}`);
     const title = document.createElementNS(svgNS, 'title');

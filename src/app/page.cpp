@@ -1,6 +1,7 @@
 #include "app/page.h"
 
 #include "app/outputs.h"
+#include "building/coursing.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
 #include "curdle/markov.h"
@@ -10,6 +11,7 @@
 #include "curdle/report.h"
 #include "export/measure_files.h"
 #include "export/report_json.h"
+#include "kinds/facade.h"
 #include "layout/builder.h"
 #include "layout/cell_placement.h"
 #include "layout/legend.h"
@@ -72,6 +74,21 @@ ordered_json surface_json(const LayoutSpec& spec) {
                         ? Polygon{{0, 0}, {extent[0], 0}, {extent[0], extent[1]}, {0, extent[1]}}
                         : spec.outline)},
       {"zones", zones}};
+}
+
+// A building's façades on its unrolled strip, for the page to mark its corners and name its
+// faces over the curd; null for any other layout.
+ordered_json building_json(const LayoutSpec& spec) {
+  if (spec.kind->name() != "facade") return nullptr;
+  const auto& envelope = spec.own<FacadeKeys>().envelope;
+  if (!envelope) return nullptr;
+  ordered_json facades = ordered_json::array();
+  for (const SurfaceFrame& f : envelope->facades)
+    facades.push_back({{"name", f.name},
+                       {"start_mm", f.start},
+                       {"length_mm", f.length},
+                       {"corner", f.last_of_path ? "end" : corner_kind(f.turn_at_end)}});
+  return {{"closed", envelope->closed}, {"facades", facades}};
 }
 
 }  // namespace
@@ -151,6 +168,7 @@ ordered_json describe_run(const Run& s) {
       j["layout"]["size_mm"] = {(*spec.size)[0], (*spec.size)[1]};
       j["layout"]["segment_cells"] = {need[0], need[1]};
       if (spec.kind->dimension() == 2) j["layout"]["surface"] = surface_json(spec);
+      if (const ordered_json b = building_json(spec); !b.is_null()) j["layout"]["building"] = b;
     }
   } else {
     const auto colours = value_colours(d.curds);

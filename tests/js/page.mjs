@@ -429,6 +429,40 @@ try {
   } finally {
     tones.server.kill('SIGINT');
   }
+  // A whole building: its façades named and its corners dashed on the unrolled strip, no floor
+  // zones or site drop, a segment of a larger curd placed along the strip, the building in 3-D.
+  const kiosk = await serve([path.join(source, 'patterns/kiosk-from-dxf.toml')]);
+  try {
+    await page.goto(kiosk.url);
+    await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+    await page.waitForFunction(() => document.querySelectorAll('#surface-overlay line.corner').length === 4);
+    const names = await page.locator('#surface-overlay text.facade-name').allTextContents();
+    check(names.join() === 'S,E,N,W', `the kiosk's four façades are named on the strip (${names.join()}), its corners dashed`);
+    check(await page.locator('#zone-box').isHidden() && await page.locator('#site-box').isHidden(),
+          'a building offers no floor zones and no site drop: its plan and openings are the recipe\'s');
+    check((await page.textContent('#fix-floor-label')).trim() === 'the strip', 'the segment is fixed to the strip');
+    const cornerAt = () => page.evaluate(() => Number(document.querySelector('#surface-overlay line.corner').getAttribute('x1')));
+    const before = await cornerAt();
+    await page.fill('#field-w', '245');
+    await page.dispatchEvent('#field-w', 'change');
+    await page.waitForFunction(() => document.querySelector('#status').textContent.includes('9,800 cells'));
+    await page.fill('#window-text', '64,0,117,40');
+    await page.dispatchEvent('#window-text', 'change');
+    await page.waitForFunction(() => / 64,0,117,40 /.test(' ' + document.querySelector('#segment-text').textContent.split(' ')[1] + ' '));
+    await page.waitForFunction(() => document.querySelector('#command').textContent.includes('--window 64,0,117,40'));
+    const after = await cornerAt();
+    check(Math.abs(after - before - 64) < 1e-6 && await page.locator('#error').isHidden(),
+          `a strip segment placed along a larger curd (64,0,117,40) moves the corners with it (${before} to ${after})`);
+    await page.waitForFunction(() => window.view3d && window.view3d.loads > 0 &&
+                               window.view3d.src.includes(encodeURIComponent('64,0,117,40')) &&
+                               !document.querySelector('#view3d').classList.contains('stale'), null, { timeout: 60000 });
+    await page.evaluate(() => document.querySelector('#view3d').scrollIntoView({ block: 'center' }));
+    const target = await page.evaluate(() => window.view3d.pointOnElement());
+    check(target && /^F-R\d+-C\d+$/.test(target.id), `the building stands in the 3-D view, a brick found by its ID (${target && target.id})`);
+    await page.locator('#canvas-wrap').screenshot({ path: path.join(shots, '9-building-strip.png') });
+  } finally {
+    kiosk.server.kill('SIGINT');
+  }
   check(pageErrors.length === 0, `no script errors on the page ${pageErrors.join('; ')}`);
 } finally {
   await browser.close();
