@@ -4,6 +4,22 @@
 #include <cmath>
 
 namespace curdle {
+namespace {
+// How far a bent unit's facets may lie inside its arc, mm: well within a panel's tolerance.
+constexpr double kBentRise = 0.25;
+
+// The chords a span of `length` mm of frame f is laid on: one on a straight frame; on an arc,
+// chords of at most `longest`, and where units are bent to it, facets rising at most kBentRise.
+int facets(const SurfaceFrame& f, double length, double longest) {
+  if (f.bulge == 0) return 1;
+  int pieces = std::max(1, static_cast<int>(std::ceil(length / longest)));
+  if (f.bent) {
+    const double facet = 2 * std::sqrt(2 * frame_radius(f) * kBentRise);
+    pieces = std::max(pieces, static_cast<int>(std::ceil(length / facet)));
+  }
+  return pieces;
+}
+}  // namespace
 
 std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& r, double inward0,
                                     double inward1, double longest) {
@@ -11,8 +27,7 @@ std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& r, double 
   const double depth = inward1 - inward0;
   for (const FramedSpan& s : framed_spans(layout.frames, layout.width, r.x, r.right())) {
     const SurfaceFrame& f = *s.frame;
-    const int pieces =
-        f.bulge == 0 ? 1 : std::max(1, static_cast<int>(std::ceil((s.to - s.from) / longest)));
+    const int pieces = facets(f, s.to - s.from, longest);
     for (int k = 0; k < pieces; ++k) {
       const double a = s.from + (s.to - s.from) * k / pieces;
       const double b = s.from + (s.to - s.from) * (k + 1) / pieces;
@@ -98,9 +113,13 @@ BuildingPoint framed_centre(const Layout& layout, const Element& e) {
   // a curve lies inside the arc.
   for (const FramedSpan& s : framed_spans(layout.frames, layout.width, f.from, f.to)) {
     if (middle < s.from - 1e-9 || middle > s.to + 1e-9) continue;
-    const BuildingPoint a = frame_point(*s.frame, s.from, f.v, 0);
-    const BuildingPoint b = frame_point(*s.frame, s.to, f.v, 0);
-    const double t = (middle - s.from) / (s.to - s.from);
+    // On the chord (or, bent, the facet) that holds it, as the writers lay it.
+    const int n = facets(*s.frame, s.to - s.from, 1e300);
+    const int k = std::clamp(static_cast<int>((middle - s.from) / (s.to - s.from) * n), 0, n - 1);
+    const double lo = s.from + (s.to - s.from) * k / n, hi = s.from + (s.to - s.from) * (k + 1) / n;
+    const BuildingPoint a = frame_point(*s.frame, lo, f.v, 0);
+    const BuildingPoint b = frame_point(*s.frame, hi, f.v, 0);
+    const double t = (middle - lo) / (hi - lo);
     return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2]};
   }
   return frame_point(*frame_at(layout.frames, middle), middle, f.v, 0);

@@ -1,6 +1,7 @@
 // Pieces of a building's strip placed in 3-D through its frames (layout/surface_frame.h): a
 // rectangle of the strip, `inward0` to `inward1` mm behind the outer face, as boxes in the
-// building (one per frame it lies on; along an arc, one per chord of at most `longest` mm).
+// building (one per frame it lies on; along an arc, one per chord of at most `longest` mm, and
+// where its units are bent to the arc, facets within 0.25 mm of it).
 // The 3-D writers place a unit box by each (a corner unit laid whole as one prism instead,
 // framed_corner.h); they learn nothing of buildings.
 #pragma once
@@ -28,8 +29,8 @@ std::vector<FramedBox> framed_backing(const Layout& layout, const Rect& strip_re
                                       double depth, double longest);
 
 // Where a piece of the strip lies in the building: the middle of its laid outer face (a unit
-// that turns the closing corner measured round it; a unit on a curve, the middle of its chord),
-// mm.
+// that turns the closing corner measured round it; a unit on a curve, on its chord, or on the
+// facet that holds it where it is bent to the arc), mm.
 BuildingPoint framed_centre(const Layout& layout, const Element& e);
 
 // The façade that holds the middle of a piece's laid outer face.

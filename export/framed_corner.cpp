@@ -66,6 +66,7 @@ std::optional<FramedPrism> framed_corner(const Layout& layout, const Element& e,
   if (std::fabs(e.area() - e.nominal.w * e.nominal.h) > kEps) return std::nullopt;  // cut
   const SurfaceFrame& f = frames[static_cast<size_t>(e.corner)];
   const SurfaceFrame& g = frames[(static_cast<size_t>(e.corner) + 1) % frames.size()];
+  if (f.bent || g.bent) return std::nullopt;  // a bent unit is laid in facets
   const double at = f.start + f.length;
   const double a = at - e.nominal.x, b = e.nominal.right() - at;  // reach back, and on
   const P v = plan(frame_point(f, at, 0, 0));

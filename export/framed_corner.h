@@ -20,8 +20,8 @@ struct FramedPrism {
 };
 
 // The prism of a corner unit (`e.corner` set) laid whole, `depth` mm deep; none for any other
-// piece, a corner unit cut by an opening, or a corner too sharp for the unit's reach (each
-// then laid as boxes, framed_boxes.h).
+// piece, a corner unit cut by an opening or bent to an arc, or a corner too sharp for the
+// unit's reach (each then laid as boxes, framed_boxes.h).
 std::optional<FramedPrism> framed_corner(const Layout& layout, const Element& e, double depth);
 
 // The footprint's triangles (indices into it), for a footprint with at most one reflex vertex

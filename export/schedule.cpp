@@ -32,6 +32,10 @@ std::string element_type_of(const Layout& layout, const Element& e) {
       return fmt::format("{}, special for a {:.1f}° {} corner", layout.element_type, angle,
                          turn > 0 ? "outer" : "inner");
   }
+  // A unit bent to a curved façade is ordered as one, by its developed width.
+  if (const SurfaceFrame* f = layout.frames.empty() ? nullptr : framed_facade(layout, e);
+      f && f->bent)
+    return fmt::format("{}, bent to a {:.0f} mm radius", layout.element_type, frame_radius(*f));
   return layout.element_type;
 }
 

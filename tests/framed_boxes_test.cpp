@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "building_support.h"
+#include "export/schedule.h"
 
 namespace curdle {
 namespace {
@@ -55,6 +56,68 @@ TEST(FramedBoxes, ACurvedWallsUnitsAreChordsOfItsArc) {
   EXPECT_NEAR(std::hypot(b[0].centre[0], b[0].centre[1]), 12000 - sagitta - 50, 1e-6);
   const std::vector<FramedBox> long_one = framed_boxes(l, Rect{0, 0, 3000, 65}, 0, 100, 600);
   EXPECT_EQ(long_one.size(), 5u);
+}
+
+TEST(FramedBoxes, AUnitBentToAnArcIsFacetsWithinAQuarterMillimetreOfIt) {
+  Layout l;
+  SurfaceFrame arc;  // a quarter circle of 12 m radius, its units bent to it
+  arc.from = {12000, 0};
+  arc.to = {0, 12000};
+  arc.bulge = std::tan(3.14159265358979323846 / 8);
+  arc.length = 12000 * 3.14159265358979323846 / 2;
+  arc.bent = true;
+  l.frames = {arc};
+  l.width = arc.length;
+  const std::vector<FramedBox> b = framed_boxes(l, Rect{1000, 0, 1200, 600}, 0, 20);
+  ASSERT_GE(b.size(), 2u);
+  double length = 0;
+  for (const FramedBox& f : b) {
+    length += f.length;
+    // Each facet's outer face ends on the arc and rises at most 0.25 mm from it.
+    const double middle = std::hypot(f.centre[0] + f.along[1] * 10, f.centre[1] - f.along[0] * 10);
+    EXPECT_GE(middle, 12000 - 0.25 - 1e-9);
+    EXPECT_NEAR(std::hypot(middle, f.length / 2), 12000, 1e-6);
+  }
+  EXPECT_NEAR(length, 1200, 0.01);  // the developed width, within 10 µm
+  Element e;
+  e.nominal = Rect{1000, 0, 1200, 600};
+  e.shape = {e.nominal};
+  const BuildingPoint p = framed_centre(l, e);
+  EXPECT_GE(std::hypot(p[0], p[1]), 12000 - 0.25 - 1e-9);
+  EXPECT_LE(std::hypot(p[0], p[1]), 12000 + 1e-9);
+}
+
+TEST(FramedBoxes, UnitsBentToACurvedFacadeAreOrderedOnTheirOwnLine) {
+  const Layout l = test::lay_recipe(R"(name = "gallery"
+seed = 5
+[lattice]
+base = 2
+dimension = 2
+[[curds]]
+probabilities = ["7/8", "3/4"]
+[layout]
+kind = "facade"
+panel = [1200, 600]
+joint = 12
+bond = "stack"
+[layout.building]
+plan = [[0, 0, 0.2], [14000, 0], [14000, 8000], [0, 8000]]
+height = 1224
+depth = 20
+arcs = "bent"
+)");
+  ASSERT_TRUE(l.frames[0].bent);
+  size_t bent = 0;
+  for (const Element& e : l.elements) {
+    const std::string type = element_type_of(l, e);
+    if (type.find("bent to a 18200 mm radius") == std::string::npos) continue;
+    ++bent;
+    EXPECT_EQ(framed_facade(l, e)->name, "S");
+    if (!e.cut) {
+      EXPECT_NEAR(e.nominal.w, 1200, 1e-9);  // as ordered: its developed width
+    }
+  }
+  EXPECT_GT(bent, 20u);
 }
 
 }  // namespace

@@ -353,6 +353,12 @@ height = 7050
             std::string::npos);
   EXPECT_NE(site_error(bricks + building + "storeys = [200]\n", nullptr).find("at least 1000"),
             std::string::npos);
+  EXPECT_NE(
+      site_error(bricks + building + "arcs = \"wavy\"\n", nullptr).find("\"bent\" (units bent"),
+      std::string::npos);
+  EXPECT_TRUE(parse_recipe(bricks + building + "arcs = \"bent\"\n", "r.toml")
+                  .layout->own<FacadeKeys>()
+                  .building->bent_on_arcs);
   EXPECT_NE(site_error(with_layout("kind = \"facade\"\npanel = [215, 65]\nwall = [2000, 975]\n"
                                    "bond = \"flemish\"\n"),
                        nullptr)

@@ -98,6 +98,17 @@ std::string joint_taper(const SurfaceFrame& f, const LayoutSpec& spec, double de
       f.name, r, convex ? "convex" : "concave", l, sagitta, j, back, depth);
 }
 
+// A curved façade whose units are bent to its arc: each unit's developed width (its width on
+// the strip, as ordered) and the chord and rise it is bent over.
+std::string bent_units(const SurfaceFrame& f, const LayoutSpec& spec) {
+  const double r = frame_radius(f), l = spec.module_w;
+  const double chord = 2 * r * std::sin(l / (2 * r));
+  return fmt::format(
+      "façade {} is curved, radius {:.0f} mm at its face ({}): its units are bent to the arc, "
+      "each {:g} mm wide developed (as ordered) over a chord of {:.1f} mm, rising {:.1f} mm",
+      f.name, r, f.bulge > 0 ? "convex" : "concave", l, chord, r - r * std::cos(l / (2 * r)));
+}
+
 }  // namespace
 
 const SurfaceFrame* facade_named(const std::vector<SurfaceFrame>& facades,
@@ -143,8 +154,12 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
         fmt::format("the envelope would hold about {:.0f} units, above the limit of {:.0f}: use "
                     "larger units, a lower wall or a smaller plan",
                     units, kMostEnvelopeUnits));
-  for (const SurfaceFrame& f : env.facades)
-    if (f.bulge != 0) env.notes.push_back(joint_taper(f, spec, env.depth, keys.plan.empty()));
+  for (SurfaceFrame& f : env.facades) {
+    if (f.bulge == 0) continue;
+    f.bent = keys.bent_on_arcs;
+    env.notes.push_back(f.bent ? bent_units(f, spec)
+                               : joint_taper(f, spec, env.depth, keys.plan.empty()));
+  }
   std::vector<BuildingOpening> given = keys.openings;
   if (keys.windows) {
     const auto ruled = ruled_windows(*keys.windows, env.facades, keys);

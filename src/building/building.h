@@ -41,6 +41,7 @@ struct BuildingKeys {
   double base = 0;              // the datum's level, mm
   double depth = 0;  // the unit's depth into the wall, mm; 0: half a unit less half a joint
   bool coursed_openings = true;  // sills and heads moved onto course lines
+  bool bent_on_arcs = false;     // units on an arc bent to it (cladding), not straight on chords
   std::vector<BuildingOpening> openings;
   std::optional<WindowRule> windows;
 };

@@ -72,7 +72,8 @@ Layout FacadeKind::build(const Design& design, const CurdField& field, const Box
   const Envelope& env = *keys.envelope;
   // The grid lays the strip's surface, openings and settings; its units are then replaced.
   Layout layout = lay_grid(design, field, view, spec, env.openings);
-  lay_envelope(layout, env, course_envelope(env, spec, keys.bond), values_in(field, view), spec);
+  lay_envelope(layout, env, course_envelope(env, spec, keys.bond), keys.bond,
+               values_in(field, view), spec);
   report_open_area(layout, layout.openings_given);
   count_values(layout, design, spec);
   const std::vector<std::string> grid = corner_grid_notes(layout, design);

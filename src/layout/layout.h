@@ -322,8 +322,9 @@ struct Layout {
   Corner origin = Corner::bottom_left;
   int64_t columns = 0, rows = 0;  // elements along x and y
   double module_w = 0, module_h = 0;
-  std::array<double, 2> shift{0, 0};            // the grid moved back from the origin corner, mm
-  double bond = 0;                              // each course's move along x, a share of the pitch
+  std::array<double, 2> shift{0, 0};  // the grid moved back from the origin corner, mm
+  double bond = 0;                    // each course's move along x, a share of the pitch
+  std::string bond_name;  // a building's bond where the share says too little ("Flemish")
   LayingPattern pattern = LayingPattern::grid;  // units laid in a paver's pattern: outlines
   bool centred = false;                         // the grid centred on the surface
   DrawingKeys drawing;           // the drawing's scale, sheet, resolution and overlays

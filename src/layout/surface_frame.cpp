@@ -16,6 +16,8 @@ Arc arc_of(const SurfaceFrame& f) {
 
 }  // namespace
 
+double frame_radius(const SurfaceFrame& f) { return f.bulge == 0 ? 0 : arc_of(f).radius; }
+
 std::array<double, 2> frame_direction(const SurfaceFrame& f, double u) {
   if (f.bulge == 0) {
     const double dx = f.to[0] - f.from[0], dy = f.to[1] - f.from[1];

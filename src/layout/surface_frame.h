@@ -27,6 +27,7 @@ struct SurfaceFrame {
   // outer corner, 90 on a rectangle), negative inwards (an L's bite); 0 where none follows.
   double turn_at_end = 0;
   bool last_of_path = false;  // a free-standing wall's far end: no corner follows
+  bool bent = false;  // an arc whose units are bent to it (panels), not straight on its chords
 };
 
 // A point of the building, mm: x east, y north, z up from its datum.
@@ -34,6 +35,9 @@ using BuildingPoint = std::array<double, 3>;
 
 // The point `inward` mm behind the outer face at strip position (u, v), u within the frame.
 BuildingPoint frame_point(const SurfaceFrame& frame, double u, double v, double inward);
+
+// The radius of an arc frame's outer face, mm; 0 for a straight one.
+double frame_radius(const SurfaceFrame& frame);
 
 // The outer face's horizontal direction along the frame at u (unit vector, plan).
 std::array<double, 2> frame_direction(const SurfaceFrame& frame, double u);

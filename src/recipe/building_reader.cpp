@@ -101,7 +101,7 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
     layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
   TableReader r(*t, layout.key_path("building"), layout.source(),
                 {"plan", "path", "site", "height", "storey", "storeys", "base", "depth", "start",
-                 "coursed_openings", "openings", "windows", "elevations", "heights"});
+                 "coursed_openings", "arcs", "openings", "windows", "elevations", "heights"});
   BuildingKeys b;
   const bool drawn = r.get("site");
   const bool plan = r.get("plan") || drawn, path = r.get("path");
@@ -155,6 +155,13 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
   b.start = static_cast<size_t>(
       read_int(r, "start", 0, 0, corners ? static_cast<int64_t>(corners) - 1 : 0));
   b.coursed_openings = read_bool(r, "coursed_openings", true);
+  if (const auto arcs = read_string(r, "arcs", "how units lie on an arc")) {
+    if (*arcs != "chords" && *arcs != "bent")
+      r.fail("arcs",
+             "must be \"chords\" (straight units on chords of the arc: bricks, blocks) or "
+             "\"bent\" (units bent to the arc: cladding panels, ordered by their developed size)");
+    b.bent_on_arcs = *arcs == "bent";
+  }
   if (const toml::node* n = r.get("openings")) {
     const toml::array* a = n->as_array();
     if (!a || a->size() > kMostOpenings)

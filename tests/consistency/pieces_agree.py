@@ -104,7 +104,7 @@ def has_box(boxes, b):
 def has_parts(boxes, b):
     """A piece in parts (a MULTIPOLYGON: a sett cut in two by a tree pit) is one polyline a
     part: the parts lying in its extent must span it exactly."""
-    inside = [c for cs in boxes.values() for c in cs
+    inside = [c for key in range(round(b[0]) - 1, round(b[2]) + 2) for c in boxes.get(key, [])
               if c[0] > b[0] - 0.01 and c[1] > b[1] - 0.01 and c[2] < b[2] + 0.01 and c[3] < b[3] + 0.01]
     if len(inside) < 2:
         return False
