@@ -70,8 +70,7 @@ Layout FacadeKind::build(const Design& design, const CurdField& field, const Box
   const FacadeKeys& keys = spec.own<FacadeKeys>();
   if (!keys.envelope) return SurfaceKind::build(design, field, view, spec);
   const Envelope& env = *keys.envelope;
-  // The grid lays the strip's surface, openings and settings; its units are then replaced.
-  Layout layout = lay_grid(design, field, view, spec, env.openings);
+  Layout layout = lay_surface(view, spec, env.openings);
   lay_envelope(layout, env, course_envelope(env, spec, keys.bond), keys.bond,
                values_in(field, view), spec);
   report_open_area(layout, layout.openings_given);
@@ -91,8 +90,9 @@ void FacadeKind::read_own(reading::TableReader& r, const Design&, LayoutSpec& sp
                "does not go with [layout.building]: the wall is the building's envelope, "
                "its openings are [[layout.building.openings]]");
     FacadeKeys& keys = spec.own<FacadeKeys>();
-    keys.building = read_building(r, spec);
-    keys.envelope = envelope_of(*keys.building, spec);
+    ReadBuilding read = read_building(r, spec);
+    keys.building = std::move(read.keys);
+    keys.envelope = std::move(read.envelope);
     if (!keys.building->site_summary.empty()) spec.site_summary = keys.building->site_summary;
     spec.size = std::array<double, 2>{keys.envelope->length, keys.envelope->height};
     return;

@@ -304,10 +304,9 @@ void check_cutting_work(const Box& view, const PolygonCuts& cuts) {
         "as does a chord every 0.5 m typed into the outline (2.4 mm off the arc)");
 }
 
-// The grid over `view` with the values of its cells (x fastest), `value_count` values in all.
-Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const Box& view,
-                  const LayoutSpec& spec, const std::vector<Rect>& openings,
-                  bool with_cut_away = true) {
+}  // namespace
+
+Layout lay_surface(const Box& view, const LayoutSpec& spec, const std::vector<Rect>& openings) {
   Layout layout;
   layout.kind = spec.kind;
   layout.combine = spec.combine;
@@ -342,11 +341,21 @@ Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const
       for (const Rect& r : z.rects)
         if (const Rect c = clip(r, layout.width, layout.height); c.area() > 0)
           layout.openings.push_back(c);
-  // Edges along x and y cut pieces as rectangles; sloping or curved ones as polygons.
-  PolygonCuts cuts;
   layout.chord_tolerance = spec.chord_tolerance;
   layout.site = spec.site_summary;
   layout.notes.insert(layout.notes.end(), spec.site_notes.begin(), spec.site_notes.end());
+  return layout;
+}
+
+namespace {
+
+// The grid over `view` with the values of its cells (x fastest), `value_count` values in all.
+Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const Box& view,
+                  const LayoutSpec& spec, const std::vector<Rect>& openings,
+                  bool with_cut_away = true) {
+  Layout layout = lay_surface(view, spec, openings);
+  // Edges along x and y cut pieces as rectangles; sloping or curved ones as polygons.
+  PolygonCuts cuts;
   if (!spec.outline.empty()) {
     layout.outline = spec.outline;
     layout.outline_contour = spec.outline_contour;

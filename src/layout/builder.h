@@ -28,6 +28,11 @@ double centring_shift(double extent, double module, double joint);
 // elements along a 10,000-corner ellipse, 9e8, took 35 s).
 inline constexpr uint64_t kMaxCuttingWork = uint64_t{1} << 28;
 
+// The surface a grid is laid on, without its elements: the layout's size and settings from the
+// spec and the openings and excluded zones on it (a building's strip, whose units are coursed
+// round its corners instead).
+Layout lay_surface(const Box& view, const LayoutSpec& spec, const std::vector<Rect>& openings);
+
 // A grid of modules and joints laid from the origin corner over `view` (a 2-D box of cells),
 // one element per cell, cut at the surface's edges, its outline, `openings` (a façade's windows
 // and doors) and excluded zones; value zones applied. For kinds to build on.

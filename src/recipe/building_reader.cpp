@@ -95,7 +95,7 @@ void read_storeys(TableReader& r, BuildingKeys& b) {
            fmt::format("add up to {:g} mm, more than the wall's height ({:g} mm)", sum, b.height));
 }
 
-BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
+ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
   const toml::table* t = read_table(layout, "building");
   if (!t)
     layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
@@ -187,14 +187,15 @@ BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec) {
   r.report_unused("is not a key of layout.building");
   try {
     // The plan, heights, openings and corners checked where they are read.
-    check_corner_room(envelope_of(b, spec), spec);
+    Envelope envelope = envelope_of(b, spec);
+    check_corner_room(envelope, spec);
+    return {std::move(b), std::move(envelope)};
   } catch (const ResourceLimitError& e) {  // too big: where its height is, still a limit
     throw ResourceLimitError(locate(r.source(), r.get("height")->source(), r.key_path("height")),
                              e.message());
   } catch (const InputError& e) {
     r.fail(e.where().key, e.message());
   }
-  return b;
 }
 
 }  // namespace curdle::reading

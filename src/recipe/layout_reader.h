@@ -71,8 +71,13 @@ Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::strin
 std::vector<BuildingOpening> read_site_elevations(TableReader& building, const LayoutSpec& spec);
 
 // [layout.building] (facade): a building's plan or a free-standing wall's path, its height,
-// base, unit depth and openings (building/building.h).
-BuildingKeys read_building(TableReader& layout, const LayoutSpec& spec);
+// base, unit depth and openings (building/building.h), and the envelope they make, checked
+// where they were read.
+struct ReadBuilding {
+  BuildingKeys keys;
+  Envelope envelope;
+};
+ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec);
 
 // [[layout.zones]], after the surface's size (tile, paving, facade).
 void read_zones(TableReader& r, const Design& design, LayoutSpec& spec);
