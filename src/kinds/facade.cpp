@@ -3,6 +3,8 @@
 // envelope unrolled (src/building), laid in courses round its corners instead of on the grid.
 #include "kinds/facade.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "building/coursing.h"
@@ -58,6 +60,18 @@ void FacadeKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
     keys.bond = spec.bond == 0.5  ? CourseBond::stretcher
                 : spec.bond < 0.3 ? CourseBond::quarter
                                   : CourseBond::third;
+  // A queen closer is half a header less half a joint: a header no wider than a few joints
+  // leaves none to cut.
+  if ((keys.bond == CourseBond::english || keys.bond == CourseBond::flemish) && keys.envelope) {
+    const double queen = (keys.envelope->depth - spec.joint) / 2;
+    if (queen < 20)
+      r.fail(
+          "bond",
+          fmt::format("\"{}\" bond needs a queen closer, half a header less half a joint: "
+                      "{:g} mm with units {:g} mm deep and {:g} mm joints; it needs units at "
+                      "least {:g} mm deep (layout.building.depth)",
+                      spec.header_bond, queen, keys.envelope->depth, spec.joint, 40 + spec.joint));
+  }
   // The storeys mark the coursed sheets' levels and the model's building storeys.
   if (spec.drawing.storey == 0 && spec.drawing.storeys.empty()) {
     spec.drawing.storey = keys.building->storey;
