@@ -33,6 +33,11 @@ TEST(DxfChecksTest, OtherFilesAreNamed) {
   EXPECT_NE(refusal("AC1027xxxxxxxx").find("DWG"), std::string::npos);
   EXPECT_NE(refusal("<svg/>").find("not a DXF"), std::string::npos);
   EXPECT_NE(refusal(std::string("0\nSECTION\n") + '\0').find("NUL"), std::string::npos);
+  // One long line that begins with 0 and holds SECTION: no group code alone on its line
+  // (dxflib spun on it without end, found by fuzzing).
+  EXPECT_NE(refusal("0\xbf\xff??? SECTION ???").find("not a DXF"), std::string::npos);
+  EXPECT_EQ(refusal("  0\r\nSECTION\r\n2\r\nENTITIES\r\n0\r\nENDSEC\r\n0\r\nEOF\r\n"),
+            "(accepted)");
 }
 
 }  // namespace

@@ -184,17 +184,6 @@ TEST(Recipe, Outline) {
 namespace curdle {
 namespace {
 
-// Files beside the recipe, in memory.
-class FilesInMemory : public RecipeFiles {
- public:
-  std::map<std::string, std::string> files;
-  std::string read(const std::string& name, const SourceLocation& where, size_t) const override {
-    const auto it = files.find(name);
-    if (it == files.end()) throw InputError(where, name + ": no such file");
-    return it->second;
-  }
-};
-
 std::string site_error(const std::string& text, const RecipeFiles* files) {
   try {
     parse_recipe(text, "r.toml", {}, files);

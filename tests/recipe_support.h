@@ -1,7 +1,11 @@
-// A recipe with every key, which the recipe reading tests share.
+// A recipe with every key, and files beside a recipe in memory, which the recipe reading tests
+// share.
 #pragma once
 
 #include <gtest/gtest.h>
+
+#include <map>
+#include <string>
 
 #include "curdle/error.h"
 #include "layout/builder.h"
@@ -34,6 +38,17 @@ inline std::string error_of(const std::string& text, const std::vector<std::stri
   }
   return "no error";
 }
+
+// Files beside the recipe, in memory.
+class FilesInMemory : public RecipeFiles {
+ public:
+  std::map<std::string, std::string> files;
+  std::string read(const std::string& name, const SourceLocation& where, size_t) const override {
+    const auto it = files.find(name);
+    if (it == files.end()) throw InputError(where, name + ": no such file");
+    return it->second;
+  }
+};
 
 // kGood's lattice with one curd of two stages, and a [layout] of `keys`.
 inline std::string with_layout(const std::string& keys) {

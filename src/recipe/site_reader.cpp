@@ -85,17 +85,22 @@ void read_units_and_origin(TableReader& r, site::LayerMap& map) {
   map.origin = std::array<double, 2>{*x, *y};
 }
 
-// `file`: a drawing's name, a .dxf or .svg relative to the recipe.
-std::string read_drawing_name(TableReader& r, const std::string& what) {
+// `file`: a drawing's name, a .dxf or .svg relative to the recipe; where `or_model`, also a
+// massing model's (.glb, .gltf), whose nodes' footprints are its layers.
+std::string read_drawing_name(TableReader& r, const std::string& what, bool or_model = false) {
   const std::string file = read_string(r, "file", "a file name").value_or("");
   std::string lower = file;
   std::transform(lower.begin(), lower.end(), lower.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (file.empty() || file.size() > 1024 || lower.size() < 5 ||
-      (lower.substr(lower.size() - 4) != ".dxf" && lower.substr(lower.size() - 4) != ".svg"))
-    r.fail("file", "must name the " + what +
-                       ", a .dxf or .svg file relative to the recipe (in CAD: save as DXF; in "
-                       "Inkscape or Illustrator: save as SVG)");
+  auto ends = [&](const std::string& e) {
+    return lower.size() > e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0;
+  };
+  const bool model = or_model && (ends(".glb") || ends(".gltf"));
+  if (file.empty() || file.size() > 1024 || (!ends(".dxf") && !ends(".svg") && !model))
+    r.fail("file", "must name the " + what + ", a .dxf or .svg file" +
+                       (or_model ? " (or a massing model, .glb or .gltf)" : "") +
+                       " relative to the recipe (in CAD: save as DXF; in Inkscape or "
+                       "Illustrator: save as SVG)");
   return file;
 }
 
@@ -209,7 +214,7 @@ Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::strin
   TableReader sr(*t, building.key_path("site"), building.source(),
                  {"file", "plan", "units", "origin"});
   site::LayerMap map;
-  map.file = read_drawing_name(sr, "plan's drawing");
+  map.file = read_drawing_name(sr, "plan's drawing", true);
   const auto plan = read_layers(sr, "plan");
   if (plan.size() != 1)
     sr.fail("plan", "must name the one layer that holds the building's outline, e.g. \"A-WALL\"");

@@ -29,9 +29,15 @@ void check_is_ascii_dxf(std::string_view bytes, const std::string& file) {
                     "(SAVEAS, DXF, AutoCAD 2000 or later)");
   // An ASCII DXF begins with the group code 0 and SECTION (after an optional 999 comment).
   const size_t first = bytes.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+  // Its first line is that group code alone: dxflib spun without end on one long line that
+  // began with 0.
+  const size_t eol = first == std::string_view::npos ? first : bytes.find('\n', first);
+  std::string_view code = eol == std::string_view::npos ? "" : bytes.substr(first, eol - first);
+  while (!code.empty() && (code.back() == '\r' || code.back() == ' ' || code.back() == '\t'))
+    code.remove_suffix(1);
   const bool looks = first != std::string_view::npos &&
                      bytes.find("SECTION") != std::string_view::npos &&
-                     (bytes[first] == '0' || bytes.substr(first, 3) == "999");
+                     (code == "0" || code == "999");
   if (!looks)
     throw SiteError(file +
                     ": is not a DXF drawing (an ASCII DXF begins with the group code 0 "

@@ -13,6 +13,7 @@
 
 #include "layout/zone.h"
 #include "site/dxf_reader.h"
+#include "site/gltf_reader.h"
 #include "site/svg_reader.h"
 
 namespace curdle::site {
@@ -226,6 +227,7 @@ Drawing read_drawing(std::string_view bytes, const std::string& name, double cho
                      double unit_mm) {
   std::string ending = name.size() >= 4 ? name.substr(name.size() - 4) : name;
   for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ending == ".glb" || ending == "gltf") return read_gltf(bytes, name);
   return ending == ".svg" ? read_svg(bytes, name, {chord_tolerance_mm, unit_mm})
                           : read_dxf(bytes, name, {chord_tolerance_mm, unit_mm});
 }

@@ -1,5 +1,6 @@
 // Fuzz target: a site drawing (site/dxf_reader.cpp through dxflib, site/svg_reader.cpp through
-// libxml2 and SVG++, site/site.cpp) read and
+// libxml2 and SVG++, a massing model through site/gltf_reader.cpp and tinygltf, site/site.cpp)
+// read and
 // turned into an outline, openings and zones, as [layout.site] does with the layers A (the
 // outline), B (openings) and C (an excluded zone), then laid as a paving floor. Any input may
 // be refused with a SiteError or an InputError; none may crash, hang or allocate without bound.
@@ -10,6 +11,7 @@
 #include "curdle/error.h"
 #include "layout/zone.h"
 #include "site/dxf_reader.h"
+#include "site/gltf_reader.h"
 #include "site/site.h"
 #include "site/svg_reader.h"
 
@@ -25,11 +27,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       .unit_mm = size % 2 ? 0.0 : 1.0,  // as the drawing or a recipe says
       .unit_name = "mm"};
   try {
-    // An SVG begins with markup; anything else goes to the DXF reader.
+    // An SVG begins with markup, a glTF model with its magic or JSON; anything else goes to
+    // the DXF reader.
     const size_t first = bytes.find_first_not_of(" \t\r\n");
+    const char lead = first != std::string::npos ? bytes[first] : ' ';
     const curdle::site::Drawing drawing =
-        first != std::string::npos && bytes[first] == '<'
-            ? curdle::site::read_svg(bytes, map.file, {0.05, map.unit_mm})
+        lead == '<' ? curdle::site::read_svg(bytes, map.file, {0.05, map.unit_mm})
+        : bytes.rfind("glTF", 0) == 0 || lead == '{'
+            ? curdle::site::read_gltf(bytes, "fuzz.glb")
             : curdle::site::read_dxf(bytes, map.file, {0.05, map.unit_mm});
     const curdle::site::Site site = curdle::site::site_from(drawing, map);
     // What the recipe reader does next with it: flatten and check every contour.

@@ -1,0 +1,299 @@
+#include "site/gltf_reader.h"
+
+#include <fmt/format.h>
+#include <tiny_gltf.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <utility>
+
+namespace curdle::site {
+namespace {
+
+using Matrix = std::array<double, 16>;  // column-major, as glTF
+using Point = std::array<double, 3>;    // glTF metres, y up
+
+constexpr double kLevel = 0.001;  // m: how far a face may lie from the lowest level and count
+
+Matrix identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
+
+Matrix times(const Matrix& a, const Matrix& b) {
+  Matrix m{};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      for (int k = 0; k < 4; ++k) m[c * 4 + r] += a[k * 4 + r] * b[c * 4 + k];
+  return m;
+}
+
+// A node's own transform: its matrix, or translation, rotation and scale.
+Matrix local(const tinygltf::Node& n) {
+  if (n.matrix.size() == 16) {
+    Matrix m;
+    std::copy(n.matrix.begin(), n.matrix.end(), m.begin());
+    return m;
+  }
+  Matrix t = identity(), r = identity(), s = identity();
+  if (n.translation.size() == 3)
+    t[12] = n.translation[0], t[13] = n.translation[1], t[14] = n.translation[2];
+  if (n.scale.size() == 3) s[0] = n.scale[0], s[5] = n.scale[1], s[10] = n.scale[2];
+  if (n.rotation.size() == 4) {
+    const double x = n.rotation[0], y = n.rotation[1], z = n.rotation[2], w = n.rotation[3];
+    r = {1 - 2 * (y * y + z * z),
+         2 * (x * y + z * w),
+         2 * (x * z - y * w),
+         0,
+         2 * (x * y - z * w),
+         1 - 2 * (x * x + z * z),
+         2 * (y * z + x * w),
+         0,
+         2 * (x * z + y * w),
+         2 * (y * z - x * w),
+         1 - 2 * (x * x + y * y),
+         0,
+         0,
+         0,
+         0,
+         1};
+  }
+  return times(t, times(r, s));
+}
+
+Point transformed(const Matrix& m, const float* p) {
+  return {m[0] * p[0] + m[4] * p[1] + m[8] * p[2] + m[12],
+          m[1] * p[0] + m[5] * p[1] + m[9] * p[2] + m[13],
+          m[2] * p[0] + m[6] * p[1] + m[10] * p[2] + m[14]};
+}
+
+class Reader {
+ public:
+  Reader(const tinygltf::Model& model, const std::string& file) : model_(model), file_(file) {}
+
+  // The triangles of a node and all below it, in the model's frame.
+  void collect(int index, const Matrix& parent, std::vector<std::array<Point, 3>>& out,
+               int depth = 0) {
+    if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size() || depth > 64)
+      fail("a node refers to one it does not have, or nests too deep");
+    const tinygltf::Node& n = model_.nodes[static_cast<size_t>(index)];
+    const Matrix m = times(parent, local(n));
+    if (n.mesh >= 0) mesh(static_cast<size_t>(n.mesh), m, out);
+    for (int c : n.children) collect(c, m, out, depth + 1);
+  }
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw SiteError(fmt::format("{}: {}", file_, what));
+  }
+
+ private:
+  // The bytes of an accessor's elements, checked to lie in its buffer.
+  const unsigned char* data(const tinygltf::Accessor& a, size_t element_size,
+                            size_t& stride) const {
+    if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= model_.bufferViews.size())
+      fail("an accessor has no buffer view");
+    const tinygltf::BufferView& v = model_.bufferViews[static_cast<size_t>(a.bufferView)];
+    if (v.buffer < 0 || static_cast<size_t>(v.buffer) >= model_.buffers.size())
+      fail("a buffer view has no buffer");
+    const std::vector<unsigned char>& b = model_.buffers[static_cast<size_t>(v.buffer)].data;
+    stride = v.byteStride ? v.byteStride : element_size;
+    const size_t start = v.byteOffset + a.byteOffset;
+    if (a.count == 0 || stride < element_size || start > b.size() ||
+        (a.count - 1) * stride + element_size > b.size() - start ||
+        a.byteOffset + (a.count - 1) * stride + element_size > v.byteLength)
+      fail("an accessor runs past its buffer");
+    return b.data() + start;
+  }
+
+  void mesh(size_t index, const Matrix& m, std::vector<std::array<Point, 3>>& out) {
+    if (index >= model_.meshes.size()) fail("a node refers to a mesh the file does not have");
+    for (const tinygltf::Primitive& p : model_.meshes[index].primitives) {
+      if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != -1) continue;  // lines and points: none
+      const auto pos = p.attributes.find("POSITION");
+      if (pos == p.attributes.end()) continue;
+      if (pos->second < 0 || static_cast<size_t>(pos->second) >= model_.accessors.size())
+        fail("a mesh refers to positions the file does not have");
+      const tinygltf::Accessor& pa = model_.accessors[static_cast<size_t>(pos->second)];
+      if (pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || pa.type != TINYGLTF_TYPE_VEC3)
+        fail("a mesh's positions are not three floats");
+      if ((vertices_ += pa.count) > kMostVertices)
+        fail(fmt::format("holds more than {} vertices", kMostVertices));
+      size_t ps = 0;
+      const unsigned char* pd = data(pa, 12, ps);
+      std::vector<Point> points(pa.count);
+      for (size_t i = 0; i < pa.count; ++i) {
+        float f[3];
+        std::memcpy(f, pd + i * ps, 12);
+        points[i] = transformed(m, f);
+      }
+      std::vector<size_t> index_list;
+      if (p.indices >= 0) {
+        if (static_cast<size_t>(p.indices) >= model_.accessors.size())
+          fail("a mesh refers to indices the file does not have");
+        const tinygltf::Accessor& ia = model_.accessors[static_cast<size_t>(p.indices)];
+        const size_t size = ia.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT     ? 4
+                            : ia.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                            : ia.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE  ? 1
+                                                                                         : 0;
+        if (!size || ia.type != TINYGLTF_TYPE_SCALAR) fail("a mesh's indices are not integers");
+        if ((vertices_ += ia.count) > kMostVertices)
+          fail(fmt::format("holds more than {} vertices", kMostVertices));
+        size_t is = 0;
+        const unsigned char* id = data(ia, size, is);
+        for (size_t i = 0; i < ia.count; ++i) {
+          uint32_t v = 0;
+          std::memcpy(&v, id + i * is, size);  // little-endian, as glTF is
+          if (v >= points.size()) fail("a mesh's index points past its vertices");
+          index_list.push_back(v);
+        }
+      } else {
+        for (size_t i = 0; i < points.size(); ++i) index_list.push_back(i);
+      }
+      for (size_t i = 0; i + 2 < index_list.size(); i += 3)
+        out.push_back(
+            {points[index_list[i]], points[index_list[i + 1]], points[index_list[i + 2]]});
+    }
+  }
+
+  const tinygltf::Model& model_;
+  const std::string& file_;
+  size_t vertices_ = 0;
+};
+
+// Plan millimetres of a glTF point, welded to a tenth of a millimetre.
+std::array<int64_t, 2> plan_key(const Point& p) {
+  return {std::llround(p[0] * 1e4), std::llround(-p[2] * 1e4)};
+}
+
+// The boundary of the lowest horizontal faces: edges that one such face has, chained into
+// loops; empty where they do not chain into one closed outline.
+std::vector<Contour> footprint(const std::vector<std::array<Point, 3>>& triangles) {
+  double low = 1e300;
+  for (const auto& t : triangles)
+    for (const Point& p : t) low = std::min(low, p[1]);
+  std::map<std::pair<std::array<int64_t, 2>, std::array<int64_t, 2>>, int> edges;
+  for (const auto& t : triangles) {
+    bool flat = true;
+    for (const Point& p : t) flat &= std::fabs(p[1] - low) <= kLevel;
+    if (!flat) continue;
+    for (int k = 0; k < 3; ++k) {
+      auto a = plan_key(t[static_cast<size_t>(k)]),
+           b = plan_key(t[static_cast<size_t>((k + 1) % 3)]);
+      if (a == b) continue;
+      if (b < a) std::swap(a, b);
+      ++edges[{a, b}];
+    }
+  }
+  std::multimap<std::array<int64_t, 2>, std::array<int64_t, 2>> next;
+  for (const auto& [e, count] : edges)
+    if (count == 1) next.insert({e.first, e.second}), next.insert({e.second, e.first});
+  std::vector<Contour> loops;
+  while (!next.empty()) {
+    const auto start = next.begin()->first;
+    std::array<int64_t, 2> at = start, from{INT64_MIN, INT64_MIN};
+    Contour loop;
+    for (size_t guard = 0; guard <= edges.size(); ++guard) {
+      loop.push_back({static_cast<double>(at[0]) / 10, static_cast<double>(at[1]) / 10, 0});
+      auto range = next.equal_range(at);
+      auto it = range.first;
+      while (it != range.second && it->second == from) ++it;
+      if (it == range.second) return {};  // an open chain
+      const auto to = it->second;
+      next.erase(it);
+      for (auto back = next.equal_range(to); back.first != back.second; ++back.first)
+        if (back.first->second == at) {
+          next.erase(back.first);
+          break;
+        }
+      from = at, at = to;
+      if (at == start) break;
+    }
+    if (at != start) return {};
+    loops.push_back(loop);
+  }
+  return loops;
+}
+
+// The loop without points on a straight line between their neighbours (a mesh splits edges).
+Contour without_collinear(Contour c) {
+  for (size_t k = 0; c.size() > 3 && k < c.size();) {
+    const ContourVertex& a = c[(k + c.size() - 1) % c.size()];
+    const ContourVertex& b = c[k];
+    const ContourVertex& d = c[(k + 1) % c.size()];
+    const double cross = (b.x - a.x) * (d.y - b.y) - (b.y - a.y) * (d.x - b.x);
+    const double scale = std::hypot(b.x - a.x, b.y - a.y) * std::hypot(d.x - b.x, d.y - b.y);
+    if (std::fabs(cross) <= 1e-9 * scale)
+      c.erase(c.begin() + static_cast<std::ptrdiff_t>(k));
+    else
+      ++k;
+  }
+  return c;
+}
+
+}  // namespace
+
+Drawing read_gltf(std::string_view bytes, const std::string& file) {
+  if (bytes.size() > kMostDrawingBytes)
+    throw SiteError(fmt::format("{}: larger than {} MB", file, kMostDrawingBytes >> 20));
+  tinygltf::TinyGLTF loader;
+  // Nothing outside the file: no buffers or images read from disk, no images decoded.
+  tinygltf::FsCallbacks none{};
+  none.FileExists = [](const std::string&, void*) { return false; };
+  none.ExpandFilePath = [](const std::string& p, void*) { return p; };
+  none.ReadWholeFile = [](std::vector<unsigned char>*, std::string* err, const std::string& p,
+                          void*) {
+    if (err) *err = "refers to a file outside it (" + p + "): embed its buffers";
+    return false;
+  };
+  none.WriteWholeFile = [](std::string*, const std::string&, const std::vector<unsigned char>&,
+                           void*) { return false; };
+  loader.SetFsCallbacks(none);
+  loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                           const unsigned char*, int, void*) { return true; },
+                        nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  const auto size = static_cast<unsigned int>(bytes.size());
+  const bool binary = bytes.substr(0, 4) == "glTF";
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, size, "")
+                         : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, "");
+  if (!ok)
+    throw SiteError(fmt::format("{}: not a glTF 2.0 model curdle can read: {}", file,
+                                err.empty() ? "no reason given" : err.substr(0, 300)));
+  Reader reader(model, file);
+  Drawing d;
+  d.format = "glTF";
+  d.unit_mm = 1;
+  d.unit_name = "mm";
+  const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+  if (model.scenes.empty() || static_cast<size_t>(scene) >= model.scenes.size())
+    reader.fail("holds no scene");
+  for (int root : model.scenes[static_cast<size_t>(scene)].nodes) {
+    std::vector<std::array<Point, 3>> triangles;
+    reader.collect(root, identity(), triangles);
+    if (triangles.empty()) continue;
+    const tinygltf::Node& n = model.nodes[static_cast<size_t>(root)];
+    const std::string layer = n.name.empty() ? fmt::format("node {}", root) : n.name;
+    const std::vector<Contour> loops = footprint(triangles);
+    if (loops.size() != 1) {
+      d.notes.push_back(fmt::format("{}: its lowest faces are {} outline", layer,
+                                    loops.empty() ? "not one closed" : "more than one"));
+      continue;
+    }
+    double low = 1e300, high = -1e300;
+    for (const auto& t : triangles)
+      for (const Point& p : t) low = std::min(low, p[1]), high = std::max(high, p[1]);
+    Shape s;
+    s.layer = layer;
+    s.entity = "mesh";
+    s.path = without_collinear(loops.front());
+    s.closed = true;
+    d.shapes.push_back(std::move(s));
+    d.notes.push_back(fmt::format("{}: a footprint of {} corners at level {:.3f} m, {:.3f} m high",
+                                  layer, d.shapes.back().path.size(), low, high - low));
+    if (d.shapes.size() > kMostShapes) reader.fail("holds too many nodes");
+  }
+  return d;
+}
+
+}  // namespace curdle::site

@@ -1,0 +1,131 @@
+// Tests of gltf_reader.h: a massing model's footprint read as a plan layer. An L-shaped block
+// made of three boxes (as a modeller leaves it: faces split where the boxes meet) reads as the
+// pavilion's six corners, named by its node, with its height in the notes; the recipe's
+// [layout.building.site] lays it; a file that refers outside itself, or is no glTF, is refused.
+#include "site/gltf_reader.h"
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include <set>
+#include <sstream>
+
+#include "kinds/facade.h"
+#include "recipe/recipe.h"
+#include "recipe_support.h"
+
+namespace curdle::site {
+namespace {
+
+// A glb of boxes (plan mm: x0, y0, x1, y1) from level 0 to `height` mm, one mesh, one node.
+std::string boxes_glb(const std::vector<std::array<double, 4>>& boxes, double height,
+                      const std::string& name) {
+  std::vector<float> p;
+  std::vector<uint32_t> idx;
+  for (const auto& b : boxes) {
+    const uint32_t base = static_cast<uint32_t>(p.size() / 3);
+    for (int k = 0; k < 8; ++k) {
+      const double x = k & 1 ? b[2] : b[0], y = k & 2 ? b[3] : b[1], z = k & 4 ? height : 0;
+      p.insert(p.end(), {float(x / 1000), float(z / 1000), float(-y / 1000)});
+    }
+    for (uint32_t t : {0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1,
+                       2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3})
+      idx.push_back(base + t);
+  }
+  tinygltf::Model m;
+  m.asset.version = "2.0";
+  tinygltf::Buffer buffer;
+  buffer.data.resize(p.size() * 4 + idx.size() * 4);
+  std::memcpy(buffer.data.data(), p.data(), p.size() * 4);
+  std::memcpy(buffer.data.data() + p.size() * 4, idx.data(), idx.size() * 4);
+  m.buffers.push_back(buffer);
+  tinygltf::BufferView vp, vi;
+  vp.buffer = vi.buffer = 0;
+  vp.byteLength = p.size() * 4;
+  vi.byteOffset = p.size() * 4;
+  vi.byteLength = idx.size() * 4;
+  m.bufferViews = {vp, vi};
+  tinygltf::Accessor ap, ai;
+  ap.bufferView = 0, ap.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT, ap.count = p.size() / 3;
+  ap.type = TINYGLTF_TYPE_VEC3;
+  ai.bufferView = 1, ai.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  ai.count = idx.size(), ai.type = TINYGLTF_TYPE_SCALAR;
+  m.accessors = {ap, ai};
+  tinygltf::Primitive prim;
+  prim.attributes["POSITION"] = 0;
+  prim.indices = 1;
+  prim.mode = TINYGLTF_MODE_TRIANGLES;
+  tinygltf::Mesh mesh;
+  mesh.primitives = {prim};
+  m.meshes = {mesh};
+  tinygltf::Node node;
+  node.name = name;
+  node.mesh = 0;
+  m.nodes = {node};
+  tinygltf::Scene scene;
+  scene.nodes = {0};
+  m.scenes = {scene};
+  m.defaultScene = 0;
+  std::ostringstream out;
+  tinygltf::TinyGLTF().WriteGltfSceneToStream(&m, out, false, true);
+  return out.str();
+}
+
+// The pavilion's L: 20 x 12 m with an 8 x 6 m bite, as three boxes.
+const std::vector<std::array<double, 4>> kPavilion{
+    {0, 0, 12000, 6000}, {12000, 0, 20000, 6000}, {0, 6000, 12000, 12000}};
+
+TEST(GltfReader, AMassingModelsFootprintIsItsNodesOutline) {
+  const Drawing d = read_gltf(boxes_glb(kPavilion, 7050, "Pavilion"), "massing.glb");
+  ASSERT_EQ(d.shapes.size(), 1u);
+  EXPECT_EQ(d.shapes[0].layer, "Pavilion");
+  EXPECT_TRUE(d.shapes[0].closed);
+  std::set<std::pair<long, long>> corners;
+  for (const ContourVertex& v : d.shapes[0].path)
+    corners.insert({std::lround(v.x), std::lround(v.y)});
+  EXPECT_EQ(corners,
+            (std::set<std::pair<long, long>>{
+                {0, 0}, {20000, 0}, {20000, 6000}, {12000, 6000}, {12000, 12000}, {0, 12000}}));
+  ASSERT_EQ(d.notes.size(), 1u);
+  EXPECT_NE(d.notes[0].find("6 corners at level 0.000 m, 7.050 m high"), std::string::npos)
+      << d.notes[0];
+}
+
+TEST(GltfReader, ABuildingsPlanIsReadFromTheModel) {
+  FilesInMemory files;
+  files.files["massing.glb"] = boxes_glb(kPavilion, 7050, "Pavilion");
+  const Recipe r = parse_recipe(with_layout(R"(kind = "facade"
+panel = [215, 65]
+joint = 10
+[layout.building]
+height = 7050
+[layout.building.site]
+file = "massing.glb"
+plan = "Pavilion"
+)"),
+                                "r.toml", {}, &files);
+  const Envelope& env = *r.layout->own<FacadeKeys>().envelope;
+  ASSERT_EQ(env.facades.size(), 6u);
+  EXPECT_NEAR(env.length, 64000, 1e-6);
+}
+
+TEST(GltfReader, AModelThatIsNotGltfOrReachesOutsideIsRefused) {
+  EXPECT_THROW(read_gltf("not a model", "massing.gltf"), SiteError);
+  const std::string outside = R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "/etc/passwd",
+    "byteLength": 12}], "scenes": [{"nodes": []}], "scene": 0})";
+  try {
+    read_gltf(outside, "massing.gltf");
+    ADD_FAILURE() << "a buffer outside the file was read";
+  } catch (const SiteError& e) {
+    EXPECT_NE(std::string(e.what()).find("massing.gltf"), std::string::npos) << e.what();
+  }
+  // Two boxes apart: two outlines, not one plan.
+  const Drawing two =
+      read_gltf(boxes_glb({{0, 0, 1000, 1000}, {5000, 0, 6000, 1000}}, 3000, "Two"), "two.glb");
+  EXPECT_TRUE(two.shapes.empty());
+  ASSERT_EQ(two.notes.size(), 1u);
+  EXPECT_NE(two.notes[0].find("more than one"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace curdle::site
