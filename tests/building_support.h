@@ -42,6 +42,14 @@ height = 7050
 )" + building;
 }
 
+// A building of one two-stage curd: `layout` its [layout] keys (kind, unit, joint, bond),
+// `building` its [layout.building] keys.
+inline std::string building_recipe(const std::string& layout, const std::string& building) {
+  return "name = \"building\"\nseed = 3\n[lattice]\nbase = 2\ndimension = 2\n[[curds]]\n"
+         "probabilities = [\"7/8\", \"4/5\"]\n[layout]\nkind = \"facade\"\n" +
+         layout + "[layout.building]\n" + building;
+}
+
 inline Layout lay_recipe(const std::string& text, uint64_t seed = 0) {
   const Recipe r = parse_recipe(text, "building.toml");
   const Design& d = r.design;

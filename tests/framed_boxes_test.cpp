@@ -88,24 +88,10 @@ TEST(FramedBoxes, AUnitBentToAnArcIsFacetsWithinAQuarterMillimetreOfIt) {
 }
 
 TEST(FramedBoxes, UnitsBentToACurvedFacadeAreOrderedOnTheirOwnLine) {
-  const Layout l = test::lay_recipe(R"(name = "gallery"
-seed = 5
-[lattice]
-base = 2
-dimension = 2
-[[curds]]
-probabilities = ["7/8", "3/4"]
-[layout]
-kind = "facade"
-panel = [1200, 600]
-joint = 12
-bond = "stack"
-[layout.building]
-plan = [[0, 0, 0.2], [14000, 0], [14000, 8000], [0, 8000]]
-height = 1224
-depth = 20
-arcs = "bent"
-)");
+  const Layout l = test::lay_recipe(test::building_recipe(
+      "panel = [1200, 600]\njoint = 12\nbond = \"stack\"\n",
+      "plan = [[0, 0, 0.2], [14000, 0], [14000, 8000], [0, 8000]]\nheight = 1224\ndepth = 20\n"
+      "arcs = \"bent\"\n"));
   ASSERT_TRUE(l.frames[0].bent);
   size_t bent = 0;
   for (const Element& e : l.elements) {

@@ -68,21 +68,9 @@ TEST(FramedCorner, ASquareCornersUnitIsTheBrickItselfOuterOrInner) {
 
 TEST(FramedCorner, AnObtuseAndAnAcuteCornerMeetAtTheArrisAndTheMitre) {
   // A trapezoid: 71.6° at (10000, 0), 108.4° at (8000, 6000).
-  const Layout l = test::lay_recipe(R"(name = "trapezoid"
-seed = 3
-[lattice]
-base = 2
-dimension = 2
-[[curds]]
-probabilities = ["7/8", "4/5"]
-[layout]
-kind = "facade"
-panel = [215, 65]
-joint = 10
-[layout.building]
-plan = [[0, 0], [10000, 0], [8000, 6000], [0, 6000]]
-height = 750
-)");
+  const Layout l = test::lay_recipe(test::building_recipe(
+      "panel = [215, 65]\njoint = 10\n",
+      "plan = [[0, 0], [10000, 0], [8000, 6000], [0, 6000]]\nheight = 750\n"));
   const double t = l.thickness;
   size_t seen = 0;
   for (const Element& e : l.elements) {
