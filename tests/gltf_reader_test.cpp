@@ -1,7 +1,8 @@
 // Tests of gltf_reader.h: a massing model's footprint read as a plan layer. An L-shaped block
 // made of three boxes (as a modeller leaves it: faces split where the boxes meet) reads as the
 // pavilion's six corners, named by its node, with its height in the notes; the recipe's
-// [layout.building.site] lays it; a file that refers outside itself, or is no glTF, is refused.
+// [layout.building.site] lays it; a file that refers outside itself, is no glTF or places its
+// nodes without bound is refused.
 #include "site/gltf_reader.h"
 
 #include <gtest/gtest.h>
@@ -118,6 +119,19 @@ TEST(GltfReader, AModelThatIsNotGltfOrReachesOutsideIsRefused) {
     ADD_FAILURE() << "a buffer outside the file was read";
   } catch (const SiteError& e) {
     EXPECT_NE(std::string(e.what()).find("massing.gltf"), std::string::npos) << e.what();
+  }
+  // Each node placing the next twice, 40 deep: 2^40 places, refused at a bound.
+  std::string nodes;
+  for (int k = 0; k < 40; ++k)
+    nodes += "{\"children\": [" + std::to_string(k + 1) + ", " + std::to_string(k + 1) + "]}, ";
+  const std::string doubling = R"({"asset": {"version": "2.0"}, "nodes": [)" + nodes +
+                               R"({}], "scenes": [{"nodes": [0]}], "scene": 0})";
+  try {
+    read_gltf(doubling, "deep.gltf");
+    ADD_FAILURE() << "2^40 node places were walked";
+  } catch (const SiteError& e) {
+    EXPECT_NE(std::string(e.what()).find("places nodes more than 100000 times"), std::string::npos)
+        << e.what();
   }
   // Two boxes apart: two outlines, not one plan.
   const Drawing two =

@@ -15,7 +15,8 @@ namespace {
 using Matrix = std::array<double, 16>;  // column-major, as glTF
 using Point = std::array<double, 3>;    // glTF metres, y up
 
-constexpr double kLevel = 0.001;  // m: how far a face may lie from the lowest level and count
+constexpr double kLevel = 0.001;        // m: how far a face may lie from the lowest level and count
+constexpr size_t kMostVisits = 100000;  // nodes placed, counting each place a node is shared
 
 Matrix identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
 
@@ -75,6 +76,8 @@ class Reader {
                int depth = 0) {
     if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size() || depth > 64)
       fail("a node refers to one it does not have, or nests too deep");
+    // Nodes shared down the tree multiply: a hostile file could ask for 2^64 visits.
+    if (++visits_ > kMostVisits) fail(fmt::format("places nodes more than {} times", kMostVisits));
     const tinygltf::Node& n = model_.nodes[static_cast<size_t>(index)];
     const Matrix m = times(parent, local(n));
     if (n.mesh >= 0) mesh(static_cast<size_t>(n.mesh), m, out);
@@ -156,7 +159,7 @@ class Reader {
 
   const tinygltf::Model& model_;
   const std::string& file_;
-  size_t vertices_ = 0;
+  size_t vertices_ = 0, visits_ = 0;
 };
 
 // Plan millimetres of a glTF point, welded to a tenth of a millimetre.
