@@ -245,6 +245,34 @@ TEST(Coursing, AFreeStandingWallHasStoppedEndsWithHalfUnitsOnAlternateCourses) {
   }
 }
 
+TEST(Coursing, AFreeStandingWallInEnglishOrFlemishBondStopsWithAHeaderAndQueenCloser) {
+  const LayoutSpec spec = test::bricks();
+  BuildingKeys keys;
+  keys.path = {{0, 0, 0}, {9000, 0, 0}};
+  keys.height = 750;
+  const Envelope env = envelope_of(keys, spec);
+  for (CourseBond bond : {CourseBond::english, CourseBond::flemish}) {
+    const auto courses = by_course(course_envelope(env, spec, bond));
+    for (const auto& [r, units] : courses) {
+      // Each end of the wall: a stretcher, or a header and a queen closer, by courses (in
+      // English bond the header courses, in Flemish every other course).
+      const bool headers = r % 2 == 1;
+      ASSERT_GE(units.size(), 4u);
+      EXPECT_NEAR(units.front().from, 0, 1e-9);
+      EXPECT_NEAR(units.back().to, 9000, 1e-9);
+      EXPECT_EQ(units[0].role, headers ? UnitRole::header : UnitRole::stretcher)
+          << int(bond) << " course " << r;
+      if (headers) {
+        EXPECT_NEAR(units[1].to - units[1].from, 46.25, 1e-9) << int(bond) << " course " << r;
+        EXPECT_NEAR(units[units.size() - 2].to - units[units.size() - 2].from, 46.25, 1e-9);
+        EXPECT_EQ(units.back().role, UnitRole::header);
+      } else {
+        EXPECT_EQ(units.back().role, UnitRole::stretcher);
+      }
+    }
+  }
+}
+
 TEST(Coursing, CornersAreDescribedForTheReport) {
   const LayoutSpec spec = test::bricks();
   const Coursing c = course_envelope(pavilion(spec), spec, CourseBond::stretcher);
