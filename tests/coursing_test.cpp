@@ -27,6 +27,14 @@ Envelope pavilion(const LayoutSpec& spec) {
   return envelope_of(keys, spec);
 }
 
+// A free-standing wall 9 m long and ten courses high.
+Envelope free_standing_wall(const LayoutSpec& spec) {
+  BuildingKeys keys;
+  keys.path = {{0, 0, 0}, {9000, 0, 0}};
+  keys.height = 750;
+  return envelope_of(keys, spec);
+}
+
 std::map<int64_t, std::vector<CourseUnit>> by_course(const Coursing& c) {
   std::map<int64_t, std::vector<CourseUnit>> out;
   for (const CourseUnit& u : c.units) out[u.course].push_back(u);
@@ -228,10 +236,7 @@ TEST(Coursing, StackBondTurnsEveryCornerAlike) {
 
 TEST(Coursing, AFreeStandingWallHasStoppedEndsWithHalfUnitsOnAlternateCourses) {
   const LayoutSpec spec = test::bricks();
-  BuildingKeys keys;
-  keys.path = {{0, 0, 0}, {9000, 0, 0}};
-  keys.height = 750;
-  const Envelope env = envelope_of(keys, spec);
+  const Envelope env = free_standing_wall(spec);
   EXPECT_FALSE(env.closed);
   const auto courses = by_course(course_envelope(env, spec, CourseBond::stretcher));
   ASSERT_EQ(courses.size(), 10u);
@@ -247,10 +252,7 @@ TEST(Coursing, AFreeStandingWallHasStoppedEndsWithHalfUnitsOnAlternateCourses) {
 
 TEST(Coursing, AFreeStandingWallInEnglishOrFlemishBondStopsWithAHeaderAndQueenCloser) {
   const LayoutSpec spec = test::bricks();
-  BuildingKeys keys;
-  keys.path = {{0, 0, 0}, {9000, 0, 0}};
-  keys.height = 750;
-  const Envelope env = envelope_of(keys, spec);
+  const Envelope env = free_standing_wall(spec);
   for (CourseBond bond : {CourseBond::english, CourseBond::flemish}) {
     const auto courses = by_course(course_envelope(env, spec, bond));
     for (const auto& [r, units] : courses) {

@@ -180,7 +180,7 @@ class CourseLayer {
   // courses lap by a quarter.
   BondOrder order(bool header_course, double reach) const {
     const BondPiece S{l_, UnitRole::stretcher, 0}, H{d_, UnitRole::header, l_};
-    const BondPiece Q{(d_ - j_) / 2, UnitRole::closer, l_};
+    const BondPiece Q{queen_closer(d_, j_), UnitRole::closer, l_};
     if (bond_ == CourseBond::english) {
       if (!header_course) return {{}, {S}};
       return reach < 0 ? BondOrder{{H, Q}, {H}} : BondOrder{{Q}, {H}};
@@ -206,7 +206,7 @@ std::string bond_note(const Envelope& env, const LayoutSpec& spec, CourseBond bo
           ? "courses of stretchers and of headers by turns, a face's header course meeting the "
             "next face's stretcher course at each corner"
           : "headers and stretchers by turns in every course",
-      (env.depth - spec.joint) / 2, env.depth, spec.module_w);
+      queen_closer(env.depth, spec.joint), env.depth, spec.module_w);
   int corners = 0;
   for (const SurfaceFrame& f : env.facades) corners += turns(f);
   if (bond == CourseBond::english && env.closed && corners % 2 == 1)
@@ -221,6 +221,7 @@ std::string bond_note(const Envelope& env, const LayoutSpec& spec, CourseBond bo
 
 Coursing course_envelope(const Envelope& env, const LayoutSpec& spec, CourseBond bond) {
   Coursing c;
+  c.bond = bond;
   bool sliver = false;
   CourseLayer layer(env, spec, bond, sliver);
   for (int64_t r = 0; r < env.courses; ++r) {

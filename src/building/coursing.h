@@ -42,8 +42,9 @@ struct CourseUnit {
 };
 
 struct Coursing {
-  std::vector<CourseUnit> units;   // course by course, along the strip
-  std::vector<std::string> notes;  // how each corner is built, and what had to be cut
+  CourseBond bond = CourseBond::stretcher;  // what the units were laid in
+  std::vector<CourseUnit> units;            // course by course, along the strip
+  std::vector<std::string> notes;           // how each corner is built, and what had to be cut
 };
 
 // Units of `length` (the spec's module_w) and `depth` (a header's width on the face), with the
@@ -54,6 +55,9 @@ Coursing course_envelope(const Envelope& env, const LayoutSpec& spec, CourseBond
 // the corners at its ends, in either course of the bond, or a corner is too sharp for a unit
 // to turn (its header would reach past the unit's length to the mitre).
 void check_corner_room(const Envelope& env, const LayoutSpec& spec);
+
+// A queen closer's width: half a header (the unit's `depth` on the face) less half a joint.
+inline double queen_closer(double depth, double joint) { return (depth - joint) / 2; }
 
 // What a corner is: "outer", "inner" or "bend" (no corner), by its turn in degrees.
 const char* corner_kind(double turn);

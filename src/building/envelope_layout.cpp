@@ -12,7 +12,7 @@ namespace {
 constexpr double kEps = 1e-6;
 }  // namespace
 
-void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing, CourseBond bond,
+void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
                   const std::vector<uint16_t>& values, const LayoutSpec& spec) {
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
   // Above a façade lower than the wall: no units, drawn as paper.
@@ -27,6 +27,7 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
   layout.omitted = 0;
   layout.frames = env.facades;
   layout.closed_envelope = env.closed;
+  const CourseBond bond = coursing.bond;
   layout.bond = bond == CourseBond::stack     ? 0
                 : bond == CourseBond::third   ? 1.0 / 3
                 : bond == CourseBond::quarter ? 0.25

@@ -12,9 +12,9 @@
 
 namespace curdle {
 
-// Replaces `layout`'s elements (laid on the strip's grid, with its openings) by the units of
-// `coursing`, `values` being the view's cells (x fastest) as the grid had them.
-void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing, CourseBond bond,
+// Lays the units of `coursing`, in its bond, on `layout` (the strip's surface and openings,
+// builder.h's lay_surface), `values` being the view's cells (x fastest).
+void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
                   const std::vector<uint16_t>& values, const LayoutSpec& spec);
 
 // How corners and the closing seam fall against the stage grid, for the report: each corner's

@@ -63,7 +63,7 @@ void FacadeKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
   // A queen closer is half a header less half a joint: a header no wider than a few joints
   // leaves none to cut.
   if ((keys.bond == CourseBond::english || keys.bond == CourseBond::flemish) && keys.envelope) {
-    const double queen = (keys.envelope->depth - spec.joint) / 2;
+    const double queen = queen_closer(keys.envelope->depth, spec.joint);
     if (queen < 20)
       r.fail(
           "bond",
@@ -85,8 +85,7 @@ Layout FacadeKind::build(const Design& design, const CurdField& field, const Box
   if (!keys.envelope) return SurfaceKind::build(design, field, view, spec);
   const Envelope& env = *keys.envelope;
   Layout layout = lay_surface(view, spec, env.openings);
-  lay_envelope(layout, env, course_envelope(env, spec, keys.bond), keys.bond,
-               values_in(field, view), spec);
+  lay_envelope(layout, env, course_envelope(env, spec, keys.bond), values_in(field, view), spec);
   report_open_area(layout, layout.openings_given);
   count_values(layout, design, spec);
   const std::vector<std::string> grid = corner_grid_notes(layout, design);

@@ -167,12 +167,9 @@ std::array<int64_t, 2> plan_key(const Point& p) {
   return {std::llround(p[0] * 1e4), std::llround(-p[2] * 1e4)};
 }
 
-// The boundary of the lowest horizontal faces: edges that one such face has, chained into
-// loops; empty where they do not chain into one closed outline.
-std::vector<Contour> footprint(const std::vector<std::array<Point, 3>>& triangles) {
-  double low = 1e300;
-  for (const auto& t : triangles)
-    for (const Point& p : t) low = std::min(low, p[1]);
+// The boundary of the horizontal faces at level `low` (the lowest): edges that one such face
+// has, chained into loops; empty where they do not chain into one closed outline.
+std::vector<Contour> footprint(const std::vector<std::array<Point, 3>>& triangles, double low) {
   std::map<std::pair<std::array<int64_t, 2>, std::array<int64_t, 2>>, int> edges;
   for (const auto& t : triangles) {
     bool flat = true;
@@ -277,15 +274,15 @@ Drawing read_gltf(std::string_view bytes, const std::string& file) {
     if (triangles.empty()) continue;
     const tinygltf::Node& n = model.nodes[static_cast<size_t>(root)];
     const std::string layer = n.name.empty() ? fmt::format("node {}", root) : n.name;
-    const std::vector<Contour> loops = footprint(triangles);
+    double low = 1e300, high = -1e300;
+    for (const auto& t : triangles)
+      for (const Point& p : t) low = std::min(low, p[1]), high = std::max(high, p[1]);
+    const std::vector<Contour> loops = footprint(triangles, low);
     if (loops.size() != 1) {
       d.notes.push_back(fmt::format("{}: its lowest faces are {} outline", layer,
                                     loops.empty() ? "not one closed" : "more than one"));
       continue;
     }
-    double low = 1e300, high = -1e300;
-    for (const auto& t : triangles)
-      for (const Point& p : t) low = std::min(low, p[1]), high = std::max(high, p[1]);
     Shape s;
     s.layer = layer;
     s.entity = "mesh";
