@@ -206,8 +206,8 @@ void add_bed(Scene& sc) {
 }
 
 // A perforated sheet: one solid with its openings as holes, drawn as the sheet less the
-// squares of its tiled openings and a shared tile per diameter in each (sheet_tiles.h), and a
-// named node per opening.
+// squares of its tiled openings and a shared tile per diameter or merged shape in each
+// (sheet_tiles.h), and a named node per opening.
 void add_sheet(Scene& sc) {
   const Layout& layout = sc.layout;
   ModelBuilder& b = sc.b;
@@ -228,23 +228,49 @@ void add_sheet(Scene& sc) {
   tinygltf::Node node;
   node.name = "sheet";
   node.mesh = b.add_mesh("sheet", {b.primitive(p, n, idx, metal)});
-  std::map<double, int> tile_mesh;  // by diameter
+  auto tile_mesh = [&](const OpeningTile& tile, const std::string& name) {
+    std::vector<Vec3> tp, tn;
+    std::vector<uint32_t> ti;
+    add_caps(layout.kind->upright(), tile.triangles, 0, t, tp, tn, ti);
+    add_walls(layout.kind->upright(), {tile.hole}, 0, t, tp, tn, ti);
+    return b.add_mesh(name, {b.primitive(tp, tn, ti, metal)});
+  };
+  std::map<double, int> round_tiles;  // by diameter
+  // Merged openings by their ring from the box's corner, to a nanometre: one shape, one mesh.
+  std::map<std::vector<std::array<double, 2>>, int> merged_tiles;
   for (const size_t i : tiles.tiled) {
     stop_point();
-    const Circle& c = *layout.elements[i].circle;
-    auto it = tile_mesh.find(c.d);
-    if (it == tile_mesh.end()) {
-      const OpeningTile tile = opening_tile(c.d, layout.chord_tolerance);
-      std::vector<Vec3> tp, tn;
-      std::vector<uint32_t> ti;
-      add_caps(layout.kind->upright(), tile.triangles, 0, t, tp, tn, ti);
-      add_walls(layout.kind->upright(), {tile.hole}, 0, t, tp, tn, ti);
-      const std::string name = fmt::format("sheet round a {:g} mm opening", c.d);
-      it = tile_mesh.emplace(c.d, b.add_mesh(name, {b.primitive(tp, tn, ti, metal)})).first;
+    const Element& e = layout.elements[i];
+    int mesh = -1;
+    std::array<double, 2> corner{};
+    if (e.outline) {
+      const Ring& ring = e.outline->rings[0];
+      corner = outline_corner(ring);
+      std::vector<std::array<double, 2>> shape;
+      for (const auto& [x, y] : ring)
+        shape.push_back({std::round((x - corner[0]) * 1e6), std::round((y - corner[1]) * 1e6)});
+      auto it = merged_tiles.find(shape);
+      if (it == merged_tiles.end())
+        it = merged_tiles
+                 .emplace(std::move(shape),
+                          tile_mesh(outline_tile(ring), fmt::format("sheet round merged opening {}",
+                                                                    merged_tiles.size() + 1)))
+                 .first;
+      mesh = it->second;
+    } else {
+      const Circle& c = *e.circle;
+      corner = {c.cx, c.cy};
+      auto it = round_tiles.find(c.d);
+      if (it == round_tiles.end())
+        it = round_tiles
+                 .emplace(c.d, tile_mesh(opening_tile(c.d, layout.chord_tolerance),
+                                         fmt::format("sheet round a {:g} mm opening", c.d)))
+                 .first;
+      mesh = it->second;
     }
     tinygltf::Node part;
-    part.mesh = it->second;
-    const Vec3 at = to_gltf(layout, c.cx, c.cy, 0);
+    part.mesh = mesh;
+    const Vec3 at = to_gltf(layout, corner[0], corner[1], 0);
     part.translation = {at[0], at[1], at[2]};
     node.children.push_back(b.add_node(std::move(part)));
   }

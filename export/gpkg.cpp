@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <future>
 #include <mutex>
 #include <stdexcept>
 
@@ -16,33 +17,58 @@ namespace {
 // user's to mend), 2 GDAL failed.
 using WriteFn = int (*)(const char* path, const GisDataset* data, std::string* error);
 
-WriteFn module(std::string* failure) {
-  static WriteFn write = nullptr;
-  static std::string why;
-  static std::once_flag once;
-  std::call_once(once, [] {
-    void* handle = load_curdle_module(CURDLE_GPKG_MODULE_NAME, &why);
-    if (!handle) {
-      why +=
-          "; it is built where GDAL's development files are (Debian: libgdal-dev, which "
-          "setup.sh installs)";
-      return;
-    }
-    write = reinterpret_cast<WriteFn>(::dlsym(handle, "curdle_gpkg_write"));
-    if (!write) why = "the GeoPackage module " CURDLE_GPKG_MODULE_NAME " lacks its entry point";
-  });
-  if (failure) *failure = why;
-  return write;
+constexpr const char* kBuiltWhere =
+    "; it is built where GDAL's development files are (Debian: libgdal-dev, which setup.sh "
+    "installs)";
+
+struct Loaded {
+  WriteFn write = nullptr;
+  std::string why;
+};
+
+Loaded load() {
+  Loaded out;
+  void* handle = load_curdle_module(CURDLE_GPKG_MODULE_NAME, &out.why);
+  if (!handle) {
+    out.why += kBuiltWhere;
+    return out;
+  }
+  out.write = reinterpret_cast<WriteFn>(::dlsym(handle, "curdle_gpkg_write"));
+  if (!out.write)
+    out.why = "the GeoPackage module " CURDLE_GPKG_MODULE_NAME " lacks its entry point";
+  return out;
+}
+
+// GDAL and the hundred libraries it maps take a tenth of a second to load: once the module is
+// found, it loads on a thread of its own while the curds are laid, and the writer waits for it.
+std::shared_future<Loaded>& loading() {
+  static std::shared_future<Loaded> loaded;
+  return loaded;
+}
+std::mutex loading_mutex;
+
+std::shared_future<Loaded> start_loading() {
+  std::lock_guard lock(loading_mutex);
+  if (!loading().valid()) loading() = std::async(std::launch::async, load).share();
+  return loading();
 }
 
 }  // namespace
 
-bool gpkg_installed(std::string* why) { return module(why) != nullptr; }
+bool gpkg_installed(std::string* why) {
+  std::string failure;
+  if (find_curdle_module(CURDLE_GPKG_MODULE_NAME, &failure).empty()) {
+    if (why) *why = failure + kBuiltWhere;
+    return false;
+  }
+  start_loading();
+  return true;
+}
 
 void write_layout_gpkg(const std::filesystem::path& path, const Layout& layout) {
-  std::string why;
-  const WriteFn write = module(&why);
-  if (!write) throw std::runtime_error("cannot write layout.gpkg: " + why);
+  const Loaded& loaded = start_loading().get();
+  const WriteFn write = loaded.write;
+  if (!write) throw std::runtime_error("cannot write layout.gpkg: " + loaded.why);
   // A sink may hand over an empty file it made to hold the name (mkstemp); GDAL creates the
   // GeoPackage itself and will not write over a file.
   std::error_code ec;

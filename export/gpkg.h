@@ -12,7 +12,9 @@
 
 namespace curdle {
 
-// Whether the GeoPackage module can be loaded; when not, `why` says what to install.
+// Whether the GeoPackage module is installed; when not, `why` says what to install. When it is,
+// it starts loading in the background, for write_layout_gpkg, which fails with the loader's
+// reason if it will not load.
 bool gpkg_installed(std::string* why);
 
 // Writes `path` (which must not exist). Throws InputError when layout.georef's EPSG code is not

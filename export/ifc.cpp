@@ -296,7 +296,7 @@ class IfcModel {
   }
   int64_t opening_shape(const Element& e) {
     std::vector<int64_t> curves;
-    for (const Ring& ring : opening_rings(e)) curves.push_back(g_.polyline(ring));
+    for (const Ring& ring : opening_rings(e)) curves.push_back(g_.shared_polyline(ring));
     const int64_t rep = add(fmt::format("IFCSHAPEREPRESENTATION({},'Profile','Curve2D',{})",
                                         ref(profile_context_), step_refs(curves)));
     return add(fmt::format("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep)));

@@ -62,6 +62,15 @@ int64_t IfcGeometryWriter::polyline(const Ring& ring) {
   return add("IFCPOLYLINE(" + step_refs(points) + ")");
 }
 
+int64_t IfcGeometryWriter::shared_polyline(const Ring& ring) {
+  std::vector<std::array<int64_t, 2>> shape;
+  for (const auto& [x, y] : ring)
+    shape.push_back({std::llround((x - local_[0]) * 1e6), std::llround((y - local_[1]) * 1e6)});
+  auto it = shared_polylines_.find(shape);
+  if (it != shared_polylines_.end()) return it->second;
+  return shared_polylines_[std::move(shape)] = polyline(ring);
+}
+
 int64_t IfcGeometryWriter::rectangle(const Rect& r) {
   const int64_t at =
       add(fmt::format("IFCAXIS2PLACEMENT2D({},$)", ref(point(r.x + r.w / 2, r.y + r.h / 2))));

@@ -30,6 +30,9 @@ class IfcGeometryWriter {
   int64_t direction(double x, double y, double z);
   // A closed polyline through the ring's points, relative to the local origin.
   int64_t polyline(const Ring& ring);
+  // The same, written once for every ring of that shape from its local origin (to a nanometre):
+  // the openings of a screen, each placed at its own corner, share a few outlines.
+  int64_t shared_polyline(const Ring& ring);
 
   // Profiles.
   int64_t rectangle(const Rect& r);
@@ -65,6 +68,7 @@ class IfcGeometryWriter {
   std::map<double, int64_t> bases_;
   std::map<std::array<double, 3>, int64_t> directions_;  // axes' directions, written once each
   std::map<uint32_t, int64_t> styles_;
+  std::map<std::vector<std::array<int64_t, 2>>, int64_t> shared_polylines_;
 };
 
 // A circle as a polygon within `chord_tolerance`, as the DXF and glTF draw it, with corners at

@@ -40,7 +40,7 @@ std::vector<fs::path> candidates(const std::string& name) {
 
 }  // namespace
 
-void* load_curdle_module(const std::string& file_name, std::string* failure) {
+std::string find_curdle_module(const std::string& file_name, std::string* failure) {
   std::string tried;
   std::vector<fs::path> seen;
   for (const fs::path& path : candidates(file_name)) {
@@ -48,16 +48,19 @@ void* load_curdle_module(const std::string& file_name, std::string* failure) {
     if (std::find(seen.begin(), seen.end(), place) != seen.end()) continue;
     seen.push_back(place);
     std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-      tried += (tried.empty() ? "" : ", ") + place.string();
-      continue;
-    }
-    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle) *failure = "cannot load " + path.string() + ": " + ::dlerror();
-    return handle;
+    if (fs::is_regular_file(path, ec)) return path.string();
+    tried += (tried.empty() ? "" : ", ") + place.string();
   }
   *failure = "the module " + file_name + " is not installed (looked in " + tried + ")";
-  return nullptr;
+  return {};
+}
+
+void* load_curdle_module(const std::string& file_name, std::string* failure) {
+  const std::string path = find_curdle_module(file_name, failure);
+  if (path.empty()) return nullptr;
+  void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) *failure = "cannot load " + path + ": " + ::dlerror();
+  return handle;
 }
 
 }  // namespace curdle

@@ -14,4 +14,8 @@ namespace curdle {
 // were tried, or why it did not load.
 void* load_curdle_module(const std::string& file_name, std::string* failure);
 
+// Where load_curdle_module would load `file_name` from, without loading it; empty when it is
+// nowhere, `failure` then saying which places were tried.
+std::string find_curdle_module(const std::string& file_name, std::string* failure);
+
 }  // namespace curdle

@@ -57,6 +57,10 @@ std::string filtered_rows(const PreviewImage& image) {
   return out;
 }
 
+// zlib's level 3: a third of level 6's time on a layout's drawing for files about a sixth
+// larger (a perforated screen's 13 MB of pixels: 28 ms and 462 KB, against 79 ms and 394 KB).
+constexpr int kLevel = 3;
+
 }  // namespace
 
 std::string encode_png(const PreviewImage& image, double dpi) {
@@ -82,7 +86,7 @@ std::string encode_png(const PreviewImage& image, double dpi) {
   std::string compressed(size, '\0');
   if (compress2(reinterpret_cast<Bytef*>(compressed.data()), &size,
                 reinterpret_cast<const Bytef*>(raw.data()), static_cast<uLong>(raw.size()),
-                6) != Z_OK)
+                kLevel) != Z_OK)
     throw std::runtime_error("cannot encode a PNG: zlib could not compress it");
   compressed.resize(size);
   chunk(png, "IDAT", compressed);

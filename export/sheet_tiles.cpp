@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "curdle/stop.h"
+#include "layout/triangulation.h"
+#include "layout/zone.h"
 
 namespace curdle {
 namespace {
@@ -17,6 +19,37 @@ struct Square {
 Square square_of(const Circle& c) {
   const double r = c.d / 2;
   return {c.cx - r, c.cy - r, c.cx + r, c.cy + r};
+}
+
+// A merged opening's box: the least rectangle round its one ring.
+Square box_of(const Ring& ring) {
+  Square s{ring[0][0], ring[0][1], ring[0][0], ring[0][1]};
+  for (const auto& [x, y] : ring)
+    s = {std::min(s.x0, x), std::min(s.y0, y), std::max(s.x1, x), std::max(s.y1, y)};
+  return s;
+}
+
+// Whether a ring runs along its box's side anywhere (more than touching it at a point): the
+// tile's triangulation could not tell the two apart there.
+bool runs_along_its_box(const Ring& ring) {
+  const Square b = box_of(ring);
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const auto& p = ring[i];
+    const auto& q = ring[(i + 1) % ring.size()];
+    if ((p[0] == q[0] && (p[0] == b.x0 || p[0] == b.x1)) ||
+        (p[1] == q[1] && (p[1] == b.y0 || p[1] == b.y1)))
+      return true;
+  }
+  return false;
+}
+
+// An opening drawn as a tile: a round one, or a merged one of a single ring that meets its box
+// only at points (as circles' unions do).
+bool tileable(const Element& e) {
+  if (e.outline)
+    return e.outline->rings.size() == 1 && e.outline->rings[0].size() >= 3 &&
+           !runs_along_its_box(e.outline->rings[0]);
+  return e.circle && e.circle->d > 0;
 }
 
 // Whether the segment a-b meets the square grown by `gap` (Liang-Barsky clipping).
@@ -47,22 +80,25 @@ Ring clockwise_square(const Square& s) {
 
 SheetTiles sheet_tiles(const Layout& layout, const std::vector<Ring>& sheet) {
   SheetTiles out;
-  std::vector<size_t> round;          // candidates: round openings, by the left of their squares
+  std::vector<size_t> round;          // candidates, by the left of their squares or boxes
   std::vector<const Ring*> edges_of;  // rings whose edges a tile's square must keep clear of
   for (const Ring& r : sheet) edges_of.push_back(&r);
   for (size_t i = 0; i < layout.elements.size(); ++i) {
     const Element& e = layout.elements[i];
-    if (e.outline) {
+    if (tileable(e)) {
+      round.push_back(i);
+    } else if (e.outline) {
       for (const Ring& r : e.outline->rings) {
         edges_of.push_back(&r);
         out.holes.push_back(r);
         std::reverse(out.holes.back().begin(), out.holes.back().end());
       }
-    } else if (e.circle && e.circle->d > 0) {
-      round.push_back(i);
     }
   }
-  auto square = [&](size_t i) { return square_of(*layout.elements[i].circle); };
+  auto square = [&](size_t i) {
+    const Element& e = layout.elements[i];
+    return e.outline ? box_of(e.outline->rings[0]) : square_of(*e.circle);
+  };
   std::sort(round.begin(), round.end(),
             [&](size_t a, size_t b) { return square(a).x0 < square(b).x0; });
   // A gap a little over the coordinates' rounding keeps squares from sharing an edge, which
@@ -82,8 +118,9 @@ SheetTiles sheet_tiles(const Layout& layout, const std::vector<Ring>& sheet) {
   std::vector<double> lefts(round.size());
   double most = 0;
   for (size_t k = 0; k < round.size(); ++k) {
-    lefts[k] = square(round[k]).x0;
-    most = std::max(most, layout.elements[round[k]].circle->d);
+    const Square s = square(round[k]);
+    lefts[k] = s.x0;
+    most = std::max(most, s.x1 - s.x0);
   }
   for (const Ring* ring : edges_of)
     for (size_t i = 0; i < ring->size(); ++i) {
@@ -99,6 +136,11 @@ SheetTiles sheet_tiles(const Layout& layout, const std::vector<Ring>& sheet) {
     if (clear[k]) {
       out.squares.push_back(clockwise_square(square(round[k])));
       out.tiled.push_back(round[k]);
+      continue;
+    }
+    if (e.outline) {  // a merged opening that is not a tile: its ring, clockwise
+      out.holes.push_back(e.outline->rings[0]);
+      std::reverse(out.holes.back().begin(), out.holes.back().end());
       continue;
     }
     const OpeningTile tile = opening_tile(e.circle->d, layout.chord_tolerance);
@@ -140,6 +182,22 @@ OpeningTile opening_tile(double d, double tolerance) {
   }
   tile.hole.assign(ccw.rbegin(), ccw.rend());
   return tile;
+}
+
+OpeningTile outline_tile(const Ring& ring) {
+  const Square box = box_of(ring);
+  OpeningTile tile;
+  for (const auto& [x, y] : ring) tile.hole.push_back({x - box.x0, y - box.y0});
+  if (signed_area(tile.hole) > 0) std::reverse(tile.hole.begin(), tile.hole.end());
+  const Ring square{
+      {0, 0}, {box.x1 - box.x0, 0}, {box.x1 - box.x0, box.y1 - box.y0}, {0, box.y1 - box.y0}};
+  tile.triangles = triangulate({square, tile.hole});
+  return tile;
+}
+
+std::array<double, 2> outline_corner(const Ring& ring) {
+  const Square box = box_of(ring);
+  return {box.x0, box.y0};
 }
 
 }  // namespace curdle

@@ -2,8 +2,10 @@
 // so the glTF draws each as one shared tile (the square of sheet round the opening, with its
 // hole) placed at the opening, and cuts only the tiles' squares from the sheet. Triangulating
 // the sheet with thousands of round holes was three quarters of a screen's layout.glb, in time
-// and in bytes. An opening whose square would touch another's, the sheet's edge or a merged
-// opening stays a round hole of the sheet itself, so that the solid is the same either way.
+// and in bytes. A merged opening of one ring is a tile too, in its box: the same circles merge
+// the same way in every cell, so a screen has a few such shapes however many openings. An
+// opening whose square (or box) would touch another's or the sheet's edge stays a hole of the
+// sheet itself, so that the solid is the same either way.
 #pragma once
 
 #include <array>
@@ -15,7 +17,7 @@
 namespace curdle {
 
 struct SheetTiles {
-  std::vector<Ring> holes;    // cut from the sheet, with walls: merged and untiled openings
+  std::vector<Ring> holes;    // cut from the sheet, with walls: the openings not drawn as tiles
   std::vector<Ring> squares;  // cut from the sheet without walls: the tiles fill them
   std::vector<size_t> tiled;  // indices in layout.elements of the openings drawn as tiles
 };
@@ -33,5 +35,10 @@ struct OpeningTile {
   Ring hole;
 };
 OpeningTile opening_tile(double d, double tolerance);
+
+// The tile of a merged opening of one ring: the triangles between its box and its ring, and
+// the ring, clockwise, both from the box's lower-left corner, which outline_corner gives.
+OpeningTile outline_tile(const Ring& ring);
+std::array<double, 2> outline_corner(const Ring& ring);
 
 }  // namespace curdle

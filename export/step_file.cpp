@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -34,15 +35,22 @@ std::string step_string(std::string_view text) {
 std::string step_real(double v) {
   if (!std::isfinite(v)) throw std::logic_error("a STEP real must be finite");
   if (v == 0) return "0.";
-  std::array<char, 32> buffer{};
-  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), v).ptr;
-  std::string s(buffer.data(), end);
-  const size_t e = s.find('e');
-  std::string mantissa = s.substr(0, e), exponent = e == std::string::npos ? "" : s.substr(e + 1);
-  if (mantissa.find('.') == std::string::npos) mantissa += '.';
-  if (exponent.empty()) return mantissa;
-  if (exponent[0] == '+') exponent.erase(0, 1);
-  return mantissa + "E" + exponent;
+  // The shortest digits that read back as v, with the point STEP requires and E for the
+  // exponent: 1 is "1.", 1e-07 is "1.E-07" (written in place: a screen's IFC has a million).
+  std::array<char, 40> buffer{};
+  char* const first = buffer.data();
+  char* end = std::to_chars(first, first + 32, v).ptr;
+  char* e = std::find(first, end, 'e');
+  if (std::find(first, e, '.') == e) {  // no point: open one before the exponent
+    std::copy_backward(e, end, end + 1);
+    *e++ = '.';
+    ++end;
+  }
+  if (e != end) {
+    *e = 'E';
+    if (e[1] == '+') end = std::copy(e + 2, end, e + 1);
+  }
+  return std::string(first, end);
 }
 
 std::string step_refs(const std::vector<int64_t>& ids) {
@@ -90,10 +98,26 @@ StepWriter::StepWriter(std::ostream& out, const std::string& file_name, const st
 }
 
 int64_t StepWriter::add(std::string_view text) {
-  out_ << '#' << next_ << '=' << text << ";\n";
+  // Through a buffer of our own: five stream inserts per entity were a tenth of the file's time.
+  std::array<char, 24> id{};
+  id[0] = '#';
+  char* end = std::to_chars(id.data() + 1, id.data() + id.size() - 1, next_).ptr;
+  *end++ = '=';
+  buffer_.append(id.data(), end);
+  buffer_ += text;
+  buffer_ += ";\n";
+  if (buffer_.size() >= kFlushAt) flush();
   return next_++;
 }
 
-void StepWriter::finish() { out_ << "ENDSEC;\nEND-ISO-10303-21;\n"; }
+void StepWriter::flush() {
+  out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  buffer_.clear();
+}
+
+void StepWriter::finish() {
+  buffer_ += "ENDSEC;\nEND-ISO-10303-21;\n";
+  flush();
+}
 
 }  // namespace curdle

@@ -29,12 +29,15 @@ class StepWriter {
              const std::string& view);
   // Writes "#n=TEXT;" and returns n. `text` is an entity such as "IFCCARTESIANPOINT((0.,0.))".
   int64_t add(std::string_view text);
-  // Ends the data section and the file.
+  // Ends the data section and the file, and writes out what is still held.
   void finish();
   int64_t count() const { return next_ - 1; }
 
  private:
+  static constexpr size_t kFlushAt = 1 << 16;
+  void flush();
   std::ostream& out_;
+  std::string buffer_;  // entities not yet handed to the stream
   int64_t next_ = 1;
 };
 

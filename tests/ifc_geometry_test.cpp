@@ -57,5 +57,28 @@ TEST(IfcGeometry, APieceInPartsIsOneCompositeProfileAndHolesRunClockwise) {
   EXPECT_NE(text.find("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,"), std::string::npos);
 }
 
+TEST(IfcGeometry, RingsOfOneShapeFromTheirCornersShareOnePolyline) {
+  std::ostringstream out;
+  StepWriter w(out, "t.ifc", "IFC4", "ReferenceView_V1.2");
+  IfcGeometryWriter g(w, 0.1);
+  const Ring ring = ifc_circle_ring(Circle{116, 216, 32}, 0.05);
+  Ring moved = ring;
+  for (auto& [x, y] : moved) x += 4000.1, y -= 1234.7;  // the same opening elsewhere
+  g.set_local_origin(100, 200);
+  const int64_t first = g.shared_polyline(ring);
+  g.set_local_origin(4100.1, 200 - 1234.7);
+  EXPECT_EQ(g.shared_polyline(moved), first);
+  // Another shape, or the same one from another corner, is a polyline of its own.
+  EXPECT_NE(g.shared_polyline(ifc_circle_ring(Circle{4116.1, 216 - 1234.7, 30}, 0.05)), first);
+  g.set_local_origin(4000, 200 - 1234.7);
+  EXPECT_NE(g.shared_polyline(moved), first);
+  w.finish();
+  size_t polylines = 0;
+  for (size_t at = out.str().find("IFCPOLYLINE("); at != std::string::npos;
+       at = out.str().find("IFCPOLYLINE(", at + 1))
+    ++polylines;
+  EXPECT_EQ(polylines, 3u);
+}
+
 }  // namespace
 }  // namespace curdle

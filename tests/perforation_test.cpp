@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
+#include "layout/union.h"
 #include "layout_support.h"
 
 namespace curdle {
@@ -136,6 +139,25 @@ TEST(Perforation, MixMakesOneOpeningOfTheSummedAreaAndKeepCutsTheUnion) {
     EXPECT_GT(e.area(), one * 1.2);
   }
   EXPECT_TRUE(merged);
+  // The union is worked out once per set of curds and moved to each cell: every opening of a
+  // value has the same outline from its cell's centre, and the area CGAL gives for it there.
+  std::map<uint32_t, const Element*> first;
+  for (const Element& e : keep.layout.elements) {
+    if (!e.outline) continue;
+    const Element* f = first.emplace(e.value, &e).first->second;
+    const double dx = e.nominal.x - f->nominal.x, dy = e.nominal.y - f->nominal.y;
+    ASSERT_EQ(e.outline->rings.size(), f->outline->rings.size()) << e.id;
+    for (size_t r = 0; r < e.outline->rings.size(); ++r) {
+      ASSERT_EQ(e.outline->rings[r].size(), f->outline->rings[r].size()) << e.id;
+      for (size_t i = 0; i < e.outline->rings[r].size(); ++i) {
+        EXPECT_NEAR(e.outline->rings[r][i][0], f->outline->rings[r][i][0] + dx, 1e-6) << e.id;
+        EXPECT_NEAR(e.outline->rings[r][i][1], f->outline->rings[r][i][1] + dy, 1e-6) << e.id;
+      }
+    }
+    EXPECT_NEAR(e.area(), union_of_circles(circles_of(e, keep.spec), 0.01).front().area, 1e-6)
+        << e.id;
+  }
+  EXPECT_GT(first.size(), 1u);
   // Nothing dropped, one opening a cell: the legend's openings are the cells of each value;
   // the bare sheet (value 0) is drawn, not counted.
   const auto counts = value_counts(curdle(mix.design, 3, mix.design.field));

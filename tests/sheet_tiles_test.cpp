@@ -80,5 +80,43 @@ TEST(SheetTiles, OpeningsClearOfEachOtherAndOfEdgesAreTilesTheRestStayHoles) {
   for (const Ring& h : tiles.holes) EXPECT_LT(signed_area(h), 0);
 }
 
+TEST(SheetTiles, AMergedOpeningClearOfTheRestIsATileOfItsBoxLessItsRing) {
+  Layout layout;
+  layout.width = 1000;
+  layout.height = 500;
+  Element merged;  // a diamond with a notch: it meets its box at four points
+  const Ring ring{{530, 200}, {560, 230}, {530, 260}, {500, 230}, {520, 230}};
+  merged.outline = Outline{{ring}, 1500};
+  layout.elements.push_back(merged);                       // 0: alone: a tile of its box
+  layout.elements.push_back(round_opening(100, 100, 20));  // 1: alone: a round tile
+  Element touching = merged;
+  for (auto& [x, y] : touching.outline->rings[0]) x += 200;
+  layout.elements.push_back(touching);                     // 2: its box meets 3's square
+  layout.elements.push_back(round_opening(770, 270, 20));  // 3
+  Element along;                                           // 4: an L along two sides of its box
+  along.outline =
+      Outline{{{{300, 300}, {360, 300}, {360, 330}, {330, 330}, {330, 360}, {300, 360}}}, 2700};
+  layout.elements.push_back(along);
+  const std::vector<Ring> sheet{{{0, 0}, {1000, 0}, {1000, 500}, {0, 500}}};
+  const SheetTiles tiles = sheet_tiles(layout, sheet);
+  EXPECT_EQ(tiles.tiled, (std::vector<size_t>{0, 1}));
+  ASSERT_EQ(tiles.holes.size(), 3u);  // the second merged opening, the round one by it, the L
+  for (const Ring& h : tiles.holes) EXPECT_LT(signed_area(h), 0);
+  double squares = 0;
+  for (const Ring& s : tiles.squares) squares -= signed_area(s);
+  EXPECT_NEAR(squares, 3600 + 400, 1e-9);  // the merged opening's box and the round one's
+  // The tile: from its box's corner, the box less the ring, and the ring clockwise.
+  EXPECT_EQ(outline_corner(ring), (std::array<double, 2>{500, 200}));
+  const OpeningTile tile = outline_tile(ring);
+  double face = 0;
+  for (const auto& t : tile.triangles) {
+    const double a = signed_area(Ring{t[0], t[1], t[2]});
+    EXPECT_GT(a, 0);
+    face += a;
+  }
+  EXPECT_NEAR(face, 3600 - 1500, 1e-9);
+  EXPECT_NEAR(signed_area(tile.hole), -1500, 1e-9);
+}
+
 }  // namespace
 }  // namespace curdle

@@ -39,10 +39,10 @@ controls.addEventListener("change", () => {
 });
 controls.minDistance = 0.2;
 let model = null;
-let loading = null;
+let loading = 0;  // the latest model asked for
 // What the page's tests read: the model shown, how much of the picture it covers, the eye's
 // height over the model's lowest point.
-window.view3d = { src: null, loads: 0, drawn: 0, error: null, pointOnElement,
+window.view3d = { src: null, loads: 0, drawn: 0, error: null, readIn: null, pointOnElement, model: () => model,
                   eyeAboveGround: () => camera.position.y - ground };
 
 function size() {
@@ -158,19 +158,128 @@ renderer.domElement.addEventListener("click", (event) => {
   info.dataset.id = e ? e.id : "";
 });
 
+// layout.glb is fetched and read in a worker (glb_worker.js); here the three.js objects are
+// made from its arrays a slice at a time, yielding to the page between slices, so that a 2-D
+// redraw that arrives meanwhile is drawn at once.
+const glbWorker = new Worker("glb_worker.js");
+const glbWaiting = new Map();
+let glbIds = 0;
+glbWorker.onmessage = ({ data }) => {
+  const waiting = glbWaiting.get(data.id);
+  glbWaiting.delete(data.id);
+  if (waiting) waiting(data);
+};
+function fetchGlb(src) {
+  for (const [id, waiting] of glbWaiting) waiting({ id, aborted: true });
+  glbWaiting.clear();
+  const id = ++glbIds;
+  return new Promise((resolve) => {
+    glbWaiting.set(id, resolve);
+    glbWorker.postMessage({ id, url: new URL(src, location.href).href });
+  });
+}
+
+const SLICE_MS = 6;
+const yieldToPage = () =>
+  globalThis.scheduler && scheduler.yield ? scheduler.yield() : new Promise((r) => setTimeout(r, 0));
+
+function material(m) {
+  const made = new THREE.MeshStandardMaterial({
+    metalness: m.metallic, roughness: m.roughness, opacity: m.colour[3],
+    transparent: m.blend, depthWrite: !m.blend, side: m.doubleSided ? THREE.DoubleSide : THREE.FrontSide });
+  made.color.setRGB(m.colour[0], m.colour[1], m.colour[2], THREE.LinearSRGBColorSpace);
+  made.name = m.name;
+  return made;
+}
+
+// Each mesh's primitives as [geometry, material] pairs, sharing the worker's buffer.
+function meshParts(scene, buffer) {
+  const materials = scene.materials.map(material);
+  const fallback = new THREE.MeshStandardMaterial({ metalness: 1, roughness: 1 });
+  const parts = [];
+  const rows = scene.primitives;
+  const INDEX = { 5121: Uint8Array, 5123: Uint16Array, 5125: Uint32Array };
+  for (let r = 0; r < rows.length; r += 9) {
+    const [m, po, pc, no, io, ic, it, mat] = rows.subarray(r, r + 8);
+    const g = new THREE.BufferGeometry();
+    g.setAttribute("position", new THREE.BufferAttribute(new Float32Array(buffer, po, pc * 3), 3));
+    if (no >= 0) g.setAttribute("normal", new THREE.BufferAttribute(new Float32Array(buffer, no, pc * 3), 3));
+    if (io >= 0) g.setIndex(new THREE.BufferAttribute(new INDEX[it](buffer, io, ic), 1));
+    const used = mat >= 0 ? materials[mat] : fallback;
+    if (no < 0) used.flatShading = true;
+    (parts[m] ||= []).push([g, used]);
+  }
+  return parts;
+}
+
+// The model as three.js's loader would make it: a node with one primitive is that mesh, one
+// with several a group of them; names and extras (userData) as the glb has them. Null when a
+// newer model was asked for meanwhile.
+async function buildModel(scene, buffer, stillWanted) {
+  const parts = meshParts(scene, buffer);
+  const root = new THREE.Group();
+  root.userData = JSON.parse(scene.sceneExtras);
+  const made = new Array(scene.mesh.length);
+  let deadline = performance.now() + SLICE_MS;
+  for (let i = 0; i < made.length; ++i) {
+    const own = scene.mesh[i] >= 0 ? parts[scene.mesh[i]] || [] : [];
+    let o;
+    if (own.length === 1) o = new THREE.Mesh(own[0][0], own[0][1]);
+    else {
+      o = new THREE.Group();
+      for (const [g, m] of own) o.add(new THREE.Mesh(g, m));
+    }
+    if (scene.names[i]) {
+      o.name = THREE.PropertyBinding.sanitizeNodeName(scene.names[i]);
+      o.userData.name = scene.names[i];
+    }
+    if (scene.extras[i]) Object.assign(o.userData, JSON.parse(scene.extras[i]));
+    o.matrix.fromArray(scene.matrix, i * 16);
+    o.matrix.decompose(o.position, o.quaternion, o.scale);
+    (scene.parent[i] < 0 ? root : made[scene.parent[i]]).add(o);
+    made[i] = o;
+    if ((i & 127) === 127 && performance.now() > deadline) {
+      await yieldToPage();
+      if (!stillWanted()) return null;
+      deadline = performance.now() + SLICE_MS;
+    }
+  }
+  return root;
+}
+
+// The GPU's copies of a model no longer shown.
+function dispose(root) {
+  root.traverse((o) => {
+    if (!o.isMesh) return;
+    o.geometry.dispose();
+    for (const m of [].concat(o.material)) m.dispose();
+  });
+}
+
 async function show(src) {
   if (!src || window.view3d.src === src) return;
-  if (loading) loading.abort();
-  loading = new AbortController();
+  const wanted = ++loading;
+  const stillWanted = () => wanted === loading;
   caption.textContent = "Loading the layout in 3-D…";
   box.classList.add("stale");
   try {
-    const response = await fetch(src, { signal: loading.signal });
-    if (!response.ok) throw new Error((await response.json()).error || response.statusText);
-    const bytes = await response.arrayBuffer();
-    const gltf = await new GLTFLoader().parseAsync(bytes, "");
-    if (model) scene.remove(model);
-    model = gltf.scene;
+    const answer = await fetchGlb(src);
+    if (answer.aborted || !stillWanted()) return;
+    if (answer.error) throw new Error(answer.error);
+    let root;
+    if (answer.scene) {
+      root = await buildModel(answer.scene, answer.buffer, stillWanted);
+      window.view3d.readIn = "worker";
+    } else {
+      root = (await new GLTFLoader().parseAsync(answer.buffer, "")).scene;
+      window.view3d.readIn = "page: " + answer.unsupported;
+    }
+    if (!root || !stillWanted()) return;
+    if (model) {
+      scene.remove(model);
+      dispose(model);
+    }
+    model = root;
     scene.add(model);
     size();
     frame(model);
@@ -184,7 +293,6 @@ async function show(src) {
       "The same layout.glb in 3-D: drag to turn (the eye stays above ground), scroll to zoom, " +
       "click an element; Reset view goes back to this view";
   } catch (err) {
-    if (err.name === "AbortError") return;
     window.view3d.error = String(err.message || err);
     caption.textContent = "The layout could not be shown in 3-D: " + window.view3d.error;
   }

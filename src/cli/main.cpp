@@ -11,6 +11,7 @@
 #include "cli/generate_command.h"
 #include "cli/interrupt.h"
 #include "cli/measure_command.h"
+#include "cli/memory_reuse.h"
 #include "cli/options.h"
 #include "cli/search_command.h"
 #include "cli/serve_command.h"
@@ -94,6 +95,7 @@ int run(int argc, char** argv) {
 }  // namespace curdle::cli
 
 int main(int argc, char** argv) {
+  curdle::cli::keep_freed_memory_for_reuse();
   curdle::cli::remove_staged_files_on_interrupt();
   return curdle::cli::exit_code([&] { return curdle::cli::run(argc, argv); });
 }

@@ -125,12 +125,36 @@ void summarise_sheets(Layout& layout, const LayoutSpec& spec) {
                                        layout.sheets.size(), 100 * least, 100 * most));
 }
 
+// Each group of circles as seen from its cell's centre, and the union of that group there: every
+// cell with the same curds has the same merged opening, so CGAL's union runs once per shape
+// instead of once per cell (thousands of times on a perforated screen).
+using UnionsByShape = std::map<std::vector<std::array<double, 3>>, Outline>;
+
+Outline merged_outline(const std::vector<Circle>& group, double cx, double cy, double tolerance,
+                       UnionsByShape& unions) {
+  std::vector<std::array<double, 3>> shape;
+  // To a nanometre, so that one shape is one key wherever its cell lies.
+  auto nm = [](double v) { return std::round(v * 1e6) / 1e6; };
+  for (const Circle& c : group) shape.push_back({nm(c.cx - cx), nm(c.cy - cy), c.d});
+  auto [it, added] = unions.try_emplace(shape);
+  if (added) {
+    std::vector<Circle> centred;
+    for (const auto& [x, y, d] : shape) centred.push_back(Circle{x, y, d});
+    it->second = union_of_circles(centred, tolerance).front();
+  }
+  Outline placed = it->second;
+  for (Ring& ring : placed.rings)
+    for (auto& [x, y] : ring) x += cx, y += cy;
+  return placed;
+}
+
 // The openings of each cell: its curds' circles, those that overlap merged (mix) or joined
 // (keep), in laying order.
 std::vector<Hole> make_holes(const std::vector<Element>& cells, const Design& design,
                              const LayoutSpec& spec) {
   const PerforationKeys& keys = spec.own<PerforationKeys>();
   std::vector<Hole> holes;
+  UnionsByShape unions;
   for (const Element& cell : cells) {
     if (cell.value == 0) continue;
     const double cx = cell.nominal.x + cell.nominal.w / 2, cy = cell.nominal.y + cell.nominal.h / 2;
@@ -166,7 +190,7 @@ std::vector<Hole> make_holes(const std::vector<Element>& cells, const Design& de
         h.element.circle = *whole;  // the others lie inside it: the union is that circle
         h.parts = {*whole};
       } else {
-        h.element.outline = union_of_circles(group, keys.chord_tolerance).front();
+        h.element.outline = merged_outline(group, cx, cy, keys.chord_tolerance, unions);
         h.parts = group;
       }
       holes.push_back(std::move(h));

@@ -203,6 +203,34 @@ try {
   await shown3d('107,77,67,67');
   const drawn = await page.evaluate(() => window.view3d.drawn);
   check(drawn > 0.2, `the 3-D view draws the segment's layout.glb (${(drawn * 100).toFixed(0)} % of the picture)`);
+  // The model is read in the page's worker, and is what three.js's own loader makes of the same
+  // bytes: every element by name, with its extras, world box and material.
+  const sameAsLoader = await page.evaluate(async () => {
+    const THREE = await import('three');
+    const { GLTFLoader } = await import('three/addons/loaders/GLTFLoader.js');
+    const bytes = await (await fetch(window.view3d.src)).arrayBuffer();
+    const theirs = (await new GLTFLoader().parseAsync(bytes, '')).scene;
+    const describe = (root) => {
+      root.updateMatrixWorld(true);
+      const out = [];
+      root.traverse((o) => {
+        if (!o.userData || o.userData.value === undefined) return;
+        const b = new THREE.Box3().setFromObject(o);
+        const mats = [];
+        o.traverse((m) => { if (m.isMesh) mats.push(m.material.name + '#' + m.material.color.getHexString()); });
+        out.push([o.name, JSON.stringify(o.userData), ...b.min.toArray(), ...b.max.toArray()]
+          .map((v) => (typeof v === 'number' ? v.toFixed(5) : v)).join(' ') + ' ' + mats.join(','));
+      });
+      return out.sort();
+    };
+    const a = describe(window.view3d.model()), b = describe(theirs);
+    const differ = a.findIndex((line, i) => line !== b[i]);
+    return { readIn: window.view3d.readIn, count: a.length, same: a.length === b.length && differ < 0,
+             first: differ < 0 ? '' : `${a[differ]} | ${b[differ]}` };
+  });
+  check(sameAsLoader.readIn === 'worker' && sameAsLoader.same && sameAsLoader.count > 100,
+        `the 3-D view reads layout.glb in its worker (${sameAsLoader.readIn}), into the same ${sameAsLoader.count} elements ` +
+        `as three.js's loader: names, extras, boxes and materials ${sameAsLoader.first}`);
   await page.evaluate(() => document.querySelector('#view3d').scrollIntoView({ block: 'center' }));
   const target = await page.evaluate(() => window.view3d.pointOnElement());
   check(!!target, 'an element of the 3-D view can be found under the pointer');
