@@ -105,6 +105,18 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
                             z.contour.empty() ? polygon_area(z.polygon) : contour_area(z.contour),
                             std::vector<uint64_t>(values, 0), 0, z.contour});
   if (spec.zones.empty()) return;
+  // Each zone's box, a little grown: a piece clear of it is clear of the zone, without going
+  // round the zone's edges (a surveyed tree pit has hundreds, and a site thousands of pieces).
+  std::vector<Rect> near;
+  for (const Zone& z : spec.zones) {
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const auto& [x, y] : z.polygon)
+      x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+    const double grow = std::max(1e-3, 1e-6 * std::max(x1 - x0, y1 - y0));  // over kEps
+    near.push_back(z.polygon.empty() ? Rect{}
+                                     : Rect{x0 - grow, y0 - grow, x1 - x0 + 2 * grow,
+                                            y1 - y0 + 2 * grow});
+  }
   for (Element& e : layout.elements) {
     stop_point();
     // The laid piece's centre: an end piece cut at the edge has its centre on the surface.
@@ -113,6 +125,7 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
     std::vector<size_t> holding;
     for (size_t i = 0; i < spec.zones.size(); ++i) {
       const Zone& z = spec.zones[i];
+      if (z.rects.empty() && !overlaps(near[i], e.nominal) && !overlaps(near[i], laid)) continue;
       if (z.rule == ZoneRule::exclude && e.cut &&
           (z.rects.empty() ? crossing(e.nominal, z.polygon) == Crossing::boundary
                            : std::any_of(z.rects.begin(), z.rects.end(),
