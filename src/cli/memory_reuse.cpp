@@ -8,7 +8,6 @@ void keep_freed_memory_for_reuse() {
   // Each call only tunes the allocator; a libc without these options ignores them.
   mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest: half its 64 MB heap
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  mallopt(M_TOP_PAD, 16 << 20);
 }
 
 }  // namespace curdle::cli
