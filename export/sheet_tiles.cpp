@@ -80,13 +80,13 @@ Ring clockwise_square(const Square& s) {
 
 SheetTiles sheet_tiles(const Layout& layout, const std::vector<Ring>& sheet) {
   SheetTiles out;
-  std::vector<size_t> round;          // candidates, by the left of their squares or boxes
+  std::vector<size_t> candidates;     // candidates, by the left of their squares or boxes
   std::vector<const Ring*> edges_of;  // rings whose edges a tile's square must keep clear of
   for (const Ring& r : sheet) edges_of.push_back(&r);
   for (size_t i = 0; i < layout.elements.size(); ++i) {
     const Element& e = layout.elements[i];
     if (tileable(e)) {
-      round.push_back(i);
+      candidates.push_back(i);
     } else if (e.outline) {
       for (const Ring& r : e.outline->rings) {
         edges_of.push_back(&r);
@@ -99,26 +99,26 @@ SheetTiles sheet_tiles(const Layout& layout, const std::vector<Ring>& sheet) {
     const Element& e = layout.elements[i];
     return e.outline ? box_of(e.outline->rings[0]) : square_of(*e.circle);
   };
-  std::sort(round.begin(), round.end(),
+  std::sort(candidates.begin(), candidates.end(),
             [&](size_t a, size_t b) { return square(a).x0 < square(b).x0; });
   // A gap a little over the coordinates' rounding keeps squares from sharing an edge, which
   // would leave the sheet's face a polygon whose holes touch.
   const double gap = 1e-6 * std::max({layout.width, layout.height, 1.0});
-  std::vector<char> clear(round.size(), 1);
-  for (size_t a = 0; a < round.size(); ++a) {
+  std::vector<char> clear(candidates.size(), 1);
+  for (size_t a = 0; a < candidates.size(); ++a) {
     stop_point();
-    const Square sa = square(round[a]);
-    for (size_t b = a + 1; b < round.size(); ++b) {
-      const Square sb = square(round[b]);
+    const Square sa = square(candidates[a]);
+    for (size_t b = a + 1; b < candidates.size(); ++b) {
+      const Square sb = square(candidates[b]);
       if (sb.x0 > sa.x1 + gap) break;
       if (sb.y0 <= sa.y1 + gap && sa.y0 <= sb.y1 + gap) clear[a] = clear[b] = 0;
     }
   }
   // Each edge against the squares its x range spans, found by bisection on their left sides.
-  std::vector<double> lefts(round.size());
+  std::vector<double> lefts(candidates.size());
   double most = 0;
-  for (size_t k = 0; k < round.size(); ++k) {
-    const Square s = square(round[k]);
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const Square s = square(candidates[k]);
     lefts[k] = s.x0;
     most = std::max(most, s.x1 - s.x0);
   }
@@ -128,14 +128,14 @@ SheetTiles sheet_tiles(const Layout& layout, const std::vector<Ring>& sheet) {
       const auto& q = (*ring)[(i + 1) % ring->size()];
       const double x0 = std::min(p[0], q[0]) - gap - most, x1 = std::max(p[0], q[0]) + gap;
       for (size_t k = std::lower_bound(lefts.begin(), lefts.end(), x0) - lefts.begin();
-           k < round.size() && lefts[k] <= x1; ++k)
-        if (clear[k] && segment_meets(p, q, square(round[k]), gap)) clear[k] = 0;
+           k < candidates.size() && lefts[k] <= x1; ++k)
+        if (clear[k] && segment_meets(p, q, square(candidates[k]), gap)) clear[k] = 0;
     }
-  for (size_t k = 0; k < round.size(); ++k) {
-    const Element& e = layout.elements[round[k]];
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const Element& e = layout.elements[candidates[k]];
     if (clear[k]) {
-      out.squares.push_back(clockwise_square(square(round[k])));
-      out.tiled.push_back(round[k]);
+      out.squares.push_back(clockwise_square(square(candidates[k])));
+      out.tiled.push_back(candidates[k]);
       continue;
     }
     if (e.outline) {  // a merged opening that is not a tile: its ring, clockwise

@@ -113,9 +113,9 @@ void apply_zones(Layout& layout, const LayoutSpec& spec, size_t values) {
     for (const auto& [x, y] : z.polygon)
       x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
     const double grow = std::max(1e-3, 1e-6 * std::max(x1 - x0, y1 - y0));  // over kEps
-    near.push_back(z.polygon.empty() ? Rect{}
-                                     : Rect{x0 - grow, y0 - grow, x1 - x0 + 2 * grow,
-                                            y1 - y0 + 2 * grow});
+    near.push_back(z.polygon.empty()
+                       ? Rect{}
+                       : Rect{x0 - grow, y0 - grow, x1 - x0 + 2 * grow, y1 - y0 + 2 * grow});
   }
   for (Element& e : layout.elements) {
     stop_point();
