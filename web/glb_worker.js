@@ -6,8 +6,7 @@
 // trees with matrices or TRS and extras. Anything else is answered with `unsupported`, and the
 // page falls back to three.js's own loader.
 "use strict";
-
-let current = null;
+importScripts("worker_fetch.js");
 
 class Unsupported extends Error {}
 
@@ -118,32 +117,14 @@ function trs(node) {
   ];
 }
 
-self.onmessage = async ({ data }) => {
-  if (current) current.abort();
-  const controller = new AbortController();
-  current = controller;
-  const { id, url } = data;
+answerLatest((id, buffer) => {
   try {
-    const response = await fetch(url, { signal: controller.signal });
-    const buffer = await response.arrayBuffer();
-    if (!response.ok) {
-      let text = `request failed (${response.status})`;
-      try { text = JSON.parse(new TextDecoder().decode(buffer)).error || text; } catch (err) { /* not JSON */ }
-      self.postMessage({ id, error: text });
-      return;
-    }
-    try {
-      const { json, binStart } = chunks(buffer);
-      const scene = { materials: materials(json), primitives: primitiveRows(json, binStart, buffer), ...nodes(json) };
-      self.postMessage({ id, scene, buffer }, [buffer, scene.parent.buffer, scene.mesh.buffer,
-                                               scene.matrix.buffer, scene.primitives.buffer]);
-    } catch (err) {
-      if (!(err instanceof Unsupported)) throw err;
-      self.postMessage({ id, unsupported: err.message, buffer }, [buffer]);
-    }
+    const { json, binStart } = chunks(buffer);
+    const scene = { materials: materials(json), primitives: primitiveRows(json, binStart, buffer), ...nodes(json) };
+    self.postMessage({ id, scene, buffer }, [buffer, scene.parent.buffer, scene.mesh.buffer,
+                                             scene.matrix.buffer, scene.primitives.buffer]);
   } catch (err) {
-    if (err.name !== "AbortError") self.postMessage({ id, error: String(err.message || err) });
-  } finally {
-    if (current === controller) current = null;
+    if (!(err instanceof Unsupported)) throw err;
+    self.postMessage({ id, unsupported: err.message, buffer }, [buffer]);
   }
-};
+});
