@@ -14,7 +14,7 @@ packages=(
   cmake g++ make pkg-config
   libcgal-dev libopenimageio-dev libtinygltf-dev libtomlplusplus-dev libcli11-dev
   libfmt-dev nlohmann-json3-dev libexpat1-dev libdxflib-dev libsvgpp-dev libxml2-dev librandom123-dev libtbb-dev libcpp-httplib-dev libgtest-dev libbenchmark-dev
-  libcairo2-dev fonts-dejavu-core zlib1g-dev
+  libcairo2-dev libpng-dev fonts-dejavu-core zlib1g-dev
   python3 python3-dev python3-numpy pybind11-dev
 )
 if ! $main_only; then

@@ -1,7 +1,7 @@
-// Images in and out: PNG encoding (zlib, png_encoder.cpp) and reading any image OpenImageIO
-// reads. OpenImageIO (and the codecs it brings, over 250 shared libraries) lives in a module,
-// libcurdle_image.so, loaded the first time an image is read, so that commands that read no
-// image start at once.
+// Images in and out: PNG encoding (zlib, png_encoder.cpp), PNG reading (libpng, png_reader.h)
+// and reading any other image OpenImageIO reads. OpenImageIO (and the codecs it brings, over
+// 250 shared libraries) lives in a module, libcurdle_image.so, loaded the first time such an
+// image is read, so that commands that read none start at once.
 #pragma once
 
 #include <cstdint>
@@ -30,8 +30,9 @@ struct LuminanceImage {
 };
 inline constexpr size_t kMostFlatColours = 16;
 // Decoded by the reader of `format` ("png", "jpeg", "tiff", "bmp": what the bytes are, from
-// picture_gate.h), never by the file's name. Throws std::runtime_error with OpenImageIO's
-// message when the file cannot be read.
+// picture_gate.h), never by the file's name: PNG in process (png_reader.h), the others by
+// OpenImageIO's. Throws std::runtime_error with the reader's message when the file cannot be
+// read.
 LuminanceImage read_luminance(const std::filesystem::path& path, const char* format);
 
 // An image's size from its header, without decoding it (for memory guards).

@@ -36,12 +36,18 @@ done
 
 site=$(echo "$prefix"/lib/python3*/site-packages)
 PYTHONPATH=$site "$python" - "$prefix" "$recipe" "$tmp/python-out" <<'PY'
-import sys, curdle
+import struct, sys, curdle
 prefix, recipe, out = sys.argv[1:]
 assert curdle.__file__.startswith(prefix), curdle.__file__
 run = curdle.generate(recipe, seed=7)
 run.write(["preview.png"], out=out)
-curdle.measure(out + "/preview.png")
+curdle.measure(out + "/preview.png")  # a PNG, read in process
+# A BMP goes through the image module, which must be found in the installed tree.
+rows = bytes([0, 0, 0, 255, 255, 255, 0, 0]) * 2
+head = struct.pack("<2sIHHI", b"BM", 54 + len(rows), 0, 0, 54)
+info = struct.pack("<IiiHHIIiiII", 40, 2, 2, 1, 24, 0, len(rows), 2835, 2835, 0, 0)
+open(out + "/picture.bmp", "wb").write(head + info + rows)
+curdle.measure(out + "/picture.bmp")
 loaded = [l.split()[-1] for l in open("/proc/self/maps") if "curdle" in l and ".so" in l]
 libs = sorted(set(loaded))
 assert any(l.startswith(prefix + "/lib/libcurdle.so") for l in libs), libs

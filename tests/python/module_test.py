@@ -337,11 +337,16 @@ class MovedBuildTree(unittest.TestCase):
             subprocess.run(["cp", "-r", str(package), str(moved / "python")], check=True)
             for library in built.glob("libcurdle*.so*"):
                 subprocess.run(["cp", "-a", str(library), str(moved)], check=True)
+            # A BMP: PNGs are read in process, other formats through the image module.
             script = textwrap.dedent(f"""
-                import curdle, pathlib
+                import curdle, pathlib, struct
                 run = curdle.generate({str((SOURCE / "patterns/paper/fig3-two-curds.toml").resolve())!r})
                 pathlib.Path("p.png").write_bytes(run.output_bytes("preview.png"))
-                print(curdle.measure("p.png")["size"], curdle.__file__)
+                rows = bytes([0, 0, 0, 255, 255, 255, 0, 0]) * 2  # 2 x 2, 24 bits, rows of 8 bytes
+                head = struct.pack("<2sIHHI", b"BM", 54 + len(rows), 0, 0, 54)
+                info = struct.pack("<IiiHHIIiiII", 40, 2, 2, 1, 24, 0, len(rows), 2835, 2835, 0, 0)
+                pathlib.Path("p.bmp").write_bytes(head + info + rows)
+                print(curdle.measure("p.png")["size"], curdle.measure("p.bmp")["size"], curdle.__file__)
                 print([l.split()[-1] for l in open("/proc/self/maps") if "curdle_image" in l][0])
             """)
             out = subprocess.run([sys.executable, "-c", script], cwd=moved, text=True,

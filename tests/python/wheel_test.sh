@@ -21,6 +21,7 @@ $py -m venv --without-pip --system-site-packages "$work/venv"
 $py -m pip --python "$work/venv/bin/python" install --quiet --no-index --no-deps "$wheel"
 "$work/venv/bin/curdle" --version | grep -q "^curdle $("$work/venv/bin/python" -c 'import curdle; print(curdle.__version__)')"
 "$work/venv/bin/python" - "$src" <<'PY'
+import struct
 import sys
 from pathlib import Path
 import curdle
@@ -28,7 +29,13 @@ src = Path(sys.argv[1])
 assert Path(curdle.__file__).is_relative_to(Path(sys.prefix)), curdle.__file__
 run = curdle.generate(src / "patterns/paper/fig5a-park.toml")
 Path("preview.png").write_bytes(run.output_bytes("preview.png"))
-assert curdle.measure("preview.png")["size"], "the image module"
+assert curdle.measure("preview.png")["size"], "a PNG, read in process"
+# A BMP goes through the image module (OpenImageIO) beside libcurdle.so.
+rows = bytes([0, 0, 0, 255, 255, 255, 0, 0]) * 2
+head = struct.pack("<2sIHHI", b"BM", 54 + len(rows), 0, 0, 54)
+info = struct.pack("<IiiHHIIiiII", 40, 2, 2, 1, 24, 0, len(rows), 2835, 2835, 0, 0)
+Path("picture.bmp").write_bytes(head + info + rows)
+assert curdle.measure("picture.bmp")["size"], "the image module"
 assert run.output_bytes("layout.gpkg").startswith(b"SQLite format 3"), "the GeoPackage module"
 print(f"wheel: {run!r} from {curdle.__file__}")
 PY
