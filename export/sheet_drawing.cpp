@@ -12,6 +12,7 @@
 #include "layout/arc_setting_out.h"
 #include "layout/installer_sheets.h"
 #include "layout/piece.h"
+#include "layout/zone.h"
 
 namespace curdle::sheet_drawing {
 namespace {
@@ -263,19 +264,6 @@ void draw_hatches(cairo_t* cr, const Layout& layout, const View& v) {
   }
 }
 
-namespace {
-
-// The distance from p to the segment a-b.
-double off_segment(const std::array<double, 2>& p, const std::array<double, 2>& a,
-                   const std::array<double, 2>& b) {
-  const double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
-  const double t =
-      l2 > 0 ? std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2, 0.0, 1.0) : 0;
-  return std::hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
-}
-
-}  // namespace
-
 void add_rings(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {
   // Corners are left out while every one left out lies within a hundredth of a paper
   // millimetre of the line drawn past it: a round opening polygonised to a fraction of a
@@ -295,7 +283,7 @@ void add_rings(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {
       const std::array<double, 2> from = at(kept), to = at(i + 1);
       bool passes = i - kept < kRun;
       for (size_t j = kept + 1; passes && j <= i; ++j)
-        passes = off_segment(at(j), from, to) < kPaperTolerance;
+        passes = distance_to_segment(at(j), from, to) < kPaperTolerance;
       if (passes) continue;
       const std::array<double, 2> p = at(i);
       cairo_line_to(cr, p[0], p[1]);

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "layout_support.h"
 
 namespace curdle {
@@ -37,6 +39,13 @@ TEST(Geometry, SignedAreaAndAPointInsideARing) {
   ASSERT_TRUE(p);
   EXPECT_TRUE(contains(l, (*p)[0], (*p)[1]));
   EXPECT_FALSE(point_inside(Polygon{{0, 0}, {1, 1}}));
+}
+
+TEST(Geometry, DistanceToASegmentIsToItsNearestPointEndsIncluded) {
+  EXPECT_DOUBLE_EQ(distance_to_segment({5, 3}, {0, 0}, {10, 0}), 3);   // over its middle
+  EXPECT_DOUBLE_EQ(distance_to_segment({13, 4}, {0, 0}, {10, 0}), 5);  // past its end
+  EXPECT_DOUBLE_EQ(distance_to_segment({3, 4}, {1, 1}, {1, 1}), std::hypot(2, 3));  // a point
+  EXPECT_DOUBLE_EQ(distance_to_edges(Polygon{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, 4, 3), 3);
 }
 
 }  // namespace curdle

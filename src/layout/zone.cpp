@@ -182,16 +182,18 @@ bool passes_through(const std::array<double, 2>& a, const std::array<double, 2>&
 
 }  // namespace
 
+double distance_to_segment(const std::array<double, 2>& p, const std::array<double, 2>& a,
+                           const std::array<double, 2>& b) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
+  const double t =
+      length2 > 0 ? std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2, 0.0, 1.0) : 0.0;
+  return std::hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
+}
+
 double distance_to_edges(const Polygon& p, double x, double y) {
   double nearest = 1e300;
-  for (size_t i = 0; i < p.size(); ++i) {
-    const auto& a = p[i];
-    const auto& b = p[(i + 1) % p.size()];
-    const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
-    const double t =
-        length2 > 0 ? std::clamp(((x - a[0]) * dx + (y - a[1]) * dy) / length2, 0.0, 1.0) : 0.0;
-    nearest = std::min(nearest, std::hypot(a[0] + t * dx - x, a[1] + t * dy - y));
-  }
+  for (size_t i = 0; i < p.size(); ++i)
+    nearest = std::min(nearest, distance_to_segment({x, y}, p[i], p[(i + 1) % p.size()]));
   return nearest;
 }
 

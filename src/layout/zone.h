@@ -36,6 +36,9 @@ bool segment_meets(const std::array<double, 2>& a, const std::array<double, 2>& 
 
 // The distance from (x, y) to the polygon's nearest edge, inside or out.
 double distance_to_edges(const Polygon& polygon, double x, double y);
+// The distance from p to the segment a-b (to a when they coincide).
+double distance_to_segment(const std::array<double, 2>& p, const std::array<double, 2>& a,
+                           const std::array<double, 2>& b);
 
 // Where a rectangle lies against a polygon: wholly inside, wholly outside, or crossed by one of
 // its edges (an edge along the rectangle's side does not cross it).
