@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "export/picture_gate.h"
+#include "export/png_reader.h"
 
 namespace curdle {
 namespace {
@@ -49,9 +50,12 @@ LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const s
                                         std::to_string(header->height) + " pixels; at most " +
                                         std::to_string(max_pixels) + " pixels and " +
                                         std::to_string(max_side) + " a side; use a smaller image");
+  // A PNG is decoded in process from the bytes already read (png_reader.h); other formats by
+  // the OpenImageIO module from the file.
+  const bool png = header->format == PictureFormat::png;
   ImageSize size;
   try {
-    size = read_image_size(path, decoder_name(header->format));
+    size = png ? read_png_size(bytes) : read_image_size(path, decoder_name(header->format));
   } catch (const std::runtime_error& e) {
     throw InputError(where, "cannot read " + what + " " + name + ": " + reason(e) + readable);
   }
@@ -66,7 +70,7 @@ LuminanceImage read_bounded_luminance(const std::filesystem::path& path, const s
                    " MiB to read; at most " + std::to_string(max_pixels) + " pixels and " +
                    std::to_string(max_bytes >> 20) + " MiB; use a smaller image");
   try {
-    return read_luminance(path, decoder_name(header->format));
+    return png ? read_png_luminance(bytes) : read_luminance(path, decoder_name(header->format));
   } catch (const std::runtime_error& e) {
     throw InputError(where, "cannot read " + what + " " + name + ": " + reason(e) + readable);
   }

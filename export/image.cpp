@@ -2,14 +2,10 @@
 
 #include <dlfcn.h>
 
-#include <cstring>
-#include <fstream>
-#include <iterator>
 #include <mutex>
 #include <stdexcept>
 
 #include "export/module_loader.h"
-#include "export/png_reader.h"
 
 namespace fs = std::filesystem;
 
@@ -38,20 +34,9 @@ const ImageModule& module() {
   return loaded;
 }
 
-// A PNG's bytes, read in process (png_reader.h); the callers have bounded the file's size.
-std::string file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) throw std::runtime_error("cannot read " + path.string());
-  return bytes;
-}
-
-bool is_png(const char* format) { return std::strcmp(format, "png") == 0; }
-
 }  // namespace
 
 LuminanceImage read_luminance(const fs::path& path, const char* format) {
-  if (is_png(format)) return read_png_luminance(file_bytes(path));
   LuminanceImage image;
   std::string error;
   if (!module().read_luminance(path.c_str(), format, &image, &error))
@@ -60,7 +45,6 @@ LuminanceImage read_luminance(const fs::path& path, const char* format) {
 }
 
 ImageSize read_image_size(const fs::path& path, const char* format) {
-  if (is_png(format)) return read_png_size(file_bytes(path));
   ImageSize size;
   std::string error;
   if (!module().read_size(path.c_str(), format, &size, &error)) throw std::runtime_error(error);

@@ -30,9 +30,9 @@ struct LuminanceImage {
 };
 inline constexpr size_t kMostFlatColours = 16;
 // Decoded by the reader of `format` ("png", "jpeg", "tiff", "bmp": what the bytes are, from
-// picture_gate.h), never by the file's name: PNG in process (png_reader.h), the others by
-// OpenImageIO's. Throws std::runtime_error with the reader's message when the file cannot be
-// read.
+// picture_gate.h), never by the file's name, with OpenImageIO's reader (a PNG whose bytes are
+// in hand is read in process instead: png_reader.h). Throws std::runtime_error with the
+// reader's message when the file cannot be read.
 LuminanceImage read_luminance(const std::filesystem::path& path, const char* format);
 
 // An image's size from its header, without decoding it (for memory guards).
