@@ -1,4 +1,4 @@
-// PNG pictures read in process with libpng (already mapped: cairo links it), so that a mask or
+// PNG pictures read in process with libpng (one small library over zlib), so that a mask or
 // a picture in PNG, the usual case, does not load OpenImageIO and the 250 libraries it maps:
 // on a façade laid through a PNG mask that loading was 85 % of the whole run. The pixels are
 // what OpenImageIO's PNG reader gives (a palette as RGB, grey under 8 bits as 8, transparency

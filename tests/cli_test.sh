@@ -194,6 +194,19 @@ expect 0 "cells.csv skipped" generate "$plain" --set 'field.cells=[3200,3200]' -
 [ -f "$work/huge2/preview.png" ] && pass || fail "the other outputs should still be written"
 # Progress goes to a terminal only: not into this pipe.
 grep -q "%" "$work/stderr" && fail "progress printed into a pipe" || pass
+# Start-up maps only what every command needs: the drawing, SVG, image and GIS libraries load
+# when a drawing, an SVG, a picture or a GeoPackage is made or read, not before.
+local heavy='libcairo|libxml2|libOpenImageIO|libgdal'
+for args in "--help" "generate $plain --out $work/plain --outputs report.json"; do
+  # shellcheck disable=SC2086
+  LD_DEBUG=libs "$curdle" $args 2>"$work/libs" >/dev/null
+  grep -q "calling init" "$work/libs" || fail "LD_DEBUG printed no libraries for curdle $args"
+  grep -E "calling init: .*($heavy)" "$work/libs" && fail "curdle $args mapped a library it needs not" || pass
+done
+# ...and a drawing loads cairo then.
+LD_DEBUG=libs "$curdle" generate "$fig7" --out "$work/drawn" --outputs layout.pdf 2>"$work/libs" >/dev/null
+grep -qE "calling init: .*libcairo" "$work/libs" && pass || fail "layout.pdf was drawn without loading cairo"
+[ -s "$work/drawn/layout.pdf" ] && pass || fail "layout.pdf missing"
 }
 
 # Search: ranked seeds and segments, their previews and search.csv; the command printed for

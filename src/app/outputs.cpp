@@ -6,6 +6,7 @@
 
 #include "app/generated_run.h"
 #include "curdle/error.h"
+#include "export/cairo_on_demand.h"
 #include "export/cells_csv.h"
 #include "export/cutting.h"
 #include "export/drawing_set.h"
@@ -205,6 +206,7 @@ std::vector<Output> make_registry() {
        .description = "sheet 1 of layout.pdf as a picture: the layout at a standard scale on its "
                       "ISO sheet, with legend, scale bar and title block",
        .needs_layout = true,
+       .installed = cairo_installed,
        .memory =
            [](const Run& run) {
              // Selected only with a [layout], so the recipe has one.
@@ -221,6 +223,7 @@ std::vector<Output> make_registry() {
        .skip_above = 250'000,
        .size_unit = "elements",
        .size = view_cells,
+       .installed = cairo_installed,
        .write = write_layout_pdf_output});
   add({.name = "layout.glb",
        .description = "the layout as a glTF 2.0 scene in metres",
