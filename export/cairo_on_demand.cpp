@@ -89,6 +89,8 @@ CURDLE_CAIRO(void, cairo_font_options_set_hint_metrics,
              (options, hint_metrics))
 CURDLE_CAIRO(void, cairo_font_options_set_hint_style,
              (cairo_font_options_t * options, cairo_hint_style_t hint_style), (options, hint_style))
+CURDLE_CAIRO(int, cairo_format_stride_for_width, (cairo_format_t format, int width),
+             (format, width))
 CURDLE_CAIRO(void, cairo_get_current_point, (cairo_t * cr, double* x, double* y), (cr, x, y))
 CURDLE_CAIRO(cairo_pattern_t*, cairo_get_source, (cairo_t * cr), (cr))
 CURDLE_CAIRO(cairo_surface_t*, cairo_image_surface_create,

@@ -14,6 +14,7 @@
 #include "export/course_marks.h"
 #include "export/installer_drawing.h"
 #include "export/layout_png.h"
+#include "export/page_buffer.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
 #include "layout/arc_setting_out.h"
@@ -79,13 +80,15 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
     // The picture's own pixels, on whole pixels of the sheet.
     const double ppm = layout.drawing.dpi / 25.4;
     v.left = std::round(v.left * ppm) / ppm, v.top = std::round(v.top * ppm) / ppm;
-    std::vector<uint32_t> argb(static_cast<size_t>(raster->width) * raster->height);
-    for (size_t i = 0; i < argb.size(); ++i)
+    const size_t pixels = static_cast<size_t>(raster->width) * raster->height;
+    const PageBuffer buffer(pixels * 4);
+    uint32_t* argb = buffer.as<uint32_t>();
+    for (size_t i = 0; i < pixels; ++i)
       argb[i] = 0xff000000u | uint32_t{raster->rgb[3 * i]} << 16 |
                 uint32_t{raster->rgb[3 * i + 1]} << 8 | raster->rgb[3 * i + 2];
-    cairo_surface_t* image = cairo_image_surface_create_for_data(
-        reinterpret_cast<unsigned char*>(argb.data()), CAIRO_FORMAT_RGB24, raster->width,
-        raster->height, raster->width * 4);
+    cairo_surface_t* image =
+        cairo_image_surface_create_for_data(buffer.as<unsigned char>(), CAIRO_FORMAT_RGB24,
+                                            raster->width, raster->height, raster->width * 4);
     cairo_save(cr);
     cairo_translate(cr, v.left, v.top);
     cairo_scale(cr, 1 / ppm, 1 / ppm);
@@ -493,35 +496,66 @@ void write_layout_pdf(std::ostream& out, const Layout& layout, const InstallerPl
     throw std::runtime_error(std::string("layout.pdf: ") + cairo_status_to_string(status));
 }
 
-PreviewImage render_layout_sheet(const Layout& layout, const InstallerPlan& plan) {
+namespace {
+
+// Sheet 1 drawn by cairo into pixels of its own (17 MB at A3 and 150 dpi, zeroed as cairo's
+// are): 0x00RRGGBB words, `stride` bytes a row.
+struct SheetPixels {
+  PageBuffer pixels{0};
+  int width = 0, height = 0, stride = 0;
+
+  // Row y as RGB bytes.
+  void row(int y, uint8_t* rgb) const {
+    const unsigned char* data = pixels.as<unsigned char>() + static_cast<size_t>(y) * stride;
+    for (int x = 0; x < width; ++x, rgb += 3) {
+      uint32_t p;
+      std::memcpy(&p, data + 4 * x, 4);
+      rgb[0] = p >> 16 & 255, rgb[1] = p >> 8 & 255, rgb[2] = p & 255;
+    }
+  }
+};
+
+SheetPixels draw_sheet_one(const Layout& layout, const InstallerPlan& plan) {
   const OverviewSheet overview = overview_sheet(layout);
   const PreviewImage raster = render_layout(layout);
   const double ppm = layout.drawing.dpi / 25.4;
-  const int w = static_cast<int>(std::lround(
+  SheetPixels sheet;
+  sheet.width = static_cast<int>(std::lround(
       (overview.landscape ? overview.paper.long_side : overview.paper.short_side) * ppm));
-  const int h = static_cast<int>(std::lround(
+  sheet.height = static_cast<int>(std::lround(
       (overview.landscape ? overview.paper.short_side : overview.paper.long_side) * ppm));
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
+  sheet.stride = cairo_format_stride_for_width(CAIRO_FORMAT_RGB24, sheet.width);
+  sheet.pixels = PageBuffer(static_cast<size_t>(sheet.stride) * static_cast<size_t>(sheet.height));
+  cairo_surface_t* surface =
+      cairo_image_surface_create_for_data(sheet.pixels.as<unsigned char>(), CAIRO_FORMAT_RGB24,
+                                          sheet.width, sheet.height, sheet.stride);
   cairo_t* cr = cairo_create(surface);
   cairo_scale(cr, ppm, ppm);
   const size_t total = 1 + plan.sheets.size();  // "sheet 1 of n"
   draw_overview(cr, layout, overview, total, &raster);
   cairo_destroy(cr);
   cairo_surface_flush(surface);
-  PreviewImage image;
-  image.width = w, image.height = h;
-  image.rgb.resize(static_cast<size_t>(w) * h * 3);
-  const unsigned char* data = cairo_image_surface_get_data(surface);
-  const int stride = cairo_image_surface_get_stride(surface);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      uint32_t p;
-      std::memcpy(&p, data + static_cast<size_t>(y) * stride + 4 * x, 4);
-      uint8_t* o = &image.rgb[(static_cast<size_t>(y) * w + x) * 3];
-      o[0] = p >> 16 & 255, o[1] = p >> 8 & 255, o[2] = p & 255;
-    }
   cairo_surface_destroy(surface);
+  return sheet;
+}
+
+}  // namespace
+
+PreviewImage render_layout_sheet(const Layout& layout, const InstallerPlan& plan) {
+  const SheetPixels sheet = draw_sheet_one(layout, plan);
+  PreviewImage image;
+  image.width = sheet.width, image.height = sheet.height;
+  image.rgb.resize(static_cast<size_t>(sheet.width) * sheet.height * 3);
+  for (int y = 0; y < sheet.height; ++y)
+    sheet.row(y, &image.rgb[static_cast<size_t>(y) * sheet.width * 3]);
   return image;
+}
+
+std::string layout_sheet_png(const Layout& layout, const InstallerPlan& plan) {
+  const SheetPixels sheet = draw_sheet_one(layout, plan);
+  return encode_png(
+      sheet.width, sheet.height, [&](int y, uint8_t* rgb) { sheet.row(y, rgb); },
+      layout.drawing.dpi);
 }
 
 uint64_t layout_sheet_pixels(const LayoutSpec& spec) {

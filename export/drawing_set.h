@@ -9,6 +9,7 @@
 #pragma once
 
 #include <ostream>
+#include <string>
 
 #include "export/image.h"
 #include "layout/drawing_sheet.h"
@@ -33,6 +34,10 @@ void write_layout_pdf(std::ostream& out, const Layout& layout, const InstallerPl
 // Sheet 1 at layout.dpi, the layout itself as render_layout draws it (so that its pixels are
 // the same), everything else as in layout.pdf (whose sheets `plan` gives).
 PreviewImage render_layout_sheet(const Layout& layout, const InstallerPlan& plan);
+
+// layout.png's bytes: render_layout_sheet's pixels at layout.dpi, encoded as they are read off
+// the sheet rather than copied into a picture first.
+std::string layout_sheet_png(const Layout& layout, const InstallerPlan& plan);
 
 // Pixels of the sheet layout.png is for a layout of `spec`, known before it is built (the
 // layout's own picture on it is render_layout's: layout_png_pixels).

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,10 @@ struct PreviewImage {
 
 // The PNG file's bytes; `dpi` > 0 records the resolution so that it prints at size.
 std::string encode_png(const PreviewImage& image, double dpi = 0);
+// The same from rows made as they are needed: `rows(y, rgb)` fills row y's width * 3 bytes,
+// top row first, so that a picture held in another form (a cairo surface) is not copied whole.
+using PngRows = std::function<void(int y, uint8_t* rgb)>;
+std::string encode_png(int width, int height, const PngRows& rows, double dpi = 0);
 
 // An image's luminance (Rec. 709), row-major, top row first, from 0 (black) to 1 (white). A
 // colour picture of at most kMostFlatColours colours (a preview, a drawing) also keeps them:

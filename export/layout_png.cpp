@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 #include "curdle/error.h"
 #include "curdle/stop.h"
+#include "export/page_buffer.h"
 #include "export/svg.h"
 #include "layout/drawing_sheet.h"
 #include "layout/piece.h"
@@ -19,7 +19,8 @@ struct Canvas {
   int width, height;
   double px_per_mm;
   double layout_height;
-  std::unique_ptr<float[]> rgb;  // set once to the background: no zeroing pass before it
+  PageBuffer pixels{0};  // tens of MB for a sheet's layout: on pages of its own
+  float* rgb = nullptr;  // in `pixels`, set once to the background
   size_t size = 0;
 
   // Paints an axis-aligned rectangle (mm, y up) weighting each pixel by the share it covers.
@@ -162,7 +163,8 @@ PreviewImage render_layout(const Layout& layout) {
                          : layout.joint > 0 ? layout.joint_colour
                                             : seamless_background(layout);
   canvas.size = static_cast<size_t>(canvas.width) * canvas.height * 3;
-  canvas.rgb.reset(new float[canvas.size]);
+  canvas.pixels = PageBuffer(canvas.size * sizeof(float));
+  canvas.rgb = canvas.pixels.as<float>();
   for (size_t i = 0; i < canvas.size; i += 3)
     canvas.rgb[i] = background.r, canvas.rgb[i + 1] = background.g,
     canvas.rgb[i + 2] = background.b;

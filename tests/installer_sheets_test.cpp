@@ -262,6 +262,8 @@ TEST(LayoutSheet, IsSheetOneWithTheLayoutsOwnPixels) {
   const OverviewSheet sheet = overview_sheet(layout);
   EXPECT_EQ(sheet.paper.name, "A3");
   const PreviewImage png = render_layout_sheet(layout, plan_installer_sheets(layout));
+  // layout.png, encoded as its rows are read off the sheet, holds these very pixels.
+  EXPECT_EQ(layout_sheet_png(layout, plan_installer_sheets(layout)), encode_png(png, 50));
   EXPECT_EQ(png.width, static_cast<int>(std::lround(420 * 50 / 25.4)));
   EXPECT_EQ(png.height, static_cast<int>(std::lround(297 * 50 / 25.4)));
   // Every pixel of the layout's own picture is somewhere on the sheet, unchanged: find its

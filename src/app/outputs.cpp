@@ -76,8 +76,7 @@ void write_layout_svg_output(const OutputContext& c, OutputSink& sink) {
 }
 
 void write_layout_png(const OutputContext& c, OutputSink& sink) {
-  const std::string png =
-      encode_png(render_layout_sheet(*c.layout, c.installer_plan()), c.layout->drawing.dpi);
+  const std::string png = layout_sheet_png(*c.layout, c.installer_plan());
   sink.write("layout.png", [&](std::ostream& o) { o << png; });
 }
 
