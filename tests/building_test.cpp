@@ -15,7 +15,7 @@
 namespace curdle {
 namespace {
 
-BuildingKeys pavilion() {
+BuildingKeys pavilion_keys() {
   BuildingKeys keys;
   keys.plan =
       contour_of({{0, 0}, {20000, 0}, {20000, 6000}, {12000, 6000}, {12000, 12000}, {0, 12000}});
@@ -33,7 +33,7 @@ std::string refusal(const BuildingKeys& keys, const LayoutSpec& spec = test::bri
 }
 
 TEST(Building, OpeningsArePlacedOnTheStripByFacadeNameOrIndex) {
-  BuildingKeys keys = pavilion();
+  BuildingKeys keys = pavilion_keys();
   keys.openings = {{"E", Rect{900, 900, 1200, 1500}, "window"},
                    {"3", Rect{600, 0, 1000, 2100}, "door"}};
   const Envelope env = envelope_of(keys, test::bricks());
@@ -50,7 +50,7 @@ TEST(Building, OpeningsArePlacedOnTheStripByFacadeNameOrIndex) {
 }
 
 TEST(Building, ARuleSetsWindowsOnEveryFacadeAndStoreyClearOfTheCorners) {
-  BuildingKeys keys = pavilion();
+  BuildingKeys keys = pavilion_keys();
   keys.storey = 3525;
   keys.windows = WindowRule{{1200, 1500}, 3000, 900, 900};
   const Envelope env = envelope_of(keys, test::bricks());
@@ -64,7 +64,7 @@ TEST(Building, ARuleSetsWindowsOnEveryFacadeAndStoreyClearOfTheCorners) {
 }
 
 TEST(Building, StoreysOfDifferentHeightsSetEachStoreysWindowsFromItsOwnFloor) {
-  BuildingKeys keys = pavilion();
+  BuildingKeys keys = pavilion_keys();
   keys.storeys = {4200, 2850};  // a tall ground floor
   keys.windows = WindowRule{{1200, 1500}, 3000, 900, 900};
   const Envelope env = envelope_of(keys, test::bricks());
@@ -77,12 +77,12 @@ TEST(Building, StoreysOfDifferentHeightsSetEachStoreysWindowsFromItsOwnFloor) {
 }
 
 TEST(Building, BadBuildingsAreRefusedSayingWhatIsAllowed) {
-  BuildingKeys keys = pavilion();
+  BuildingKeys keys = pavilion_keys();
   keys.height = 7000;
   EXPECT_EQ(refusal(keys),
             "height: 7000 mm is not whole courses of 75 mm (a unit and its bed joint): 6975 mm "
             "(93 courses) or 7050 mm (94 courses) are");
-  keys = pavilion();
+  keys = pavilion_keys();
   keys.openings = {{"S", Rect{19500, 900, 1200, 1500}, "window"}};
   EXPECT_NE(refusal(keys).find("past its corner at 20000 mm"), std::string::npos);
   keys.openings = {{"S", Rect{900, 6000, 1200, 1500}, "window"}};
@@ -92,28 +92,28 @@ TEST(Building, BadBuildingsAreRefusedSayingWhatIsAllowed) {
   EXPECT_NE(refusal(keys).find("overlaps opening 0"), std::string::npos);
   keys.openings = {{"SE", Rect{900, 900, 1200, 1500}, "window"}};
   EXPECT_NE(refusal(keys).find("S, E, N, E2, N2, W"), std::string::npos);
-  keys = pavilion();
+  keys = pavilion_keys();
   keys.plan = contour_of({{0, 0}, {10000, 0}, {0, 10000}, {10000, 10000}});
   EXPECT_NE(refusal(keys).find("plan: crosses itself"), std::string::npos);
   keys.plan = contour_of({{0, 0}, {10000, 0}, {10000, 100}, {0, 100}});
   EXPECT_NE(refusal(keys).find("shorter than one unit"), std::string::npos);
-  keys = pavilion();
+  keys = pavilion_keys();
   keys.height = 750000;
   EXPECT_THROW((void)envelope_of(keys, test::bricks()), ResourceLimitError);
-  keys = pavilion();
+  keys = pavilion_keys();
   keys.heights = {7050, 7050, 3525};
   EXPECT_NE(refusal(keys).find("heights: gives 3 heights for 6 edges"), std::string::npos);
   keys.heights = {7050, 7050, 3500, 3525, 7050, 7050};
   EXPECT_NE(refusal(keys).find("heights: 3500 mm is not whole courses"), std::string::npos);
   keys.heights = {7050, 7125, 3525, 3525, 7050, 7050};
   EXPECT_NE(refusal(keys).find("above the wall's height of 7050 mm"), std::string::npos);
-  keys = pavilion();
+  keys = pavilion_keys();
   keys.depth = 300;
   EXPECT_NE(refusal(keys).find("depth"), std::string::npos);
 }
 
 TEST(Building, AFacadeIsFoundByNameOrIndex) {
-  const Envelope env = envelope_of(pavilion(), test::bricks());
+  const Envelope env = envelope_of(pavilion_keys(), test::bricks());
   EXPECT_EQ(facade_named(env.facades, "N2")->index, 4u);
   EXPECT_EQ(facade_named(env.facades, "4")->name, "N2");
   EXPECT_EQ(facade_named(env.facades, "Q"), nullptr);

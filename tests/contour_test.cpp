@@ -3,34 +3,33 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "layout/zone.h"
 
 namespace curdle {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // A disc of radius 700 at (5000, 4000) as CAD writes a circle in a polyline: two half turns.
 Contour disc() { return {{4300, 4000, 1}, {5700, 4000, 1}}; }
 
 TEST(ContourTest, BulgeGivesCentreRadiusAndSweep) {
   // A quarter turn counter-clockwise from (10, 0) to (0, 10) round the origin.
-  const Arc a = arc_between({10, 0, std::tan(kPi / 8)}, {0, 10, 0});
+  const Arc a = arc_between({10, 0, std::tan(std::numbers::pi / 8)}, {0, 10, 0});
   EXPECT_NEAR(a.radius, 10, 1e-12);
   EXPECT_NEAR(a.centre[0], 0, 1e-12);
   EXPECT_NEAR(a.centre[1], 0, 1e-12);
-  EXPECT_NEAR(a.sweep, kPi / 2, 1e-12);
+  EXPECT_NEAR(a.sweep, std::numbers::pi / 2, 1e-12);
   // Clockwise, the same chord swells the other way: its centre is (10, 10).
-  const Arc b = arc_between({10, 0, -std::tan(kPi / 8)}, {0, 10, 0});
+  const Arc b = arc_between({10, 0, -std::tan(std::numbers::pi / 8)}, {0, 10, 0});
   EXPECT_NEAR(b.centre[0], 10, 1e-12);
   EXPECT_NEAR(b.centre[1], 10, 1e-12);
-  EXPECT_NEAR(b.sweep, -kPi / 2, 1e-12);
-  EXPECT_NEAR(bulge_of_sweep(kPi), 1, 1e-12);
+  EXPECT_NEAR(b.sweep, -std::numbers::pi / 2, 1e-12);
+  EXPECT_NEAR(bulge_of_sweep(std::numbers::pi), 1, 1e-12);
 }
 
 TEST(ContourTest, AreaIsTheTrueArcs) {
-  EXPECT_NEAR(contour_area(disc()), kPi * 700 * 700, 1e-6);
+  EXPECT_NEAR(contour_area(disc()), std::numbers::pi * 700 * 700, 1e-6);
   // A 10 m chord with an arc dipping 1 m into a 10 x 9 m rectangle takes the segment away.
   const Contour arched{{0, 0, 0}, {10000, 0, 0}, {10000, 9000, -0.2}, {0, 9000, 0}};
   const Arc a = arc_between(arched[2], arched[3]);
@@ -71,7 +70,7 @@ TEST(ContourTest, BoundsReachWhereTheArcSwells) {
 
 TEST(ContourTest, ScalingKeepsArcs) {
   const Contour m = transformed(disc(), 0.001, -4.3, -4);  // the disc in metres, moved
-  EXPECT_NEAR(contour_area(m), kPi * 0.7 * 0.7, 1e-12);
+  EXPECT_NEAR(contour_area(m), std::numbers::pi * 0.7 * 0.7, 1e-12);
   EXPECT_EQ(arc_count(m), 2u);
   EXPECT_TRUE(has_arcs(m));
 }
@@ -87,7 +86,7 @@ TEST(ContourTest, FirstCrossingNamesWhereAnOutlineCrossesItself) {
   // A surveyed outline of 100,000 corners is checked in one pass of buckets.
   Polygon survey;
   for (int i = 0; i < 100000; ++i) {
-    const double t = 2 * kPi * i / 100000;
+    const double t = 2 * std::numbers::pi * i / 100000;
     survey.push_back({1e5 * std::cos(t) * (1 + 0.01 * std::sin(40 * t)), 1e5 * std::sin(t)});
   }
   EXPECT_FALSE(first_crossing(survey));

@@ -3,11 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace curdle::site {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double chord_miss(const std::vector<Point>& p, const std::function<double(const Point&)>& off) {
   double worst = 0;
@@ -18,9 +17,9 @@ double chord_miss(const std::vector<Point>& p, const std::function<double(const 
 
 TEST(CurvesTest, EllipseChordsStayWithinTheTolerance) {
   // 3 x 1 m, turned 30°, a whole turn.
-  const double c = std::cos(kPi / 6), s = std::sin(kPi / 6);
+  const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
   const std::vector<Point> p =
-      flatten_ellipse({100, 200}, {1500 * c, 1500 * s}, 1.0 / 3, 0, 2 * kPi, 0.1);
+      flatten_ellipse({100, 200}, {1500 * c, 1500 * s}, 1.0 / 3, 0, 2 * std::numbers::pi, 0.1);
   ASSERT_GT(p.size(), 16u);
   auto off = [&](const Point& q) {  // how far inside the ellipse, along its normal (near)
     const double x = (q[0] - 100) * c + (q[1] - 200) * s, y = -(q[0] - 100) * s + (q[1] - 200) * c;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "building/coursing.h"
 #include "building/facades.h"
@@ -17,8 +18,6 @@
 
 namespace curdle {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double area(const std::vector<std::array<double, 2>>& ring) {
   double a = 0;
@@ -81,7 +80,7 @@ TEST(FramedCorner, AnObtuseAndAnAcuteCornerMeetAtTheArrisAndTheMitre) {
     ++seen;
     const double at = f.start + f.length;
     const double a = at - e.nominal.x, b = e.nominal.right() - at;
-    const double turn = f.turn_at_end * kPi / 180;
+    const double turn = f.turn_at_end * std::numbers::pi / 180;
     EXPECT_NEAR(area(p->footprint), t * (a + b) - t * t * std::tan(turn / 2), 1e-6) << e.id;
     EXPECT_NEAR(triangles_area(p->footprint), area(p->footprint), 1e-6) << e.id;
     // The arris is the plan's corner; at the acute one the header reaches the mitre.

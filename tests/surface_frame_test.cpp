@@ -6,11 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace curdle {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(SurfaceFrame, AStraightFacadePlacesItsFaceAndTheInsideOnTheLeft) {
   SurfaceFrame south;  // from (0, 0) to (20000, 0): its outside looks south
@@ -28,8 +27,8 @@ TEST(SurfaceFrame, AnArcPlacesItsFaceOnTheCircleAndInsideTowardsTheCentre) {
   SurfaceFrame arc;
   arc.from = {12000, 0};
   arc.to = {0, 12000};
-  arc.bulge = std::tan(kPi / 8);
-  arc.length = 12000 * kPi / 2;
+  arc.bulge = std::tan(std::numbers::pi / 8);
+  arc.length = 12000 * std::numbers::pi / 2;
   const BuildingPoint mid = frame_point(arc, arc.length / 2, 0, 100);
   EXPECT_NEAR(std::hypot(mid[0], mid[1]), 11900, 1e-6);
   EXPECT_NEAR(mid[0], mid[1], 1e-6);

@@ -3,13 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "layout/contour.h"
 
 namespace curdle::site {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string svg(
     const std::string& body,
@@ -58,7 +57,7 @@ TEST(SvgReaderTest, CircularArcsStayArcsThroughTransforms) {
                              "site.svg", {});
   const Shape& pit = on(d, "PIT");
   EXPECT_EQ(arc_count(pit.path), pit.path.size());  // every edge an arc
-  EXPECT_NEAR(contour_area(pit.path), kPi * 100, 1e-9);
+  EXPECT_NEAR(contour_area(pit.path), std::numbers::pi * 100, 1e-9);
   const Shape& edge = on(d, "EDGE");
   EXPECT_FALSE(edge.closed);
   ASSERT_EQ(edge.path.size(), 2u);
@@ -77,7 +76,7 @@ TEST(SvgReaderTest, UnevenScalesAndBeziersAreFlattenedWithinTheTolerance) {
                              "site.svg", {0.01, 0});
   const Shape& e = on(d, "E");
   EXPECT_EQ(arc_count(e.path), 0u);
-  EXPECT_NEAR(contour_area(e.path), kPi * 10 * 5, 0.05 * 2 * kPi * 10);
+  EXPECT_NEAR(contour_area(e.path), std::numbers::pi * 10 * 5, 0.05 * 2 * std::numbers::pi * 10);
   for (const auto& v : e.path)  // on the ellipse (x - 20)²/100 + (y - 40)²/25 = 1
     EXPECT_NEAR(std::hypot((v.x - 20) / 10, (v.y - 40) / 5), 1, 1e-9);
   EXPECT_GT(on(d, "B").path.size(), 8u);

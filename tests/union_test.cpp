@@ -5,11 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace curdle {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(Union, PolygonisedCirclesStayWithinTheTolerance) {
   const Circle c{50, 20, 30};
@@ -33,8 +32,9 @@ TEST(Union, UnionsAndCutsKeepTheirAreas) {
   const double r = 10, d = 10;
   const double lens = 2 * r * r * std::acos(d / (2 * r)) - d / 2 * std::sqrt(4 * r * r - d * d);
   // Chords cut off at most the tolerance along the perimeter (under both circles' 2 pi r).
-  EXPECT_LE(two[0].area, 2 * kPi * r * r - lens);
-  EXPECT_NEAR(two[0].area, 2 * kPi * r * r - lens, 0.001 * 2 * 2 * kPi * r);
+  EXPECT_LE(two[0].area, 2 * std::numbers::pi * r * r - lens);
+  EXPECT_NEAR(two[0].area, 2 * std::numbers::pi * r * r - lens,
+              0.001 * 2 * 2 * std::numbers::pi * r);
   // Adjacent rectangles join into one; apart they stay two.
   EXPECT_EQ(union_of_rects({{0, 0, 10, 10}, {10, 0, 5, 10}}).size(), 1u);
   EXPECT_EQ(union_of_rects({{0, 0, 10, 10}, {20, 0, 5, 10}}).size(), 2u);
