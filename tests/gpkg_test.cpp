@@ -42,6 +42,7 @@ TEST(Gpkg, WritesAGeoPackageWithATablePerKind) {
   std::stringstream again_bytes;
   again_bytes << again.rdbuf();
   EXPECT_TRUE(again_bytes.str() == file);
+  std::filesystem::remove_all(dir);
 }
 
 // The server's downloads and the Python module's bytes go through a sink in memory.
@@ -67,6 +68,7 @@ TEST(Gpkg, ACrsThatIsNotProjectedInMetresIsRefusedByName) {
   }
   layout.georef = Georef{9999, 0, 0, 0};
   EXPECT_THROW(write_layout_gpkg(dir / "b.gpkg", layout), InputError);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
