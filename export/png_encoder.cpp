@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -39,6 +40,8 @@ std::string deflated_rows(int width, int height, const PngRows& rows) {
   z_stream z{};
   if (deflateInit(&z, kLevel) != Z_OK)
     throw std::runtime_error("cannot encode a PNG: zlib will not start");
+  // zlib's state is freed however the rows end (a row that throws included).
+  const std::unique_ptr<z_stream, int (*)(z_stream*)> end_deflate(&z, deflateEnd);
   const size_t stride = static_cast<size_t>(width) * 3;
   std::vector<uint8_t> this_row(stride), row_above(stride);
   std::array<std::vector<uint8_t>, 3> candidates;
@@ -56,10 +59,8 @@ std::string deflated_rows(int width, int height, const PngRows& rows) {
       status = deflate(&z, flush);
       out.append(reinterpret_cast<const char*>(buffer.data()), buffer.size() - z.avail_out);
     } while (z.avail_out == 0 || (flush == Z_FINISH && status == Z_OK));
-    if (status == Z_STREAM_ERROR) {
-      deflateEnd(&z);
+    if (status == Z_STREAM_ERROR)
       throw std::runtime_error("cannot encode a PNG: zlib could not compress it");
-    }
   };
   for (int y = 0; y < height; ++y) {
     std::swap(this_row, row_above);
@@ -85,7 +86,6 @@ std::string deflated_rows(int width, int height, const PngRows& rows) {
     deflate_row(&candidates[best], Z_NO_FLUSH);
   }
   deflate_row(nullptr, Z_FINISH);
-  deflateEnd(&z);
   return out;
 }
 
