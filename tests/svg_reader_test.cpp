@@ -113,8 +113,10 @@ TEST(SvgReaderTest, DrawingOnAfterACloseStartsAtTheSubpathsStart) {
 
 TEST(SvgReaderTest, RefusesWhatIsNotASiteDrawing) {
   EXPECT_NE(refusal("0\nSECTION\n").find("not an SVG drawing"), std::string::npos);
-  EXPECT_NE(refusal("<svg xmlns=\"http://www.w3.org/2000/svg\"><g>").find("not an SVG drawing"),
-            std::string::npos);
+  const std::string cut_short = refusal("<svg xmlns=\"http://www.w3.org/2000/svg\"><g>");
+  EXPECT_NE(cut_short.find("not an SVG drawing"), std::string::npos);
+  EXPECT_EQ(cut_short.find('\n'), std::string::npos)
+      << cut_short;  // one line, libxml2's reason in it
   EXPECT_NE(refusal("<!DOCTYPE svg [<!ENTITY a \"aaaa\">]><svg/>").find("entities"),
             std::string::npos);
   std::string m = refusal(svg("<path id=\"bad\" d=\"M 0 0 L nan 4\"/>"));

@@ -9,6 +9,7 @@
 #include <libxml/tree.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -409,9 +410,12 @@ Drawing read_svg(std::string_view bytes, const std::string& file_name, const Svg
   const xmlNode* root = doc ? xmlDocGetRootElement(doc.get()) : nullptr;
   if (!root || !is_svg(root, "svg")) {
     const xmlError* e = xmlGetLastError();
+    std::string why = e && e->message ? e->message : "";
+    while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back())))
+      why.pop_back();  // libxml2 ends its messages with a newline
     throw SiteError(fmt::format("{}: is not an SVG drawing{}; export the drawing as SVG", file_name,
-                                e && e->message ? fmt::format(" (line {}: {})", e->line, e->message)
-                                                : std::string(" (its root is no <svg>)")));
+                                !why.empty() ? fmt::format(" (line {}: {})", e->line, why)
+                                             : std::string(" (its root is no <svg>)")));
   }
   // Units: the root's width over its viewBox's, y turned up about the viewBox's bottom edge.
   double width = 0, height = 0;
