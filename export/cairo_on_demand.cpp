@@ -105,8 +105,11 @@ CURDLE_CAIRO(void, cairo_move_to, (cairo_t * cr, double x, double y), (cr, x, y)
 CURDLE_CAIRO(void, cairo_new_path, (cairo_t * cr), (cr))
 CURDLE_CAIRO(void, cairo_new_sub_path, (cairo_t * cr), (cr))
 CURDLE_CAIRO(void, cairo_paint, (cairo_t * cr), (cr))
+CURDLE_CAIRO(void, cairo_paint_with_alpha, (cairo_t * cr, double alpha), (cr, alpha))
 CURDLE_CAIRO(void, cairo_pattern_set_filter, (cairo_pattern_t * pattern, cairo_filter_t filter),
              (pattern, filter))
+CURDLE_CAIRO(void, cairo_pop_group_to_source, (cairo_t * cr), (cr))
+CURDLE_CAIRO(void, cairo_push_group, (cairo_t * cr), (cr))
 CURDLE_CAIRO(cairo_surface_t*, cairo_pdf_surface_create_for_stream,
              (cairo_write_func_t write_func, void* closure, double width_in_points,
               double height_in_points),
@@ -135,6 +138,7 @@ CURDLE_CAIRO(void, cairo_set_fill_rule, (cairo_t * cr, cairo_fill_rule_t fill_ru
 CURDLE_CAIRO(void, cairo_set_font_options, (cairo_t * cr, const cairo_font_options_t* options),
              (cr, options))
 CURDLE_CAIRO(void, cairo_set_font_size, (cairo_t * cr, double size), (cr, size))
+CURDLE_CAIRO(void, cairo_set_line_cap, (cairo_t * cr, cairo_line_cap_t line_cap), (cr, line_cap))
 CURDLE_CAIRO(void, cairo_set_line_width, (cairo_t * cr, double width), (cr, width))
 CURDLE_CAIRO(void, cairo_set_source_rgba,
              (cairo_t * cr, double red, double green, double blue, double alpha),

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "curdle/stop.h"
+#include "export/opening_dots.h"
 #include "export/svg.h"
 #include "export/title_block.h"
 #include "layout/arc_setting_out.h"
@@ -153,11 +154,13 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
     cairo_fill(cr);
   }
   if (!layout.views.empty()) return;  // blocks are drawn as their views
+  OpeningDots dots;
   for_each_element(layout, v, [&](const Element& e) {
     stop_point();
     if (!v.shows(laid_bounds(e))) return;
     const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
-    if (e.circle) {
+    if (OpeningDots::takes(e)) return dots.add(e, c, v);  // drawn after the rest, as dots
+    if (e.circle) {  // a park's round element, drawn in its turn
       colour(cr, c, alpha);
       cairo_new_path(cr);
       cairo_arc(cr, v.x(e.circle->cx), v.y(e.circle->cy), e.circle->d / 2 / v.scale, 0, 2 * M_PI);
@@ -191,6 +194,7 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
       cairo_fill(cr);
     }
   });
+  dots.draw(cr, alpha);
 }
 
 void ring_paths(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {

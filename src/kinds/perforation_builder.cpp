@@ -145,6 +145,7 @@ Outline merged_outline(const std::vector<Circle>& group, double cx, double cy, d
   Outline placed = it->second;
   for (Ring& ring : placed.rings)
     for (auto& [x, y] : ring) x += cx, y += cy;
+  placed.circles = group;
   return placed;
 }
 

@@ -52,6 +52,9 @@ using Ring =
 struct Outline {
   std::vector<Ring> rings;
   double area = 0;
+  // A merged opening: the round openings whose union the rings are (polygonised), so that a
+  // drawing can show its arcs as arcs. Empty for any other outline.
+  std::vector<Circle> circles;
 };
 
 using Polygon = std::vector<std::array<double, 2>>;  // simple, closed implicitly
