@@ -62,6 +62,23 @@ int64_t IfcGeometryWriter::polyline(const Ring& ring) {
   return add("IFCPOLYLINE(" + step_refs(points) + ")");
 }
 
+int64_t IfcGeometryWriter::point_list_curve(const Ring& ring) {
+  std::string list = "IFCCARTESIANPOINTLIST2D((";
+  list.reserve(list.size() + 48 * (ring.size() + 1));
+  auto append = [&](const std::array<double, 2>& v) {
+    list += '(';
+    append_step_real(list, v[0] - local_[0]);
+    list += ',';
+    append_step_real(list, v[1] - local_[1]);
+    list += "),";
+  };
+  for (const auto& v : ring) append(v);
+  append(ring.front());
+  list.back() = ')';
+  list += ')';
+  return add(fmt::format("IFCINDEXEDPOLYCURVE({},$,.F.)", ref(add(list))));
+}
+
 int64_t IfcGeometryWriter::shared_polyline(const Ring& ring) {
   std::vector<std::array<int64_t, 2>> shape;
   for (const auto& [x, y] : ring)
@@ -100,7 +117,7 @@ int64_t IfcGeometryWriter::profile_with_holes(const Ring& outer, const std::vect
   if (holes.empty())
     return add(fmt::format("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})", ref(boundary)));
   std::vector<int64_t> inner;
-  for (const Ring& hole : holes) inner.push_back(polyline(clockwise(hole)));
+  for (const Ring& hole : holes) inner.push_back(point_list_curve(clockwise(hole)));
   return add(fmt::format("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,{},{})", ref(boundary),
                          step_refs(inner)));
 }

@@ -30,8 +30,12 @@ class IfcGeometryWriter {
   int64_t direction(double x, double y, double z);
   // A closed polyline through the ring's points, relative to the local origin.
   int64_t polyline(const Ring& ring);
-  // The same, written once for every ring of that shape from its local origin (to a nanometre):
-  // the openings of a screen, each placed at its own corner, share a few outlines.
+  // The same as one list of coordinates (IfcIndexedPolyCurve through IfcCartesianPointList2D):
+  // a sheet's thousands of holes as a point entity for each of their corners were most of a
+  // perforated screen's IFC.
+  int64_t point_list_curve(const Ring& ring);
+  // A polyline written once for every ring of that shape from its local origin (to a
+  // nanometre): the openings of a screen, each placed at its own corner, share a few outlines.
   int64_t shared_polyline(const Ring& ring);
 
   // Profiles.

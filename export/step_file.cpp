@@ -33,8 +33,17 @@ std::string step_string(std::string_view text) {
 }
 
 std::string step_real(double v) {
+  std::string s;
+  append_step_real(s, v);
+  return s;
+}
+
+void append_step_real(std::string& out, double v) {
   if (!std::isfinite(v)) throw std::logic_error("a STEP real must be finite");
-  if (v == 0) return "0.";
+  if (v == 0) {
+    out += "0.";
+    return;
+  }
   // The shortest digits that read back as v, with the point STEP requires and E for the
   // exponent: 1 is "1.", 1e-07 is "1.E-07" (written in place: a screen's IFC has a million).
   std::array<char, 40> buffer{};
@@ -50,7 +59,7 @@ std::string step_real(double v) {
     *e = 'E';
     if (e[1] == '+') end = std::copy(e + 2, end, e + 1);
   }
-  return std::string(first, end);
+  out.append(first, end);
 }
 
 std::string step_refs(const std::vector<int64_t>& ids) {

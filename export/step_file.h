@@ -16,6 +16,9 @@ namespace curdle {
 std::string step_string(std::string_view utf8);
 // A STEP real: always with a decimal point ("600.", "0.5", "1.E-05"), shortest round trip.
 std::string step_real(double value);
+// The same, appended to `out` (a screen's IFC writes a million, most too long for a short
+// string).
+void append_step_real(std::string& out, double value);
 // A reference list "(#1,#2,#3)".
 std::string step_refs(const std::vector<int64_t>& ids);
 // IFC's 22-character GlobalId (128 bits in IFC's base-64), derived from `key` alone, so that

@@ -50,10 +50,13 @@ TEST(IfcGeometry, APieceInPartsIsOneCompositeProfileAndHolesRunClockwise) {
   // Drawn from the product's corner (10, 20): the first part starts at the origin.
   EXPECT_NE(text.find("IFCCARTESIANPOINT((0.,0.))"), std::string::npos);
   EXPECT_NE(text.find("IFCCARTESIANPOINT((190.,0.))"), std::string::npos);
-  // The hole (20, 10)-(30, 20) from the corner, clockwise: (30, 20) before (30, 10).
-  const size_t hole = text.find("IFCCARTESIANPOINT((30.,20.))");
-  ASSERT_NE(hole, std::string::npos);
-  EXPECT_LT(hole, text.find("IFCCARTESIANPOINT((30.,10.))"));
+  // The hole (20, 10)-(30, 20) from the corner, clockwise and closed, as one list of points
+  // (IfcIndexedPolyCurve), not a point entity for each corner.
+  EXPECT_NE(text.find("=IFCCARTESIANPOINTLIST2D(((20.,20.),(30.,20.),(30.,10.),(20.,10.),"
+                      "(20.,20.)));"),
+            std::string::npos);
+  EXPECT_EQ(text.find("IFCCARTESIANPOINT((30.,20.))"), std::string::npos);
+  EXPECT_NE(text.find("=IFCINDEXEDPOLYCURVE(#"), std::string::npos);
   EXPECT_NE(text.find("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,"), std::string::npos);
 }
 

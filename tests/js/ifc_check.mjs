@@ -52,6 +52,7 @@ function annotationArcs(model, problems) {
   const curves = api.GetLineIDsWithType(model, W.IFCINDEXEDPOLYCURVE);
   for (let i = 0; i < curves.size(); ++i) {
     const raw = api.GetRawLineData(model, curves.get(i));
+    if (!raw.arguments[1]) continue;  // no segments: a polyline through its points (a sheet's hole)
     const points = api.GetLine(model, raw.arguments[0].value).CoordList
       .map((p) => p.map((c) => c.value));
     for (const segment of raw.arguments[1]) {
