@@ -33,4 +33,16 @@ TEST(DrawingSheet, TheLargestStandardScaleThatFitsEitherOrientation) {
   EXPECT_FALSE(paper_sheet("letter"));
 }
 
+// Millimetres to a thousandth, rounded as printf's "%.3f" rounds the double itself, with no
+// trailing zeros, no lone point and no negative zero.
+TEST(DrawingSheet, MillimetresAreWrittenToAThousandth) {
+  EXPECT_EQ(drawing_mm(1234.5678), "1234.568");
+  EXPECT_EQ(drawing_mm(2.5), "2.5");
+  EXPECT_EQ(drawing_mm(600), "600");
+  EXPECT_EQ(drawing_mm(1.0005), "1");  // 1.000499999... as a double
+  EXPECT_EQ(drawing_mm(-0.0004), "0");
+  EXPECT_EQ(drawing_mm(-12.25), "-12.25");
+  EXPECT_EQ(drawing_mm(1e12), "1000000000000");
+}
+
 }  // namespace curdle

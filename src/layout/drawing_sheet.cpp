@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <charconv>
 #include <cmath>
 
 namespace curdle {
@@ -42,7 +44,13 @@ SheetFit fit_to_sheet(double width, double height, const PaperSheet& sheet) {
 }
 
 std::string drawing_mm(double v) {
-  std::string s = fmt::format("{:.3f}", v);
+  // to_chars rounds as printf's "%.3f" does, without fmt's parsing of a format per number (a
+  // screen's drawings write hundreds of thousands).
+  std::array<char, 352> buffer;  // room for the largest double in fixed notation: never short
+  char* end =
+      std::to_chars(buffer.data(), buffer.data() + buffer.size(), v, std::chars_format::fixed, 3)
+          .ptr;
+  std::string s(buffer.data(), end);
   while (s.back() == '0') s.pop_back();
   if (s.back() == '.') s.pop_back();
   return s == "-0" ? "0" : s;
