@@ -369,17 +369,11 @@ std::vector<const Output*> select_outputs(const Run& run, const std::vector<std:
   return chosen;
 }
 
-namespace {
-
-// Whether the run lays out its curds: for an output drawn from the layout, and for report.json,
-// which describes the layout whenever the recipe has one.
 bool builds_layout(const Run& run, const std::vector<const Output*>& outputs) {
   if (!run.recipe.layout) return false;
   return std::any_of(outputs.begin(), outputs.end(),
                      [](const Output* o) { return o->needs_layout || o->name == "report.json"; });
 }
-
-}  // namespace
 
 uint64_t estimate_run_memory(const Run& run, const std::vector<const Output*>& outputs) {
   return estimate_run_memory(run, outputs, builds_layout(run, outputs));

@@ -100,6 +100,10 @@ struct RunSummary {
 // The run's per-stage report of `field` as the terminal table `curdle report` prints.
 std::string report_table(const Run& run, const CurdField& field);
 
+// Whether the run lays out its curds: for an output drawn from the layout, and for report.json,
+// which describes the layout whenever the recipe has one.
+bool builds_layout(const Run& run, const std::vector<const Output*>& outputs);
+
 // Runs the engine and writes the outputs to `sink`. Throws InputError for bad input and
 // ResourceLimitError above the run's memory limit, before anything is written.
 RunSummary write_outputs(const Run& run, const std::vector<const Output*>& outputs,

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -96,9 +95,7 @@ int run_generate(const CommonOptions& common, const std::string& out_dir,
   const auto outputs = app::select_outputs(run, outputs_named, &observer);
   // Checked before the directory is made, so that a run over its limit leaves nothing.
   app::check_run_memory(run, outputs);
-  if (run.recipe.layout && std::any_of(outputs.begin(), outputs.end(),
-                                       [](const app::Output* o) { return o->needs_layout; }))
-    back_the_heap_with_huge_pages();
+  if (app::builds_layout(run, outputs)) back_the_heap_with_huge_pages();
   const fs::path dir = out_dir.empty()
                            ? fs::path("curdle-out") / fs::path(common.recipe_path).stem()
                            : fs::path(out_dir);

@@ -11,7 +11,7 @@ namespace curdle::cli {
 void keep_freed_memory_for_reuse();
 
 // The heap grown by 64 MB at once and advised to be backed by 2 MB pages (THP "madvise",
-// Debian's default), for a run that lays and writes a layout: the writers fill some 50 MB of
+// Debian's default), for a run that lays a layout (app::builds_layout): its writers fill 50 MB of
 // heap, and on a machine that pays 30 µs a page fault its 4 KB pages were a tenth of a
 // perforated screen's run. glibc does as much with GLIBC_TUNABLES=glibc.malloc.hugetlb=1,
 // which only the environment can set. Not for every run: a curd alone touches little heap,

@@ -1,7 +1,5 @@
 #include "layout/drawing_sheet.h"
 
-#include <fmt/format.h>
-
 #include <array>
 #include <charconv>
 #include <cmath>
