@@ -25,9 +25,9 @@
 namespace curdle {
 namespace {
 
-std::string real(double v) { return step_real(v); }
-std::string ref(int64_t id) { return fmt::format("#{}", id); }
-std::string text(std::string_view s) { return step_string(s); }
+StepReal real(double v) { return {v}; }
+StepRef ref(int64_t id) { return {id}; }
+StepText text(std::string_view s) { return {s}; }
 
 // What an element becomes in the model.
 struct IfcClass {
@@ -65,8 +65,9 @@ class IfcModel {
         l_(layout),
         envelope_(w_, g_, layout, [this](std::string_view what) { return root(what); }) {
     const Box& v = layout.view;
-    key_ = fmt::format("{}/{}/{},{},{}+{}x{}x{}/", layout.source.recipe, layout.source.seed,
-                       v.origin[0], v.origin[1], v.origin[2], v.size[0], v.size[1], v.size[2]);
+    guids_ = IfcGuidSource(fmt::format("{}/{}/{},{},{}+{}x{}x{}/", layout.source.recipe,
+                                       layout.source.seed, v.origin[0], v.origin[1], v.origin[2],
+                                       v.size[0], v.size[1], v.size[2]));
   }
 
   void write() {
@@ -87,17 +88,27 @@ class IfcModel {
   }
 
  private:
-  std::string guid(std::string_view what) const { return text(ifc_guid(key_ + std::string(what))); }
-  // A rooted entity's first attributes: its GlobalId and the model's one owner history.
-  std::string root(std::string_view what) const { return guid(what) + "," + ref(owner_); }
-  int64_t add(const std::string& s) { return w_.add(s); }
+  // A rooted entity's first attributes: its GlobalId (from what it is, `what` then `more`)
+  // and the model's one owner history.
+  StepRoot root(std::string_view what, std::string_view more = {}) const {
+    return {guids_.guid(what, more), owner_};
+  }
+  int64_t add(std::string_view entity) { return w_.add(entity); }
+  template <typename First, typename... Rest>
+  int64_t add(fmt::format_string<First, Rest...> format, First&& first, Rest&&... rest) {
+    return w_.add(format, std::forward<First>(first), std::forward<Rest>(rest)...);
+  }
   // A property or quantity, written once for every set that holds the same one (IFC lets a
   // property stand in many sets): most pieces share their material, lot, size and area, and
   // the pavilion's model is a third smaller for it.
-  int64_t shared(const std::string& s) {
-    const auto [it, added] = shared_.try_emplace(s, 0);
-    if (added) it->second = add(s);
-    return it->second;
+  template <typename... Args>
+  int64_t shared(fmt::format_string<Args...> format, Args&&... args) {
+    scratch_.clear();
+    fmt::format_to(fmt::appender(scratch_), format, std::forward<Args>(args)...);
+    const std::string_view text(scratch_.data(), scratch_.size());
+    const auto it = shared_.find(text);
+    if (it != shared_.end()) return it->second;
+    return shared_[std::string(text)] = add(text);
   }
   void context() {
     world_ = g_.world();
@@ -108,18 +119,18 @@ class IfcModel {
       along_ = g_.direction(1, 0, 0);
     }
     const int64_t model =
-        add(fmt::format("IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-05,{},$)", ref(world_)));
-    g_.set_body_context(add(fmt::format(
-        "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Body','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
-        ref(model))));
+        add("IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-05,{},$)", ref(world_));
+    g_.set_body_context(
+        add("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Body','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
+            ref(model)));
     if (has_arc_contours())
-      annotation_ = add(fmt::format(
+      annotation_ = add(
           "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Annotation','Plan',*,*,*,*,{},$,.PLAN_VIEW.,$)",
-          ref(model)));
+          ref(model));
     if (l_.kind->ground() == Ground::sheet)
-      profile_context_ = add(fmt::format(
-          "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Profile','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
-          ref(model)));
+      profile_context_ =
+          add("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Profile','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
+              ref(model));
     // Added one by one: arguments of one call are evaluated in no fixed order, and the bytes
     // must not depend on the compiler.
     const std::vector<int64_t> unit_ids{add("IFCSIUNIT(*,.LENGTHUNIT.,.MILLI.,.METRE.)"),
@@ -129,9 +140,9 @@ class IfcModel {
     const int64_t units = add("IFCUNITASSIGNMENT(" + step_refs(unit_ids) + ")");
     owner_history();
     const std::string description =
-        l_.source.description.empty() ? "$" : text(l_.source.description);
-    project_ = add(fmt::format("IFCPROJECT({},{},{},$,$,$,({}),{})", root("project"),
-                               text(l_.source.recipe), description, ref(model), ref(units)));
+        l_.source.description.empty() ? std::string("$") : step_string(l_.source.description);
+    project_ = add("IFCPROJECT({},{},{},$,$,$,({}),{})", root("project"), text(l_.source.recipe),
+                   description, ref(model), ref(units));
     recipe_properties();
   }
 
@@ -140,12 +151,11 @@ class IfcModel {
   void owner_history() {
     const int64_t person = add("IFCPERSON($,$,'curdle',$,$,$,$,$)");
     const int64_t organisation = add("IFCORGANIZATION($,'curdle',$,$,$)");
-    const int64_t both =
-        add(fmt::format("IFCPERSONANDORGANIZATION({},{},$)", ref(person), ref(organisation)));
-    const int64_t application = add(fmt::format("IFCAPPLICATION({},{},'curdle','curdle')",
-                                                ref(organisation), text(CURDLE_VERSION)));
-    owner_ = add(fmt::format("IFCOWNERHISTORY({},{},$,.NOCHANGE.,$,$,$,946684800)", ref(both),
-                             ref(application)));
+    const int64_t both = add("IFCPERSONANDORGANIZATION({},{},$)", ref(person), ref(organisation));
+    const int64_t application =
+        add("IFCAPPLICATION({},{},'curdle','curdle')", ref(organisation), text(CURDLE_VERSION));
+    owner_ =
+        add("IFCOWNERHISTORY({},{},$,.NOCHANGE.,$,$,$,946684800)", ref(both), ref(application));
   }
 
   // How to make the model again: recipe, seed, lattice and the window of cells laid.
@@ -168,53 +178,46 @@ class IfcModel {
         curds += " (Markov: " + fmt::format("{}", fmt::join(g.chain->states, ", ")) + ")";
     }
     props.push_back(label("Curds", curds));
-    const int64_t set = add(
-        fmt::format("IFCPROPERTYSET({},'Curdle_Recipe',$,{})", root("recipe"), step_refs(props)));
-    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("recipe-rel"), ref(project_),
-                    ref(set)));
+    const int64_t set =
+        add("IFCPROPERTYSET({},'Curdle_Recipe',$,{})", root("recipe"), step_refs(props));
+    add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("recipe-rel"), ref(project_), ref(set));
   }
 
   // A property of a set: its name and its typed value ("IFCINTEGER(3)").
-  int64_t property(const std::string& name, const std::string& value) {
-    return shared(fmt::format("IFCPROPERTYSINGLEVALUE({},$,{},$)", text(name), value));
+  int64_t property(std::string_view name, std::string_view value) {
+    return shared("IFCPROPERTYSINGLEVALUE({},$,{},$)", text(name), value);
   }
-  int64_t label(const std::string& name, const std::string& value) {
-    return property(name, "IFCLABEL(" + text(value) + ")");
+  int64_t label(std::string_view name, std::string_view value) {
+    return shared("IFCPROPERTYSINGLEVALUE({},$,IFCLABEL({}),$)", text(name), text(value));
   }
-  int64_t integer(const std::string& name, int64_t value) {
-    return property(name, fmt::format("IFCINTEGER({})", value));
+  int64_t integer(std::string_view name, int64_t value) {
+    return shared("IFCPROPERTYSINGLEVALUE({},$,IFCINTEGER({}),$)", text(name), value);
   }
-  int64_t length(const std::string& name, double value) {
-    return property(name, "IFCPOSITIVELENGTHMEASURE(" + real(value) + ")");
+  int64_t length(std::string_view name, double value) {
+    return shared("IFCPROPERTYSINGLEVALUE({},$,IFCPOSITIVELENGTHMEASURE({}),$)", text(name),
+                  real(value));
   }
 
   // Façades, screens and blocks stand in a building's storey. Ground works stand in an external
   // space on the site (IfcSpace .EXTERNAL.): IFC4 has no facility part, and a storey would
   // invent a building where there is none; the space is what a BIM user filters them by.
   void spatial_structure() {
-    const int64_t site_place = add(fmt::format("IFCLOCALPLACEMENT($,{})", ref(world_)));
-    const int64_t site = add(fmt::format("IFCSITE({},'Site',$,$,{},$,$,.ELEMENT.,$,$,$,$,$)",
-                                         root("site"), ref(site_place)));
-    add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("project-site"), ref(project_),
-                    ref(site)));
+    const int64_t site_place = add("IFCLOCALPLACEMENT($,{})", ref(world_));
+    const int64_t site =
+        add("IFCSITE({},'Site',$,$,{},$,$,.ELEMENT.,$,$,$,$,$)", root("site"), ref(site_place));
+    add("IFCRELAGGREGATES({},$,$,{},({}))", root("project-site"), ref(project_), ref(site));
     if (ground_works()) {
-      const int64_t space_place =
-          add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_)));
-      const int64_t space =
-          add(fmt::format("IFCSPACE({},'External works',$,$,{},$,{},.ELEMENT.,.EXTERNAL.,0.)",
-                          root("space"), ref(space_place), text("Ground works")));
-      add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("site-space"), ref(site),
-                      ref(space)));
+      const int64_t space_place = add("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_));
+      const int64_t space = add("IFCSPACE({},'External works',$,$,{},$,{},.ELEMENT.,.EXTERNAL.,0.)",
+                                root("space"), ref(space_place), text("Ground works"));
+      add("IFCRELAGGREGATES({},$,$,{},({}))", root("site-space"), ref(site), ref(space));
       container_ = space, container_place_ = space_place;
       return;
     }
-    const int64_t building_place =
-        add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_)));
-    const int64_t building =
-        add(fmt::format("IFCBUILDING({},'Building',$,$,{},$,$,.ELEMENT.,$,$,$)", root("building"),
-                        ref(building_place)));
-    add(fmt::format("IFCRELAGGREGATES({},$,$,{},({}))", root("site-building"), ref(site),
-                    ref(building)));
+    const int64_t building_place = add("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_));
+    const int64_t building = add("IFCBUILDING({},'Building',$,$,{},$,$,.ELEMENT.,$,$,$)",
+                                 root("building"), ref(building_place));
+    add("IFCRELAGGREGATES({},$,$,{},({}))", root("site-building"), ref(site), ref(building));
     // A building of storeys (layout.drawing's floor to floor): what it holds stands in the
     // lowest, its walls running up through the others.
     std::vector<int64_t> storeys;
@@ -224,16 +227,15 @@ class IfcModel {
     while (levels.size() > 1 && levels.back() >= l_.height - 1e-9) levels.pop_back();  // the top
     for (size_t k = 0; k < levels.size(); ++k) {
       const double at = levels[k];
-      const int64_t place =
-          add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(building_place),
-                          ref(k ? g_.axes({0, 0, at}, {0, 0, 1}, {1, 0, 0}) : world_)));
-      storeys.push_back(add(fmt::format("IFCBUILDINGSTOREY({},{},$,$,{},$,$,.ELEMENT.,{})",
-                                        root(k ? "storey " + std::to_string(k) : "storey"),
-                                        text("Level " + std::to_string(k)), ref(place), real(at))));
+      const int64_t place = add("IFCLOCALPLACEMENT({},{})", ref(building_place),
+                                ref(k ? g_.axes({0, 0, at}, {0, 0, 1}, {1, 0, 0}) : world_));
+      storeys.push_back(add("IFCBUILDINGSTOREY({},{},$,$,{},$,$,.ELEMENT.,{})",
+                            root(k ? "storey " + std::to_string(k) : "storey"),
+                            text("Level " + std::to_string(k)), ref(place), real(at)));
       if (k == 0) container_ = storeys.back(), container_place_ = place;
     }
-    add(fmt::format("IFCRELAGGREGATES({},$,$,{},{})", root("building-storey"), ref(building),
-                    step_refs(storeys)));
+    add("IFCRELAGGREGATES({},$,$,{},{})", root("building-storey"), ref(building),
+        step_refs(storeys));
   }
 
   bool ground_works() const {
@@ -245,21 +247,19 @@ class IfcModel {
   // spatial container, as Revit and ArchiCAD expect; its profiles are drawn from that corner.
   int64_t placement_at(double x, double y) {
     g_.set_local_origin(x, y);
-    const int64_t frame =
-        l_.kind->upright()
-            ? add(fmt::format("IFCAXIS2PLACEMENT3D({},{},{})", ref(g_.point(x, 0, y)),
-                              ref(out_of_wall_), ref(along_)))
-            : add(fmt::format("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x, y, 0))));
-    return add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(frame)));
+    const int64_t frame = l_.kind->upright()
+                              ? add("IFCAXIS2PLACEMENT3D({},{},{})", ref(g_.point(x, 0, y)),
+                                    ref(out_of_wall_), ref(along_))
+                              : add("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x, y, 0)));
+    return add("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(frame));
   }
   // An opening's placement: at its own corner, relative to the sheet it voids (whose frame is
   // already the surface's plane), as IFC places openings in their host.
   int64_t placement_in_sheet(double x, double y, size_t sheet) {
     g_.set_local_origin(x, y);
     const Rect& s = l_.sheets[sheet].area;
-    const int64_t frame =
-        add(fmt::format("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x - s.x, y - s.y, 0))));
-    return add(fmt::format("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[sheet]), ref(frame)));
+    const int64_t frame = add("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x - s.x, y - s.y, 0)));
+    return add("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[sheet]), ref(frame));
   }
 
   // The element's body as laid: one solid, whatever its shape (an L-shaped cut piece is one
@@ -297,9 +297,9 @@ class IfcModel {
   int64_t opening_shape(const Element& e) {
     std::vector<int64_t> curves;
     for (const Ring& ring : opening_rings(e)) curves.push_back(g_.shared_polyline(ring));
-    const int64_t rep = add(fmt::format("IFCSHAPEREPRESENTATION({},'Profile','Curve2D',{})",
-                                        ref(profile_context_), step_refs(curves)));
-    return add(fmt::format("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep)));
+    const int64_t rep = add("IFCSHAPEREPRESENTATION({},'Profile','Curve2D',{})",
+                            ref(profile_context_), step_refs(curves));
+    return add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
   }
 
   // The fabrication sheets a perforated surface is cut into: each a plate whose body has its
@@ -309,7 +309,7 @@ class IfcModel {
     const double t = l_.thickness;
     const Rgb metal{201, 205, 210};
     const int64_t material =
-        add(fmt::format("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {:g} mm", t))));
+        add("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {:g} mm", t)));
     std::vector<std::vector<Ring>> holes(l_.sheets.size());
     // Merged openings' islands, per sheet: metal the outline leaves standing.
     std::vector<std::vector<Outline>> islands(l_.sheets.size());
@@ -326,8 +326,8 @@ class IfcModel {
       const int64_t where = placement_at(s.area.x, s.area.y);
       const int64_t body = g_.body({g_.solid(sheet_profile(s, holes[k], islands[k]), 0, t, metal)});
       const int64_t plate =
-          add(fmt::format("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)",
-                          root("sheet " + s.id), text(s.id), ref(where), ref(body), text(s.id)));
+          add("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)", root("sheet " + s.id),
+              text(s.id), ref(where), ref(body), text(s.id));
       contained_.push_back(plate);
       sheet_plates_.push_back(plate);
       sheet_places_.push_back(where);
@@ -335,8 +335,8 @@ class IfcModel {
       sets(plate, "sheet " + s.id, "IFCPLATE",
            {s.id, true, true, t, s.area.w, s.area.h, s.surface / 1e6, net});
     }
-    add(fmt::format("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("sheet-material"),
-                    step_refs(sheet_plates_), ref(material)));
+    add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("sheet-material"), step_refs(sheet_plates_),
+        ref(material));
   }
   // A sheet (its rectangle, or each part of its outline) less the holes inside it; the islands
   // of merged openings inside it as parts of their own.
@@ -393,19 +393,19 @@ class IfcModel {
     std::string segs;
     for (const std::string& sgm : segments) segs += (segs.empty() ? "" : ",") + sgm;
     const int64_t coordinates = add("IFCCARTESIANPOINTLIST2D((" + list + "))");
-    return add(fmt::format("IFCINDEXEDPOLYCURVE({},({}),.F.)", ref(coordinates), segs));
+    return add("IFCINDEXEDPOLYCURVE({},({}),.F.)", ref(coordinates), segs);
   }
   // The outline and zones whose edges are arcs, as annotations a setter-out or a coordinator
   // reads them by: their curves in the surface's plane, arcs kept.
   void arc_annotations() {
     if (!has_arc_contours()) return;
     auto annotate = [&](const std::string& name, const Contour& c) {
-      const int64_t rep = add(fmt::format("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',({}))",
-                                          ref(annotation_), ref(indexed_curve(c))));
-      const int64_t shape = add(fmt::format("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep)));
-      contained_.push_back(
-          add(fmt::format("IFCANNOTATION({},{},$,'setting out',{},{})", root("annotation " + name),
-                          text(name), ref(placement_at(0, 0)), ref(shape))));
+      const int64_t rep = add("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',({}))",
+                              ref(annotation_), ref(indexed_curve(c)));
+      const int64_t shape = add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
+      contained_.push_back(add("IFCANNOTATION({},{},$,'setting out',{},{})",
+                               root("annotation " + name), text(name), ref(placement_at(0, 0)),
+                               ref(shape)));
     };
     if (!l_.outline_contour.empty()) annotate("Outline", l_.outline_contour);
     for (const ZoneCount& z : l_.zones)
@@ -427,13 +427,13 @@ class IfcModel {
     const int64_t product_shape = framed    ? unit.shape
                                   : opening ? opening_shape(e)
                                             : g_.body(solids(e, parts, piece_colour(l_, e)));
-    const int64_t id = add(fmt::format("{}({},{},$,{},{},{},{},{})", c.entity, root(e.id),
-                                       text(e.id), text(element_type_of(l_, e)), ref(where),
-                                       ref(product_shape), text(e.id), c.predefined));
+    const int64_t id =
+        add("{}({},{},$,{},{},{},{},{})", c.entity, root(e.id), text(e.id),
+            text(element_type_of(l_, e)), ref(where), ref(product_shape), text(e.id), c.predefined);
     if (opening) {
       if (e.sheet >= 0)
-        add(fmt::format("IFCRELVOIDSELEMENT({},$,$,{},{})", root("void " + e.id),
-                        ref(sheet_plates_[static_cast<size_t>(e.sheet)]), ref(id)));
+        add("IFCRELVOIDSELEMENT({},$,$,{},{})", root("void ", e.id),
+            ref(sheet_plates_[static_cast<size_t>(e.sheet)]), ref(id));
     } else {
       if (framed) parts_[envelope_.facade_of(e)].push_back(id);  // nested in its façade's wall
       contained_.push_back(id);
@@ -467,13 +467,13 @@ class IfcModel {
       std::vector<int64_t> entries;
       for (const IfcSetEntry& entry : set.entries) entries.push_back(set_entry(entry));
       const bool quantities = set.name.rfind("Qto_", 0) == 0;
-      const int64_t definition =
-          quantities ? add(fmt::format("IFCELEMENTQUANTITY({},{},$,$,{})", root(set.name + key),
-                                       text(set.name), step_refs(entries)))
-                     : add(fmt::format("IFCPROPERTYSET({},{},$,{})", root(set.name + key),
-                                       text(set.name), step_refs(entries)));
-      add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root(set.name + "-rel " + key),
-                      ref(id), ref(definition)));
+      const int64_t definition = quantities
+                                     ? add("IFCELEMENTQUANTITY({},{},$,$,{})", root(set.name, key),
+                                           text(set.name), step_refs(entries))
+                                     : add("IFCPROPERTYSET({},{},$,{})", root(set.name, key),
+                                           text(set.name), step_refs(entries));
+      add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root(set.name + "-rel ", key), ref(id),
+          ref(definition));
     }
   }
   int64_t set_entry(const IfcSetEntry& entry) {
@@ -482,16 +482,13 @@ class IfcModel {
       case K::property:
         return property(entry.name, entry.value);
       case K::length:
-        return shared(
-            fmt::format("IFCQUANTITYLENGTH({},$,$,{},$)", text(entry.name), real(entry.amount)));
+        return shared("IFCQUANTITYLENGTH({},$,$,{},$)", text(entry.name), real(entry.amount));
       case K::area:
-        return shared(
-            fmt::format("IFCQUANTITYAREA({},$,$,{},$)", text(entry.name), real(entry.amount)));
+        return shared("IFCQUANTITYAREA({},$,$,{},$)", text(entry.name), real(entry.amount));
       case K::volume:
         break;
     }
-    return shared(
-        fmt::format("IFCQUANTITYVOLUME({},$,$,{},$)", text(entry.name), real(entry.amount)));
+    return shared("IFCQUANTITYVOLUME({},$,$,{},$)", text(entry.name), real(entry.amount));
   }
 
   void properties(const Element& e, size_t index, int64_t id) {
@@ -507,36 +504,33 @@ class IfcModel {
                                label("StockSize", stock_size_of(l_, e))};
     if (e.form == ElementForm::block)
       props.push_back(integer("Level", e.cell_z - l_.view.origin[2]));
-    const int64_t set = add(fmt::format("IFCPROPERTYSET({},'Curdle_Element',$,{})",
-                                        root("pset " + e.id), step_refs(props)));
-    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("pset-rel " + e.id), ref(id),
-                    ref(set)));
+    const int64_t set =
+        add("IFCPROPERTYSET({},'Curdle_Element',$,{})", root("pset ", e.id), step_refs(props));
+    add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("pset-rel ", e.id), ref(id), ref(set));
   }
 
   // curdle's own quantities: the piece's extent, thickness and area as the schedule gives them.
   void quantities(const Element& e, int64_t id) {
     const Rect b = laid_bounds(e);
     const double t = e.form == ElementForm::block ? l_.level_height : l_.thickness;
-    std::vector<int64_t> q{
-        shared(fmt::format("IFCQUANTITYLENGTH('Length',$,$,{},$)", real(b.w))),
-        shared(fmt::format("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h))),
-        shared(fmt::format("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(t))),
-        shared(fmt::format("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6)))};
-    const int64_t set = add(fmt::format("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})",
-                                        root("qto " + e.id), step_refs(q)));
-    add(fmt::format("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("qto-rel " + e.id), ref(id),
-                    ref(set)));
+    std::vector<int64_t> q{shared("IFCQUANTITYLENGTH('Length',$,$,{},$)", real(b.w)),
+                           shared("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h)),
+                           shared("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(t)),
+                           shared("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6))};
+    const int64_t set =
+        add("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})", root("qto ", e.id), step_refs(q));
+    add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("qto-rel ", e.id), ref(id), ref(set));
   }
 
   // What groups elements: containment, materials and covering types.
   void closing_relations() {
     if (!contained_.empty())
-      add(fmt::format("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})", root("contained"),
-                      step_refs(contained_), ref(container_)));
+      add("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})", root("contained"),
+          step_refs(contained_), ref(container_));
     for (const auto& [name, ids] : materials_) {
-      const int64_t m = add(fmt::format("IFCMATERIAL({},$,$)", text(name)));
-      add(fmt::format("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("material " + name),
-                      step_refs(ids), ref(m)));
+      const int64_t m = add("IFCMATERIAL({},$,$)", text(name));
+      add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("material " + name), step_refs(ids),
+          ref(m));
     }
     const char* predefined = l_.kind->upright() ? ".CLADDING." : ".FLOORING.";
     for (const auto& [key, covering] : types_) {
@@ -545,15 +539,15 @@ class IfcModel {
       if (covering.stock[0] > 0) {
         const std::vector<int64_t> tiling{length("TileLength", covering.stock[0]),
                                           length("TileWidth", covering.stock[1])};
-        sets.push_back(add(fmt::format("IFCPROPERTYSET({},'Pset_Tiling',$,{})",
-                                       root("tiling " + material + size), step_refs(tiling))));
+        sets.push_back(add("IFCPROPERTYSET({},'Pset_Tiling',$,{})",
+                           root("tiling " + material + size), step_refs(tiling)));
       }
       const std::string name = material + ", " + size;
-      const int64_t type = add(
-          fmt::format("IFCCOVERINGTYPE({},{},$,$,{},$,$,{},{})", root("type " + name), text(name),
-                      sets.empty() ? "$" : step_refs(sets), text(l_.element_type), predefined));
-      add(fmt::format("IFCRELDEFINESBYTYPE({},$,$,{},{})", root("type-rel " + name),
-                      step_refs(covering.elements), ref(type)));
+      const int64_t type =
+          add("IFCCOVERINGTYPE({},{},$,$,{},$,$,{},{})", root("type " + name), text(name),
+              sets.empty() ? "$" : step_refs(sets), text(l_.element_type), predefined);
+      add("IFCRELDEFINESBYTYPE({},$,$,{},{})", root("type-rel " + name),
+          step_refs(covering.elements), ref(type));
     }
   }
 
@@ -568,12 +562,17 @@ class IfcModel {
   const Layout& l_;
   IfcEnvelopeWriter envelope_;
   std::vector<std::vector<int64_t>> parts_ = std::vector<std::vector<int64_t>>(l_.frames.size());
-  std::string key_;
+  IfcGuidSource guids_;
+  fmt::memory_buffer scratch_;  // a shared entity's text, reused
   int64_t owner_ = 0, world_ = 0, out_of_wall_ = 0, along_ = 0, annotation_ = 0;
   int64_t profile_context_ = 0, project_ = 0, container_ = 0, container_place_ = 0;
   std::vector<int64_t> contained_, sheet_plates_, sheet_places_;
   std::map<std::string, std::vector<int64_t>> materials_;
-  std::unordered_map<std::string, int64_t> shared_;
+  struct TextHash {  // looks a shared entity up by its text, without making a string of it
+    using is_transparent = void;
+    size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
+  std::unordered_map<std::string, int64_t, TextHash, std::equal_to<>> shared_;
   std::map<std::pair<std::string, std::string>, CoveringType> types_;
 };
 

@@ -24,7 +24,7 @@ class IfcEnvelopeWriter {
  public:
   // `root(what)`: a rooted entity's GlobalId and owner history for `what`.
   IfcEnvelopeWriter(StepWriter& w, IfcGeometryWriter& g, const Layout& layout,
-                    std::function<std::string(std::string_view)> root);
+                    std::function<StepRoot(std::string_view)> root);
 
   // A unit's placement (relative to `container_place`, at its first face's outer corner, along
   // its façade) and its body, in `colour`.
@@ -43,7 +43,11 @@ class IfcEnvelopeWriter {
                              const std::vector<std::vector<int64_t>>& parts);
 
  private:
-  int64_t add(const std::string& s) { return w_.add(s); }
+  int64_t add(std::string_view entity) { return w_.add(entity); }
+  template <typename First, typename... Rest>
+  int64_t add(fmt::format_string<First, Rest...> format, First&& first, Rest&&... rest) {
+    return w_.add(format, std::forward<First>(first), std::forward<Rest>(rest)...);
+  }
   // A placement relative to `container` at strip position (u, v) of `frame`'s outer face, along
   // the façade there, or along the chord to `to` where it is given.
   int64_t placement_on(const SurfaceFrame& frame, double u, double v, int64_t container,
@@ -62,7 +66,7 @@ class IfcEnvelopeWriter {
   std::map<std::array<double, 9>, int64_t> positions_;
   std::map<std::vector<int64_t>, int64_t> corner_profiles_;
   const Layout& l_;
-  std::function<std::string(std::string_view)> root_;
+  std::function<StepRoot(std::string_view)> root_;
 };
 
 }  // namespace curdle

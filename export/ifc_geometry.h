@@ -60,7 +60,11 @@ class IfcGeometryWriter {
   int64_t body(const std::vector<int64_t>& items);
 
  private:
-  int64_t add(const std::string& s) { return w_.add(s); }
+  int64_t add(std::string_view entity) { return w_.add(entity); }
+  template <typename First, typename... Rest>
+  int64_t add(fmt::format_string<First, Rest...> format, First&& first, Rest&&... rest) {
+    return w_.add(format, std::forward<First>(first), std::forward<Rest>(rest)...);
+  }
   int64_t point(double x, double y);
   int64_t base_placement(double base);
   int64_t style(const Rgb& c);

@@ -14,6 +14,8 @@ namespace {
 TEST(StepFile, StringsAreSevenBitWithQuotesAndBackslashesDoubled) {
   EXPECT_EQ(step_string("Basalt slab 600 x 300"), "'Basalt slab 600 x 300'");
   EXPECT_EQ(step_string("O'Hare \\ yard"), "'O''Hare \\\\ yard'");
+  EXPECT_EQ(step_string("O'Hare"), "'O''Hare'");
+  EXPECT_EQ(step_string("C:\\yard"), "'C:\\\\yard'");
   EXPECT_EQ(step_string("Grès cérame"), "'Gr\\X2\\00E8\\X0\\s c\\X2\\00E9\\X0\\rame'");
   EXPECT_EQ(step_string("瓦"), "'\\X2\\74E6\\X0\\'");
   EXPECT_EQ(step_string("\xF0\x9F\x8C\xB3"), "'\\X4\\0001F333\\X0\\'");  // U+1F333, a tree
@@ -42,6 +44,31 @@ TEST(StepFile, GlobalIdsAreIfcsBase64DerivedFromTheirKeyAlone) {
   EXPECT_EQ(seen.size(), 20000u);
   EXPECT_EQ(ifc_guid("a"), ifc_guid("a"));
   EXPECT_NE(ifc_guid("a"), ifc_guid("b"));
+}
+
+TEST(StepFile, AGuidSourceGivesTheGuidsOfItsPrefixAndWhatFollows) {
+  const IfcGuidSource source("recipe/7/");
+  for (const std::string& id : {"", "P-R00-C1", "pset P-R00-C1", "Gr\xC3\xA8s"}) {
+    const std::array<char, 22> g = source.guid("pset ", id);
+    EXPECT_EQ(std::string(g.begin(), g.end()), ifc_guid("recipe/7/pset " + id));
+  }
+}
+
+TEST(StepFile, EntitiesAreFormattedInPlaceAsTheirStringsWouldBe) {
+  std::ostringstream out;
+  StepWriter w(out, "layout.ifc", "IFC4", "ReferenceView_V1.2");
+  const std::array<char, 22> guid = IfcGuidSource("k").guid("x");
+  EXPECT_EQ(w.add("IFCPROPERTYSINGLEVALUE({},$,IFCLABEL({}),$)", StepText{"O'Hare"},
+                  StepText{"Gr\xC3\xA8s"}),
+            1);
+  EXPECT_EQ(w.add("IFCCARTESIANPOINT(({},{}))", StepReal{600}, StepReal{1e-5}), 2);
+  EXPECT_EQ(w.add("IFCWALL({},{})", StepRoot{guid, 12}, StepRef{2}), 3);
+  w.finish();
+  const std::string s = out.str();
+  EXPECT_NE(s.find("#1=IFCPROPERTYSINGLEVALUE('O''Hare',$,IFCLABEL('Gr\\X2\\00E8\\X0\\s'),$);\n"),
+            std::string::npos);
+  EXPECT_NE(s.find("#2=IFCCARTESIANPOINT((600.,1.E-05));\n"), std::string::npos);
+  EXPECT_NE(s.find("#3=IFCWALL('" + ifc_guid("kx") + "',#12,#2);\n"), std::string::npos);
 }
 
 TEST(StepFile, EntitiesAreNumberedAsTheyAreWrittenBetweenHeaderAndEnd) {
