@@ -311,6 +311,12 @@ expect 2 "is not a regular file" fit /dev/zero --stages 3 --out "$work/fit-bad/x
 # Serve: bad recipes, a busy port and missing page files exit 2; SIGINT stops it cleanly.
 section_serve() {
 expect 2 "cannot read the recipe" serve "$work/no-such-recipe.toml" --port 0
+# README command 1 builds curdle alone: without curdle-serve beside it, serve says how to build it.
+mkdir -p "$work/alone" && cp "$curdle" "$work/alone/curdle"
+"$work/alone/curdle" serve "$fig3" --port 0 > "$work/alone.out" 2>&1
+alone=$?
+[ "$alone" -eq 1 ] && grep -q "curdle-serve, which is not built beside this curdle.*--target curdle_serve" "$work/alone.out" \
+  && pass || fail "serve without curdle-serve exited $alone: $(cat "$work/alone.out")"
 expect 2 "index.html missing" serve "$fig3" --port 0 --web-root "$work"
 "$curdle" serve "$fig3" --port 0 > "$work/serve.out" 2>&1 &
 serve_pid=$!

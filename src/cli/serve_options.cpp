@@ -42,6 +42,15 @@ int exec_serve(int argc, char** argv) {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   const fs::path server = exe.parent_path() / "curdle-serve";
+  // README command 1 builds `curdle` alone, for the main job: the server is built with the rest.
+  if (!fs::is_regular_file(server, ec)) {
+    std::fprintf(stderr,
+                 "curdle: error: `curdle serve` runs curdle-serve, which is not built beside this "
+                 "curdle (%s); build it with `cmake --build --preset release -j2 --target "
+                 "curdle_serve` (README command 2 builds it with everything else)\n",
+                 server.c_str());
+    return 1;
+  }
   std::vector<char*> args{const_cast<char*>(server.c_str())};
   for (int i = 2; i < argc; ++i) args.push_back(argv[i]);
   args.push_back(nullptr);
