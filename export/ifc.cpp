@@ -25,9 +25,9 @@
 namespace curdle {
 namespace {
 
-StepReal real(double v) { return {v}; }
-StepRef ref(int64_t id) { return {id}; }
-StepText text(std::string_view s) { return {s}; }
+using step::real;
+using step::ref;
+using step::text;
 
 // What an element becomes in the model.
 struct IfcClass {

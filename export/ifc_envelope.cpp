@@ -13,9 +13,9 @@ namespace {
 
 using Vec = std::array<double, 3>;
 
-StepRef ref(int64_t id) { return {id}; }
-StepText text(std::string_view s) { return {s}; }
-StepReal real(double v) { return {v}; }
+using step::real;
+using step::ref;
+using step::text;
 
 // A direction with rounding dust (6E-17 for 0) cleared.
 Vec tidy(Vec v) {

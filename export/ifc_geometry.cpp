@@ -11,8 +11,8 @@
 namespace curdle {
 namespace {
 
-StepReal real(double v) { return {v}; }
-StepRef ref(int64_t id) { return {id}; }
+using step::real;
+using step::ref;
 
 // Inner boundaries run clockwise, against the outer ring, as every reader expects of a void.
 Ring clockwise(Ring ring) {

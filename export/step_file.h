@@ -64,6 +64,12 @@ struct StepRoot {  // a rooted entity's first attributes: "'GlobalId',#owner-his
   std::array<char, 22> guid;
   int64_t owner_history;
 };
+// Short names for them where entities are written: add("IFCX({},{})", ref(id), real(x)).
+namespace step {
+inline StepRef ref(int64_t id) { return {id}; }
+inline StepReal real(double value) { return {value}; }
+inline StepText text(std::string_view utf8) { return {utf8}; }
+}  // namespace step
 
 class StepWriter {
  public:

@@ -48,7 +48,7 @@ TEST(StepFile, GlobalIdsAreIfcsBase64DerivedFromTheirKeyAlone) {
 
 TEST(StepFile, AGuidSourceGivesTheGuidsOfItsPrefixAndWhatFollows) {
   const IfcGuidSource source("recipe/7/");
-  for (const std::string& id : {"", "P-R00-C1", "pset P-R00-C1", "Gr\xC3\xA8s"}) {
+  for (const std::string id : {"", "P-R00-C1", "pset P-R00-C1", "Gr\xC3\xA8s"}) {
     const std::array<char, 22> g = source.guid("pset ", id);
     EXPECT_EQ(std::string(g.begin(), g.end()), ifc_guid("recipe/7/pset " + id));
   }

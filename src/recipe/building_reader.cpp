@@ -14,7 +14,7 @@
 namespace curdle::reading {
 namespace {
 
-constexpr size_t kMostVertices = 10000;
+constexpr size_t kMostPlanVertices = 10000;
 constexpr size_t kMostOpenings = 10000;
 
 // An open path's vertices, each [x, y] or [x, y, bulge], within 10 km.
@@ -24,7 +24,7 @@ Contour read_path(TableReader& r) {
       "must be 2 to 10000 points [[x, y], ...] in millimetres along the wall's outer face, "
       "within 10 km; [x, y, bulge] makes the edge to the next point an arc (bulge = tan(angle / "
       "4), positive anticlockwise)",
-      2, kMostVertices, 1e7);
+      2, kMostPlanVertices, 1e7);
 }
 
 BuildingOpening read_opening(TableReader& o, size_t index) {
@@ -131,7 +131,7 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
     const toml::array* a = n->as_array();
     const std::string allowed =
         "must be one height a plan edge, in the plan's order, each in mm up to `height`";
-    if (!a || a->empty() || a->size() > kMostVertices) r.fail("heights", allowed);
+    if (!a || a->empty() || a->size() > kMostPlanVertices) r.fail("heights", allowed);
     for (const toml::node& item : *a) {
       const auto h = finite_number(&item);
       if (!h || *h < 1 || *h > 1e7) r.fail("heights", allowed);
