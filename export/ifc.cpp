@@ -363,45 +363,13 @@ class IfcModel {
            std::any_of(l_.zones.begin(), l_.zones.end(),
                        [](const ZoneCount& z) { return !z.contour.empty(); });
   }
-  // A contour as an IfcIndexedPolyCurve: straight edges as IfcLineIndex, arcs as IfcArcIndex
-  // through their middle, so that a reader draws the true arc rather than its chords.
-  int64_t indexed_curve(const Contour& c) {
-    std::vector<std::string> points, segments;
-    auto index_of = [&](double x, double y) {
-      points.push_back(fmt::format("({},{})", real(x), real(y)));
-      return points.size();
-    };
-    index_of(c[0].x, c[0].y);
-    for (size_t i = 0; i < c.size(); ++i) {
-      const size_t from = points.size();
-      const ContourVertex& next = c[(i + 1) % c.size()];
-      const size_t to = i + 1 < c.size() ? 0 : 1;  // the last edge closes on the first point
-      if (c[i].bulge == 0) {
-        const size_t end = to ? to : index_of(next.x, next.y);
-        segments.push_back(fmt::format("IFCLINEINDEX(({},{}))", from, end));
-        continue;
-      }
-      const Arc a = arc_between(c[i], next);
-      const double mid = a.start_angle() + a.sweep / 2;
-      const size_t middle =
-          index_of(a.centre[0] + a.radius * std::cos(mid), a.centre[1] + a.radius * std::sin(mid));
-      const size_t end = to ? to : index_of(next.x, next.y);
-      segments.push_back(fmt::format("IFCARCINDEX(({},{},{}))", from, middle, end));
-    }
-    std::string list;
-    for (const std::string& p : points) list += (list.empty() ? "" : ",") + p;
-    std::string segs;
-    for (const std::string& sgm : segments) segs += (segs.empty() ? "" : ",") + sgm;
-    const int64_t coordinates = add("IFCCARTESIANPOINTLIST2D((" + list + "))");
-    return add("IFCINDEXEDPOLYCURVE({},({}),.F.)", ref(coordinates), segs);
-  }
   // The outline and zones whose edges are arcs, as annotations a setter-out or a coordinator
   // reads them by: their curves in the surface's plane, arcs kept.
   void arc_annotations() {
     if (!has_arc_contours()) return;
     auto annotate = [&](const std::string& name, const Contour& c) {
       const int64_t rep = add("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',({}))",
-                              ref(annotation_), ref(indexed_curve(c)));
+                              ref(annotation_), ref(g_.contour_curve(c)));
       const int64_t shape = add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
       contained_.push_back(add("IFCANNOTATION({},{},$,'setting out',{},{})",
                                root("annotation " + name), text(name), ref(placement_at(0, 0)),

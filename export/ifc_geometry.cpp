@@ -62,21 +62,54 @@ int64_t IfcGeometryWriter::polyline(const Ring& ring) {
   return add("IFCPOLYLINE(" + step_refs(points) + ")");
 }
 
-int64_t IfcGeometryWriter::point_list_curve(const Ring& ring) {
+int64_t IfcGeometryWriter::point_list(const std::vector<std::array<double, 2>>& points) {
   std::string list = "IFCCARTESIANPOINTLIST2D((";
-  list.reserve(list.size() + 48 * (ring.size() + 1));
-  auto append = [&](const std::array<double, 2>& v) {
+  list.reserve(list.size() + 48 * points.size());
+  for (const auto& [x, y] : points) {
     list += '(';
-    append_step_real(list, v[0] - local_[0]);
+    append_step_real(list, x);
     list += ',';
-    append_step_real(list, v[1] - local_[1]);
+    append_step_real(list, y);
     list += "),";
-  };
-  for (const auto& v : ring) append(v);
-  append(ring.front());
+  }
   list.back() = ')';
   list += ')';
-  return add("IFCINDEXEDPOLYCURVE({},$,.F.)", ref(add(list)));
+  return add(list);
+}
+
+int64_t IfcGeometryWriter::point_list_curve(const Ring& ring) {
+  std::vector<std::array<double, 2>> points;
+  points.reserve(ring.size() + 1);
+  for (const auto& [x, y] : ring) points.push_back({x - local_[0], y - local_[1]});
+  points.push_back(points.front());
+  return add("IFCINDEXEDPOLYCURVE({},$,.F.)", ref(point_list(points)));
+}
+
+int64_t IfcGeometryWriter::contour_curve(const Contour& c) {
+  std::vector<std::array<double, 2>> points{{c[0].x, c[0].y}};
+  std::string segments;
+  auto index_of = [&](double x, double y) {
+    points.push_back({x, y});
+    return points.size();
+  };
+  for (size_t i = 0; i < c.size(); ++i) {
+    const size_t from = points.size();
+    const ContourVertex& next = c[(i + 1) % c.size()];
+    const size_t to = i + 1 < c.size() ? 0 : 1;  // the last edge closes on the first point
+    if (!segments.empty()) segments += ',';
+    if (c[i].bulge == 0) {
+      const size_t end = to ? to : index_of(next.x, next.y);
+      segments += fmt::format("IFCLINEINDEX(({},{}))", from, end);
+      continue;
+    }
+    const Arc a = arc_between(c[i], next);
+    const double mid = a.start_angle() + a.sweep / 2;
+    const size_t middle =
+        index_of(a.centre[0] + a.radius * std::cos(mid), a.centre[1] + a.radius * std::sin(mid));
+    const size_t end = to ? to : index_of(next.x, next.y);
+    segments += fmt::format("IFCARCINDEX(({},{},{}))", from, middle, end);
+  }
+  return add("IFCINDEXEDPOLYCURVE({},({}),.F.)", ref(point_list(points)), segments);
 }
 
 int64_t IfcGeometryWriter::shared_polyline(const Ring& ring) {

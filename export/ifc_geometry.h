@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "export/step_file.h"
+#include "layout/contour.h"
 #include "layout/layout.h"
 
 namespace curdle {
@@ -34,6 +35,10 @@ class IfcGeometryWriter {
   // a sheet's thousands of holes as a point entity for each of their corners were most of a
   // perforated screen's IFC.
   int64_t point_list_curve(const Ring& ring);
+  // A contour as an IfcIndexedPolyCurve in the surface's own coordinates: straight edges as
+  // IfcLineIndex, arcs as IfcArcIndex through their middle, so that a reader draws the true arc
+  // rather than its chords.
+  int64_t contour_curve(const Contour& contour);
   // A polyline written once for every ring of that shape from its local origin (to a
   // nanometre): the openings of a screen, each placed at its own corner, share a few outlines.
   int64_t shared_polyline(const Ring& ring);
@@ -66,6 +71,8 @@ class IfcGeometryWriter {
     return w_.add(format, std::forward<First>(first), std::forward<Rest>(rest)...);
   }
   int64_t point(double x, double y);
+  // An IfcCartesianPointList2D of the points as they are given.
+  int64_t point_list(const std::vector<std::array<double, 2>>& points);
   int64_t base_placement(double base);
   int64_t style(const Rgb& c);
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "layout/zone.h"
@@ -58,6 +59,30 @@ TEST(IfcGeometry, APieceInPartsIsOneCompositeProfileAndHolesRunClockwise) {
   EXPECT_EQ(text.find("IFCCARTESIANPOINT((30.,20.))"), std::string::npos);
   EXPECT_NE(text.find("=IFCINDEXEDPOLYCURVE(#"), std::string::npos);
   EXPECT_NE(text.find("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,"), std::string::npos);
+}
+
+TEST(IfcGeometry, AContourKeepsItsArcsAsArcIndicesThroughTheirMiddles) {
+  std::ostringstream out;
+  StepWriter w(out, "t.ifc", "IFC4", "ReferenceView_V1.2");
+  IfcGeometryWriter g(w, 0.1);
+  g.set_local_origin(10, 20);  // a contour is in the surface's own coordinates
+  // A straight edge along x, and a half circle back over it, counter-clockwise.
+  const int64_t curve = g.contour_curve({{0, 0, 0}, {100, 0, 1}});
+  w.finish();
+  const std::string text = out.str();
+  const size_t list = text.find("=IFCCARTESIANPOINTLIST2D(((0.,0.),(100.,0.),(");
+  ASSERT_NE(list, std::string::npos);
+  // The third point is the arc's middle, (50, 50).
+  const size_t middle = text.find("),(", list + 40) + 3;
+  double x = 0, y = 0;
+  ASSERT_EQ(std::sscanf(text.c_str() + middle, "%lf,%lf", &x, &y), 2);
+  EXPECT_NEAR(x, 50, 1e-9);
+  EXPECT_NEAR(y, 50, 1e-9);
+  const std::string polycurve =
+      "#" + std::to_string(curve) + "=IFCINDEXEDPOLYCURVE(#" +
+      text.substr(text.rfind('#', list) + 1, list - text.rfind('#', list) - 1) +
+      ",(IFCLINEINDEX((1,2)),IFCARCINDEX((2,3,1))),.F.);";
+  EXPECT_NE(text.find(polycurve), std::string::npos) << text;
 }
 
 TEST(IfcGeometry, RingsOfOneShapeFromTheirCornersShareOnePolyline) {
