@@ -93,11 +93,6 @@ class IfcModel {
   StepRoot root(std::string_view what, std::string_view more = {}) const {
     return {guids_.guid(what, more), owner_};
   }
-  int64_t add(std::string_view entity) { return w_.add(entity); }
-  template <typename First, typename... Rest>
-  int64_t add(fmt::format_string<First, Rest...> format, First&& first, Rest&&... rest) {
-    return w_.add(format, std::forward<First>(first), std::forward<Rest>(rest)...);
-  }
   // A property or quantity, written once for every set that holds the same one (IFC lets a
   // property stand in many sets): most pieces share their material, lot, size and area, and
   // the pavilion's model is a third smaller for it.
@@ -108,7 +103,7 @@ class IfcModel {
     const std::string_view text(scratch_.data(), scratch_.size());
     const auto it = shared_.find(text);
     if (it != shared_.end()) return it->second;
-    return shared_[std::string(text)] = add(text);
+    return shared_[std::string(text)] = w_.add(text);
   }
   void context() {
     world_ = g_.world();
@@ -119,43 +114,44 @@ class IfcModel {
       along_ = g_.direction(1, 0, 0);
     }
     const int64_t model =
-        add("IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-05,{},$)", ref(world_));
+        w_.add("IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-05,{},$)", ref(world_));
     g_.set_body_context(
-        add("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Body','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
-            ref(model)));
+        w_.add("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Body','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
+               ref(model)));
     if (has_arc_contours())
-      annotation_ = add(
+      annotation_ = w_.add(
           "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Annotation','Plan',*,*,*,*,{},$,.PLAN_VIEW.,$)",
           ref(model));
     if (l_.kind->ground() == Ground::sheet)
-      profile_context_ =
-          add("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Profile','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
-              ref(model));
+      profile_context_ = w_.add(
+          "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Profile','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
+          ref(model));
     // Added one by one: arguments of one call are evaluated in no fixed order, and the bytes
     // must not depend on the compiler.
-    const std::vector<int64_t> unit_ids{add("IFCSIUNIT(*,.LENGTHUNIT.,.MILLI.,.METRE.)"),
-                                        add("IFCSIUNIT(*,.AREAUNIT.,$,.SQUARE_METRE.)"),
-                                        add("IFCSIUNIT(*,.VOLUMEUNIT.,$,.CUBIC_METRE.)"),
-                                        add("IFCSIUNIT(*,.PLANEANGLEUNIT.,$,.RADIAN.)")};
-    const int64_t units = add("IFCUNITASSIGNMENT(" + step_refs(unit_ids) + ")");
+    const std::vector<int64_t> unit_ids{w_.add("IFCSIUNIT(*,.LENGTHUNIT.,.MILLI.,.METRE.)"),
+                                        w_.add("IFCSIUNIT(*,.AREAUNIT.,$,.SQUARE_METRE.)"),
+                                        w_.add("IFCSIUNIT(*,.VOLUMEUNIT.,$,.CUBIC_METRE.)"),
+                                        w_.add("IFCSIUNIT(*,.PLANEANGLEUNIT.,$,.RADIAN.)")};
+    const int64_t units = w_.add("IFCUNITASSIGNMENT(" + step_refs(unit_ids) + ")");
     owner_history();
     const std::string description =
         l_.source.description.empty() ? std::string("$") : step_string(l_.source.description);
-    project_ = add("IFCPROJECT({},{},{},$,$,$,({}),{})", root("project"), text(l_.source.recipe),
-                   description, ref(model), ref(units));
+    project_ = w_.add("IFCPROJECT({},{},{},$,$,$,({}),{})", root("project"), text(l_.source.recipe),
+                      description, ref(model), ref(units));
     recipe_properties();
   }
 
   // Who made the model and when, as Revit and Solibri expect of every rooted entity: curdle, at
   // the STEP header's fixed time (2000-01-01), so that the same run gives the same bytes.
   void owner_history() {
-    const int64_t person = add("IFCPERSON($,$,'curdle',$,$,$,$,$)");
-    const int64_t organisation = add("IFCORGANIZATION($,'curdle',$,$,$)");
-    const int64_t both = add("IFCPERSONANDORGANIZATION({},{},$)", ref(person), ref(organisation));
+    const int64_t person = w_.add("IFCPERSON($,$,'curdle',$,$,$,$,$)");
+    const int64_t organisation = w_.add("IFCORGANIZATION($,'curdle',$,$,$)");
+    const int64_t both =
+        w_.add("IFCPERSONANDORGANIZATION({},{},$)", ref(person), ref(organisation));
     const int64_t application =
-        add("IFCAPPLICATION({},{},'curdle','curdle')", ref(organisation), text(CURDLE_VERSION));
+        w_.add("IFCAPPLICATION({},{},'curdle','curdle')", ref(organisation), text(CURDLE_VERSION));
     owner_ =
-        add("IFCOWNERHISTORY({},{},$,.NOCHANGE.,$,$,$,946684800)", ref(both), ref(application));
+        w_.add("IFCOWNERHISTORY({},{},$,.NOCHANGE.,$,$,$,946684800)", ref(both), ref(application));
   }
 
   // How to make the model again: recipe, seed, lattice and the window of cells laid.
@@ -179,8 +175,9 @@ class IfcModel {
     }
     props.push_back(label("Curds", curds));
     const int64_t set =
-        add("IFCPROPERTYSET({},'Curdle_Recipe',$,{})", root("recipe"), step_refs(props));
-    add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("recipe-rel"), ref(project_), ref(set));
+        w_.add("IFCPROPERTYSET({},'Curdle_Recipe',$,{})", root("recipe"), step_refs(props));
+    w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("recipe-rel"), ref(project_),
+           ref(set));
   }
 
   // A property of a set: its name and its typed value ("IFCINTEGER(3)").
@@ -202,22 +199,23 @@ class IfcModel {
   // space on the site (IfcSpace .EXTERNAL.): IFC4 has no facility part, and a storey would
   // invent a building where there is none; the space is what a BIM user filters them by.
   void spatial_structure() {
-    const int64_t site_place = add("IFCLOCALPLACEMENT($,{})", ref(world_));
+    const int64_t site_place = w_.add("IFCLOCALPLACEMENT($,{})", ref(world_));
     const int64_t site =
-        add("IFCSITE({},'Site',$,$,{},$,$,.ELEMENT.,$,$,$,$,$)", root("site"), ref(site_place));
-    add("IFCRELAGGREGATES({},$,$,{},({}))", root("project-site"), ref(project_), ref(site));
+        w_.add("IFCSITE({},'Site',$,$,{},$,$,.ELEMENT.,$,$,$,$,$)", root("site"), ref(site_place));
+    w_.add("IFCRELAGGREGATES({},$,$,{},({}))", root("project-site"), ref(project_), ref(site));
     if (ground_works()) {
-      const int64_t space_place = add("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_));
-      const int64_t space = add("IFCSPACE({},'External works',$,$,{},$,{},.ELEMENT.,.EXTERNAL.,0.)",
-                                root("space"), ref(space_place), text("Ground works"));
-      add("IFCRELAGGREGATES({},$,$,{},({}))", root("site-space"), ref(site), ref(space));
+      const int64_t space_place = w_.add("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_));
+      const int64_t space =
+          w_.add("IFCSPACE({},'External works',$,$,{},$,{},.ELEMENT.,.EXTERNAL.,0.)", root("space"),
+                 ref(space_place), text("Ground works"));
+      w_.add("IFCRELAGGREGATES({},$,$,{},({}))", root("site-space"), ref(site), ref(space));
       container_ = space, container_place_ = space_place;
       return;
     }
-    const int64_t building_place = add("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_));
-    const int64_t building = add("IFCBUILDING({},'Building',$,$,{},$,$,.ELEMENT.,$,$,$)",
-                                 root("building"), ref(building_place));
-    add("IFCRELAGGREGATES({},$,$,{},({}))", root("site-building"), ref(site), ref(building));
+    const int64_t building_place = w_.add("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_));
+    const int64_t building = w_.add("IFCBUILDING({},'Building',$,$,{},$,$,.ELEMENT.,$,$,$)",
+                                    root("building"), ref(building_place));
+    w_.add("IFCRELAGGREGATES({},$,$,{},({}))", root("site-building"), ref(site), ref(building));
     // A building of storeys (layout.drawing's floor to floor): what it holds stands in the
     // lowest, its walls running up through the others.
     std::vector<int64_t> storeys;
@@ -227,15 +225,15 @@ class IfcModel {
     while (levels.size() > 1 && levels.back() >= l_.height - 1e-9) levels.pop_back();  // the top
     for (size_t k = 0; k < levels.size(); ++k) {
       const double at = levels[k];
-      const int64_t place = add("IFCLOCALPLACEMENT({},{})", ref(building_place),
-                                ref(k ? g_.axes({0, 0, at}, {0, 0, 1}, {1, 0, 0}) : world_));
-      storeys.push_back(add("IFCBUILDINGSTOREY({},{},$,$,{},$,$,.ELEMENT.,{})",
-                            root(k ? "storey " + std::to_string(k) : "storey"),
-                            text("Level " + std::to_string(k)), ref(place), real(at)));
+      const int64_t place = w_.add("IFCLOCALPLACEMENT({},{})", ref(building_place),
+                                   ref(k ? g_.axes({0, 0, at}, {0, 0, 1}, {1, 0, 0}) : world_));
+      storeys.push_back(w_.add("IFCBUILDINGSTOREY({},{},$,$,{},$,$,.ELEMENT.,{})",
+                               root(k ? "storey " + std::to_string(k) : "storey"),
+                               text("Level " + std::to_string(k)), ref(place), real(at)));
       if (k == 0) container_ = storeys.back(), container_place_ = place;
     }
-    add("IFCRELAGGREGATES({},$,$,{},{})", root("building-storey"), ref(building),
-        step_refs(storeys));
+    w_.add("IFCRELAGGREGATES({},$,$,{},{})", root("building-storey"), ref(building),
+           step_refs(storeys));
   }
 
   bool ground_works() const {
@@ -248,18 +246,18 @@ class IfcModel {
   int64_t placement_at(double x, double y) {
     g_.set_local_origin(x, y);
     const int64_t frame = l_.kind->upright()
-                              ? add("IFCAXIS2PLACEMENT3D({},{},{})", ref(g_.point(x, 0, y)),
-                                    ref(out_of_wall_), ref(along_))
-                              : add("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x, y, 0)));
-    return add("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(frame));
+                              ? w_.add("IFCAXIS2PLACEMENT3D({},{},{})", ref(g_.point(x, 0, y)),
+                                       ref(out_of_wall_), ref(along_))
+                              : w_.add("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x, y, 0)));
+    return w_.add("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(frame));
   }
   // An opening's placement: at its own corner, relative to the sheet it voids (whose frame is
   // already the surface's plane), as IFC places openings in their host.
   int64_t placement_in_sheet(double x, double y, size_t sheet) {
     g_.set_local_origin(x, y);
     const Rect& s = l_.sheets[sheet].area;
-    const int64_t frame = add("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x - s.x, y - s.y, 0)));
-    return add("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[sheet]), ref(frame));
+    const int64_t frame = w_.add("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x - s.x, y - s.y, 0)));
+    return w_.add("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[sheet]), ref(frame));
   }
 
   // The element's body as laid: one solid, whatever its shape (an L-shaped cut piece is one
@@ -297,9 +295,9 @@ class IfcModel {
   int64_t opening_shape(const Element& e) {
     std::vector<int64_t> curves;
     for (const Ring& ring : opening_rings(e)) curves.push_back(g_.shared_polyline(ring));
-    const int64_t rep = add("IFCSHAPEREPRESENTATION({},'Profile','Curve2D',{})",
-                            ref(profile_context_), step_refs(curves));
-    return add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
+    const int64_t rep = w_.add("IFCSHAPEREPRESENTATION({},'Profile','Curve2D',{})",
+                               ref(profile_context_), step_refs(curves));
+    return w_.add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
   }
 
   // The fabrication sheets a perforated surface is cut into: each a plate whose body has its
@@ -309,7 +307,7 @@ class IfcModel {
     const double t = l_.thickness;
     const Rgb metal{201, 205, 210};
     const int64_t material =
-        add("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {:g} mm", t)));
+        w_.add("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {:g} mm", t)));
     std::vector<std::vector<Ring>> holes(l_.sheets.size());
     // Merged openings' islands, per sheet: metal the outline leaves standing.
     std::vector<std::vector<Outline>> islands(l_.sheets.size());
@@ -326,8 +324,8 @@ class IfcModel {
       const int64_t where = placement_at(s.area.x, s.area.y);
       const int64_t body = g_.body({g_.solid(sheet_profile(s, holes[k], islands[k]), 0, t, metal)});
       const int64_t plate =
-          add("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)", root("sheet " + s.id),
-              text(s.id), ref(where), ref(body), text(s.id));
+          w_.add("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)", root("sheet " + s.id),
+                 text(s.id), ref(where), ref(body), text(s.id));
       contained_.push_back(plate);
       sheet_plates_.push_back(plate);
       sheet_places_.push_back(where);
@@ -335,8 +333,8 @@ class IfcModel {
       sets(plate, "sheet " + s.id, "IFCPLATE",
            {s.id, true, true, t, s.area.w, s.area.h, s.surface / 1e6, net});
     }
-    add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("sheet-material"), step_refs(sheet_plates_),
-        ref(material));
+    w_.add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("sheet-material"),
+           step_refs(sheet_plates_), ref(material));
   }
   // A sheet (its rectangle, or each part of its outline) less the holes inside it; the islands
   // of merged openings inside it as parts of their own.
@@ -368,12 +366,12 @@ class IfcModel {
   void arc_annotations() {
     if (!has_arc_contours()) return;
     auto annotate = [&](const std::string& name, const Contour& c) {
-      const int64_t rep = add("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',({}))",
-                              ref(annotation_), ref(g_.contour_curve(c)));
-      const int64_t shape = add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
-      contained_.push_back(add("IFCANNOTATION({},{},$,'setting out',{},{})",
-                               root("annotation " + name), text(name), ref(placement_at(0, 0)),
-                               ref(shape)));
+      const int64_t rep = w_.add("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',({}))",
+                                 ref(annotation_), ref(g_.contour_curve(c)));
+      const int64_t shape = w_.add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
+      contained_.push_back(w_.add("IFCANNOTATION({},{},$,'setting out',{},{})",
+                                  root("annotation " + name), text(name), ref(placement_at(0, 0)),
+                                  ref(shape)));
     };
     if (!l_.outline_contour.empty()) annotate("Outline", l_.outline_contour);
     for (const ZoneCount& z : l_.zones)
@@ -395,13 +393,13 @@ class IfcModel {
     const int64_t product_shape = framed    ? unit.shape
                                   : opening ? opening_shape(e)
                                             : g_.body(solids(e, parts, piece_colour(l_, e)));
-    const int64_t id =
-        add("{}({},{},$,{},{},{},{},{})", c.entity, root(e.id), text(e.id),
-            text(element_type_of(l_, e)), ref(where), ref(product_shape), text(e.id), c.predefined);
+    const int64_t id = w_.add("{}({},{},$,{},{},{},{},{})", c.entity, root(e.id), text(e.id),
+                              text(element_type_of(l_, e)), ref(where), ref(product_shape),
+                              text(e.id), c.predefined);
     if (opening) {
       if (e.sheet >= 0)
-        add("IFCRELVOIDSELEMENT({},$,$,{},{})", root("void ", e.id),
-            ref(sheet_plates_[static_cast<size_t>(e.sheet)]), ref(id));
+        w_.add("IFCRELVOIDSELEMENT({},$,$,{},{})", root("void ", e.id),
+               ref(sheet_plates_[static_cast<size_t>(e.sheet)]), ref(id));
     } else {
       if (framed) parts_[envelope_.facade_of(e)].push_back(id);  // nested in its façade's wall
       contained_.push_back(id);
@@ -435,13 +433,13 @@ class IfcModel {
       std::vector<int64_t> entries;
       for (const IfcSetEntry& entry : set.entries) entries.push_back(set_entry(entry));
       const bool quantities = set.name.rfind("Qto_", 0) == 0;
-      const int64_t definition = quantities
-                                     ? add("IFCELEMENTQUANTITY({},{},$,$,{})", root(set.name, key),
-                                           text(set.name), step_refs(entries))
-                                     : add("IFCPROPERTYSET({},{},$,{})", root(set.name, key),
-                                           text(set.name), step_refs(entries));
-      add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root(set.name + "-rel ", key), ref(id),
-          ref(definition));
+      const int64_t definition =
+          quantities ? w_.add("IFCELEMENTQUANTITY({},{},$,$,{})", root(set.name, key),
+                              text(set.name), step_refs(entries))
+                     : w_.add("IFCPROPERTYSET({},{},$,{})", root(set.name, key), text(set.name),
+                              step_refs(entries));
+      w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root(set.name + "-rel ", key), ref(id),
+             ref(definition));
     }
   }
   int64_t set_entry(const IfcSetEntry& entry) {
@@ -473,8 +471,8 @@ class IfcModel {
     if (e.form == ElementForm::block)
       props.push_back(integer("Level", e.cell_z - l_.view.origin[2]));
     const int64_t set =
-        add("IFCPROPERTYSET({},'Curdle_Element',$,{})", root("pset ", e.id), step_refs(props));
-    add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("pset-rel ", e.id), ref(id), ref(set));
+        w_.add("IFCPROPERTYSET({},'Curdle_Element',$,{})", root("pset ", e.id), step_refs(props));
+    w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("pset-rel ", e.id), ref(id), ref(set));
   }
 
   // curdle's own quantities: the piece's extent, thickness and area as the schedule gives them.
@@ -485,20 +483,20 @@ class IfcModel {
                            shared("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h)),
                            shared("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(t)),
                            shared("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6))};
-    const int64_t set =
-        add("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})", root("qto ", e.id), step_refs(q));
-    add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("qto-rel ", e.id), ref(id), ref(set));
+    const int64_t set = w_.add("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})",
+                               root("qto ", e.id), step_refs(q));
+    w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("qto-rel ", e.id), ref(id), ref(set));
   }
 
   // What groups elements: containment, materials and covering types.
   void closing_relations() {
     if (!contained_.empty())
-      add("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})", root("contained"),
-          step_refs(contained_), ref(container_));
+      w_.add("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})", root("contained"),
+             step_refs(contained_), ref(container_));
     for (const auto& [name, ids] : materials_) {
-      const int64_t m = add("IFCMATERIAL({},$,$)", text(name));
-      add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("material " + name), step_refs(ids),
-          ref(m));
+      const int64_t m = w_.add("IFCMATERIAL({},$,$)", text(name));
+      w_.add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("material " + name), step_refs(ids),
+             ref(m));
     }
     const char* predefined = l_.kind->upright() ? ".CLADDING." : ".FLOORING.";
     for (const auto& [key, covering] : types_) {
@@ -507,15 +505,15 @@ class IfcModel {
       if (covering.stock[0] > 0) {
         const std::vector<int64_t> tiling{length("TileLength", covering.stock[0]),
                                           length("TileWidth", covering.stock[1])};
-        sets.push_back(add("IFCPROPERTYSET({},'Pset_Tiling',$,{})",
-                           root("tiling " + material + size), step_refs(tiling)));
+        sets.push_back(w_.add("IFCPROPERTYSET({},'Pset_Tiling',$,{})",
+                              root("tiling " + material + size), step_refs(tiling)));
       }
       const std::string name = material + ", " + size;
       const int64_t type =
-          add("IFCCOVERINGTYPE({},{},$,$,{},$,$,{},{})", root("type " + name), text(name),
-              sets.empty() ? "$" : step_refs(sets), text(l_.element_type), predefined);
-      add("IFCRELDEFINESBYTYPE({},$,$,{},{})", root("type-rel " + name),
-          step_refs(covering.elements), ref(type));
+          w_.add("IFCCOVERINGTYPE({},{},$,$,{},$,$,{},{})", root("type " + name), text(name),
+                 sets.empty() ? "$" : step_refs(sets), text(l_.element_type), predefined);
+      w_.add("IFCRELDEFINESBYTYPE({},$,$,{},{})", root("type-rel " + name),
+             step_refs(covering.elements), ref(type));
     }
   }
 

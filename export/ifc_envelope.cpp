@@ -70,7 +70,7 @@ IfcEnvelopeWriter::Placed IfcEnvelopeWriter::unit(const Element& e, int64_t cont
   const Axes own = face_axes(boxes.front());
   const int64_t frame = g_.axes(own.origin, tidy(own.z), tidy(own.x));
   Placed p;
-  p.placement = add("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame));
+  p.placement = w_.add("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame));
   std::vector<int64_t> solids;
   if (const auto corner = framed_corner(l_, e, t)) {  // one prism, cut to the corner's angle
     const Vec up = own.local({0, 0, 1}, false), east = own.local({1, 0, 0}, false);
@@ -135,7 +135,7 @@ int64_t IfcEnvelopeWriter::placement_on(const SurfaceFrame& f, double u, double 
     d = {(e[0] - o[0]) / n, (e[1] - o[1]) / n};
   }
   const int64_t frame = g_.axes({o[0], o[1], o[2]}, tidy({d[1], -d[0], 0}), tidy({d[0], d[1], 0}));
-  return add("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame));
+  return w_.add("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame));
 }
 
 std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
@@ -147,24 +147,24 @@ std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
     const SurfaceFrame& f = l_.frames[k];
     const std::string name = "Wall " + f.name;
     const int64_t wall =
-        add("IFCWALL({},{},{},$,{},$,{},.SOLIDWALL.)", root_("wall " + f.name), text(name),
-            text(fmt::format("{:g} mm along the envelope from {:g} mm", f.length, f.start)),
-            ref(placement_on(f, f.start, 0, container)), text(f.name));
+        w_.add("IFCWALL({},{},{},$,{},$,{},.SOLIDWALL.)", root_("wall " + f.name), text(name),
+               text(fmt::format("{:g} mm along the envelope from {:g} mm", f.length, f.start)),
+               ref(placement_on(f, f.start, 0, container)), text(f.name));
     wall_ids.push_back(wall);
     // Its common set, as BIM tools sort walls by it: the façade's name, and outside.
     const int64_t reference =
-        add("IFCPROPERTYSINGLEVALUE('Reference',$,IFCIDENTIFIER({}),$)", text(f.name));
-    const int64_t external = add("IFCPROPERTYSINGLEVALUE('IsExternal',$,IFCBOOLEAN(.T.),$)");
-    const int64_t common = add("IFCPROPERTYSET({},'Pset_WallCommon',$,({},{}))",
-                               root_("wall-common " + f.name), ref(reference), ref(external));
-    add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root_("wall-common-rel " + f.name), ref(wall),
-        ref(common));
+        w_.add("IFCPROPERTYSINGLEVALUE('Reference',$,IFCIDENTIFIER({}),$)", text(f.name));
+    const int64_t external = w_.add("IFCPROPERTYSINGLEVALUE('IsExternal',$,IFCBOOLEAN(.T.),$)");
+    const int64_t common = w_.add("IFCPROPERTYSET({},'Pset_WallCommon',$,({},{}))",
+                                  root_("wall-common " + f.name), ref(reference), ref(external));
+    w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root_("wall-common-rel " + f.name),
+           ref(wall), ref(common));
     // Its units nested in it, and each also in the storey: IfcRelAggregates would say the same,
     // but web-ifc then subtracts the wall's openings from every unit (already cut to them),
     // taking 6 s to open the pavilion instead of 3.
     if (!parts[k].empty())
-      add("IFCRELNESTS({},$,$,{},{})", root_("wall-parts " + f.name), ref(wall),
-          step_refs(parts[k]));
+      w_.add("IFCRELNESTS({},$,$,{},{})", root_("wall-parts " + f.name), ref(wall),
+             step_refs(parts[k]));
   }
   contained = wall_ids;
   int doors = 0, windows = 0;
@@ -184,10 +184,10 @@ std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
     const int64_t cut = g_.solid_placed(g_.rectangle(Rect{0, 0, chord, o.h}),
                                         g_.axes({0, 0, -t - 10 - sag}, {0, 0, 1}, {1, 0, 0}),
                                         t + 20 + sag, Rgb{255, 255, 255});
-    const int64_t opening = add(
+    const int64_t opening = w_.add(
         "IFCOPENINGELEMENT({},{},$,'opening',{},{},{},.OPENING.)", root_("opening " + id), text(id),
         ref(placement_on(*f, o.x, o.y, container, o.right())), ref(g_.body({cut})), text(id));
-    add("IFCRELVOIDSELEMENT({},$,$,{},{})", root_("void " + id), ref(wall_ids[k]), ref(opening));
+    w_.add("IFCRELVOIDSELEMENT({},$,$,{},{})", root_("void " + id), ref(wall_ids[k]), ref(opening));
     // The window's glass or the door's leaf, 40 mm thick in the middle of the reveal.
     const int64_t panel = g_.solid_placed(g_.rectangle(Rect{0, 0, chord, o.h}),
                                           g_.axes({0, 0, -t / 2 - 20}, {0, 0, 1}, {1, 0, 0}), 40,
@@ -201,8 +201,8 @@ std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
                            root_("window " + id), text(id),
                            ref(placement_on(*f, o.x, o.y, container, o.right())),
                            ref(g_.body({panel})), text(id), real(o.h), real(o.w));
-    const int64_t filler = add(entity);
-    add("IFCRELFILLSELEMENT({},$,$,{},{})", root_("fill " + id), ref(opening), ref(filler));
+    const int64_t filler = w_.add(entity);
+    w_.add("IFCRELFILLSELEMENT({},$,$,{},{})", root_("fill " + id), ref(opening), ref(filler));
     contained.push_back(filler);
   }
   return contained;

@@ -43,11 +43,6 @@ class IfcEnvelopeWriter {
                              const std::vector<std::vector<int64_t>>& parts);
 
  private:
-  int64_t add(std::string_view entity) { return w_.add(entity); }
-  template <typename First, typename... Rest>
-  int64_t add(fmt::format_string<First, Rest...> format, First&& first, Rest&&... rest) {
-    return w_.add(format, std::forward<First>(first), std::forward<Rest>(rest)...);
-  }
   // A placement relative to `container` at strip position (u, v) of `frame`'s outer face, along
   // the façade there, or along the chord to `to` where it is given.
   int64_t placement_on(const SurfaceFrame& frame, double u, double v, int64_t container,

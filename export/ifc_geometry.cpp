@@ -42,24 +42,24 @@ IfcGeometryWriter::IfcGeometryWriter(StepWriter& w, double chord_tolerance)
     : w_(w), chord_tolerance_(chord_tolerance) {
   const int64_t origin = point(0, 0, 0);
   z_ = direction(0, 0, 1);
-  world_ = add("IFCAXIS2PLACEMENT3D({},$,$)", ref(origin));
+  world_ = w_.add("IFCAXIS2PLACEMENT3D({},$,$)", ref(origin));
 }
 
 int64_t IfcGeometryWriter::point(double x, double y) {
-  return add("IFCCARTESIANPOINT(({},{}))", real(x - local_[0]), real(y - local_[1]));
+  return w_.add("IFCCARTESIANPOINT(({},{}))", real(x - local_[0]), real(y - local_[1]));
 }
 int64_t IfcGeometryWriter::point(double x, double y, double z) {
-  return add("IFCCARTESIANPOINT(({},{},{}))", real(x), real(y), real(z));
+  return w_.add("IFCCARTESIANPOINT(({},{},{}))", real(x), real(y), real(z));
 }
 int64_t IfcGeometryWriter::direction(double x, double y, double z) {
-  return add("IFCDIRECTION(({},{},{}))", real(x), real(y), real(z));
+  return w_.add("IFCDIRECTION(({},{},{}))", real(x), real(y), real(z));
 }
 
 int64_t IfcGeometryWriter::polyline(const Ring& ring) {
   std::vector<int64_t> points;
   for (const auto& v : ring) points.push_back(point(v[0], v[1]));
   points.push_back(points.front());
-  return add("IFCPOLYLINE(" + step_refs(points) + ")");
+  return w_.add("IFCPOLYLINE(" + step_refs(points) + ")");
 }
 
 int64_t IfcGeometryWriter::point_list(const std::vector<std::array<double, 2>>& points) {
@@ -74,7 +74,7 @@ int64_t IfcGeometryWriter::point_list(const std::vector<std::array<double, 2>>& 
   }
   list.back() = ')';
   list += ')';
-  return add(list);
+  return w_.add(list);
 }
 
 int64_t IfcGeometryWriter::point_list_curve(const Ring& ring) {
@@ -82,7 +82,7 @@ int64_t IfcGeometryWriter::point_list_curve(const Ring& ring) {
   points.reserve(ring.size() + 1);
   for (const auto& [x, y] : ring) points.push_back({x - local_[0], y - local_[1]});
   points.push_back(points.front());
-  return add("IFCINDEXEDPOLYCURVE({},$,.F.)", ref(point_list(points)));
+  return w_.add("IFCINDEXEDPOLYCURVE({},$,.F.)", ref(point_list(points)));
 }
 
 int64_t IfcGeometryWriter::contour_curve(const Contour& c) {
@@ -109,7 +109,7 @@ int64_t IfcGeometryWriter::contour_curve(const Contour& c) {
     const size_t end = to ? to : index_of(next.x, next.y);
     segments += fmt::format("IFCARCINDEX(({},{},{}))", from, middle, end);
   }
-  return add("IFCINDEXEDPOLYCURVE({},({}),.F.)", ref(point_list(points)), segments);
+  return w_.add("IFCINDEXEDPOLYCURVE({},({}),.F.)", ref(point_list(points)), segments);
 }
 
 int64_t IfcGeometryWriter::shared_polyline(const Ring& ring) {
@@ -122,13 +122,13 @@ int64_t IfcGeometryWriter::shared_polyline(const Ring& ring) {
 }
 
 int64_t IfcGeometryWriter::rectangle(const Rect& r) {
-  const int64_t at = add("IFCAXIS2PLACEMENT2D({},$)", ref(point(r.x + r.w / 2, r.y + r.h / 2)));
-  return add("IFCRECTANGLEPROFILEDEF(.AREA.,$,{},{},{})", ref(at), real(r.w), real(r.h));
+  const int64_t at = w_.add("IFCAXIS2PLACEMENT2D({},$)", ref(point(r.x + r.w / 2, r.y + r.h / 2)));
+  return w_.add("IFCRECTANGLEPROFILEDEF(.AREA.,$,{},{},{})", ref(at), real(r.w), real(r.h));
 }
 
 int64_t IfcGeometryWriter::circle(const Circle& c) {
-  return add("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})",
-             ref(polyline(ifc_circle_ring(c, chord_tolerance_))));
+  return w_.add("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})",
+                ref(polyline(ifc_circle_ring(c, chord_tolerance_))));
 }
 
 int64_t IfcGeometryWriter::part_profile(const Outline& part) {
@@ -140,29 +140,29 @@ int64_t IfcGeometryWriter::profile(const std::vector<Outline>& parts) {
   if (parts.size() == 1) return part_profile(parts.front());
   std::vector<int64_t> profiles;
   for (const Outline& part : parts) profiles.push_back(part_profile(part));
-  return add("IFCCOMPOSITEPROFILEDEF(.AREA.,$,{},$)", step_refs(profiles));
+  return w_.add("IFCCOMPOSITEPROFILEDEF(.AREA.,$,{},$)", step_refs(profiles));
 }
 
 int64_t IfcGeometryWriter::profile_with_holes(const Ring& outer, const std::vector<Ring>& holes) {
   const int64_t boundary = polyline(outer);
-  if (holes.empty()) return add("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})", ref(boundary));
+  if (holes.empty()) return w_.add("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})", ref(boundary));
   std::vector<int64_t> inner;
   for (const Ring& hole : holes) inner.push_back(point_list_curve(clockwise(hole)));
-  return add("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,{},{})", ref(boundary), step_refs(inner));
+  return w_.add("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,{},{})", ref(boundary), step_refs(inner));
 }
 
 int64_t IfcGeometryWriter::solid(int64_t profile, double base, double depth, const Rgb& colour) {
-  const int64_t s = add("IFCEXTRUDEDAREASOLID({},{},{},{})", ref(profile),
-                        ref(base_placement(base)), ref(z_), real(depth));
-  add("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour)));
+  const int64_t s = w_.add("IFCEXTRUDEDAREASOLID({},{},{},{})", ref(profile),
+                           ref(base_placement(base)), ref(z_), real(depth));
+  w_.add("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour)));
   return s;
 }
 
 int64_t IfcGeometryWriter::solid_placed(int64_t profile, int64_t position, double depth,
                                         const Rgb& colour) {
-  const int64_t s =
-      add("IFCEXTRUDEDAREASOLID({},{},{},{})", ref(profile), ref(position), ref(z_), real(depth));
-  add("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour)));
+  const int64_t s = w_.add("IFCEXTRUDEDAREASOLID({},{},{},{})", ref(profile), ref(position),
+                           ref(z_), real(depth));
+  w_.add("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour)));
   return s;
 }
 
@@ -173,21 +173,21 @@ int64_t IfcGeometryWriter::axes(const std::array<double, 3>& o, const std::array
     return it != directions_.end() ? it->second : directions_[d] = direction(d[0], d[1], d[2]);
   };
   const int64_t axis = once(z), ref_direction = once(x);
-  return add("IFCAXIS2PLACEMENT3D({},{},{})", ref(point(o[0], o[1], o[2])), ref(axis),
-             ref(ref_direction));
+  return w_.add("IFCAXIS2PLACEMENT3D({},{},{})", ref(point(o[0], o[1], o[2])), ref(axis),
+                ref(ref_direction));
 }
 
 int64_t IfcGeometryWriter::body(const std::vector<int64_t>& items) {
   const int64_t rep =
-      add("IFCSHAPEREPRESENTATION({},'Body','SweptSolid',{})", ref(body_), step_refs(items));
-  return add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
+      w_.add("IFCSHAPEREPRESENTATION({},'Body','SweptSolid',{})", ref(body_), step_refs(items));
+  return w_.add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
 }
 
 int64_t IfcGeometryWriter::base_placement(double base) {
   if (base == 0) return world_;
   auto it = bases_.find(base);
   if (it != bases_.end()) return it->second;
-  return bases_[base] = add("IFCAXIS2PLACEMENT3D({},$,$)", ref(point(0, 0, base)));
+  return bases_[base] = w_.add("IFCAXIS2PLACEMENT3D({},$,$)", ref(point(0, 0, base)));
 }
 
 int64_t IfcGeometryWriter::style(const Rgb& c) {
@@ -195,10 +195,10 @@ int64_t IfcGeometryWriter::style(const Rgb& c) {
   auto it = styles_.find(key);
   if (it != styles_.end()) return it->second;
   const int64_t colour =
-      add("IFCCOLOURRGB($,{},{},{})", real(c.r / 255.0), real(c.g / 255.0), real(c.b / 255.0));
-  const int64_t shading = add("IFCSURFACESTYLESHADING({},0.)", ref(colour));
+      w_.add("IFCCOLOURRGB($,{},{},{})", real(c.r / 255.0), real(c.g / 255.0), real(c.b / 255.0));
+  const int64_t shading = w_.add("IFCSURFACESTYLESHADING({},0.)", ref(colour));
   return styles_[key] =
-             add("IFCSURFACESTYLE({},.BOTH.,({}))", step_string(hex_colour(c)), ref(shading));
+             w_.add("IFCSURFACESTYLE({},.BOTH.,({}))", step_string(hex_colour(c)), ref(shading));
 }
 
 }  // namespace curdle

@@ -65,11 +65,6 @@ class IfcGeometryWriter {
   int64_t body(const std::vector<int64_t>& items);
 
  private:
-  int64_t add(std::string_view entity) { return w_.add(entity); }
-  template <typename First, typename... Rest>
-  int64_t add(fmt::format_string<First, Rest...> format, First&& first, Rest&&... rest) {
-    return w_.add(format, std::forward<First>(first), std::forward<Rest>(rest)...);
-  }
   int64_t point(double x, double y);
   // An IfcCartesianPointList2D of the points as they are given.
   int64_t point_list(const std::vector<std::array<double, 2>>& points);
