@@ -530,6 +530,28 @@ TEST_F(ServerTest, TheApisJsonIsNotCompressed) {
   EXPECT_EQ(field->body.substr(0, 4), "CRD1");
 }
 
+// Nor is anything else: the page's scripts (three.js took 2 s to brotli-compress on every load),
+// a download (1.8 s for a schedule.csv), an error, or the answer to a HEAD.
+TEST_F(ServerTest, NoAnswerIsCompressed) {
+  httplib::Client client("127.0.0.1", port_);
+  client.set_read_timeout(120, 0);
+  client.set_decompress(false);
+  const httplib::Headers accept{{"Accept-Encoding", "gzip, deflate, br, zstd"}};
+  for (const char* target : {"/app.js", "/style.css", "/", "/api/export?seed=3&file=schedule.csv",
+                             "/no-such-file", "/api/generate?seed=x"}) {
+    auto r = client.Get(target, accept);
+    ASSERT_TRUE(r) << target << ": " << httplib::to_string(r.error());
+    EXPECT_FALSE(r->has_header("Content-Encoding"))
+        << target << ": " << r->get_header_value("Content-Encoding");
+    EXPECT_EQ(r->get_header_value("Content-Length"), std::to_string(r->body.size())) << target;
+  }
+  auto head = client.Head("/app.js", accept);
+  ASSERT_TRUE(head) << httplib::to_string(head.error());
+  EXPECT_FALSE(head->has_header("Content-Encoding")) << head->get_header_value("Content-Encoding");
+  EXPECT_EQ(head->get_header_value("Content-Length"),
+            std::to_string(fs::file_size(fs::path(CURDLE_SOURCE_DIR) / "web" / "app.js")));
+}
+
 TEST_F(ServerTest, ThePageIsServedFromItsFiles) {
   auto r = get("/");
   ASSERT_TRUE(r) << httplib::to_string(r.error());

@@ -33,7 +33,7 @@ inline constexpr const char* kJsonType = "application/json; charset=utf-8";
 
 struct ApiResponse {
   int status = 200;
-  // With its charset, which httplib does not compress: brotli took 0.26 s of a page-sized
+  // Never compressed, as no answer is (server.cpp): brotli took 0.26 s of a page-sized
   // generate's 0.26 s over loopback (90 KB of JSON; 4 ms without it).
   std::string content_type = kJsonType;
   std::string body;
@@ -47,8 +47,7 @@ ApiResponse api_recipe(const ApiContext& context);
 // set=lattice.base=3): report, legend, values of the cells, command and recipe text.
 ApiResponse api_generate(const ApiContext& context, const Params& params);
 // GET /api/field: as generate with cells=1, for the page's canvas: the body is binary, so that
-// nothing encodes, compresses or parses the cells on the way (application/octet-stream, which
-// httplib never compresses):
+// nothing encodes, compresses or parses the cells on the way:
 //   "CRD1", then n (uint32, little-endian), then n bytes of JSON: generate's answer without
 //   "values", with "value_bits" (1, 2, 4, 8 or 16 bits a cell; 0 on a 3-D lattice), padded
 //   with spaces to a multiple of four; then the values packed (curdle/packed_values.h): row
