@@ -407,6 +407,8 @@ class Placer {
     for (const Shape& s : it->second.shapes) {
       if (drawing_.shapes.size() >= kMostShapes) throw SiteError(too_many());
       Shape out = placed(s, p, tolerance_);
+      // Counted as placed: a block's few vertices, inserted in arrays, can be millions.
+      if ((vertices_ += out.path.size()) > kMostVertices) throw SiteError(too_many());
       if (depth > 0 && (out.layer == "0" || out.layer.empty())) out.layer = insert_layer;
       out.insert = insert;
       drawing_.shapes.push_back(std::move(out));
@@ -428,9 +430,9 @@ class Placer {
   }
   std::string too_many() const {
     return fmt::format(
-        "{}: places more than {} shapes once its blocks are inserted, more than "
-        "a site drawing needs; keep only the layers of the surface",
-        file_, kMostShapes);
+        "{}: places more than {} shapes or {} vertices once its blocks are inserted, more "
+        "than a site drawing needs; keep only the layers of the surface",
+        file_, kMostShapes, kMostVertices);
   }
   const std::set<std::string>& missing() const { return missing_; }
 
@@ -440,6 +442,7 @@ class Placer {
   double tolerance_;
   Drawing& drawing_;
   int next_insert_ = 0;
+  size_t vertices_ = 0;
   std::set<std::string> missing_;
 };
 
