@@ -6,8 +6,8 @@ metres (shape_wkt is written to the micrometre: extents within 1 µm, areas with
 its EPSG code, every piece where the datum, the rotation and its schedule put it.
 
 Usage: gpkg_read_back.py CURDLE SOURCE_DIR [MODELS]   (Debian's python3 with GDAL)
-MODELS: the directories js.ifc_write wrote (one per pattern, with layout.gpkg and schedule.csv);
-without it, every pattern is generated here."""
+MODELS: the directories js.ifc_write wrote (one per pattern it writes, with layout.gpkg and
+schedule.csv); every other pattern is generated here."""
 import csv
 import math
 import subprocess
@@ -55,7 +55,7 @@ def schedule(out):
 
 
 def check_pattern(recipe, work):
-    rows = schedule(work) if models else generate(recipe, work)
+    rows = schedule(work) if work.is_dir() else generate(recipe, work)
     seen, tables = set(), set()
     for layer, feature in features(work / "layout.gpkg"):
         if layer.GetName() not in tables:  # fields by index: a lookup by name per call is slow
@@ -118,7 +118,8 @@ total = 0
 patterns = sorted(p for p in (source / "patterns").rglob("*.toml") if "[layout]" in p.read_text(encoding="utf-8"))
 with tempfile.TemporaryDirectory() as tmp:
     for i, recipe in enumerate(patterns):
-        total += check_pattern(recipe, models / recipe.stem if models else Path(tmp) / str(i))
+        written = models / recipe.stem if models else None
+        total += check_pattern(recipe, written if written and written.is_dir() else Path(tmp) / str(i))
     check_georef(Path(tmp) / "georef")
 if failures:
     print(f"{len(failures)} failures")

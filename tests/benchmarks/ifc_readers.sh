@@ -1,19 +1,21 @@
 #!/usr/bin/env bash
-# How long every shipped pattern's layout.ifc takes web-ifc and IFClite to open and mesh whole
-# (the perforated screen's thousands of openings included), and the slowest; fails when one
-# takes web-ifc more than 30 s. Usage: tests/benchmarks/ifc_readers.sh [BUILD_DIR]
+# Every shipped pattern's layout.ifc read back by web-ifc and IFClite with the suite's checks
+# (tests/js/ifc_run.sh; the suite itself reads one pattern for each kind of element), then how
+# long each reader takes to open and mesh each model whole (the perforated screen's thousands of
+# openings included), and the slowest; fails when a check fails or a model takes web-ifc more
+# than 30 s. Usage: tests/benchmarks/ifc_readers.sh [BUILD_DIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:-$root/build/release}
 [ -x "$build/curdle" ] || { echo "build first: cmake --build --preset release" >&2; exit 2; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-dirs=()
-while IFS= read -r recipe; do
-  grep -q '^\[layout\]' "$recipe" || continue
-  out="$work/$(basename "$recipe" .toml)"
-  "$build/curdle" generate "$recipe" --out "$out" --outputs layout.ifc > /dev/null
-  dirs+=("$out")
-done < <(find "$root/patterns" -name '*.toml' | sort)
 echo "load: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
+run="$root/tests/js/ifc_run.sh"
+CURDLE="$build/curdle" bash "$run" "$root" "$work" write-all
+# Each reader's problems and its summary, not the line of every model that agrees.
+bash "$run" "$root" "$work" web-ifc | { grep -v ' agree ' || true; }
+bash "$run" "$root" "$work" ifclite | { grep -v ' agree ' || true; }
+echo "every pattern's layout.ifc read back by both readers"
+mapfile -t dirs < <(find "$work" -mindepth 1 -maxdepth 1 -type d | sort)
 cd "$root/tests/js" && node ifc_timing.mjs --limit 30 "${dirs[@]}"

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # layout.ifc read back by two independent readers, in steps ctest runs side by side:
-#   write    writes every pattern's layout.ifc with its schedule.csv into MODELS (one of them
-#            twice: the bytes must agree), and its layout.gpkg, which gpkg_read_back.py reads;
+#   write    writes the layout.ifc of the patterns ifc_suite_models.txt names, with its
+#            schedule.csv, into MODELS (one of them twice: the bytes must agree), and its
+#            layout.gpkg, which gpkg_read_back.py reads;
+#   write-all  the same for every pattern (tests/benchmarks/ifc_readers.sh);
 #   web-ifc  reads them back with web-ifc (ifc_check.mjs);
 #   ifclite  reads them back with IFClite, checking every entity against the IFC4 schema
 #            (ifc_lite_check.mjs).
 # A reader's step may take a shard, K/N: every N-th model from the K-th, so that ctest runs the
 # shards side by side.
-# Usage: CURDLE=path/to/curdle ifc_run.sh SOURCE_DIR MODELS write|web-ifc|ifclite [K/N]
+# Usage: CURDLE=path/to/curdle ifc_run.sh SOURCE_DIR MODELS write|write-all|web-ifc|ifclite [K/N]
 set -euo pipefail
 src=${1:?source dir}
 models=${2:?models dir}
@@ -32,14 +34,21 @@ print("\n".join(sorted(mine)))
 PY
 }
 case $step in
-  write)
+  write | write-all)
     curdle=${CURDLE:?path to curdle}
     rm -rf "$models" && mkdir -p "$models"
-    while IFS= read -r recipe; do
+    if [ "$step" = write ]; then
+      mapfile -t recipes < <(sed 's/#.*//; /^ *$/d; s| *$||; s|.*|'"$src"'/patterns/&.toml|' \
+                               "$here/ifc_suite_models.txt")
+    else
+      mapfile -t recipes < <(find "$src/patterns" -name '*.toml' | sort)
+    fi
+    for recipe in "${recipes[@]}"; do
+      [ -f "$recipe" ] || { echo "ifc_run.sh: no pattern $recipe" >&2; exit 2; }
       grep -q '^\[layout\]' "$recipe" || continue
       "$curdle" generate "$recipe" --out "$models/$(basename "$recipe" .toml)" \
         --outputs layout.ifc,schedule.csv,layout.gpkg,report.json > /dev/null
-    done < <(find "$src/patterns" -name '*.toml' | sort)
+    done
     again=$(mktemp -d)
     trap 'rm -rf "$again"' EXIT
     "$curdle" generate "$src/patterns/courtyard-l-shaped.toml" --out "$again" --outputs layout.ifc > /dev/null
@@ -47,5 +56,5 @@ case $step in
     echo "ifc: $(ls "$models" | wc -l) models written, the same bytes twice" ;;
   web-ifc) mapfile -t dirs < <(shard_models) && cd "$here" && node ifc_check.mjs "${dirs[@]}" ;;
   ifclite) mapfile -t dirs < <(shard_models) && cd "$here" && node ifc_lite_check.mjs "${dirs[@]}" ;;
-  *) echo "ifc_run.sh: unknown step '$step' (write, web-ifc or ifclite)" >&2; exit 2 ;;
+  *) echo "ifc_run.sh: unknown step '$step' (write, write-all, web-ifc or ifclite)" >&2; exit 2 ;;
 esac
