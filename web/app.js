@@ -140,6 +140,7 @@ function fieldDone() {
 // From each change to its pixels drawn, as performance measures "curd-redraw" (the benchmark
 // tests/benchmarks/page_redraw.mjs reads them).
 async function regenerate() {
+  dropSlowLoads();
   if (fieldBusy) { fieldAgain = true; return; }
   fieldBusy = true;
   const mine = ++generation;

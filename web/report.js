@@ -151,17 +151,52 @@ function updateLayoutPreview(hasLayout, win) {
   window.dispatchEvent(new Event("layout3d"));
   if (!window.view3d)
     $("view3d-caption").textContent = "The 3-D view needs three.js beside the page: run setup.sh and build again.";
+  showPreview(win, "/api/export?" + query({ file: "layout.png", window: win || undefined }));
+}
+
+// layout.png, fetched so that a change can drop it on its way (dropSlowLoads); until it
+// arrives the old drawing stays, dimmed, and the caption says so. data-src is the drawing
+// asked for, data-shown the one shown.
+let previewController = null;
+async function showPreview(win, src) {
   const img = $("layout-preview");
-  const src = "/api/export?" + query({ file: "layout.png", window: win || undefined });
-  if (img.getAttribute("src") === src) return;
-  // Until the new drawing arrives, the old one is dimmed and the caption says so.
+  const caption = () => `The layout of ${win ? "segment " + win : "the field"}, as layout.png`;
+  if (img.dataset.shown === src) {  // a change came back to it, or its load was dropped
+    img.classList.remove("stale");
+    $("layout-caption").textContent = caption();
+    return;
+  }
+  if (previewController) previewController.abort();
+  const controller = previewController = new AbortController();
+  img.dataset.src = src;
   img.classList.add("stale");
   $("layout-caption").textContent = "Drawing the layout…";
-  img.onload = () => {
-    img.classList.remove("stale");
-    $("layout-caption").textContent = `The layout of ${win ? "segment " + win : "the field"}, as layout.png`;
-    img.dataset.shown = src;
-  };
-  img.onerror = () => { $("layout-caption").textContent = "The layout could not be drawn."; };
-  img.src = src;
+  try {
+    const response = await fetch(src, { signal: controller.signal });
+    if (!response.ok) throw new Error(`the server answered ${response.status}`);
+    const blob = await response.blob();
+    if (controller !== previewController) return;
+    const old = img.getAttribute("src");
+    img.onload = () => {
+      if (old && old.startsWith("blob:")) URL.revokeObjectURL(old);
+      img.classList.remove("stale");
+      $("layout-caption").textContent = caption();
+      img.dataset.shown = src;
+    };
+    img.onerror = () => { $("layout-caption").textContent = "The layout could not be drawn."; };
+    img.src = URL.createObjectURL(blob);
+  } catch (err) {
+    if (err.name !== "AbortError") $("layout-caption").textContent = "The layout could not be drawn.";
+  }
+}
+
+// A change makes the layout's drawing, the recipe text and the 3-D view stale: what is on its
+// way for them is dropped at once (the server stops a request whose client has gone), so that
+// it does not hold the two cores while the curd is redrawn. They are asked for again when the
+// controls rest (renderExports).
+function dropSlowLoads() {
+  clearTimeout(slowTimer);
+  if (recipeController) recipeController.abort();
+  if (previewController) previewController.abort();
+  window.dispatchEvent(new Event("layout3d-drop"));
 }

@@ -7,6 +7,7 @@ import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
 const EYE = 1.6;  // m: where a person's eyes are
+const ELEMENTS = 1;  // the layer of the model's elements, which the camera does not draw
 const box = document.getElementById("view3d");
 const info = document.getElementById("view3d-info");
 const caption = document.getElementById("view3d-caption");
@@ -15,10 +16,15 @@ renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
 renderer.setClearColor(0xf4f6f8, 1);
 box.append(renderer.domElement);
 const scene = new THREE.Scene();
-scene.add(new THREE.HemisphereLight(0xffffff, 0x808080, 2.2));
+const sky = new THREE.HemisphereLight(0xffffff, 0x808080, 2.2);
 const sun = new THREE.DirectionalLight(0xffffff, 1.8);
 sun.position.set(-3, 8, 5);
-scene.add(sun);
+// Lit on both layers: the drawing the camera sees, and the elements drawn one by one when the
+// page's tests compare the two (mergedAgrees).
+for (const light of [sky, sun]) {
+  light.layers.enable(ELEMENTS);
+  scene.add(light);
+}
 const camera = new THREE.PerspectiveCamera(50, 4 / 3, 0.05, 2000);
 const controls = new OrbitControls(camera, renderer.domElement);
 // The camera stays above the ground: however far it is dragged or zoomed, its eye is at least
@@ -39,11 +45,12 @@ controls.addEventListener("change", () => {
 });
 controls.minDistance = 0.2;
 let model = null;
+let drawing = null;  // what the camera draws of the model (mergedDrawing)
 let loading = 0;  // the latest model asked for
 // What the page's tests read: the model shown, how much of the picture it covers, the eye's
 // height over the model's lowest point.
 window.view3d = { src: null, loads: 0, drawn: 0, error: null, readIn: null, pointOnElement, model: () => model,
-                  eyeAboveGround: () => camera.position.y - ground };
+                  eyeAboveGround: () => camera.position.y - ground, mergedAgrees };
 
 function size() {
   const w = box.clientWidth || 600;
@@ -59,12 +66,38 @@ function render() {
   renderer.render(scene, camera);
 }
 
+// The picture's pixels as RGBA, bottom row first.
+function pixelsOf() {
+  const gl = renderer.getContext();
+  const pixels = new Uint8Array(gl.drawingBufferWidth * gl.drawingBufferHeight * 4);
+  gl.readPixels(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  return pixels;
+}
+
+// For the page's tests: the share of pixels that differ by more than a few levels between the
+// merged drawing and the elements drawn one by one, and the share each covers.
+function mergedAgrees() {
+  const picture = (layer) => {
+    camera.layers.set(layer);
+    render();
+    return pixelsOf();
+  };
+  const one = picture(ELEMENTS), merged = picture(0);
+  render();
+  const background = (p, i) => Math.abs(p[i] - 0xf4) + Math.abs(p[i + 1] - 0xf6) + Math.abs(p[i + 2] - 0xf8) <= 12;
+  let differ = 0, covered = [0, 0];
+  for (let i = 0; i < one.length; i += 4) {
+    if (Math.abs(one[i] - merged[i]) + Math.abs(one[i + 1] - merged[i + 1]) + Math.abs(one[i + 2] - merged[i + 2]) > 12) differ++;
+    if (!background(one, i)) covered[0]++;
+    if (!background(merged, i)) covered[1]++;
+  }
+  const n = one.length / 4;
+  return { differ: differ / n, elements: covered[0] / n, merged: covered[1] / n };
+}
+
 // The share of the picture that is not background.
 function drawnShare() {
-  const gl = renderer.getContext();
-  const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
-  const pixels = new Uint8Array(w * h * 4);
-  gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  const pixels = pixelsOf();
   let drawn = 0;
   for (let i = 0; i < pixels.length; i += 16)
     if (Math.abs(pixels[i] - 0xf4) + Math.abs(pixels[i + 1] - 0xf6) + Math.abs(pixels[i + 2] - 0xf8) > 12) drawn++;
@@ -115,6 +148,7 @@ function elementAt(clientX, clientY) {
   const r = renderer.domElement.getBoundingClientRect();
   const ndc = new THREE.Vector2(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1);
   const ray = new THREE.Raycaster();
+  ray.layers.set(ELEMENTS);
   ray.setFromCamera(ndc, camera);
   for (const hit of ray.intersectObject(model, true)) {
     let o = hit.object;
@@ -247,6 +281,82 @@ async function buildModel(scene, buffer, stillWanted) {
   return root;
 }
 
+// What the camera draws: the model's meshes merged into one a material, so that a segment of
+// thousands of elements is a few draw calls. A mesh an element took software WebGL 40-85 ms
+// on the page's thread for each picture, and longer in the GPU process, where the 2-D
+// canvas's redraw waited behind it. The elements stay in the scene on a layer of their own,
+// which the camera does not draw, for clicks to find them and for the page's tests. Null when
+// a newer model was asked for meanwhile.
+async function mergedDrawing(root, stillWanted) {
+  root.updateMatrixWorld(true);
+  const byMaterial = new Map();
+  const drawing = new THREE.Group();
+  root.traverse((o) => {
+    if (!o.isMesh) return;
+    o.layers.set(ELEMENTS);
+    // As they are: an instanced mesh, or one of several materials (not made from our glb).
+    if (o.isInstancedMesh || Array.isArray(o.material)) drawing.add(placedCopy(o));
+    else (byMaterial.get(o.material) || byMaterial.set(o.material, []).get(o.material)).push(o);
+  });
+  let deadline = performance.now() + SLICE_MS;
+  for (const [material, meshes] of byMaterial) {
+    drawing.add(new THREE.Mesh(await mergedGeometry(meshes, !material.flatShading, async () => {
+      if (performance.now() < deadline) return true;
+      await yieldToPage();
+      deadline = performance.now() + SLICE_MS;
+      return stillWanted();
+    }), material));
+    if (!stillWanted()) return null;
+  }
+  return drawing;
+}
+
+function placedCopy(o) {
+  const copy = o.clone();
+  o.matrixWorld.decompose(copy.position, copy.quaternion, copy.scale);
+  copy.layers.set(0);
+  return copy;
+}
+
+// One geometry of `meshes` in world coordinates; a mirrored mesh's triangles turned back, as
+// the renderer would face them. `goOn` is asked every few hundred meshes.
+async function mergedGeometry(meshes, withNormals, goOn) {
+  let vertices = 0, indices = 0;
+  for (const m of meshes) {
+    const g = m.geometry, n = g.attributes.position.count;
+    vertices += n;
+    indices += g.index ? g.index.count : n;
+    withNormals &&= !!g.attributes.normal;
+  }
+  const position = new Float32Array(vertices * 3);
+  const normal = withNormals ? new Float32Array(vertices * 3) : null;
+  const index = new Uint32Array(indices);
+  const v = new THREE.Vector3(), turn = new THREE.Matrix3();
+  let vo = 0, io = 0;
+  for (let k = 0; k < meshes.length; ++k) {
+    const m = meshes[k], g = m.geometry, p = g.attributes.position, n = g.attributes.normal;
+    turn.getNormalMatrix(m.matrixWorld);
+    for (let i = 0; i < p.count; ++i) {
+      v.fromBufferAttribute(p, i).applyMatrix4(m.matrixWorld).toArray(position, (vo + i) * 3);
+      if (normal) v.fromBufferAttribute(n, i).applyMatrix3(turn).normalize().toArray(normal, (vo + i) * 3);
+    }
+    const [second, third] = m.matrixWorld.determinant() < 0 ? [2, 1] : [1, 2];
+    const own = g.index ? g.index.array : null, count = own ? g.index.count : p.count;
+    for (let t = 0; t + 2 < count; t += 3) {
+      index[io++] = vo + (own ? own[t] : t);
+      index[io++] = vo + (own ? own[t + second] : t + second);
+      index[io++] = vo + (own ? own[t + third] : t + third);
+    }
+    vo += p.count;
+    if ((k & 255) === 255 && !(await goOn())) break;
+  }
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute("position", new THREE.BufferAttribute(position, 3));
+  if (normal) geometry.setAttribute("normal", new THREE.BufferAttribute(normal, 3));
+  geometry.setIndex(new THREE.BufferAttribute(index, 1));
+  return geometry;
+}
+
 // The GPU's copies of a model no longer shown.
 function dispose(root) {
   root.traverse((o) => {
@@ -256,8 +366,16 @@ function dispose(root) {
   });
 }
 
+const SHOWN = "The same layout.glb in 3-D: drag to turn (the eye stays above ground), scroll to " +
+  "zoom, click an element; Reset view goes back to this view";
+
 async function show(src) {
-  if (!src || window.view3d.src === src) return;
+  if (!src) return;
+  if (window.view3d.src === src) {  // a change came back to it, or its load was dropped
+    box.classList.remove("stale");
+    caption.textContent = SHOWN;
+    return;
+  }
   const wanted = ++loading;
   const stillWanted = () => wanted === loading;
   caption.textContent = "Loading the layout in 3-D…";
@@ -275,23 +393,27 @@ async function show(src) {
       window.view3d.readIn = "page: " + answer.unsupported;
     }
     if (!root || !stillWanted()) return;
+    const merged = await mergedDrawing(root, stillWanted);
+    if (!merged || !stillWanted()) return;
     if (model) {
-      scene.remove(model);
+      scene.remove(model, drawing);
       dispose(model);
+      drawing.traverse((o) => { if (o.isMesh) o.geometry.dispose(); });
     }
     model = root;
-    scene.add(model);
+    drawing = merged;
+    scene.add(model, drawing);
     size();
     frame(model);
+    const rendering = performance.now();
     render();
+    performance.measure("view3d-render", { start: rendering, end: performance.now() });
     window.view3d.src = src;
     window.view3d.loads += 1;
     window.view3d.drawn = drawnShare();
     window.view3d.error = null;
     box.classList.remove("stale");
-    caption.textContent =
-      "The same layout.glb in 3-D: drag to turn (the eye stays above ground), scroll to zoom, " +
-      "click an element; Reset view goes back to this view";
+    caption.textContent = SHOWN;
   } catch (err) {
     window.view3d.error = String(err.message || err);
     caption.textContent = "The layout could not be shown in 3-D: " + window.view3d.error;
@@ -300,4 +422,12 @@ async function show(src) {
 
 window.addEventListener("resize", () => { size(); render(); });
 window.addEventListener("layout3d", () => show(window.layout3dSrc));
+// A change drops the model on its way (report.js dropSlowLoads): the fetch, and the building of
+// one fetched.
+window.addEventListener("layout3d-drop", () => {
+  ++loading;
+  for (const [id, waiting] of glbWaiting) waiting({ id, aborted: true });
+  glbWaiting.clear();
+  glbWorker.postMessage({ drop: true });
+});
 if (window.layout3dSrc) show(window.layout3dSrc);

@@ -13,10 +13,11 @@ function errorText(buffer, status) {
 }
 
 // Answers each message {id, url} with what `read(id, buffer)` posts of the fetched bytes, or
-// with {id, error}; an aborted request posts nothing.
+// with {id, error}; an aborted request posts nothing. {drop: true} aborts the one on its way.
 function answerLatest(read) {
   self.onmessage = async ({ data }) => {
     if (currentRequest) currentRequest.abort();
+    if (data.drop) return;  // {drop: true}: only the request on its way dropped
     const controller = new AbortController();
     currentRequest = controller;
     const { id, url } = data;

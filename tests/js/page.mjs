@@ -189,7 +189,8 @@ try {
   // The layout drawing follows once the controls rest; wait for the one of this segment.
   const layoutShown = (win) => page.waitForFunction((w) => {
     const img = document.querySelector('#layout-preview');
-    return img.dataset.shown === img.getAttribute('src') && img.dataset.shown.includes(encodeURIComponent(w));
+    return img.dataset.shown === img.dataset.src && img.dataset.shown.includes(encodeURIComponent(w)) &&
+           img.complete && img.naturalWidth > 0;
   }, win, { timeout: 30000 });
   await layoutShown('107,77,67,67');
   check((await page.textContent('#layout-caption')).includes('segment 107,77,67,67'), 'the segment\'s layout.png is drawn below the curd');
@@ -231,6 +232,12 @@ try {
   check(sameAsLoader.readIn === 'worker' && sameAsLoader.same && sameAsLoader.count > 100,
         `the 3-D view reads layout.glb in its worker (${sameAsLoader.readIn}), into the same ${sameAsLoader.count} elements ` +
         `as three.js's loader: names, extras, boxes and materials ${sameAsLoader.first}`);
+  // The camera draws the elements merged into a mesh a material: the same picture as drawn one
+  // by one.
+  const agrees = await page.evaluate(() => window.view3d.mergedAgrees());
+  check(agrees.differ < 0.02 && agrees.merged > 0.2 && Math.abs(agrees.merged - agrees.elements) < 0.005,
+        `the 3-D view's merged meshes draw what its elements would (${(agrees.differ * 100).toFixed(2)} % of pixels differ; ` +
+        `${(agrees.merged * 100).toFixed(1)} % covered against ${(agrees.elements * 100).toFixed(1)} %)`);
   await page.evaluate(() => document.querySelector('#view3d').scrollIntoView({ block: 'center' }));
   const target = await page.evaluate(() => window.view3d.pointOnElement());
   check(!!target, 'an element of the 3-D view can be found under the pointer');
@@ -487,6 +494,9 @@ try {
     await page.evaluate(() => document.querySelector('#view3d').scrollIntoView({ block: 'center' }));
     const target = await page.evaluate(() => window.view3d.pointOnElement());
     check(target && /^F-R\d+-C\d+$/.test(target.id), `the building stands in the 3-D view, a brick found by its ID (${target && target.id})`);
+    const building = await page.evaluate(() => window.view3d.mergedAgrees());
+    check(building.differ < 0.02 && building.merged > 0.05,
+          `the building's merged meshes draw what its bricks would (${(building.differ * 100).toFixed(2)} % of pixels differ)`);
     await page.locator('#canvas-wrap').screenshot({ path: path.join(shots, '9-building-strip.png') });
   } finally {
     kiosk.server.kill('SIGINT');

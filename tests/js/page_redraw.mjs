@@ -4,7 +4,9 @@
 // under way when the next change comes), and the page's "curd-redraw" measures (app.js: from
 // the change to the pixels drawn, gl.finish() included) are read back. Also a palette colour's
 // redraw, which takes no new data. fetch_ms is the part until the field is in the page,
-// server_ms the server's own part of that. Prints one JSON line per recipe.
+// server_ms the server's own part of that; view3d_render_ms the 3-D view's drawing of each new
+// model on the page's thread (models a change dropped on their way are not drawn). Prints one
+// JSON line per recipe.
 // Usage: node page_redraw.mjs CURDLE ROUNDS RECIPE...
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
@@ -55,11 +57,14 @@ try {
         }
         return times;
       });
+      // The 3-D view's own pictures of each new model, on the page's thread.
+      const view3d = await page.evaluate(() => performance.getEntriesByName('view3d-render').map((e) => e.duration));
       const [w, h] = await page.evaluate(() => fieldSize());
       console.log(JSON.stringify({
         recipe: recipe.split('/').pop(), cells: `${w}x${h}`, rounds,
         redraw_ms_median: quantile(redraws, 0.5), redraw_ms_p90: quantile(redraws, 0.9),
         fetch_ms_median: quantile(fetch_ms, 0.5), server_ms_median: quantile(server_ms, 0.5), recolour_ms_median: quantile(recolour, 0.5),
+        view3d_render_ms_median: view3d.length ? quantile(view3d, 0.5) : null, view3d_models: view3d.length,
         accept_encoding: [...encodings].join(' | '),
       }));
       await page.close();
