@@ -44,9 +44,9 @@ def _build(settings):
         _run("cmake", "-S", SOURCE, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
              "-DCURDLE_BUILD_TESTS=OFF", "-DCURDLE_PYTHON=ON",
              f"-DPython3_EXECUTABLE={sys.executable}")
+    # The program, the server, the module, libcurdle.so and its image and GeoPackage modules.
     _run("cmake", "--build", build, "--parallel", str(os.cpu_count() or 2), "--target",
-         "curdle", "curdle_serve", "curdle_python", "curdle_library", "curdle_image",
-         *(["curdle_gpkg"] if (build / "libcurdle_gpkg.so").exists() or not named else []))
+         "curdle_wheel_contents")
     return build
 
 
