@@ -5,12 +5,7 @@
 # openings included), and the slowest; fails when a check fails or a model takes web-ifc more
 # than 30 s. Usage: tests/benchmarks/ifc_readers.sh [BUILD_DIR]
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-build=${1:-$root/build/release}
-[ -x "$build/curdle" ] || { echo "build first: cmake --build --preset release" >&2; exit 2; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-echo "load: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
+source "$(dirname "$0")/prologue.sh"
 run="$root/tests/js/ifc_run.sh"
 CURDLE="$build/curdle" bash "$run" "$root" "$work" write-all
 # Each reader's problems and its summary, not the line of every model that agrees.

@@ -5,19 +5,14 @@
 # under 50 ms at 2048 x 2048 (medians). Prints one JSON line per size, then the verdicts.
 # Usage: tests/benchmarks/page_redraw.sh [BUILD_DIR] [ROUNDS]
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-build=$(cd "${1:-$root/build/release}" && pwd)
+source "$(dirname "$0")/prologue.sh"
 rounds=${2:-15}
-[ -x "$build/curdle" ] || { echo "build first: cmake --build --preset release" >&2; exit 2; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 recipes=()
 for side in 256 1024 2048; do
   sed "s/^cells = .*/cells = [$side, $side]/" "$root/patterns/paper/fig8-segment-of-large-curd.toml" \
     > "$work/field-$side.toml"
   recipes+=("$work/field-$side.toml")
 done
-echo "load: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
 cd "$root/tests/js"
 node page_redraw.mjs "$build/curdle" "$rounds" "${recipes[@]}" | tee "$work/lines"
 /usr/bin/python3 - "$work/lines" <<'PY'
