@@ -366,12 +366,21 @@ function dispose(root) {
   });
 }
 
+// Drops the model on its way, if any: its fetch, and the building of one fetched.
+function dropLoad() {
+  ++loading;
+  for (const [id, waiting] of glbWaiting) waiting({ id, aborted: true });
+  glbWaiting.clear();
+  glbWorker.postMessage({ drop: true });
+}
+
 const SHOWN = "The same layout.glb in 3-D: drag to turn (the eye stays above ground), scroll to " +
   "zoom, click an element; Reset view goes back to this view";
 
 async function show(src) {
   if (!src) return;
   if (window.view3d.src === src) {  // a change came back to it, or its load was dropped
+    dropLoad();  // another model on its way is no longer wanted
     box.classList.remove("stale");
     caption.textContent = SHOWN;
     return;
@@ -422,12 +431,6 @@ async function show(src) {
 
 window.addEventListener("resize", () => { size(); render(); });
 window.addEventListener("layout3d", () => show(window.layout3dSrc));
-// A change drops the model on its way (report.js dropSlowLoads): the fetch, and the building of
-// one fetched.
-window.addEventListener("layout3d-drop", () => {
-  ++loading;
-  for (const [id, waiting] of glbWaiting) waiting({ id, aborted: true });
-  glbWaiting.clear();
-  glbWorker.postMessage({ drop: true });
-});
+// A change drops the model on its way (report.js dropSlowLoads).
+window.addEventListener("layout3d-drop", dropLoad);
 if (window.layout3dSrc) show(window.layout3dSrc);
