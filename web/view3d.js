@@ -74,6 +74,10 @@ function pixelsOf() {
   return pixels;
 }
 
+// Whether pixel i (RGBA, at byte i) is the clear colour, within a few levels.
+const isBackground = (p, i) =>
+  Math.abs(p[i] - 0xf4) + Math.abs(p[i + 1] - 0xf6) + Math.abs(p[i + 2] - 0xf8) <= 12;
+
 // For the page's tests: the share of pixels that differ by more than a few levels between the
 // merged drawing and the elements drawn one by one, and the share each covers.
 function mergedAgrees() {
@@ -84,12 +88,11 @@ function mergedAgrees() {
   };
   const one = picture(ELEMENTS), merged = picture(0);
   render();
-  const background = (p, i) => Math.abs(p[i] - 0xf4) + Math.abs(p[i + 1] - 0xf6) + Math.abs(p[i + 2] - 0xf8) <= 12;
   let differ = 0, covered = [0, 0];
   for (let i = 0; i < one.length; i += 4) {
     if (Math.abs(one[i] - merged[i]) + Math.abs(one[i + 1] - merged[i + 1]) + Math.abs(one[i + 2] - merged[i + 2]) > 12) differ++;
-    if (!background(one, i)) covered[0]++;
-    if (!background(merged, i)) covered[1]++;
+    if (!isBackground(one, i)) covered[0]++;
+    if (!isBackground(merged, i)) covered[1]++;
   }
   const n = one.length / 4;
   return { differ: differ / n, elements: covered[0] / n, merged: covered[1] / n };
@@ -100,7 +103,7 @@ function drawnShare() {
   const pixels = pixelsOf();
   let drawn = 0;
   for (let i = 0; i < pixels.length; i += 16)
-    if (Math.abs(pixels[i] - 0xf4) + Math.abs(pixels[i + 1] - 0xf6) + Math.abs(pixels[i + 2] - 0xf8) > 12) drawn++;
+    if (!isBackground(pixels, i)) drawn++;
   return drawn / (pixels.length / 16);
 }
 
