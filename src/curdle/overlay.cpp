@@ -8,6 +8,7 @@
 
 #include "curdle/markov.h"
 #include "curdle/theory.h"
+#include "curdle/view_cells.h"
 
 namespace curdle {
 
@@ -116,38 +117,15 @@ std::string value_label(uint32_t value, const std::vector<CurdSpec>& curds) {
 void scan_rows(const CurdField& field, const Box& view,
                const std::function<void(int64_t, int64_t, std::span<const uint16_t>)>& row,
                const std::function<void(double)>& progress) {
-  const CellIndex& index = field.index;
-  const Lattice& l = index.lattice();
-  const int64_t side = static_cast<int64_t>(l.root_side());
-  // Per-axis offsets, so that the inner loop is a sum of table entries. A root's base is
-  // linear in its coordinates, so each axis's share of it goes into that axis's table
-  // (unsigned sums wrap alike in any order); the first axis's table carries the constant.
-  std::array<int64_t, 3> first_root{0, 0, 0};
-  for (int d = 0; d < l.dimension; ++d) first_root[d] = floor_div(view.origin[d], side);
-  const uint64_t base = index.root_base(first_root);
-  std::array<std::vector<uint64_t>, 3> offset;
-  for (int d = 0; d < 3; ++d) {
-    offset[d].resize(view.size[d]);
-    for (int64_t i = 0; i < view.size[d]; ++i) {
-      if (d >= l.dimension) {
-        offset[d][i] = d == 0 ? base : 0;
-        continue;
-      }
-      const int64_t c = view.origin[d] + i;
-      Coord r = first_root;
-      r[d] = floor_div(c, side);
-      offset[d][i] = index.axis_offset(d, static_cast<uint64_t>(c - r[d] * side)) +
-                     (index.root_base(r) - base) + (d == 0 ? base : 0);
-    }
-  }
+  const ViewCells cells(field, view);
   std::vector<const Bitset*> finest;
   for (size_t c = 0; c < field.curds.size(); ++c) finest.push_back(&field.finest(c));
   std::vector<uint16_t> values(view.size[0]);
   for (int64_t z = 0; z < view.size[2]; ++z)
     for (int64_t y = 0; y < view.size[1]; ++y) {
-      const uint64_t row_start = offset[1][y] + offset[2][z];
+      const uint64_t row_start = cells.row(y, z);
       for (int64_t x = 0; x < view.size[0]; ++x) {
-        const uint64_t i = offset[0][x] + row_start;
+        const uint64_t i = cells.at(row_start, x);
         uint16_t v = 0;
         for (size_t c = 0; c < finest.size(); ++c)
           v |= static_cast<uint16_t>(finest[c]->test(i)) << c;
