@@ -5,8 +5,10 @@
 // the change to the pixels drawn, gl.finish() included) are read back. Also a palette colour's
 // redraw, which takes no new data. fetch_ms is the part until the field is in the page,
 // server_ms the server's own part of that; view3d_render_ms the 3-D view's drawing of each new
-// model on the page's thread (models a change dropped on their way are not drawn). Prints one
-// JSON line per recipe.
+// model on the page's thread (models a change dropped on their way are not drawn); floor_ms
+// what the browser alone costs: the smallest field the pattern takes (67 x 67 cells, 4 KB of
+// head and 0.5 KB of values) fetched the same way, off the page's thread, with no change drawn
+// and nothing else on its way. Prints one JSON line per recipe.
 // Usage: node page_redraw.mjs CURDLE ROUNDS RECIPE...
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
@@ -57,6 +59,16 @@ try {
         }
         return times;
       });
+      const floor = await page.evaluate(async () => {
+        const times = [];
+        for (let i = 0; i < 15; ++i) {
+          await new Promise((r) => setTimeout(r, 50));
+          const t = performance.now();
+          await fetchField(`/api/field?seed=${i}&set=${encodeURIComponent('field.cells=[67,67]')}`);
+          times.push(performance.now() - t);
+        }
+        return times;
+      });
       // The 3-D view's own pictures of each new model, on the page's thread.
       const view3d = await page.evaluate(() => performance.getEntriesByName('view3d-render').map((e) => e.duration));
       const [w, h] = await page.evaluate(() => fieldSize());
@@ -64,6 +76,7 @@ try {
         recipe: recipe.split('/').pop(), cells: `${w}x${h}`, rounds,
         redraw_ms_median: quantile(redraws, 0.5), redraw_ms_p90: quantile(redraws, 0.9),
         fetch_ms_median: quantile(fetch_ms, 0.5), server_ms_median: quantile(server_ms, 0.5), recolour_ms_median: quantile(recolour, 0.5),
+        floor_ms_median: quantile(floor, 0.5),
         view3d_render_ms_median: view3d.length ? quantile(view3d, 0.5) : null, view3d_models: view3d.length,
         accept_encoding: [...encodings].join(' | '),
       }));
