@@ -1,23 +1,25 @@
 #!/usr/bin/env bash
 # examples/blender_layout.py in Debian's Blender, headless, for a paving cut along an outline,
-# a perforated screen and a stack of blocks; then one Blender start checks every saved scene
-# against the program's schedule.csv (tests/blender/check_scene.py).
+# a perforated screen, a stack of blocks and a brick façade; then every saved scene is checked
+# against the program's schedule.csv (tests/blender/check_scene.py), all in one Blender start
+# (tests/blender/build_and_check.py).
 # Usage: blender_test.sh CURDLE SOURCE_DIR PYTHONPATH
 set -euo pipefail
 curdle=$1 src=$2
 export CURDLE_PYTHONPATH=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-checks=()
+steps=()
 for pattern in patterns/courtyard-l-shaped.toml patterns/paper/fig4-perforation.toml \
                patterns/stacked-blocks.toml patterns/brick-facade-stretcher-bond.toml; do
   name=$(basename "$pattern" .toml)
   "$curdle" generate "$src/$pattern" --seed 5 --out "$tmp/$name" --outputs schedule.csv > /dev/null
-  blender -b --factory-startup --python "$src/examples/blender_layout.py" -- "$src/$pattern" \
-    --seed 5 --out "$tmp/$name.blend" > "$tmp/$name.log" 2>&1 || { cat "$tmp/$name.log"; exit 1; }
-  grep "blender_layout:" "$tmp/$name.log"
-  checks+=("$tmp/$name.blend" "$tmp/$name/schedule.csv")
+  steps+=("$src/$pattern" 5 "$tmp/$name.blend" "$tmp/$name/schedule.csv")
 done
-blender -b --factory-startup --python "$src/tests/blender/check_scene.py" -- "${checks[@]}" \
-  > "$tmp/check.log" 2>&1 || { cat "$tmp/check.log"; exit 1; }
-grep "check_scene:" "$tmp/check.log"
+blender -b --factory-startup --python "$src/tests/blender/build_and_check.py" -- \
+  "$src/examples/blender_layout.py" "$src/tests/blender/check_scene.py" "${steps[@]}" \
+  > "$tmp/blender.log" 2>&1 || { cat "$tmp/blender.log"; exit 1; }
+grep -E "^(blender_layout|check_scene):" "$tmp/blender.log"
+# Every scene built and checked, none failed (Blender's exit code says the last step only).
+[ "$(grep -c '^blender_layout: ' "$tmp/blender.log")" = 4 ] || { cat "$tmp/blender.log"; exit 1; }
+grep -q "^check_scene: 0 failures" "$tmp/blender.log" || { cat "$tmp/blender.log"; exit 1; }
