@@ -59,6 +59,7 @@ try {
         }
         return times;
       });
+      await page.waitForTimeout(1500);  // the last change's 3-D model in and drawn
       const floor = await page.evaluate(async () => {
         const times = [];
         for (let i = 0; i < 15; ++i) {
