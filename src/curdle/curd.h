@@ -55,13 +55,13 @@ struct CurdField {
   std::vector<Curd> curds;
 
   const Bitset& finest(size_t curd) const { return curds[curd].stages.back(); }
-  // The cell's value: bit i set when curd i survived there.
-  uint32_t value_at(const Coord& cell) const {
-    const uint64_t i = index.finest_index(cell);
+  // The value of the cell at finest index i: bit c set when curd c survived there.
+  uint32_t value_of(uint64_t i) const {
     uint32_t v = 0;
     for (size_t c = 0; c < curds.size(); ++c) v |= uint32_t{finest(c).test(i)} << c;
     return v;
   }
+  uint32_t value_at(const Coord& cell) const { return value_of(index.finest_index(cell)); }
 };
 
 }  // namespace curdle

@@ -118,19 +118,12 @@ void scan_rows(const CurdField& field, const Box& view,
                const std::function<void(int64_t, int64_t, std::span<const uint16_t>)>& row,
                const std::function<void(double)>& progress) {
   const ViewCells cells(field, view);
-  std::vector<const Bitset*> finest;
-  for (size_t c = 0; c < field.curds.size(); ++c) finest.push_back(&field.finest(c));
   std::vector<uint16_t> values(view.size[0]);
   for (int64_t z = 0; z < view.size[2]; ++z)
     for (int64_t y = 0; y < view.size[1]; ++y) {
       const uint64_t row_start = cells.row(y, z);
-      for (int64_t x = 0; x < view.size[0]; ++x) {
-        const uint64_t i = cells.at(row_start, x);
-        uint16_t v = 0;
-        for (size_t c = 0; c < finest.size(); ++c)
-          v |= static_cast<uint16_t>(finest[c]->test(i)) << c;
-        values[x] = v;
-      }
+      for (int64_t x = 0; x < view.size[0]; ++x)
+        values[x] = static_cast<uint16_t>(field.value_of(cells.at(row_start, x)));
       row(view.origin[1] + y, view.origin[2] + z, values);
       if (progress && (y & 255) == 0)
         progress(static_cast<double>(z * view.size[1] + y) / (view.size[1] * view.size[2]));
