@@ -1,6 +1,7 @@
 """Run in Blender: examples/blender_layout.py as a user runs it (its own arguments, its main)
 for each pattern given, then check_scene.py over the saved scenes, all in one Blender start
-(a start takes 2.3 s, five of them most of the test). A failing step exits Blender non-zero.
+(a start takes 2.3 s, five of them most of the test). A failing step exits Blender non-zero
+(run with --python-exit-code 1, so that an uncaught exception does too).
 
     blender -b --factory-startup --python build_and_check.py -- EXAMPLE CHECK_SCENE \
         RECIPE SEED SCENE.blend SCHEDULE.csv [RECIPE SEED SCENE.blend SCHEDULE.csv ...]
