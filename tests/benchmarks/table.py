@@ -166,8 +166,12 @@ def patterns_whole(build, rows, work):
     return times
 
 
+PAGE_ROUNDS = 20  # changes per size: a median of 10 moved by a fifth between runs minutes apart
+
+
 def page(build, rows):
-    lines = subprocess.run(["bash", str(ROOT / "tests/benchmarks/page_redraw.sh"), str(build), "10"],
+    lines = subprocess.run(["bash", str(ROOT / "tests/benchmarks/page_redraw.sh"), str(build),
+                            str(PAGE_ROUNDS)],
                            capture_output=True, text=True).stdout.splitlines()
     for line in lines:
         if not line.startswith("{"):
@@ -177,7 +181,8 @@ def page(build, rows):
         if goal:
             side = r["cells"].split("x")[0]
             rows.add(f"page.{side}", f"the page, a change to the curd's pixels drawn, {r['cells']} cells "
-                     f"(headless Chromium over loopback, median of 10; of it the server "
+                     f"(headless Chromium over loopback, median of {PAGE_ROUNDS}, with the 3-D view's reload "
+                     f"under way at each change; of it the server "
                      f"{r['server_ms_median']:.1f} ms; the same browser fetching a 67 × 67 field "
                      f"alone, the floor of any change, {r['floor_ms_median']:.1f} ms)",
                      r["redraw_ms_median"], "ms",
