@@ -119,8 +119,9 @@ class SurvivalBatch {
     }
     draw_all(n);
     for (size_t i = 0; i < n; ++i)
-      for (uint32_t ties = blocks[i].tie; ties; ties &= ties - 1)
-        resolve(blocks[i], std::countr_zero(ties));
+      if (blocks[i].tie)  // rare: 1 in 16 draws
+        blocks[i].below =
+            decide_ties(blocks[i].block, blocks[i].root, blocks[i].below, blocks[i].tie);
     for (size_t p = 0; p < count_; ++p) write_children(parents_[p]);
     count_ = 0;
   }
@@ -168,12 +169,8 @@ class SurvivalBatch {
         uint64_t bits = 0;
         for (unsigned done = 0; done < count; done += 16, ++i) {
           uint32_t below = b.below[i];
-          if (b.tie[i]) {  // rare: 1 in 16 draws
-            Block block{(parent.path * B + c + done) >> 4, parent.root, below, b.tie[i]};
-            for (uint32_t ties = block.tie; ties; ties &= ties - 1)
-              resolve(block, std::countr_zero(ties));
-            below = block.below;
-          }
+          if (b.tie[i])  // rare: 1 in 16 draws
+            below = decide_ties((parent.path * B + c + done) >> 4, parent.root, below, b.tie[i]);
           bits |= static_cast<uint64_t>(below) << done;
         }
         if (bits && !filter.all) bits &= allowed_bits(w_, filter, c, count);
@@ -191,12 +188,7 @@ class SurvivalBatch {
     for (size_t p = 0; p < count_; ++p) {
       const Parent& parent = parents_[p];
       uint32_t below = b.below[p];
-      if (b.tie[p]) {  // rare: 1 in 16 draws
-        Block block{parent.path, parent.root, below, b.tie[p]};
-        for (uint32_t ties = block.tie; ties; ties &= ties - 1)
-          resolve(block, std::countr_zero(ties));
-        below = block.below;
-      }
+      if (b.tie[p]) below = decide_ties(parent.path, parent.root, below, b.tie[p]);  // 1 in 16
       if (below && w_.prune) {
         const ChildFilter filter = filter_children(w_, parent.index);
         if (!filter.all) below &= static_cast<uint32_t>(allowed_bits(w_, filter, 0, 16));
@@ -231,10 +223,9 @@ class SurvivalBatch {
     draw_lanes(n);
     for (size_t i = 0; i < n; ++i) {
       if (!b.tie[i]) continue;  // rare: 1 in 16 draws
-      Block& block = b.blocks[i];
-      block.below = b.below[i];
-      for (uint32_t ties = b.tie[i]; ties; ties &= ties - 1) resolve(block, std::countr_zero(ties));
-      b.below[i] = static_cast<uint16_t>(block.below);
+      const Block& block = b.blocks[i];
+      b.below[i] =
+          static_cast<uint16_t>(decide_ties(block.block, block.root, b.below[i], b.tie[i]));
     }
     const uint64_t field = (uint64_t{1} << B) - 1;
     uint64_t* words = children_.words.data();
@@ -278,13 +269,17 @@ class SurvivalBatch {
                   b.tie.data());
   }
 
-  // A tie on the top byte: the next 56 bits decide (kind 1).
-  void resolve(Block& b, unsigned bit) {
+  // A draw's survivors `below` once its ties on the top byte (bits of `tie`) are decided: the
+  // next 56 bits of each tied child decide (kind 1).
+  uint32_t decide_ties(uint64_t block, uint32_t root, uint32_t below, uint32_t tie) const {
     // A threshold with no bits below its top byte (p = 1/2, 1/4, ...): a tie is never below.
-    if ((threshold_ & kLow56) == 0) return;
-    const auto t =
-        w_.rng.draw(b.block << 4 | bit, b.root, w_.curd, w_.stage, DrawKind::tie_break, 0);
-    if ((RandomStream::high_word(t) >> 8) < (threshold_ & kLow56)) b.below |= 1u << bit;
+    if ((threshold_ & kLow56) == 0) return below;
+    for (; tie; tie &= tie - 1) {
+      const unsigned bit = static_cast<unsigned>(std::countr_zero(tie));
+      const auto t = w_.rng.draw(block << 4 | bit, root, w_.curd, w_.stage, DrawKind::tie_break, 0);
+      if ((RandomStream::high_word(t) >> 8) < (threshold_ & kLow56)) below |= 1u << bit;
+    }
+    return below;
   }
 
   void write_children(const Parent& parent) {
