@@ -18,6 +18,9 @@ using std::chrono::milliseconds;
 
 thread_local int serving_socket = -1;
 thread_local bool closing_after_request = false;
+thread_local bool connection_taken = false;
+class DeadlineStream;
+thread_local DeadlineStream* serving_stream = nullptr;
 
 // Waits until `socket` can be read (or written), at most `wait`; false on timeout or error.
 bool wait_for(int socket, short events, milliseconds wait) {
@@ -56,6 +59,12 @@ class DeadlineStream : public httplib::Stream {
     sending_ = false;
   }
   bool has_buffered() const { return begin_ < end_; }
+  // The bytes read but not yet taken, given up.
+  std::string take_buffered() {
+    std::string bytes(buffer_ + begin_, buffer_ + end_);
+    begin_ = end_ = 0;
+    return bytes;
+  }
   // A read ran out of time: the connection is not worth keeping.
   bool failed() const { return failed_; }
 
@@ -82,6 +91,7 @@ class DeadlineStream : public httplib::Stream {
   }
 
   ssize_t write(const char* ptr, size_t size) override {
+    if (connection_taken) return static_cast<ssize_t>(size);  // its handler spoke for it
     if (!sending_) send_by_ = Clock::now() + limits_.sending, sending_ = true;
     if (!wait_for(socket_, POLLOUT, write_wait())) return -1;
     return ::send(socket_, ptr, size, MSG_NOSIGNAL);
@@ -130,6 +140,11 @@ int HttpServer::current_socket() { return serving_socket; }
 
 void HttpServer::close_after_this_request() { closing_after_request = true; }
 
+HttpServer::TakenConnection HttpServer::take_connection() {
+  connection_taken = true;
+  return {serving_socket, serving_stream ? serving_stream->take_buffered() : std::string()};
+}
+
 bool client_gone(int socket) {
   if (socket < 0) return false;
   char byte;
@@ -157,6 +172,7 @@ bool HttpServer::process_and_close_socket(socket_t sock) {
 void HttpServer::serve(socket_t sock) {
   serving_socket = sock;
   DeadlineStream stream(sock, limits_);
+  serving_stream = &stream;
   for (int left = limits_.requests_per_connection; left > 0; --left) {
     // A new connection's first request may take as long to start as any request may take to
     // arrive: with the keep-alive's 2 s, a client slowed by a busy machine was closed unanswered
@@ -168,10 +184,12 @@ void HttpServer::serve(socket_t sock) {
     closing_after_request = false;
     bool closed = false;
     if (!process_request(stream, left == 1, closed, nullptr) || closed || stream.failed() ||
-        closing_after_request)
+        closing_after_request || connection_taken)
       break;
   }
   serving_socket = -1;
+  serving_stream = nullptr;
+  connection_taken = false;
 }
 
 }  // namespace curdle::server

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <string>
 
 namespace curdle::server {
 
@@ -31,6 +32,15 @@ class HttpServer : public httplib::Server {
   // Ends the connection after the response now being made: a request that could not be framed
   // exactly (a bad line, a body left unread) leaves bytes that must never be read as the next.
   static void close_after_this_request();
+  // Hands the connection of the request now being served to its handler for good (a WebSocket
+  // after its handshake): whatever httplib writes after the handler is dropped, and the
+  // connection closes when the handler returns. Its socket, and the bytes already read past
+  // the request (a client that did not wait for the answer).
+  struct TakenConnection {
+    int socket = -1;
+    std::string early_bytes;
+  };
+  static TakenConnection take_connection();
 
  private:
   bool process_and_close_socket(socket_t sock) override;

@@ -6,6 +6,7 @@
 #include <netinet/tcp.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -16,7 +17,9 @@
 #include "app/stopping.h"
 #include "curdle/error.h"
 #include "curdle/text.h"
+#include "server/field_socket.h"
 #include "server/http_connection.h"
+#include "server/websocket.h"
 
 namespace curdle::server {
 
@@ -76,6 +79,33 @@ bool is_ip_literal_with_port(const std::string& value, int port) {
   return !name.empty() && name.find_first_not_of("0123456789.") == std::string::npos;
 }
 
+// Whether a query's keys and values are all text: UTF-8 with no control characters.
+bool query_is_text(const Params& params) {
+  for (const auto& [key, value] : params)
+    if (!valid_utf8(key) || !valid_utf8(value) || has_control_characters(key) ||
+        has_control_characters(value))
+      return false;
+  return true;
+}
+
+// Whether a header's comma-separated list holds `token`, in any case ("keep-alive, Upgrade").
+bool header_has_token(const std::string& value, const std::string& token) {
+  size_t start = 0;
+  while (start <= value.size()) {
+    size_t end = value.find(',', start);
+    if (end == std::string::npos) end = value.size();
+    std::string item = value.substr(start, end - start);
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    if (item.size() == token.size() &&
+        std::equal(item.begin(), item.end(), token.begin(),
+                   [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
+      return true;
+    start = end + 1;
+  }
+  return false;
+}
+
 ConnectionLimits connection_limits(const ServerConfig& c) {
   ConnectionLimits limits;
   limits.arrival = std::chrono::milliseconds(static_cast<int64_t>(c.arrival_seconds * 1000));
@@ -125,6 +155,8 @@ struct Server::Impl {
   std::counting_semaphore<64> slots;
   std::counting_semaphore<64> light_slot{1};  // a generate as small as the page's
   std::counting_semaphore<64> field_slot{1};  // the page's canvas (/api/field)
+  // Open field sockets, each holding a connection's thread; past them the page fetches.
+  std::counting_semaphore<64> field_sockets{8};
 
   explicit Impl(ServerConfig c)
       : config(std::move(c)),
@@ -157,10 +189,13 @@ struct Server::Impl {
   template <class F>
   void run_in(std::counting_semaphore<64>& pool, httplib::Response& res, F&& endpoint,
               Footprint footprint = Footprint::large) {
-    if (!pool.try_acquire_for(std::chrono::seconds(60))) {
-      reply(res, api_error(503, "the server is busy; try again"));
-      return;
-    }
+    reply(res, answer_in(pool, std::forward<F>(endpoint), footprint));
+  }
+  // The answer of `endpoint` run as run_in runs it; what it throws is thrown on.
+  template <class F>
+  ApiResponse answer_in(std::counting_semaphore<64>& pool, F&& endpoint, Footprint footprint) {
+    if (!pool.try_acquire_for(std::chrono::seconds(60)))
+      return api_error(503, "the server is busy; try again");
     struct Release {
       std::counting_semaphore<64>& s;
       bool trim;
@@ -185,7 +220,49 @@ struct Server::Impl {
     else
       run();
     if (failure) std::rethrow_exception(failure);
-    reply(res, answer);
+    return answer;
+  }
+
+  // GET /api/field-socket: the handshake checked, the connection becomes the page's field
+  // channel (field_socket.h) for as long as the page keeps it.
+  void field_socket(const httplib::Request& req, httplib::Response& res) {
+    const auto accept = websocket_accept(req.get_header_value("Sec-WebSocket-Key"));
+    if (req.method != "GET" || !header_has_token(req.get_header_value("Upgrade"), "websocket") ||
+        !header_has_token(req.get_header_value("Connection"), "upgrade") ||
+        req.get_header_value("Sec-WebSocket-Version") != "13" || !accept) {
+      res.set_header("Sec-WebSocket-Version", "13");
+      reply(res, api_error(426,
+                           "/api/field-socket is a WebSocket (version 13, with a 16-byte "
+                           "Sec-WebSocket-Key); fetch /api/field for one field"));
+      return;
+    }
+    if (!field_sockets.try_acquire()) {
+      reply(res, api_error(503,
+                           "the server has as many field sockets open as it keeps; fetch "
+                           "/api/field instead"));
+      return;
+    }
+    struct Release {
+      std::counting_semaphore<64>& s;
+      ~Release() { s.release(); }
+    } release{field_sockets};
+    const HttpServer::TakenConnection taken = HttpServer::take_connection();
+    serve_field_socket(
+        taken.socket, taken.early_bytes, *accept, config.field_socket,
+        [this](const std::string& query) { return field_over_socket(query); },
+        [this] { return stopping.load(); });
+  }
+
+  ApiResponse field_over_socket(const std::string& query) {
+    const Params params = query_params("?" + query);
+    if (!query_is_text(params))
+      return api_error(400, "the query holds bytes that are not UTF-8 text");
+    try {
+      return answer_in(
+          field_slot, [&] { return api_field(config.api, params); }, Footprint::small);
+    } catch (...) {
+      return api_error(500, "internal error");
+    }
   }
 
   bool host_allowed(const std::string& value) const {
@@ -251,10 +328,8 @@ struct Server::Impl {
       const std::string site = req.get_header_value("Sec-Fetch-Site");
       if (!site.empty() && site != "same-origin" && site != "none")
         return refuse(403, "requests from other sites are refused (Sec-Fetch-Site " + site + ")");
-      for (const auto& [key, value] : query_params(req.target))
-        if (!valid_utf8(key) || !valid_utf8(value) || has_control_characters(key) ||
-            has_control_characters(value))
-          return refuse(400, "the query holds bytes that are not UTF-8 text");
+      if (!query_is_text(query_params(req.target)))
+        return refuse(400, "the query holds bytes that are not UTF-8 text");
     }
     return httplib::Server::HandlerResponse::Unhandled;
   }
@@ -304,6 +379,10 @@ struct Server::Impl {
       run_in(
           field_slot, res, [&] { return api_field(config.api, query_params(req.target)); },
           Footprint::small);
+    });
+    // The same fields over one open socket, without a fetch's cost on each change.
+    http.Get("/api/field-socket", [this](const httplib::Request& req, httplib::Response& res) {
+      field_socket(req, res);
     });
     http.Get("/api/export", [this](const httplib::Request& req, httplib::Response& res) {
       heavy(res, [&] { return api_export(config.api, query_params(req.target)); });

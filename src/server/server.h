@@ -9,6 +9,7 @@
 #include <string>
 
 #include "server/api.h"
+#include "server/field_socket.h"
 
 namespace curdle::server {
 
@@ -32,6 +33,8 @@ struct ServerConfig {
   double arrival_seconds = 10;
   // Connections served at once; more are answered 503 at once and closed.
   int max_connections = 96;
+  // The page's field socket: its message size and deadlines.
+  FieldSocketLimits field_socket;
 };
 
 class Server {
