@@ -12,24 +12,31 @@ function errorText(buffer, status) {
   }
 }
 
-// Answers each message {id, url} with what `read(id, buffer)` posts of the fetched bytes, or
-// with {id, error}; an aborted request posts nothing. {drop: true} aborts the one on its way.
+// Fetches {id, url}, aborting the fetch before it, and answers with what `read(id, buffer)`
+// posts of the bytes, or with {id, error}; an aborted request posts nothing.
+async function fetchLatest({ id, url }, read) {
+  if (currentRequest) currentRequest.abort();
+  const controller = new AbortController();
+  currentRequest = controller;
+  try {
+    const response = await fetch(url, { signal: controller.signal });
+    const buffer = await response.arrayBuffer();
+    if (!response.ok) self.postMessage({ id, error: errorText(buffer, response.status) });
+    else read(id, buffer);
+  } catch (err) {
+    if (err.name !== "AbortError") self.postMessage({ id, error: String(err.message || err) });
+  } finally {
+    if (currentRequest === controller) currentRequest = null;
+  }
+}
+
+// Answers each message {id, url} by fetchLatest. {drop: true} aborts the one on its way.
 function answerLatest(read) {
-  self.onmessage = async ({ data }) => {
-    if (currentRequest) currentRequest.abort();
-    if (data.drop) return;  // {drop: true}: only the request on its way dropped
-    const controller = new AbortController();
-    currentRequest = controller;
-    const { id, url } = data;
-    try {
-      const response = await fetch(url, { signal: controller.signal });
-      const buffer = await response.arrayBuffer();
-      if (!response.ok) self.postMessage({ id, error: errorText(buffer, response.status) });
-      else read(id, buffer);
-    } catch (err) {
-      if (err.name !== "AbortError") self.postMessage({ id, error: String(err.message || err) });
-    } finally {
-      if (currentRequest === controller) currentRequest = null;
+  self.onmessage = ({ data }) => {
+    if (data.drop) {
+      if (currentRequest) currentRequest.abort();
+      return;
     }
+    fetchLatest(data, read);
   };
 }

@@ -29,6 +29,6 @@ for line in open(sys.argv[1]):
     print(f"{r['cells']}: change to pixels {r['redraw_ms_median']:.1f} ms median "
           f"(p90 {r['redraw_ms_p90']:.1f}), goal < {goal} ms: {'ok' if ok else 'ABOVE'}; "
           f"of it the server {r['server_ms_median']:.1f} ms; the browser's floor, a 67 x 67 field "
-          f"fetched alone, {r['floor_ms_median']:.1f} ms")
+          f"asked for alone, {r['floor_ms_median']:.1f} ms")
 sys.exit(1 if bad else 0)
 PY

@@ -183,8 +183,8 @@ def page(build, rows):
             rows.add(f"page.{side}", f"the page, a change to the curd's pixels drawn, {r['cells']} cells "
                      f"(headless Chromium over loopback, median of {PAGE_ROUNDS}, with the 3-D view's reload "
                      f"under way at each change; of it the server "
-                     f"{r['server_ms_median']:.1f} ms; the same browser fetching a 67 × 67 field "
-                     f"alone, the floor of any change, {r['floor_ms_median']:.1f} ms)",
+                     f"{r['server_ms_median']:.1f} ms; the same page asking for a 67 × 67 field "
+                     f"alone on its socket, the floor of any change, {r['floor_ms_median']:.1f} ms)",
                      r["redraw_ms_median"], "ms",
                      ("<", goal), source="tests/benchmarks/page_redraw.sh")
 

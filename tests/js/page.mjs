@@ -49,6 +49,33 @@ function maskDark(x, y) {
   return (x >= 20 && x < 60 && y >= 20 && y < 70) || (x >= 100 && x < 180 && y >= 40 && y < 90) ||
          (x >= 200 && x < 230 && y >= 60 && y < 120);
 }
+// Each field the page asks for, over its socket (a text frame: the query /api/field takes) or,
+// when no socket opens, by fetch. `fieldAnswered(test)` resolves once the answer has come, with
+// the request's address as /api/field has it ({url()}, as a response), for the first address
+// that passes `test`. `fieldWays` counts the sockets opened, the queries sent on them and the
+// fields fetched.
+function watchFields(page) {
+  const waiters = [];
+  const ways = { sockets: 0, sent: 0, fetched: 0 };
+  const answered = (address) => {
+    const i = waiters.findIndex((w) => w.test(address));
+    if (i >= 0) waiters.splice(i, 1)[0].resolve({ url: () => address });
+  };
+  page.on('websocket', (ws) => {
+    if (!ws.url().includes('/api/field-socket')) return;
+    ways.sockets++;
+    const sent = [];
+    ws.on('framesent', ({ payload }) => { ways.sent++; sent.push(`/api/field?${payload}`); });
+    ws.on('framereceived', () => { const address = sent.shift(); if (address) answered(address); });
+  });
+  page.on('response', (r) => {
+    if (!r.url().includes('/api/field?')) return;
+    ways.fetched++;
+    answered(r.url());
+  });
+  return [(test = () => true) => new Promise((resolve) => waiters.push({ test, resolve })), ways];
+}
+
 await mkdir(shots, { recursive: true });
 const work = await mkdtemp(path.join(tmpdir(), 'curdle-page-'));
 let failures = 0;
@@ -68,6 +95,7 @@ const browser = await chromium.launch({
 });
 try {
   const page = await browser.newPage({ viewport: { width: 1500, height: 1000 }, acceptDownloads: true });
+  const [fieldAnswered, fieldWays] = watchFields(page);
   const pageErrors = [];
   page.on('pageerror', (e) => { pageErrors.push(e.stack || e.message); console.log('PAGEERROR', e.stack || e.message); });
   // The server's Content-Security-Policy must allow everything the page does.
@@ -82,7 +110,7 @@ try {
   // spread over the field, read back from the pixels at their centres. Then a colour picked in
   // the palette redraws from the cells the page holds, in the same turn of the page's event
   // loop: no new field is asked for until the picker rests.
-  const refreshed = page.waitForResponse((r) => r.url().includes('/api/field?') && r.url().includes('12ab34'));
+  const refreshed = fieldAnswered((u) => u.includes('12ab34'));
   const canvasCheck = await page.evaluate(async () => {
     // The cells as /api/generate sends them (a byte a cell, base64), not as the canvas got them.
     const sent = await (await fetch('/api/generate?' + query({ cells: '1' }))).json();
@@ -120,7 +148,7 @@ try {
 
   // A probability through its text field: the request carries the override, the report moves.
   const before = await page.textContent('#values-table');
-  const generated = page.waitForResponse((r) => r.url().includes('/api/field?'));
+  const generated = fieldAnswered();
   await page.fill('input[aria-label="Curd 0 stage 1 probability"]', '3/4');
   await page.press('input[aria-label="Curd 0 stage 1 probability"]', 'Enter');
   const response = await generated;
@@ -131,8 +159,12 @@ try {
   check(Math.abs(Number(await slider.inputValue()) - 0.75) < 1e-9, 'the slider follows the fraction');
   check((await page.textContent('#status')).includes('server'), 'the status shows the server time');
 
+  check(fieldWays.sockets === 1 && fieldWays.sent >= 3 && fieldWays.fetched === 0,
+        `the fields come over one open socket, none fetched (${fieldWays.sockets} socket, ` +
+        `${fieldWays.sent} asked, ${fieldWays.fetched} fetched)`);
+
   // A slider sends its decimal.
-  const slid = page.waitForResponse((r) => r.url().includes('/api/field?'));
+  const slid = fieldAnswered();
   await page.locator('input[aria-label="Curd 0 stage 2 probability slider"]').fill('0.6');
   check(decodeURIComponent((await slid).url()).includes('curds.0.probabilities=["3/4","0.6","1/3"]'),
         'a slider move sends the new probability');
@@ -349,7 +381,7 @@ try {
   check(await page.locator('#measure-values tr').count() === 3, 'the picture is measured as two values');
   check(await page.locator('#measure-fit tr').count() === 1 + Number(stages), 'a fitted row per stage');
   check(await page.locator('#measure-plot').evaluate((c) => c.width > 0 && c.height > 0), 'the box counts are plotted');
-  const loaded = page.waitForResponse((r) => r.url().includes('/api/field?'));
+  const loaded = fieldAnswered();
   await page.click('#measure-load');
   const loadedUrl = decodeURIComponent((await loaded).url());
   check(loadedUrl.includes('field.cells=[240,120]'), 'loading the fit sets the field to the picture: 240 x 120 cells');
@@ -392,7 +424,7 @@ try {
     // A zone typed in metres: a drain kept free, then a search that keeps it empty.
     for (const [id, v] of [['#zone-x', '9'], ['#zone-y', '1'], ['#zone-w', '2'], ['#zone-h', '1.5']]) await page.fill(id, v);
     await page.fill('#zone-name', 'drain');
-    const zoned = page.waitForResponse((r) => r.url().includes('/api/field?'));
+    const zoned = fieldAnswered();
     await page.click('#zone-add');
     const zonedUrl = decodeURIComponent((await zoned).url()).replace(/\+/g, ' ');
     check(zonedUrl.includes('{name="drain",polygon=[[9000,1000],[11000,1000],[11000,2500],[9000,2500]],rule="exclude"}'),
@@ -420,7 +452,7 @@ try {
     check(await page.inputValue('select[aria-label="Role of layer A-OTLN"]') === 'outline' &&
           await page.inputValue('select[aria-label="Role of layer TREE_PIT"]') === 'zone',
           'the outline and the tree pit are guessed from their layers\' names');
-    const laid = page.waitForResponse((r) => r.url().includes('/api/field?'));
+    const laid = fieldAnswered();
     await page.click('#site-apply');
     const laidUrl = decodeURIComponent((await laid).url());
     check(laidUrl.includes('layout.outline=[[0,0],[14000,0],[14000,9000,-0.2'),
@@ -453,7 +485,7 @@ try {
     const table = await page.textContent('#values-table');
     check(table.includes('dark') && table.includes('mid') && !table.includes('state 3'),
           'the values table lists its states and not the code no state has');
-    const rebased = page.waitForResponse((r) => r.url().includes('/api/field?'));
+    const rebased = fieldAnswered();
     await page.selectOption('#mode', 'quota');
     const rebasedUrl = decodeURIComponent((await rebased).url());
     check(rebasedUrl.includes('lattice.mode="quota"') && !rebasedUrl.includes('curds'),
@@ -501,6 +533,28 @@ try {
   } finally {
     kiosk.server.kill('SIGINT');
   }
+  // With every field socket the server keeps held open elsewhere, the page fetches its fields
+  // instead and draws them the same.
+  const holder = await browser.newPage();
+  await holder.goto(url + 'style.css');
+  const held = await holder.evaluate(() => Promise.all(Array.from({ length: 8 }, () => new Promise((resolve) => {
+    const s = new WebSocket(`ws://${location.host}/api/field-socket`);
+    s.onopen = () => resolve(1);
+    s.onclose = () => resolve(0);
+  }))));
+  const fallback = await browser.newPage({ viewport: { width: 1500, height: 1000 } });
+  const [, fallbackWays] = watchFields(fallback);
+  await fallback.goto(url);
+  await fallback.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+  const seedBefore = await fallback.evaluate(() => state.whole.seed);
+  await fallback.click('#seed-next');
+  await fallback.waitForFunction((s) => state.whole && state.whole.seed !== s, seedBefore);
+  check(held.every(Boolean) && fallbackWays.fetched >= 2 && fallbackWays.sent === 0 &&
+        await fallback.locator('#error').isHidden(),
+        `with the server's ${held.length} field sockets held, the page fetches its fields and draws them ` +
+        `(${fallbackWays.fetched} fetched, ${fallbackWays.sent} sent on a socket)`);
+  await fallback.close();
+  await holder.close();
   check(pageErrors.length === 0, `no script errors on the page ${pageErrors.join('; ')}`);
 } finally {
   await browser.close();

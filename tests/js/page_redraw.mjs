@@ -3,12 +3,13 @@
 // clicked ROUNDS times, 400 ms apart (so that the 3-D view's reload, 300 ms after a change, is
 // under way when the next change comes), and the page's "curd-redraw" measures (app.js: from
 // the change to the pixels drawn, gl.finish() included) are read back. Also a palette colour's
-// redraw, which takes no new data. fetch_ms is the part until the field is in the page,
-// server_ms the server's own part of that; view3d_render_ms the 3-D view's drawing of each new
-// model on the page's thread (models a change dropped on their way are not drawn); floor_ms
-// what the browser alone costs: the smallest field the pattern takes (67 x 67 cells, 4 KB of
-// head and 0.5 KB of values) fetched the same way, off the page's thread, with no change drawn
-// and nothing else on its way. Prints one JSON line per recipe.
+// redraw, which takes no new data. fetch_ms is the part until the field is in the page (asked
+// for on the page's WebSocket, web/field_worker.js), server_ms the server's own part of that;
+// view3d_render_ms the 3-D view's drawing of each new model on the page's thread (models a
+// change dropped on their way are not drawn); floor_ms what the browser alone costs: the
+// smallest field the pattern takes (67 x 67 cells, 4 KB of head and 0.5 KB of values) asked for
+// the same way, off the page's thread, with no change drawn and nothing else on its way. Prints
+// one JSON line per recipe.
 // Usage: node page_redraw.mjs CURDLE ROUNDS RECIPE...
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
