@@ -13,7 +13,7 @@ main_only=false
 packages=(
   cmake g++ make pkg-config
   libcgal-dev libopenimageio-dev libtinygltf-dev libtomlplusplus-dev libcli11-dev
-  libfmt-dev nlohmann-json3-dev libexpat1-dev libdxflib-dev libsvgpp-dev libxml2-dev librandom123-dev libtbb-dev libcpp-httplib-dev libgtest-dev libbenchmark-dev
+  libfmt-dev nlohmann-json3-dev libexpat1-dev libdxflib-dev libsvgpp-dev libxml2-dev librandom123-dev libtbb-dev libcpp-httplib-dev libssl-dev libgtest-dev libbenchmark-dev
   libcairo2-dev libpng-dev fonts-dejavu-core zlib1g-dev
   python3 python3-dev python3-numpy pybind11-dev
 )

@@ -445,14 +445,65 @@ for name, body, status, words in (("x.dng", png, 200, b"\"size\":[64,64]"), ("x.
     r = c.getresponse(); answer = r.read()
     if r.status != status or words not in answer:
         print("FAIL upload", name, r.status, answer[:300]); bad += 1
+# The page's field socket: a query answered as bytes, then frames that break the protocol
+# each end their socket with a close code, and the server goes on.
+def ws_open():
+    s = socket.create_connection(("127.0.0.1", port), timeout=10)
+    s.sendall(("GET /api/field-socket HTTP/1.1\r\n" + host + "Upgrade: websocket\r\n"
+               "Connection: Upgrade\r\nSec-WebSocket-Version: 13\r\n"
+               "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n\r\n").encode())
+    head = b""
+    while b"\r\n\r\n" not in head:
+        chunk = s.recv(1)
+        if not chunk: break
+        head += chunk
+    return s, head
+def ws_until_closed(s):
+    got = b""
+    while True:
+        try: chunk = s.recv(65536)
+        except OSError: break
+        if not chunk: break
+        got += chunk
+    s.close()
+    return got
+mask = b"\x01\x02\x03\x04"
+masked = lambda data: bytes(c ^ mask[i % 4] for i, c in enumerate(data))
+query = b"seed=5"
+for frame, code in ((b"\x81\xff" + struct.pack(">Q", 1 << 63) + mask, 1009),
+                    (b"\x81" + bytes([len(query)]) + query, 1002),
+                    (b"\x8f\x80" + mask, 1002),
+                    (b"\x89\xfe\x01\x00" + mask + masked(b"p" * 256), 1002)):
+    s, head = ws_open()
+    if not head.startswith(b"HTTP/1.1 101"): print("FAIL no websocket", head[:80]); bad += 1; continue
+    s.sendall(b"\x81" + bytes([0x80 | len(query)]) + mask + masked(query) + frame)
+    got = ws_until_closed(s)
+    close = got.rfind(b"\x88")
+    if not got.startswith(b"\x82") or b"CRD1" not in got[:16] or close < 0 or \
+            struct.unpack(">H", got[close + 2:close + 4])[0] != code:
+        print("FAIL websocket frame", frame[:12], got[:16], got[close:close + 40]); bad += 1
 got, body = get("/api/generate?seed=3&cells=0")
 if got != 200: print("FAIL the server no longer answers", got); bad += 1
 sys.exit(1 if bad else 0)
 PY
+  # Stopping with a page's socket open: the socket is closed, the server stops at once.
+  python3 - "$port" <<'PY' &
+import socket, sys, time
+s = socket.create_connection(("127.0.0.1", int(sys.argv[1])), timeout=10)
+s.sendall(("GET /api/field-socket HTTP/1.1\r\nHost: 127.0.0.1:%s\r\nUpgrade: websocket\r\n"
+           "Connection: Upgrade\r\nSec-WebSocket-Version: 13\r\n"
+           "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n\r\n" % sys.argv[1]).encode())
+s.recv(4096)
+time.sleep(5)
+PY
+  local holder=$!
+  sleep 0.5
   kill -TERM "$pid"
   local start=$(date +%s%N)
   wait "$pid" && pass || fail "serve exited $? on SIGTERM"
   [ $(( ($(date +%s%N) - start) / 1000000 )) -lt 1500 ] && pass || fail "serve took over a second to stop"
+  kill "$holder" 2> /dev/null
+  wait "$holder" 2> /dev/null
 }
 
 if ! declare -F "section_$section" > /dev/null; then
