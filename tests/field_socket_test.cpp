@@ -9,16 +9,13 @@
 
 #include <atomic>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <thread>
 
 #include "server/server.h"
+#include "server_support.h"
 #include "socket_support.h"
 #include "websocket_support.h"
-
-namespace fs = std::filesystem;
 
 namespace curdle::server {
 namespace {
@@ -33,32 +30,18 @@ const std::string kRecipe =
 class FieldSocketTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    ServerConfig config;
-    config.web_root = fs::path(CURDLE_SOURCE_DIR) / "web";
-    config.api.recipe_path = kRecipe;
-    std::ifstream in(kRecipe);
-    std::ostringstream text;
-    text << in.rdbuf();
-    config.api.recipe_text = text.str();
-    server_ = new Server(config);
-    port_ = server_->bind("127.0.0.1", 0);
-    thread_ = new std::thread([] { server_->listen(); });
+    serving_ = new test::ServerOnLoopback(test::server_config(kRecipe));
   }
-  static void TearDownTestSuite() {
-    server_->stop();
-    thread_->join();
-    delete thread_;
-    delete server_;
-  }
+  static void TearDownTestSuite() { delete serving_; }
 
   // A socket that has sent `headers` after the request line; its answer's head is read into
   // `head` (up to the blank line), what followed it left in `rest`.
   int open(const std::string& headers, std::string& head, std::string& rest) {
-    const int fd = test::connect_loopback(port_);
+    const int fd = test::connect_loopback(port());
     timeval wait{30, 0};
     ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
     const std::string request =
-        "GET /api/field-socket HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port_) + "\r\n" +
+        "GET /api/field-socket HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port()) + "\r\n" +
         headers + "\r\n";
     ::send(fd, request.data(), request.size(), MSG_NOSIGNAL);
     std::string bytes;
@@ -107,13 +90,11 @@ class FieldSocketTest : public ::testing::Test {
     return {first, payload};
   }
 
-  static Server* server_;
-  static std::thread* thread_;
-  static int port_;
+  static int port() { return serving_->port(); }
+
+  static test::ServerOnLoopback* serving_;
 };
-Server* FieldSocketTest::server_ = nullptr;
-std::thread* FieldSocketTest::thread_ = nullptr;
-int FieldSocketTest::port_ = 0;
+test::ServerOnLoopback* FieldSocketTest::serving_ = nullptr;
 
 // The CRD1 answer without its head's "server_ms", which differs between any two answers.
 std::string without_timing(const std::string& crd1) {
@@ -127,11 +108,11 @@ std::string without_timing(const std::string& crd1) {
 
 TEST_F(FieldSocketTest, EachQueryIsAnsweredWithTheBytesOfApiField) {
   std::string head, rest;
-  const int fd = open(upgrade_headers("Origin: http://127.0.0.1:" + std::to_string(port_) + "\r\n"),
-                      head, rest);
+  const int fd = open(
+      upgrade_headers("Origin: http://127.0.0.1:" + std::to_string(port()) + "\r\n"), head, rest);
   ASSERT_EQ(head.rfind("HTTP/1.1 101", 0), 0u) << head;
   EXPECT_NE(head.find("Sec-WebSocket-Accept: s3pPLMBiTxaQ9kYGzzhZRbK+xOo="), std::string::npos);
-  httplib::Client client("127.0.0.1", port_);
+  httplib::Client client("127.0.0.1", port());
   const std::vector<std::string> queries = {
       "seed=3", "seed=4&set=" + encoded("field.cells=[300,200]"),
       "seed=5&set=" + encoded("curds.0.probabilities=[\"1/2\",\"1/2\",\"1/2\"]")};
@@ -200,7 +181,7 @@ TEST_F(FieldSocketTest, BadHandshakesAndOtherSitesAreRefused) {
   EXPECT_EQ(payload.substr(0, 2), std::string("\x03\xea", 2));
   ::close(fd);
   // The server still answers.
-  httplib::Client client("127.0.0.1", port_);
+  httplib::Client client("127.0.0.1", port());
   auto r = client.Get("/api/field?seed=1");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
@@ -230,16 +211,13 @@ TEST_F(FieldSocketTest, SocketsPastTheLimitAreTurnedAwayAndTheirThreadsComeBack)
 // A socket left idle is closed with 1000, and one whose message trickles in past its arrival
 // time with 1008, each after the time the server was given.
 TEST(FieldSocketDeadlines, AnIdleOrTricklingSocketIsClosed) {
-  ServerConfig config;
-  config.web_root = fs::path(CURDLE_SOURCE_DIR) / "web";
-  config.api.recipe_path = kRecipe;
+  ServerConfig config = test::server_config(kRecipe);
   config.api.recipe_text =
       "[lattice]\nbase = 2\n[[curds]]\nname = \"a\"\nprobabilities = [\"1/2\"]\n";
   config.field_socket.idle = std::chrono::milliseconds(300);
   config.field_socket.arrival = std::chrono::milliseconds(300);
-  Server server(config);
-  const int port = server.bind("127.0.0.1", 0);
-  std::thread serving([&] { server.listen(); });
+  const test::ServerOnLoopback serving(config);
+  const int port = serving.port();
   auto open_socket = [&] {
     const int fd = test::connect_loopback(port);
     timeval wait{30, 0};
@@ -285,8 +263,6 @@ TEST(FieldSocketDeadlines, AnIdleOrTricklingSocketIsClosed) {
       << trickle_bytes;
   sender.join();
   ::close(trickle);
-  server.stop();
-  serving.join();
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include "curdle/overlay.h"
 #include "curdle/search.h"
 #include "export/image.h"
+#include "server_support.h"
 #include "socket_support.h"
 
 namespace fs = std::filesystem;
@@ -66,21 +67,12 @@ std::vector<uint8_t> unbase64(const std::string& text) {
 class ServerTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    ServerConfig config;
-    config.web_root = fs::path(CURDLE_SOURCE_DIR) / "web";
-    config.api.recipe_path = kRecipe;
-    config.api.recipe_text = slurp(kRecipe);
+    ServerConfig config = test::server_config(kRecipe);
     config.api.limits.max_cells = 1 << 20;
-    server_ = new Server(config);
-    port_ = server_->bind("127.0.0.1", 0);
-    thread_ = new std::thread([] { server_->listen(); });
+    serving_ = new test::ServerOnLoopback(config);
+    port_ = serving_->port();
   }
-  static void TearDownTestSuite() {
-    server_->stop();
-    thread_->join();
-    delete thread_;
-    delete server_;
-  }
+  static void TearDownTestSuite() { delete serving_; }
 
   httplib::Result get(const std::string& path) {
     httplib::Client client("127.0.0.1", port_);
@@ -142,12 +134,10 @@ class ServerTest : public ::testing::Test {
     return answer;
   }
 
-  static Server* server_;
-  static std::thread* thread_;
+  static test::ServerOnLoopback* serving_;
   static int port_;
 };
-Server* ServerTest::server_ = nullptr;
-std::thread* ServerTest::thread_ = nullptr;
+test::ServerOnLoopback* ServerTest::serving_ = nullptr;
 int ServerTest::port_ = 0;
 
 TEST_F(ServerTest, RecipeDescribesTheDesignAndTheFloor) {
@@ -577,22 +567,9 @@ TEST_F(ServerTest, ThePageIsServedFromItsFiles) {
 // A server of its own on the rhythm façade, whose layout.pdf 3 km tall takes about 40 s.
 class RhythmServer {
  public:
-  explicit RhythmServer(double request_seconds) {
-    const std::string recipe = std::string(CURDLE_SOURCE_DIR) + "/patterns/fins-facade-rhythm.toml";
-    ServerConfig config;
-    config.web_root = fs::path(CURDLE_SOURCE_DIR) / "web";
-    config.api.recipe_path = recipe;
-    config.api.recipe_text = slurp(recipe);
-    config.workers = 1;
-    config.request_seconds = request_seconds;
-    server = std::make_unique<Server>(config);
-    port = server->bind("127.0.0.1", 0);
-    thread = std::thread([this] { server->listen(); });
-  }
-  ~RhythmServer() {
-    server->stop();
-    thread.join();
-  }
+  explicit RhythmServer(double request_seconds)
+      : serving(config(request_seconds)), port(serving.port()) {}
+
   // Sends a GET on a socket of its own and returns the socket, unread.
   int send_get(const std::string& path) const {
     const int fd = test::connect_loopback(port);
@@ -608,9 +585,16 @@ class RhythmServer {
     return client.Get(path.c_str());
   }
 
-  std::unique_ptr<Server> server;
-  int port = 0;
-  std::thread thread;
+  static ServerConfig config(double request_seconds) {
+    ServerConfig c =
+        test::server_config(std::string(CURDLE_SOURCE_DIR) + "/patterns/fins-facade-rhythm.toml");
+    c.workers = 1;
+    c.request_seconds = request_seconds;
+    return c;
+  }
+
+  test::ServerOnLoopback serving;
+  int port;
 };
 
 constexpr const char* kTallPdf = "/api/export?layout.height=3000000&file=layout.pdf";

@@ -10,7 +10,7 @@
 // smallest field the pattern takes (67 x 67 cells, 4 KB of head and 0.5 KB of values) asked for
 // the same way, off the page's thread, with no change drawn and nothing else on its way. Prints
 // one JSON line per recipe.
-// Usage: node page_redraw.mjs CURDLE ROUNDS RECIPE...
+// Usage: [GAP_MS=400] [WEB_ROOT=DIR] node page_redraw.mjs CURDLE ROUNDS RECIPE...
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
 
@@ -23,7 +23,8 @@ const browser = await chromium.launch({
 const quantile = (xs, q) => [...xs].sort((a, b) => a - b)[Math.min(xs.length - 1, Math.floor(q * xs.length))];
 try {
   for (const recipe of recipes) {
-    const { server, url } = await serve(curdle, [recipe]);
+    // WEB_ROOT: the page from another copy of its files, to compare two versions of it.
+    const { server, url } = await serve(curdle, process.env.WEB_ROOT ? ['--web-root', process.env.WEB_ROOT, recipe] : [recipe]);
     try {
       const page = await browser.newPage({ viewport: { width: 1500, height: 1000 } });
       const encodings = new Set();
