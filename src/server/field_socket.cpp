@@ -14,6 +14,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
+// The server's side of one socket: reads that wait at most until a deadline, whole frames sent.
 class SocketSide {
  public:
   SocketSide(int socket, const FieldSocketLimits& limits) : socket_(socket), limits_(limits) {}

@@ -98,8 +98,9 @@ bool header_has_token(const std::string& value, const std::string& token) {
     item.erase(0, item.find_first_not_of(" \t"));
     item.erase(item.find_last_not_of(" \t") + 1);
     if (item.size() == token.size() &&
-        std::equal(item.begin(), item.end(), token.begin(),
-                   [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
+        std::equal(item.begin(), item.end(), token.begin(), [](unsigned char a, unsigned char b) {
+          return std::tolower(a) == std::tolower(b);
+        }))
       return true;
     start = end + 1;
   }
