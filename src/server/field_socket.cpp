@@ -3,9 +3,9 @@
 #include <poll.h>
 #include <sys/socket.h>
 
-#include <algorithm>
 #include <cerrno>
 
+#include "server/socket_wait.h"
 #include "server/websocket.h"
 
 namespace curdle::server {
@@ -19,18 +19,10 @@ class SocketSide {
  public:
   SocketSide(int socket, const FieldSocketLimits& limits) : socket_(socket), limits_(limits) {}
 
-  // Waits until bytes come, in steps of 100 ms so that a stopping server is seen; false when the
-  // time is up, the server stops or the connection fails.
+  // Waits until bytes come, in steps so that a stopping server is seen; false when the time is
+  // up, the server stops or the connection fails.
   bool wait_readable(Clock::time_point until, const std::function<bool()>& stopping) const {
-    while (!stopping()) {
-      const auto left = std::chrono::duration_cast<milliseconds>(until - Clock::now());
-      if (left.count() <= 0) return false;
-      pollfd p{socket_, POLLIN, 0};
-      const int n = ::poll(&p, 1, static_cast<int>(std::min<int64_t>(left.count(), 100)));
-      if (n > 0) return true;
-      if (n < 0 && errno != EINTR) return false;
-    }
-    return false;
+    return readable_before(socket_, until, [&] { return !stopping(); });
   }
 
   // The bytes that have come, at most a buffer's worth; 0 when the client closed.
@@ -67,8 +59,7 @@ class SocketSide {
   bool send_all(const std::string& bytes, Clock::time_point until) const {
     for (size_t at = 0; at < bytes.size();) {
       const auto left = std::chrono::duration_cast<milliseconds>(until - Clock::now());
-      pollfd p{socket_, POLLOUT, 0};
-      if (left.count() <= 0 || ::poll(&p, 1, static_cast<int>(left.count())) <= 0) return false;
+      if (left.count() <= 0 || !wait_for(socket_, POLLOUT, left)) return false;
       const ssize_t n = ::send(socket_, bytes.data() + at, bytes.size() - at, MSG_NOSIGNAL);
       if (n < 0 && errno != EINTR && errno != EAGAIN) return false;
       if (n > 0) at += static_cast<size_t>(n);

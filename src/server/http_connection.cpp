@@ -10,6 +10,8 @@
 #include <cerrno>
 #include <string>
 
+#include "server/socket_wait.h"
+
 namespace curdle::server {
 namespace {
 
@@ -21,18 +23,6 @@ thread_local bool closing_after_request = false;
 thread_local bool connection_taken = false;
 class DeadlineStream;
 thread_local DeadlineStream* serving_stream = nullptr;
-
-// Waits until `socket` can be read (or written), at most `wait`; false on timeout or error.
-bool wait_for(int socket, short events, milliseconds wait) {
-  pollfd p{socket, events, 0};
-  const auto end = Clock::now() + wait;
-  for (;;) {
-    const auto left = std::chrono::duration_cast<milliseconds>(end - Clock::now());
-    const int n = ::poll(&p, 1, static_cast<int>(std::max<int64_t>(0, left.count())));
-    if (n > 0) return (p.revents & (events | POLLHUP | POLLERR)) != 0;
-    if (n == 0 || errno != EINTR) return false;
-  }
-}
 
 void address_of(int socket, bool peer, std::string& ip, int& port) {
   sockaddr_storage address{};
@@ -125,13 +115,7 @@ class DeadlineStream : public httplib::Stream {
 
 // Waits for a connection's next request, in short steps so that a stopping server is seen.
 bool next_request_arrives(int socket, const std::atomic<socket_t>& listening, milliseconds wait) {
-  const auto end = Clock::now() + wait;
-  while (listening != INVALID_SOCKET) {
-    const auto left = std::chrono::duration_cast<milliseconds>(end - Clock::now());
-    if (left.count() <= 0) return false;
-    if (wait_for(socket, POLLIN, std::min(left, milliseconds(100)))) return true;
-  }
-  return false;
+  return readable_before(socket, Clock::now() + wait, [&] { return listening != INVALID_SOCKET; });
 }
 
 }  // namespace
