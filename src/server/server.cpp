@@ -187,6 +187,16 @@ struct Server::Impl {
   // cost it more than they save (over loopback, 3.6 -> 2.0 ms a 1024 x 1024 field and 11.0 ->
   // 6.8 ms at 2048 x 2048 without them: its next allocations faulted the given pages back in).
   enum class Footprint { large, small };
+  // A slot of a pool, acquired: released when it goes, and with `trim` the heap's free pages
+  // given back after it.
+  struct SlotHeld {
+    std::counting_semaphore<64>& pool;
+    bool trim;
+    ~SlotHeld() {
+      pool.release();
+      if (trim) ::malloc_trim(0);
+    }
+  };
   template <class F>
   void run_in(std::counting_semaphore<64>& pool, httplib::Response& res, F&& endpoint,
               Footprint footprint = Footprint::large) {
@@ -197,14 +207,7 @@ struct Server::Impl {
   ApiResponse answer_in(std::counting_semaphore<64>& pool, F&& endpoint, Footprint footprint) {
     if (!pool.try_acquire_for(std::chrono::seconds(60)))
       return api_error(503, "the server is busy; try again");
-    struct Release {
-      std::counting_semaphore<64>& s;
-      bool trim;
-      ~Release() {
-        s.release();
-        if (trim) ::malloc_trim(0);
-      }
-    } release{pool, footprint == Footprint::large};
+    const SlotHeld held{pool, footprint == Footprint::large};
     RequestStop rule(config.request_seconds, stopping);
     ApiResponse answer;
     std::exception_ptr failure;
@@ -243,10 +246,7 @@ struct Server::Impl {
                            "/api/field instead"));
       return;
     }
-    struct Release {
-      std::counting_semaphore<64>& s;
-      ~Release() { s.release(); }
-    } release{field_sockets};
+    const SlotHeld held{field_sockets, false};
     const HttpServer::TakenConnection taken = HttpServer::take_connection();
     serve_field_socket(
         taken.socket, taken.early_bytes, *accept, config.field_socket,
