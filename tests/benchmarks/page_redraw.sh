@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The page from a change to the pixels drawn, in headless Chromium over loopback
 # (tests/js/page_redraw.mjs), on the fig. 8 pattern at 256 x 256, 1024 x 1024 and
-# 2048 x 2048 cells (the largest the server draws). Goals: under 16 ms at 1024 x 1024 and
-# under 50 ms at 2048 x 2048 (medians). Prints one JSON line per size, then the verdicts.
+# 2048 x 2048 cells (the largest the server draws): half the changes with the page at rest,
+# half while the 3-D view's reload of the change before is under way. Goals: under 16 ms at
+# 1024 x 1024 and under 50 ms at 2048 x 2048 (medians at rest), and under 16 ms at
+# 1024 x 1024 with the reload under way. Prints one JSON line per size, then the verdicts.
 # Usage: tests/benchmarks/page_redraw.sh [BUILD_DIR] [ROUNDS]
 set -euo pipefail
 source "$(dirname "$0")/prologue.sh"
@@ -24,11 +26,13 @@ for line in open(sys.argv[1]):
     goal = goals.get(r["cells"])
     if goal is None:
         continue
-    ok = r["redraw_ms_median"] < goal
-    bad += not ok
-    print(f"{r['cells']}: change to pixels {r['redraw_ms_median']:.1f} ms median "
-          f"(p90 {r['redraw_ms_p90']:.1f}), goal < {goal} ms: {'ok' if ok else 'ABOVE'}; "
-          f"of it the server {r['server_ms_median']:.1f} ms; the browser's floor, a 67 x 67 field "
-          f"asked for alone, {r['floor_ms_median']:.1f} ms")
+    verdicts = [r["idle_ms_median"] < goal] + ([r["redraw_ms_median"] < goal] if r["cells"] == "1024x1024" else [])
+    bad += not all(verdicts)
+    print(f"{r['cells']}: change to pixels {r['idle_ms_median']:.1f} ms median at rest (p90 "
+          f"{r['idle_ms_p90']:.1f}), {r['redraw_ms_median']:.1f} ms (p90 {r['redraw_ms_p90']:.1f}) with the "
+          f"3-D view's reload under way ({r['reload_in_flight']} of {r['rounds']} found it on its way), "
+          f"goal < {goal} ms: {'ok' if all(verdicts) else 'ABOVE'}; of it the server "
+          f"{r['server_ms_median']:.1f} ms; the browser's floor, a 67 x 67 field asked for alone, "
+          f"{r['floor_ms_median']:.1f} ms")
 sys.exit(1 if bad else 0)
 PY

@@ -1,16 +1,21 @@
 // How long the page takes from a change to the curd's pixels drawn, in headless Chromium over
 // loopback with the browser's own Accept-Encoding: for each recipe given, the next seed is
-// clicked ROUNDS times, 400 ms apart (so that the 3-D view's reload, 300 ms after a change, is
-// under way when the next change comes), and the page's "curd-redraw" measures (app.js: from
-// the change to the pixels drawn, gl.finish() included) are read back. Also a palette colour's
-// redraw, which takes no new data. fetch_ms is the part until the field is in the page (asked
-// for on the page's WebSocket, web/field_worker.js), server_ms the server's own part of that;
-// view3d_render_ms the 3-D view's drawing of each new model on the page's thread (models a
-// change dropped on their way are not drawn); floor_ms what the browser alone costs: the
-// smallest field the pattern takes (67 x 67 cells, 4 KB of head and 0.5 KB of values) asked for
-// the same way, off the page's thread, with no change drawn and nothing else on its way. Prints
-// one JSON line per recipe.
-// Usage: [GAP_MS=400] [WEB_ROOT=DIR] node page_redraw.mjs CURDLE ROUNDS RECIPE...
+// clicked 2 x ROUNDS times, and the page's "curd-redraw" measures (app.js: from the change to
+// the pixels drawn, gl.finish() included) are read back. The changes alternate between two
+// kinds, so that load on the machine falls on both alike: one comes while the 3-D view's
+// reload of the last change (layout.glb, asked for 300 ms after a change, fetched, read and
+// drawn) is under way, at a point spread over its course from the first round to the last; the
+// other once that reload is done and the page is idle. redraw_ms is the first kind,
+// idle_ms the second; reload_in_flight how many changes of the first kind found the reload
+// still on its way (the rest came as it finished). Also a palette colour's redraw, which takes
+// no new data. fetch_ms is the part until the field is in the page (asked for on the page's
+// WebSocket, web/field_worker.js), server_ms the server's own part of that; view3d_render_ms the
+// 3-D view's drawing of each new model on the page's thread; reload_ms the reload's course,
+// from its start to its model drawn, with the page idle; floor_ms what the browser alone costs:
+// the smallest field the pattern takes (67 x 67 cells, 4 KB of head and 0.5 KB of values) asked
+// for the same way, off the page's thread, with no change drawn and nothing else on its way.
+// Prints one JSON line per recipe.
+// Usage: [WEB_ROOT=DIR] node page_redraw.mjs CURDLE ROUNDS RECIPE...
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
 
@@ -33,23 +38,65 @@ try {
       });
       await page.goto(url);
       await page.waitForSelector('body[data-ready="1"]', { timeout: 60000 });
-      const redraws = [];
+      // The 3-D view's reloads, as the page starts them (report.js's "layout3d" event) and
+      // finishes them (view3d.js's "view3d-render" measure).
+      await page.evaluate(() => {
+        window.reloads = { started: [] };
+        window.addEventListener('layout3d', () => window.reloads.started.push(performance.now()));
+      });
+      const redraws = { reload: [], idle: [] };
       const server_ms = [];
       const fetch_ms = [];
-      for (let i = 0; i < rounds; ++i) {
-        const before = await page.evaluate(() => performance.getEntriesByName('curd-redraw').length);
-        await page.click('#seed-next');
-        await page.waitForFunction((n) => performance.getEntriesByName('curd-redraw').length > n, before,
+      const reload_ms = [];
+      let inFlight = 0;
+      let reloadCourse = 150;  // ms, until measured on an idle round
+      let startedBefore = 0;  // the reloads started before the last change
+      for (let i = 0; i < 2 * rounds; ++i) {
+        const kind = i % 2 ? 'reload' : 'idle';
+        if (i > 0 && kind === 'idle') {
+          // The last change's reload done and drawn, then a moment's rest.
+          reload_ms.push(await page.evaluate(async (n) => {
+            const done = () => window.reloads.started.length > n && window.view3d.src !== null &&
+              !document.getElementById('view3d').classList.contains('stale');
+            for (const t = performance.now(); !done();) {
+              if (performance.now() - t > 20000 || window.view3d.error) throw new Error(`no 3-D model: ${window.view3d.error}`);
+              await new Promise((r) => setTimeout(r, 5));
+            }
+            const drawn = performance.getEntriesByName('view3d-render').at(-1);
+            return drawn.startTime + drawn.duration - window.reloads.started.at(-1);
+          }, startedBefore));
+          reloadCourse = quantile(reload_ms, 0.5);
+          await page.waitForTimeout(100);
+        }
+        // The change: the next seed's button clicked in the page, at once on an idle round; on
+        // the other, a part of the reload's course after it started. Timed by the page's
+        // scheduler at the priority of input, since the 3-D view's slices of work on the page's
+        // thread (which yield with scheduler.yield) hold back a plain timer until they end.
+        const offset = kind === 'reload' ? reloadCourse * (Math.floor(i / 2) + 0.5) / rounds : 0;
+        const before = await page.evaluate(() => [performance.getEntriesByName('curd-redraw').length,
+                                                  window.reloads.started.length]);
+        const last = startedBefore;
+        startedBefore = before[1];
+        inFlight += await page.evaluate(([kind, n, offset]) => new Promise((resolve) => {
+          const change = () => scheduler.postTask(() => {
+            const stale = document.getElementById('view3d').classList.contains('stale');
+            document.getElementById('seed-next').click();
+            resolve(stale ? 1 : 0);
+          }, { priority: 'user-blocking',
+               delay: kind === 'idle' ? 0 : Math.max(0, offset - (performance.now() - window.reloads.started.at(-1))) });
+          if (kind === 'idle' || window.reloads.started.length > n) change();
+          else window.addEventListener('layout3d', change, { once: true });
+        }), [kind, last, offset]) * (kind === 'reload');
+        await page.waitForFunction((n) => performance.getEntriesByName('curd-redraw').length > n, before[0],
                                    { timeout: 60000 });
         const [ms, fetched, server] = await page.evaluate(() => {
           const all = performance.getEntriesByName('curd-redraw');
           const fetches = performance.getEntriesByName('curd-fetch');
           return [all[all.length - 1].duration, fetches[fetches.length - 1].duration, state.whole.server_ms];
         });
-        redraws.push(ms);
+        redraws[kind].push(ms);
         fetch_ms.push(fetched);
         server_ms.push(server);
-        await page.waitForTimeout(Number(process.env.GAP_MS || 400));
       }
       const recolour = await page.evaluate(() => {
         const times = [];
@@ -77,7 +124,9 @@ try {
       const [w, h] = await page.evaluate(() => fieldSize());
       console.log(JSON.stringify({
         recipe: recipe.split('/').pop(), cells: `${w}x${h}`, rounds,
-        redraw_ms_median: quantile(redraws, 0.5), redraw_ms_p90: quantile(redraws, 0.9),
+        redraw_ms_median: quantile(redraws.reload, 0.5), redraw_ms_p90: quantile(redraws.reload, 0.9),
+        idle_ms_median: quantile(redraws.idle, 0.5), idle_ms_p90: quantile(redraws.idle, 0.9),
+        reload_in_flight: inFlight, reload_ms_median: reload_ms.length ? quantile(reload_ms, 0.5) : null,
         fetch_ms_median: quantile(fetch_ms, 0.5), server_ms_median: quantile(server_ms, 0.5), recolour_ms_median: quantile(recolour, 0.5),
         floor_ms_median: quantile(floor, 0.5),
         view3d_render_ms_median: view3d.length ? quantile(view3d, 0.5) : null, view3d_models: view3d.length,
