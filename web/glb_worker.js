@@ -1,12 +1,13 @@
 // The 3-D view's worker: fetches layout.glb and reads its JSON off the page's thread, so that
 // a big model (a building's 23,000 bricks) never holds up a redraw of the 2-D field. It hands
-// over the binary chunk without a copy and the scene as flat arrays (view3d.js builds the
-// three.js objects from them a slice at a time). It reads what curdle's own writer puts in a
+// over the binary chunk without a copy, the scene as flat arrays (view3d.js builds the
+// three.js objects of its elements from them when a click or a check asks) and the drawing the
+// camera shows, merged a material at a time (glb_merge.js). It reads what curdle's own writer puts in a
 // glb (export/gltf_json.cpp): float positions and normals, integer indices, PBR colours, node
 // trees with matrices or TRS and extras. Anything else is answered with `unsupported`, and the
 // page falls back to three.js's own loader.
 "use strict";
-importScripts("worker_fetch.js");
+importScripts("worker_fetch.js", "glb_merge.js");
 
 class Unsupported extends Error {}
 
@@ -117,12 +118,15 @@ function trs(node) {
   ];
 }
 
-answerLatest((id, buffer) => {
+answerLatest(async (id, buffer, stillWanted) => {
   try {
     const { json, binStart } = chunks(buffer);
     const scene = { materials: materials(json), primitives: primitiveRows(json, binStart, buffer), ...nodes(json) };
-    self.postMessage({ id, scene, buffer }, [buffer, scene.parent.buffer, scene.mesh.buffer,
-                                             scene.matrix.buffer, scene.primitives.buffer]);
+    const merged = await mergedDrawing(scene, buffer, stillWanted);
+    if (!merged) return;  // dropped by a change on the page
+    const { drawing, buffers } = merged;
+    self.postMessage({ id, scene, buffer, drawing }, [buffer, scene.parent.buffer, scene.mesh.buffer,
+                                                      scene.matrix.buffer, scene.primitives.buffer, ...buffers]);
   } catch (err) {
     if (!(err instanceof Unsupported)) throw err;
     self.postMessage({ id, unsupported: err.message, buffer }, [buffer]);

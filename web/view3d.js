@@ -11,7 +11,20 @@ const ELEMENTS = 1;  // the layer of the model's elements, which the camera does
 const box = document.getElementById("view3d");
 const info = document.getElementById("view3d-info");
 const caption = document.getElementById("view3d-caption");
-const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+// Multisampled only on a GPU. Software WebGL (a machine without one: SwiftShader, llvmpipe)
+// took 40-60 ms more of the GPU process for each multisampled picture of a 67 x 67 floor,
+// and the page's thread waits for that picture when it next shows the page, the curd's
+// redraw included.
+function softwareWebGl() {
+  const gl = document.createElement("canvas").getContext("webgl2");
+  if (!gl) return true;
+  const about = gl.getExtension("WEBGL_debug_renderer_info");
+  const name = about ? String(gl.getParameter(about.UNMASKED_RENDERER_WEBGL)) : "";
+  const lose = gl.getExtension("WEBGL_lose_context");
+  if (lose) lose.loseContext();
+  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+}
+const renderer = new THREE.WebGLRenderer({ antialias: !softwareWebGl(), preserveDrawingBuffer: true });
 renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
 renderer.setClearColor(0xf4f6f8, 1);
 box.append(renderer.domElement);
@@ -44,12 +57,14 @@ controls.addEventListener("change", () => {
   render();
 });
 controls.minDistance = 0.2;
-let model = null;
-let drawing = null;  // what the camera draws of the model (mergedDrawing)
+let model = null;  // the model's elements, made when first asked for (elements())
+let elementsToMake = null;  // what they are made of until then: the worker's arrays
+let drawing = null;  // what the camera draws of the model, merged a material at a time
+let extras = {};  // the scene's extras: a whole building says so
 let loading = 0;  // the latest model asked for
 // What the page's tests read: the model shown, how much of the picture it covers, the eye's
 // height over the model's lowest point.
-window.view3d = { src: null, loads: 0, error: null, readIn: null, pointOnElement, model: () => model,
+window.view3d = { src: null, loads: 0, error: null, readIn: null, pointOnElement, model: () => elements(),
                   eyeAboveGround: () => camera.position.y - ground, mergedAgrees };
 // For the page's tests, read when asked: reading the picture back waits for the whole drawing,
 // which on a machine without a GPU held the page's thread for 15-30 ms on every new model.
@@ -84,6 +99,7 @@ const isBackground = (p, i) =>
 // For the page's tests: the share of pixels that differ by more than a few levels between the
 // merged drawing and the elements drawn one by one, and the share each covers.
 function mergedAgrees() {
+  elements();
   const picture = (layer) => {
     camera.layers.set(layer);
     render();
@@ -111,16 +127,17 @@ function drawnShare() {
 }
 
 // A façade (standing up) from the street, a floor from eye height at its near edge, a whole
-// building (its scene says so) from above its south-west corner.
-function frame(root) {
-  const bounds = new THREE.Box3().setFromObject(root);
+// building (its scene says so) from above its south-west corner. The bounds are the merged
+// drawing's, measured as it was made (glb_merge.js, or mergedGeometry here).
+function frame() {
+  const bounds = new THREE.Box3().setFromObject(drawing);
   const s = bounds.getSize(new THREE.Vector3());
   const c = bounds.getCenter(new THREE.Vector3());
   const reach = Math.max(s.x, s.y, s.z, 0.1);
   const upright = s.y > 0.5 * Math.max(s.x, s.z);
   camera.near = reach / 500;
   camera.far = reach * 20;
-  if (root.userData && root.userData.building) {
+  if (extras.building) {
     const away = reach / (2 * Math.tan(THREE.MathUtils.degToRad(25))) * 1.1;
     camera.position.set(c.x - away * 0.55, c.y + away * 0.5, c.z + away * 0.75);
     controls.target.set(c.x, c.y, c.z);
@@ -143,14 +160,14 @@ function frame(root) {
 
 // Back to the first view of the model.
 document.getElementById("view3d-reset").addEventListener("click", () => {
-  if (!model) return;
-  frame(model);
+  if (!drawing) return;
+  frame();
   render();
 });
 
 // The element under a point of the canvas: the nearest named node holding its value.
 function elementAt(clientX, clientY) {
-  if (!model) return null;
+  if (!elements()) return null;
   const r = renderer.domElement.getBoundingClientRect();
   const ndc = new THREE.Vector2(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1);
   const ray = new THREE.Raycaster();
@@ -171,7 +188,7 @@ function elementAt(clientX, clientY) {
 // For the page's tests: the middle of an element's top face as the canvas shows it (page
 // coordinates), where a click finds that element again, and its ID.
 function pointOnElement() {
-  if (!model) return null;
+  if (!elements()) return null;
   const r = renderer.domElement.getBoundingClientRect();
   for (let k = 0; k < 400; ++k) {
     const x = r.left + r.width * (0.2 + 0.6 * ((k % 20) / 19));
@@ -198,8 +215,9 @@ renderer.domElement.addEventListener("click", (event) => {
   info.dataset.id = e ? e.id : "";
 });
 
-// layout.glb is fetched and read in a worker (glb_worker.js); here the three.js objects are
-// made from its arrays a slice at a time, yielding to the page between slices, so that a 2-D
+// layout.glb is fetched and read in a worker (glb_worker.js), which also merges what the camera
+// draws (glb_merge.js); here the drawing is handed to WebGL as it comes, and the three.js
+// objects of the elements are made only when a click or a check asks for them, so that a 2-D
 // redraw that arrives meanwhile is drawn at once.
 const glbWorker = new Worker("glb_worker.js");
 const glbWaiting = new Map();
@@ -219,7 +237,7 @@ function fetchGlb(src) {
   });
 }
 
-const SLICE_MS = 6;
+const SLICE_MS = 4;
 const yieldToPage = () =>
   globalThis.scheduler && scheduler.yield ? scheduler.yield() : new Promise((r) => setTimeout(r, 0));
 
@@ -232,10 +250,20 @@ function material(m) {
   return made;
 }
 
+// The scene's materials by their index, and the one for a primitive without (at -1); flat
+// shaded where a primitive has no normals, as three.js's loader makes them.
+function materialsOf(scene) {
+  const made = scene.materials.map(material);
+  made.none = new THREE.MeshStandardMaterial({ metalness: 1, roughness: 1 });
+  const rows = scene.primitives;
+  for (let r = 0; r < rows.length; r += 9)
+    if (rows[r + 3] < 0) (rows[r + 7] >= 0 ? made[rows[r + 7]] : made.none).flatShading = true;
+  return made;
+}
+const materialAt = (materials, i) => (i >= 0 ? materials[i] : materials.none);
+
 // Each mesh's primitives as [geometry, material] pairs, sharing the worker's buffer.
-function meshParts(scene, buffer) {
-  const materials = scene.materials.map(material);
-  const fallback = new THREE.MeshStandardMaterial({ metalness: 1, roughness: 1 });
+function meshParts(scene, buffer, materials) {
   const parts = [];
   const rows = scene.primitives;
   const INDEX = { 5121: Uint8Array, 5123: Uint16Array, 5125: Uint32Array };
@@ -245,22 +273,18 @@ function meshParts(scene, buffer) {
     g.setAttribute("position", new THREE.BufferAttribute(new Float32Array(buffer, po, pc * 3), 3));
     if (no >= 0) g.setAttribute("normal", new THREE.BufferAttribute(new Float32Array(buffer, no, pc * 3), 3));
     if (io >= 0) g.setIndex(new THREE.BufferAttribute(new INDEX[it](buffer, io, ic), 1));
-    const used = mat >= 0 ? materials[mat] : fallback;
-    if (no < 0) used.flatShading = true;
-    (parts[m] ||= []).push([g, used]);
+    (parts[m] ||= []).push([g, materialAt(materials, mat)]);
   }
   return parts;
 }
 
-// The model as three.js's loader would make it: a node with one primitive is that mesh, one
-// with several a group of them; names and extras (userData) as the glb has them. Null when a
-// newer model was asked for meanwhile.
-async function buildModel(scene, buffer, stillWanted) {
-  const parts = meshParts(scene, buffer);
+// The model's elements as three.js's loader would make them: a node with one primitive is that
+// mesh, one with several a group of them; names and extras (userData) as the glb has them.
+function buildModel({ scene, buffer, materials }) {
+  const parts = meshParts(scene, buffer, materials);
   const root = new THREE.Group();
   root.userData = JSON.parse(scene.sceneExtras);
   const made = new Array(scene.mesh.length);
-  let deadline = performance.now() + SLICE_MS;
   for (let i = 0; i < made.length; ++i) {
     const own = scene.mesh[i] >= 0 ? parts[scene.mesh[i]] || [] : [];
     let o;
@@ -278,28 +302,52 @@ async function buildModel(scene, buffer, stillWanted) {
     o.matrix.decompose(o.position, o.quaternion, o.scale);
     (scene.parent[i] < 0 ? root : made[scene.parent[i]]).add(o);
     made[i] = o;
-    if ((i & 127) === 127 && performance.now() > deadline) {
-      await yieldToPage();
-      if (!stillWanted()) return null;
-      deadline = performance.now() + SLICE_MS;
-    }
   }
   return root;
 }
 
-// What the camera draws: the model's meshes merged into one a material, so that a segment of
-// thousands of elements is a few draw calls. A mesh an element took software WebGL 40-85 ms
-// on the page's thread for each picture, and longer in the GPU process, where the 2-D
-// canvas's redraw waited behind it. The elements stay in the scene on a layer of their own,
-// which the camera does not draw, for clicks to find them and for the page's tests. Null when
-// a newer model was asked for meanwhile.
-async function mergedDrawing(root, stillWanted) {
+// The elements shown, made now if they were not yet: in the scene on a layer of their own,
+// which the camera does not draw, for clicks to find them and for the page's checks.
+function elements() {
+  if (!model && elementsToMake) {
+    model = buildModel(elementsToMake);
+    elementsToMake = null;
+    onElementsLayer(model);
+    scene.add(model);
+  }
+  return model;
+}
+
+function onElementsLayer(root) {
   root.updateMatrixWorld(true);
+  root.traverse((o) => { if (o.isMesh) o.layers.set(ELEMENTS); });
+}
+
+// The worker's merged drawing (glb_merge.js) as three.js meshes, one a material, with the
+// bounds the worker measured.
+function drawingFrom(groups, materials) {
+  const made = new THREE.Group();
+  for (const g of groups) {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute("position", new THREE.BufferAttribute(g.position, 3));
+    if (g.normal) geometry.setAttribute("normal", new THREE.BufferAttribute(g.normal, 3));
+    geometry.setIndex(new THREE.BufferAttribute(g.index, 1));
+    geometry.boundingBox = new THREE.Box3(new THREE.Vector3(...g.min), new THREE.Vector3(...g.max));
+    geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(...g.centre), g.radius);
+    made.add(new THREE.Mesh(geometry, materialAt(materials, g.material)));
+  }
+  return made;
+}
+
+// What the camera draws of a model three.js's own loader read (a glb the worker does not
+// read): its meshes merged into one a material on the page's thread, a slice at a time, as
+// glb_merge.js does in the worker. Null when a newer model was asked for meanwhile.
+async function mergedDrawing(root, stillWanted) {
+  onElementsLayer(root);
   const byMaterial = new Map();
   const drawing = new THREE.Group();
   root.traverse((o) => {
     if (!o.isMesh) return;
-    o.layers.set(ELEMENTS);
     // As they are: an instanced mesh, or one of several materials (not made from our glb).
     if (o.isInstancedMesh || Array.isArray(o.material)) drawing.add(placedCopy(o));
     else (byMaterial.get(o.material) || byMaterial.set(o.material, []).get(o.material)).push(o);
@@ -325,7 +373,7 @@ function placedCopy(o) {
 }
 
 // One geometry of `meshes` in world coordinates; a mirrored mesh's triangles turned back, as
-// the renderer would face them. `goOn` is asked every few hundred meshes.
+// the renderer would face them. `goOn` is asked every 32 meshes.
 async function mergedGeometry(meshes, withNormals, goOn) {
   let vertices = 0, indices = 0;
   for (const m of meshes) {
@@ -337,13 +385,14 @@ async function mergedGeometry(meshes, withNormals, goOn) {
   const position = new Float32Array(vertices * 3);
   const normal = withNormals ? new Float32Array(vertices * 3) : null;
   const index = new Uint32Array(indices);
-  const v = new THREE.Vector3(), turn = new THREE.Matrix3();
+  const v = new THREE.Vector3(), turn = new THREE.Matrix3(), bounds = new THREE.Box3();
   let vo = 0, io = 0;
   for (let k = 0; k < meshes.length; ++k) {
     const m = meshes[k], g = m.geometry, p = g.attributes.position, n = g.attributes.normal;
     turn.getNormalMatrix(m.matrixWorld);
     for (let i = 0; i < p.count; ++i) {
       v.fromBufferAttribute(p, i).applyMatrix4(m.matrixWorld).toArray(position, (vo + i) * 3);
+      bounds.expandByPoint(v);
       if (normal) v.fromBufferAttribute(n, i).applyMatrix3(turn).normalize().toArray(normal, (vo + i) * 3);
     }
     const [second, third] = m.matrixWorld.determinant() < 0 ? [2, 1] : [1, 2];
@@ -354,12 +403,13 @@ async function mergedGeometry(meshes, withNormals, goOn) {
       index[io++] = vo + (own ? own[t + third] : t + third);
     }
     vo += p.count;
-    if ((k & 255) === 255 && !(await goOn())) break;
+    if ((k & 31) === 31 && !(await goOn())) break;
   }
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute("position", new THREE.BufferAttribute(position, 3));
   if (normal) geometry.setAttribute("normal", new THREE.BufferAttribute(normal, 3));
   geometry.setIndex(new THREE.BufferAttribute(index, 1));
+  geometry.boundingBox = bounds;
   return geometry;
 }
 
@@ -399,30 +449,40 @@ async function show(src) {
     const answer = await fetchGlb(src);
     if (answer.aborted || !stillWanted()) return;
     if (answer.error) throw new Error(answer.error);
-    let root;
+    let root = null, made = null, merged, sceneExtras;
     if (answer.scene) {
-      root = await buildModel(answer.scene, answer.buffer, stillWanted);
+      made = { scene: answer.scene, buffer: answer.buffer, materials: materialsOf(answer.scene) };
+      merged = drawingFrom(answer.drawing, made.materials);
+      sceneExtras = JSON.parse(answer.scene.sceneExtras);
       window.view3d.readIn = "worker";
     } else {
       root = (await new GLTFLoader().parseAsync(answer.buffer, "")).scene;
       window.view3d.readIn = "page: " + answer.unsupported;
+      if (!stillWanted()) return;
+      merged = await mergedDrawing(root, stillWanted);
+      sceneExtras = root.userData || {};
     }
-    if (!root || !stillWanted()) return;
-    const merged = await mergedDrawing(root, stillWanted);
     if (!merged || !stillWanted()) return;
-    if (model) {
-      scene.remove(model, drawing);
-      dispose(model);
-      drawing.traverse((o) => { if (o.isMesh) o.geometry.dispose(); });
-    }
+    await yieldToPage();  // a change that came meanwhile goes first, and drops this model
+    if (!stillWanted()) return;
+    const [oldModel, oldDrawing] = [model, drawing];
+    if (model) scene.remove(model);
+    if (drawing) scene.remove(drawing);
     model = root;
+    elementsToMake = made;
     drawing = merged;
-    scene.add(model, drawing);
+    extras = sceneExtras;
+    if (model) scene.add(model);
+    scene.add(drawing);
     size();
-    frame(model);
+    frame();
     const rendering = performance.now();
     render();
     performance.measure("view3d-render", { start: rendering, end: performance.now() });
+    // The old model's GPU copies go once the new one is drawn: its shader programs, which the
+    // new materials share, stay compiled (dropped first, each new model compiled them again).
+    if (oldModel) dispose(oldModel);
+    if (oldDrawing) dispose(oldDrawing);
     window.view3d.src = src;
     window.view3d.loads += 1;
     window.view3d.error = null;

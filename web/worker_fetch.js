@@ -12,8 +12,10 @@ function errorText(buffer, status) {
   }
 }
 
-// Fetches {id, url}, aborting the fetch before it, and answers with what `read(id, buffer)`
-// posts of the bytes, or with {id, error}; an aborted request posts nothing.
+// Fetches {id, url}, aborting the fetch before it, and answers with what `read(id, buffer,
+// stillWanted)` posts of the bytes, or with {id, error}; an aborted request posts nothing. A
+// read that takes a while asks stillWanted() between slices of its work, and stops when a
+// newer request or a drop has come.
 async function fetchLatest({ id, url }, read) {
   if (currentRequest) currentRequest.abort();
   const controller = new AbortController();
@@ -22,7 +24,7 @@ async function fetchLatest({ id, url }, read) {
     const response = await fetch(url, { signal: controller.signal });
     const buffer = await response.arrayBuffer();
     if (!response.ok) self.postMessage({ id, error: errorText(buffer, response.status) });
-    else read(id, buffer);
+    else await read(id, buffer, () => !controller.signal.aborted);
   } catch (err) {
     if (err.name !== "AbortError") self.postMessage({ id, error: String(err.message || err) });
   } finally {

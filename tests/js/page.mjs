@@ -7,6 +7,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdir, mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
+import vm from 'node:vm';
 import { deflateSync } from 'node:zlib';
 import { chromium } from 'playwright-core';
 import { serve as serveOn } from './serve.mjs';
@@ -88,6 +89,40 @@ const check = (ok, what) => {
 const serve = (args) => serveOn(curdle, args);
 const { server, url } = await serve([]);
 const source = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
+
+// The worker's merged drawing (web/glb_merge.js) of one triangle under a mirrored, turned
+// and moved node, checked against the same transforms by hand: the page's models have no
+// mirrored node, and a wrong turn there would draw it inside out.
+{
+  const merge = vm.createContext({ performance, MessageChannel });
+  vm.runInContext(await readFile(path.join(source, 'web/glb_merge.js'), 'utf8'), merge);
+  const buffer = new ArrayBuffer(3 * 12 * 2 + 3 * 2);
+  new Float32Array(buffer, 0, 9).set([0, 0, 0, 1, 0, 0, 0, 1, 0]);  // a triangle facing +z
+  new Float32Array(buffer, 36, 9).set([0, 0, 1, 0, 0, 1, 0, 0, 1]);
+  new Uint16Array(buffer, 72, 3).set([0, 1, 2]);
+  // The parent mirrors x and moves by (5, 0, 0); the child turns a quarter about y.
+  const matrix = new Float32Array(32);
+  matrix.set([-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 0, 0, 1], 0);
+  matrix.set([0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1], 16);
+  const scene = { parent: new Int32Array([-1, 0]), mesh: new Int32Array([-1, 0]), matrix,
+                  primitives: new Float64Array([0, 0, 3, 36, 72, 3, 5123, 0, 4]) };
+  const [g] = (await merge.mergedDrawing(scene, buffer)).drawing;
+  // By hand: the child takes (x, y, z) to (z, y, -x), the parent then to (5 - z, y, -x).
+  const place = ([x, y, z]) => [5 - z, y, -x];
+  const corners = [[0, 0, 0], [1, 0, 0], [0, 1, 0]].map(place);
+  const drawn = [...g.index].map((i) => [...g.position.slice(i * 3, i * 3 + 3)]);
+  const sameSet = corners.every((c) => drawn.some((d) => d.every((v, k) => Math.abs(v - c[k]) < 1e-6)));
+  // The drawn winding's face normal against the turned normal: the same way for a face seen
+  // from outside. The normal (0, 0, 1) turns to (-1, 0, 0).
+  const [a, b, c] = drawn;
+  const u = b.map((v, k) => v - a[k]), w = c.map((v, k) => v - a[k]);
+  const face = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
+  const normal = [...g.normal.slice(0, 3)];
+  check(sameSet && Math.abs(normal[0] + 1) < 1e-6 && Math.abs(normal[1]) < 1e-6 && Math.abs(normal[2]) < 1e-6 &&
+        face[0] < 0 && g.min[0] === 5 && g.max[0] === 5,
+        `the 3-D view's worker merges a mirrored node's triangle where it lies, facing out (corners ` +
+        `${JSON.stringify(drawn)}, normal ${JSON.stringify(normal)}, face ${JSON.stringify(face)})`);
+}
 
 const browser = await chromium.launch({
   executablePath: '/usr/bin/chromium',
