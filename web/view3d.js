@@ -129,7 +129,7 @@ function drawnShare() {
 
 // A façade (standing up) from the street, a floor from eye height at its near edge, a whole
 // building (its scene says so) from above its south-west corner. The bounds are the merged
-// drawing's, measured as it was made (glb_merge.js, or mergedGeometry here).
+// drawing's: the worker's drawing comes with them (glb_merge.js).
 function frame() {
   const bounds = new THREE.Box3().setFromObject(drawing);
   const s = bounds.getSize(new THREE.Vector3());
@@ -245,10 +245,10 @@ const yieldToPage = () =>
 // The glb's PBR material; without a GPU a matte one of the same colour: software WebGL shaded
 // a 67 x 67 floor's picture in half the time, time the curd's redraw waited for.
 function material(m) {
-  const made = SOFTWARE ? new THREE.MeshLambertMaterial() : new THREE.MeshStandardMaterial({ metalness: m.metallic, roughness: m.roughness });
-  made.setValues({
-    opacity: m.colour[3],
-    transparent: m.blend, depthWrite: !m.blend, side: m.doubleSided ? THREE.DoubleSide : THREE.FrontSide });
+  const seen = { opacity: m.colour[3], transparent: m.blend, depthWrite: !m.blend,
+                 side: m.doubleSided ? THREE.DoubleSide : THREE.FrontSide };
+  const made = SOFTWARE ? new THREE.MeshLambertMaterial(seen)
+    : new THREE.MeshStandardMaterial({ ...seen, metalness: m.metallic, roughness: m.roughness });
   made.color.setRGB(m.colour[0], m.colour[1], m.colour[2], THREE.LinearSRGBColorSpace);
   made.name = m.name;
   return made;
@@ -389,14 +389,13 @@ async function mergedGeometry(meshes, withNormals, goOn) {
   const position = new Float32Array(vertices * 3);
   const normal = withNormals ? new Float32Array(vertices * 3) : null;
   const index = new Uint32Array(indices);
-  const v = new THREE.Vector3(), turn = new THREE.Matrix3(), bounds = new THREE.Box3();
+  const v = new THREE.Vector3(), turn = new THREE.Matrix3();
   let vo = 0, io = 0;
   for (let k = 0; k < meshes.length; ++k) {
     const m = meshes[k], g = m.geometry, p = g.attributes.position, n = g.attributes.normal;
     turn.getNormalMatrix(m.matrixWorld);
     for (let i = 0; i < p.count; ++i) {
       v.fromBufferAttribute(p, i).applyMatrix4(m.matrixWorld).toArray(position, (vo + i) * 3);
-      bounds.expandByPoint(v);
       if (normal) v.fromBufferAttribute(n, i).applyMatrix3(turn).normalize().toArray(normal, (vo + i) * 3);
     }
     const [second, third] = m.matrixWorld.determinant() < 0 ? [2, 1] : [1, 2];
@@ -413,7 +412,6 @@ async function mergedGeometry(meshes, withNormals, goOn) {
   geometry.setAttribute("position", new THREE.BufferAttribute(position, 3));
   if (normal) geometry.setAttribute("normal", new THREE.BufferAttribute(normal, 3));
   geometry.setIndex(new THREE.BufferAttribute(index, 1));
-  geometry.boundingBox = bounds;
   return geometry;
 }
 

@@ -70,14 +70,14 @@ try {
         }
         // The change: the next seed's button clicked in the page, at once on an idle round; on
         // the other, a part of the reload's course after it started. Timed by the page's
-        // scheduler at the priority of input, since the 3-D view's slices of work on the page's
-        // thread (which yield with scheduler.yield) hold back a plain timer until they end.
+        // scheduler at the priority of input, as a person's click comes: a plain timer waited
+        // behind the page's other tasks (the 3-D view's continuations of scheduler.yield).
         const offset = kind === 'reload' ? reloadCourse * (Math.floor(i / 2) + 0.5) / rounds : 0;
         const before = await page.evaluate(() => [performance.getEntriesByName('curd-redraw').length,
                                                   window.reloads.started.length]);
         const last = startedBefore;
         startedBefore = before[1];
-        inFlight += await page.evaluate(([kind, n, offset]) => new Promise((resolve) => {
+        const foundOnItsWay = await page.evaluate(([kind, n, offset]) => new Promise((resolve) => {
           const change = () => scheduler.postTask(() => {
             const stale = document.getElementById('view3d').classList.contains('stale');
             document.getElementById('seed-next').click();
@@ -86,7 +86,8 @@ try {
                delay: kind === 'idle' ? 0 : Math.max(0, offset - (performance.now() - window.reloads.started.at(-1))) });
           if (kind === 'idle' || window.reloads.started.length > n) change();
           else window.addEventListener('layout3d', change, { once: true });
-        }), [kind, last, offset]) * (kind === 'reload');
+        }), [kind, last, offset]);
+        if (kind === 'reload') inFlight += foundOnItsWay;
         await page.waitForFunction((n) => performance.getEntriesByName('curd-redraw').length > n, before[0],
                                    { timeout: 60000 });
         const [ms, fetched, server] = await page.evaluate(() => {
