@@ -115,7 +115,10 @@ TEST(DxfReaderTest, BlocksPlacingTooManyVerticesAreRefused) {
   for (int k = 0; k < 30; ++k) dxf.insert("A", fmt::format("{:X}", 0x1000 + k), "ROW", 0, 3000 * k);
   // 3,000 shapes, 3,000,000 vertices.
   const std::string m = refusal(dxf.text());
-  EXPECT_NE(m.find("or 2000000 vertices once its blocks are inserted"), std::string::npos) << m;
+  EXPECT_NE(
+      m.find("or 2000000 vertices (or 1000000 block placements) once its blocks are inserted"),
+      std::string::npos)
+      << m;
 }
 
 TEST(DxfReaderTest, RefusesWhatIsNotAnAsciiDxf) {
@@ -153,6 +156,89 @@ TEST(DxfReaderTest, UnitCodes) {
   EXPECT_EQ(insunits_mm(6), 1000);
   EXPECT_EQ(insunits_mm(0), 0);
   EXPECT_EQ(insunits_mm(3), 0);  // miles: no site is drawn in them
+}
+
+TEST(DxfReaderTest, NumbersAreReadStrictly) {
+  for (const char* bad : {"1,5", " 1 2", "1.#QNAN", "nan", "inf", "0x10"}) {
+    const std::string text = fmt::format(
+        "0\nSECTION\n2\nENTITIES\n0\nLINE\n5\n7A\n8\nA\n10\n{}\n20\n0\n11\n5\n21\n5\n"
+        "0\nENDSEC\n0\nEOF\n",
+        bad);
+    const std::string m = refusal(text);
+    EXPECT_NE(m.find("line 12: the LINE 7A has"), std::string::npos) << bad << ": " << m;
+  }
+  // A group code that is no whole number is named by its line.
+  EXPECT_NE(refusal("0\nSECTION\n2\nENTITIES\n1O\nLINE\n").find("line 5 should be a group code"),
+            std::string::npos);
+  // A line longer than any DXF's is refused, not read for ever.
+  const std::string m = refusal("0\nSECTION\n2\nENTITIES\n999\n" + std::string(70000, 'x') + "\n");
+  EXPECT_NE(m.find("line 6 is 70000 characters long"), std::string::npos) << m;
+}
+
+TEST(DxfReaderTest, WidePolylinesAreTheStripsTheyCover) {
+  DxfText dxf;
+  dxf.begin_entities_only().lwpolyline("C-DRAN", "40", {{0, 0, 0}, {1000, 0, 0}, {1000, 500, 0}},
+                                       false, 1, 150);
+  const Drawing d = read_dxf(dxf.text(), "site.dxf", {});
+  const Shape& s = on(d, "C-DRAN");
+  EXPECT_FALSE(s.closed);
+  ASSERT_FALSE(s.strip.empty());
+  // An L of 1,000 and 500 along its centre line, 150 wide, mitred at the corner.
+  EXPECT_NEAR(contour_area(s.strip), 150.0 * 1500, 1e-6);
+  const Rect b = contour_bounds(s.strip);
+  EXPECT_NEAR(b.x, 0, 1e-9);
+  EXPECT_NEAR(b.y, -75, 1e-9);
+  EXPECT_NEAR(b.right(), 1075, 1e-9);
+  EXPECT_NEAR(b.top(), 500, 1e-9);
+}
+
+TEST(DxfReaderTest, SplinesByFitPointsRunThroughThem) {
+  // A quarter circle's five points: the interpolating cubic runs through each and stays close
+  // to the circle between them (chords through the fit points would cut up to 7.6 inside).
+  const std::string text =
+      "0\nSECTION\n2\nENTITIES\n0\nSPLINE\n5\n51\n8\nEDGE\n70\n8\n71\n3\n72\n0\n73\n0\n"
+      "74\n5\n11\n1000\n21\n0\n31\n0\n11\n923.88\n21\n382.68\n31\n0\n11\n707.11\n21\n"
+      "707.11\n31\n0\n11\n382.68\n21\n923.88\n31\n0\n11\n0\n21\n1000\n31\n0\n"
+      "0\nENDSEC\n0\nEOF\n";
+  const Drawing d = read_dxf(text, "site.dxf", {0.05, 0});
+  const Shape& s = on(d, "EDGE");
+  ASSERT_GT(s.path.size(), 20u);
+  EXPECT_NEAR(s.path.front().x, 1000, 1e-9);
+  EXPECT_NEAR(s.path.back().y, 1000, 1e-9);
+  for (const ContourVertex& v : s.path) EXPECT_NEAR(std::hypot(v.x, v.y), 1000, 2.0);
+  EXPECT_NE(d.notes.front().find("1 splines given by fit points"), std::string::npos);
+}
+
+TEST(DxfReaderTest, HatchBoundariesAreClosedShapes) {
+  const std::string text =
+      "0\nSECTION\n2\nENTITIES\n0\nHATCH\n5\n60\n8\nL-PAVE\n10\n0\n20\n0\n30\n0\n"
+      "2\nSOLID\n70\n1\n71\n0\n91\n2\n"
+      // A polyline path: a 100 square.
+      "92\n3\n72\n0\n73\n1\n93\n4\n10\n0\n20\n0\n10\n100\n20\n0\n10\n100\n20\n100\n"
+      "10\n0\n20\n100\n97\n0\n"
+      // An edge path: a circle of radius 10 as one arc edge.
+      "92\n1\n93\n1\n72\n2\n10\n300\n20\n0\n40\n10\n50\n0\n51\n360\n73\n1\n97\n0\n"
+      "75\n0\n76\n1\n98\n0\n0\nENDSEC\n0\nEOF\n";
+  const Drawing d = read_dxf(text, "site.dxf", {});
+  EXPECT_NEAR(contour_area(on(d, "L-PAVE", 0).path), 10000, 1e-9);
+  EXPECT_NEAR(contour_area(on(d, "L-PAVE", 1).path), 3.14159265358979323846 * 100, 1e-9);
+  EXPECT_TRUE(on(d, "L-PAVE", 1).closed);
+}
+
+TEST(DxfReaderTest, MirroredBlockInsertsArePlacedInThePlan) {
+  DxfText dxf;
+  dxf.begin_blocks()
+      .block("PIT")
+      .lwpolyline("0", "20", {{0, 0, 0}, {100, 0, 0}, {100, 50, 0}}, true)
+      .end_block()
+      .begin_entities()
+      .insert("L-PLNT-PITS", "30", "PIT", 1000, 0, 1, 1, 0, -1);
+  const Drawing d = read_dxf(dxf.text(), "site.dxf", {});
+  const Shape& s = on(d, "L-PLNT-PITS");
+  // Seen from below, (1000, 0) in the insert's system is (-1000, 0) in the plan, and x runs left.
+  EXPECT_NEAR(s.path[1].x, -1100, 1e-9);
+  EXPECT_EQ(s.block, "PIT");
+  EXPECT_EQ(s.insert_handle, "30");
 }
 
 }  // namespace

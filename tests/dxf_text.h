@@ -29,9 +29,10 @@ class DxfText {
   // Each vertex {x, y, bulge}.
   DxfText& lwpolyline(const std::string& layer, const std::string& handle,
                       const std::vector<std::array<double, 3>>& vertices, bool closed,
-                      double extrusion_z = 1) {
+                      double extrusion_z = 1, double width = 0) {
     group(0, "LWPOLYLINE"), group(5, handle), group(8, layer);
     group(90, static_cast<int>(vertices.size())), group(70, closed ? 1 : 0);
+    if (width != 0) group(43, width);
     for (const auto& v : vertices) {
       group(10, v[0]), group(20, v[1]);
       if (v[2] != 0) group(42, v[2]);
@@ -57,12 +58,14 @@ class DxfText {
     return group(10, cx), group(20, cy), group(30, 0.0), group(40, r);
   }
   DxfText& insert(const std::string& layer, const std::string& handle, const std::string& name,
-                  double x, double y, double sx = 1, double sy = 1, double angle = 0) {
+                  double x, double y, double sx = 1, double sy = 1, double angle = 0,
+                  double extrusion_z = 1) {
     group(0, "INSERT"), group(5, handle), group(8, layer), group(2, name);
     group(10, x), group(20, y), group(30, 0.0);
     if (sx != 1) group(41, sx);
     if (sy != 1) group(42, sy);
     if (angle != 0) group(50, angle);
+    if (extrusion_z != 1) group(210, 0.0), group(220, 0.0), group(230, extrusion_z);
     return *this;
   }
   std::string text() const { return text_ + "0\nENDSEC\n0\nEOF\n"; }

@@ -204,5 +204,74 @@ TEST(SiteTest, TheOriginMovesTheDatum) {
   EXPECT_THROW(site_from(read_dxf(dxf.text(), map.file, {}), map), SiteError);
 }
 
+TEST(SiteTest, ShapesInsideAZoneAreNotZonesOfTheirOwn) {
+  // A pit block: its circle, the trunk inside, a grille of lines; inserted twice.
+  DxfText dxf(6);
+  dxf.begin_blocks()
+      .block("PIT")
+      .circle("0", "20", 0, 0, 0.75)
+      .circle("0", "21", 0, 0, 0.2)
+      .line("0", "22", -0.5, -0.3, 0.5, -0.3)
+      .line("0", "23", -0.5, 0.3, 0.5, 0.3)
+      .end_block()
+      .begin_entities()
+      .lwpolyline("A-OTLN", "1", {{0, 0, 0}, {10, 0, 0}, {10, 6, 0}, {0, 6, 0}}, true)
+      .insert("TREE_PIT", "30", "PIT", 3, 3)
+      .insert("TREE_PIT", "31", "PIT", 7, 3, 1.2, 1.2)
+      .circle("TREE_PIT", "32", 3, 3, 0.75);  // drawn again over the first pit
+  const Site s = site_of(dxf, courtyard_map(true));
+  ASSERT_EQ(s.zones.size(), 2u);
+  EXPECT_NEAR(contour_area(s.zones[1].contour), 3.14159265358979323846 * 900 * 900, 1e-3);
+  std::string notes;
+  for (const std::string& n : s.notes) notes += n + "\n";
+  EXPECT_NE(notes.find("2 closed shapes inside others passed over"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("4 lines and arcs inside its shapes passed over"), std::string::npos)
+      << notes;
+  EXPECT_NE(notes.find("1 shapes drawn again over another"), std::string::npos) << notes;
+}
+
+TEST(SiteTest, TheOutlineIsPickedWhereALayerHoldsSeveral) {
+  DxfText dxf(6);
+  dxf.begin_entities_only()
+      .lwpolyline("A-OTLN", "1", {{0, 0, 0}, {10, 0, 0}, {10, 6, 0}, {0, 6, 0}}, true)
+      .lwpolyline("A-OTLN", "2", {{20, 0, 0}, {40, 0, 0}, {40, 6, 0}, {20, 6, 0}}, true);
+  LayerMap map = courtyard_map();
+  const std::string m = refusal(dxf, map);
+  EXPECT_NE(m.find("holds 2 closed shapes side by side (LWPOLYLINE 1 (10 x 6 at (0, 0)); "
+                   "LWPOLYLINE 2 (20 x 6 at (20, 0))); say which is the outline"),
+            std::string::npos)
+      << m;
+  map.pick.around = std::array<double, 2>{5, 3};
+  EXPECT_NEAR(contour_bounds(site_of(dxf, map).outline).w, 10000, 1e-6);
+  map.pick = {};
+  map.pick.handle = "2";
+  map.origin_at_outline = true;
+  EXPECT_NEAR(contour_bounds(site_of(dxf, map).outline).w, 20000, 1e-6);
+  map.pick = {};
+  map.pick.largest = true;
+  EXPECT_NEAR(contour_bounds(site_of(dxf, map).outline).w, 20000, 1e-6);
+  map.pick = {};
+  map.pick.around = std::array<double, 2>{15, 3};
+  EXPECT_NE(refusal(dxf, map).find("no closed shape on layer \"A-OTLN\" lies around the point "
+                                   "(15, 3)"),
+            std::string::npos);
+}
+
+TEST(SiteTest, AnOpenPieceInABlockIsNamedWithItsBlockAndInsert) {
+  DxfText dxf(6);
+  dxf.begin_blocks()
+      .block("PIT")
+      .line("0", "9D", 0, 0, 1.5, 0)
+      .end_block()
+      .begin_entities()
+      .lwpolyline("A-OTLN", "1", {{0, 0, 0}, {10, 0, 0}, {10, 6, 0}, {0, 6, 0}}, true)
+      .insert("TREE_PIT", "2F", "PIT", 530012.3456, 3);
+  const std::string m = refusal(dxf, courtyard_map(true));
+  EXPECT_NE(m.find("LINE 9D in block \"PIT\" (INSERT 2F) ends at (530012.3456, 3) and "
+                   "(530013.8456, 3)"),
+            std::string::npos)
+      << m;
+}
+
 }  // namespace
 }  // namespace curdle::site

@@ -104,6 +104,56 @@ std::string read_drawing_name(TableReader& r, const std::string& what, bool or_m
   return file;
 }
 
+// `key` (outline, plan): the layer that holds the surface's outline, or a table that also
+// picks one of its shapes: { layer = "A-SITE", around = [x, y] } (the smallest shape around a
+// point in the drawing's coordinates), handle = "2F" (an entity's), or pick = "largest".
+void read_outline_layer(TableReader& r, const std::string& key, const std::string& example,
+                        site::LayerMap& map) {
+  const toml::node* n = r.get(key);
+  const toml::table* t = n ? n->as_table() : nullptr;
+  if (!t) {
+    const auto layers = read_layers(r, key);
+    if (layers.size() != 1)
+      r.fail(key, "must name the one layer that holds the outline, e.g. \"" + example +
+                      "\", or be a table { layer = \"" + example +
+                      "\", around = [x, y] } that picks one of its shapes");
+    map.outline = layers.front();
+    return;
+  }
+  TableReader pr(*t, r.key_path(key), r.source(), {"layer", "around", "handle", "pick"});
+  map.outline = read_name(pr, "layer", "a layer's name").value_or("");
+  if (map.outline.empty() || map.outline.size() > 255)
+    pr.fail("layer",
+            "must name the drawing's layer that holds the outline, e.g. \"" + example + "\"");
+  int ways = 0;
+  if (const toml::node* a = pr.get("around")) {
+    const toml::array* xy = a->as_array();
+    const auto x = xy && xy->size() == 2 ? finite_number(xy->get(0)) : std::nullopt;
+    const auto y = xy && xy->size() == 2 ? finite_number(xy->get(1)) : std::nullopt;
+    if (!x || !y || std::fabs(*x) > 1e12 || std::fabs(*y) > 1e12)
+      pr.fail("around",
+              "must be [x, y]: a point inside the outline, in the drawing's own "
+              "coordinates and units (as CAD shows them)");
+    map.pick.around = std::array<double, 2>{*x, *y};
+    ++ways;
+  }
+  if (pr.get("handle")) {
+    map.pick.handle = read_string(pr, "handle", "an entity's handle").value_or("");
+    if (map.pick.handle.empty() || map.pick.handle.size() > 16)
+      pr.fail("handle",
+              "must be the handle of the outline's entity, as CAD lists it (e.g. \"2F\")");
+    ++ways;
+  }
+  if (pr.get("pick")) {
+    if (read_string(pr, "pick", "\"largest\"").value_or("") != "largest")
+      pr.fail("pick", "must be \"largest\": the largest of the layer's closed shapes");
+    map.pick.largest = true;
+    ++ways;
+  }
+  if (ways > 1) pr.fail("around", "picks the outline one way: around, handle or pick, not several");
+  pr.report_unused("is not a key of the outline's table (layer, around, handle, pick)");
+}
+
 // The drawing that `r`'s table (`table`) names in `file`, read beside the recipe and turned into
 // a site by `map`; one that cannot be read or laid is refused at that `file`.
 site::Site drawn_site(const TableReader& r, const toml::node& table, const site::LayerMap& map,
@@ -125,10 +175,7 @@ site::Site drawn_site(const TableReader& r, const toml::node& table, const site:
 site::LayerMap read_layer_map(TableReader& r, const LayoutSpec& spec, size_t values) {
   site::LayerMap map;
   map.file = read_drawing_name(r, "site's drawing");
-  const auto outline = read_layers(r, "outline");
-  if (outline.size() != 1)
-    r.fail("outline", "must name the one layer that holds the surface's outline, e.g. \"A-OTLN\"");
-  map.outline = outline.front();
+  read_outline_layer(r, "outline", "A-OTLN", map);
   map.openings = read_layers(r, "openings");
   if (const toml::node* n = r.get("zones")) {
     const toml::array* a = n->as_array();
@@ -215,10 +262,7 @@ Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::strin
                  {"file", "plan", "units", "origin"});
   site::LayerMap map;
   map.file = read_drawing_name(sr, "plan's drawing", true);
-  const auto plan = read_layers(sr, "plan");
-  if (plan.size() != 1)
-    sr.fail("plan", "must name the one layer that holds the building's outline, e.g. \"A-WALL\"");
-  map.outline = plan.front();
+  read_outline_layer(sr, "plan", "A-WALL", map);
   read_units_and_origin(sr, map);
   map.chord_tolerance = spec.chord_tolerance;
   sr.report_unused("is not a [layout.building.site] key (file, plan, units, origin)");

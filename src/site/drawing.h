@@ -25,8 +25,16 @@ struct Shape {
   std::string entity;  // "LWPOLYLINE", "LINE", "ARC", "CIRCLE", "path", ...
   Contour path;        // in drawing units; an open shape's last vertex's bulge is unused
   bool closed = false;
-  int insert = -1;         // the top-level block reference it was placed by; -1: none
-  bool flattened = false;  // an ellipse or spline, approximated by chords
+  int insert = -1;            // the top-level block reference it was placed by; -1: none
+  bool flattened = false;     // an ellipse or spline, approximated by chords
+  std::string block;          // the block it is drawn in, for messages; empty: model space
+  std::string insert_handle;  // the handle of the top-level INSERT that placed it
+  // An open polyline drawn with width: the area it covers (wide_polyline.h), taken where the
+  // shape is not joined into an outline with others; empty: no width.
+  Contour strip;
+  // Why the shape could not be read (a spline whose knots do not fit): refused where a layer
+  // the recipe names holds it, passed over elsewhere.
+  std::string fault;
 };
 
 struct Drawing {
@@ -37,6 +45,7 @@ struct Drawing {
   std::vector<Shape> shapes;
   std::vector<std::string> hidden;  // layers frozen or off in the drawing (read all the same)
   std::vector<std::string> notes;   // what a reader approximated or passed over
+  int precision = 4;                // decimals of the drawing's coordinates ($LUPREC), for messages
 };
 
 // Every layer that holds a shape, in the order first seen.

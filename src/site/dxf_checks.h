@@ -1,6 +1,6 @@
-// What a DXF's bytes must be before dxflib reads them: an ASCII DXF (binary DXF, DWG and other
-// files are named as such), of bounded size, whose entities' counts fit the file, since dxflib
-// allocates what a count says before it reads what follows.
+// What a DXF's bytes must be before they are read: an ASCII DXF (binary DXF, DWG and other
+// files are named as such), of bounded size, whose entities' counts fit the file (a count that
+// does not is a damaged file, named by its line).
 #pragma once
 
 #include <string>

@@ -1,47 +1,39 @@
-// dxflib calls back per entity; the entities are collected per block (model space is the
-// block ""), and then the model's entities and the blocks they insert are placed.
+// The groups (dxf_groups.h) are read a record at a time: a record is a group 0 and what follows
+// it. The model's entities and each block's are collected as shapes in their block's frame,
+// then the model is placed with the blocks it inserts. Entities drawn in an object coordinate
+// system (ARC, CIRCLE, LWPOLYLINE, 2-D POLYLINE, INSERT, HATCH) are turned into the plan by
+// AutoCAD's arbitrary axis algorithm (DXF Reference, "Object Coordinate Systems").
 #include "site/dxf_reader.h"
 
-#include <dxflib/dl_creationadapter.h>
-#include <dxflib/dl_dxf.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <memory>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include "curdle/text.h"
 #include "site/curves.h"
 #include "site/dxf_checks.h"
+#include "site/dxf_groups.h"
+#include "site/spline_fit.h"
+#include "site/wide_polyline.h"
 
 namespace curdle::site {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kDeepestBlock = 16;
+// Block placements a drawing may ask for, counting each array cell: an empty block inserted in
+// arrays of arrays places nothing but would be visited without end.
+constexpr size_t kMostPlacements = 1000000;
 // How far from the plan's plane a vertex may stand before a shape is off it, drawing units.
 constexpr double kPlaneTolerance = 1e-6;
 
-struct Insert {
-  std::string block, layer, handle;
-  double x = 0, y = 0, sx = 1, sy = 1, angle = 0;  // angle in degrees
-  int columns = 1, rows = 1;
-  double column_spacing = 0, row_spacing = 0;
-};
-
-struct Block {
-  double base_x = 0, base_y = 0;
-  std::vector<Shape> shapes;
-  std::vector<Insert> inserts;
-};
-
 // Layer names as the drawing wrote them: UTF-8, or Windows-1252 in older files; `\U+XXXX` is
 // the DXF escape for any other character.
-std::string decoded_name(const std::string& raw) {
+std::string decoded_name(std::string_view raw) {
   std::string text;
   if (valid_utf8(raw)) {
     text = raw;
@@ -67,276 +59,6 @@ std::string decoded_name(const std::string& raw) {
   return out;
 }
 
-std::string hex_handle(int handle) { return handle >= 0 ? fmt::format("{:X}", handle) : ""; }
-
-class Collector : public DL_CreationAdapter {
- public:
-  Collector(const std::string& file, const DxfReading& reading) : file_(file), reading_(reading) {}
-
-  std::map<std::string, Block> blocks;  // "" is model space
-  std::map<std::string, int> layer_flags;
-  std::set<std::string> layers_off;
-  double unit_mm = 0;
-  int insunits = 0;
-  std::optional<std::string> error;  // the first fault; reading goes on but keeps nothing
-  size_t passed_over = 0;            // texts, dimensions, hatches, points: not a site's shapes
-  size_t flattened = 0;
-
-  void setVariableInt(const std::string& key, int value, int) override {
-    if (key == "$INSUNITS") insunits = value, unit_mm = insunits_mm(value);
-  }
-  void addLayer(const DL_LayerData& data) override {
-    layer_flags[decoded_name(data.name)] = data.flags;
-    if (data.off) layers_off.insert(decoded_name(data.name));
-  }
-  void addBlock(const DL_BlockData& data) override {
-    finish_polyline();
-    block_ = data.name;
-    // Model and paper space blocks hold what the ENTITIES section holds (or a layout's).
-    in_paper_ = data.name.rfind("*Paper_Space", 0) == 0 || data.name.rfind("*PAPER_SPACE", 0) == 0;
-    if (data.name == "*Model_Space" || data.name == "*MODEL_SPACE") block_.clear();
-    Block& b = blocks[block_];
-    if (!block_.empty()) b.base_x = data.bpx, b.base_y = data.bpy;
-  }
-  void endBlock() override {
-    finish_polyline();
-    block_.clear();
-    in_paper_ = false;
-  }
-  // dxflib calls endSection at every entity's end, POLYLINE's included, before its VERTEX
-  // entities: a polyline ends at SEQEND, the next entity, the block's end or the file's.
-  void endSequence() override { finish_polyline(); }
-
-  void addLine(const DL_LineData& d) override {
-    begin();
-    if (std::fabs(d.z1 - d.z2) > kPlaneTolerance) return off_plane("LINE");
-    Shape s = shape("LINE");
-    s.path = {{d.x1, d.y1, 0}, {d.x2, d.y2, 0}};
-    keep(std::move(s));
-  }
-  void addArc(const DL_ArcData& d) override {
-    begin();
-    if (!plan_entity("ARC") || !(d.radius > 0)) return;
-    double sweep = std::fmod(d.angle2 - d.angle1, 360.0);
-    if (sweep <= 0) sweep += 360;
-    const double a0 = d.angle1 * kPi / 180, a1 = a0 + sweep * kPi / 180;
-    Shape s = shape("ARC");
-    s.path = {{d.cx + d.radius * std::cos(a0), d.cy + d.radius * std::sin(a0),
-               tidy_bulge(bulge_of_sweep(sweep * kPi / 180))},
-              {d.cx + d.radius * std::cos(a1), d.cy + d.radius * std::sin(a1), 0}};
-    mirror_if_under(s);
-    keep(std::move(s));
-  }
-  void addCircle(const DL_CircleData& d) override {
-    begin();
-    if (!plan_entity("CIRCLE") || !(d.radius > 0)) return;
-    Shape s = shape("CIRCLE");
-    s.path = {{d.cx - d.radius, d.cy, 1}, {d.cx + d.radius, d.cy, 1}};
-    s.closed = true;
-    mirror_if_under(s);
-    keep(std::move(s));
-  }
-  void addEllipse(const DL_EllipseData& d) override {
-    begin();
-    if (std::fabs(d.mz) > kPlaneTolerance) return off_plane("ELLIPSE");
-    const bool whole = std::fabs(std::fabs(d.angle2 - d.angle1) - 2 * kPi) < 1e-9 ||
-                       (d.angle1 == 0 && d.angle2 == 0);
-    Shape s = shape("ELLIPSE");
-    const double to = whole ? d.angle1 + 2 * kPi : d.angle2;
-    for (const Point& p :
-         flatten_ellipse({d.cx, d.cy}, {d.mx, d.my}, d.ratio, d.angle1, to, tolerance()))
-      s.path.push_back({p[0], p[1], 0});
-    if (whole && s.path.size() > 1) s.path.pop_back(), s.closed = true;
-    s.flattened = true;
-    ++flattened;
-    keep(std::move(s));
-  }
-  void addPolyline(const DL_PolylineData& d) override {
-    begin();
-    // 16 and 64: polygon and polyface meshes, which are surfaces rather than outlines.
-    if (d.flags & (16 | 64)) {
-      ++passed_over;
-      return;
-    }
-    polyline_ = shape(d.flags & 8 ? "POLYLINE" : "LWPOLYLINE");
-    polyline_->closed = d.flags & 1;
-    polyline_z_.reset();
-    polyline_mirrored_ = under();
-  }
-  void addVertex(const DL_VertexData& d) override {
-    if (!polyline_) return;
-    if (!polyline_z_) polyline_z_ = d.z;
-    if (std::fabs(d.z - *polyline_z_) > kPlaneTolerance) {
-      const Shape s = std::move(*polyline_);  // named by the POLYLINE, not its VERTEX
-      polyline_.reset();
-      return off_plane(s.entity, s.handle, s.layer);
-    }
-    if (++vertices_ > kMostVertices) return too_many();
-    polyline_->path.push_back({d.x, d.y, std::isfinite(d.bulge) ? tidy_bulge(d.bulge) : 0});
-  }
-  void addSpline(const DL_SplineData& d) override {
-    begin();
-    spline_ = SplineParts{};
-    spline_->degree = static_cast<int>(d.degree);
-    spline_->closed = d.flags & 1;
-    spline_->shape = shape("SPLINE");
-  }
-  void addControlPoint(const DL_ControlPointData& d) override {
-    if (!spline_ || spline_->control.size() > kMostVertices) return;
-    spline_->control.push_back({d.x, d.y});
-    spline_->weights.push_back(d.w);
-  }
-  void addKnot(const DL_KnotData& d) override {
-    if (spline_ && spline_->knots.size() <= kMostVertices) spline_->knots.push_back(d.k);
-  }
-  void addFitPoint(const DL_FitPointData& d) override {
-    if (spline_ && spline_->fit.size() <= kMostVertices) spline_->fit.push_back({d.x, d.y});
-  }
-  void addInsert(const DL_InsertData& d) override {
-    begin();
-    if (in_paper_) return;
-    Insert i{d.name, layer(), hex_handle(getAttributes().getHandle())};
-    i.x = d.ipx, i.y = d.ipy, i.sx = d.sx, i.sy = d.sy, i.angle = d.angle;
-    i.columns = std::max(1, d.cols), i.rows = std::max(1, d.rows);
-    i.column_spacing = d.colSp, i.row_spacing = d.rowSp;
-    if (under()) i.x = -i.x, i.sx = -i.sx, i.angle = 180 - i.angle;
-    blocks[block_].inserts.push_back(std::move(i));
-  }
-  void addText(const DL_TextData&) override { pass_over(); }
-  void addMText(const DL_MTextData&) override { pass_over(); }
-  void addPoint(const DL_PointData&) override { pass_over(); }
-  void addHatch(const DL_HatchData&) override { pass_over(); }
-  void addSolid(const DL_SolidData&) override { pass_over(); }
-  void addLeader(const DL_LeaderData&) override { pass_over(); }
-  void addDimLinear(const DL_DimensionData&, const DL_DimLinearData&) override { pass_over(); }
-  void addDimAlign(const DL_DimensionData&, const DL_DimAlignedData&) override { pass_over(); }
-
-  // After the last group: what is still open is finished.
-  void finish() {
-    finish_polyline();
-    finish_spline();
-  }
-
- private:
-  struct SplineParts {
-    int degree = 3;
-    bool closed = false;
-    std::vector<Point> control, fit;
-    std::vector<double> knots, weights;
-    Shape shape;
-  };
-
-  // Any new entity ends the polyline or spline before it (LWPOLYLINE has no end marker).
-  void begin() {
-    finish_polyline();
-    finish_spline();
-  }
-  void pass_over() {
-    begin();
-    ++passed_over;
-  }
-  std::string layer() { return decoded_name(getAttributes().getLayer()); }
-  Shape shape(const char* entity) {
-    Shape s;
-    s.layer = layer();
-    s.handle = hex_handle(getAttributes().getHandle());
-    s.entity = entity;
-    return s;
-  }
-  double tolerance() const {
-    const double mm = reading_.unit_mm > 0 ? reading_.unit_mm : (unit_mm > 0 ? unit_mm : 1);
-    return reading_.chord_tolerance_mm / mm;
-  }
-  // Entities drawn in their own coordinate system: the plan's (extrusion 0, 0, 1) or the plan
-  // seen from below (0, 0, -1: a mirrored copy), never one standing off it.
-  bool under() {
-    const double* n = getExtrusion()->getDirection();
-    return std::fabs(n[0]) < 1e-9 && std::fabs(n[1]) < 1e-9 && n[2] < 0;
-  }
-  bool plan_entity(const char* entity) {
-    const double* n = getExtrusion()->getDirection();
-    if (std::fabs(n[0]) < 1e-9 && std::fabs(n[1]) < 1e-9 && n[2] != 0) return true;
-    off_plane(entity);
-    return false;
-  }
-  void mirror_if_under(Shape& s) {
-    if (!under()) return;
-    for (ContourVertex& v : s.path) v.x = -v.x, v.bulge = v.bulge == 0 ? 0 : -v.bulge;
-  }
-  void off_plane(const std::string& entity) {
-    off_plane(entity, hex_handle(getAttributes().getHandle()), layer());
-  }
-  void off_plane(const std::string& entity, const std::string& handle, const std::string& layer) {
-    fail(
-        fmt::format("{}: the {} {}on layer \"{}\" does not lie in the plan's plane (its points "
-                    "stand at different heights, or it is drawn in a tilted coordinate "
-                    "system); flatten the drawing (e.g. FLATTEN in AutoCAD) and save it again",
-                    file_, entity, handle.empty() ? "" : "with handle " + handle + " ", layer));
-  }
-  void too_many() {
-    fail(
-        fmt::format("{}: holds more than {} shapes or {} vertices, more than a site drawing "
-                    "needs; keep only the layers of the surface (e.g. WBLOCK or LAYISO, then "
-                    "save as DXF)",
-                    file_, kMostShapes, kMostVertices));
-  }
-  void fail(std::string message) {
-    if (!error) error = std::move(message);
-  }
-  void keep(Shape s) {
-    if (error || in_paper_) return;
-    if (++shapes_ > kMostShapes) return too_many();
-    if ((vertices_ += s.path.size()) > kMostVertices) return too_many();
-    blocks[block_].shapes.push_back(std::move(s));
-  }
-  void finish_polyline() {
-    if (!polyline_) return;
-    Shape s = std::move(*polyline_);
-    polyline_.reset();
-    if (polyline_mirrored_)
-      for (ContourVertex& v : s.path) v.x = -v.x, v.bulge = v.bulge == 0 ? 0 : -v.bulge;
-    // A closed polyline that repeats its first vertex at the end is closed once.
-    if (s.closed && s.path.size() > 2 && s.path.back().x == s.path.front().x &&
-        s.path.back().y == s.path.front().y)
-      s.path.pop_back();
-    if (s.path.size() >= 2) keep(std::move(s));
-  }
-  void finish_spline() {
-    if (!spline_) return;
-    SplineParts sp = std::move(*spline_);
-    spline_.reset();
-    std::vector<Point> points;
-    if (!sp.control.empty()) {
-      bool weighted = false;
-      for (double w : sp.weights) weighted = weighted || w != 1;
-      points = flatten_spline(sp.degree, sp.knots, sp.control,
-                              weighted ? sp.weights : std::vector<double>{}, tolerance());
-    }
-    if (points.empty() && sp.fit.size() >= 2) points = sp.fit;  // no usable knots: its fit points
-    if (points.empty()) {
-      ++passed_over;
-      return;
-    }
-    Shape s = std::move(sp.shape);
-    for (const Point& p : points) s.path.push_back({p[0], p[1], 0});
-    s.closed = sp.closed || (points.size() > 2 && points.front() == points.back());
-    if (s.closed && s.path.size() > 2 && points.front() == points.back()) s.path.pop_back();
-    s.flattened = true;
-    ++flattened;
-    keep(std::move(s));
-  }
-
-  std::string file_;
-  DxfReading reading_;
-  std::string block_;
-  bool in_paper_ = false;
-  std::optional<Shape> polyline_;
-  std::optional<double> polyline_z_;
-  bool polyline_mirrored_ = false;
-  std::optional<SplineParts> spline_;
-  size_t shapes_ = 0, vertices_ = 0;
-};
-
 // A block reference's placement: base point to origin, scale, rotation, then the insertion
 // point; arrays repeat it along the rotated columns and rows.
 struct Placement {
@@ -354,46 +76,733 @@ struct Placement {
   }
 };
 
-Placement placement_of(const Insert& i, const Block& b, int column, int row) {
+struct Insert {
+  std::string block, layer, handle;
+  double x = 0, y = 0, sx = 1, sy = 1, angle = 0;  // angle in degrees, all in the OCS
+  int64_t columns = 1, rows = 1;
+  double column_spacing = 0, row_spacing = 0;
+  double ocs_x = 1;  // -1: drawn from below (extrusion 0, 0, -1), x mirrored into the plan
+};
+
+struct Block {
+  double base_x = 0, base_y = 0;
+  std::vector<Shape> shapes;
+  std::vector<Insert> inserts;
+};
+
+struct Record {
+  std::string_view type;
+  size_t line = 0;
+  std::vector<DxfGroup> groups;
+};
+
+class Reader {
+ public:
+  Reader(std::string_view bytes, const std::string& file, const DxfReading& reading)
+      : groups_(bytes, file), file_(file), reading_(reading) {}
+
+  std::map<std::string, Block> blocks;  // "" is model space
+  std::map<std::string, int> layer_flags;
+  std::set<std::string> layers_off;
+  int insunits = 0;
+  int precision = 4;
+  size_t passed_over = 0;  // texts, dimensions, points: not a site's shapes
+  size_t flattened = 0, fitted = 0, wide = 0, wide_closed = 0, hatches = 0;
+  std::vector<std::string> notes;
+
+  void read() {
+    Record r;
+    std::string section;
+    while (record(r)) {
+      if (r.type == "SECTION") {
+        section = value_of(r, 2).value_or("");
+        if (section == "HEADER") header(r);
+        continue;
+      }
+      if (r.type == "ENDSEC") {
+        finish_polyline();
+        section.clear();
+        continue;
+      }
+      if (r.type == "EOF") break;
+      if (section == "TABLES") {
+        if (r.type == "LAYER") layer_entry(r);
+      } else if (section == "BLOCKS" || section == "ENTITIES") {
+        if (r.type == "BLOCK") {
+          finish_polyline();
+          begin_block(r);
+        } else if (r.type == "ENDBLK") {
+          finish_polyline();
+          block_.clear();
+          in_paper_ = false;
+        } else if (section == "ENTITIES" && !block_.empty()) {
+          block_.clear();  // an ENDBLK missing: the entities are the model's
+          entity(r);
+        } else {
+          entity(r);
+        }
+      }
+    }
+    finish_polyline();
+  }
+
+  double tolerance() const {
+    const double mm =
+        reading_.unit_mm > 0 ? reading_.unit_mm : std::max(insunits_mm(insunits), 0.0);
+    return reading_.chord_tolerance_mm / (mm > 0 ? mm : 1);
+  }
+
+ private:
+  bool record(Record& r) {
+    DxfGroup g;
+    r.groups.clear();
+    // Groups before the first 0 (a damaged start) are passed over.
+    do {
+      if (!groups_.next(g)) return false;
+    } while (g.code != 0);
+    r.type = g.value;
+    r.line = g.line;
+    while (groups_.next(g)) {
+      if (g.code == 0) {
+        groups_.put_back(g);
+        break;
+      }
+      if (r.groups.size() >= 4 * kMostVertices + 64)
+        throw SiteError(
+            fmt::format("{}: the {} at line {} holds more groups than a site "
+                        "drawing's entity needs",
+                        file_, r.type, r.line));
+      r.groups.push_back(g);
+    }
+    return true;
+  }
+
+  static std::optional<std::string_view> value_of(const Record& r, int code) {
+    for (const DxfGroup& g : r.groups)
+      if (g.code == code) return g.value;
+    return std::nullopt;
+  }
+  double real(const Record& r, int code, double fallback, std::string_view what) const {
+    for (const DxfGroup& g : r.groups)
+      if (g.code == code) return groups_.real(g, what);
+    return fallback;
+  }
+  int64_t integer(const Record& r, int code, int64_t fallback, std::string_view what) const {
+    for (const DxfGroup& g : r.groups)
+      if (g.code == code) return groups_.integer(g, what);
+    return fallback;
+  }
+
+  void header(const Record& r) {
+    for (size_t i = 0; i + 1 < r.groups.size(); ++i) {
+      if (r.groups[i].code != 9) continue;
+      const DxfGroup& v = r.groups[i + 1];
+      if (r.groups[i].value == "$INSUNITS" && v.code == 70) {
+        const int64_t code = groups_.integer(v, "header's $INSUNITS");
+        if (code < 0 || code > 24)
+          throw SiteError(
+              fmt::format("{}: line {}: $INSUNITS is {}, which is no unit code (0 to 24 in the DXF "
+                          "Reference); save the drawing again with its units set (UNITS)",
+                          file_, v.line, code));
+        insunits = static_cast<int>(code);
+      }
+      if (r.groups[i].value == "$LUPREC" && v.code == 70) {
+        const int64_t p = groups_.integer(v, "header's $LUPREC");
+        if (p >= 0 && p <= 8) precision = static_cast<int>(p);
+      }
+    }
+  }
+
+  void layer_entry(const Record& r) {
+    const auto name = value_of(r, 2);
+    if (!name) return;
+    const std::string n = decoded_name(*name);
+    layer_flags[n] = static_cast<int>(integer(r, 70, 0, "LAYER " + n));
+    if (integer(r, 62, 7, "LAYER " + n) < 0) layers_off.insert(n);
+  }
+
+  void begin_block(const Record& r) {
+    const std::string name(value_of(r, 2).value_or(""));
+    block_ = name;
+    in_paper_ = name.rfind("*Paper_Space", 0) == 0 || name.rfind("*PAPER_SPACE", 0) == 0;
+    if (name == "*Model_Space" || name == "*MODEL_SPACE") block_.clear();
+    Block& b = blocks[block_];
+    if (!block_.empty())
+      b.base_x = real(r, 10, 0, "BLOCK " + name), b.base_y = real(r, 20, 0, "BLOCK " + name);
+  }
+
+  // ---- Entities -------------------------------------------------------------------------
+
+  struct Common {
+    std::string handle, layer, name;  // name: "LWPOLYLINE 2A", for messages
+    double nx = 0, ny = 0, nz = 1;    // the extrusion, normalised
+  };
+
+  Common common(const Record& r) {
+    Common c;
+    c.handle = std::string(value_of(r, 5).value_or(""));
+    for (char& ch : c.handle)
+      if (static_cast<unsigned char>(ch) < 0x20) ch = '?';
+    c.layer = decoded_name(value_of(r, 8).value_or("0"));
+    c.name = c.handle.empty() ? fmt::format("{} at line {}", r.type, r.line)
+                              : fmt::format("{} {}", r.type, c.handle);
+    c.nx = real(r, 210, 0, c.name), c.ny = real(r, 220, 0, c.name), c.nz = real(r, 230, 1, c.name);
+    const double l = std::sqrt(c.nx * c.nx + c.ny * c.ny + c.nz * c.nz);
+    if (l > 0) c.nx /= l, c.ny /= l, c.nz /= l;
+    return c;
+  }
+  // Drawn in the plan, or in it seen from below (extrusion 0, 0, -1: x mirrored).
+  static bool in_plan(const Common& c) {
+    return std::fabs(c.nx) < 1e-9 && std::fabs(c.ny) < 1e-9 && c.nz != 0;
+  }
+  [[noreturn]] void off_plane(const Common& c) const {
+    throw SiteError(
+        fmt::format("{}: the {} on layer \"{}\"{} does not lie in the plan's plane (its points "
+                    "stand at different heights, or it is drawn in a tilted coordinate "
+                    "system); flatten the drawing (e.g. FLATTEN in AutoCAD) and save it again",
+                    file_, with_handle(c), c.layer, in_block()));
+  }
+  static std::string with_handle(const Common& c) {
+    return c.handle.empty()
+               ? c.name
+               : fmt::format("{} with handle {}", c.name.substr(0, c.name.find(' ')), c.handle);
+  }
+  std::string in_block() const {
+    return block_.empty() ? "" : fmt::format(" in block \"{}\"", block_);
+  }
+
+  Shape shape(const Common& c, std::string_view entity) const {
+    Shape s;
+    s.layer = c.layer;
+    s.handle = c.handle;
+    s.entity = std::string(entity);
+    s.block = block_;
+    return s;
+  }
+  void keep(Shape s) {
+    if (in_paper_) return;
+    if (++shapes_ > kMostShapes || (vertices_ += s.path.size()) > kMostVertices)
+      throw SiteError(fmt::format(
+          "{}: holds more than {} shapes or {} vertices, more than a site drawing needs; keep "
+          "only the layers of the surface (e.g. WBLOCK or LAYISO, then save as DXF)",
+          file_, kMostShapes, kMostVertices));
+    blocks[block_].shapes.push_back(std::move(s));
+  }
+  static void mirror(Shape& s) {
+    for (ContourVertex& v : s.path) v.x = -v.x, v.bulge = v.bulge == 0 ? 0 : -v.bulge;
+    for (ContourVertex& v : s.strip) v.x = -v.x, v.bulge = v.bulge == 0 ? 0 : -v.bulge;
+  }
+
+  void entity(const Record& r) {
+    if (r.type != "VERTEX" && r.type != "SEQEND") finish_polyline();
+    // Paper space (group 67 = 1) holds the sheets, not the site.
+    if (in_paper_ || integer(r, 67, 0, r.type) == 1) return;
+    if (r.type == "LINE") return line(r);
+    if (r.type == "ARC" || r.type == "CIRCLE") return arc(r);
+    if (r.type == "ELLIPSE") return ellipse(r);
+    if (r.type == "LWPOLYLINE") return lwpolyline(r);
+    if (r.type == "POLYLINE") return polyline(r);
+    if (r.type == "VERTEX") return vertex(r);
+    if (r.type == "SEQEND" || r.type == "ATTRIB") return;
+    if (r.type == "SPLINE") return spline(r);
+    if (r.type == "INSERT") return insert(r);
+    if (r.type == "HATCH") return hatch(r);
+    ++passed_over;
+  }
+
+  void line(const Record& r) {
+    const Common c = common(r);
+    const double z1 = real(r, 30, 0, c.name), z2 = real(r, 31, 0, c.name);
+    if (std::fabs(z1 - z2) > kPlaneTolerance) off_plane(c);
+    Shape s = shape(c, "LINE");
+    s.path = {{real(r, 10, 0, c.name), real(r, 20, 0, c.name), 0},
+              {real(r, 11, 0, c.name), real(r, 21, 0, c.name), 0}};
+    keep(std::move(s));
+  }
+
+  void arc(const Record& r) {
+    const Common c = common(r);
+    if (!in_plan(c)) off_plane(c);
+    const double cx = real(r, 10, 0, c.name), cy = real(r, 20, 0, c.name);
+    const double radius = real(r, 40, 0, c.name);
+    if (!(radius > 0)) {
+      ++passed_over;
+      return;
+    }
+    Shape s = shape(c, r.type);
+    if (r.type == "CIRCLE") {
+      s.path = {{cx - radius, cy, 1}, {cx + radius, cy, 1}};
+      s.closed = true;
+    } else {
+      const double from = real(r, 50, 0, c.name), to = real(r, 51, 0, c.name);
+      double sweep = std::fmod(to - from, 360.0);
+      if (sweep <= 0) sweep += 360;
+      const double a0 = from * kPi / 180, a1 = a0 + sweep * kPi / 180;
+      const double bulge = tidy_bulge(bulge_of_sweep(sweep * kPi / 180));
+      // A whole turn is two half turns: one edge cannot sweep 360°.
+      if (sweep >= 360 - 1e-9) {
+        s.path = {{cx + radius * std::cos(a0), cy + radius * std::sin(a0), 1},
+                  {cx - radius * std::cos(a0), cy - radius * std::sin(a0), 1}};
+        s.closed = true;
+      } else {
+        s.path = {{cx + radius * std::cos(a0), cy + radius * std::sin(a0), bulge},
+                  {cx + radius * std::cos(a1), cy + radius * std::sin(a1), 0}};
+      }
+    }
+    if (c.nz < 0) mirror(s);
+    keep(std::move(s));
+  }
+
+  void ellipse(const Record& r) {
+    const Common c = common(r);
+    if (!in_plan(c)) off_plane(c);
+    const double cx = real(r, 10, 0, c.name), cy = real(r, 20, 0, c.name);
+    const double mx = real(r, 11, 0, c.name), my = real(r, 21, 0, c.name);
+    if (std::fabs(real(r, 31, 0, c.name)) > kPlaneTolerance) off_plane(c);
+    const double ratio = real(r, 40, 1, c.name);
+    double from = real(r, 41, 0, c.name), to = real(r, 42, 2 * kPi, c.name);
+    Shape s = shape(c, "ELLIPSE");
+    if (!(ratio > 0 && ratio <= 1 + 1e-9) || !(std::hypot(mx, my) > 0)) {
+      s.fault = fmt::format(
+          "the {} has an axis ratio of {:g} and a major axis {:g} long: it "
+          "encloses nothing",
+          c.name, ratio, std::hypot(mx, my));
+      s.path = {{cx, cy, 0}, {cx, cy, 0}};
+      keep(std::move(s));
+      return;
+    }
+    const bool whole = std::fabs(std::fabs(to - from) - 2 * kPi) < 1e-9 || (from == 0 && to == 0);
+    if (whole) to = from + 2 * kPi;
+    while (to <= from) to += 2 * kPi;
+    // The minor axis is the normal's cross the major, as long as the ratio says.
+    const double sign = c.nz < 0 ? -1 : 1;
+    const Point minor{-sign * my * ratio, sign * mx * ratio};
+    for (const Point& p : flatten_curve(
+             [&](double t) {
+               return Point{cx + mx * std::cos(t) + minor[0] * std::sin(t),
+                            cy + my * std::cos(t) + minor[1] * std::sin(t)};
+             },
+             from, to, tolerance()))
+      s.path.push_back({p[0], p[1], 0});
+    if (whole && s.path.size() > 1) s.path.pop_back(), s.closed = true;
+    s.flattened = true;
+    ++flattened;
+    keep(std::move(s));
+  }
+
+  // An LWPOLYLINE's vertices: each 10 begins one; 20, 40, 41 and 42 belong to the last.
+  void lwpolyline(const Record& r) {
+    const Common c = common(r);
+    if (!in_plan(c)) off_plane(c);
+    const int64_t flags = integer(r, 70, 0, c.name);
+    const double constant = real(r, 43, 0, c.name);
+    std::vector<WideVertex> v;
+    for (const DxfGroup& g : r.groups) {
+      if (g.code == 10) {
+        if (v.size() >= kMostVertices) break;
+        v.push_back({groups_.real(g, c.name), 0, 0, constant, constant});
+      } else if (!v.empty() && g.code == 20) {
+        v.back().y = groups_.real(g, c.name);
+      } else if (!v.empty() && g.code == 40) {
+        v.back().start_width = groups_.real(g, c.name);
+      } else if (!v.empty() && g.code == 41) {
+        v.back().end_width = groups_.real(g, c.name);
+      } else if (!v.empty() && g.code == 42) {
+        v.back().bulge = tidy_bulge(groups_.real(g, c.name));
+      }
+    }
+    polyline_ = Polyline{shape(c, "LWPOLYLINE"), std::move(v), (flags & 1) != 0, c.nz < 0};
+    finish_polyline();
+  }
+
+  void polyline(const Record& r) {
+    const Common c = common(r);
+    const int64_t flags = integer(r, 70, 0, c.name);
+    // 16 and 64: polygon and polyface meshes, which are surfaces rather than outlines.
+    if (flags & (16 | 64)) {
+      ++passed_over;
+      return;
+    }
+    const bool three_d = flags & 8;
+    if (!three_d && !in_plan(c)) off_plane(c);
+    polyline_ = Polyline{
+        shape(c, three_d ? "POLYLINE" : "POLYLINE"), {}, (flags & 1) != 0, !three_d && c.nz < 0};
+    polyline_->three_d = three_d;
+    polyline_->common = c;
+    polyline_->start_width = real(r, 40, 0, c.name);
+    polyline_->end_width = real(r, 41, 0, c.name);
+  }
+
+  void vertex(const Record& r) {
+    if (!polyline_) return;
+    const std::string& what = polyline_->common.name;
+    // 16: a spline frame's control point, not on the curve CAD draws.
+    if (integer(r, 70, 0, what) & 16) return;
+    const double z = real(r, 30, 0, what);
+    if (polyline_->three_d) {
+      if (!polyline_->z) polyline_->z = z;
+      if (std::fabs(z - *polyline_->z) > kPlaneTolerance) off_plane(polyline_->common);
+    }
+    if (polyline_->vertices.size() >= kMostVertices) return;
+    polyline_->vertices.push_back(
+        {real(r, 10, 0, what), real(r, 20, 0, what), tidy_bulge(real(r, 42, 0, what)),
+         real(r, 40, polyline_->start_width, what), real(r, 41, polyline_->end_width, what)});
+  }
+
+  void finish_polyline() {
+    if (!polyline_) return;
+    Polyline p = std::move(*polyline_);
+    polyline_.reset();
+    Shape& s = p.shape;
+    bool has_width = false;
+    for (const WideVertex& v : p.vertices) {
+      s.path.push_back({v.x, v.y, v.bulge});
+      has_width = has_width || v.start_width > 0 || v.end_width > 0;
+    }
+    s.closed = p.closed;
+    // A closed polyline that repeats its first vertex at the end is closed once.
+    if (s.closed && s.path.size() > 2 && s.path.back().x == s.path.front().x &&
+        s.path.back().y == s.path.front().y)
+      s.path.pop_back();
+    if (s.path.size() < 2) return;
+    if (has_width && !s.closed) {
+      s.strip = swept_outline(p.vertices, tolerance());
+      ++wide;
+    } else if (has_width) {
+      ++wide_closed;
+    }
+    if (p.mirrored) mirror(s);
+    keep(std::move(s));
+  }
+
+  void spline(const Record& r) {
+    const Common c = common(r);
+    const int64_t flags = integer(r, 70, 0, c.name);
+    const int64_t degree = integer(r, 71, 3, c.name);
+    std::vector<double> knots, weights;
+    std::vector<Point> control, fit;
+    std::vector<double> heights;
+    std::optional<Point> start, end;
+    for (size_t i = 0; i < r.groups.size(); ++i) {
+      const DxfGroup& g = r.groups[i];
+      auto pair = [&](int y_code) {
+        const double x = groups_.real(g, c.name);
+        const double y = i + 1 < r.groups.size() && r.groups[i + 1].code == y_code
+                             ? groups_.real(r.groups[i + 1], c.name)
+                             : 0;
+        return Point{x, y};
+      };
+      if (knots.size() + control.size() + fit.size() > kMostVertices) break;
+      if (g.code == 40) knots.push_back(groups_.real(g, c.name));
+      if (g.code == 41) weights.push_back(groups_.real(g, c.name));
+      if (g.code == 10) control.push_back(pair(20));
+      if (g.code == 11) fit.push_back(pair(21));
+      if (g.code == 12) start = pair(22);
+      if (g.code == 13) end = pair(23);
+      if (g.code == 30 || g.code == 31) heights.push_back(groups_.real(g, c.name));
+    }
+    for (double z : heights)
+      if (std::fabs(z - heights.front()) > kPlaneTolerance) off_plane(c);
+    if (std::fabs(c.nx) > 1e-9 || std::fabs(c.ny) > 1e-9) off_plane(c);
+    Shape s = shape(c, "SPLINE");
+    const bool closed = flags & (1 | 2);
+    std::vector<Point> points;
+    if (!control.empty()) {
+      bool weighted = false;
+      for (double w : weights) weighted = weighted || w != 1;
+      points = flatten_spline(static_cast<int>(degree), knots, control,
+                              weighted ? weights : std::vector<double>{}, tolerance());
+    }
+    if (points.empty() && fit.size() >= 2) {
+      if (closed && fit.front() != fit.back()) {
+        s.fault = fmt::format(
+            "the {} is a closed spline given only by fit points, which curdle does not draw "
+            "as CAD does; convert it to control vertices (SPLINEDIT, or save as DXF 2000 "
+            "or later) or draw the edge as a polyline",
+            c.name);
+      } else if (const auto cubic = spline_through(fit, start, end)) {
+        points = flatten_spline(3, cubic->knots, cubic->control, {}, tolerance());
+        ++fitted;
+      }
+    }
+    if (points.empty() && s.fault.empty())
+      s.fault = fmt::format(
+          "the {} cannot be drawn: its {} knots, {} control points (degree {}) and {} fit "
+          "points do not make a curve; redraw it or convert it to a polyline",
+          c.name, knots.size(), control.size(), degree, fit.size());
+    if (!s.fault.empty()) {
+      s.path = {{0, 0, 0}, {0, 0, 0}};
+      if (!control.empty())
+        s.path = {{control.front()[0], control.front()[1], 0},
+                  {control.back()[0], control.back()[1], 0}};
+      keep(std::move(s));
+      return;
+    }
+    for (const Point& p : points) s.path.push_back({p[0], p[1], 0});
+    s.closed = closed || (points.size() > 2 && points.front() == points.back());
+    if (s.closed && s.path.size() > 2 && points.front() == points.back()) s.path.pop_back();
+    s.flattened = true;
+    ++flattened;
+    keep(std::move(s));
+  }
+
+  void insert(const Record& r) {
+    const Common c = common(r);
+    if (!in_plan(c)) off_plane(c);
+    Insert i;
+    i.block = std::string(value_of(r, 2).value_or(""));
+    i.layer = c.layer;
+    i.handle = c.handle;
+    i.x = real(r, 10, 0, c.name), i.y = real(r, 20, 0, c.name);
+    i.sx = real(r, 41, 1, c.name), i.sy = real(r, 42, 1, c.name);
+    i.angle = real(r, 50, 0, c.name);
+    i.columns = std::max<int64_t>(1, integer(r, 70, 1, c.name));
+    i.rows = std::max<int64_t>(1, integer(r, 71, 1, c.name));
+    i.column_spacing = real(r, 44, 0, c.name), i.row_spacing = real(r, 45, 0, c.name);
+    i.ocs_x = c.nz < 0 ? -1 : 1;
+    if (!(std::fabs(i.sx) > 0 && std::fabs(i.sy) > 0)) {
+      notes.push_back(
+          fmt::format("the {} of block \"{}\" on layer \"{}\" is scaled by 0, so it "
+                      "places nothing: passed over",
+                      c.name, i.block, c.layer));
+      return;
+    }
+    blocks[block_].inserts.push_back(std::move(i));
+  }
+
+  // HATCH: its boundary paths are closed shapes on its layer.
+  void hatch(const Record& r) {
+    const Common c = common(r);
+    if (!in_plan(c)) off_plane(c);
+    const auto& g = r.groups;
+    size_t i = 0;
+    while (i < g.size() && g[i].code != 91) ++i;
+    if (i == g.size()) return;
+    const int64_t loops = groups_.integer(g[i++], c.name);
+    auto expect = [&](int code) -> const DxfGroup* {
+      // The next group of that code before the loop's end, skipping what is not asked for.
+      while (i < g.size() && g[i].code != code) {
+        if (g[i].code == 92 || g[i].code == 75 || g[i].code == 98) return nullptr;
+        ++i;
+      }
+      return i < g.size() ? &g[i++] : nullptr;
+    };
+    auto number = [&](int code) {
+      const DxfGroup* found = expect(code);
+      if (!found)
+        throw SiteError(
+            fmt::format("{}: the {} on layer \"{}\" has a boundary path without "
+                        "group {}; the file is damaged: export it again",
+                        file_, c.name, c.layer, code));
+      return groups_.real(*found, c.name);
+    };
+    ++hatches;
+    for (int64_t loop = 0; loop < loops && loop < 10000; ++loop) {
+      while (i < g.size() && g[i].code != 92) ++i;
+      if (i == g.size()) break;
+      const int64_t type = groups_.integer(g[i++], c.name);
+      Shape s = shape(c, "HATCH");
+      s.closed = true;
+      if (type & 2) {  // a polyline: its vertices with bulges
+        const bool bulges = number(72) != 0;
+        number(73);
+        const auto count = static_cast<int64_t>(number(93));
+        for (int64_t k = 0; k < count && k < static_cast<int64_t>(kMostVertices); ++k) {
+          const double x = number(10), y = number(20);
+          const double b =
+              bulges && i < g.size() && g[i].code == 42 ? groups_.real(g[i++], c.name) : 0;
+          s.path.push_back({x, y, tidy_bulge(b)});
+        }
+      } else {
+        const auto edges = static_cast<int64_t>(number(93));
+        Contour loop_path;
+        for (int64_t k = 0; k < edges && k < 100000; ++k) {
+          const auto edge = static_cast<int64_t>(number(72));
+          Contour piece = hatch_edge(edge, number, c);
+          append_edge(loop_path, piece);
+        }
+        s.path = std::move(loop_path);
+      }
+      if (s.path.size() > 2 &&
+          std::hypot(s.path.back().x - s.path.front().x, s.path.back().y - s.path.front().y) <=
+              1e-9 * (1 + std::fabs(s.path.front().x)))
+        s.path.pop_back();
+      if (s.path.size() < 2) continue;
+      if (c.nz < 0) mirror(s);
+      keep(std::move(s));
+    }
+  }
+
+  template <class Number>
+  Contour hatch_edge(int64_t edge, Number& number, const Common& c) {
+    if (edge == 1) {
+      const double x1 = number(10), y1 = number(20), x2 = number(11), y2 = number(21);
+      return {{x1, y1, 0}, {x2, y2, 0}};
+    }
+    if (edge == 2 || edge == 3) {
+      const double cx = number(10), cy = number(20);
+      double mx = 0, my = 0, ratio = 1, radius = 0;
+      if (edge == 2) {
+        radius = number(40);
+      } else {
+        mx = number(11), my = number(21), ratio = number(40);
+      }
+      double from = number(50) * kPi / 180, to = number(51) * kPi / 180;
+      const bool ccw = number(73) != 0;
+      // A clockwise edge stores its angles mirrored: it runs from -from to -to, clockwise.
+      if (!ccw) from = -from, to = -to;
+      double sweep = ccw ? to - from : from - to;
+      while (sweep <= 0) sweep += 2 * kPi;
+      if (sweep > 2 * kPi) sweep = 2 * kPi;
+      if (edge == 2) {
+        if (!(radius > 0)) return {};
+        Contour arc;
+        const int halves = sweep > kPi ? 2 : 1;
+        const double step = (ccw ? 1 : -1) * sweep / halves;
+        for (int h = 0; h <= halves; ++h) {
+          const double a = from + step * h;
+          arc.push_back({cx + radius * std::cos(a), cy + radius * std::sin(a),
+                         h < halves ? tidy_bulge(std::tan(step / 4)) : 0});
+        }
+        return arc;
+      }
+      const double major = std::hypot(mx, my);
+      if (!(major > 0) || !(ratio > 0)) return {};
+      // Angles of an elliptic edge are of the ellipse's parameter.
+      const Point minor{-my * ratio, mx * ratio};
+      const double t0 = from, t1 = ccw ? from + sweep : from - sweep;
+      Contour arc;
+      for (const Point& p : flatten_curve(
+               [&](double t) {
+                 return Point{cx + mx * std::cos(t) + minor[0] * std::sin(t),
+                              cy + my * std::cos(t) + minor[1] * std::sin(t)};
+               },
+               t0, t1, tolerance()))
+        arc.push_back({p[0], p[1], 0});
+      ++flattened;
+      return arc;
+    }
+    if (edge == 4) {
+      const auto degree = static_cast<int>(number(94));
+      const bool rational = number(73) != 0;
+      number(74);
+      const auto knot_count = static_cast<int64_t>(number(95));
+      const auto control_count = static_cast<int64_t>(number(96));
+      std::vector<double> knots, weights;
+      std::vector<Point> control;
+      for (int64_t k = 0; k < knot_count && k < static_cast<int64_t>(kMostVertices); ++k)
+        knots.push_back(number(40));
+      for (int64_t k = 0; k < control_count && k < static_cast<int64_t>(kMostVertices); ++k) {
+        const double x = number(10), y = number(20);
+        control.push_back({x, y});
+        if (rational) weights.push_back(number(42));
+      }
+      Contour arc;
+      for (const Point& p : flatten_spline(degree, knots, control, weights, tolerance()))
+        arc.push_back({p[0], p[1], 0});
+      if (arc.empty())
+        throw SiteError(
+            fmt::format("{}: the {} on layer \"{}\" has a spline edge whose knots do "
+                        "not fit its control points; the file is damaged",
+                        file_, c.name, c.layer));
+      ++flattened;
+      return arc;
+    }
+    throw SiteError(
+        fmt::format("{}: the {} on layer \"{}\" has a boundary edge of type {}, "
+                    "which no DXF has (1 line, 2 arc, 3 elliptic arc, 4 spline)",
+                    file_, c.name, c.layer, edge));
+  }
+
+  // Edges of a hatch's path follow each other; one drawn the other way round is turned.
+  static void append_edge(Contour& path, Contour piece) {
+    if (piece.empty()) return;
+    if (path.empty()) {
+      path = std::move(piece);
+      return;
+    }
+    auto gap = [](const ContourVertex& a, const ContourVertex& b) {
+      return std::hypot(a.x - b.x, a.y - b.y);
+    };
+    if (gap(path.back(), piece.back()) < gap(path.back(), piece.front())) {
+      Contour r(piece.rbegin(), piece.rend());
+      for (size_t k = 0; k + 1 < r.size(); ++k) r[k].bulge = -r[k + 1].bulge;
+      r.back().bulge = 0;
+      piece = std::move(r);
+    }
+    path.back().bulge = piece.front().bulge;
+    path.insert(path.end(), piece.begin() + 1, piece.end());
+  }
+
+  struct Polyline {
+    Shape shape;
+    std::vector<WideVertex> vertices;
+    bool closed = false, mirrored = false, three_d = false;
+    Common common;
+    double start_width = 0, end_width = 0;
+    std::optional<double> z;
+  };
+
+  DxfGroups groups_;
+  std::string file_;
+  DxfReading reading_;
+  std::string block_;
+  bool in_paper_ = false;
+  std::optional<Polyline> polyline_;
+  size_t shapes_ = 0, vertices_ = 0;
+};
+
+Placement placement_of(const Insert& i, const Block& b, int64_t column, int64_t row) {
   const double t = i.angle * kPi / 180, cs = std::cos(t), sn = std::sin(t);
-  const double ox = column * i.column_spacing, oy = row * i.row_spacing;
+  const double ox = static_cast<double>(column) * i.column_spacing,
+               oy = static_cast<double>(row) * i.row_spacing;
   Placement p;
   p.a = cs * i.sx, p.b = sn * i.sx, p.c = -sn * i.sy, p.d = cs * i.sy;
   const Point base = {p.a * b.base_x + p.c * b.base_y, p.b * b.base_x + p.d * b.base_y};
   p.e = i.x - base[0] + cs * ox - sn * oy;
   p.f = i.y - base[1] + sn * ox + cs * oy;
-  return p;
+  // Drawn from below: the whole placement is mirrored into the plan.
+  return p.then(Placement{i.ocs_x, 0, 0, 1, 0, 0});
 }
 
-Shape placed(const Shape& s, const Placement& p, double tolerance) {
-  Shape out = s;
-  out.path.clear();
+Contour placed_path(const Contour& path, bool closed, const Placement& p, double tolerance,
+                    bool& flattened) {
+  Contour out;
   const bool mirror = p.determinant() < 0;
-  if (p.keeps_arcs() || !has_arcs(s.path)) {
-    for (const ContourVertex& v : s.path) {
+  if (p.keeps_arcs() || !has_arcs(path)) {
+    for (const ContourVertex& v : path) {
       const Point q = p.apply(v.x, v.y);
-      out.path.push_back({q[0], q[1], mirror ? -v.bulge : v.bulge});
+      out.push_back({q[0], q[1], mirror ? -v.bulge : v.bulge});
     }
     return out;
   }
   // Stretched unevenly, an arc is an ellipse's: placed as chords.
-  Contour path = s.path;
-  if (!s.closed) path.back().bulge = 0;
-  for (const auto& q : flatten(path, tolerance)) {
+  Contour flat = path;
+  if (!closed) flat.back().bulge = 0;
+  for (const auto& q : flatten(flat, tolerance)) {
     const Point r = p.apply(q[0], q[1]);
-    out.path.push_back({r[0], r[1], 0});
+    out.push_back({r[0], r[1], 0});
   }
-  out.flattened = true;
+  flattened = true;
+  return out;
+}
+
+Shape placed(const Shape& s, const Placement& p, double tolerance) {
+  Shape out = s;
+  bool flattened = false;
+  out.path = placed_path(s.path, s.closed, p, tolerance, flattened);
+  if (!s.strip.empty()) out.strip = placed_path(s.strip, true, p, tolerance, flattened);
+  out.flattened = s.flattened || flattened;
   return out;
 }
 
 class Placer {
  public:
-  Placer(const Collector& c, const std::string& file, double tolerance, Drawing& drawing)
+  Placer(const Reader& c, const std::string& file, double tolerance, Drawing& drawing)
       : c_(c), file_(file), tolerance_(tolerance), drawing_(drawing) {}
 
   void place(const std::string& name, const Placement& p, const std::string& insert_layer,
-             int insert, int depth) {
+             int insert, const std::string& insert_handle, int depth) {
     const auto it = c_.blocks.find(name);
     if (it == c_.blocks.end()) {
       missing_.insert(name);
@@ -404,45 +813,51 @@ class Placer {
           fmt::format("{}: block \"{}\" is nested more than {} deep (or inserts "
                       "itself); explode it and save the drawing again",
                       file_, name, kDeepestBlock));
+    if (++placements_ > kMostPlacements) throw SiteError(too_many());
     for (const Shape& s : it->second.shapes) {
       if (drawing_.shapes.size() >= kMostShapes) throw SiteError(too_many());
-      Shape out = placed(s, p, tolerance_);
+      Shape out = depth == 0 ? s : placed(s, p, tolerance_);
       // Counted as placed: a block's few vertices, inserted in arrays, can be millions.
-      if ((vertices_ += out.path.size()) > kMostVertices) throw SiteError(too_many());
+      if ((vertices_ += out.path.size() + out.strip.size()) > kMostVertices)
+        throw SiteError(too_many());
       if (depth > 0 && (out.layer == "0" || out.layer.empty())) out.layer = insert_layer;
       out.insert = insert;
+      out.insert_handle = insert_handle;
       drawing_.shapes.push_back(std::move(out));
     }
     for (const Insert& i : it->second.inserts) {
       const std::string layer = depth > 0 && i.layer == "0" ? insert_layer : i.layer;
       const int top = depth == 0 ? next_insert_++ : insert;
-      if (static_cast<uint64_t>(i.columns) * static_cast<uint64_t>(i.rows) > kMostShapes)
+      const std::string& top_handle = depth == 0 ? i.handle : insert_handle;
+      if (static_cast<uint64_t>(i.columns) * static_cast<uint64_t>(i.rows) > kMostPlacements)
         throw SiteError(too_many());
       const auto inner = c_.blocks.find(i.block);
       if (inner == c_.blocks.end()) {
         missing_.insert(i.block);
         continue;
       }
-      for (int col = 0; col < i.columns; ++col)
-        for (int row = 0; row < i.rows; ++row)
-          place(i.block, placement_of(i, inner->second, col, row).then(p), layer, top, depth + 1);
+      for (int64_t col = 0; col < i.columns; ++col)
+        for (int64_t row = 0; row < i.rows; ++row)
+          place(i.block, placement_of(i, inner->second, col, row).then(p), layer, top, top_handle,
+                depth + 1);
     }
   }
   std::string too_many() const {
     return fmt::format(
-        "{}: places more than {} shapes or {} vertices once its blocks are inserted, more "
-        "than a site drawing needs; keep only the layers of the surface",
-        file_, kMostShapes, kMostVertices);
+        "{}: places more than {} shapes or {} vertices (or {} block placements) once its "
+        "blocks are inserted, more than a site drawing needs; keep only the layers of the "
+        "surface",
+        file_, kMostShapes, kMostVertices, kMostPlacements);
   }
   const std::set<std::string>& missing() const { return missing_; }
 
  private:
-  const Collector& c_;
+  const Reader& c_;
   std::string file_;
   double tolerance_;
   Drawing& drawing_;
   int next_insert_ = 0;
-  size_t vertices_ = 0;
+  size_t vertices_ = 0, placements_ = 0;
   std::set<std::string> missing_;
 };
 
@@ -469,35 +884,42 @@ double insunits_mm(int code) {
 
 Drawing read_dxf(std::string_view bytes, const std::string& file_name, const DxfReading& reading) {
   check_dxf_bytes(bytes, file_name);
-  Collector collector(file_name, reading);
-  {
-    std::istringstream in{std::string(bytes)};
-    DL_Dxf dxf;
-    dxf.in(in, &collector);
-  }
-  collector.finish();
-  if (collector.error) throw SiteError(*collector.error);
+  Reader reader(bytes, file_name, reading);
+  reader.read();
 
   Drawing drawing;
   drawing.format = "DXF";
-  drawing.unit_mm = collector.unit_mm;
+  drawing.unit_mm = insunits_mm(reader.insunits);
+  drawing.precision = reader.precision;
   static const std::map<int, std::string> kUnitNames = {{1, "in"}, {2, "ft"}, {4, "mm"},
                                                         {5, "cm"}, {6, "m"},  {14, "dm"}};
-  if (const auto it = kUnitNames.find(collector.insunits); it != kUnitNames.end())
+  if (const auto it = kUnitNames.find(reader.insunits); it != kUnitNames.end())
     drawing.unit_name = it->second;
-  else if (collector.insunits != 0)
-    drawing.unit_name = fmt::format("$INSUNITS {}", collector.insunits);
-  const double mm =
-      reading.unit_mm > 0 ? reading.unit_mm : (drawing.unit_mm > 0 ? drawing.unit_mm : 1);
-  Placer placer(collector, file_name, reading.chord_tolerance_mm / mm, drawing);
-  placer.place("", Placement{}, "0", -1, 0);
-  for (const auto& [name, flags] : collector.layer_flags)
-    if ((flags & 1) || collector.layers_off.count(name)) drawing.hidden.push_back(name);
-  if (collector.flattened)
-    drawing.notes.push_back(
-        fmt::format("{} ellipses and splines flattened to chords within "
-                    "{:g} mm",
-                    collector.flattened, reading.chord_tolerance_mm));
+  else if (reader.insunits != 0)
+    drawing.unit_name = fmt::format("$INSUNITS {}", reader.insunits);
+  Placer placer(reader, file_name, reader.tolerance(), drawing);
+  placer.place("", Placement{}, "0", -1, "", 0);
+  for (const auto& [name, flags] : reader.layer_flags)
+    if ((flags & 1) || reader.layers_off.count(name)) drawing.hidden.push_back(name);
+  if (reader.flattened)
+    drawing.notes.push_back(fmt::format(
+        "{} ellipses, splines and curved hatch edges flattened to chords within {:g} mm{}",
+        reader.flattened, reading.chord_tolerance_mm,
+        reader.fitted ? fmt::format(" ({} splines given by fit points, drawn through them as "
+                                    "CAD draws them)",
+                                    reader.fitted)
+                      : ""));
+  if (reader.wide)
+    drawing.notes.push_back(fmt::format(
+        "{} open polylines drawn with width read as the strips they cover where they are not "
+        "part of an outline",
+        reader.wide));
+  if (reader.wide_closed)
+    drawing.notes.push_back(fmt::format(
+        "{} closed polylines drawn with width read by their centre lines", reader.wide_closed));
+  if (reader.hatches)
+    drawing.notes.push_back(fmt::format("{} hatches read by their boundary paths", reader.hatches));
+  drawing.notes.insert(drawing.notes.end(), reader.notes.begin(), reader.notes.end());
   if (!placer.missing().empty()) {
     std::string names;
     for (const auto& n : placer.missing()) names += (names.empty() ? "" : ", ") + n;

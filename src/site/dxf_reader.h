@@ -1,7 +1,9 @@
-// Reads an ASCII DXF (AutoCAD R12 to 2018) into a Drawing through dxflib: LWPOLYLINE and
-// POLYLINE (bulges as arcs), LINE, ARC, CIRCLE, ELLIPSE and SPLINE (flattened), and INSERTs of
-// blocks (placed with their base point, scale, rotation and arrays, nested). Mirrored entities
-// (extrusion 0, 0, -1) are turned back into the plan; anything off the plan's plane is refused.
+// Reads an ASCII DXF (AutoCAD R12 to 2018) into a Drawing: LWPOLYLINE and POLYLINE (bulges as
+// arcs; drawn with width, also the strip they cover), LINE, ARC, CIRCLE, ELLIPSE and SPLINE
+// (flattened; a spline given by fit points drawn through them as CAD draws it), HATCH boundary
+// paths, and INSERTs of blocks (placed with their base point, scale, rotation and arrays,
+// nested). Mirrored entities (extrusion 0, 0, -1) are turned back into the plan; anything off
+// the plan's plane is refused.
 #pragma once
 
 #include <string>

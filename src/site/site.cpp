@@ -56,6 +56,7 @@ struct Closed {
   std::string handles;  // "3A, 3B"
   std::string entity;   // of its first shape
   int insert = -1;
+  std::vector<const Shape*> shapes;  // what it was made of
 };
 
 Contour reversed(const Contour& path) {
@@ -66,11 +67,27 @@ Contour reversed(const Contour& path) {
   return r;
 }
 
+// "LINE 9D in block \"PIT\" (INSERT 2F)": where a designer finds it in CAD.
 std::string handle_of(const Shape& s) {
-  return s.handle.empty() ? s.entity : s.entity + " " + s.handle;
+  std::string name = s.handle.empty() ? s.entity : s.entity + " " + s.handle;
+  if (!s.block.empty()) name += fmt::format(" in block \"{}\"", s.block);
+  if (!s.insert_handle.empty()) name += fmt::format(" (INSERT {})", s.insert_handle);
+  return name;
 }
 
-std::string at(const ContourVertex& v) { return fmt::format("({:g}, {:g})", v.x, v.y); }
+// A number at the drawing's precision, without trailing zeros: 530012.3456 m stays so.
+std::string number(double v, int precision) {
+  std::string t = fmt::format("{:.{}f}", v, std::clamp(precision, 0, 8));
+  if (t.find('.') != std::string::npos) {
+    while (t.back() == '0') t.pop_back();
+    if (t.back() == '.') t.pop_back();
+  }
+  return t == "-0" ? "0" : t;
+}
+
+std::string at(const ContourVertex& v, int precision) {
+  return fmt::format("({}, {})", number(v.x, precision), number(v.y, precision));
+}
 
 // Joins open pieces end to end (within `tolerance`, drawing units) into closed contours; a chain
 // that does not close is returned in `open`, its ends the gap's.
@@ -113,8 +130,11 @@ void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& clos
   for (size_t first = 0; first < pieces.size(); ++first) {
     if (used[first]) continue;
     used[first] = true;
-    Closed c{pieces[first].path, handle_of(*pieces[first].shape), pieces[first].shape->entity,
-             pieces[first].shape->insert};
+    Closed c{pieces[first].path,
+             handle_of(*pieces[first].shape),
+             pieces[first].shape->entity,
+             pieces[first].shape->insert,
+             {pieces[first].shape}};
     const size_t most_pieces = 100000;
     for (size_t k = 0; k < most_pieces; ++k) {
       const ContourVertex start = c.path.front(), end = c.path.back();
@@ -127,6 +147,7 @@ void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& clos
       c.path.back().bulge = add.front().bulge;  // the shared vertex carries the next edge
       c.path.insert(c.path.end(), add.begin() + 1, add.end());
       c.handles += ", " + handle_of(*p.shape);
+      c.shapes.push_back(p.shape);
     }
     const ContourVertex start = c.path.front(), end = c.path.back();
     const bool closes =
@@ -140,15 +161,43 @@ void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& clos
   }
 }
 
-// A layer's closed contours; open pieces are joined, and pieces left open are an error unless
-// `inside_ok` and they lie inside one of the layer's closed contours (a window's glazing bars).
+// Whether every vertex of `inner` lies inside `outer` or on its edges.
+bool lies_within(const Polygon& inner, const Polygon& outer, double tolerance) {
+  return std::all_of(inner.begin(), inner.end(), [&](const auto& v) {
+    return contains(outer, v[0], v[1]) || distance_to_edges(outer, v[0], v[1]) <= tolerance;
+  });
+}
+
+Rect bounds_of(const Polygon& p) {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const auto& v : p)
+    x0 = std::min(x0, v[0]), y0 = std::min(y0, v[1]), x1 = std::max(x1, v[0]),
+    y1 = std::max(y1, v[1]);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+// What a layer holds that is not one of its shapes, counted for the notes.
+struct PassedOver {
+  size_t inside = 0;   // closed shapes inside another: a trunk in its pit, a sash in its frame
+  size_t pieces = 0;   // lines inside a closed shape: a grille, glazing bars
+  size_t repeats = 0;  // a shape drawn twice: a hatch over its boundary
+};
+
+// A layer's closed contours, as a designer means them: closed shapes, and open pieces joined
+// end to end. A piece left open is the strip it covers where it was drawn with width; else it
+// is passed over where it lies inside one of the layer's closed contours, and refused where it
+// does not. A closed contour inside another of the layer's, or the same again, is passed over:
+// the layer's shapes are the outer ones.
 std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, double tolerance,
                               const std::string& file, const std::string& role, double unit_mm,
-                              bool inside_ok, size_t& passed_over) {
+                              PassedOver& passed) {
   std::vector<Closed> closed;
   std::vector<Piece> pieces;
   for (const Shape& s : drawing.shapes) {
     if (s.layer != layer) continue;
+    if (!s.fault.empty())
+      throw SiteError(fmt::format("{}: layer \"{}\" ({}): {}{}", file, layer, role, s.fault,
+                                  s.block.empty() ? "" : " (in block \"" + s.block + "\")"));
     for (const ContourVertex& v : s.path)
       if (!(std::fabs(v.x) <= kFarthest && std::fabs(v.y) <= kFarthest &&
             std::fabs(v.bulge) <= kSteepest))
@@ -158,34 +207,109 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
                         "the drawing is damaged: export it again",
                         file, handle_of(s), layer, v.x, v.y, kFarthest));
     if (s.closed)
-      closed.push_back({s.path, handle_of(s), s.entity, s.insert});
+      closed.push_back({s.path, handle_of(s), s.entity, s.insert, {&s}});
     else
       pieces.push_back({&s, s.path});
   }
   std::vector<Closed> open;
   join(std::move(pieces), tolerance, closed, open);
-  for (const Closed& o : open) {
-    if (inside_ok) {
-      const bool within = std::any_of(closed.begin(), closed.end(), [&](const Closed& c) {
-        const Polygon p = flatten(c.path, tolerance);
-        return std::all_of(o.path.begin(), o.path.end(), [&](const ContourVertex& v) {
-          return contains(p, v.x, v.y) || distance_to_edges(p, v.x, v.y) <= tolerance;
-        });
-      });
-      if (within) {
-        ++passed_over;
-        continue;
+  std::vector<Closed> still_open;
+  for (Closed& o : open) {
+    const bool wide = std::all_of(o.shapes.begin(), o.shapes.end(),
+                                  [](const Shape* s) { return !s->strip.empty(); });
+    if (!wide) {
+      still_open.push_back(std::move(o));
+      continue;
+    }
+    for (const Shape* s : o.shapes)
+      closed.push_back({s->strip, handle_of(*s) + " (its width)", s->entity, s->insert, {s}});
+  }
+
+  // The outer shapes: each tested against the larger ones whose box holds it.
+  std::vector<Polygon> flat;
+  std::vector<double> area;
+  std::vector<Rect> box;
+  for (const Closed& c : closed) {
+    flat.push_back(flatten(c.path, tolerance));
+    area.push_back(polygon_area(flat.back()));
+    box.push_back(bounds_of(flat.back()));
+  }
+  std::vector<size_t> order(closed.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  // Largest first; of equal shapes the one drawn as an outline before its hatch.
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    if (std::fabs(area[a] - area[b]) > 1e-9 * std::max(area[a], area[b])) return area[a] > area[b];
+    return (closed[a].entity != "HATCH") > (closed[b].entity != "HATCH");
+  });
+  auto holds = [&](size_t outer, size_t inner) {
+    const Rect& o = box[outer];
+    const Rect& i = box[inner];
+    return i.x >= o.x - tolerance && i.y >= o.y - tolerance && i.right() <= o.right() + tolerance &&
+           i.top() <= o.top() + tolerance && lies_within(flat[inner], flat[outer], tolerance);
+  };
+  std::vector<size_t> outer;
+  for (size_t i : order) {
+    bool nested = false, repeat = false;
+    for (size_t o : outer)
+      if (holds(o, i)) {
+        nested = true;
+        repeat = std::fabs(area[o] - area[i]) <= 1e-6 * area[o] && holds(i, o);
+        break;
       }
+    if (!nested) {
+      outer.push_back(i);
+    } else if (repeat) {
+      ++passed.repeats;
+    } else {
+      ++passed.inside;
+    }
+  }
+  std::sort(outer.begin(), outer.end());  // in the drawing's order
+  std::vector<Closed> kept;
+  for (size_t i : outer) kept.push_back(std::move(closed[i]));
+
+  for (const Closed& o : still_open) {
+    Polygon chain;
+    for (const ContourVertex& v : o.path) chain.push_back({v.x, v.y});
+    const bool within = std::any_of(outer.begin(), outer.end(), [&](size_t i) {
+      return lies_within(chain, flat[i], tolerance);
+    });
+    if (within) {
+      passed.pieces += o.shapes.size();
+      continue;
     }
     throw SiteError(fmt::format(
         "{}: the {} on layer \"{}\" is not closed: {} ends at {} and {} ({} mm apart, more than "
         "the {:g} mm that are joined); close it (PEDIT Join, or draw it as one closed polyline)",
-        file, role, layer, o.handles, at(o.path.front()), at(o.path.back()),
+        file, role, layer, o.handles, at(o.path.front(), drawing.precision),
+        at(o.path.back(), drawing.precision),
         grouped(std::hypot(o.path.front().x - o.path.back().x, o.path.front().y - o.path.back().y) *
                 unit_mm),
         kJoinTolerance));
   }
-  return closed;
+  return kept;
+}
+
+// "3 shapes inside others on layer L-PLNT-PITS passed over (...)": what a layer held besides
+// its shapes.
+void note_passed_over(const PassedOver& p, const std::string& layer,
+                      std::vector<std::string>& notes) {
+  if (p.inside)
+    notes.push_back(
+        fmt::format("layer \"{}\": {} closed shapes inside others passed over (a "
+                    "trunk in its pit, a sash in its frame): the outer line is the "
+                    "shape",
+                    layer, p.inside));
+  if (p.pieces)
+    notes.push_back(
+        fmt::format("layer \"{}\": {} lines and arcs inside its shapes passed over "
+                    "(grilles, glazing bars)",
+                    layer, p.pieces));
+  if (p.repeats)
+    notes.push_back(
+        fmt::format("layer \"{}\": {} shapes drawn again over another (a hatch "
+                    "over its boundary) read once",
+                    layer, p.repeats));
 }
 
 Contour counter_clockwise(Contour c) {
@@ -314,44 +438,83 @@ void read_holes(const Drawing& drawing, const LayerMap& map, const Polygon& outl
       throw SiteError(
           fmt::format("{}: the {} {} on layer \"{}\" lies outside the outline (at "
                       "{} in the drawing); move it onto the surface, or off the layer",
-                      map.file, role, c.handles, layer, at(c.path.front())));
+                      map.file, role, c.handles, layer, at(c.path.front(), drawing.precision)));
     return mm;
   };
-  size_t passed = 0;
   for (const std::string& layer : map.openings) {
-    std::vector<Closed> found =
-        closed_on(drawing, layer, join_tolerance, map.file, "opening", unit_mm, true, passed);
+    PassedOver passed;
     // A window block's frame and sashes lie inside its outer line: the opening is the outer one.
-    std::vector<Polygon> flat;
-    for (const Closed& c : found) flat.push_back(flatten(c.path, join_tolerance));
-    for (size_t i = 0; i < found.size(); ++i) {
-      const bool inner = std::any_of(flat.begin(), flat.end(), [&](const Polygon& outer) {
-        return &outer != &flat[i] && polygon_area(outer) > polygon_area(flat[i]) &&
-               std::all_of(flat[i].begin(), flat[i].end(), [&](const auto& v) {
-                 return contains(outer, v[0], v[1]) ||
-                        distance_to_edges(outer, v[0], v[1]) <= join_tolerance;
-               });
-      });
-      if (inner) {
-        ++passed;
-        continue;
-      }
-      site.openings.push_back(place(found[i], layer, "opening"));
-    }
+    for (const Closed& c :
+         closed_on(drawing, layer, join_tolerance, map.file, "opening", unit_mm, passed))
+      site.openings.push_back(place(c, layer, "opening"));
+    note_passed_over(passed, layer, site.notes);
   }
-  if (passed)
-    site.notes.push_back(
-        fmt::format("{} shapes inside openings passed over (frames, sashes, "
-                    "glazing bars): the opening is the outer line",
-                    passed));
   for (const ZoneLayer& z : map.zones) {
-    size_t ignored = 0;
+    PassedOver passed;
     const std::vector<Closed> found =
-        closed_on(drawing, z.layer, join_tolerance, map.file, "zone", unit_mm, false, ignored);
+        closed_on(drawing, z.layer, join_tolerance, map.file, "zone", unit_mm, passed);
+    note_passed_over(passed, z.layer, site.notes);
     for (size_t i = 0; i < found.size(); ++i)
       site.zones.push_back({found.size() > 1 ? fmt::format("{} {}", z.layer, i + 1) : z.layer,
                             z.rule, z.value, place(found[i], z.layer, "zone")});
   }
+}
+
+// The outline among the layer's shapes: the one there is, or the one the recipe picks by a
+// point inside it (the smallest shape around it, as CAD's BOUNDARY picks), by an entity's
+// handle, or the largest.
+Closed picked_outline(const std::vector<Closed>& outlines, const LayerMap& map,
+                      const Drawing& drawing, double tolerance) {
+  auto list = [&]() {
+    std::string text;
+    for (size_t i = 0; i < outlines.size() && i < 12; ++i) {
+      const Rect b = contour_bounds(outlines[i].path);
+      text += fmt::format("{}{} ({} x {} at {})", i ? "; " : "", outlines[i].handles,
+                          number(b.w, drawing.precision), number(b.h, drawing.precision),
+                          at({b.x, b.y, 0}, drawing.precision));
+    }
+    return outlines.size() > 12 ? text + "; ..." : text;
+  };
+  if (map.pick.around) {
+    const auto [px, py] = *map.pick.around;
+    std::optional<size_t> best;
+    double smallest = 0;
+    for (size_t i = 0; i < outlines.size(); ++i) {
+      const Polygon p = flatten(outlines[i].path, tolerance);
+      const double a = polygon_area(p);
+      if (contains(p, px, py) && (!best || a < smallest)) best = i, smallest = a;
+    }
+    if (!best)
+      throw SiteError(fmt::format(
+          "{}: no closed shape on layer \"{}\" lies around the point ({}, {}) that outline's "
+          "around gives; the layer's shapes are {}",
+          map.file, map.outline, number(px, drawing.precision), number(py, drawing.precision),
+          outlines.empty() ? std::string("none") : list()));
+    return outlines[*best];
+  }
+  if (!map.pick.handle.empty()) {
+    for (const Closed& c : outlines)
+      for (const Shape* s : c.shapes)
+        if (s->handle == map.pick.handle || s->insert_handle == map.pick.handle) return c;
+    throw SiteError(fmt::format(
+        "{}: no closed shape on layer \"{}\" is drawn by the entity "
+        "with handle {}; the layer's shapes are {}",
+        map.file, map.outline, map.pick.handle, outlines.empty() ? std::string("none") : list()));
+  }
+  if (map.pick.largest && !outlines.empty()) {
+    size_t best = 0;
+    for (size_t i = 1; i < outlines.size(); ++i)
+      if (contour_area(outlines[i].path) > contour_area(outlines[best].path)) best = i;
+    return outlines[best];
+  }
+  if (outlines.size() != 1)
+    throw SiteError(fmt::format(
+        "{}: layer \"{}\" holds {} closed shapes side by side ({}); say which is the outline: "
+        "outline = {{ layer = \"{}\", around = [x, y] }} with a point inside it in the "
+        "drawing's coordinates, or handle = \"...\", or pick = \"largest\"",
+        map.file, map.outline, outlines.size(), outlines.empty() ? std::string("none") : list(),
+        map.outline));
+  return outlines.front();
 }
 
 std::string summary_of(const Site& site, const Rect& bounds, const LayerMap& map,
@@ -391,18 +554,11 @@ Site site_from(const Drawing& drawing, const LayerMap& map) {
   const double mm = units_of(drawing, map, unit_name, site.notes);
   const double join_tolerance = kJoinTolerance / mm;
 
-  size_t unused = 0;
-  std::vector<Closed> outlines =
-      closed_on(drawing, map.outline, join_tolerance, map.file, "outline", mm, false, unused);
-  if (outlines.size() != 1) {
-    std::string handles;
-    for (const Closed& c : outlines) handles += (handles.empty() ? "" : "; ") + c.handles;
-    throw SiteError(
-        fmt::format("{}: layer \"{}\" holds {} closed outlines ({}); the surface's "
-                    "outline is one closed shape: move the others to another layer",
-                    map.file, map.outline, outlines.size(), handles));
-  }
-  const Closed& outline = outlines.front();
+  PassedOver passed;
+  const std::vector<Closed> outlines =
+      closed_on(drawing, map.outline, join_tolerance, map.file, "outline", mm, passed);
+  note_passed_over(passed, map.outline, site.notes);
+  const Closed outline = picked_outline(outlines, map, drawing, join_tolerance);
   const Rect bounds = contour_bounds(outline.path);
   const std::array<double, 2> datum = datum_of(map, bounds, mm, join_tolerance);
   site.datum = {snapped(datum[0] * mm), snapped(datum[1] * mm)};

@@ -21,10 +21,18 @@ struct ZoneLayer {
   uint32_t value = 0;
 };
 
+// Which of a layer's closed shapes is the outline, where it holds more than one.
+struct OutlinePick {
+  std::optional<std::array<double, 2>> around;  // the smallest shape around this point
+  std::string handle;                           // the shape its entity (or INSERT) draws
+  bool largest = false;
+};
+
 // [layout.site]: which layers hold what, and how the drawing's units and origin are taken.
 struct LayerMap {
   std::string file;  // as the recipe names it, for messages
   std::string outline;
+  OutlinePick pick;
   std::vector<std::string> openings;
   std::vector<ZoneLayer> zones;
   double unit_mm = 0;     // the recipe's units; 0: as the drawing says

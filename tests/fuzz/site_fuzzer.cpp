@@ -1,9 +1,9 @@
-// Fuzz target: a site drawing (site/dxf_reader.cpp through dxflib, site/svg_reader.cpp through
-// libxml2 and SVG++, a massing model through site/gltf_reader.cpp and tinygltf, site/site.cpp)
-// read and
-// turned into an outline, openings and zones, as [layout.site] does with the layers A (the
-// outline), B (openings) and C (an excluded zone), then laid as a paving floor. Any input may
-// be refused with a SiteError or an InputError; none may crash, hang or allocate without bound.
+// Fuzz target: a site drawing (site/dxf_reader.cpp through site/dxf_groups.cpp, site/svg_reader.cpp
+// through libxml2 and SVG++, a massing model through site/gltf_reader.cpp and tinygltf,
+// site/site.cpp) read and turned into an outline, openings and zones, as [layout.site] does with
+// the layers A (the outline), B (openings) and C (an excluded zone), then laid as a paving floor.
+// Any input may be refused with a SiteError or an InputError; none may crash, hang or allocate
+// without bound.
 #include <cstddef>
 #include <cstdint>
 #include <string>
