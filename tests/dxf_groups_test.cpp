@@ -57,7 +57,8 @@ TEST(DxfGroupsTest, DamagedLinesAreNamed) {
   DxfGroups cut("0\nSECTION\n2", "a.dxf");
   cut.next(g);
   EXPECT_NE(refusal([&] { cut.next(g); }).find("without its value"), std::string::npos);
-  DxfGroups long_line("999\n" + std::string(kLongestDxfLine + 1, 'x') + "\n", "a.dxf");
+  const std::string long_text = "999\n" + std::string(kLongestDxfLine + 1, 'x') + "\n";
+  DxfGroups long_line(long_text, "a.dxf");  // holds a view of the bytes: they outlive it
   EXPECT_NE(refusal([&] { long_line.next(g); }).find("line 2 is 65537 characters long"),
             std::string::npos);
 }

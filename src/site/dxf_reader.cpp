@@ -107,7 +107,7 @@ class Reader {
   int insunits = 0;
   int precision = 4;
   size_t passed_over = 0;  // texts, dimensions, points: not a site's shapes
-  size_t flattened = 0, fitted = 0, wide = 0, wide_closed = 0, hatches = 0;
+  size_t flattened = 0, fitted = 0, wide = 0, wide_closed = 0, hatches = 0, off_plane_ = 0;
   std::vector<std::string> notes;
 
   void read() {
@@ -255,12 +255,18 @@ class Reader {
   static bool in_plan(const Common& c) {
     return std::fabs(c.nx) < 1e-9 && std::fabs(c.ny) < 1e-9 && c.nz != 0;
   }
-  [[noreturn]] void off_plane(const Common& c) const {
-    throw SiteError(
-        fmt::format("{}: the {} on layer \"{}\"{} does not lie in the plan's plane (its points "
-                    "stand at different heights, or it is drawn in a tilted coordinate "
-                    "system); flatten the drawing (e.g. FLATTEN in AutoCAD) and save it again",
-                    file_, with_handle(c), c.layer, in_block()));
+  // A shape off the plan's plane is a fault of its layer: refused where the recipe names the
+  // layer, passed over elsewhere (a 3-D detail on a layer of its own).
+  void off_plane(const Common& c) {
+    Shape s = shape(c, c.name.substr(0, c.name.find(' ')));
+    s.fault = fmt::format(
+        "the {} on layer \"{}\"{} does not lie in the plan's plane (its points stand at "
+        "different heights, or it is drawn in a tilted coordinate system); flatten the drawing "
+        "(e.g. FLATTEN in AutoCAD) and save it again",
+        with_handle(c), c.layer, in_block());
+    s.path = {{0, 0, 0}, {0, 0, 0}};
+    ++off_plane_;
+    keep(std::move(s));
   }
   static std::string with_handle(const Common& c) {
     return c.handle.empty()
@@ -313,7 +319,7 @@ class Reader {
   void line(const Record& r) {
     const Common c = common(r);
     const double z1 = real(r, 30, 0, c.name), z2 = real(r, 31, 0, c.name);
-    if (std::fabs(z1 - z2) > kPlaneTolerance) off_plane(c);
+    if (std::fabs(z1 - z2) > kPlaneTolerance) return off_plane(c);
     Shape s = shape(c, "LINE");
     s.path = {{real(r, 10, 0, c.name), real(r, 20, 0, c.name), 0},
               {real(r, 11, 0, c.name), real(r, 21, 0, c.name), 0}};
@@ -322,7 +328,7 @@ class Reader {
 
   void arc(const Record& r) {
     const Common c = common(r);
-    if (!in_plan(c)) off_plane(c);
+    if (!in_plan(c)) return off_plane(c);
     const double cx = real(r, 10, 0, c.name), cy = real(r, 20, 0, c.name);
     const double radius = real(r, 40, 0, c.name);
     if (!(radius > 0)) {
@@ -355,14 +361,14 @@ class Reader {
 
   void ellipse(const Record& r) {
     const Common c = common(r);
-    if (!in_plan(c)) off_plane(c);
+    if (!in_plan(c)) return off_plane(c);
     const double cx = real(r, 10, 0, c.name), cy = real(r, 20, 0, c.name);
     const double mx = real(r, 11, 0, c.name), my = real(r, 21, 0, c.name);
-    if (std::fabs(real(r, 31, 0, c.name)) > kPlaneTolerance) off_plane(c);
+    if (std::fabs(real(r, 31, 0, c.name)) > kPlaneTolerance) return off_plane(c);
     const double ratio = real(r, 40, 1, c.name);
     double from = real(r, 41, 0, c.name), to = real(r, 42, 2 * kPi, c.name);
     Shape s = shape(c, "ELLIPSE");
-    if (!(ratio > 0 && ratio <= 1 + 1e-9) || !(std::hypot(mx, my) > 0)) {
+    if (!(ratio > 0) || !(std::hypot(mx, my) > 0)) {
       s.fault = fmt::format(
           "the {} has an axis ratio of {:g} and a major axis {:g} long: it "
           "encloses nothing",
@@ -393,7 +399,7 @@ class Reader {
   // An LWPOLYLINE's vertices: each 10 begins one; 20, 40, 41 and 42 belong to the last.
   void lwpolyline(const Record& r) {
     const Common c = common(r);
-    if (!in_plan(c)) off_plane(c);
+    if (!in_plan(c)) return off_plane(c);
     const int64_t flags = integer(r, 70, 0, c.name);
     const double constant = real(r, 43, 0, c.name);
     std::vector<WideVertex> v;
@@ -424,7 +430,7 @@ class Reader {
       return;
     }
     const bool three_d = flags & 8;
-    if (!three_d && !in_plan(c)) off_plane(c);
+    if (!three_d && !in_plan(c)) return off_plane(c);
     polyline_ = Polyline{
         shape(c, three_d ? "POLYLINE" : "POLYLINE"), {}, (flags & 1) != 0, !three_d && c.nz < 0};
     polyline_->three_d = three_d;
@@ -441,7 +447,11 @@ class Reader {
     const double z = real(r, 30, 0, what);
     if (polyline_->three_d) {
       if (!polyline_->z) polyline_->z = z;
-      if (std::fabs(z - *polyline_->z) > kPlaneTolerance) off_plane(polyline_->common);
+      if (std::fabs(z - *polyline_->z) > kPlaneTolerance) {
+        const Common c = polyline_->common;
+        polyline_.reset();
+        return off_plane(c);
+      }
     }
     if (polyline_->vertices.size() >= kMostVertices) return;
     polyline_->vertices.push_back(
@@ -502,8 +512,8 @@ class Reader {
       if (g.code == 30 || g.code == 31) heights.push_back(groups_.real(g, c.name));
     }
     for (double z : heights)
-      if (std::fabs(z - heights.front()) > kPlaneTolerance) off_plane(c);
-    if (std::fabs(c.nx) > 1e-9 || std::fabs(c.ny) > 1e-9) off_plane(c);
+      if (std::fabs(z - heights.front()) > kPlaneTolerance) return off_plane(c);
+    if (std::fabs(c.nx) > 1e-9 || std::fabs(c.ny) > 1e-9) return off_plane(c);
     Shape s = shape(c, "SPLINE");
     const bool closed = flags & (1 | 2);
     std::vector<Point> points;
@@ -516,10 +526,10 @@ class Reader {
     if (points.empty() && fit.size() >= 2) {
       if (closed && fit.front() != fit.back()) {
         s.fault = fmt::format(
-            "the {} is a closed spline given only by fit points, which curdle does not draw "
-            "as CAD does; convert it to control vertices (SPLINEDIT, or save as DXF 2000 "
-            "or later) or draw the edge as a polyline",
-            c.name);
+            "the {} on layer \"{}\"{} is a closed spline given only by fit points, which "
+            "curdle does not draw as CAD does; convert it to control vertices (SPLINEDIT, or "
+            "save as DXF 2000 or later) or draw the edge as a polyline",
+            c.name, c.layer, in_block());
       } else if (const auto cubic = spline_through(fit, start, end)) {
         points = flatten_spline(3, cubic->knots, cubic->control, {}, tolerance());
         ++fitted;
@@ -527,9 +537,9 @@ class Reader {
     }
     if (points.empty() && s.fault.empty())
       s.fault = fmt::format(
-          "the {} cannot be drawn: its {} knots, {} control points (degree {}) and {} fit "
-          "points do not make a curve; redraw it or convert it to a polyline",
-          c.name, knots.size(), control.size(), degree, fit.size());
+          "the {} on layer \"{}\"{} cannot be drawn: its {} knots, {} control points (degree "
+          "{}) and {} fit points do not make a curve; redraw it or convert it to a polyline",
+          c.name, c.layer, in_block(), knots.size(), control.size(), degree, fit.size());
     if (!s.fault.empty()) {
       s.path = {{0, 0, 0}, {0, 0, 0}};
       if (!control.empty())
@@ -548,7 +558,7 @@ class Reader {
 
   void insert(const Record& r) {
     const Common c = common(r);
-    if (!in_plan(c)) off_plane(c);
+    if (!in_plan(c)) return off_plane(c);
     Insert i;
     i.block = std::string(value_of(r, 2).value_or(""));
     i.layer = c.layer;
@@ -573,7 +583,7 @@ class Reader {
   // HATCH: its boundary paths are closed shapes on its layer.
   void hatch(const Record& r) {
     const Common c = common(r);
-    if (!in_plan(c)) off_plane(c);
+    if (!in_plan(c)) return off_plane(c);
     const auto& g = r.groups;
     size_t i = 0;
     while (i < g.size() && g[i].code != 91) ++i;

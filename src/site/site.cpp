@@ -196,8 +196,9 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
   for (const Shape& s : drawing.shapes) {
     if (s.layer != layer) continue;
     if (!s.fault.empty())
-      throw SiteError(fmt::format("{}: layer \"{}\" ({}): {}{}", file, layer, role, s.fault,
-                                  s.block.empty() ? "" : " (in block \"" + s.block + "\")"));
+      throw SiteError(fmt::format(
+          "{}: {}{} (the layer holds the {})", file, s.fault,
+          s.insert_handle.empty() ? "" : ", placed by INSERT " + s.insert_handle, role));
     for (const ContourVertex& v : s.path)
       if (!(std::fabs(v.x) <= kFarthest && std::fabs(v.y) <= kFarthest &&
             std::fabs(v.bulge) <= kSteepest))
