@@ -65,7 +65,9 @@ std::string dxf_layer_name(const std::string& name) {
 std::string dxf_text(const std::string& text) { return dxf_encoded(text, "", ' '); }
 
 DxfDocument::DxfDocument(const std::filesystem::path& path, const std::vector<DxfLayer>& layers,
-                         const Rect& extents) {
+                         const Rect& mm_extents, const std::optional<SiteFrame>& frame)
+    : frame_(frame) {
+  const Rect extents{x(mm_extents.x), y(mm_extents.y), length(mm_extents.w), length(mm_extents.h)};
   // Entities as dxflib writes them for AutoCAD 2000 (their form is the same in 2007), under a
   // 2007 header ($ACADVER AC1021): readers then take every string as UTF-8.
   path_ = path;
@@ -81,9 +83,9 @@ DxfDocument::DxfDocument(const std::filesystem::path& path, const std::vector<Dx
   dw.dxfString(3, "ANSI_1252");
   // Millimetres, metric, and where the drawing lies, so that it opens at true size and in view.
   dw.dxfString(9, "$INSUNITS");
-  dw.dxfInt(70, 4);
+  dw.dxfInt(70, frame_ ? frame_->insunits : 4);
   dw.dxfString(9, "$MEASUREMENT");
-  dw.dxfInt(70, 1);
+  dw.dxfInt(70, frame_ && (frame_->insunits == 1 || frame_->insunits == 2) ? 0 : 1);
   dw.dxfString(9, "$LUNITS");
   dw.dxfInt(70, 2);
   dw.dxfString(9, "$EXTMIN");
@@ -175,7 +177,7 @@ DxfDocument::~DxfDocument() = default;
 void DxfDocument::polygon(const std::string& layer, const Ring& ring) {
   dxf_.writePolyline(*dw_, DL_PolylineData(static_cast<int>(ring.size()), 0, 0, 1),
                      on_layer(layer));
-  for (const auto& v : ring) dxf_.writeVertex(*dw_, DL_VertexData(v[0], v[1], 0, 0));
+  for (const auto& v : ring) dxf_.writeVertex(*dw_, DL_VertexData(x(v[0]), y(v[1]), 0, 0));
   dxf_.writePolylineEnd(*dw_);
 }
 
@@ -186,22 +188,23 @@ void DxfDocument::contour(const std::string& layer, const Contour& c) {
     return;
   }
   dxf_.writePolyline(*dw_, DL_PolylineData(static_cast<int>(c.size()), 0, 0, 1), on_layer(layer));
-  for (const ContourVertex& v : c) dxf_.writeVertex(*dw_, DL_VertexData(v.x, v.y, 0, v.bulge));
+  for (const ContourVertex& v : c)
+    dxf_.writeVertex(*dw_, DL_VertexData(x(v.x), y(v.y), 0, v.bulge));
   dxf_.writePolylineEnd(*dw_);
 }
 
 void DxfDocument::rect(const std::string& layer, const Rect& r) { polygon(layer, rect_polygon(r)); }
 
 void DxfDocument::circle(const std::string& layer, double cx, double cy, double d) {
-  dxf_.writeCircle(*dw_, DL_CircleData(cx, cy, 0, d / 2), on_layer(layer));
+  dxf_.writeCircle(*dw_, DL_CircleData(x(cx), y(cy), 0, length(d) / 2), on_layer(layer));
 }
 
-void DxfDocument::text(const std::string& layer, double x, double y, double height,
+void DxfDocument::text(const std::string& layer, double at_x, double at_y, double height,
                        const std::string& text, bool centred) {
   // Centred text: horizontal 1 (centre), vertical 2 (middle) at the second alignment point.
   dxf_.writeText(*dw_,
-                 DL_TextData(x, y, 0, x, y, 0, height, 1, 0, centred ? 1 : 0, centred ? 2 : 0,
-                             dxf_text(text), "Standard", 0),
+                 DL_TextData(x(at_x), y(at_y), 0, x(at_x), y(at_y), 0, length(height), 1, 0,
+                             centred ? 1 : 0, centred ? 2 : 0, dxf_text(text), "Standard", 0),
                  on_layer(layer));
 }
 

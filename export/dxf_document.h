@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,11 @@ std::string hole_layer(double diameter);
 class DxfDocument {
  public:
   // Opens `path` and writes the header and tables; throws InputError when it cannot be written.
+  // Coordinates are given in mm from the layout's datum; with a `frame` they are written in the
+  // site drawing's own units and coordinates ($INSUNITS its units), so that the file overlays
+  // that drawing at (0, 0, 0) with scale 1.
   DxfDocument(const std::filesystem::path& path, const std::vector<DxfLayer>& layers,
-              const Rect& extents);
+              const Rect& extents, const std::optional<SiteFrame>& frame = std::nullopt);
   ~DxfDocument();
 
   void polygon(const std::string& layer, const Ring& ring);  // a closed polyline
@@ -50,6 +54,12 @@ class DxfDocument {
   void close();  // ends the entities and the file
 
  private:
+  // From the layout's mm to the file's coordinates and lengths.
+  double x(double mm) const { return frame_ ? frame_->datum[0] + mm / frame_->unit_mm : mm; }
+  double y(double mm) const { return frame_ ? frame_->datum[1] + mm / frame_->unit_mm : mm; }
+  double length(double mm) const { return frame_ ? mm / frame_->unit_mm : mm; }
+
+  std::optional<SiteFrame> frame_;
   DL_Dxf dxf_;
   std::unique_ptr<BufferedDxfWriter> dw_;
   std::filesystem::path path_;

@@ -50,7 +50,10 @@ Rect drawn_extents(const Layout& layout, double caption_height, size_t caption_l
 
 }  // namespace
 
-void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
+void write_layout_dxf(const std::filesystem::path& path, const Layout& layout,
+                      bool in_site_drawing) {
+  const std::optional<SiteFrame> frame =
+      in_site_drawing ? layout.site_frame : std::optional<SiteFrame>{};
   // Layers named for what they hold: a façade's windows are OPENINGS, a planter kept free of
   // paving is one of the ZONES.
   std::vector<DxfLayer> layers{{"OUTLINE", kInk, true}};
@@ -69,9 +72,12 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout) {
   layers.push_back({"TEXT", kInk, true});
   const Rect surface{0, 0, layout.width, layout.height};
   const double h = std::max(10.0, std::min(layout.width, layout.height) / 100);
-  const std::string caption = fmt::format("{} - seed {} - millimetres from the bottom-left corner",
-                                          layout.source.recipe, layout.source.seed);
-  DxfDocument dxf(path, layers, drawn_extents(layout, h, caption.size()));
+  const std::string caption =
+      frame ? fmt::format("{} - seed {} - in the coordinates of {}, {}", layout.source.recipe,
+                          layout.source.seed, frame->file, frame->unit_name)
+            : fmt::format("{} - seed {} - millimetres from the bottom-left corner",
+                          layout.source.recipe, layout.source.seed);
+  DxfDocument dxf(path, layers, drawn_extents(layout, h, caption.size()), frame);
 
   if (!layout.outline_contour.empty())
     dxf.contour("OUTLINE", layout.outline_contour);  // its arcs as bulges

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iterator>
 
 #include "curdle/markov.h"
@@ -24,6 +26,19 @@ std::string segment_text(const Layout& layout) {
   return fmt::format("window {},{} of the {} field", at, size, whole);
 }
 
+// "datum (0, 0) = E 530,000.000 N 180,000.000 m in site.dxf": the drawing's coordinates at its
+// precision, thousands grouped.
+std::string datum_line(const SiteFrame& f) {
+  auto grouped = [&](double v) {
+    std::string t = fmt::format("{:.{}f}", std::fabs(v), std::clamp(f.precision, 0, 8));
+    const size_t dot = std::min(t.find('.'), t.size());
+    for (size_t i = dot; i > 3; i -= 3) t.insert(i - 3, ",");
+    return (v < 0 ? "-" : "") + t;
+  };
+  return fmt::format("datum (0, 0) = E {} N {} {} in {}", grouped(f.datum[0]), grouped(f.datum[1]),
+                     f.unit_name, f.file);
+}
+
 std::vector<std::string> title_lines(const Layout& layout) {
   std::string probabilities;
   for (const CurdSpec& c : layout.source.curds) {
@@ -42,16 +57,20 @@ std::vector<std::string> title_lines(const Layout& layout) {
     if (c.density) probabilities += " x " + describe(*c.density);
   }
   const std::string segment = segment_text(layout);
-  return {layout.source.recipe +
-              (layout.source.description.empty() ? "" : " - " + layout.source.description),
-          fmt::format("seed {}{} - base {}, {}-D, {} stages, {} mode", layout.source.seed,
-                      segment.empty() ? "" : ", " + segment, layout.source.lattice.base,
-                      layout.source.lattice.dimension, layout.source.lattice.stages,
-                      to_string(layout.source.lattice.mode)),
-          "probabilities: " + probabilities,
-          layout.kind->size_line(layout),
-          layout.kind->laying_line(layout),
-          "curdle - random curds (Mandelbrot; Cirovic 2014) - units mm"};
+  std::vector<std::string> lines = {
+      layout.source.recipe +
+          (layout.source.description.empty() ? "" : " - " + layout.source.description),
+      fmt::format("seed {}{} - base {}, {}-D, {} stages, {} mode", layout.source.seed,
+                  segment.empty() ? "" : ", " + segment, layout.source.lattice.base,
+                  layout.source.lattice.dimension, layout.source.lattice.stages,
+                  to_string(layout.source.lattice.mode)),
+      "probabilities: " + probabilities,
+      layout.kind->size_line(layout),
+      layout.kind->laying_line(layout),
+      "curdle - random curds (Mandelbrot; Cirovic 2014) - units mm"};
+  // The datum in the site drawing's own coordinates: what a surveyor sets out from.
+  if (layout.site_frame) lines.insert(lines.end() - 1, datum_line(*layout.site_frame));
+  return lines;
 }
 
 std::string legend_unit(const Layout& layout) {

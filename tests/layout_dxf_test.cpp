@@ -27,7 +27,7 @@ TEST(LayoutDxf, EveryPieceOnItsMaterialsLayerWithItsId) {
   spec.materials = {"Limestone", "Basalt"};
   const Layout layout = lay_floor(d, spec, 8);
   const auto dir = test::scratch("layout-dxf");
-  write_layout_dxf(dir / "layout.dxf", layout);
+  write_layout_dxf(dir / "layout.dxf", layout, false);
   std::ifstream in(dir / "layout.dxf");
   std::stringstream text;
   text << in.rdbuf();
@@ -56,7 +56,7 @@ TEST(LayoutDxf, TreePitsOnTheirOwnLayer) {
   for (const Element& e : layout.elements) trees += e.circle.has_value();
   ASSERT_GT(trees, 0u);
   const auto dir = test::scratch("layout-dxf-pits");
-  write_layout_dxf(dir / "layout.dxf", layout);
+  write_layout_dxf(dir / "layout.dxf", layout, false);
   std::ifstream in(dir / "layout.dxf");
   std::stringstream text;
   text << in.rdbuf();

@@ -15,6 +15,7 @@ drain is a strip 150 mm wide; the outline picked by a point on the layer that ho
 
     office_site.py CURDLE
 """
+import json
 import math
 import os
 import subprocess
@@ -187,11 +188,66 @@ def main():
         pts = [(x, y) for x, y in strips[0].get_points("xy")]
         area = 0.5 * abs(sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(pts, pts[1:] + pts[:1])))
         check(abs(area - 150 * (25000 + 9000)) < 1, f"the drain covers {area:.0f} mm², not 150 x 34,000")
+    back_onto_the_drawing(work, out)
+    georeferenced_from_the_drawing(work)
     if problems:
         print("\n".join(problems))
         return 1
     print("the office site lays as drawn: spline within %.4f mm of ezdxf's curve" % worst_back)
     return 0
+
+
+def back_onto_the_drawing(work, out):
+    """layout-site.dxf overlays site.dxf at (0, 0, 0), scale 1: in metres at the survey grid."""
+    with open(os.path.join(out, "layout-site.dxf"), "rb") as f:
+        header = f.read(4000).decode("utf-8", "replace")
+    check("$INSUNITS\n 70\n6" in header.replace("\r", "") or "$INSUNITS\n70\n6" in header.replace("\r", ""),
+          "layout-site.dxf is not in metres")
+    with open(os.path.join(out, "layout-site.dxf"), "rb") as f:
+        wanted = [e for e in iterdxf.single_pass_modelspace(f, types=["LWPOLYLINE", "CIRCLE"])
+                  if e.dxf.layer in ("OUTLINE", "ZONES")]
+    outline = [e for e in wanted if e.dxftype() == "LWPOLYLINE" and e.dxf.layer == "OUTLINE"]
+    check(len(outline) == 1, "layout-site.dxf has no outline")
+    if not outline:
+        return
+    ring = numpy.asarray([(x, y) for x, y in outline[0].get_points("xy")], dtype=float)
+    source = ezdxf.readfile(os.path.join(work, "site.dxf")).modelspace()
+    corners = [(E, N), (E + 40, N), (E + 40, N + 30), (E + 20, N + 30), (E, N + 30)]
+    worst = max(float(numpy.hypot(ring[:, 0] - x, ring[:, 1] - y).min()) for x, y in corners)
+    check(worst * 1000 <= 0.01, f"layout-site.dxf's outline lies {worst * 1000:.4f} mm off the drawing's corners")
+    pits = [(i.dxf.insert.x, i.dxf.insert.y) for i in source.query('INSERT[layer=="L-PLNT-PITS"]')
+            if i.dxf.name == "PIT"]
+    circles = [e for e in wanted if e.dxftype() == "CIRCLE" and e.dxf.layer == "ZONES"]
+    for x, y in pits:
+        near = min((math.hypot(c.dxf.center.x - x, c.dxf.center.y - y) for c in circles), default=1)
+        check(near * 1000 <= 0.01, f"the pit at ({x}, {y}) lies {near * 1000:.4f} mm off in layout-site.dxf")
+    report = json.load(open(os.path.join(out, "report.json")))
+    site = report["layout"].get("site_drawing", {})
+    check(site.get("datum") == [E - 3, N] and site.get("units") == "m",
+          f"report.json does not give the datum's survey coordinates: {site}")
+    text = subprocess.run(["pdftotext", "-f", "1", "-l", "1", os.path.join(out, "layout.pdf"), "-"],
+                          capture_output=True, text=True).stdout
+    check("datum (0, 0) = E 529,997.000 N 180,000.000 m in site.dxf" in " ".join(text.split()),
+          "sheet 1 does not state the datum's survey coordinates")
+
+
+def georeferenced_from_the_drawing(work):
+    """[layout.georef] from = "site": layout.gpkg at the drawing's grid coordinates."""
+    with open(os.path.join(work, "site.toml")) as f:
+        recipe = f.read()
+    with open(os.path.join(work, "georef.toml"), "w") as f:
+        f.write(recipe + '\n[layout.georef]\nepsg = 27700\nfrom = "site"\n')
+    out = os.path.join(work, "georef")
+    run = subprocess.run([CURDLE, "generate", os.path.join(work, "georef.toml"), "--out", out,
+                          "--outputs", "layout.gpkg"], capture_output=True, text=True)
+    check(run.returncode == 0, "the georeferenced run failed: " + run.stderr[:300])
+    if run.returncode != 0:
+        return
+    from osgeo import ogr
+    ds = ogr.Open(os.path.join(out, "layout.gpkg"))
+    x0, x1, y0, y1 = ds.GetLayer(0).GetExtent()
+    check(abs(x0 - (E - 3)) < 5 and abs(y0 - N) < 5 and x1 < E + 50 and y1 < N + 35,
+          f"layout.gpkg lies at E {x0:.1f}..{x1:.1f} N {y0:.1f}..{y1:.1f}, not on the drawing's grid")
 
 
 if __name__ == "__main__":

@@ -109,7 +109,12 @@ void write_quantities(const OutputContext& c, OutputSink& sink) {
 
 void write_layout_dxf_output(const OutputContext& c, OutputSink& sink) {
   sink.write_via_file("layout.dxf",
-                      [&](const fs::path& path) { write_layout_dxf(path, *c.layout); });
+                      [&](const fs::path& path) { write_layout_dxf(path, *c.layout, false); });
+}
+
+void write_layout_site_dxf_output(const OutputContext& c, OutputSink& sink) {
+  sink.write_via_file("layout-site.dxf",
+                      [&](const fs::path& path) { write_layout_dxf(path, *c.layout, true); });
 }
 
 void write_layout_gpkg_output(const OutputContext& c, OutputSink& sink) {
@@ -179,6 +184,20 @@ void add_kind_outputs(Add& add) {
        .needs_layout = true,
        .for_kind = "perforation",
        .write = write_punching});
+}
+
+// Outputs of a surface read from a DXF: the layout laid back onto that drawing.
+template <class Add>
+void add_site_outputs(Add& add) {
+  add({.name = "layout-site.dxf",
+       .description = "layout.dxf in the site drawing's own coordinates and units, to attach "
+                      "as an XREF at (0, 0, 0), scale 1 (a surface read from a DXF)",
+       .needs_layout = true,
+       .for_site_drawing = true,
+       .skip_above = 2'000'000,
+       .size_unit = "elements",
+       .size = view_cells,
+       .write = write_layout_site_dxf_output});
 }
 
 std::vector<Output> make_registry() {
@@ -259,6 +278,7 @@ std::vector<Output> make_registry() {
        .size_unit = "elements",
        .size = view_cells,
        .write = write_layout_dxf_output});
+  add_site_outputs(add);
   add({.name = "layout.gpkg",
        .description = "the pieces as a GeoPackage for QGIS: a feature per piece with its "
                       "schedule attributes, a layer per kind, in layout.georef's CRS",
@@ -320,6 +340,12 @@ void check_output_applies(const Output& o, const Run& run) {
   if (o.needs_layout && !run.recipe.layout)
     throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout", ""},
                      o.name + " needs a [layout] section in the recipe (see patterns/README.md)");
+  if (o.for_site_drawing && !run.recipe.layout->site_frame)
+    throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout.site", ""},
+                     o.name +
+                         " is the layout in its site drawing's own coordinates and units, "
+                         "written where [layout.site] reads the surface from a DXF; this "
+                         "recipe's surface is not read from one");
   if (!output_applies(o, run))
     throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout.kind", ""},
                      o.name + " is written for layouts of kind \"" + o.for_kind +
@@ -329,6 +355,7 @@ void check_output_applies(const Output& o, const Run& run) {
 
 bool output_applies(const Output& o, const Run& run) {
   if (o.needs_layout && !run.recipe.layout) return false;
+  if (o.for_site_drawing && !(run.recipe.layout && run.recipe.layout->site_frame)) return false;
   return !o.for_kind || (run.recipe.layout && run.recipe.layout->kind->name() == o.for_kind);
 }
 

@@ -40,6 +40,7 @@ struct Output {
   bool by_default = true;
   bool download = true;            // one file the page can offer (not a folder, not a pair)
   const char* for_kind = nullptr;  // written only for layouts of this kind ("park"); null: any
+  bool for_site_drawing = false;   // written only for a surface read from a DXF ([layout.site])
   // Skipped unless named when size(run) is above this (0: never skipped): huge files nobody
   // opens are not written by accident.
   uint64_t skip_above = 0;

@@ -93,11 +93,12 @@ ordered_json building_json(const LayoutSpec& spec) {
 
 }  // namespace
 
-std::vector<std::string> page_downloads(bool with_layout, std::string_view kind) {
+std::vector<std::string> page_downloads(bool with_layout, std::string_view kind,
+                                        bool site_drawing) {
   std::vector<std::string> names;
   std::string why;
   for (const Output& o : output_registry())
-    if (o.download && (with_layout || !o.needs_layout) &&
+    if (o.download && (with_layout || !o.needs_layout) && (site_drawing || !o.for_site_drawing) &&
         (!o.for_kind || kind.empty() || kind == o.for_kind) && (!o.installed || o.installed(&why)))
       names.push_back(o.name);
   names.push_back("recipe.toml");
@@ -180,7 +181,8 @@ ordered_json describe_run(const Run& s) {
   j["legend"] = legend;
   // What this recipe can download, from the registry: the page lists no names of its own.
   const std::vector<std::string> downloads = page_downloads(
-      s.recipe.layout.has_value(), s.recipe.layout ? s.recipe.layout->kind->name() : "");
+      s.recipe.layout.has_value(), s.recipe.layout ? s.recipe.layout->kind->name() : "",
+      s.recipe.layout && s.recipe.layout->site_frame);
   j["downloads"] = downloads;
   // What each is for, as the page's links say on hover ("... for QGIS").
   ordered_json about = ordered_json::object();

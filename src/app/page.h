@@ -16,7 +16,9 @@ namespace curdle::app {
 
 // The files the page may download: the registry's single-file outputs (those of a layout only
 // when there is one, those of a kind only for it; `kind` empty: every kind's), and recipe.toml.
-std::vector<std::string> page_downloads(bool with_layout, std::string_view kind = {});
+// `site_drawing`: the layout lies in a DXF it was read from (layout-site.dxf is offered).
+std::vector<std::string> page_downloads(bool with_layout, std::string_view kind = {},
+                                        bool site_drawing = true);
 
 // ResourceLimitError when `view` generates more than `limit` cells; `what` opens the message
 // ("this request would generate").

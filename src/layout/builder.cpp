@@ -356,6 +356,7 @@ Layout lay_surface(const Box& view, const LayoutSpec& spec, const std::vector<Re
           layout.openings.push_back(c);
   layout.chord_tolerance = spec.chord_tolerance;
   layout.site = spec.site_summary;
+  layout.site_frame = spec.site_frame;
   layout.notes.insert(layout.notes.end(), spec.site_notes.begin(), spec.site_notes.end());
   return layout;
 }

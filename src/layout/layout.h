@@ -122,6 +122,18 @@ struct Georef {
   double rotation = 0;
 };
 
+// Where the layout lies in the drawing it was read from ([layout.site]): the layout's datum
+// (x = y = 0) as a point of the drawing in its own units, so that outputs can be laid back onto
+// the drawing at its coordinates (layout-site.dxf) and the datum stated on the sheets.
+struct SiteFrame {
+  std::string file;                   // the drawing, as the recipe names it
+  double unit_mm = 1;                 // millimetres per drawing unit
+  std::string unit_name = "mm";       // as the drawing says them: "m", "mm", "ft"
+  int insunits = 4;                   // the DXF $INSUNITS code of those units
+  std::array<double, 2> datum{0, 0};  // the layout's (0, 0), in drawing units
+  int precision = 4;                  // decimals the drawing gives its coordinates
+};
+
 // The recipe's drawing keys: layout.png's scale, sheet and resolution, and what it overlays;
 // the installer's sheets' scale, sheet and set.
 struct DrawingKeys {
@@ -235,6 +247,7 @@ struct LayoutSpec {
   // layout.site: what was read from the drawing, and what the builder should know of it.
   std::string site_summary;
   std::vector<std::string> site_notes;
+  std::optional<SiteFrame> site_frame;  // where the surface lies in its drawing
   // The bond: each course (row) shifted along x by this share of the element pitch from the
   // course below, counted from the origin corner: 0 stack, 1/2 stretcher or running bond, 1/3,
   // 1/4. Every element still stands for one cell; courses are cut at the ends.
@@ -345,6 +358,7 @@ struct Layout {
   Polygon outline;
   Contour outline_contour;  // the outline with its arcs, where it has any
   std::string site;         // where the surface was read from (layout.site), for the report
+  std::optional<SiteFrame> site_frame;  // where it lies in that drawing
   std::vector<Rect> outside;
   // What of the surface a sloping or curved outline leaves out, and excluded zones with sloping
   // or curved edges, as exact polygons (union.h's cut_away): pieces are cut along them.

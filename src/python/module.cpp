@@ -436,6 +436,7 @@ PYBIND11_MODULE(_curdle, m) {
       list.append(py::dict(py::arg("name") = o.name, py::arg("description") = o.description,
                            py::arg("needs_layout") = o.needs_layout,
                            py::arg("by_default") = o.by_default,
+                           py::arg("for_site_drawing") = o.for_site_drawing,
                            py::arg("for_kind") = o.for_kind ? py::object(py::str(o.for_kind))
                                                             : py::object(py::none())));
     return list;

@@ -358,7 +358,8 @@ void read_georef(TableReader& r, LayoutSpec& spec) {
   const toml::table* t = read_table(r, "georef");
   if (!t)
     r.fail("georef", "must be a table: [layout.georef] with epsg, easting, northing, rotation");
-  TableReader g(*t, r.key_path("georef"), r.source(), {"epsg", "easting", "northing", "rotation"});
+  TableReader g(*t, r.key_path("georef"), r.source(),
+                {"epsg", "easting", "northing", "rotation", "from"});
   if (spec.kind->upright())
     r.fail("georef", std::string("places a plan on the map; a ") + std::string(spec.kind->name()) +
                          " layout is an elevation, drawn in its wall's own metres");
@@ -380,7 +381,28 @@ void read_georef(TableReader& r, LayoutSpec& spec) {
   geo.rotation = coordinate("rotation", -360, 360,
                             "must be the layout's x axis in degrees anticlockwise from grid east, "
                             "from -360 to 360");
-  g.report_unused("is not a key of layout.georef (epsg, easting, northing, rotation)");
+  // from = "site": the datum's coordinates as the site drawing gives them, nothing retyped.
+  if (g.get("from")) {
+    if (read_string(g, "from", "\"site\"").value_or("") != "site")
+      g.fail("from",
+             "must be \"site\": the datum's easting and northing are its coordinates in "
+             "[layout.site]'s drawing, drawn in the CRS of epsg");
+    if (g.get("easting") || g.get("northing") || g.get("rotation"))
+      g.fail("from",
+             "takes easting and northing from the site drawing (its axes are the grid's); "
+             "give from or easting, northing and rotation, not both");
+    if (!spec.site_frame)
+      g.fail("from",
+             "takes the datum from [layout.site]'s DXF drawing, and this recipe reads "
+             "none");
+    geo.easting = spec.site_frame->datum[0] * spec.site_frame->unit_mm / 1000;
+    geo.northing = spec.site_frame->datum[1] * spec.site_frame->unit_mm / 1000;
+    if (std::fabs(geo.easting) > 1e8 || std::fabs(geo.northing) > 1e8)
+      g.fail("from",
+             "gives a datum beyond 100,000 km of the CRS's origin: is the drawing's "
+             "unit right?");
+  }
+  g.report_unused("is not a key of layout.georef (epsg, easting, northing, rotation, from)");
   spec.georef = geo;
 }
 
@@ -412,7 +434,6 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   spec.set_kind(*kind);
   r.get("kind");  // read above
   read_ordering(r, spec);
-  read_georef(r, spec);
   read_materials(r, design, spec);
   const int dimension = kind->dimension();
   if (design.lattice.dimension != dimension)
@@ -420,6 +441,7 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
                        "-D lattice; this one is " + std::to_string(design.lattice.dimension) +
                        "-D");
   kind->read(r, design, spec, field_given);
+  read_georef(r, spec);  // after the kind's keys: from = "site" takes [layout.site]'s datum
   r.report_unused("is not read by a " + std::string(kind->name()) + " layout");
   // A key the kind lists but its reader never asks for would pass unread: a programming error.
   if (const auto unread = r.never_asked(); !unread.empty())

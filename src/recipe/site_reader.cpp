@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "layout/contour.h"
 #include "layout/zone.h"
@@ -207,6 +208,27 @@ Zone zone_of(const std::string& name, ZoneRule rule, uint32_t value, const Conto
   return z;
 }
 
+// Where the layout lies in its drawing, for outputs laid back onto it: DXF drawings only (an
+// SVG's own frame runs y down from its page's corner).
+std::optional<SiteFrame> frame_of(const site::Site& s, const std::string& file) {
+  std::string lower = file;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (lower.size() < 4 || lower.compare(lower.size() - 4, 4, ".dxf") != 0) return std::nullopt;
+  static const std::map<std::string, int> kInsunits = {{"in", 1}, {"ft", 2}, {"mm", 4},
+                                                       {"cm", 5}, {"m", 6},  {"dm", 14}};
+  const auto code = kInsunits.find(s.unit_name);
+  if (code == kInsunits.end()) return std::nullopt;
+  SiteFrame f;
+  f.file = file;
+  f.unit_mm = s.unit_mm;
+  f.unit_name = s.unit_name;
+  f.insunits = code->second;
+  f.datum = {s.datum[0] / s.unit_mm, s.datum[1] / s.unit_mm};
+  f.precision = s.precision;
+  return f;
+}
+
 }  // namespace
 
 void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
@@ -252,6 +274,7 @@ void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
   spec.site_summary = s.summary;
   spec.site_notes = s.notes;
+  spec.site_frame = frame_of(s, map.file);
 }
 
 Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::string& summary) {

@@ -563,6 +563,9 @@ Site site_from(const Drawing& drawing, const LayerMap& map) {
   const Rect bounds = contour_bounds(outline.path);
   const std::array<double, 2> datum = datum_of(map, bounds, mm, join_tolerance);
   site.datum = {snapped(datum[0] * mm), snapped(datum[1] * mm)};
+  site.unit_mm = mm;
+  site.unit_name = unit_name;
+  site.precision = drawing.precision;
   site.outline = counter_clockwise(to_mm(outline.path, datum, mm));
   const Rect extent = contour_bounds(site.outline);
   check_plausible(extent, map, unit_name, mm);

@@ -56,6 +56,9 @@ struct Site {
   std::vector<Contour> openings;  // counter-clockwise
   std::vector<SiteZone> zones;
   std::array<double, 2> datum{0, 0};  // the datum in the drawing, mm from its origin
+  double unit_mm = 1;                 // millimetres per drawing unit, as read
+  std::string unit_name;              // "m", "mm", ...
+  int precision = 4;                  // decimals of the drawing's coordinates
   std::string summary;                // "outline 14,000 x 9,000 mm with 1 arc; ..."
   std::vector<std::string> notes;     // layers passed over, hidden layers, flattened curves
 };

@@ -36,7 +36,8 @@ SEED = 11
 def outputs_for(pattern):
     """Every output the pattern's layout kind takes (parks add their schedules)."""
     kind = tomllib.loads((SOURCE / pattern).read_text()).get("layout", {}).get("kind")
-    return [o["name"] for o in curdle.outputs() if o["for_kind"] in (None, kind)]
+    return [o["name"] for o in curdle.outputs()
+            if o["for_kind"] in (None, kind) and not o["for_site_drawing"]]
 
 
 def cli_generate(pattern, out, *extra):
