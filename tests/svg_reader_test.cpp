@@ -1,5 +1,6 @@
 #include "site/svg_reader.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,7 +22,7 @@ std::string svg(
 
 const Shape& on(const Drawing& d, const std::string& layer, size_t k = 0) {
   for (const Shape& s : d.shapes)
-    if (s.layer == layer && k-- == 0) return s;
+    if (on_layer(s, layer) && k-- == 0) return s;
   throw std::runtime_error("no shape on " + layer);
 }
 
@@ -131,6 +132,66 @@ TEST(SvgReaderTest, RefusesWhatIsNotASiteDrawing) {
   EXPECT_NE(refusal(svg(deep)).find("more than 64 deep"), std::string::npos);
   m = refusal(svg("<g id=\"loop\"><use href=\"#loop\"/></g>"));
   EXPECT_NE(m.find("more than 16 deep"), std::string::npos) << m;
+}
+
+// Inkscape's layers are what Inkscape's Layers dialog shows: everything below a layer belongs
+// to it whatever the inner groups' automatic ids, which still pick a part of it.
+TEST(SvgReaderTest, InkscapeLayersHoldEverythingBelowThem) {
+  const Drawing d =
+      read_svg(svg("<g inkscape:groupmode=\"layer\" inkscape:label=\"L-PLNT-PITS\" id=\"layer2\">"
+                   "<g id=\"g812\"><circle cx=\"10\" cy=\"10\" r=\"2\"/></g>"
+                   "<g id=\"g900\"><g id=\"g901\"><circle cx=\"30\" cy=\"10\" r=\"2\"/></g></g>"
+                   "<g inkscape:groupmode=\"layer\" inkscape:label=\"Sub\"><rect width=\"1\" "
+                   "height=\"1\"/></g></g>"
+                   "<g id=\"loose\"><rect id=\"r1\" x=\"50\" width=\"5\" height=\"5\"/></g>"),
+               "site.svg", {});
+  size_t pits = 0;
+  for (const Shape& s : d.shapes) pits += s.layer == "L-PLNT-PITS";
+  EXPECT_EQ(pits, 2u);
+  EXPECT_EQ(on(d, "g900").path[0].x, 28);     // an inner group still picks its part
+  EXPECT_EQ(on(d, "Sub").entity, "rect");     // a sublayer is a layer of its own
+  EXPECT_EQ(on(d, kRootLayer).handle, "r1");  // outside every layer: "(root)"
+}
+
+// Without Inkscape's layers, the top-level groups are the layers (Illustrator's data-name).
+TEST(SvgReaderTest, TopLevelGroupsAreLayersElsewhere) {
+  const Drawing d =
+      read_svg(svg("<g id=\"Layer_1\" data-name=\"Site boundary\"><g id=\"a\"><polygon "
+                   "points=\"0,0 10,0 10,10\"/></g></g><g id=\"Pits\"><g id=\"b\"><circle cx=\"5\" "
+                   "cy=\"5\" r=\"1\"/></g></g><rect id=\"alone\" width=\"1\" height=\"1\"/>"),
+               "site.svg", {});
+  EXPECT_EQ(d.shapes[0].layer, "Site boundary");
+  EXPECT_EQ(d.shapes[1].layer, "Pits");
+  EXPECT_EQ(d.shapes[2].layer, kRootLayer);
+  EXPECT_EQ(on(d, "alone").layer, kRootLayer);
+}
+
+// A nested <svg> places its content by its x, y, width, height and viewBox.
+TEST(SvgReaderTest, NestedViewportsScaleAndMove) {
+  const Drawing d =
+      read_svg(svg("<svg x=\"100\" y=\"0\" width=\"50\" height=\"50\" viewBox=\"0 0 10 10\">"
+                   "<rect id=\"z\" width=\"10\" height=\"10\"/></svg>"),
+               "site.svg", {});
+  const Rect b = contour_bounds(on(d, "z").path);
+  EXPECT_NEAR(b.w, 50, 1e-9);
+  EXPECT_NEAR(b.x, 100, 1e-9);
+}
+
+// Uses of uses are counted as placed: 10 levels of ten <use> of an empty group place nothing
+// ten billion times.
+TEST(SvgReaderTest, UsesAreCountedAsTheyArePlaced) {
+  std::string defs = "<g id=\"u0\"></g>";
+  for (int level = 1; level <= 10; ++level) {
+    defs += fmt::format("<g id=\"u{}\">", level);
+    for (int k = 0; k < 10; ++k) defs += fmt::format("<use href=\"#u{}\"/>", level - 1);
+    defs += "</g>";
+  }
+  try {
+    read_svg(svg("<defs>" + defs + "</defs><use href=\"#u10\"/>"), "site.svg", {});
+    ADD_FAILURE() << "read";
+  } catch (const SiteError& e) {
+    EXPECT_NE(std::string(e.what()).find("through <use> more than"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

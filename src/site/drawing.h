@@ -19,8 +19,15 @@ class SiteError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The layer of an SVG's shapes that lie in no layer (no group at the top, or outside Inkscape's
+// layers), so that a recipe can name it.
+inline constexpr const char* kRootLayer = "(root)";
+
 struct Shape {
   std::string layer;
+  // Other names a recipe may pick the shape by: an SVG's named groups inside its layer, and the
+  // shape's own id or label.
+  std::vector<std::string> also;
   std::string handle;  // the entity's handle (DXF) or id (SVG), for messages; may be empty
   std::string entity;  // "LWPOLYLINE", "LINE", "ARC", "CIRCLE", "path", ...
   Contour path;        // in drawing units; an open shape's last vertex's bulge is unused
@@ -47,6 +54,11 @@ struct Drawing {
   std::vector<std::string> notes;   // what a reader approximated or passed over
   int precision = 4;                // decimals of the drawing's coordinates ($LUPREC), for messages
 };
+
+// Whether `s` lies on `layer`, or is picked by one of its other names.
+inline bool on_layer(const Shape& s, const std::string& layer) {
+  return s.layer == layer || std::find(s.also.begin(), s.also.end(), layer) != s.also.end();
+}
 
 // Every layer that holds a shape, in the order first seen.
 inline std::vector<std::string> layers_of(const Drawing& drawing) {

@@ -194,7 +194,7 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
   std::vector<Closed> closed;
   std::vector<Piece> pieces;
   for (const Shape& s : drawing.shapes) {
-    if (s.layer != layer) continue;
+    if (!on_layer(s, layer)) continue;
     if (!s.fault.empty())
       throw SiteError(fmt::format(
           "{}: {}{} (the layer holds the {})", file, s.fault,
@@ -337,9 +337,11 @@ std::string layers_with_shapes(const std::vector<std::string>& layers) {
   return names.empty() ? "none" : names;
 }
 
-void check_named(const std::vector<std::string>& layers, const std::string& layer,
-                 const std::string& file, const std::string& role) {
-  if (std::find(layers.begin(), layers.end(), layer) != layers.end()) return;
+void check_named(const Drawing& drawing, const std::vector<std::string>& layers,
+                 const std::string& layer, const std::string& file, const std::string& role) {
+  if (std::any_of(drawing.shapes.begin(), drawing.shapes.end(),
+                  [&](const Shape& s) { return on_layer(s, layer); }))
+    return;
   throw SiteError(
       fmt::format("{}: layer \"{}\" ({}) has nothing on it; the layers with shapes "
                   "are {}",
@@ -548,9 +550,9 @@ std::string summary_of(const Site& site, const Rect& bounds, const LayerMap& map
 Site site_from(const Drawing& drawing, const LayerMap& map) {
   Site site;
   const std::vector<std::string> layers = layers_of(drawing);
-  check_named(layers, map.outline, map.file, "the outline");
-  for (const std::string& l : map.openings) check_named(layers, l, map.file, "openings");
-  for (const ZoneLayer& z : map.zones) check_named(layers, z.layer, map.file, "a zone");
+  check_named(drawing, layers, map.outline, map.file, "the outline");
+  for (const std::string& l : map.openings) check_named(drawing, layers, l, map.file, "openings");
+  for (const ZoneLayer& z : map.zones) check_named(drawing, layers, z.layer, map.file, "a zone");
   std::string unit_name;
   const double mm = units_of(drawing, map, unit_name, site.notes);
   const double join_tolerance = kJoinTolerance / mm;

@@ -16,6 +16,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <svgpp/svgpp.hpp>
 
 #include "site/curves.h"
@@ -26,6 +27,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kDeepest = 64;
 constexpr int kDeepestUse = 16;
+// Groups and shapes placed through <use>, counting each place a shared one is used: 15 levels of
+// ten uses of an empty group are 10^15 visits that place nothing.
+constexpr size_t kMostVisits = 1000000;
 const char* const kSvg = "http://www.w3.org/2000/svg";
 const char* const kInkscape = "http://www.inkscape.org/namespaces/inkscape";
 const char* const kXlink = "http://www.w3.org/1999/xlink";
@@ -256,7 +260,20 @@ class Walker {
     }
   }
 
-  void walk(const xmlNode* node, const Affine& ctm, const std::string& layer, int depth, int uses) {
+  // Whether the drawing has Inkscape's layers: then they are its layers, else its top-level
+  // groups are (Illustrator's layers, a CAD program's).
+  void find_layers(const xmlNode* root) {
+    for (const xmlNode* c = root->children; c; c = c->next)
+      if (is_svg(c, "g") || is_svg(c, "svg") || is_svg(c, "a") || is_svg(c, "switch")) {
+        if (attribute(c, "groupmode", kInkscape) == "layer") inkscape_layers_ = true;
+        find_layers(c);
+      }
+  }
+
+  // `layer`: the layer the shapes below belong to; `names`: the named groups inside it, by
+  // which a recipe may also pick a part of a layer.
+  void walk(const xmlNode* node, const Affine& ctm, const std::string& layer,
+            const std::vector<std::string>& names, int depth, int uses) {
     if (depth > kDeepest)
       throw SiteError(fmt::format("{}: nests groups more than {} deep", file_, kDeepest));
     for (const xmlNode* c = node->children; c; c = c->next) {
@@ -265,15 +282,31 @@ class Walker {
         continue;
       const std::string tag = reinterpret_cast<const char*>(c->name);
       if (attribute(c, "display") == "none") continue;
-      const Affine here = ctm.after(transform_of(c));
+      if (tag == "defs" || tag == "symbol" || tag == "clipPath" || tag == "mask" ||
+          tag == "pattern" || tag == "marker")
+        continue;  // drawn only where used
+      Affine here = ctm.after(transform_of(c));
+      if (tag == "svg") here = here.after(viewport(c, std::nullopt, std::nullopt));
       if (tag == "g" || tag == "a" || tag == "switch" || tag == "svg") {
         std::string label = attribute(c, "label", kInkscape);
-        if (label.empty()) label = attribute(c, "id");
-        walk(c, here, label.empty() ? layer : label, depth + 1, uses);
+        const std::string id = attribute(c, "id");
+        const bool is_layer =
+            inkscape_layers_ ? attribute(c, "groupmode", kInkscape) == "layer" : depth == 0;
+        std::vector<std::string> inner = names;
+        if (is_layer) {
+          std::string name = label;
+          if (name.empty()) name = attribute(c, "data-name");
+          if (name.empty()) name = id;
+          walk(c, here, name.empty() ? layer : name, {}, depth + 1, uses);
+          continue;
+        }
+        if (!label.empty()) inner.push_back(label);
+        if (!id.empty()) inner.push_back(id);
+        walk(c, here, layer, inner, depth + 1, uses);
       } else if (tag == "use") {
-        use(c, here, layer, depth, uses);
+        use(c, here, layer, names, depth, uses);
       } else {
-        shape(c, here, layer);
+        shape(c, here, layer, names);
       }
     }
   }
@@ -304,7 +337,45 @@ class Walker {
     return m;
   }
 
-  void use(const xmlNode* node, const Affine& ctm, const std::string& layer, int depth, int uses) {
+  // A nested <svg>'s or a used <symbol>'s viewport: x, y, then its viewBox fitted into its width
+  // and height (preserveAspectRatio's default, xMidYMid meet, or none). A <use> gives the
+  // symbol's width and height.
+  Affine viewport(const xmlNode* node, std::optional<double> width, std::optional<double> height) {
+    const bool symbol = is_svg(node, "symbol");
+    const double x = symbol ? 0 : length(node, "x", file_, 0);
+    const double y = symbol ? 0 : length(node, "y", file_, 0);
+    Affine at{1, 0, 0, 1, x, y};
+    const std::string view = attribute(node, "viewBox");
+    if (view.empty()) return at;
+    std::array<double, 4> box{};
+    std::string spaced = view;
+    for (char& ch : spaced)
+      if (ch == ',') ch = ' ';
+    if (std::sscanf(spaced.c_str(), "%lf %lf %lf %lf", &box[0], &box[1], &box[2], &box[3]) != 4 ||
+        !(box[2] > 0 && box[3] > 0) || !std::isfinite(box[0] + box[1] + box[2] + box[3]))
+      throw SiteError(
+          fmt::format("{}: {} has the viewBox \"{}\", not four numbers with a width "
+                      "and height above 0",
+                      file_, name_of(node), view.substr(0, 100)));
+    auto size = [&](const char* key, std::optional<double> given, double fallback) {
+      if (given) return *given;
+      const std::string text = attribute(node, key);
+      if (text.empty() || text.back() == '%') return fallback;  // 100 %: the viewBox's own size
+      return length(node, key, file_, fallback);
+    };
+    const double w = size("width", width, box[2]), h = size("height", height, box[3]);
+    double sx = w / box[2], sy = h / box[3];
+    double dx = 0, dy = 0;
+    if (attribute(node, "preserveAspectRatio").rfind("none", 0) != 0) {
+      const double s = std::min(sx, sy);
+      dx = (w - box[2] * s) / 2, dy = (h - box[3] * s) / 2;
+      sx = sy = s;
+    }
+    return at.after(Affine{sx, 0, 0, sy, dx - box[0] * sx, dy - box[1] * sy});
+  }
+
+  void use(const xmlNode* node, const Affine& ctm, const std::string& layer,
+           const std::vector<std::string>& names, int depth, int uses) {
     std::string href = attribute(node, "href", kXlink);
     if (href.empty()) href = attribute(node, "href");
     const auto it = href.size() > 1 && href[0] == '#' ? ids_.find(href.substr(1)) : ids_.end();
@@ -319,14 +390,30 @@ class Walker {
         ctm.after(Affine{1, 0, 0, 1, length(node, "x", file_, 0), length(node, "y", file_, 0)});
     const xmlNode* target = it->second;
     const std::string tag = reinterpret_cast<const char*>(target->name);
-    if (tag == "g" || tag == "symbol" || tag == "svg") {
-      walk(target, placed.after(transform_of(target)), layer, depth + 1, uses + 1);
+    if (++visits_ > kMostVisits)
+      throw SiteError(
+          fmt::format("{}: places groups through <use> more than {} times; keep only "
+                      "the layers of the surface",
+                      file_, kMostVisits));
+    if (tag == "symbol" || tag == "svg") {
+      const std::string w = attribute(node, "width"), h = attribute(node, "height");
+      const auto given = [&](const std::string& text, const char* key) -> std::optional<double> {
+        if (text.empty() || text.back() == '%') return std::nullopt;
+        return length(node, key, file_, 0);
+      };
+      walk(target,
+           placed.after(transform_of(target))
+               .after(viewport(target, given(w, "width"), given(h, "height"))),
+           layer, names, depth + 1, uses + 1);
+    } else if (tag == "g") {
+      walk(target, placed.after(transform_of(target)), layer, names, depth + 1, uses + 1);
     } else {
-      shape(target, placed.after(transform_of(target)), layer);
+      shape(target, placed.after(transform_of(target)), layer, names);
     }
   }
 
-  void shape(const xmlNode* node, const Affine& ctm, const std::string& layer) {
+  void shape(const xmlNode* node, const Affine& ctm, const std::string& layer,
+             const std::vector<std::string>& names) {
     const std::string data = path_data(node, file_);
     if (data.empty()) return;
     PathCollector collector(ctm, tolerance_);
@@ -337,8 +424,12 @@ class Walker {
       throw SiteError(fmt::format("{}: {} has path data curdle cannot read: \"{}\"", file_,
                                   name_of(node), data.substr(0, 200)));
     }
-    std::string own = attribute(node, "label", kInkscape);
-    if (own.empty()) own = attribute(node, "id");
+    std::vector<std::string> also = names;
+    for (const char* key : {"label", "id"}) {
+      const std::string own =
+          key[0] == 'l' ? attribute(node, key, kInkscape) : attribute(node, key);
+      if (!own.empty()) also.push_back(own);
+    }
     for (auto& [path, closed] : collector.paths) {
       for (const ContourVertex& v : path)
         if (!std::isfinite(v.x) || !std::isfinite(v.y))
@@ -350,7 +441,8 @@ class Walker {
                         "site drawing needs; keep only the layers of the surface",
                         file_, kMostShapes, kMostVertices));
       Shape s;
-      s.layer = layer.empty() ? own : layer;
+      s.layer = layer.empty() ? kRootLayer : layer;
+      s.also = also;
       s.handle = attribute(node, "id");
       if (s.handle.empty()) s.handle = fmt::format("line {}", xmlGetLineNo(node));
       s.entity = reinterpret_cast<const char*>(node->name);
@@ -368,7 +460,8 @@ class Walker {
   double tolerance_;
   Drawing& drawing_;
   std::map<std::string, const xmlNode*> ids_;
-  size_t elements_ = 0, vertices_ = 0;
+  size_t elements_ = 0, vertices_ = 0, visits_ = 0;
+  bool inkscape_layers_ = false;
 };
 
 // Millimetres per unit of a length such as "140mm"; 0 for px, unitless or unknown units.
@@ -448,7 +541,8 @@ Drawing read_svg(std::string_view bytes, const std::string& file_name, const Svg
   const Affine page{scale, 0, 0, -scale, -box[0] * scale, (box[1] + box[3]) * scale};
   Walker walker(file_name, reading.chord_tolerance_mm / (mm > 0 ? mm : 1), drawing);
   walker.index(root, 0);
-  walker.walk(root, page.after(Affine{}), "", 0, 0);
+  walker.find_layers(root);
+  walker.walk(root, page.after(Affine{}), "", {}, 0, 0);
   if (walker.unresolved_)
     drawing.notes.push_back(
         fmt::format("{} <use> elements refer to nothing in the drawing, "
