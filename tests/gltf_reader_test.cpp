@@ -8,12 +8,14 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
+#include <limits>
 #include <set>
 #include <sstream>
 
 #include "kinds/facade.h"
 #include "recipe/recipe.h"
 #include "recipe_support.h"
+#include "site/site.h"
 
 namespace curdle::site {
 namespace {
@@ -80,10 +82,12 @@ TEST(GltfReader, AMassingModelsFootprintIsItsNodesOutline) {
   const Drawing d = read_gltf(boxes_glb(kPavilion, 7050, "Pavilion"), "massing.glb");
   ASSERT_EQ(d.shapes.size(), 1u);
   EXPECT_EQ(d.shapes[0].layer, "Pavilion");
+  EXPECT_EQ(d.unit_name, "m");
+  EXPECT_NEAR(d.shapes[0].height, 7.05, 1e-6);
   EXPECT_TRUE(d.shapes[0].closed);
   std::set<std::pair<long, long>> corners;
   for (const ContourVertex& v : d.shapes[0].path)
-    corners.insert({std::lround(v.x), std::lround(v.y)});
+    corners.insert({std::lround(v.x * 1000), std::lround(v.y * 1000)});  // metres, as glTF
   EXPECT_EQ(corners,
             (std::set<std::pair<long, long>>{
                 {0, 0}, {20000, 0}, {20000, 6000}, {12000, 6000}, {12000, 12000}, {0, 12000}}));
@@ -92,7 +96,7 @@ TEST(GltfReader, AMassingModelsFootprintIsItsNodesOutline) {
       << d.notes[0];
 }
 
-TEST(GltfReader, ABuildingsPlanIsReadFromTheModel) {
+TEST(GltfReader, ABuildingsPlanAndHeightAreReadFromTheModel) {
   FilesInMemory files;
   files.files["massing.glb"] = boxes_glb(kPavilion, 7050, "Pavilion");
   const Recipe r = parse_recipe(with_layout(R"(kind = "facade"
@@ -108,6 +112,18 @@ plan = "Pavilion"
   const Envelope& env = *r.layout->own<FacadeKeys>().envelope;
   ASSERT_EQ(env.facades.size(), 6u);
   EXPECT_NEAR(env.length, 64000, 1e-6);
+  // Without a height, the model's.
+  const Recipe own = parse_recipe(with_layout(R"(kind = "facade"
+panel = [215, 65]
+joint = 10
+[layout.building]
+[layout.building.site]
+file = "massing.glb"
+plan = "Pavilion"
+)"),
+                                  "r.toml", {}, &files);
+  ASSERT_TRUE(own.layout->own<FacadeKeys>().envelope.has_value());
+  EXPECT_NEAR(own.layout->own<FacadeKeys>().envelope->length, 64000, 1e-6);
 }
 
 TEST(GltfReader, AModelThatIsNotGltfOrReachesOutsideIsRefused) {
@@ -133,12 +149,75 @@ TEST(GltfReader, AModelThatIsNotGltfOrReachesOutsideIsRefused) {
     EXPECT_NE(std::string(e.what()).find("places nodes more than 100000 times"), std::string::npos)
         << e.what();
   }
-  // Two boxes apart: two outlines, not one plan.
+  // Two boxes apart: two outlines on the node's layer, which the site reader refuses as a plan
+  // with their sizes unless one is picked.
   const Drawing two =
       read_gltf(boxes_glb({{0, 0, 1000, 1000}, {5000, 0, 6000, 1000}}, 3000, "Two"), "two.glb");
-  EXPECT_TRUE(two.shapes.empty());
+  ASSERT_EQ(two.shapes.size(), 2u);
+  EXPECT_EQ(two.shapes[1].handle, "Two loop 2");
   ASSERT_EQ(two.notes.size(), 1u);
-  EXPECT_NE(two.notes[0].find("more than one"), std::string::npos);
+  EXPECT_NE(two.notes[0].find("2 footprint outlines"), std::string::npos);
+  LayerMap map;
+  map.file = "two.glb";
+  map.outline = "Two";
+  try {
+    site_from(two, map);
+    ADD_FAILURE() << "one of two outlines was picked";
+  } catch (const SiteError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds 2 closed shapes side by side (node Two loop 1 (1 x "
+                                         "1 at (0, 0)); node Two loop 2 (1 x 1 at (5, 0)))"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// As SketchUp, Rhino and Blender export a model: the meshes under a parent (a named empty,
+// turned and moved); every named node is a layer with its subtree, at any depth.
+TEST(GltfReader, NamedNodesAtAnyDepthAreLayers) {
+  tinygltf::Model m;
+  std::string err, warn;
+  const std::string glb = boxes_glb(kPavilion, 7050, "Block A");
+  ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromMemory(
+      &m, &err, &warn, reinterpret_cast<const unsigned char*>(glb.data()),
+      static_cast<unsigned>(glb.size())));
+  // A ground slab beside it, and both under "Massing", moved 100 m east (glTF x).
+  tinygltf::Node slab = m.nodes[0];
+  slab.name = "Ground";
+  slab.scale = {3, 0.01, 3};
+  tinygltf::Node parent;
+  parent.name = "Massing";
+  parent.translation = {100, 0, 0};
+  parent.children = {0, 1};
+  m.nodes.push_back(slab);
+  m.nodes.push_back(parent);
+  m.scenes[0].nodes = {2};
+  std::ostringstream out;
+  tinygltf::TinyGLTF().WriteGltfSceneToStream(&m, out, false, true);
+  const Drawing d = read_gltf(out.str(), "grouped.glb");
+  std::set<std::string> layers;
+  for (const Shape& s : d.shapes) layers.insert(s.layer);
+  EXPECT_EQ(layers, (std::set<std::string>{"Massing", "Block A", "Ground"}));
+  for (const Shape& s : d.shapes)
+    if (s.layer == "Block A") {
+      EXPECT_NEAR(contour_bounds(s.path).x, 100, 1e-6);
+      EXPECT_NEAR(s.height, 7.05, 1e-6);
+    }
+}
+
+TEST(GltfReader, ANanVertexIsNamedAsSuch) {
+  std::string glb = boxes_glb(kPavilion, 7050, "Pavilion");
+  // The first position's x, just after the JSON chunk and the binary chunk's header.
+  const uint32_t json_length = *reinterpret_cast<const uint32_t*>(glb.data() + 12);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(glb.data() + 20 + json_length + 8, &nan, 4);
+  try {
+    read_gltf(glb, "nan.glb");
+    ADD_FAILURE() << "read";
+  } catch (const SiteError& e) {
+    EXPECT_NE(std::string(e.what()).find("node \"Pavilion\" has a vertex that is not a finite"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -110,7 +110,8 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
            "a building needs one of plan = [[x, y], ...] (closed, anticlockwise), "
            "[layout.building.site] (its plan from a drawing's layer) or path = [[x, y], ...] (a "
            "free-standing wall)");
-  if (drawn) b.plan = read_site_plan(r, spec, b.site_summary);
+  double model_height = 0;  // mm, where the plan is a massing model's node
+  if (drawn) b.plan = read_site_plan(r, spec, b.site_summary, model_height);
   if (plan && !drawn) b.plan = read_contour(r, "plan", spec.chord_tolerance).contour;
   if (plan && !drawn && b.plan.empty()) {  // no arcs: read_contour keeps the polygon only
     for (const toml::node& item : *r.get("plan")->as_array()) {
@@ -126,7 +127,13 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
       r.fail("plan",
              "has a vertex beyond 10 km: give the plan in millimetres from a datum near it");
   if (path) b.path = read_path(r);
-  b.height = read_mm(r, "height", 0, 1, true);
+  // A massing model says how high the building stands; the recipe may say otherwise.
+  b.height = read_mm(r, "height", std::round(model_height), 1, !(model_height >= 1));
+  if (model_height >= 1 && std::fabs(b.height - model_height) > 0.5)
+    b.site_summary += fmt::format(
+        "; the model stands {:.0f} mm high, and the recipe's height of "
+        "{:g} mm is laid",
+        model_height, b.height);
   if (const toml::node* n = r.get("heights")) {
     const toml::array* a = n->as_array();
     const std::string allowed =

@@ -63,7 +63,10 @@ ReadContour read_contour(TableReader& r, const std::string& key, double toleranc
 // [layout.building.site]: the building's plan (its outer face) from a layer of the architect's
 // drawing, arcs kept, in mm from the drawing's datum (file, plan, units, origin as [layout.site]);
 // `summary` says what was read.
-Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::string& summary);
+// `model_height`: how high the plan's node stands where it is read from a massing model (mm),
+// else 0.
+Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::string& summary,
+                       double& model_height);
 
 // [[layout.building.elevations]]: each façade's windows and doors from its elevation drawing
 // (facade, file, wall: the façade's outline layer, openings: layers, units), in the façade's

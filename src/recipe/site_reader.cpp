@@ -277,7 +277,8 @@ void read_site(TableReader& r, const Design& design, LayoutSpec& spec) {
   spec.site_frame = frame_of(s, map.file);
 }
 
-Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::string& summary) {
+Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::string& summary,
+                       double& model_height) {
   const toml::table* t = read_table(building, "site");
   if (!t)
     building.fail("site", "must be a table: [layout.building.site] with file and plan (a layer)");
@@ -291,6 +292,7 @@ Contour read_site_plan(TableReader& building, const LayoutSpec& spec, std::strin
   sr.report_unused("is not a [layout.building.site] key (file, plan, units, origin)");
   const site::Site s = drawn_site(sr, *t, map, spec);
   summary = "plan: " + s.summary;
+  model_height = s.height_mm;
   return s.outline;
 }
 

@@ -39,6 +39,7 @@ struct Shape {
   // An open polyline drawn with width: the area it covers (wide_polyline.h), taken where the
   // shape is not joined into an outline with others; empty: no width.
   Contour strip;
+  double height = 0;  // a massing model's node: how high it stands, drawing units
   // Why the shape could not be read (a spline whose knots do not fit): refused where a layer
   // the recipe names holds it, passed over elsewhere.
   std::string fault;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -71,18 +72,43 @@ class Reader {
  public:
   Reader(const tinygltf::Model& model, const std::string& file) : model_(model), file_(file) {}
 
-  // The triangles of a node and all below it, in the model's frame.
-  void collect(int index, const Matrix& parent, std::vector<std::array<Point, 3>>& out,
-               int depth = 0) {
+  // Each layer's triangles in the model's frame: a named node (or a scene's root) is a layer
+  // holding its own mesh and everything below it, at any depth; `open` are the layers the
+  // node lies in.
+  void visit(int index, const Matrix& parent, std::vector<size_t>& open, int depth = 0) {
     if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size() || depth > 64)
       fail("a node refers to one it does not have, or nests too deep");
     // Nodes shared down the tree multiply: a hostile file could ask for 2^64 visits.
     if (++visits_ > kMostVisits) fail(fmt::format("places nodes more than {} times", kMostVisits));
     const tinygltf::Node& n = model_.nodes[static_cast<size_t>(index)];
     const Matrix m = times(parent, local(n));
-    if (n.mesh >= 0) mesh(static_cast<size_t>(n.mesh), m, out);
-    for (int c : n.children) collect(c, m, out, depth + 1);
+    const bool named = !n.name.empty() || depth == 0;
+    if (named) {
+      const std::string name = n.name.empty() ? fmt::format("node {}", index) : n.name;
+      auto it = std::find(layer_names.begin(), layer_names.end(), name);
+      if (it == layer_names.end()) {
+        layer_names.push_back(name);
+        layers.emplace_back();
+        it = layer_names.end() - 1;
+      }
+      open.push_back(static_cast<size_t>(it - layer_names.begin()));
+    }
+    if (n.mesh >= 0) {
+      std::vector<std::array<Point, 3>> own;
+      mesh(static_cast<size_t>(n.mesh), m, own, name_of(n, index));
+      for (size_t layer : open) {
+        // Each triangle counted once a layer it lies in, so that depth cannot multiply memory.
+        if ((placed_ += own.size() * 3) > kMostVertices)
+          fail(fmt::format("places more than {} vertices in its layers", kMostVertices));
+        layers[layer].insert(layers[layer].end(), own.begin(), own.end());
+      }
+    }
+    for (int c : n.children) visit(c, m, open, depth + 1);
+    if (named) open.pop_back();
   }
+
+  std::vector<std::string> layer_names;
+  std::vector<std::vector<std::array<Point, 3>>> layers;
 
   [[noreturn]] void fail(const std::string& what) const {
     throw SiteError(fmt::format("{}: {}", file_, what));
@@ -107,7 +133,12 @@ class Reader {
     return b.data() + start;
   }
 
-  void mesh(size_t index, const Matrix& m, std::vector<std::array<Point, 3>>& out) {
+  static std::string name_of(const tinygltf::Node& n, int index) {
+    return n.name.empty() ? fmt::format("node {}", index) : fmt::format("node \"{}\"", n.name);
+  }
+
+  void mesh(size_t index, const Matrix& m, std::vector<std::array<Point, 3>>& out,
+            const std::string& node) {
     if (index >= model_.meshes.size()) fail("a node refers to a mesh the file does not have");
     for (const tinygltf::Primitive& p : model_.meshes[index].primitives) {
       if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != -1) continue;  // lines and points: none
@@ -127,6 +158,12 @@ class Reader {
         float f[3];
         std::memcpy(f, pd + i * ps, 12);
         points[i] = transformed(m, f);
+        if (!std::isfinite(points[i][0]) || !std::isfinite(points[i][1]) ||
+            !std::isfinite(points[i][2]))
+          fail(
+              fmt::format("{} has a vertex that is not a finite number (vertex {} of mesh {}); "
+                          "the model is damaged: export it again",
+                          node, i, index));
       }
       std::vector<size_t> index_list;
       if (p.indices >= 0) {
@@ -159,7 +196,7 @@ class Reader {
 
   const tinygltf::Model& model_;
   const std::string& file_;
-  size_t vertices_ = 0, visits_ = 0;
+  size_t vertices_ = 0, visits_ = 0, placed_ = 0;
 };
 
 // Plan millimetres of a glTF point, welded to a tenth of a millimetre.
@@ -263,35 +300,56 @@ Drawing read_gltf(std::string_view bytes, const std::string& file) {
   Reader reader(model, file);
   Drawing d;
   d.format = "glTF";
-  d.unit_mm = 1;
-  d.unit_name = "mm";
+  d.unit_mm = 1000;  // glTF's unit is the metre
+  d.unit_name = "m";
+  d.precision = 4;  // a tenth of a millimetre, as the footprint is welded
   const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
   if (model.scenes.empty() || static_cast<size_t>(scene) >= model.scenes.size())
     reader.fail("holds no scene");
-  for (int root : model.scenes[static_cast<size_t>(scene)].nodes) {
-    std::vector<std::array<Point, 3>> triangles;
-    reader.collect(root, identity(), triangles);
+  std::vector<size_t> open;
+  for (int root : model.scenes[static_cast<size_t>(scene)].nodes)
+    reader.visit(root, identity(), open);
+  for (size_t k = 0; k < reader.layers.size(); ++k) {
+    const auto& triangles = reader.layers[k];
     if (triangles.empty()) continue;
-    const tinygltf::Node& n = model.nodes[static_cast<size_t>(root)];
-    const std::string layer = n.name.empty() ? fmt::format("node {}", root) : n.name;
+    const std::string& layer = reader.layer_names[k];
     double low = 1e300, high = -1e300;
     for (const auto& t : triangles)
       for (const Point& p : t) low = std::min(low, p[1]), high = std::max(high, p[1]);
     const std::vector<Contour> loops = footprint(triangles, low);
-    if (loops.size() != 1) {
-      d.notes.push_back(fmt::format("{}: its lowest faces are {} outline", layer,
-                                    loops.empty() ? "not one closed" : "more than one"));
+    if (loops.empty()) {
+      Shape s;
+      s.layer = layer;
+      s.entity = "node";
+      s.handle = layer;
+      s.fault = fmt::format(
+          "the node \"{}\"'s lowest faces (at level {:.3f} m) do not close into an outline: "
+          "give the model a floor or ground face, or name a node that has one",
+          layer, low);
+      s.path = {{0, 0, 0}, {0, 0, 0}};
+      d.shapes.push_back(std::move(s));
       continue;
     }
-    Shape s;
-    s.layer = layer;
-    s.entity = "mesh";
-    s.path = without_collinear(loops.front());
-    s.closed = true;
-    d.shapes.push_back(std::move(s));
-    d.notes.push_back(fmt::format("{}: a footprint of {} corners at level {:.3f} m, {:.3f} m high",
-                                  layer, d.shapes.back().path.size(), low, high - low));
-    if (d.shapes.size() > kMostShapes) reader.fail("holds too many nodes");
+    // Each loop a closed shape on the node's layer: more than one is refused by the site reader
+    // with their sizes, or picked by a point, never one chosen silently.
+    for (size_t i = 0; i < loops.size(); ++i) {
+      Shape s;
+      s.layer = layer;
+      s.entity = "node";
+      s.handle = loops.size() > 1 ? fmt::format("{} loop {}", layer, i + 1) : layer;
+      s.path = without_collinear(loops[i]);
+      for (ContourVertex& v : s.path) v.x /= 1000, v.y /= 1000;  // mm to the model's metres
+      s.closed = true;
+      s.height = high - low;
+      d.shapes.push_back(std::move(s));
+      if (d.shapes.size() > kMostShapes) reader.fail("holds too many nodes");
+    }
+    d.notes.push_back(fmt::format(
+        "{}: {} at level {:.3f} m, {:.3f} m high", layer,
+        loops.size() == 1
+            ? fmt::format("a footprint of {} corners", without_collinear(loops.front()).size())
+            : fmt::format("{} footprint outlines", loops.size()),
+        low, high - low));
   }
   return d;
 }

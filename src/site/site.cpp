@@ -567,6 +567,7 @@ Site site_from(const Drawing& drawing, const LayerMap& map) {
   site.datum = {snapped(datum[0] * mm), snapped(datum[1] * mm)};
   site.unit_mm = mm;
   site.unit_name = unit_name;
+  if (!outline.shapes.empty()) site.height_mm = outline.shapes.front()->height * mm;
   site.precision = drawing.precision;
   site.outline = counter_clockwise(to_mm(outline.path, datum, mm));
   const Rect extent = contour_bounds(site.outline);

@@ -59,6 +59,7 @@ struct Site {
   double unit_mm = 1;                 // millimetres per drawing unit, as read
   std::string unit_name;              // "m", "mm", ...
   int precision = 4;                  // decimals of the drawing's coordinates
+  double height_mm = 0;               // a massing model's node: how high it stands
   std::string summary;                // "outline 14,000 x 9,000 mm with 1 arc; ..."
   std::vector<std::string> notes;     // layers passed over, hidden layers, flattened curves
 };
