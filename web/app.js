@@ -107,7 +107,7 @@ let generation = 0;
 
 // A request's JSON; its message thrown when it failed. `init` as fetch takes it (a POST's body).
 async function getJson(url, signal, init) {
-  const response = await fetch(url, { ...init, signal });
+  const response = await apiFetch(url, { ...init, signal });
   let body;
   try {
     body = await response.json();

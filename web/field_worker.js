@@ -62,7 +62,8 @@ function openSocket() {
 
 self.onmessage = ({ data }) => {
   latest = data;
-  if (socketRefused) {
+  // A query longer than a socket's message (64 KiB: a long outline) is fetched, by POST.
+  if (socketRefused || data.url.length > 60000) {
     fetchLatest(data, readField);
     return;
   }

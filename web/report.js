@@ -114,6 +114,7 @@ function renderExports() {
     const a = document.createElement("a");
     a.href = "/api/export?" + query({ file: name, window: win || undefined });
     a.download = name;
+    a.addEventListener("click", downloadByPost);
     a.textContent = name;
     const about = ((state.whole || state.recipe).download_descriptions || {})[name];
     if (about) a.title = about;
@@ -129,12 +130,32 @@ function renderExports() {
 }
 let slowTimer = null;
 
+// A download whose address is too long to follow (a long outline in the query) is asked for by
+// POST and saved from the answer.
+async function downloadByPost(event) {
+  const link = event.currentTarget;
+  if (link.href.length <= kLongestAddress) return;
+  event.preventDefault();
+  try {
+    const response = await apiFetch(link.href);
+    if (!response.ok) throw new Error((await response.json()).error || `HTTP ${response.status}`);
+    const url = URL.createObjectURL(await response.blob());
+    const save = document.createElement("a");
+    save.href = url;
+    save.download = link.download;
+    save.click();
+    setTimeout(() => URL.revokeObjectURL(url), 60000);
+  } catch (err) {
+    showError(`${link.download}: ${err.message}`);
+  }
+}
+
 let recipeController = null;
 async function updateRecipeText() {
   if (recipeController) recipeController.abort();
   recipeController = new AbortController();
   try {
-    const response = await fetch("/api/export?" + query({ file: "recipe.toml", window: windowText() || undefined }),
+    const response = await apiFetch("/api/export?" + query({ file: "recipe.toml", window: windowText() || undefined }),
                                  { signal: recipeController.signal });
     if (response.ok) $("recipe-toml").textContent = await response.text();
   } catch (err) { /* a newer request took over */ }
@@ -178,7 +199,7 @@ async function showPreview(win, src) {
   img.classList.add("stale");
   $("layout-caption").textContent = "Drawing the layout…";
   try {
-    const response = await fetch(src, { signal: controller.signal });
+    const response = await apiFetch(src, { signal: controller.signal });
     if (!response.ok) throw new Error(`the server answered ${response.status}`);
     const blob = await response.blob();
     if (controller !== previewController) return;

@@ -4,22 +4,34 @@
 // bulges, a façade's windows) and zones, as [layout.site] reads it (loaded before app.js).
 "use strict";
 
-const siteDrawing = { file: null, layers: [] };
+const siteDrawing = { file: null, layers: [], hidden: [] };
 
-function siteRoleGuess(name, first) {
-  if (/otln|outline|boundary|wall|site/i.test(name)) return "outline";
-  if (/glaz|window|door|opening/i.test(name)) return "opening";
-  if (/pit|drain|zone|planter/i.test(name)) return "zone";
-  return first ? "outline" : "none";
+// A layer's role guessed from its name, as offices name them (the US National CAD Standard's
+// and the AIA's -OTLN, -BNDY, -PITS, -DRAN, ...): a frozen or hidden layer never.
+function siteRoleGuess(name, hidden) {
+  if (hidden) return "none";
+  if (/(^|[-_ ])(OTLN|BNDY)([-_ ]|$)|outline|boundary|wall|site/i.test(name)) return "outline";
+  if (/glaz|window|door|opening|(^|[-_ ])(WIND|DOOR)([-_ ]|$)/i.test(name)) return "opening";
+  if (/(^|[-_ ])(PITS?|DRAN|POND|PLAY|PLNT)([-_ ]|$)|pit|drain|zone|planter|pond|play/i.test(name)) return "zone";
+  return "none";
 }
 
 function renderSiteLayers() {
+  const guesses = siteDrawing.layers.map((l) => siteRoleGuess(l.name, siteDrawing.hidden.includes(l.name)));
+  // One outline: the first layer guessed so, else the first layer that is not hidden.
+  const outlines = guesses.map((g, i) => (g === "outline" ? i : -1)).filter((i) => i >= 0);
+  guesses.forEach((g, i) => { if (g === "outline" && i !== outlines[0]) guesses[i] = "none"; });
+  if (!outlines.length) {
+    const first = siteDrawing.layers.findIndex((l) => !siteDrawing.hidden.includes(l.name));
+    if (first >= 0 && guesses[first] === "none") guesses[first] = "outline";
+  }
   const rows = siteDrawing.layers.map((l, i) => {
-    const guess = siteRoleGuess(l.name, i === 0);
+    const guess = guesses[i];
+    const hidden = siteDrawing.hidden.includes(l.name) ? " (frozen or off in the drawing)" : "";
     const options = ["none", "outline", "opening", "zone"].map((r) =>
       `<option value="${r}"${r === guess ? " selected" : ""}>${
         { none: "not used", outline: "the outline", opening: "openings", zone: "zones kept free" }[r]}</option>`);
-    return `<tr><td>${escapeHtml(l.name)}</td><td>${l.shapes} shapes, ${l.closed} closed</td>` +
+    return `<tr><td>${escapeHtml(l.name)}${hidden}</td><td>${l.shapes} shapes, ${l.closed} closed</td>` +
       `<td><select data-layer="${i}" aria-label="Role of layer ${escapeHtml(l.name)}">${options.join("")}</select></td></tr>`;
   });
   $("site-layers").innerHTML = rows.length
@@ -50,6 +62,7 @@ async function readSite(file) {
   try {
     const answer = await postSite({});
     siteDrawing.layers = answer.layers;
+    siteDrawing.hidden = answer.hidden || [];
     showError("");
     $("site-summary").textContent = `${answer.file}: ${answer.format}, units ${answer.units || "not said"}` +
       (answer.notes.length ? `; ${answer.notes.join("; ")}` : "");
@@ -71,8 +84,12 @@ async function applySite() {
     showError("Give exactly one layer as the outline: the one that holds the surface's outline");
     return;
   }
+  // The drawing is read against the recipe, not against a drawing read before (its outline and
+  // zones would lie off the recipe's floor); both come back if this one is refused.
+  const before = { sets: state.siteSets, zones: state.zones };
   try {
-    state.siteSets = [];  // the drawing is read against the recipe, not a drawing read before
+    state.siteSets = [];
+    state.zones = [];
     const answer = await postSite({ outline: roles.outline[0], openings: roles.opening, zones: roles.zone });
     state.siteSets = answer.site.sets;
     state.zones = answer.site.zones;
@@ -86,6 +103,7 @@ async function applySite() {
     await regenerate();
     applyFixedSize();
   } catch (err) {
+    if (!state.siteSets.length) state.siteSets = before.sets, state.zones = before.zones;
     showError(err.message);
   }
 }

@@ -220,18 +220,40 @@ function keepZoneEmpty() {
   box.value = (box.value.trim() ? box.value.trim() + '\n' : '') + `empty=${mm.join(',')} mm`;
 }
 
+// A zone's size as a site team reads it, to the millimetre: a round one by its diameter, else
+// the extent of its edges, arcs included (a vertex [x, y, bulge] starts an arc).
+function zoneSize(polygon) {
+  const m = (mm) => `${Number((mm / 1000).toFixed(3))}`;
+  if (polygon.length === 2 && polygon.every((p) => Math.abs(p[2] || 0) === 1))
+    return `round, ⌀ ${m(Math.hypot(polygon[1][0] - polygon[0][0], polygon[1][1] - polygon[0][1]))} m`;
+  const xs = [], ys = [];
+  polygon.forEach((p, i) => {
+    const q = polygon[(i + 1) % polygon.length], bulge = p[2] || 0;
+    xs.push(p[0]), ys.push(p[1]);
+    if (!bulge) return;
+    // Points along the arc: the chord's middle pushed out by the sagitta, at 32 steps.
+    const sweep = 4 * Math.atan(bulge), dx = q[0] - p[0], dy = q[1] - p[1];
+    const chord = Math.hypot(dx, dy), r = chord / (2 * Math.sin(Math.abs(sweep) / 2));
+    const offset = (chord * (1 - bulge * bulge)) / (4 * bulge);
+    const cx = (p[0] + q[0]) / 2 - (dy / chord) * offset, cy = (p[1] + q[1]) / 2 + (dx / chord) * offset;
+    const start = Math.atan2(p[1] - cy, p[0] - cx);
+    for (let k = 1; k < 32; ++k) {
+      xs.push(cx + r * Math.cos(start + (sweep * k) / 32));
+      ys.push(cy + r * Math.sin(start + (sweep * k) / 32));
+    }
+  });
+  return `${m(Math.max(...xs) - Math.min(...xs))} × ${m(Math.max(...ys) - Math.min(...ys))} m`;
+}
+
 function renderZoneList() {
   const list = $('zone-list');
   list.textContent = '';
   (state.zones || []).forEach((z, i) => {
     const row = document.createElement('div');
     row.className = 'row';
-    const xs = z.polygon.map((p) => p[0]), ys = z.polygon.map((p) => p[1]);
-    const w = (Math.max(...xs) - Math.min(...xs)) / 1000,
-          h = (Math.max(...ys) - Math.min(...ys)) / 1000;
     const text = document.createElement('span');
     text.textContent =
-        `${z.name}: ${z.rule === 'value' ? 'value ' + z.value : 'kept free'}, ${w} × ${h} m`;
+        `${z.name}: ${z.rule === 'value' ? 'value ' + z.value : 'kept free'}, ${zoneSize(z.polygon)}`;
     const remove = document.createElement('button');
     remove.textContent = 'remove';
     remove.setAttribute('aria-label', `Remove zone ${z.name}`);

@@ -1,6 +1,7 @@
 // What the page's workers share (importScripts): one request at a time, a newer one aborting
 // the one before it, and a failed answer's JSON "error" as its message.
 "use strict";
+importScripts("api_request.js");
 
 let currentRequest = null;
 
@@ -21,7 +22,7 @@ async function fetchLatest({ id, url }, read) {
   const controller = new AbortController();
   currentRequest = controller;
   try {
-    const response = await fetch(url, { signal: controller.signal });
+    const response = await apiFetch(url, { signal: controller.signal });
     const buffer = await response.arrayBuffer();
     if (!response.ok) self.postMessage({ id, error: errorText(buffer, response.status) });
     else await read(id, buffer, () => !controller.signal.aborted);

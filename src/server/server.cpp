@@ -44,11 +44,35 @@ Params query_params(const std::string& target) {
   return params;
 }
 
+Params request_params(const std::string& target, const std::string& method,
+                      const std::string& body) {
+  Params params = query_params(target);
+  if (method == "POST" && !body.empty()) {
+    Params form = query_params("?" + body);
+    params.insert(form.begin(), form.end());
+  }
+  return params;
+}
+
+namespace {
+Params params_of(const httplib::Request& req) {
+  return request_params(req.target, req.method, req.body);
+}
+}  // namespace
+
 namespace {
 
 // The paths that take a body: a picture to measure, a site drawing.
 constexpr const char* kUpload = "/api/measure";
 constexpr const char* kSiteUpload = "/api/site";
+// The paths whose query may come by POST as the body, where the address would be too long.
+bool takes_query_by_post(const std::string& path) {
+  return path == "/api/generate" || path == "/api/field" || path == "/api/export" ||
+         path == "/api/search" || path == "/api/colours";
+}
+// The query as the body's text: httplib reads a form-encoded body itself, and refuses one over
+// 8 KiB before the handler sees it.
+constexpr const char* kFormType = "text/plain";
 
 // What a request must say in its Host header (and an API request in its Origin): the address
 // the server is bound to, so that a page elsewhere cannot reach it through a DNS name that
@@ -254,6 +278,14 @@ struct Server::Impl {
         [this] { return stopping.load(); });
   }
 
+  // A POST's body is read after the screen, which checked the address's query: its text
+  // is checked here. False: answered 400.
+  bool query_text(const httplib::Request& req, httplib::Response& res) {
+    if (req.method != "POST" || query_is_text(params_of(req))) return true;
+    reply(res, api_error(400, "the query holds bytes that are not UTF-8 text"));
+    return false;
+  }
+
   ApiResponse field_over_socket(const std::string& query) {
     const Params params = query_params("?" + query);
     if (!query_is_text(params))
@@ -285,8 +317,9 @@ struct Server::Impl {
     auto refuse = [&](int status, const std::string& message) {
       HttpServer::close_after_this_request();  // its body, if any, is never read
       if (status == 405)
-        res.set_header("Allow",
-                       req.path == kUpload || req.path == kSiteUpload ? "POST" : "GET, HEAD");
+        res.set_header("Allow", req.path == kUpload || req.path == kSiteUpload ? "POST"
+                                : takes_query_by_post(req.path)                ? "GET, HEAD, POST"
+                                                                               : "GET, HEAD");
       if (api)
         reply(res, api_error(status, message));
       else {
@@ -296,14 +329,22 @@ struct Server::Impl {
       return httplib::Server::HandlerResponse::Handled;
     };
     const bool upload = req.path == kUpload || req.path == kSiteUpload;
-    if (upload ? req.method != "POST" : req.method != "GET" && req.method != "HEAD")
+    const bool form = !upload && req.method == "POST" && takes_query_by_post(req.path);
+    if (form && req.get_header_value("Content-Type").rfind(kFormType, 0) != 0)
+      return refuse(415, "a query sent by POST is its text as the body (Content-Type " +
+                             std::string(kFormType) + "), not '" +
+                             req.get_header_value("Content-Type").substr(0, 100) + "'");
+    if (upload ? req.method != "POST" : req.method != "GET" && req.method != "HEAD" && !form)
       return refuse(
           405, upload ? "a picture to measure or a site drawing is sent by POST, not " + req.method
-                      : "the server takes GET requests only (and POST to " + std::string(kUpload) +
-                            " and " + kSiteUpload + "), not " + req.method);
+                      : "the server takes GET requests (their query also by POST as the "
+                        "body), and POST to " +
+                            std::string(kUpload) + " and " + kSiteUpload + "; not " + req.method);
     // A body is read only after this: its length is checked first, from the header.
     const bool chunked = req.has_header("Transfer-Encoding");
-    const uint64_t limit = upload ? config.api.limits.max_upload_bytes : config.max_body_bytes;
+    const uint64_t limit = upload ? config.api.limits.max_upload_bytes
+                           : form ? config.max_query_bytes
+                                  : config.max_body_bytes;
     if (chunked) return refuse(411, "send the body with a Content-Length, not in chunks");
     const std::string length = req.get_header_value("Content-Length");
     uint64_t bytes = 0;
@@ -313,11 +354,13 @@ struct Server::Impl {
         return refuse(400, "Content-Length '" + length + "' is not a whole number");
     }
     // httplib reads no body for a GET: left in the connection, it would be read as a request.
-    if (!upload && bytes > 0)
+    if (!upload && !form && bytes > 0)
       return refuse(400,
                     "a " + req.method + " request carries no body (Content-Length " + length + ")");
     if (bytes > limit)
-      return refuse(413, std::string(upload ? "the picture" : "the request's body") +
+      return refuse(413, std::string(upload ? "the picture"
+                                     : form ? "the query"
+                                            : "the request's body") +
                              " is larger than " + std::to_string(limit >> 10) + " KiB");
     if (!host_allowed(req.get_header_value("Host")))
       return refuse(403, "this server answers requests addressed to " +
@@ -366,30 +409,45 @@ struct Server::Impl {
     http.Get("/api/recipe", [this](const httplib::Request&, httplib::Response& res) {
       run_in(light_slot, res, [&] { return api_recipe(config.api); });
     });
-    http.Get("/api/colours", [this](const httplib::Request& req, httplib::Response& res) {
-      reply(res, api_colours(query_params(req.target)));
-    });
-    http.Get("/api/generate", [this](const httplib::Request& req, httplib::Response& res) {
-      const Params params = query_params(req.target);
+    // Each takes its query from the address, or by POST as the body (request_params).
+    const auto colours = [this](const httplib::Request& req, httplib::Response& res) {
+      if (!query_text(req, res)) return;
+      reply(res, api_colours(params_of(req)));
+    };
+    const auto generate = [this](const httplib::Request& req, httplib::Response& res) {
+      if (!query_text(req, res)) return;
+      const Params params = params_of(req);
       run_in(api_generate_is_light(config.api, params) ? light_slot : slots, res,
              [&] { return api_generate(config.api, params); });
-    });
+    };
     // The page's canvas has a slot of its own, so that a download or the 3-D view's model
     // being made never holds up a redraw (a field is at most max_cells: tens of ms).
-    http.Get("/api/field", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto field = [this](const httplib::Request& req, httplib::Response& res) {
+      if (!query_text(req, res)) return;
       run_in(
-          field_slot, res, [&] { return api_field(config.api, query_params(req.target)); },
-          Footprint::small);
-    });
+          field_slot, res, [&] { return api_field(config.api, params_of(req)); }, Footprint::small);
+    };
+    const auto export_file = [this](const httplib::Request& req, httplib::Response& res) {
+      if (!query_text(req, res)) return;
+      heavy(res, [&] { return api_export(config.api, params_of(req)); });
+    };
+    const auto search = [this](const httplib::Request& req, httplib::Response& res) {
+      if (!query_text(req, res)) return;
+      heavy(res, [&] { return api_search(config.api, params_of(req)); });
+    };
+    for (const auto& [path, handler] :
+         std::initializer_list<std::pair<const char*, httplib::Server::Handler>>{
+             {"/api/colours", colours},
+             {"/api/generate", generate},
+             {"/api/field", field},
+             {"/api/export", export_file},
+             {"/api/search", search}}) {
+      http.Get(path, handler);
+      http.Post(path, handler);
+    }
     // The same fields over one open socket, without a fetch's cost on each change.
     http.Get("/api/field-socket", [this](const httplib::Request& req, httplib::Response& res) {
       field_socket(req, res);
-    });
-    http.Get("/api/export", [this](const httplib::Request& req, httplib::Response& res) {
-      heavy(res, [&] { return api_export(config.api, query_params(req.target)); });
-    });
-    http.Get("/api/search", [this](const httplib::Request& req, httplib::Response& res) {
-      heavy(res, [&] { return api_search(config.api, query_params(req.target)); });
     });
     http.Post(kUpload, [this](const httplib::Request& req, httplib::Response& res) {
       heavy(res, [&] { return api_measure(config.api, query_params(req.target), req.body); });
@@ -402,13 +460,14 @@ struct Server::Impl {
       const bool get = req.method == "GET";
       reply(
           res,
-          api_error(
-              get ? 404 : 405,
-              get ? "no such endpoint " + req.path +
-                        "; the API has /api/recipe, /api/colours, /api/generate, /api/field, "
-                        "/api/export, "
-                        "/api/search, /api/measure and /api/site"
-                  : "the API takes GET requests only (and POST to " + std::string(kUpload) + ")"));
+          api_error(get ? 404 : 405,
+                    get ? "no such endpoint " + req.path +
+                              "; the API has /api/recipe, /api/colours, /api/generate, /api/field, "
+                              "/api/export, "
+                              "/api/search, /api/measure and /api/site"
+                        : "the API takes GET requests (their query also by POST as the body), and "
+                          "POST to " +
+                              std::string(kUpload) + " and " + kSiteUpload));
     };
     http.Get(R"(/api/.*)", not_found);
     http.set_mount_point("/", config.web_root.string());

@@ -25,7 +25,10 @@ struct ServerConfig {
   ApiContext api;
   std::filesystem::path web_root;     // index.html, app.js, style.css
   int workers = 2;                    // generate, export and search requests at once
-  size_t max_body_bytes = 64 * 1024;  // any request's body but a picture's (api.limits)
+  size_t max_body_bytes = 64 * 1024;  // any request's body but a picture's or a query's
+  // A query sent by POST as a form body (the page's, once its address would be too long: an
+  // outline of 10,000 vertices is about 400 KB).
+  size_t max_query_bytes = 4 * 1024 * 1024;
   // A heavy request that runs longer is stopped and answered 503; so is one whose client
   // has gone away.
   double request_seconds = 60;
@@ -58,6 +61,10 @@ class Server {
 // The query of a request target ("/api/generate?a=1&b=c=d"), percent-decoded; a value keeps
 // every '=' after the first, so targets such as target=ratio:dark=0.1 need no escaping.
 Params query_params(const std::string& target);
+// The query of a request: its address's, and for a POST its body's as well (the same
+// key=value&... text, sent as text/plain).
+Params request_params(const std::string& target, const std::string& method,
+                      const std::string& body);
 
 // Where the page's files are: beside the program (build tree) or in ../share (installed).
 std::filesystem::path find_web_root(const std::filesystem::path& executable);

@@ -501,6 +501,56 @@ try {
                                      document.querySelectorAll('#surface-overlay polygon.zone.exclude').length === 2);
     check(await page.locator('#error').isHidden(), 'the courtyard laid from its drawing generates without error');
     await page.locator('#canvas-wrap').screenshot({ path: path.join(shots, '7-site-from-dxf.png') });
+    // An office's site: its outline's top a SPLINE through 300 fit points (thousands of vertices
+    // once drawn, far too long for an address: the page sends its query by POST), a frozen
+    // older boundary listed as such and never guessed, the pit listed by its diameter.
+    const fit = Array.from({ length: 300 }, (_, k) => {
+      const t = k / 299;
+      return [7000 + 7000 * Math.cos(Math.PI * t), 6000 * Math.sin(Math.PI * t) * (1 + 0.08 * Math.sin(12 * Math.PI * t))];
+    });
+    const groups = (pairs) => pairs.map(([c, v]) => `${c}\n${v}\n`).join('');
+    const dxf = groups([[0, 'SECTION'], [2, 'HEADER'], [9, '$INSUNITS'], [70, 4], [0, 'ENDSEC'],
+      [0, 'SECTION'], [2, 'TABLES'], [0, 'TABLE'], [2, 'LAYER'],
+      [0, 'LAYER'], [2, 'L-SITE-BNDY'], [70, 0], [62, 7], [0, 'LAYER'], [2, 'L-SITE-BNDY-OLD'], [70, 1], [62, 7],
+      [0, 'LAYER'], [2, 'L-PLNT-PITS'], [70, 0], [62, 3], [0, 'ENDTAB'], [0, 'ENDSEC'],
+      [0, 'SECTION'], [2, 'ENTITIES'],
+      [0, 'LINE'], [5, '10'], [8, 'L-SITE-BNDY'], [10, 0], [20, 0], [30, 0], [11, 14000], [21, 0], [31, 0],
+      [0, 'SPLINE'], [5, '11'], [8, 'L-SITE-BNDY'], [70, 8], [71, 3], [74, 300],
+      ...fit.flatMap(([x, y]) => [[11, x.toFixed(4)], [21, y.toFixed(4)], [31, 0]]),
+      [0, 'LWPOLYLINE'], [5, '12'], [8, 'L-SITE-BNDY-OLD'], [90, 4], [70, 1],
+      [10, -500], [20, -500], [10, 14500], [20, -500], [10, 14500], [20, 7000], [10, -500], [20, 7000],
+      [0, 'CIRCLE'], [5, '13'], [8, 'L-PLNT-PITS'], [10, 7000], [20, 2000], [30, 0], [40, 750],
+      [0, 'ENDSEC'], [0, 'EOF']]);
+    const spline = path.join(work, 'office-spline.dxf');
+    await writeFile(spline, dxf);
+    await page.setInputFiles('#site-file', spline);
+    await page.waitForFunction(() => document.querySelectorAll('#site-layers select').length === 3);
+    check(await page.inputValue('select[aria-label="Role of layer L-SITE-BNDY"]') === 'outline' &&
+          await page.inputValue('select[aria-label="Role of layer L-SITE-BNDY-OLD"]') === 'none' &&
+          await page.inputValue('select[aria-label="Role of layer L-PLNT-PITS"]') === 'zone' &&
+          (await page.textContent('#site-layers')).includes('L-SITE-BNDY-OLD (frozen or off in the drawing)'),
+          'NCS layer names are guessed, and the frozen older boundary is shown as such and not guessed');
+    const posted = [], tooLong = [];
+    const onRequest = (r) => {
+      if (r.method() === 'POST' && /\/api\/(field|generate|export)$/.test(r.url())) posted.push(r.postData().length);
+    };
+    const onResponse = (r) => { if (r.status() === 414) tooLong.push(r.url()); };
+    page.on('request', onRequest);
+    page.on('response', onResponse);
+    await page.click('#site-apply');
+    await page.waitForFunction(() => document.querySelector('#site-summary').textContent.includes('outline 14,000 x '));
+    await page.waitForFunction(() => document.querySelector('#command').textContent.includes('layout.outline=') &&
+                                     document.querySelector('#error').hidden &&
+                                     document.querySelectorAll('#surface-overlay polygon.zone.exclude').length === 1,
+                               null, { timeout: 30000 });
+    page.off('request', onRequest);
+    page.off('response', onResponse);
+    check(posted.length > 0 && Math.max(...posted) > 20000 && !tooLong.length,
+          `a site with a 300-point spline outline is laid, its long query sent by POST (${posted.length} requests, ` +
+          `up to ${Math.max(0, ...posted)} bytes) and none refused as too long`);
+    check((await page.textContent('#zone-list')).includes('L-PLNT-PITS: kept free, round, ⌀ 1.5 m'),
+          'the round pit is listed by its diameter');
+    await page.locator('#canvas-wrap').screenshot({ path: path.join(shots, '7b-site-spline.png') });
   } finally {
     yard.server.kill('SIGINT');
   }
