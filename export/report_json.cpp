@@ -184,7 +184,7 @@ json facades_json(const Layout& layout) {
 }
 
 // Where the layout lies in the drawing it was read from: the datum's drawing coordinates in the
-// drawing's units, and the outline's true area and extent, to check a reading against CAD's.
+// drawing's units.
 json site_drawing_json(const Layout& layout) {
   const SiteFrame& f = *layout.site_frame;
   json j = {{"file", f.file},
@@ -192,14 +192,16 @@ json site_drawing_json(const Layout& layout) {
             {"mm_per_unit", f.unit_mm},
             {"datum", {f.datum[0], f.datum[1]}},
             {"datum_note", "the layout's (0, 0) as a point of the drawing, in its units"}};
-  if (!layout.outline_contour.empty() || !layout.outline.empty()) {
-    const Contour c =
-        !layout.outline_contour.empty() ? layout.outline_contour : contour_of(layout.outline);
-    const Rect b = contour_bounds(c);
-    j["outline_area_m2"] = contour_area(c) / 1e6;
-    j["outline_box_mm"] = {b.x, b.y, b.right(), b.top()};
-  }
   return j;
+}
+
+// The outline read from the drawing, with its true arcs: its area and extent, to check a
+// reading against CAD's.
+json site_outline_json(const Layout& layout) {
+  const Contour c =
+      !layout.outline_contour.empty() ? layout.outline_contour : contour_of(layout.outline);
+  const Rect b = contour_bounds(c);
+  return {{"area_m2", contour_area(c) / 1e6}, {"box_mm", {b.x, b.y, b.right(), b.top()}}};
 }
 
 }  // namespace
@@ -213,6 +215,8 @@ json report_to_json(const Report& report, const Layout& layout) {
                  {"rule_violations", layout.violations}};
   if (!layout.site.empty()) j["layout"]["site"] = layout.site;
   if (layout.site_frame) j["layout"]["site_drawing"] = site_drawing_json(layout);
+  if (!layout.site.empty() && (!layout.outline_contour.empty() || !layout.outline.empty()))
+    j["layout"]["site_outline"] = site_outline_json(layout);
   if (!layout.frames.empty()) j["layout"]["facades"] = facades_json(layout);
   if (!layout.sheets.empty()) {
     json sheets = json::array();

@@ -120,6 +120,9 @@ class Reader {
         continue;
       }
       if (r.type == "ENDSEC") {
+        // Variables written after the header's ENDSEC (old dxflib writers, LibreCAD's library)
+        // are the header's still, as ezdxf and CAD read them.
+        if (section == "HEADER") header(r);
         finish_polyline();
         section.clear();
         continue;
