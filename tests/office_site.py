@@ -18,6 +18,7 @@ drain is a strip 150 mm wide; the outline picked by a point on the layer that ho
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -150,8 +151,8 @@ def main():
     with open(os.path.join(work, "site.toml"), "w") as f:
         f.write(RECIPE.format(x=E + 20, y=N + 15))
     out = os.path.join(work, "out")
-    run = subprocess.run([CURDLE, "generate", os.path.join(work, "site.toml"), "--out", out],
-                         capture_output=True, text=True)
+    run = subprocess.run([CURDLE, "generate", os.path.join(work, "site.toml"), "--out", out, "--outputs",
+                          "report.json,layout.dxf,layout-site.dxf,layout.pdf"], capture_output=True, text=True)
     said = run.stdout + run.stderr
     if run.returncode != 0:
         print("the office site was refused:\n" + said)
@@ -189,6 +190,7 @@ def main():
         area = 0.5 * abs(sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(pts, pts[1:] + pts[:1])))
         check(abs(area - 150 * (25000 + 9000)) < 1, f"the drain covers {area:.0f} mm², not 150 x 34,000")
     back_onto_the_drawing(work, out)
+    from_inkscape(work, said)
     georeferenced_from_the_drawing(work)
     if problems:
         print("\n".join(problems))
@@ -229,6 +231,67 @@ def back_onto_the_drawing(work, out):
                           capture_output=True, text=True).stdout
     check("datum (0, 0) = E 529,997.000 N 180,000.000 m in site.dxf" in " ".join(text.split()),
           "sheet 1 does not state the datum's survey coordinates")
+
+
+def inkscape_svg(path):
+    """The same site as Inkscape saves it: mm user units, y down, a layer a group with
+    inkscape:groupmode="layer" and its label, inner groups with automatic ids (the pits split over
+    two), the spline edge as the Bézier curves ezdxf decomposes it into."""
+    h = 35000.0  # the page's height, mm: y is turned down from it
+
+    def p(x, y):  # drawing metres on the grid to the page's mm
+        return f"{(x - DATUM[0]) * 1000:.4f},{h - (y - DATUM[1]) * 1000:.4f}"
+
+    spline = fit_points_to_cad_cv([(x, y, 0) for x, y in FIT])
+    curve = " ".join("C " + " ".join(p(q.x, q.y) for q in seg[1:]) for seg in spline.bezier_decomposition())
+    r = (15 ** 2 + 3 ** 2) / (2 * 3) * 1000
+    # North edge: the LWPOLYLINE's arc (bulge 0.2 over 20 m) then a line; west edge: the arc.
+    north_r = 20000 * (1 + 0.2 ** 2) / (4 * 0.2)
+    outline = (f"M {p(E, N)} L {p(E + 40, N)} {curve} A {north_r:.4f},{north_r:.4f} 0 0 0 {p(E + 20, N + 30)} "
+               f"L {p(E, N + 30)} A {r:.4f},{r:.4f} 0 0 0 {p(E, N)} Z")
+    pit = lambda x, y, rr: (f'<circle cx="{(x - DATUM[0]) * 1000:.4f}" cy="{h - (y - DATUM[1]) * 1000:.4f}" r="{rr}"/>'
+                            f'<circle cx="{(x - DATUM[0]) * 1000:.4f}" cy="{h - (y - DATUM[1]) * 1000:.4f}" r="200"/>')
+    drain = " ".join(p(x, y) for x, y in [(E + 5, N + 2.925), (E + 30.075, N + 2.925), (E + 30.075, N + 12),
+                                          (E + 29.925, N + 12), (E + 29.925, N + 3.075), (E + 5, N + 3.075)])
+    svg = f"""<?xml version="1.0" encoding="UTF-8"?>
+<svg xmlns="http://www.w3.org/2000/svg" xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape"
+     width="50000mm" height="{h:.0f}mm" viewBox="0 0 50000 {h:.0f}">
+  <g inkscape:groupmode="layer" inkscape:label="L-SITE-BNDY" id="layer1">
+    <g id="g640"><path id="path641" d="{outline}" fill="none" stroke="black"/></g>
+  </g>
+  <g inkscape:groupmode="layer" inkscape:label="L-PLNT-PITS" id="layer2">
+    <g id="g812">{pit(E + 8, N + 8, 750)}{pit(E + 14, N + 20, 750)}</g>
+    <g id="g900"><g id="g901">{pit(E + 20, N + 20, 900)}</g></g>
+  </g>
+  <g inkscape:groupmode="layer" inkscape:label="C-DRAN" id="layer3"><path id="path77" d="M {drain} Z"/></g>
+  <text x="10" y="10">Site plan</text>
+</svg>
+"""
+    with open(path, "w") as f:
+        f.write(svg)
+
+
+def from_inkscape(work, said_from_dxf):
+    """The same site from Inkscape's SVG, by its layers' labels: the same outline, pits and drain."""
+    inkscape_svg(os.path.join(work, "site.svg"))
+    with open(os.path.join(work, "site.toml")) as f:
+        recipe = f.read()
+    recipe = re.sub(r'outline = \{[^}]*\}', 'outline = "L-SITE-BNDY"', recipe).replace('"site.dxf"', '"site.svg"')
+    with open(os.path.join(work, "svg.toml"), "w") as f:
+        f.write(recipe)
+    run = subprocess.run([CURDLE, "generate", os.path.join(work, "svg.toml"), "--out", os.path.join(work, "svg"),
+                          "--outputs", "report.json"], capture_output=True, text=True)
+    said = run.stdout + run.stderr
+    check(run.returncode == 0, "Inkscape's SVG of the site is refused: " + said[:400])
+    if run.returncode != 0:
+        return
+    check("3 L-PLNT-PITS exclude" in said and "C-DRAN exclude" in said,
+          "the SVG's pits or drain are not read by their layers' labels: " + said[:400])
+    size = lambda text: re.search(r"outline ([\d,.]+) x ([\d,.]+) mm", text)
+    a, b = size(said_from_dxf), size(said)
+    check(a and b and all(abs(float(a.group(k).replace(",", "")) - float(b.group(k).replace(",", ""))) < 0.2
+                          for k in (1, 2)),
+          f"the SVG's outline ({b and b.group(0)}) is not the DXF's ({a and a.group(0)})")
 
 
 def georeferenced_from_the_drawing(work):

@@ -273,5 +273,31 @@ TEST(SiteTest, AnOpenPieceInABlockIsNamedWithItsBlockAndInsert) {
       << m;
 }
 
+// Every contour a drawing gives passes a recipe polygon's checks before anything is cut along
+// it: a sliver (its corners meet once in mm), a line, a bow tie are refused by name, where CGAL
+// would have been handed them (a sliver crashed its sweep).
+TEST(SiteTest, DegenerateZonesAndOpeningsAreRefused) {
+  struct Case {
+    std::vector<std::array<double, 3>> zone;
+    const char* says;
+  };
+  const Case cases[] = {
+      {{{1000, 1000, 0}, {5000, 1000, 0}, {5000, 1000.0000001, 0}, {1000, 1000.0000001, 0}},
+       "encloses 0 mm², less than the 1 mm² a zone needs"},
+      {{{1000, 1000, 0}, {3000, 1000, 0}, {5000, 1000, 0}}, "encloses 0 mm²"},
+      {{{1000, 1000, 0}, {5000, 3000, 0}, {5000, 1000, 0}, {1000, 4000, 0}},
+       "crosses or touches itself at ("},
+  };
+  for (const Case& c : cases) {
+    DxfText dxf;
+    dxf.begin_entities_only()
+        .lwpolyline("A-OTLN", "1", {{0, 0, 0}, {10000, 0, 0}, {10000, 8000, 0}, {0, 8000, 0}}, true)
+        .lwpolyline("TREE_PIT", "2", c.zone, true);
+    const std::string m = refusal(dxf, courtyard_map(true));
+    EXPECT_NE(m.find("the zone LWPOLYLINE 2 on layer \"TREE_PIT\""), std::string::npos) << m;
+    EXPECT_NE(m.find(c.says), std::string::npos) << m;
+  }
+}
+
 }  // namespace
 }  // namespace curdle::site

@@ -291,6 +291,28 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
   return kept;
 }
 
+// The checks a recipe's own polygon passes, before any geometry is cut along a drawn one: at
+// least three corners, edges that do not cross or touch, and an area of a square millimetre at
+// least (a sliver 1e-7 mm wide, or corners that meet once in mm, is none).
+constexpr double kLeastArea = 1;  // mm²
+
+void check_simple(const Polygon& mm, const Closed& c, const std::string& layer, const char* role,
+                  const std::string& file, int precision) {
+  const double area = mm.size() < 3 ? 0 : polygon_area(mm);
+  if (!(area >= kLeastArea))
+    throw SiteError(fmt::format(
+        "{}: the {} {} on layer \"{}\" (at {} in the drawing) encloses {} mm², less than the "
+        "{:g} mm² a {} needs: it is a line or a sliver; redraw it as a closed shape, or take it "
+        "off the layer",
+        file, role, c.handles, layer, at(c.path.front(), precision), fmt::format("{:.3g}", area),
+        kLeastArea, role));
+  if (const auto crossing = first_crossing(mm))
+    throw SiteError(fmt::format(
+        "{}: the {} {} on layer \"{}\" crosses or touches itself at ({:g}, {:g}) mm from the "
+        "layout's datum; a {} goes round its area once: redraw it",
+        file, role, c.handles, layer, (*crossing)[0], (*crossing)[1], role));
+}
+
 // "3 shapes inside others on layer L-PLNT-PITS passed over (...)": what a layer held besides
 // its shapes.
 void note_passed_over(const PassedOver& p, const std::string& layer,
@@ -434,6 +456,7 @@ void read_holes(const Drawing& drawing, const LayerMap& map, const Polygon& outl
   auto place = [&](const Closed& c, const std::string& layer, const char* role) {
     Contour mm = counter_clockwise(to_mm(c.path, datum, unit_mm));
     const Polygon p = flatten(mm, map.chord_tolerance);
+    check_simple(p, c, layer, role, map.file, drawing.precision);
     const bool any_inside = std::any_of(
         p.begin(), p.end(), [&](const auto& v) { return contains(outline, v[0], v[1]); });
     const bool holds_outline = !outline.empty() && contains(p, outline[0][0], outline[0][1]);
@@ -579,9 +602,11 @@ Site site_from(const Drawing& drawing, const LayerMap& map) {
         "outline goes round the surface once",
         map.file, outline.handles, map.outline, (*crossing)[0] / mm + datum[0],
         (*crossing)[1] / mm + datum[1]));
-  if (flat.size() < 3 || polygon_area(flat) <= 0)
-    throw SiteError(fmt::format("{}: the outline {} on layer \"{}\" encloses no area", map.file,
-                                outline.handles, map.outline));
+  if (flat.size() < 3 || !(polygon_area(flat) >= kLeastArea))
+    throw SiteError(
+        fmt::format("{}: the outline {} on layer \"{}\" encloses no area (under {:g} "
+                    "mm²)",
+                    map.file, outline.handles, map.outline, kLeastArea));
   if (extent.x < -1e-6 || extent.y < -1e-6)
     throw SiteError(
         fmt::format("{}: the outline reaches ({:g}, {:g}) mm left of or below the "
