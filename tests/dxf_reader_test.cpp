@@ -246,5 +246,14 @@ TEST(DxfReaderTest, MirroredBlockInsertsArePlacedInThePlan) {
   EXPECT_EQ(s.insert_handle, "30");
 }
 
+// A name with control characters (an ESC sequence that would clear a terminal) is shown
+// escaped wherever it is printed.
+TEST(DxfReaderTest, ControlCharactersInNamesAreShownEscaped) {
+  DxfText dxf;
+  dxf.begin_entities_only().circle("X\x1b[2J\x07", "1", 0, 0, 5);
+  const Drawing d = read_dxf(dxf.text(), "site.dxf", {});
+  EXPECT_EQ(d.shapes.at(0).layer, "X\\x1B[2J\\x07");
+}
+
 }  // namespace
 }  // namespace curdle::site

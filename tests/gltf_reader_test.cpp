@@ -220,5 +220,25 @@ TEST(GltfReader, ANanVertexIsNamedAsSuch) {
   }
 }
 
+// tinygltf's JSON parser recurses a level at a time: 20,000 nested arrays overflowed the stack
+// (12,000 were refused); the nesting is measured before the parser sees it.
+TEST(GltfReader, DeeplyNestedJsonIsRefusedBeforeParsing) {
+  const std::string deep = R"({"asset": {"version": "2.0"}, "extras": )" + std::string(20000, '[') +
+                           std::string(20000, ']') + "}";
+  try {
+    read_gltf(deep, "deep.gltf");
+    ADD_FAILURE() << "read";
+  } catch (const SiteError& e) {
+    EXPECT_NE(std::string(e.what()).find("nests arrays or objects more than 64 deep"),
+              std::string::npos)
+        << e.what();
+  }
+  // Brackets inside strings are text, not nesting.
+  const std::string quoted = R"({"asset": {"version": "2.0", "generator": ")" +
+                             std::string(100, '[') +
+                             R"("}, "scenes": [{"nodes": []}], "scene": 0})";
+  EXPECT_NO_THROW(read_gltf(quoted, "quoted.gltf"));
+}
+
 }  // namespace
 }  // namespace curdle::site

@@ -231,6 +231,9 @@ def back_onto_the_drawing(work, out):
                           capture_output=True, text=True).stdout
     check("datum (0, 0) = E 529,997.000 N 180,000.000 m in site.dxf" in " ".join(text.split()),
           "sheet 1 does not state the datum's survey coordinates")
+    # One zone, and so one label, a pit: the trunks inside them are no zones of their own.
+    check("L-PLNT-PITS 3" in text and "L-PLNT-PITS 4" not in text,
+          "sheet 1 does not label each of the three pits once")
 
 
 def inkscape_svg(path):

@@ -41,4 +41,15 @@ TEST(Text, NamesThatWouldNotShowAsTheyReadAreUnsafe) {
 }
 
 }  // namespace
+TEST(Text, ForeignNamesAreShownWithTheirControlsEscaped) {
+  EXPECT_EQ(shown_name("A-OTLN"), "A-OTLN");
+  EXPECT_EQ(shown_name("Gr\xC3\xA8s"), "Gr\xC3\xA8s");      // letters as they are
+  EXPECT_EQ(shown_name("X\x1b[2J\x07"), "X\\x1B[2J\\x07");  // a terminal's escape
+  EXPECT_EQ(shown_name("a\xE2\x80\xAE"
+                       "b"),
+            "a\\u202Eb");                         // right-to-left override
+  EXPECT_EQ(shown_name("\xC2\x9B"), "\\u009B");   // C1's CSI
+  EXPECT_EQ(shown_name("\xFF"), "\xEF\xBF\xBD");  // not UTF-8
+}
+
 }  // namespace curdle

@@ -1,5 +1,7 @@
 #include "curdle/text.h"
 
+#include <fmt/format.h>
+
 #include <cstdint>
 #include <cstdio>
 
@@ -132,6 +134,26 @@ std::string unsafe_text(std::string_view text) {
     if (is_noncharacter(c)) return "a non-character (" + u_plus(c) + ")";
   }
   return {};
+}
+
+std::string shown_name(std::string_view text) {
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    const size_t start = i;
+    const uint32_t c = next_code_point(text, i);
+    const bool hidden = c < 0x20 || c == 0x7F || (c >= 0x80 && c <= 0x9F) ||
+                        (c >= 0x202A && c <= 0x202E) || (c >= 0x2066 && c <= 0x2069) ||
+                        (c >= 0x200B && c <= 0x200F) || c == 0x061C || c == 0x2060 || c == 0xFEFF;
+    if (c < 0x80 && hidden)
+      out += fmt::format("\\x{:02X}", c);
+    else if (hidden)
+      out += fmt::format("\\u{:04X}", c);
+    else if (c == 0xFFFD && i - start == 1)
+      out += "\xEF\xBF\xBD";  // a byte that is not UTF-8: U+FFFD
+    else
+      out.append(text, start, i - start);
+  }
+  return out;
 }
 
 uint32_t next_code_point(std::string_view text, size_t& i) {

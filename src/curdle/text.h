@@ -33,4 +33,10 @@ void append_utf8(std::string& out, uint32_t code_point);
 // characters (zero-width spaces and joiners) and non-characters (U+FFFF).
 std::string unsafe_text(std::string_view text);
 
+// A name read from someone else's file (a drawing's layer, a model's node) as it may be shown
+// in a terminal, a message or a drawing: control characters (C0, DEL, C1), bidirectional
+// controls and invisible characters written as \x1B or \u202E, bytes that are not UTF-8 as
+// U+FFFD; everything else as it is.
+std::string shown_name(std::string_view text);
+
 }  // namespace curdle

@@ -13,6 +13,7 @@
 #include <optional>
 #include <set>
 
+#include "curdle/stop.h"
 #include "curdle/text.h"
 #include "site/curves.h"
 #include "site/dxf_checks.h"
@@ -56,7 +57,7 @@ std::string decoded_name(std::string_view raw) {
     }
     out += text[i];
   }
-  return out;
+  return shown_name(out);  // a control character in a name never reaches a terminal raw
 }
 
 // A block reference's placement: base point to origin, scale, rotation, then the insertion
@@ -114,6 +115,7 @@ class Reader {
     Record r;
     std::string section;
     while (record(r)) {
+      stop_point();  // the server's budget, a client gone, Python's Ctrl-C
       if (r.type == "SECTION") {
         section = value_of(r, 2).value_or("");
         if (section == "HEADER") header(r);
@@ -225,7 +227,7 @@ class Reader {
   }
 
   void begin_block(const Record& r) {
-    const std::string name(value_of(r, 2).value_or(""));
+    const std::string name = decoded_name(value_of(r, 2).value_or(""));
     block_ = name;
     in_paper_ = name.rfind("*Paper_Space", 0) == 0 || name.rfind("*PAPER_SPACE", 0) == 0;
     if (name == "*Model_Space" || name == "*MODEL_SPACE") block_.clear();
@@ -563,7 +565,7 @@ class Reader {
     const Common c = common(r);
     if (!in_plan(c)) return off_plane(c);
     Insert i;
-    i.block = std::string(value_of(r, 2).value_or(""));
+    i.block = decoded_name(value_of(r, 2).value_or(""));
     i.layer = c.layer;
     i.handle = c.handle;
     i.x = real(r, 10, 0, c.name), i.y = real(r, 20, 0, c.name);
@@ -827,6 +829,7 @@ class Placer {
                       "itself); explode it and save the drawing again",
                       file_, name, kDeepestBlock));
     if (++placements_ > kMostPlacements) throw SiteError(too_many());
+    stop_point();
     for (const Shape& s : it->second.shapes) {
       if (drawing_.shapes.size() >= kMostShapes) throw SiteError(too_many());
       Shape out = depth == 0 ? s : placed(s, p, tolerance_);

@@ -10,6 +10,9 @@
 #include <map>
 #include <utility>
 
+#include "curdle/stop.h"
+#include "curdle/text.h"
+
 namespace curdle::site {
 namespace {
 
@@ -80,11 +83,12 @@ class Reader {
       fail("a node refers to one it does not have, or nests too deep");
     // Nodes shared down the tree multiply: a hostile file could ask for 2^64 visits.
     if (++visits_ > kMostVisits) fail(fmt::format("places nodes more than {} times", kMostVisits));
+    stop_point();
     const tinygltf::Node& n = model_.nodes[static_cast<size_t>(index)];
     const Matrix m = times(parent, local(n));
     const bool named = !n.name.empty() || depth == 0;
     if (named) {
-      const std::string name = n.name.empty() ? fmt::format("node {}", index) : n.name;
+      const std::string name = n.name.empty() ? fmt::format("node {}", index) : shown_name(n.name);
       auto it = std::find(layer_names.begin(), layer_names.end(), name);
       if (it == layer_names.end()) {
         layer_names.push_back(name);
@@ -134,7 +138,8 @@ class Reader {
   }
 
   static std::string name_of(const tinygltf::Node& n, int index) {
-    return n.name.empty() ? fmt::format("node {}", index) : fmt::format("node \"{}\"", n.name);
+    return n.name.empty() ? fmt::format("node {}", index)
+                          : fmt::format("node \"{}\"", shown_name(n.name));
   }
 
   void mesh(size_t index, const Matrix& m, std::vector<std::array<Point, 3>>& out,
@@ -266,11 +271,52 @@ Contour without_collinear(Contour c) {
   return c;
 }
 
+// The model's JSON: a .gltf's whole text, a .glb's first chunk.
+std::string_view json_of(std::string_view bytes) {
+  if (bytes.substr(0, 4) != "glTF") return bytes;
+  if (bytes.size() < 20) return {};
+  uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return bytes.substr(20, std::min<size_t>(length, bytes.size() - 20));
+}
+
+// How deep the JSON's arrays and objects nest, outside its strings, stopping past `most`: the
+// JSON parser recurses once a level, and 20,000 levels overflow the stack before it says no.
+int json_depth(std::string_view json, int most) {
+  int depth = 0, deepest = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+      if (deepest > most) return deepest;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+// A model's JSON nests a few levels (a node's extras perhaps a dozen).
+constexpr int kDeepestJson = 64;
+
 }  // namespace
 
 Drawing read_gltf(std::string_view bytes, const std::string& file) {
   if (bytes.size() > kMostDrawingBytes)
     throw SiteError(fmt::format("{}: larger than {} MB", file, kMostDrawingBytes >> 20));
+  if (json_depth(json_of(bytes), kDeepestJson) > kDeepestJson)
+    throw SiteError(
+        fmt::format("{}: its JSON nests arrays or objects more than {} deep, which no "
+                    "model needs; the file is damaged or hostile: export it again",
+                    file, kDeepestJson));
   tinygltf::TinyGLTF loader;
   // Nothing outside the file: no buffers or images read from disk, no images decoded.
   tinygltf::FsCallbacks none{};

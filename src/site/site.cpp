@@ -11,6 +11,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "curdle/stop.h"
 #include "layout/zone.h"
 #include "site/dxf_reader.h"
 #include "site/gltf_reader.h"
@@ -128,6 +129,7 @@ void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& clos
     return best;
   };
   for (size_t first = 0; first < pieces.size(); ++first) {
+    stop_point();
     if (used[first]) continue;
     used[first] = true;
     Closed c{pieces[first].path,
@@ -250,6 +252,7 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
   };
   std::vector<size_t> outer;
   for (size_t i : order) {
+    stop_point();
     bool nested = false, repeat = false;
     for (size_t o : outer)
       if (holds(o, i)) {

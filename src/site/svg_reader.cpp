@@ -19,6 +19,8 @@
 #include <optional>
 #include <svgpp/svgpp.hpp>
 
+#include "curdle/stop.h"
+#include "curdle/text.h"
 #include "site/curves.h"
 
 namespace curdle::site {
@@ -51,6 +53,8 @@ struct Affine {
   }
 };
 
+// An attribute's value as written; names taken from it are shown_name'd where they become a
+// layer's or a shape's.
 std::string attribute(const xmlNode* node, const char* name, const char* ns = nullptr) {
   xmlChar* v = ns ? xmlGetNsProp(node, reinterpret_cast<const xmlChar*>(name),
                                  reinterpret_cast<const xmlChar*>(ns))
@@ -68,7 +72,7 @@ bool is_svg(const xmlNode* node, const char* name) {
 }
 
 std::string name_of(const xmlNode* node) {
-  const std::string id = attribute(node, "id");
+  const std::string id = shown_name(attribute(node, "id"));
   return fmt::format("<{}> {}", reinterpret_cast<const char*>(node->name),
                      id.empty() ? fmt::format("at line {}", xmlGetLineNo(node)) : "\"" + id + "\"");
 }
@@ -249,6 +253,7 @@ class Walker {
       throw SiteError(fmt::format("{}: nests elements more than {} deep", file_, kDeepest));
     for (const xmlNode* c = node->children; c; c = c->next) {
       if (c->type != XML_ELEMENT_NODE) continue;
+      stop_point();
       if (++elements_ > 4 * kMostShapes)
         throw SiteError(
             fmt::format("{}: holds more than {} elements, more than a site drawing "
@@ -281,6 +286,7 @@ class Walker {
           !xmlStrEqual(c->ns->href, reinterpret_cast<const xmlChar*>(kSvg)))
         continue;
       const std::string tag = reinterpret_cast<const char*>(c->name);
+      stop_point();
       if (attribute(c, "display") == "none") continue;
       if (tag == "defs" || tag == "symbol" || tag == "clipPath" || tag == "mask" ||
           tag == "pattern" || tag == "marker")
@@ -288,14 +294,14 @@ class Walker {
       Affine here = ctm.after(transform_of(c));
       if (tag == "svg") here = here.after(viewport(c, std::nullopt, std::nullopt));
       if (tag == "g" || tag == "a" || tag == "switch" || tag == "svg") {
-        std::string label = attribute(c, "label", kInkscape);
-        const std::string id = attribute(c, "id");
+        std::string label = shown_name(attribute(c, "label", kInkscape));
+        const std::string id = shown_name(attribute(c, "id"));
         const bool is_layer =
             inkscape_layers_ ? attribute(c, "groupmode", kInkscape) == "layer" : depth == 0;
         std::vector<std::string> inner = names;
         if (is_layer) {
           std::string name = label;
-          if (name.empty()) name = attribute(c, "data-name");
+          if (name.empty()) name = shown_name(attribute(c, "data-name"));
           if (name.empty()) name = id;
           walk(c, here, name.empty() ? layer : name, {}, depth + 1, uses);
           continue;
@@ -443,7 +449,7 @@ class Walker {
       Shape s;
       s.layer = layer.empty() ? kRootLayer : layer;
       s.also = also;
-      s.handle = attribute(node, "id");
+      s.handle = shown_name(attribute(node, "id"));
       if (s.handle.empty()) s.handle = fmt::format("line {}", xmlGetLineNo(node));
       s.entity = reinterpret_cast<const char*>(node->name);
       s.path = std::move(path);
