@@ -302,6 +302,97 @@ PY
     && pass || fail "a Windows-1252 layer name was not read: $(head -c 300 "$d/cp.out")"
 }
 
+# Round 5: the drawing readers on what round 5 found (crashes, hangs, lax numbers, raw control
+# characters), each refused with its file, line or handle and the bound, or read as CAD reads it.
+section_round5() {
+  local d="$work/round5"
+  mkdir -p "$d"
+  /usr/bin/python3 - "$d" <<'PY' || fail "could not write round 5's drawings"
+import json, struct, sys
+d = sys.argv[1]
+def dxf(entities, blocks="", insunits="4"):
+    head = "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n%s\n0\nENDSEC\n" % insunits
+    b = ("0\nSECTION\n2\nBLOCKS\n" + blocks + "0\nENDSEC\n") if blocks else ""
+    return head + b + "0\nSECTION\n2\nENTITIES\n" + entities + "0\nENDSEC\n0\nEOF\n"
+def poly(handle, layer, points):
+    text = "0\nLWPOLYLINE\n5\n%s\n8\n%s\n90\n%d\n70\n1\n" % (handle, layer, len(points))
+    return text + "".join("10\n%r\n20\n%r\n" % p for p in points)
+outline = poly("1", "A-OTLN", [(0, 0), (10000, 0), (10000, 8000), (0, 8000)])
+files = {
+    "sliver.dxf": dxf(outline + poly("2F", "PIT", [(1000, 1000), (5000, 1000), (5000, 1000.0000001), (1000, 1000.0000001)])),
+    "bowtie.dxf": dxf(outline + poly("2F", "PIT", [(1000, 1000), (5000, 3000), (5000, 1000), (1000, 4000)])),
+    "longname.dxf": dxf(outline + "0\nLINE\n8\n" + "L" * 3000 + "\n10\n0\n20\n0\n11\n1\n21\n1\n"),
+    "longline.dxf": dxf(outline + "999\n" + "x" * 70000 + "\n"),
+    "comma.dxf": dxf(outline.replace("10\n10000.0\n", "10\n10000,0\n", 1).replace("10\n10000\n", "10\n10000,0\n", 1)),
+    "insunits.dxf": dxf(outline, insunits="1e10"),
+    "arrays.dxf": dxf(outline + "0\nINSERT\n5\n3\n8\nX\n2\nROW\n70\n400\n71\n400\n44\n1\n45\n1\n",
+                      "0\nBLOCK\n2\nEMPTY\n10\n0\n20\n0\n0\nENDBLK\n0\nBLOCK\n2\nROW\n10\n0\n20\n0\n"
+                      "0\nINSERT\n2\nEMPTY\n70\n400\n71\n400\n44\n1\n45\n1\n0\nENDBLK\n"),
+    "escape.dxf": dxf(outline + poly("9", "X\x1b[2J\x07", [(1, 1), (2, 1), (2, 2)])),
+    "ellipse.dxf": dxf(outline + "0\nELLIPSE\n5\n4E\n8\nPIT\n10\n500\n20\n500\n11\n100\n21\n0\n40\n0\n"),
+}
+uses = '<g id="u0"></g>' + "".join('<g id="u%d">' % k + ('<use href="#u%d"/>' % (k - 1)) * 10 + "</g>"
+                                   for k in range(1, 16))
+files["uses.svg"] = ('<svg xmlns="http://www.w3.org/2000/svg" width="10000mm" height="8000mm" viewBox="0 0 10000 8000">'
+                     '<g id="A-OTLN"><rect width="10000" height="8000"/></g><defs>' + uses +
+                     '</defs><use href="#u15"/></svg>')
+for name, text in files.items():
+    open(f"{d}/{name}", "w").write(text)
+# Models: JSON nested 20,000 deep; a box whose first vertex is NaN.
+open(f"{d}/deep.gltf", "w").write('{"asset": {"version": "2.0"}, "extras": ' + "[" * 20000 + "]" * 20000 + "}")
+positions = [0, 0, 0, 1, 0, 0, 1, 0, -1, 0, 0, -1]
+positions[0] = float("nan")
+data = struct.pack("<12f", *positions) + struct.pack("<6H", 0, 1, 2, 0, 2, 3)
+model = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+         "nodes": [{"name": "Mass", "mesh": 0}],
+         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+         "buffers": [{"byteLength": len(data)}],
+         "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+         "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                       {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]}
+js = json.dumps(model).encode()
+js += b" " * (-len(js) % 4)
+data += b"\0" * (-len(data) % 4)
+glb = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(js) + 8 + len(data))
+glb += struct.pack("<I", len(js)) + b"JSON" + js + struct.pack("<I", len(data)) + b"BIN\0" + data
+open(f"{d}/nan.glb", "wb").write(glb)
+PY
+  site_recipe() {  # file, outline layer, then extra lines
+    local file=$1 layer=$2
+    shift 2
+    sed '/^\[layout.site\]/,$d' "$p/courtyard-from-dxf.toml" > "$d/$file.toml"
+    printf '[layout.site]\nfile = "%s"\noutline = "%s"\n' "$file" "$layer" >> "$d/$file.toml"
+    printf '%s\n' "$@" >> "$d/$file.toml"
+    echo "$d/$file.toml"
+  }
+  model_recipe() {  # file, plan node
+    sed '/^\[layout\]/,$d' "$p/courtyard-from-dxf.toml" > "$d/$1.toml"
+    printf '[layout]\nkind = "facade"\npanel = [215, 65]\njoint = 10\n[layout.building]\nheight = 3000\n' >> "$d/$1.toml"
+    printf '[layout.building.site]\nfile = "%s"\nplan = "%s"\n' "$1" "$2" >> "$d/$1.toml"
+    echo "$d/$1.toml"
+  }
+  local pit='[[layout.site.zones]]' layer='layer = "PIT"' rule='rule = "exclude"'
+  refused 'the zone LWPOLYLINE 2F on layer "PIT"' generate "$(site_recipe sliver.dxf A-OTLN "$pit" "$layer" "$rule")"
+  refused "encloses 0 mm², less than the 1 mm² a zone needs" generate "$(site_recipe sliver.dxf A-OTLN "$pit" "$layer" "$rule")"
+  refused "crosses or touches itself" generate "$(site_recipe bowtie.dxf A-OTLN "$pit" "$layer" "$rule")"
+  refused "line 42 is 70000 characters long" generate "$(site_recipe longline.dxf A-OTLN)"
+  refused 'has "10000,0" for group 10, which must be one finite number' generate "$(site_recipe comma.dxf A-OTLN)"
+  refused '"1e10" for group 70, which must be one whole number' generate "$(site_recipe insunits.dxf A-OTLN)"
+  refused "or 1000000 block placements" generate "$(site_recipe arrays.dxf A-OTLN)"
+  refused "through <use> more than 1000000 times" generate "$(site_recipe uses.svg A-OTLN)"
+  refused "has an axis ratio of 0" generate "$(site_recipe ellipse.dxf A-OTLN "$pit" "$layer" "$rule")"
+  refused "nests arrays or objects more than 64 deep" generate "$(model_recipe deep.gltf Mass)"
+  refused 'node "Mass" has a vertex that is not a finite number' generate "$(model_recipe nan.glb Mass)"
+  # Read: a 3,000-character layer name (dxflib spun on it for ever), and a name with a
+  # terminal's escape printed escaped.
+  timeout 20 "$curdle" generate "$(site_recipe longname.dxf A-OTLN)" --outputs report.json --out "$d/long" \
+    > "$d/long.out" 2>&1 && pass || fail "a 3,000-character layer name was not read: $(head -c 200 "$d/long.out")"
+  timeout 20 "$curdle" generate "$(site_recipe escape.dxf A-OTLN)" --outputs report.json --out "$d/esc" \
+    > "$d/esc.out" 2>&1
+  if grep -qF 'X\x1B[2J\x07' "$d/esc.out" && ! grep -q $'\x1b' "$d/esc.out"; then pass
+  else fail "a layer name's escape reached the terminal raw: $(head -c 300 "$d/esc.out" | cat -v)"; fi
+}
+
 # Interrupted runs: the previous set stays whole (byte for byte), no temporary is left; a run
 # that finishes replaces the set whole.
 section_kills() {
