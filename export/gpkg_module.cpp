@@ -31,9 +31,14 @@ Srs projected_crs(int epsg, std::string* error) {
     return nullptr;
   }
   if (!OSRIsProjected(srs.get())) {
-    *error = name +
-             " is not a projected CRS (it measures in degrees); a layout is placed in "
-             "metres, e.g. EPSG:25832 (ETRS89 / UTM 32N) or EPSG:27700 (British National Grid)";
+    const char* what = OSRIsGeographic(srs.get()) ? "a geographic CRS (it measures in degrees)"
+                       : OSRIsGeocentric(srs.get())
+                           ? "a geocentric CRS (x, y, z from the earth's centre)"
+                       : OSRIsVertical(srs.get()) ? "a vertical CRS (it measures heights)"
+                                                  : "not a projected CRS";
+    *error = name + " is " + what +
+             "; a layout is placed in a projected CRS in metres, e.g. EPSG:25832 (ETRS89 / UTM "
+             "32N) or EPSG:27700 (British National Grid)";
     return nullptr;
   }
   if (OSRGetLinearUnits(srs.get(), nullptr) != 1.0) {

@@ -121,6 +121,8 @@ section_options() {
   refused "at most 15 living states" generate "$m" \
     --set 'curds.0.states=["a","b","c","d","e","f","g","h","i","j","k","l","m","n","o","p"]'
   refused "names no state" generate "$m" --set 'curds.0.start="light"'
+  refused "this one holds a control character" generate "$m" --set 'curds.0.states=["dark\u001b[2J","mid"]'
+  refused "this one holds 100000 bytes" generate "$m" --set "curds.0.states=[\"$(head -c 100000 /dev/zero | tr '\0' a)\",\"mid\"]"
   refused "sums to 1 - 1/2" generate "$m" --set 'curds.0.start=["1/4","1/4"]'
   refused "multiples of 1/4" generate "$m" --set 'lattice.mode="exact"' --set lattice.base=2
   refused "3 (never occurs)" generate "$m" --set 'layout.materials=["a","b","c"]'
@@ -383,6 +385,7 @@ PY
   refused "has an axis ratio of 0" generate "$(site_recipe ellipse.dxf A-OTLN "$pit" "$layer" "$rule")"
   refused "nests arrays or objects more than 64 deep" generate "$(model_recipe deep.gltf Mass)"
   refused 'node "Mass" has a vertex that is not a finite number' generate "$(model_recipe nan.glb Mass)"
+  refused "layout.building.plan" generate "$(model_recipe nan.glb Mass)" --set 'layout.building.plan=[[0,0],[1000,0],[1000,1000]]'
   # Read: a 3,000-character layer name (dxflib spun on it for ever), and a name with a
   # terminal's escape printed escaped.
   timeout 20 "$curdle" generate "$(site_recipe longname.dxf A-OTLN)" --outputs report.json --out "$d/long" \

@@ -343,6 +343,12 @@ TEST_F(ServerTest, RequestsFromOtherSitesAndNamesAreRefused) {
   EXPECT_EQ(with({{"Host", "evil.example:" + std::to_string(port_)}}), 403);
   EXPECT_EQ(with({{"Host", "evil.example:" + std::to_string(port_)}}, "/index.html"), 403);
   EXPECT_EQ(with({{"Host", "127.0.0.1:1"}}), 403);
+  // Two Host headers, the first this server's: refused, not judged by the first.
+  const std::string two =
+      raw_request("GET /api/recipe HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port_) +
+                  "\r\nHost: evil.example\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(two.rfind("HTTP/1.1 400", 0), 0u) << two;
+  EXPECT_NE(two.find("2 Host headers"), std::string::npos) << two;
   EXPECT_EQ(with({{"Origin", "http://evil.example"}}), 403);
   EXPECT_EQ(with({{"Origin", "http://127.0.0.1:" + std::to_string(port_)}}), 200);
   EXPECT_EQ(with({{"Sec-Fetch-Site", "cross-site"}}), 403);

@@ -105,7 +105,10 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
   BuildingKeys b;
   const bool drawn = r.get("site");
   const bool plan = r.get("plan") || drawn, path = r.get("path");
-  if (plan == path || (drawn && r.get("plan")))
+  if (drawn && r.get("plan"))
+    r.fail("plan",
+           "is given by [layout.building.site]'s drawing; give plan or the drawing, not both");
+  if (plan == path)
     r.fail(plan ? "path" : "plan",
            "a building needs one of plan = [[x, y], ...] (closed, anticlockwise), "
            "[layout.building.site] (its plan from a drawing's layer) or path = [[x, y], ...] (a "

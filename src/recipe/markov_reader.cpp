@@ -5,6 +5,7 @@
 #include <set>
 
 #include "curdle/markov.h"
+#include "curdle/text.h"
 #include "recipe/recipe.h"
 
 namespace curdle::reading {
@@ -103,6 +104,13 @@ std::vector<std::string> read_states(TableReader& r) {
         s->find_first_of(",\"\n\r+") != std::string::npos)
       r.fail_node(*a->get(i), path,
                   "a state is a non-empty name without commas, quotes, '+' or line breaks");
+    // A state's name goes where a curd's does (legends, CSV, DXF, terminals): the same rules.
+    const std::string unsafe = !valid_utf8(*s)    ? "bytes that are not UTF-8"
+                               : s->size() > 4096 ? std::to_string(s->size()) + " bytes"
+                                                  : unsafe_text(*s);
+    if (!unsafe.empty())
+      r.fail_node(*a->get(i), path,
+                  "a state's name is plain text of at most 4096 bytes; this one holds " + unsafe);
     if (!seen.insert(*s).second)
       r.fail_node(*a->get(i), path,
                   *s == "dead" ? "\"dead\" is implicit (state 0, the first row and column); "

@@ -358,10 +358,15 @@ struct Server::Impl {
       return refuse(400,
                     "a " + req.method + " request carries no body (Content-Length " + length + ")");
     if (bytes > limit)
-      return refuse(413, std::string(upload ? "the picture"
-                                     : form ? "the query"
-                                            : "the request's body") +
-                             " is larger than " + std::to_string(limit >> 10) + " KiB");
+      return refuse(413,
+                    std::string(upload ? (req.path == kSiteUpload ? "the drawing" : "the picture")
+                                : form ? "the query"
+                                       : "the request's body") +
+                        " is larger than " + std::to_string(limit >> 10) + " KiB");
+    // Two Host headers: which one the request is for is not said, whatever the first says.
+    if (req.get_header_value_count("Host") > 1)
+      return refuse(400, "the request has " + std::to_string(req.get_header_value_count("Host")) +
+                             " Host headers; a request names one host");
     if (!host_allowed(req.get_header_value("Host")))
       return refuse(403, "this server answers requests addressed to " +
                              hosts_for(bound_host, bound_port).front() + " only");
