@@ -82,7 +82,11 @@ void write_layout_gpkg(const std::filesystem::path& path, const Layout& layout) 
     where.key = "layout.georef.epsg";
     throw InputError(where, error);
   }
-  if (result != 0) throw std::runtime_error("cannot write layout.gpkg: " + error);
+  // Writing failed (a full disk, a folder that is no folder): the user's to mend, exit 2 as
+  // every other writer's.
+  if (result != 0)
+    throw InputError("cannot write " + path.string() + ": " + error +
+                     " (is the disk full, or the folder not writable?)");
 }
 
 }  // namespace curdle

@@ -386,6 +386,12 @@ PY
   refused "nests arrays or objects more than 64 deep" generate "$(model_recipe deep.gltf Mass)"
   refused 'node "Mass" has a vertex that is not a finite number' generate "$(model_recipe nan.glb Mass)"
   refused "layout.building.plan" generate "$(model_recipe nan.glb Mass)" --set 'layout.building.plan=[[0,0],[1000,0],[1000,1000]]'
+  # A GeoPackage that cannot be written is the user's to mend (exit 2), as every writer's.
+  timeout 60 "$curdle" generate "$p/courtyard-l-shaped.toml" --outputs layout.gpkg --out /proc/self/fd \
+    > /dev/null 2> "$d/gpkg.err"
+  local got=$?
+  [ "$got" -eq 2 ] && grep -q "cannot write .*is the disk full" "$d/gpkg.err" && pass ||
+    fail "an unwritable layout.gpkg exited $got: $(head -c 300 "$d/gpkg.err")"
   # Read: a 3,000-character layer name (dxflib spun on it for ever), and a name with a
   # terminal's escape printed escaped.
   timeout 20 "$curdle" generate "$(site_recipe longname.dxf A-OTLN)" --outputs report.json --out "$d/long" \
