@@ -208,6 +208,47 @@ TEST_F(FieldSocketTest, SocketsPastTheLimitAreTurnedAwayAndTheirThreadsComeBack)
   EXPECT_TRUE(reopened);
 }
 
+// Eight pages' sockets left idle do not keep a ninth out for their five minutes: the one idle
+// longest gives its place up (closed with 1000) and the ninth opens.
+TEST(FieldSocketDeadlines, AnIdleSocketGivesItsPlaceToAPageThatWaits) {
+  ServerConfig config = test::server_config(kRecipe);
+  config.api.recipe_text =
+      "[lattice]\nbase = 2\n[[curds]]\nname = \"a\"\nprobabilities = [\"1/2\"]\n";
+  config.field_socket.yield_after = std::chrono::milliseconds(200);
+  const test::ServerOnLoopback serving(config);
+  const int port = serving.port();
+  const std::string request =
+      "GET /api/field-socket HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) +
+      "\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Version: 13\r\n"
+      "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n\r\n";
+  auto open_socket = [&](std::string& head) {
+    const int fd = test::connect_loopback(port);
+    timeval wait{10, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
+    ::send(fd, request.data(), request.size(), MSG_NOSIGNAL);
+    char buffer[4096];
+    const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
+    head.assign(buffer, n > 0 ? static_cast<size_t>(n) : 0);
+    return fd;
+  };
+  std::vector<int> held;
+  std::string head;
+  for (int i = 0; i < 8; ++i) {
+    held.push_back(open_socket(head));
+    ASSERT_EQ(head.rfind("HTTP/1.1 101", 0), 0u) << i << ": " << head;
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  const int ninth = open_socket(head);
+  EXPECT_EQ(head.rfind("HTTP/1.1 101", 0), 0u) << head;
+  // The first, idle longest, was closed with 1000.
+  char buffer[4096];
+  const ssize_t n = ::recv(held.front(), buffer, sizeof buffer, 0);
+  const std::string closing(buffer, n > 0 ? static_cast<size_t>(n) : 0);
+  EXPECT_NE(closing.find("\x03\xe8idle while another page waits"), std::string::npos) << closing;
+  ::close(ninth);
+  for (const int fd : held) ::close(fd);
+}
+
 // A socket left idle is closed with 1000, and one whose message trickles in past its arrival
 // time with 1008, each after the time the server was given.
 TEST(FieldSocketDeadlines, AnIdleOrTricklingSocketIsClosed) {

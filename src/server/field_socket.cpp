@@ -83,7 +83,7 @@ bool send_answer(const SocketSide& side, const ApiResponse& r) {
 void serve_field_socket(int socket, const std::string& early_bytes, const std::string& accept,
                         const FieldSocketLimits& limits,
                         const std::function<ApiResponse(const std::string&)>& answer,
-                        const std::function<bool()>& stopping) {
+                        const std::function<bool()>& stopping, const std::function<bool()>& yield) {
   const SocketSide side(socket, limits);
   if (!side.send_handshake(accept)) return;
   WsReader reader(limits.max_message);
@@ -95,10 +95,14 @@ void serve_field_socket(int socket, const std::string& early_bytes, const std::s
     bool begun = reader.has_partial();
     auto until = Clock::now() + (begun ? limits.arrival : limits.idle);
     WsReader::Next next;
+    // Idle, it may be asked to give its place to a page that waits.
+    const auto unwanted = [&] { return stopping() || (!begun && yield && yield()); };
     while (!(next = reader.next()).message && !next.failure) {
-      if (!side.wait_readable(until, stopping)) {
+      if (!side.wait_readable(until, unwanted)) {
         if (stopping())
           side.close(1001, "the server is stopping");
+        else if (!begun && yield && yield())
+          side.close(1000, "idle while another page waits for a socket");
         else if (begun)
           side.close(1008, "a message must arrive whole within its time");
         else

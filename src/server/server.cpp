@@ -6,10 +6,14 @@
 #include <netinet/tcp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <list>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <semaphore>
 #include <thread>
@@ -264,18 +268,59 @@ struct Server::Impl {
                            "Sec-WebSocket-Key); fetch /api/field for one field"));
       return;
     }
-    if (!field_sockets.try_acquire()) {
+    // All held: the socket idle longest, if idle long enough, gives its place up.
+    if (!field_sockets.try_acquire() &&
+        !(ask_idle_socket_to_yield() && field_sockets.try_acquire_for(std::chrono::seconds(2)))) {
       reply(res, api_error(503,
                            "the server has as many field sockets open as it keeps; fetch "
                            "/api/field instead"));
       return;
     }
     const SlotHeld held{field_sockets, false};
+    const auto me = std::make_shared<OpenSocket>();
+    {
+      const std::lock_guard lock(open_sockets_mutex);
+      open_sockets.push_back(me);
+    }
+    const struct Forget {
+      Impl& impl;
+      std::shared_ptr<OpenSocket> me;
+      ~Forget() {
+        const std::lock_guard lock(impl.open_sockets_mutex);
+        impl.open_sockets.remove(me);
+      }
+    } forget{*this, me};
     const HttpServer::TakenConnection taken = HttpServer::take_connection();
     serve_field_socket(
         taken.socket, taken.early_bytes, *accept, config.field_socket,
-        [this](const std::string& query) { return field_over_socket(query); },
-        [this] { return stopping.load(); });
+        [this, me](const std::string& query) {
+          me->last_message = std::chrono::steady_clock::now();
+          return field_over_socket(query);
+        },
+        [this] { return stopping.load(); }, [me] { return me->yield.load(); });
+  }
+
+  // An open field socket: when it was last asked something, and whether it must give way.
+  struct OpenSocket {
+    std::atomic<std::chrono::steady_clock::time_point> last_message{
+        std::chrono::steady_clock::now()};
+    std::atomic<bool> yield{false};
+  };
+  std::mutex open_sockets_mutex;
+  std::list<std::shared_ptr<OpenSocket>> open_sockets;
+
+  // Asks the socket idle longest, if idle for yield_after, to close; false when none is.
+  bool ask_idle_socket_to_yield() {
+    const std::lock_guard lock(open_sockets_mutex);
+    std::shared_ptr<OpenSocket> idlest;
+    for (const auto& s : open_sockets)
+      if (!s->yield && (!idlest || s->last_message.load() < idlest->last_message.load()))
+        idlest = s;
+    if (!idlest || std::chrono::steady_clock::now() - idlest->last_message.load() <
+                       config.field_socket.yield_after)
+      return false;
+    idlest->yield = true;
+    return true;
   }
 
   // A POST's body is read after the screen, which checked the address's query: its text
