@@ -335,6 +335,7 @@ files = {
 }
 uses = '<g id="u0"></g>' + "".join('<g id="u%d">' % k + ('<use href="#u%d"/>' % (k - 1)) * 10 + "</g>"
                                    for k in range(1, 16))
+files["groups.svg"] = '<svg xmlns="http://www.w3.org/2000/svg">' + "<g/>" * 2000000 + "</svg>"
 files["uses.svg"] = ('<svg xmlns="http://www.w3.org/2000/svg" width="10000mm" height="8000mm" viewBox="0 0 10000 8000">'
                      '<g id="A-OTLN"><rect width="10000" height="8000"/></g><defs>' + uses +
                      '</defs><use href="#u15"/></svg>')
@@ -382,6 +383,7 @@ PY
   refused '"1e10" for group 70, which must be one whole number' generate "$(site_recipe insunits.dxf A-OTLN)"
   refused "or 1000000 block placements" generate "$(site_recipe arrays.dxf A-OTLN)"
   refused "through <use> more than 1000000 times" generate "$(site_recipe uses.svg A-OTLN)"
+  refused "holds 2000001 elements, more than the 800000" generate "$(site_recipe groups.svg A-OTLN)"
   refused "has an axis ratio of 0" generate "$(site_recipe ellipse.dxf A-OTLN "$pit" "$layer" "$rule")"
   refused "nests arrays or objects more than 64 deep" generate "$(model_recipe deep.gltf Mass)"
   refused 'node "Mass" has a vertex that is not a finite number' generate "$(model_recipe nan.glb Mass)"

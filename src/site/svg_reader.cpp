@@ -498,6 +498,16 @@ Drawing read_svg(std::string_view bytes, const std::string& file_name, const Svg
     throw SiteError(file_name +
                     ": is not an SVG drawing (no <svg> element); export the drawing "
                     "as SVG");
+  // Elements counted in the bytes before libxml2 builds a tree of them (a 60 MB file of empty
+  // groups made a tree of 2 GB): every tag but a closing one is at most an element.
+  const auto tags = static_cast<size_t>(std::count(bytes.begin(), bytes.end(), '<'));
+  size_t closing = 0;
+  for (size_t at = bytes.find("</"); at != std::string_view::npos; at = bytes.find("</", at + 2))
+    ++closing;
+  if (tags - closing > 4 * kMostShapes)
+    throw SiteError(fmt::format("{}: holds {} elements, more than the {} a site drawing needs; "
+                                "keep only the layers of the surface",
+                                file_name, tags - closing, 4 * kMostShapes));
   // Entity declarations can make a small file expand without bound: a drawing needs none.
   if (bytes.find("<!ENTITY") != std::string_view::npos)
     throw SiteError(file_name +
