@@ -36,6 +36,17 @@ refused() {
   fi
 }
 
+# A recipe of the courtyard read from the drawing `file` in the section's folder $d, its
+# outline on `layer`, with any further [layout.site] lines.
+site_recipe() {  # file, outline layer, then extra lines
+  local file=$1 layer=$2
+  shift 2
+  sed '/^\[layout.site\]/,$d' "$p/courtyard-from-dxf.toml" > "$d/$file.toml"
+  printf '[layout.site]\nfile = "%s"\noutline = "%s"\n' "$file" "$layer" >> "$d/$file.toml"
+  printf '%s\n' "$@" >> "$d/$file.toml"
+  echo "$d/$file.toml"
+}
+
 section_recipes() {
   refused "each from 1 mm" generate "$p/paper/fig7-paving-20m.toml" --set 'layout.floor=[1e-300,1e-300]'
   refused "sizes from 1" generate "$p/paper/fig3-two-curds.toml" --set 'field.window=[0,0,-1,-1]'
@@ -263,14 +274,6 @@ open(f"{d}/notsvg.svg", "w").write("<html><body><svg>")
 text = open(f"{d}/nopit.dxf", encoding="utf-8").read().replace("A-OTLN", "Gr\u00e8s")
 open(f"{d}/cp1252.dxf", "wb").write(text.encode("cp1252"))
 PY
-  site_recipe() {  # file, outline layer, then extra lines
-    local file=$1 layer=$2
-    shift 2
-    sed '/^\[layout.site\]/,$d' "$p/courtyard-from-dxf.toml" > "$d/$file.toml"
-    printf '[layout.site]\nfile = "%s"\noutline = "%s"\n' "$file" "$layer" >> "$d/$file.toml"
-    printf '%s\n' "$@" >> "$d/$file.toml"
-    echo "$d/$file.toml"
-  }
   local pit='[[layout.site.zones]]' rule='rule = "exclude"'
   refused "is not closed" generate "$(site_recipe open.dxf A-OTLN)"
   refused "(0, 5) (" generate "$(site_recipe open.dxf A-OTLN)"
@@ -360,14 +363,6 @@ glb = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(js) + 8 + len(data))
 glb += struct.pack("<I", len(js)) + b"JSON" + js + struct.pack("<I", len(data)) + b"BIN\0" + data
 open(f"{d}/nan.glb", "wb").write(glb)
 PY
-  site_recipe() {  # file, outline layer, then extra lines
-    local file=$1 layer=$2
-    shift 2
-    sed '/^\[layout.site\]/,$d' "$p/courtyard-from-dxf.toml" > "$d/$file.toml"
-    printf '[layout.site]\nfile = "%s"\noutline = "%s"\n' "$file" "$layer" >> "$d/$file.toml"
-    printf '%s\n' "$@" >> "$d/$file.toml"
-    echo "$d/$file.toml"
-  }
   model_recipe() {  # file, plan node
     sed '/^\[layout\]/,$d' "$p/courtyard-from-dxf.toml" > "$d/$1.toml"
     printf '[layout]\nkind = "facade"\npanel = [215, 65]\njoint = 10\n[layout.building]\nheight = 3000\n' >> "$d/$1.toml"

@@ -198,6 +198,24 @@ void PathCollector::path_elliptical_arc_to(double rx, double ry, double rotation
   curve(at);
 }
 
+// An element's viewBox (x, y, width, height), if it has one; SiteError for one that is not four
+// numbers with a width and height above 0.
+std::optional<std::array<double, 4>> view_box(const xmlNode* node, const std::string& file) {
+  const std::string view = attribute(node, "viewBox");
+  if (view.empty()) return std::nullopt;
+  std::array<double, 4> box{};
+  std::string spaced = view;
+  for (char& ch : spaced)
+    if (ch == ',') ch = ' ';
+  if (std::sscanf(spaced.c_str(), "%lf %lf %lf %lf", &box[0], &box[1], &box[2], &box[3]) != 4 ||
+      !(box[2] > 0 && box[3] > 0) || !std::isfinite(box[0] + box[1] + box[2] + box[3]))
+    throw SiteError(
+        fmt::format("{}: {} has the viewBox \"{}\", not four numbers with a width "
+                    "and height above 0",
+                    file, name_of(node), view.substr(0, 100)));
+  return box;
+}
+
 // A shape's length attribute: a number of user units (px allowed).
 double length(const xmlNode* node, const char* name, const std::string& file, double fallback) {
   const std::string text = attribute(node, name);
@@ -351,18 +369,9 @@ class Walker {
     const double x = symbol ? 0 : length(node, "x", file_, 0);
     const double y = symbol ? 0 : length(node, "y", file_, 0);
     Affine at{1, 0, 0, 1, x, y};
-    const std::string view = attribute(node, "viewBox");
-    if (view.empty()) return at;
-    std::array<double, 4> box{};
-    std::string spaced = view;
-    for (char& ch : spaced)
-      if (ch == ',') ch = ' ';
-    if (std::sscanf(spaced.c_str(), "%lf %lf %lf %lf", &box[0], &box[1], &box[2], &box[3]) != 4 ||
-        !(box[2] > 0 && box[3] > 0) || !std::isfinite(box[0] + box[1] + box[2] + box[3]))
-      throw SiteError(
-          fmt::format("{}: {} has the viewBox \"{}\", not four numbers with a width "
-                      "and height above 0",
-                      file_, name_of(node), view.substr(0, 100)));
+    const std::optional<std::array<double, 4>> view = view_box(node, file_);
+    if (!view) return at;
+    const std::array<double, 4>& box = *view;
     auto size = [&](const char* key, std::optional<double> given, double fallback) {
       if (given) return *given;
       const std::string text = attribute(node, key);
@@ -505,9 +514,10 @@ Drawing read_svg(std::string_view bytes, const std::string& file_name, const Svg
   for (size_t at = bytes.find("</"); at != std::string_view::npos; at = bytes.find("</", at + 2))
     ++closing;
   if (tags - closing > 4 * kMostShapes)
-    throw SiteError(fmt::format("{}: holds {} elements, more than the {} a site drawing needs; "
-                                "keep only the layers of the surface",
-                                file_name, tags - closing, 4 * kMostShapes));
+    throw SiteError(
+        fmt::format("{}: holds {} elements, more than the {} a site drawing needs; "
+                    "keep only the layers of the surface",
+                    file_name, tags - closing, 4 * kMostShapes));
   // Entity declarations can make a small file expand without bound: a drawing needs none.
   if (bytes.find("<!ENTITY") != std::string_view::npos)
     throw SiteError(file_name +
@@ -530,19 +540,8 @@ Drawing read_svg(std::string_view bytes, const std::string& file_name, const Svg
   double width = 0, height = 0;
   const double unit = length_mm(attribute(root, "width"), width);
   length_mm(attribute(root, "height"), height);
-  std::array<double, 4> box{0, 0, width, height};
-  const std::string view = attribute(root, "viewBox");
-  if (!view.empty()) {
-    std::string spaced = view;
-    for (char& ch : spaced)
-      if (ch == ',') ch = ' ';
-    if (std::sscanf(spaced.c_str(), "%lf %lf %lf %lf", &box[0], &box[1], &box[2], &box[3]) != 4 ||
-        !(box[2] > 0 && box[3] > 0) || !std::isfinite(box[0] + box[1] + box[2] + box[3]))
-      throw SiteError(
-          fmt::format("{}: has the viewBox \"{}\", not four numbers with a width and "
-                      "height above 0",
-                      file_name, view.substr(0, 100)));
-  }
+  const std::array<double, 4> box =
+      view_box(root, file_name).value_or(std::array<double, 4>{0, 0, width, height});
   Drawing drawing;
   drawing.format = "SVG";
   double per_unit = 0;  // mm per user unit, as the drawing says
