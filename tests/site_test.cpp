@@ -299,5 +299,23 @@ TEST(SiteTest, DegenerateZonesAndOpeningsAreRefused) {
   }
 }
 
+// A zone picked as an outline is: the shape of its layer around a point.
+TEST(SiteTest, AZoneIsPickedByAPointInsideIt) {
+  DxfText dxf(6);
+  dxf.begin_entities_only()
+      .lwpolyline("A-OTLN", "1", {{0, 0, 0}, {10, 0, 0}, {10, 6, 0}, {0, 6, 0}}, true)
+      .circle("TREE_PIT", "2", 3, 3, 0.75)
+      .circle("TREE_PIT", "3", 7, 3, 0.9);
+  LayerMap map = courtyard_map(true);
+  map.zones[0].around = std::array<double, 2>{7.2, 3.1};
+  const Site s = site_of(dxf, map);
+  ASSERT_EQ(s.zones.size(), 1u);
+  EXPECT_NEAR(contour_area(s.zones[0].contour), 3.14159265358979323846 * 900 * 900, 1e-3);
+  map.zones[0].around = std::array<double, 2>{5, 5};
+  EXPECT_NE(
+      refusal(dxf, map).find("no closed shape on layer \"TREE_PIT\" lies around the point (5, 5)"),
+      std::string::npos);
+}
+
 }  // namespace
 }  // namespace curdle::site

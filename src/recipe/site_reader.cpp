@@ -53,6 +53,16 @@ site::ZoneLayer read_zone_layer(TableReader& r, size_t values) {
   } else {
     r.fail("rule", "must be \"exclude\" (no elements) or \"value\" with value = N");
   }
+  if (const toml::node* a = r.get("around")) {
+    const toml::array* xy = a->as_array();
+    const auto x = xy && xy->size() == 2 ? finite_number(xy->get(0)) : std::nullopt;
+    const auto y = xy && xy->size() == 2 ? finite_number(xy->get(1)) : std::nullopt;
+    if (!x || !y || std::fabs(*x) > 1e12 || std::fabs(*y) > 1e12)
+      r.fail("around",
+             "must be [x, y]: a point inside the one shape of the layer that is the "
+             "zone, in the drawing's own coordinates and units");
+    z.around = std::array<double, 2>{*x, *y};
+  }
   return z;
 }
 
@@ -186,7 +196,7 @@ site::LayerMap read_layer_map(TableReader& r, const LayoutSpec& spec, size_t val
              "rule (\"exclude\", or \"value\" with value = N)");
     for (size_t i = 0; i < a->size(); ++i) {
       TableReader zr(*a->get(i)->as_table(), r.key_path("zones." + std::to_string(i)), r.source(),
-                     {"layer", "rule", "value"});
+                     {"layer", "rule", "value", "around"});
       map.zones.push_back(read_zone_layer(zr, values));
     }
   }

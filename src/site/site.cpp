@@ -452,6 +452,26 @@ void check_plausible(const Rect& mm, const LayerMap& map, const std::string& uni
                   map.file, size, unit_name, longer > 5e6 ? "too large" : "too small", hint));
 }
 
+// The smallest of a layer's shapes around a point in drawing coordinates, as CAD's BOUNDARY
+// picks; SiteError naming the point when none lies around it.
+Closed smallest_around(const std::vector<Closed>& shapes, const std::array<double, 2>& point,
+                       double tolerance, const std::string& file, const std::string& layer,
+                       int precision) {
+  std::optional<size_t> best;
+  double smallest = 0;
+  for (size_t i = 0; i < shapes.size(); ++i) {
+    const Polygon p = flatten(shapes[i].path, tolerance);
+    const double a = polygon_area(p);
+    if (contains(p, point[0], point[1]) && (!best || a < smallest)) best = i, smallest = a;
+  }
+  if (!best)
+    throw SiteError(
+        fmt::format("{}: no closed shape on layer \"{}\" lies around the point ({}, "
+                    "{}) that around gives (drawing coordinates)",
+                    file, layer, number(point[0], precision), number(point[1], precision)));
+  return shapes[*best];
+}
+
 // The openings and zones: inside the outline, each named after its layer.
 void read_holes(const Drawing& drawing, const LayerMap& map, const Polygon& outline,
                 const std::array<double, 2>& datum, double unit_mm, double join_tolerance,
@@ -480,8 +500,11 @@ void read_holes(const Drawing& drawing, const LayerMap& map, const Polygon& outl
   }
   for (const ZoneLayer& z : map.zones) {
     PassedOver passed;
-    const std::vector<Closed> found =
+    std::vector<Closed> found =
         closed_on(drawing, z.layer, join_tolerance, map.file, "zone", unit_mm, passed);
+    if (z.around)
+      found = {
+          smallest_around(found, *z.around, join_tolerance, map.file, z.layer, drawing.precision)};
     note_passed_over(passed, z.layer, site.notes);
     for (size_t i = 0; i < found.size(); ++i)
       site.zones.push_back({found.size() > 1 ? fmt::format("{} {}", z.layer, i + 1) : z.layer,
@@ -505,21 +528,13 @@ Closed picked_outline(const std::vector<Closed>& outlines, const LayerMap& map,
     return outlines.size() > 12 ? text + "; ..." : text;
   };
   if (map.pick.around) {
-    const auto [px, py] = *map.pick.around;
-    std::optional<size_t> best;
-    double smallest = 0;
-    for (size_t i = 0; i < outlines.size(); ++i) {
-      const Polygon p = flatten(outlines[i].path, tolerance);
-      const double a = polygon_area(p);
-      if (contains(p, px, py) && (!best || a < smallest)) best = i, smallest = a;
+    try {
+      return smallest_around(outlines, *map.pick.around, tolerance, map.file, map.outline,
+                             drawing.precision);
+    } catch (const SiteError& e) {
+      throw SiteError(std::string(e.what()) + "; the layer's shapes are " +
+                      (outlines.empty() ? std::string("none") : list()));
     }
-    if (!best)
-      throw SiteError(fmt::format(
-          "{}: no closed shape on layer \"{}\" lies around the point ({}, {}) that outline's "
-          "around gives; the layer's shapes are {}",
-          map.file, map.outline, number(px, drawing.precision), number(py, drawing.precision),
-          outlines.empty() ? std::string("none") : list()));
-    return outlines[*best];
   }
   if (!map.pick.handle.empty()) {
     for (const Closed& c : outlines)

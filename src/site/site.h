@@ -19,6 +19,9 @@ struct ZoneLayer {
   std::string layer;
   ZoneRule rule = ZoneRule::exclude;
   uint32_t value = 0;
+  // Only the layer's shape around this point (drawing coordinates), as an outline is picked;
+  // none: every shape on the layer.
+  std::optional<std::array<double, 2>> around;
 };
 
 // Which of a layer's closed shapes is the outline, where it holds more than one.
