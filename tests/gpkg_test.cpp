@@ -63,7 +63,8 @@ TEST(Gpkg, ACrsThatIsNotProjectedInMetresIsRefusedByName) {
     FAIL() << "EPSG:4326 taken";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().key, "layout.georef.epsg");
-    EXPECT_NE(e.message().find("EPSG:4326 is not a projected CRS"), std::string::npos)
+    EXPECT_NE(e.message().find("EPSG:4326 is a geographic CRS (it measures in degrees)"),
+              std::string::npos)
         << e.message();
   }
   layout.georef = Georef{9999, 0, 0, 0};

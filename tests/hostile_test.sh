@@ -377,7 +377,7 @@ PY
   refused 'has "10000,0" for group 10, which must be one finite number' generate "$(site_recipe comma.dxf A-OTLN)"
   refused '"1e10" for group 70, which must be one whole number' generate "$(site_recipe insunits.dxf A-OTLN)"
   refused "or 1000000 block placements" generate "$(site_recipe arrays.dxf A-OTLN)"
-  refused "through <use> more than 1000000 times" generate "$(site_recipe uses.svg A-OTLN)"
+  refused "through <use> more than 250000 times" generate "$(site_recipe uses.svg A-OTLN)"
   refused "holds 2000001 elements, more than the 800000" generate "$(site_recipe groups.svg A-OTLN)"
   refused "has an axis ratio of 0" generate "$(site_recipe ellipse.dxf A-OTLN "$pit" "$layer" "$rule")"
   refused "nests arrays or objects more than 64 deep" generate "$(model_recipe deep.gltf Mass)"
