@@ -551,6 +551,11 @@ Closed picked_outline(const std::vector<Closed>& outlines, const LayerMap& map,
       if (contour_area(outlines[i].path) > contour_area(outlines[best].path)) best = i;
     return outlines[best];
   }
+  if (outlines.empty())
+    throw SiteError(
+        fmt::format("{}: layer \"{}\" holds no closed shape to be the outline; draw "
+                    "the surface's outline on it as one closed shape",
+                    map.file, map.outline));
   if (outlines.size() != 1)
     throw SiteError(fmt::format(
         "{}: layer \"{}\" holds {} closed shapes side by side ({}); say which is the outline: "
