@@ -4,7 +4,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
+#include "curdle/text.h"
 #include "site/drawing.h"
 
 namespace curdle::site {
@@ -105,6 +107,34 @@ int64_t DxfGroups::integer(const DxfGroup& group, std::string_view entity) const
         "is damaged: export it again",
         file_, group.line, entity, shown(group.value), group.code));
   return v;
+}
+
+// Layer names as the drawing wrote them: UTF-8, or Windows-1252 in older files; `\U+XXXX` is
+// the DXF escape for any other character.
+std::string decoded_name(std::string_view raw) {
+  std::string text;
+  if (valid_utf8(raw)) {
+    text = raw;
+  } else {
+    static const char16_t kHigh[32] = {
+        0x20AC, 0xFFFD, 0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
+        0x2039, 0x0152, 0xFFFD, 0x017D, 0xFFFD, 0xFFFD, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
+        0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0xFFFD, 0x017E, 0x0178};
+    for (unsigned char c : raw) append_utf8(text, c < 0x80 ? c : (c < 0xA0 ? kHigh[c - 0x80] : c));
+  }
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i) {
+    unsigned cp = 0;
+    if (text.compare(i, 3, "\\U+") == 0 && i + 7 <= text.size() &&
+        std::sscanf(text.c_str() + i + 3, "%4x", &cp) == 1 && cp >= 0x20 &&
+        (cp < 0xD800 || cp > 0xDFFF)) {
+      append_utf8(out, cp);
+      i += 6;
+      continue;
+    }
+    out += text[i];
+  }
+  return shown_name(out);  // a control character in a name never reaches a terminal raw
 }
 
 }  // namespace curdle::site

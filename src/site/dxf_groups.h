@@ -49,4 +49,9 @@ class DxfGroups {
   DxfGroup held_group_;
 };
 
+// A name as the drawing wrote it (a layer's, a block's): UTF-8, or Windows-1252 in older files,
+// with `\U+XXXX` the DXF escape for any other character; control characters shown escaped
+// (shown_name).
+std::string decoded_name(std::string_view raw);
+
 }  // namespace curdle::site

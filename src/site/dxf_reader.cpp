@@ -14,82 +14,20 @@
 #include <set>
 
 #include "curdle/stop.h"
-#include "curdle/text.h"
 #include "site/curves.h"
+#include "site/dxf_blocks.h"
 #include "site/dxf_checks.h"
 #include "site/dxf_groups.h"
-#include "site/spline_fit.h"
+#include "site/dxf_hatch.h"
+#include "site/dxf_spline.h"
 #include "site/wide_polyline.h"
 
 namespace curdle::site {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kDeepestBlock = 16;
-// Block placements a drawing may ask for, counting each array cell: an empty block inserted in
-// arrays of arrays places nothing but would be visited without end.
-constexpr size_t kMostPlacements = 1000000;
 // How far from the plan's plane a vertex may stand before a shape is off it, drawing units.
 constexpr double kPlaneTolerance = 1e-6;
-
-// Layer names as the drawing wrote them: UTF-8, or Windows-1252 in older files; `\U+XXXX` is
-// the DXF escape for any other character.
-std::string decoded_name(std::string_view raw) {
-  std::string text;
-  if (valid_utf8(raw)) {
-    text = raw;
-  } else {
-    static const char16_t kHigh[32] = {
-        0x20AC, 0xFFFD, 0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
-        0x2039, 0x0152, 0xFFFD, 0x017D, 0xFFFD, 0xFFFD, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
-        0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0xFFFD, 0x017E, 0x0178};
-    for (unsigned char c : raw) append_utf8(text, c < 0x80 ? c : (c < 0xA0 ? kHigh[c - 0x80] : c));
-  }
-  std::string out;
-  for (size_t i = 0; i < text.size(); ++i) {
-    unsigned cp = 0;
-    if (text.compare(i, 3, "\\U+") == 0 && i + 7 <= text.size() &&
-        std::sscanf(text.c_str() + i + 3, "%4x", &cp) == 1 && cp >= 0x20 &&
-        (cp < 0xD800 || cp > 0xDFFF)) {
-      append_utf8(out, cp);
-      i += 6;
-      continue;
-    }
-    out += text[i];
-  }
-  return shown_name(out);  // a control character in a name never reaches a terminal raw
-}
-
-// A block reference's placement: base point to origin, scale, rotation, then the insertion
-// point; arrays repeat it along the rotated columns and rows.
-struct Placement {
-  double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;  // x' = a x + c y + e, y' = b x + d y + f
-  Point apply(double x, double y) const { return {a * x + c * y + e, b * x + d * y + f}; }
-  Placement then(const Placement& o) const {  // this, then o
-    return {o.a * a + o.c * b, o.b * a + o.d * b,       o.a * c + o.c * d,
-            o.b * c + o.d * d, o.a * e + o.c * f + o.e, o.b * e + o.d * f + o.f};
-  }
-  double determinant() const { return a * d - b * c; }
-  // A similarity (rotation, uniform scale, mirror) keeps circular arcs circular.
-  bool keeps_arcs() const {
-    return std::fabs(a * a + b * b - (c * c + d * d)) < 1e-9 * (a * a + b * b) &&
-           std::fabs(a * c + b * d) < 1e-9 * (a * a + b * b);
-  }
-};
-
-struct Insert {
-  std::string block, layer, handle;
-  double x = 0, y = 0, sx = 1, sy = 1, angle = 0;  // angle in degrees, all in the OCS
-  int64_t columns = 1, rows = 1;
-  double column_spacing = 0, row_spacing = 0;
-  double ocs_x = 1;  // -1: drawn from below (extrusion 0, 0, -1), x mirrored into the plan
-};
-
-struct Block {
-  double base_x = 0, base_y = 0;
-  std::vector<Shape> shapes;
-  std::vector<Insert> inserts;
-};
 
 struct Record {
   std::string_view type;
@@ -492,72 +430,23 @@ class Reader {
 
   void spline(const Record& r) {
     const Common c = common(r);
-    const int64_t flags = integer(r, 70, 0, c.name);
-    const int64_t degree = integer(r, 71, 3, c.name);
-    std::vector<double> knots, weights;
-    std::vector<Point> control, fit;
-    std::vector<double> heights;
-    std::optional<Point> start, end;
-    for (size_t i = 0; i < r.groups.size(); ++i) {
-      const DxfGroup& g = r.groups[i];
-      auto pair = [&](int y_code) {
-        const double x = groups_.real(g, c.name);
-        const double y = i + 1 < r.groups.size() && r.groups[i + 1].code == y_code
-                             ? groups_.real(r.groups[i + 1], c.name)
-                             : 0;
-        return Point{x, y};
-      };
-      if (knots.size() + control.size() + fit.size() > kMostVertices) break;
-      if (g.code == 40) knots.push_back(groups_.real(g, c.name));
-      if (g.code == 41) weights.push_back(groups_.real(g, c.name));
-      if (g.code == 10) control.push_back(pair(20));
-      if (g.code == 11) fit.push_back(pair(21));
-      if (g.code == 12) start = pair(22);
-      if (g.code == 13) end = pair(23);
-      if (g.code == 30 || g.code == 31) heights.push_back(groups_.real(g, c.name));
-    }
-    for (double z : heights)
-      if (std::fabs(z - heights.front()) > kPlaneTolerance) return off_plane(c);
     if (std::fabs(c.nx) > 1e-9 || std::fabs(c.ny) > 1e-9) return off_plane(c);
+    const SplineReading curve = read_spline(r.groups, groups_, c.name, tolerance());
+    if (!curve.flat) return off_plane(c);
     Shape s = shape(c, "SPLINE");
-    const bool closed = flags & (1 | 2);
-    std::vector<Point> points;
-    if (!control.empty()) {
-      bool weighted = false;
-      for (double w : weights) weighted = weighted || w != 1;
-      points = flatten_spline(static_cast<int>(degree), knots, control,
-                              weighted ? weights : std::vector<double>{}, tolerance());
-    }
-    if (points.empty() && fit.size() >= 2) {
-      if (closed && fit.front() != fit.back()) {
-        s.fault = fmt::format(
-            "the {} on layer \"{}\"{} is a closed spline given only by fit points, which "
-            "curdle does not draw as CAD does; convert it to control vertices (SPLINEDIT, or "
-            "save as DXF 2000 or later) or draw the edge as a polyline",
-            c.name, c.layer, in_block());
-      } else if (const auto cubic = spline_through(fit, start, end)) {
-        points = flatten_spline(3, cubic->knots, cubic->control, {}, tolerance());
-        ++fitted;
-      }
-    }
-    if (points.empty() && s.fault.empty())
-      s.fault = fmt::format(
-          "the {} on layer \"{}\"{} cannot be drawn: its {} knots, {} control points (degree "
-          "{}) and {} fit points do not make a curve; redraw it or convert it to a polyline",
-          c.name, c.layer, in_block(), knots.size(), control.size(), degree, fit.size());
-    if (!s.fault.empty()) {
-      s.path = {{0, 0, 0}, {0, 0, 0}};
-      if (!control.empty())
-        s.path = {{control.front()[0], control.front()[1], 0},
-                  {control.back()[0], control.back()[1], 0}};
+    if (!curve.why.empty()) {
+      s.fault = fmt::format("the {} on layer \"{}\"{} {}", c.name, c.layer, in_block(), curve.why);
+      s.path = {{curve.first[0], curve.first[1], 0}, {curve.last[0], curve.last[1], 0}};
       keep(std::move(s));
       return;
     }
+    const std::vector<Point>& points = curve.points;
     for (const Point& p : points) s.path.push_back({p[0], p[1], 0});
-    s.closed = closed || (points.size() > 2 && points.front() == points.back());
+    s.closed = curve.closed || (points.size() > 2 && points.front() == points.back());
     if (s.closed && s.path.size() > 2 && points.front() == points.back()) s.path.pop_back();
     s.flattened = true;
     ++flattened;
+    fitted += curve.fitted;
     keep(std::move(s));
   }
 
@@ -589,164 +478,18 @@ class Reader {
   void hatch(const Record& r) {
     const Common c = common(r);
     if (!in_plan(c)) return off_plane(c);
-    const auto& g = r.groups;
-    size_t i = 0;
-    while (i < g.size() && g[i].code != 91) ++i;
-    if (i == g.size()) return;
-    const int64_t loops = groups_.integer(g[i++], c.name);
-    auto expect = [&](int code) -> const DxfGroup* {
-      // The next group of that code before the loop's end, skipping what is not asked for.
-      while (i < g.size() && g[i].code != code) {
-        if (g[i].code == 92 || g[i].code == 75 || g[i].code == 98) return nullptr;
-        ++i;
-      }
-      return i < g.size() ? &g[i++] : nullptr;
-    };
-    auto number = [&](int code) {
-      const DxfGroup* found = expect(code);
-      if (!found)
-        throw SiteError(
-            fmt::format("{}: the {} on layer \"{}\" has a boundary path without "
-                        "group {}; the file is damaged: export it again",
-                        file_, c.name, c.layer, code));
-      return groups_.real(*found, c.name);
-    };
+    std::optional<HatchBoundaries> b =
+        hatch_boundaries(r.groups, groups_, c.name, c.layer, tolerance());
+    if (!b) return;
     ++hatches;
-    for (int64_t loop = 0; loop < loops && loop < 10000; ++loop) {
-      while (i < g.size() && g[i].code != 92) ++i;
-      if (i == g.size()) break;
-      const int64_t type = groups_.integer(g[i++], c.name);
+    flattened += b->flattened;
+    for (Contour& loop : b->loops) {
       Shape s = shape(c, "HATCH");
       s.closed = true;
-      if (type & 2) {  // a polyline: its vertices with bulges
-        const bool bulges = number(72) != 0;
-        number(73);
-        const auto count = static_cast<int64_t>(number(93));
-        for (int64_t k = 0; k < count && k < static_cast<int64_t>(kMostVertices); ++k) {
-          const double x = number(10), y = number(20);
-          const double b =
-              bulges && i < g.size() && g[i].code == 42 ? groups_.real(g[i++], c.name) : 0;
-          s.path.push_back({x, y, tidy_bulge(b)});
-        }
-      } else {
-        const auto edges = static_cast<int64_t>(number(93));
-        Contour loop_path;
-        for (int64_t k = 0; k < edges && k < 100000; ++k) {
-          const auto edge = static_cast<int64_t>(number(72));
-          Contour piece = hatch_edge(edge, number, c);
-          append_edge(loop_path, piece);
-        }
-        s.path = std::move(loop_path);
-      }
-      if (s.path.size() > 2 &&
-          std::hypot(s.path.back().x - s.path.front().x, s.path.back().y - s.path.front().y) <=
-              1e-9 * (1 + std::fabs(s.path.front().x)))
-        s.path.pop_back();
-      if (s.path.size() < 2) continue;
+      s.path = std::move(loop);
       if (c.nz < 0) mirror(s);
       keep(std::move(s));
     }
-  }
-
-  template <class Number>
-  Contour hatch_edge(int64_t edge, Number& number, const Common& c) {
-    if (edge == 1) {
-      const double x1 = number(10), y1 = number(20), x2 = number(11), y2 = number(21);
-      return {{x1, y1, 0}, {x2, y2, 0}};
-    }
-    if (edge == 2 || edge == 3) {
-      const double cx = number(10), cy = number(20);
-      double mx = 0, my = 0, ratio = 1, radius = 0;
-      if (edge == 2) {
-        radius = number(40);
-      } else {
-        mx = number(11), my = number(21), ratio = number(40);
-      }
-      double from = number(50) * kPi / 180, to = number(51) * kPi / 180;
-      const bool ccw = number(73) != 0;
-      // A clockwise edge stores its angles mirrored: it runs from -from to -to, clockwise.
-      if (!ccw) from = -from, to = -to;
-      double sweep = ccw ? to - from : from - to;
-      while (sweep <= 0) sweep += 2 * kPi;
-      if (sweep > 2 * kPi) sweep = 2 * kPi;
-      if (edge == 2) {
-        if (!(radius > 0)) return {};
-        Contour arc;
-        const int halves = sweep > kPi ? 2 : 1;
-        const double step = (ccw ? 1 : -1) * sweep / halves;
-        for (int h = 0; h <= halves; ++h) {
-          const double a = from + step * h;
-          arc.push_back({cx + radius * std::cos(a), cy + radius * std::sin(a),
-                         h < halves ? tidy_bulge(std::tan(step / 4)) : 0});
-        }
-        return arc;
-      }
-      const double major = std::hypot(mx, my);
-      if (!(major > 0) || !(ratio > 0)) return {};
-      // Angles of an elliptic edge are of the ellipse's parameter.
-      const Point minor{-my * ratio, mx * ratio};
-      const double t0 = from, t1 = ccw ? from + sweep : from - sweep;
-      Contour arc;
-      for (const Point& p : flatten_curve(
-               [&](double t) {
-                 return Point{cx + mx * std::cos(t) + minor[0] * std::sin(t),
-                              cy + my * std::cos(t) + minor[1] * std::sin(t)};
-               },
-               t0, t1, tolerance()))
-        arc.push_back({p[0], p[1], 0});
-      ++flattened;
-      return arc;
-    }
-    if (edge == 4) {
-      const auto degree = static_cast<int>(number(94));
-      const bool rational = number(73) != 0;
-      number(74);
-      const auto knot_count = static_cast<int64_t>(number(95));
-      const auto control_count = static_cast<int64_t>(number(96));
-      std::vector<double> knots, weights;
-      std::vector<Point> control;
-      for (int64_t k = 0; k < knot_count && k < static_cast<int64_t>(kMostVertices); ++k)
-        knots.push_back(number(40));
-      for (int64_t k = 0; k < control_count && k < static_cast<int64_t>(kMostVertices); ++k) {
-        const double x = number(10), y = number(20);
-        control.push_back({x, y});
-        if (rational) weights.push_back(number(42));
-      }
-      Contour arc;
-      for (const Point& p : flatten_spline(degree, knots, control, weights, tolerance()))
-        arc.push_back({p[0], p[1], 0});
-      if (arc.empty())
-        throw SiteError(
-            fmt::format("{}: the {} on layer \"{}\" has a spline edge whose knots do "
-                        "not fit its control points; the file is damaged",
-                        file_, c.name, c.layer));
-      ++flattened;
-      return arc;
-    }
-    throw SiteError(
-        fmt::format("{}: the {} on layer \"{}\" has a boundary edge of type {}, "
-                    "which no DXF has (1 line, 2 arc, 3 elliptic arc, 4 spline)",
-                    file_, c.name, c.layer, edge));
-  }
-
-  // Edges of a hatch's path follow each other; one drawn the other way round is turned.
-  static void append_edge(Contour& path, Contour piece) {
-    if (piece.empty()) return;
-    if (path.empty()) {
-      path = std::move(piece);
-      return;
-    }
-    auto gap = [](const ContourVertex& a, const ContourVertex& b) {
-      return std::hypot(a.x - b.x, a.y - b.y);
-    };
-    if (gap(path.back(), piece.back()) < gap(path.back(), piece.front())) {
-      Contour r(piece.rbegin(), piece.rend());
-      for (size_t k = 0; k + 1 < r.size(); ++k) r[k].bulge = -r[k + 1].bulge;
-      r.back().bulge = 0;
-      piece = std::move(r);
-    }
-    path.back().bulge = piece.front().bulge;
-    path.insert(path.end(), piece.begin() + 1, piece.end());
   }
 
   struct Polyline {
@@ -765,116 +508,6 @@ class Reader {
   bool in_paper_ = false;
   std::optional<Polyline> polyline_;
   size_t shapes_ = 0, vertices_ = 0;
-};
-
-Placement placement_of(const Insert& i, const Block& b, int64_t column, int64_t row) {
-  const double t = i.angle * kPi / 180, cs = std::cos(t), sn = std::sin(t);
-  const double ox = static_cast<double>(column) * i.column_spacing,
-               oy = static_cast<double>(row) * i.row_spacing;
-  Placement p;
-  p.a = cs * i.sx, p.b = sn * i.sx, p.c = -sn * i.sy, p.d = cs * i.sy;
-  const Point base = {p.a * b.base_x + p.c * b.base_y, p.b * b.base_x + p.d * b.base_y};
-  p.e = i.x - base[0] + cs * ox - sn * oy;
-  p.f = i.y - base[1] + sn * ox + cs * oy;
-  // Drawn from below: the whole placement is mirrored into the plan.
-  return p.then(Placement{i.ocs_x, 0, 0, 1, 0, 0});
-}
-
-Contour placed_path(const Contour& path, bool closed, const Placement& p, double tolerance,
-                    bool& flattened) {
-  Contour out;
-  const bool mirror = p.determinant() < 0;
-  if (p.keeps_arcs() || !has_arcs(path)) {
-    for (const ContourVertex& v : path) {
-      const Point q = p.apply(v.x, v.y);
-      out.push_back({q[0], q[1], mirror ? -v.bulge : v.bulge});
-    }
-    return out;
-  }
-  // Stretched unevenly, an arc is an ellipse's: placed as chords.
-  Contour flat = path;
-  if (!closed) flat.back().bulge = 0;
-  for (const auto& q : flatten(flat, tolerance)) {
-    const Point r = p.apply(q[0], q[1]);
-    out.push_back({r[0], r[1], 0});
-  }
-  flattened = true;
-  return out;
-}
-
-Shape placed(const Shape& s, const Placement& p, double tolerance) {
-  Shape out = s;
-  bool flattened = false;
-  out.path = placed_path(s.path, s.closed, p, tolerance, flattened);
-  if (!s.strip.empty()) out.strip = placed_path(s.strip, true, p, tolerance, flattened);
-  out.flattened = s.flattened || flattened;
-  return out;
-}
-
-class Placer {
- public:
-  Placer(const Reader& c, const std::string& file, double tolerance, Drawing& drawing)
-      : c_(c), file_(file), tolerance_(tolerance), drawing_(drawing) {}
-
-  void place(const std::string& name, const Placement& p, const std::string& insert_layer,
-             int insert, const std::string& insert_handle, int depth) {
-    const auto it = c_.blocks.find(name);
-    if (it == c_.blocks.end()) {
-      missing_.insert(name);
-      return;
-    }
-    if (depth > kDeepestBlock)
-      throw SiteError(
-          fmt::format("{}: block \"{}\" is nested more than {} deep (or inserts "
-                      "itself); explode it and save the drawing again",
-                      file_, name, kDeepestBlock));
-    if (++placements_ > kMostPlacements) throw SiteError(too_many());
-    stop_point();
-    for (const Shape& s : it->second.shapes) {
-      if (drawing_.shapes.size() >= kMostShapes) throw SiteError(too_many());
-      Shape out = depth == 0 ? s : placed(s, p, tolerance_);
-      // Counted as placed: a block's few vertices, inserted in arrays, can be millions.
-      if ((vertices_ += out.path.size() + out.strip.size()) > kMostVertices)
-        throw SiteError(too_many());
-      if (depth > 0 && (out.layer == "0" || out.layer.empty())) out.layer = insert_layer;
-      out.insert = insert;
-      out.insert_handle = insert_handle;
-      drawing_.shapes.push_back(std::move(out));
-    }
-    for (const Insert& i : it->second.inserts) {
-      const std::string layer = depth > 0 && i.layer == "0" ? insert_layer : i.layer;
-      const int top = depth == 0 ? next_insert_++ : insert;
-      const std::string& top_handle = depth == 0 ? i.handle : insert_handle;
-      if (static_cast<uint64_t>(i.columns) * static_cast<uint64_t>(i.rows) > kMostPlacements)
-        throw SiteError(too_many());
-      const auto inner = c_.blocks.find(i.block);
-      if (inner == c_.blocks.end()) {
-        missing_.insert(i.block);
-        continue;
-      }
-      for (int64_t col = 0; col < i.columns; ++col)
-        for (int64_t row = 0; row < i.rows; ++row)
-          place(i.block, placement_of(i, inner->second, col, row).then(p), layer, top, top_handle,
-                depth + 1);
-    }
-  }
-  std::string too_many() const {
-    return fmt::format(
-        "{}: places more than {} shapes or {} vertices (or {} block placements) once its "
-        "blocks are inserted, more than a site drawing needs; keep only the layers of the "
-        "surface",
-        file_, kMostShapes, kMostVertices, kMostPlacements);
-  }
-  const std::set<std::string>& missing() const { return missing_; }
-
- private:
-  const Reader& c_;
-  std::string file_;
-  double tolerance_;
-  Drawing& drawing_;
-  int next_insert_ = 0;
-  size_t vertices_ = 0, placements_ = 0;
-  std::set<std::string> missing_;
 };
 
 }  // namespace
@@ -913,8 +546,8 @@ Drawing read_dxf(std::string_view bytes, const std::string& file_name, const Dxf
     drawing.unit_name = it->second;
   else if (reader.insunits != 0)
     drawing.unit_name = fmt::format("$INSUNITS {}", reader.insunits);
-  Placer placer(reader, file_name, reader.tolerance(), drawing);
-  placer.place("", Placement{}, "0", -1, "", 0);
+  const std::set<std::string> missing =
+      place_blocks(reader.blocks, file_name, reader.tolerance(), drawing);
   for (const auto& [name, flags] : reader.layer_flags)
     if ((flags & 1) || reader.layers_off.count(name)) drawing.hidden.push_back(name);
   if (reader.flattened)
@@ -936,9 +569,9 @@ Drawing read_dxf(std::string_view bytes, const std::string& file_name, const Dxf
   if (reader.hatches)
     drawing.notes.push_back(fmt::format("{} hatches read by their boundary paths", reader.hatches));
   drawing.notes.insert(drawing.notes.end(), reader.notes.begin(), reader.notes.end());
-  if (!placer.missing().empty()) {
+  if (!missing.empty()) {
     std::string names;
-    for (const auto& n : placer.missing()) names += (names.empty() ? "" : ", ") + n;
+    for (const auto& n : missing) names += (names.empty() ? "" : ", ") + n;
     drawing.notes.push_back("blocks inserted but not defined, passed over: " + names);
   }
   return drawing;

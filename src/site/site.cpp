@@ -15,283 +15,17 @@
 #include "layout/zone.h"
 #include "site/dxf_reader.h"
 #include "site/gltf_reader.h"
+#include "site/layer_shapes.h"
 #include "site/svg_reader.h"
 
 namespace curdle::site {
 namespace {
-
-// How far from its origin a drawing's point may lie, in its units: 10^12 mm is the distance to
-// the sun; a national grid's origin in millimetres is 10^10 away at most.
-constexpr double kFarthest = 1e12;
-// The largest bulge a drawing may give: an arc just short of a full turn (359.9°) has 4,600.
-constexpr double kSteepest = 1e6;
 
 // Coordinates in mm are kept to the nanometre, so that the same drawing in other units gives
 // the same numbers (14,000 mm drawn as 551.1811... in gives 14000.000000000002 before this).
 double snapped(double mm) {
   const double v = std::round(mm * 1e6) / 1e6;
   return v == 0 ? 0 : v;  // no -0
-}
-
-// 14000 as "14,000"; 2.5 as "2.5".
-std::string grouped(double v) {
-  if (std::fabs(v - std::round(v)) > 1e-6) return fmt::format("{:g}", v);
-  // Grouped by hand, appended piece by piece (GCC 12 warns falsely on insert and +).
-  const std::string digits = fmt::format("{:.0f}", std::fabs(std::round(v)));
-  std::string out = v < 0 ? "-" : "";
-  for (size_t i = 0; i < digits.size(); ++i) {
-    if (i && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
-
-struct Piece {
-  const Shape* shape;
-  Contour path;
-};
-
-// A closed contour on a layer, with the entities it was made of for messages.
-struct Closed {
-  Contour path;
-  std::string handles;  // "3A, 3B"
-  std::string entity;   // of its first shape
-  int insert = -1;
-  std::vector<const Shape*> shapes;  // what it was made of
-};
-
-Contour reversed(const Contour& path) {
-  // The edge a → b with bulge k is b → a with bulge -k: each bulge moves to the edge's other end.
-  Contour r(path.rbegin(), path.rend());
-  for (size_t i = 0; i + 1 < r.size(); ++i) r[i].bulge = -r[i + 1].bulge;
-  r.back().bulge = 0;
-  return r;
-}
-
-// "LINE 9D in block \"PIT\" (INSERT 2F)": where a designer finds it in CAD.
-std::string handle_of(const Shape& s) {
-  std::string name = s.handle.empty() ? s.entity : s.entity + " " + s.handle;
-  if (!s.block.empty()) name += fmt::format(" in block \"{}\"", s.block);
-  if (!s.insert_handle.empty()) name += fmt::format(" (INSERT {})", s.insert_handle);
-  return name;
-}
-
-// A number at the drawing's precision, without trailing zeros: 530012.3456 m stays so.
-std::string number(double v, int precision) {
-  std::string t = fmt::format("{:.{}f}", v, std::clamp(precision, 0, 8));
-  if (t.find('.') != std::string::npos) {
-    while (t.back() == '0') t.pop_back();
-    if (t.back() == '.') t.pop_back();
-  }
-  return t == "-0" ? "0" : t;
-}
-
-std::string at(const ContourVertex& v, int precision) {
-  return fmt::format("({}, {})", number(v.x, precision), number(v.y, precision));
-}
-
-// Joins open pieces end to end (within `tolerance`, drawing units) into closed contours; a chain
-// that does not close is returned in `open`, its ends the gap's.
-void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& closed,
-          std::vector<Closed>& open) {
-  const double cell = std::max(tolerance, 1e-12) * 2;
-  using Key = std::pair<int64_t, int64_t>;
-  struct KeyHash {
-    size_t operator()(const Key& k) const {
-      return std::hash<int64_t>()(k.first * 73856093) ^ std::hash<int64_t>()(k.second * 19349663);
-    }
-  };
-  auto key_of = [&](double x, double y) {
-    return Key{static_cast<int64_t>(std::floor(x / cell)),
-               static_cast<int64_t>(std::floor(y / cell))};
-  };
-  std::unordered_multimap<Key, size_t, KeyHash> ends;  // piece * 2 + (0 start, 1 end)
-  for (size_t i = 0; i < pieces.size(); ++i) {
-    ends.emplace(key_of(pieces[i].path.front().x, pieces[i].path.front().y), 2 * i);
-    ends.emplace(key_of(pieces[i].path.back().x, pieces[i].path.back().y), 2 * i + 1);
-  }
-  std::vector<bool> used(pieces.size(), false);
-  auto find_near = [&](const ContourVertex& v) -> std::optional<size_t> {
-    const Key k = key_of(v.x, v.y);
-    std::optional<size_t> best;
-    double nearest = tolerance;
-    for (int64_t dx = -1; dx <= 1; ++dx)
-      for (int64_t dy = -1; dy <= 1; ++dy) {
-        const auto [lo, hi] = ends.equal_range(Key{k.first + dx, k.second + dy});
-        for (auto it = lo; it != hi; ++it) {
-          if (used[it->second / 2]) continue;
-          const Contour& p = pieces[it->second / 2].path;
-          const ContourVertex& e = it->second % 2 ? p.back() : p.front();
-          const double d = std::hypot(e.x - v.x, e.y - v.y);
-          if (d <= nearest) nearest = d, best = it->second;
-        }
-      }
-    return best;
-  };
-  for (size_t first = 0; first < pieces.size(); ++first) {
-    stop_point();
-    if (used[first]) continue;
-    used[first] = true;
-    Closed c{pieces[first].path,
-             handle_of(*pieces[first].shape),
-             pieces[first].shape->entity,
-             pieces[first].shape->insert,
-             {pieces[first].shape}};
-    const size_t most_pieces = 100000;
-    for (size_t k = 0; k < most_pieces; ++k) {
-      const ContourVertex start = c.path.front(), end = c.path.back();
-      if (c.path.size() > 2 && std::hypot(start.x - end.x, start.y - end.y) <= tolerance) break;
-      const auto next = find_near(end);
-      if (!next) break;
-      used[*next / 2] = true;
-      const Piece& p = pieces[*next / 2];
-      Contour add = *next % 2 ? reversed(p.path) : p.path;
-      c.path.back().bulge = add.front().bulge;  // the shared vertex carries the next edge
-      c.path.insert(c.path.end(), add.begin() + 1, add.end());
-      c.handles += ", " + handle_of(*p.shape);
-      c.shapes.push_back(p.shape);
-    }
-    const ContourVertex start = c.path.front(), end = c.path.back();
-    const bool closes =
-        c.path.size() > 2 && std::hypot(start.x - end.x, start.y - end.y) <= tolerance;
-    if (closes) {
-      c.path.pop_back();  // the last vertex is the first again
-      closed.push_back(std::move(c));
-    } else {
-      open.push_back(std::move(c));
-    }
-  }
-}
-
-// Whether every vertex of `inner` lies inside `outer` or on its edges.
-bool lies_within(const Polygon& inner, const Polygon& outer, double tolerance) {
-  return std::all_of(inner.begin(), inner.end(), [&](const auto& v) {
-    return contains(outer, v[0], v[1]) || distance_to_edges(outer, v[0], v[1]) <= tolerance;
-  });
-}
-
-Rect bounds_of(const Polygon& p) {
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-  for (const auto& v : p)
-    x0 = std::min(x0, v[0]), y0 = std::min(y0, v[1]), x1 = std::max(x1, v[0]),
-    y1 = std::max(y1, v[1]);
-  return {x0, y0, x1 - x0, y1 - y0};
-}
-
-// What a layer holds that is not one of its shapes, counted for the notes.
-struct PassedOver {
-  size_t inside = 0;   // closed shapes inside another: a trunk in its pit, a sash in its frame
-  size_t pieces = 0;   // lines inside a closed shape: a grille, glazing bars
-  size_t repeats = 0;  // a shape drawn twice: a hatch over its boundary
-};
-
-// A layer's closed contours, as a designer means them: closed shapes, and open pieces joined
-// end to end. A piece left open is the strip it covers where it was drawn with width; else it
-// is passed over where it lies inside one of the layer's closed contours, and refused where it
-// does not. A closed contour inside another of the layer's, or the same again, is passed over:
-// the layer's shapes are the outer ones.
-std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, double tolerance,
-                              const std::string& file, const std::string& role, double unit_mm,
-                              PassedOver& passed) {
-  std::vector<Closed> closed;
-  std::vector<Piece> pieces;
-  for (const Shape& s : drawing.shapes) {
-    if (!on_layer(s, layer)) continue;
-    if (!s.fault.empty())
-      throw SiteError(fmt::format(
-          "{}: {}{} (the layer holds the {})", file, s.fault,
-          s.insert_handle.empty() ? "" : ", placed by INSERT " + s.insert_handle, role));
-    for (const ContourVertex& v : s.path)
-      if (!(std::fabs(v.x) <= kFarthest && std::fabs(v.y) <= kFarthest &&
-            std::fabs(v.bulge) <= kSteepest))
-        throw SiteError(
-            fmt::format("{}: the {} on layer \"{}\" has the point ({:g}, {:g}), "
-                        "beyond {:g} drawing units from the origin or not a number; "
-                        "the drawing is damaged: export it again",
-                        file, handle_of(s), layer, v.x, v.y, kFarthest));
-    if (s.closed)
-      closed.push_back({s.path, handle_of(s), s.entity, s.insert, {&s}});
-    else
-      pieces.push_back({&s, s.path});
-  }
-  std::vector<Closed> open;
-  join(std::move(pieces), tolerance, closed, open);
-  std::vector<Closed> still_open;
-  for (Closed& o : open) {
-    const bool wide = std::all_of(o.shapes.begin(), o.shapes.end(),
-                                  [](const Shape* s) { return !s->strip.empty(); });
-    if (!wide) {
-      still_open.push_back(std::move(o));
-      continue;
-    }
-    for (const Shape* s : o.shapes)
-      closed.push_back({s->strip, handle_of(*s) + " (its width)", s->entity, s->insert, {s}});
-  }
-
-  // The outer shapes: each tested against the larger ones whose box holds it.
-  std::vector<Polygon> flat;
-  std::vector<double> area;
-  std::vector<Rect> box;
-  for (const Closed& c : closed) {
-    flat.push_back(flatten(c.path, tolerance));
-    area.push_back(polygon_area(flat.back()));
-    box.push_back(bounds_of(flat.back()));
-  }
-  std::vector<size_t> order(closed.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  // Largest first; of equal shapes the one drawn as an outline before its hatch.
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    if (std::fabs(area[a] - area[b]) > 1e-9 * std::max(area[a], area[b])) return area[a] > area[b];
-    return (closed[a].entity != "HATCH") > (closed[b].entity != "HATCH");
-  });
-  auto holds = [&](size_t outer, size_t inner) {
-    const Rect& o = box[outer];
-    const Rect& i = box[inner];
-    return i.x >= o.x - tolerance && i.y >= o.y - tolerance && i.right() <= o.right() + tolerance &&
-           i.top() <= o.top() + tolerance && lies_within(flat[inner], flat[outer], tolerance);
-  };
-  std::vector<size_t> outer;
-  for (size_t i : order) {
-    stop_point();
-    bool nested = false, repeat = false;
-    for (size_t o : outer)
-      if (holds(o, i)) {
-        nested = true;
-        repeat = std::fabs(area[o] - area[i]) <= 1e-6 * area[o] && holds(i, o);
-        break;
-      }
-    if (!nested) {
-      outer.push_back(i);
-    } else if (repeat) {
-      ++passed.repeats;
-    } else {
-      ++passed.inside;
-    }
-  }
-  std::sort(outer.begin(), outer.end());  // in the drawing's order
-  std::vector<Closed> kept;
-  for (size_t i : outer) kept.push_back(std::move(closed[i]));
-
-  for (const Closed& o : still_open) {
-    Polygon chain;
-    for (const ContourVertex& v : o.path) chain.push_back({v.x, v.y});
-    const bool within = std::any_of(outer.begin(), outer.end(), [&](size_t i) {
-      return lies_within(chain, flat[i], tolerance);
-    });
-    if (within) {
-      passed.pieces += o.shapes.size();
-      continue;
-    }
-    throw SiteError(fmt::format(
-        "{}: the {} on layer \"{}\" is not closed: {} ends at {} and {} ({} mm apart, more than "
-        "the {:g} mm that are joined); close it (PEDIT Join, or draw it as one closed polyline)",
-        file, role, layer, o.handles, at(o.path.front(), drawing.precision),
-        at(o.path.back(), drawing.precision),
-        grouped(std::hypot(o.path.front().x - o.path.back().x, o.path.front().y - o.path.back().y) *
-                unit_mm),
-        kJoinTolerance));
-  }
-  return kept;
 }
 
 // The checks a recipe's own polygon passes, before any geometry is cut along a drawn one: at
@@ -307,35 +41,13 @@ void check_simple(const Polygon& mm, const Closed& c, const std::string& layer, 
         "{}: the {} {} on layer \"{}\" (at {} in the drawing) encloses {} mm², less than the "
         "{:g} mm² a {} needs: it is a line or a sliver; redraw it as a closed shape, or take it "
         "off the layer",
-        file, role, c.handles, layer, at(c.path.front(), precision), fmt::format("{:.3g}", area),
-        kLeastArea, role));
+        file, role, c.handles, layer, point_text(c.path.front(), precision),
+        fmt::format("{:.3g}", area), kLeastArea, role));
   if (const auto crossing = first_crossing(mm))
     throw SiteError(fmt::format(
         "{}: the {} {} on layer \"{}\" crosses or touches itself at ({:g}, {:g}) mm from the "
         "layout's datum; a {} goes round its area once: redraw it",
         file, role, c.handles, layer, (*crossing)[0], (*crossing)[1], role));
-}
-
-// "3 shapes inside others on layer L-PLNT-PITS passed over (...)": what a layer held besides
-// its shapes.
-void note_passed_over(const PassedOver& p, const std::string& layer,
-                      std::vector<std::string>& notes) {
-  if (p.inside)
-    notes.push_back(
-        fmt::format("layer \"{}\": {} closed shapes inside others passed over (a "
-                    "trunk in its pit, a sash in its frame): the outer line is the "
-                    "shape",
-                    layer, p.inside));
-  if (p.pieces)
-    notes.push_back(
-        fmt::format("layer \"{}\": {} lines and arcs inside its shapes passed over "
-                    "(grilles, glazing bars)",
-                    layer, p.pieces));
-  if (p.repeats)
-    notes.push_back(
-        fmt::format("layer \"{}\": {} shapes drawn again over another (a hatch "
-                    "over its boundary) read once",
-                    layer, p.repeats));
 }
 
 Contour counter_clockwise(Contour c) {
@@ -452,26 +164,6 @@ void check_plausible(const Rect& mm, const LayerMap& map, const std::string& uni
                   map.file, size, unit_name, longer > 5e6 ? "too large" : "too small", hint));
 }
 
-// The smallest of a layer's shapes around a point in drawing coordinates, as CAD's BOUNDARY
-// picks; SiteError naming the point when none lies around it.
-Closed smallest_around(const std::vector<Closed>& shapes, const std::array<double, 2>& point,
-                       double tolerance, const std::string& file, const std::string& layer,
-                       int precision) {
-  std::optional<size_t> best;
-  double smallest = 0;
-  for (size_t i = 0; i < shapes.size(); ++i) {
-    const Polygon p = flatten(shapes[i].path, tolerance);
-    const double a = polygon_area(p);
-    if (contains(p, point[0], point[1]) && (!best || a < smallest)) best = i, smallest = a;
-  }
-  if (!best)
-    throw SiteError(
-        fmt::format("{}: no closed shape on layer \"{}\" lies around the point ({}, "
-                    "{}) that around gives (drawing coordinates)",
-                    file, layer, number(point[0], precision), number(point[1], precision)));
-  return shapes[*best];
-}
-
 // The openings and zones: inside the outline, each named after its layer.
 void read_holes(const Drawing& drawing, const LayerMap& map, const Polygon& outline,
                 const std::array<double, 2>& datum, double unit_mm, double join_tolerance,
@@ -484,10 +176,10 @@ void read_holes(const Drawing& drawing, const LayerMap& map, const Polygon& outl
         p.begin(), p.end(), [&](const auto& v) { return contains(outline, v[0], v[1]); });
     const bool holds_outline = !outline.empty() && contains(p, outline[0][0], outline[0][1]);
     if (!any_inside && !holds_outline)
-      throw SiteError(
-          fmt::format("{}: the {} {} on layer \"{}\" lies outside the outline (at "
-                      "{} in the drawing); move it onto the surface, or off the layer",
-                      map.file, role, c.handles, layer, at(c.path.front(), drawing.precision)));
+      throw SiteError(fmt::format(
+          "{}: the {} {} on layer \"{}\" lies outside the outline (at "
+          "{} in the drawing); move it onto the surface, or off the layer",
+          map.file, role, c.handles, layer, point_text(c.path.front(), drawing.precision)));
     return mm;
   };
   for (const std::string& layer : map.openings) {
@@ -522,8 +214,8 @@ Closed picked_outline(const std::vector<Closed>& outlines, const LayerMap& map,
     for (size_t i = 0; i < outlines.size() && i < 12; ++i) {
       const Rect b = contour_bounds(outlines[i].path);
       text += fmt::format("{}{} ({} x {} at {})", i ? "; " : "", outlines[i].handles,
-                          number(b.w, drawing.precision), number(b.h, drawing.precision),
-                          at({b.x, b.y, 0}, drawing.precision));
+                          number_text(b.w, drawing.precision), number_text(b.h, drawing.precision),
+                          point_text({b.x, b.y, 0}, drawing.precision));
     }
     return outlines.size() > 12 ? text + "; ..." : text;
   };
