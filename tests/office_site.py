@@ -163,9 +163,9 @@ def main():
     check("closed shapes inside others passed over" in said, "the trunks are not said passed over")
 
     # Only the outline and the zones are read (ezdxf's streaming reader: the tiles are many).
-    wanted = [e for e in iterdxf.single_pass_modelspace(open(os.path.join(out, "layout.dxf"), "rb"),
-                                                         types=["LWPOLYLINE", "CIRCLE"])
-              if e.dxf.layer in ("OUTLINE", "ZONES")]
+    with open(os.path.join(out, "layout.dxf"), "rb") as f:
+        wanted = [e for e in iterdxf.single_pass_modelspace(f, types=["LWPOLYLINE", "CIRCLE"])
+                  if e.dxf.layer in ("OUTLINE", "ZONES")]
     outline = [e for e in wanted if e.dxftype() == "LWPOLYLINE" and e.dxf.layer == "OUTLINE"]
     check(len(outline) == 1, f"{len(outline)} outlines in layout.dxf")
     ring = [(x, y) for x, y in outline[0].get_points("xy")]
