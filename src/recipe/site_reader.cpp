@@ -37,6 +37,19 @@ std::vector<std::string> read_layers(TableReader& r, const std::string& key) {
   return layers;
 }
 
+// `key` as a point of the drawing, [x, y] in its own coordinates (finite, within 10^12 of its
+// origin); nullopt where the key is absent, and `allowed` said where it is no such point.
+std::optional<std::array<double, 2>> read_drawing_point(TableReader& r, const std::string& key,
+                                                        const std::string& allowed) {
+  const toml::node* n = r.get(key);
+  if (!n) return std::nullopt;
+  const toml::array* a = n->as_array();
+  const auto x = a && a->size() == 2 ? finite_number(a->get(0)) : std::nullopt;
+  const auto y = a && a->size() == 2 ? finite_number(a->get(1)) : std::nullopt;
+  if (!x || !y || std::fabs(*x) > 1e12 || std::fabs(*y) > 1e12) r.fail(key, allowed);
+  return std::array<double, 2>{*x, *y};
+}
+
 site::ZoneLayer read_zone_layer(TableReader& r, size_t values) {
   site::ZoneLayer z;
   z.layer = read_name(r, "layer", "a layer's name").value_or("");
@@ -53,16 +66,9 @@ site::ZoneLayer read_zone_layer(TableReader& r, size_t values) {
   } else {
     r.fail("rule", "must be \"exclude\" (no elements) or \"value\" with value = N");
   }
-  if (const toml::node* a = r.get("around")) {
-    const toml::array* xy = a->as_array();
-    const auto x = xy && xy->size() == 2 ? finite_number(xy->get(0)) : std::nullopt;
-    const auto y = xy && xy->size() == 2 ? finite_number(xy->get(1)) : std::nullopt;
-    if (!x || !y || std::fabs(*x) > 1e12 || std::fabs(*y) > 1e12)
-      r.fail("around",
-             "must be [x, y]: a point inside the one shape of the layer that is the "
-             "zone, in the drawing's own coordinates and units");
-    z.around = std::array<double, 2>{*x, *y};
-  }
+  z.around = read_drawing_point(r, "around",
+                                "must be [x, y]: a point inside the one shape of the layer that "
+                                "is the zone, in the drawing's own coordinates and units");
   return z;
 }
 
@@ -89,11 +95,7 @@ void read_units_and_origin(TableReader& r, site::LayerMap& map) {
       r.fail("origin", allowed);
     return;
   }
-  const toml::array* a = n->as_array();
-  const auto x = a && a->size() == 2 ? finite_number(a->get(0)) : std::nullopt;
-  const auto y = a && a->size() == 2 ? finite_number(a->get(1)) : std::nullopt;
-  if (!x || !y || std::fabs(*x) > 1e12 || std::fabs(*y) > 1e12) r.fail("origin", allowed);
-  map.origin = std::array<double, 2>{*x, *y};
+  map.origin = read_drawing_point(r, "origin", allowed);
 }
 
 // `file`: a drawing's name, a .dxf or .svg relative to the recipe; where `or_model`, also a
@@ -137,17 +139,10 @@ void read_outline_layer(TableReader& r, const std::string& key, const std::strin
     pr.fail("layer",
             "must name the drawing's layer that holds the outline, e.g. \"" + example + "\"");
   int ways = 0;
-  if (const toml::node* a = pr.get("around")) {
-    const toml::array* xy = a->as_array();
-    const auto x = xy && xy->size() == 2 ? finite_number(xy->get(0)) : std::nullopt;
-    const auto y = xy && xy->size() == 2 ? finite_number(xy->get(1)) : std::nullopt;
-    if (!x || !y || std::fabs(*x) > 1e12 || std::fabs(*y) > 1e12)
-      pr.fail("around",
-              "must be [x, y]: a point inside the outline, in the drawing's own "
-              "coordinates and units (as CAD shows them)");
-    map.pick.around = std::array<double, 2>{*x, *y};
-    ++ways;
-  }
+  map.pick.around = read_drawing_point(pr, "around",
+                                       "must be [x, y]: a point inside the outline, in the "
+                                       "drawing's own coordinates and units (as CAD shows them)");
+  ways += map.pick.around.has_value();
   if (pr.get("handle")) {
     map.pick.handle = read_string(pr, "handle", "an entity's handle").value_or("");
     if (map.pick.handle.empty() || map.pick.handle.size() > 16)

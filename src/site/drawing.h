@@ -73,5 +73,7 @@ inline std::vector<std::string> layers_of(const Drawing& drawing) {
 inline constexpr size_t kMostDrawingBytes = size_t{64} << 20;
 inline constexpr size_t kMostShapes = 200000;
 inline constexpr size_t kMostVertices = 2000000;
+// How far from the plan's plane a vertex may stand before a shape is off it, drawing units.
+inline constexpr double kPlaneTolerance = 1e-6;
 
 }  // namespace curdle::site

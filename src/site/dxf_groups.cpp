@@ -95,6 +95,20 @@ double DxfGroups::real(const DxfGroup& group, std::string_view entity) const {
   return v;
 }
 
+double DxfGroups::real_of(const std::vector<DxfGroup>& groups, int code, double fallback,
+                          std::string_view entity) const {
+  for (const DxfGroup& g : groups)
+    if (g.code == code) return real(g, entity);
+  return fallback;
+}
+
+int64_t DxfGroups::integer_of(const std::vector<DxfGroup>& groups, int code, int64_t fallback,
+                              std::string_view entity) const {
+  for (const DxfGroup& g : groups)
+    if (g.code == code) return integer(g, entity);
+  return fallback;
+}
+
 int64_t DxfGroups::integer(const DxfGroup& group, std::string_view entity) const {
   int64_t v = 0;
   const char* first = group.value.data();

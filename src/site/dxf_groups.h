@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace curdle::site {
 
@@ -36,6 +37,13 @@ class DxfGroups {
   double real(const DxfGroup& group, std::string_view entity) const;
   // An integer (codes 60-99, 170-179, 270-289, 370-389, 400-409, 1060-1071).
   int64_t integer(const DxfGroup& group, std::string_view entity) const;
+
+  // The first group of `code` among an entity's `groups`, read as real or integer does; the
+  // fallback where the entity has none.
+  double real_of(const std::vector<DxfGroup>& groups, int code, double fallback,
+                 std::string_view entity) const;
+  int64_t integer_of(const std::vector<DxfGroup>& groups, int code, int64_t fallback,
+                     std::string_view entity) const;
 
   const std::string& file() const { return file_; }
 

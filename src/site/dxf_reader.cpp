@@ -26,8 +26,6 @@ namespace curdle::site {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// How far from the plan's plane a vertex may stand before a shape is off it, drawing units.
-constexpr double kPlaneTolerance = 1e-6;
 
 struct Record {
   std::string_view type;
@@ -126,14 +124,10 @@ class Reader {
     return std::nullopt;
   }
   double real(const Record& r, int code, double fallback, std::string_view what) const {
-    for (const DxfGroup& g : r.groups)
-      if (g.code == code) return groups_.real(g, what);
-    return fallback;
+    return groups_.real_of(r.groups, code, fallback, what);
   }
   int64_t integer(const Record& r, int code, int64_t fallback, std::string_view what) const {
-    for (const DxfGroup& g : r.groups)
-      if (g.code == code) return groups_.integer(g, what);
-    return fallback;
+    return groups_.integer_of(r.groups, code, fallback, what);
   }
 
   void header(const Record& r) {

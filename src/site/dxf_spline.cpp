@@ -9,25 +9,12 @@
 #include "site/spline_fit.h"
 
 namespace curdle::site {
-namespace {
-
-// How far from the plan's plane a vertex may stand before a shape is off it, drawing units.
-constexpr double kPlaneTolerance = 1e-6;
-
-int64_t integer_of(const std::vector<DxfGroup>& groups, const DxfGroups& numbers, int code,
-                   int64_t fallback, const std::string& name) {
-  for (const DxfGroup& g : groups)
-    if (g.code == code) return numbers.integer(g, name);
-  return fallback;
-}
-
-}  // namespace
 
 SplineReading read_spline(const std::vector<DxfGroup>& groups, const DxfGroups& numbers,
                           const std::string& name, double tolerance) {
   SplineReading out;
-  const int64_t flags = integer_of(groups, numbers, 70, 0, name);
-  const int64_t degree = integer_of(groups, numbers, 71, 3, name);
+  const int64_t flags = numbers.integer_of(groups, 70, 0, name);
+  const int64_t degree = numbers.integer_of(groups, 71, 3, name);
   std::vector<double> knots, weights, heights;
   std::vector<Point> control, fit;
   std::optional<Point> start, end;
