@@ -33,6 +33,51 @@ TEST(SplineFitTest, EstimatedTangentsGiveWhatCadDraws) {
   }
 }
 
+// The same fit points under the other spacings a SPLINE's flags name, against ezdxf 0.18's
+// global_bspline_interpolation with the same parameters and end derivatives (each the end
+// chord over its parameter step).
+TEST(SplineFitTest, SquareRootChordAndUniformSpacingsAsTheFlagsSay) {
+  EXPECT_EQ(knot_spacing_of(8), KnotSpacing::chord);
+  EXPECT_EQ(knot_spacing_of(8 | 32 | 1024), KnotSpacing::chord);
+  EXPECT_EQ(knot_spacing_of(8 | 64 | 1024), KnotSpacing::square_root_chord);
+  EXPECT_EQ(knot_spacing_of(8 | 128 | 1024), KnotSpacing::uniform);
+  struct Expected {
+    KnotSpacing spacing;
+    std::vector<double> inner_knots;
+    std::vector<Point> control;
+  };
+  const std::vector<Expected> cases = {
+      {KnotSpacing::square_root_chord,
+       {0.251358418579, 0.497028151462, 0.755175958608},
+       {{0, 0},
+        {2.039118476, 2.175059707},
+        {6.724302104, 8.07940648},
+        {-2.66011224, 16.177170914},
+        {9.941415392, 23.933837673},
+        {2.593865822, 28.872232251},
+        {0, 30}}},
+      {KnotSpacing::uniform,
+       {0.25, 0.5, 0.75},
+       {{0, 0},
+        {2.039118476, 2.175059707},
+        {6.746342643, 8.244713984},
+        {-2.670876963, 15.880911495},
+        {9.937165208, 24.231640037},
+        {2.593865822, 28.872232251},
+        {0, 30}}}};
+  for (const Expected& e : cases) {
+    const auto s = spline_through(kFit, std::nullopt, std::nullopt, e.spacing);
+    ASSERT_TRUE(s);
+    ASSERT_EQ(s->knots.size(), 11u);
+    for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(s->knots[4 + i], e.inner_knots[i], 1e-9) << i;
+    ASSERT_EQ(s->control.size(), e.control.size());
+    for (size_t i = 0; i < e.control.size(); ++i) {
+      EXPECT_NEAR(s->control[i][0], e.control[i][0], 1e-8) << i;
+      EXPECT_NEAR(s->control[i][1], e.control[i][1], 1e-8) << i;
+    }
+  }
+}
+
 TEST(SplineFitTest, StoredTangentsAreHonoured) {
   // Unit directions, scaled to the fit polygon's length as CAD scales them.
   const auto s = spline_through(kFit, Point{1, 0}, Point{0, 1});

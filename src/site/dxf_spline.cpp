@@ -52,7 +52,7 @@ SplineReading read_spline(const std::vector<DxfGroup>& groups, const DxfGroups& 
           "is a closed spline given only by fit points, which curdle does not draw as CAD does; "
           "convert it to control vertices (SPLINEDIT, or save as DXF 2000 or later) or draw the "
           "edge as a polyline";
-    } else if (const auto cubic = spline_through(fit, start, end)) {
+    } else if (const auto cubic = spline_through(fit, start, end, knot_spacing_of(flags))) {
       out.points = flatten_spline(3, cubic->knots, cubic->control, {}, tolerance);
       out.fitted = true;
     }

@@ -55,9 +55,16 @@ std::array<double, 4> basis(const std::vector<double>& knots, size_t span, doubl
 
 }  // namespace
 
+KnotSpacing knot_spacing_of(long long flags) {
+  if (flags & 64) return KnotSpacing::square_root_chord;
+  if (flags & 128) return KnotSpacing::uniform;
+  return KnotSpacing::chord;
+}
+
 std::optional<CubicSpline> spline_through(const std::vector<Point>& given,
                                           std::optional<Point> start_tangent,
-                                          std::optional<Point> end_tangent) {
+                                          std::optional<Point> end_tangent,
+                                          KnotSpacing spacing) {
   std::vector<Point> fit;
   for (const Point& p : given) {
     if (!std::isfinite(p[0]) || !std::isfinite(p[1])) return std::nullopt;
@@ -65,23 +72,32 @@ std::optional<CubicSpline> spline_through(const std::vector<Point>& given,
   }
   if (fit.size() < 2) return std::nullopt;
   const size_t n = fit.size() - 1;  // the last fit point's index
-  // Chord-length parameters, 0 to 1.
+  // The parameters, 0 to 1, spaced as the drawing says.
   std::vector<double> t(n + 1, 0.0);
   double total = 0;
-  for (size_t k = 1; k <= n; ++k) t[k] = total += length(minus(fit[k], fit[k - 1]));
+  for (size_t k = 1; k <= n; ++k) {
+    const double chord = length(minus(fit[k], fit[k - 1]));
+    const double step = spacing == KnotSpacing::chord               ? chord
+                        : spacing == KnotSpacing::square_root_chord ? std::sqrt(chord)
+                                                                    : 1.0;
+    t[k] = total += step;
+  }
   if (!(total > 0) || !std::isfinite(total)) return std::nullopt;
   for (double& v : t) v /= total;
   t[n] = 1;
 
-  // The end derivatives: the stored directions or the estimate, as long as the fit polygon.
+  // The end derivatives: the stored directions or the estimate, as long as the end chord over
+  // its parameter step (for chord length: the fit polygon's length, as CAD makes them).
   const std::array<Point, 2> estimated = five_point_tangents(fit);
-  auto derivative = [&](std::optional<Point> stored, const Point& guess) {
+  auto derivative = [&](std::optional<Point> stored, const Point& guess, double magnitude) {
     const Point d = stored && length(*stored) > 0 ? *stored : guess;
     const double l = length(d);
-    return l > 0 && std::isfinite(l) ? scaled(d, total / l) : minus(fit[n], fit[0]);
+    return l > 0 && std::isfinite(l) && std::isfinite(magnitude) ? scaled(d, magnitude / l)
+                                                                 : minus(fit[n], fit[0]);
   };
-  const Point d0 = derivative(start_tangent, estimated[0]);
-  const Point d1 = derivative(end_tangent, estimated[1]);
+  const Point d0 = derivative(start_tangent, estimated[0], length(minus(fit[1], fit[0])) / t[1]);
+  const Point d1 =
+      derivative(end_tangent, estimated[1], length(minus(fit[n], fit[n - 1])) / (1 - t[n - 1]));
 
   // n + 3 control points over the clamped "natural" knots 0,0,0,0, t1 .. t(n-1), 1,1,1,1.
   const size_t m = n + 3;
