@@ -6,6 +6,7 @@
 
 #include "curdle/stop.h"
 #include "export/dxf_document.h"
+#include "export/title_block.h"
 #include "export/wkt.h"
 #include "layout/contour.h"
 #include "layout/piece.h"
@@ -55,6 +56,10 @@ void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, in
   }
   const double h = std::max(5.0, std::min(s.area.w, s.area.h) / 80);
   dxf.text("TEXT", h, h, h, s.id, false);
+  // The cutter needs the sheet at its own origin; the site team needs where that origin lies.
+  if (layout.site_frame)
+    dxf.text("ID", h, 2.5 * h, h,
+             "(0, 0) = " + site_point_text(*layout.site_frame, s.area.x, s.area.y), false);
   dxf.close();
 }
 

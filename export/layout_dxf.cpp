@@ -62,6 +62,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout,
   const bool pits = std::any_of(layout.planting.begin(), layout.planting.end(),
                                 [](const PlantingSpec& p) { return p.pit_given(); });
   if (pits) layers.push_back({"TREE_PITS", Rgb{110, 80, 50}, true});
+  if (!layout.sheets.empty()) layers.push_back({"SHEETS", Rgb{0, 128, 0}, false});
   std::map<std::string, bool> seen;
   for (const Element& e : layout.elements) {
     stop_point();
@@ -107,6 +108,13 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout,
       continue;
     }
     dxf.rect(layer, laid_bounds(e));
+  }
+  // Each fabrication sheet where it lies, by its ID, so that its cutting file can be found on
+  // the plan (and, in layout-site.dxf, on the site drawing).
+  for (const auto& s : layout.sheets) {
+    dxf.rect("SHEETS", s.area);
+    dxf.text("SHEETS", s.area.x + s.area.w / 2, s.area.y + s.area.h / 2,
+             std::max(0.1, std::min(s.area.w, s.area.h) / 10), s.id, true);
   }
   for (const Element& e : layout.elements) {
     stop_point();

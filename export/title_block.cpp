@@ -26,18 +26,23 @@ std::string segment_text(const Layout& layout) {
   return fmt::format("window {},{} of the {} field", at, size, whole);
 }
 
-// "datum (0, 0) = E 530,000.000 N 180,000.000 m in site.dxf": the drawing's coordinates at its
-// precision, thousands grouped.
-std::string datum_line(const SiteFrame& f) {
+std::string site_point_text(const SiteFrame& f, double x_mm, double y_mm) {
   auto grouped = [&](double v) {
     std::string t = fmt::format("{:.{}f}", std::fabs(v), std::clamp(f.precision, 0, 8));
     const size_t dot = std::min(t.find('.'), t.size());
     for (size_t i = dot; i > 3; i -= 3) t.insert(i - 3, ",");
     return (v < 0 ? "-" : "") + t;
   };
-  return fmt::format("datum (0, 0) = E {} N {} {} in {}", grouped(f.datum[0]), grouped(f.datum[1]),
-                     f.unit_name, f.file);
+  return fmt::format("E {} N {} {} in {}", grouped(f.datum[0] + x_mm / f.unit_mm),
+                     grouped(f.datum[1] + y_mm / f.unit_mm), f.unit_name, f.file);
 }
+
+namespace {
+
+// "datum (0, 0) = E 530,000.000 N 180,000.000 m in site.dxf".
+std::string datum_line(const SiteFrame& f) { return "datum (0, 0) = " + site_point_text(f, 0, 0); }
+
+}  // namespace
 
 std::vector<std::string> title_lines(const Layout& layout) {
   std::string probabilities;

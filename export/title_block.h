@@ -13,6 +13,10 @@ namespace curdle {
 
 std::vector<std::string> title_lines(const Layout& layout);
 
+// A point of the layout (mm from its datum) in the site drawing's coordinates, at the drawing's
+// precision with thousands grouped: "E 530,012.500 N 180,004.000 m in site.dxf".
+std::string site_point_text(const SiteFrame& frame, double x_mm, double y_mm);
+
 // "window 48,24,67,67 of the 512 x 512 field" when the layout lays a segment of its design's
 // field (the seed line says so); empty when it lays the whole field.
 std::string segment_text(const Layout& layout);

@@ -6,6 +6,7 @@
 #include <dxflib/dl_dxf.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -14,10 +15,27 @@
 #include "curdle/curdling.h"
 #include "kinds/perforation.h"
 #include "layout/builder.h"
+#include "export/layout_dxf.h"
+#include "picture_support.h"
 #include "test_support.h"
 
 namespace curdle {
 namespace {
+
+// The SHEETS layer of a layout's DXF: each sheet's first corner and its ID.
+struct SheetsLayer : DL_CreationAdapter {
+  std::vector<std::array<double, 2>> corners;
+  std::set<std::string> ids;
+  bool first = false;
+  void addPolyline(const DL_PolylineData&) override { first = attributes.getLayer() == "SHEETS"; }
+  void addVertex(const DL_VertexData& v) override {
+    if (first) corners.push_back({v.x, v.y});
+    first = false;
+  }
+  void addText(const DL_TextData& t) override {
+    if (attributes.getLayer() == "SHEETS") ids.insert(t.text);
+  }
+};
 
 struct DxfContents : DL_CreationAdapter {
   std::vector<std::tuple<std::string, double, double, double>> circles;  // layer, x, y, r
@@ -36,12 +54,11 @@ struct DxfContents : DL_CreationAdapter {
   }
 };
 
-}  // namespace
+const Design kDesign = test::design(
+    2, 2, {{"0.9", "0.9", "0.8", "0.8", "0.8", "0.7"}, {"0.8", "0.7", "0.8", "0.7", "0.7", "0.8"}});
 
-TEST(Cutting, SheetsKeepMarginsAndBridgesAndTheirDxfHoldsTheirOpenings) {
-  const Design d = test::design(
-      2, 2,
-      {{"0.9", "0.9", "0.8", "0.8", "0.8", "0.7"}, {"0.8", "0.7", "0.8", "0.7", "0.7", "0.8"}});
+// A 3.2 m square screen of 50 mm cells cut into 1250 x 2500 mm sheets.
+Layout screen(const Design& d) {
   LayoutSpec spec = test::layout_spec();
   spec.set_kind(layout_kind("perforation"));
   spec.combine = Combine::mix;
@@ -53,7 +70,13 @@ TEST(Cutting, SheetsKeepMarginsAndBridgesAndTheirDxfHoldsTheirOpenings) {
   spec.own<PerforationKeys>().edge_margin = 20;
   spec.own<PerforationKeys>().fix = HoleFix::drop;
   spec.own<PerforationKeys>().sheet_size = std::array<double, 2>{1250, 2500};
-  const Layout layout = make_layout(d, curdle(d, 9, d.field), d.field, spec);
+  return make_layout(d, curdle(d, 9, d.field), d.field, spec);
+}
+
+}  // namespace
+
+TEST(Cutting, SheetsKeepMarginsAndBridgesAndTheirDxfHoldsTheirOpenings) {
+  const Layout layout = screen(kDesign);
   ASSERT_EQ(layout.sheets.size(), 6u);  // 3 x 2 sheets, the last column and row narrower
   std::map<int, std::vector<const Element*>> by_sheet;
   for (const Element& e : layout.elements) {
@@ -97,6 +120,43 @@ TEST(Cutting, SheetsKeepMarginsAndBridgesAndTheirDxfHoldsTheirOpenings) {
       if (std::fabs(c.d - std::round(c.d)) > 1e-9) continue;
       EXPECT_EQ(layer, expected);
     }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// A screen laid on a surface read from a site drawing: each cutting file keeps the sheet's own
+// origin for the cutter and says where that origin lies in the drawing; layout-site.dxf shows
+// every sheet by its ID at the drawing's coordinates.
+TEST(Cutting, SheetsOfASiteSurfaceSayWhereTheyLieInTheDrawing) {
+  Layout layout = screen(kDesign);
+  layout.site_frame = SiteFrame{.file = "site.dxf",
+                                .unit_mm = 1000,
+                                .unit_name = "m",
+                                .insunits = 6,
+                                .datum = {530000, 180000},
+                                .precision = 3};
+  const auto dir = test::scratch("cutting-site");
+  const auto& second = layout.sheets[1];
+  write_sheet_dxf(dir / "sheet.dxf", layout, 1);
+  DxfContents sheet;
+  DL_Dxf reader;
+  ASSERT_TRUE(reader.in((dir / "sheet.dxf").string(), &sheet));
+  ASSERT_EQ(second.area.x, 1250);
+  ASSERT_EQ(second.area.y, 0);
+  EXPECT_TRUE(sheet.ids.count("(0, 0) = E 530,001.250 N 180,000.000 m in site.dxf"));
+  ASSERT_FALSE(sheet.circles.empty());  // still from the sheet's own corner
+  EXPECT_LT(std::get<1>(sheet.circles[0]), second.area.w);
+
+  write_layout_dxf(dir / "layout-site.dxf", layout, true);
+  SheetsLayer sheets;
+  ASSERT_TRUE(reader.in((dir / "layout-site.dxf").string(), &sheets));
+  ASSERT_EQ(sheets.ids.size(), layout.sheets.size());
+  ASSERT_EQ(sheets.corners.size(), layout.sheets.size());
+  for (size_t i = 0; i < layout.sheets.size(); ++i) {
+    const Rect& a = layout.sheets[i].area;
+    EXPECT_TRUE(sheets.ids.count(layout.sheets[i].id)) << layout.sheets[i].id;
+    EXPECT_NEAR(sheets.corners[i][0], 530000 + a.x / 1000, 1e-9) << i;
+    EXPECT_NEAR(sheets.corners[i][1], 180000 + a.y / 1000, 1e-9) << i;
   }
   std::filesystem::remove_all(dir);
 }
