@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "curdle/error.h"
+#include "dxf_text.h"
 
 namespace curdle::app {
 namespace {
@@ -73,6 +74,42 @@ TEST(SiteStudyTest, AFacadeTakesRectangularOpeningsAsWindows) {
             0u)
       << site["sets"][1];
   EXPECT_TRUE(site["zones"].empty());
+}
+
+// Two plots side by side on one layer: the listing shows both regions in drawing coordinates,
+// the read refuses to choose, and a click inside one (the page's `around`) picks it.
+TEST(SiteStudyTest, AClickInsideARegionPicksTheOutline) {
+  const app::Run run = courtyard_run();
+  SiteStudyRequest r;
+  r.name = "plots.dxf";
+  r.bytes = testing::DxfText(6)
+                .begin_entities_only()
+                .lwpolyline("A-SITE", "1A",
+                            {{{100, 50, 0}, {112, 50, 0}, {112, 58, 0}, {100, 58, 0}}}, true)
+                .lwpolyline("A-SITE", "1B",
+                            {{{120, 50, 0}, {134, 50, 0}, {134, 59, 0}, {120, 59, 0}}}, true)
+                .text();
+  const auto listed = study_site(run, r);
+  ASSERT_EQ(listed["regions"].size(), 1u);
+  EXPECT_EQ(listed["regions"][0]["layer"], "A-SITE");
+  ASSERT_EQ(listed["regions"][0]["rings"].size(), 2u);
+  EXPECT_EQ(listed["regions"][0]["rings"][1][0][0], 120);  // metres, as drawn
+  r.outline = "A-SITE";
+  EXPECT_THROW(study_site(run, r), InputError);
+  r.around = "127,55.5";
+  const auto read = study_site(run, r);
+  // The drawing's origin is the datum: the plot lies in its first quadrant.
+  EXPECT_EQ(read["site"]["sets"][0],
+            "layout.outline=[[120000,50000],[134000,50000],[134000,59000],[120000,59000]]");
+  for (const std::string bad : {"127", "127,", "127,x", "1e999,2", "nan,2", "1,2,3", ",2"}) {
+    r.around = bad;
+    try {
+      study_site(run, r);
+      FAIL() << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("around"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(SiteStudyTest, RefusesWithTheDrawingsMessage) {

@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <charconv>
+#include <cmath>
 #include <iterator>
 
 #include "curdle/error.h"
@@ -60,6 +63,45 @@ ordered_json layers_json(const site::Drawing& drawing) {
   return layers;
 }
 
+// Each layer's closed regions, thinned to at most 512 points a ring for the page's picture, so
+// that a click can pick the outline where a layer holds several.
+ordered_json regions_json(const site::Drawing& drawing, double unit_mm, double tolerance_mm) {
+  ordered_json regions = ordered_json::array();
+  size_t points = 0;
+  for (const std::string& layer : site::layers_of(drawing)) {
+    ordered_json rings = ordered_json::array();
+    for (const Contour& c : site::closed_regions(drawing, layer, unit_mm)) {
+      const Polygon flat = flatten(c, tolerance_mm / unit_mm);
+      const size_t step = std::max<size_t>(1, (flat.size() + 511) / 512);
+      ordered_json ring = ordered_json::array();
+      for (size_t i = 0; i < flat.size(); i += step) ring.push_back({flat[i][0], flat[i][1]});
+      points += ring.size();
+      if (points > kMostRegionPoints) return regions;  // enough to pick from; the rest unshown
+      rings.push_back(std::move(ring));
+    }
+    if (!rings.empty()) regions.push_back({{"layer", layer}, {"rings", std::move(rings)}});
+  }
+  return regions;
+}
+
+// "x,y": two finite numbers in the C locale, as the drawing's coordinates.
+std::array<double, 2> point_of(const std::string& text) {
+  std::array<double, 2> p{};
+  const char* at = text.data();
+  const char* end = text.data() + text.size();
+  for (size_t i = 0; i < 2; ++i) {
+    const auto [next, error] = std::from_chars(at, end, p[i]);
+    const bool separated = i == 0 ? next != end && *next == ',' : next == end;
+    if (error != std::errc() || !std::isfinite(p[i]) || !separated)
+      throw InputError(parameter("around"),
+                       "'" + text.substr(0, 80) +
+                           "' is not a point: give x,y in the drawing's coordinates, two finite "
+                           "numbers");
+    at = next + 1;
+  }
+  return p;
+}
+
 }  // namespace
 
 ordered_json study_site(const Run& run, const SiteStudyRequest& r) {
@@ -78,10 +120,15 @@ ordered_json study_site(const Run& run, const SiteStudyRequest& r) {
                  {"layers", layers_json(drawing)},
                  {"hidden", drawing.hidden},
                  {"notes", drawing.notes}};
-  if (r.outline.empty()) return j;
+  if (r.outline.empty()) {
+    const double region_unit = unit_mm > 0 ? unit_mm : drawing.unit_mm > 0 ? drawing.unit_mm : 1;
+    j["regions"] = regions_json(drawing, region_unit, spec.chord_tolerance);
+    return j;
+  }
   site::LayerMap map;
   map.file = r.name;
   map.outline = r.outline;
+  if (!r.around.empty()) map.pick.around = point_of(r.around);
   map.openings = r.openings;
   for (const std::string& z : r.zones) map.zones.push_back({z, ZoneRule::exclude, 0});
   map.unit_mm = unit_mm;

@@ -344,11 +344,13 @@ ApiResponse api_measure(const ApiContext& c, const Params& params, const std::st
 
 ApiResponse api_site(const ApiContext& c, const Params& params, const std::string& body) {
   return guarded([&] {
-    const RunRequest r = read_run(params, {"name", "outline", "openings", "zones", "units"});
+    const RunRequest r =
+        read_run(params, {"name", "outline", "around", "openings", "zones", "units"});
     app::SiteStudyRequest request;
     request.bytes = body;
     request.name = app::upload_name(own(r, "name", "site.dxf"));
     request.outline = own(r, "outline");
+    request.around = own(r, "around");
     request.units = own(r, "units");
     if (const auto it = r.own.find("openings"); it != r.own.end()) request.openings = it->second;
     if (const auto it = r.own.find("zones"); it != r.own.end()) request.zones = it->second;

@@ -285,6 +285,21 @@ std::string summary_of(const Site& site, const Rect& bounds, const LayerMap& map
 
 }  // namespace
 
+std::vector<Contour> closed_regions(const Drawing& drawing, const std::string& layer,
+                                    double unit_mm) {
+  std::vector<Contour> regions;
+  if (!(unit_mm > 0)) return regions;
+  PassedOver passed;
+  try {
+    for (Closed& c :
+         closed_on(drawing, layer, kJoinTolerance / unit_mm, "", "outline", unit_mm, passed))
+      regions.push_back(std::move(c.path));
+  } catch (const SiteError&) {
+    regions.clear();  // a layer left open or faulty forms no region to pick
+  }
+  return regions;
+}
+
 Site site_from(const Drawing& drawing, const LayerMap& map) {
   Site site;
   const std::vector<std::string> layers = layers_of(drawing);

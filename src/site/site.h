@@ -84,4 +84,10 @@ Site site_from(const Drawing& drawing, const LayerMap& map);
 // How far apart two ends may lie and still be joined into one outline, mm.
 inline constexpr double kJoinTolerance = 0.5;
 
+// The closed regions a layer's linework forms, in drawing units, as the outline's pick sees them
+// (the outer shapes, pieces joined end to end): what a page shows to pick one by a click.
+// `unit_mm` millimetres per drawing unit. Empty when the layer forms none or cannot be read.
+std::vector<Contour> closed_regions(const Drawing& drawing, const std::string& layer,
+                                    double unit_mm);
+
 }  // namespace curdle::site

@@ -520,6 +520,8 @@ try {
       [0, 'LWPOLYLINE'], [5, '12'], [8, 'L-SITE-BNDY-OLD'], [90, 4], [70, 1],
       [10, -500], [20, -500], [10, 14500], [20, -500], [10, 14500], [20, 7000], [10, -500], [20, 7000],
       [0, 'CIRCLE'], [5, '13'], [8, 'L-PLNT-PITS'], [10, 7000], [20, 2000], [30, 0], [40, 750],
+      [0, 'LWPOLYLINE'], [5, '14'], [8, 'L-SITE-BNDY'], [90, 4], [70, 1],
+      [10, 16000], [20, 0], [10, 21000], [20, 0], [10, 21000], [20, 4000], [10, 16000], [20, 4000],
       [0, 'ENDSEC'], [0, 'EOF']]);
     const spline = path.join(work, 'office-spline.dxf');
     await writeFile(spline, dxf);
@@ -537,6 +539,18 @@ try {
     const onResponse = (r) => { if (r.status() === 414) tooLong.push(r.url()); };
     page.on('request', onRequest);
     page.on('response', onResponse);
+    // The outline's layer also holds the neighbouring plot: the page draws both and the
+    // designer clicks inside the site, as CAD's BOUNDARY takes a pick point.
+    check(await page.locator('#site-pick').isVisible() &&
+          (await page.textContent('#site-pick-note')).includes('L-SITE-BNDY holds 2 closed regions'),
+          'the outline layer\'s two regions are drawn to pick one by a click');
+    await page.click('#site-apply');
+    check((await page.textContent('#error')).includes('click inside the one that is the outline'),
+          'laying before the click asks for it');
+    await page.click('#site-pick', { position: await page.evaluate(() => sitePickPosition(7000, 3000)) });
+    check((await page.textContent('#site-pick-note')).includes('around the point clicked'),
+          'the click picks the region around it');
+    await page.locator('#site-box').screenshot({ path: path.join(shots, '7c-site-pick.png') });
     await page.click('#site-apply');
     await page.waitForFunction(() => document.querySelector('#site-summary').textContent.includes('outline 14,000 x '));
     await page.waitForFunction(() => document.querySelector('#command').textContent.includes('layout.outline=') &&
