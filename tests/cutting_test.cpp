@@ -13,9 +13,9 @@
 #include <set>
 
 #include "curdle/curdling.h"
+#include "export/layout_dxf.h"
 #include "kinds/perforation.h"
 #include "layout/builder.h"
-#include "export/layout_dxf.h"
 #include "picture_support.h"
 #include "test_support.h"
 

@@ -63,8 +63,7 @@ KnotSpacing knot_spacing_of(long long flags) {
 
 std::optional<CubicSpline> spline_through(const std::vector<Point>& given,
                                           std::optional<Point> start_tangent,
-                                          std::optional<Point> end_tangent,
-                                          KnotSpacing spacing) {
+                                          std::optional<Point> end_tangent, KnotSpacing spacing) {
   std::vector<Point> fit;
   for (const Point& p : given) {
     if (!std::isfinite(p[0]) || !std::isfinite(p[1])) return std::nullopt;
