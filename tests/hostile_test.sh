@@ -362,6 +362,13 @@ data += b"\0" * (-len(data) % 4)
 glb = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(js) + 8 + len(data))
 glb += struct.pack("<I", len(js)) + b"JSON" + js + struct.pack("<I", len(data)) + b"BIN\0" + data
 open(f"{d}/nan.glb", "wb").write(glb)
+# Memory: 190,000 tiny paths (4 MB; 190 MB to read) and a model whose JSON holds 2,000,000
+# numbers (4 MB; 400 MB inside tinygltf), each refused under --max-memory 64M before parsing.
+open(f"{d}/paths.svg", "w").write('<svg xmlns="http://www.w3.org/2000/svg"><g id="A-OTLN"><rect width="10000" height="8000"/></g>'
+                                  '<g id="B">' + '<path d="M0 0L1 1Z"/>' * 190000 + "</g></svg>")
+import base64
+model["buffers"] = [{"byteLength": 60, "uri": "data:application/octet-stream;base64," + base64.b64encode(data[:60]).decode()}]
+open(f"{d}/numbers.gltf", "w").write(json.dumps(dict(model, extras=[0] * 2000000), separators=(",", ":")))
 PY
   model_recipe() {  # file, plan node
     sed '/^\[layout\]/,$d' "$p/courtyard-from-dxf.toml" > "$d/$1.toml"
@@ -383,6 +390,15 @@ PY
   refused "nests arrays or objects more than 64 deep" generate "$(model_recipe deep.gltf Mass)"
   refused 'node "Mass" has a vertex that is not a finite number' generate "$(model_recipe nan.glb Mass)"
   refused "layout.building.plan" generate "$(model_recipe nan.glb Mass)" --set 'layout.building.plan=[[0,0],[1000,0],[1000,1000]]'
+  # Memory estimated from the bytes before a parser runs: refused under the limit, and the
+  # refusal itself within twice the limit (it was 2.0 GB under 64 MiB).
+  local heavy
+  for heavy in "$(site_recipe paths.svg A-OTLN)" "$(model_recipe numbers.gltf Mass)"; do
+    refused "above the memory limit of 64.0 MiB; raise the limit with --max-memory" generate "$heavy" --max-memory 64M
+    /usr/bin/time -f "%M" -o "$d/peak" "$curdle" generate "$heavy" --max-memory 64M --out "$d/heavy" > /dev/null 2>&1
+    [ "$(cat "$d/peak" | tail -1)" -lt $((2 * 64 * 1024)) ] && pass ||
+      fail "refusing $heavy under --max-memory 64M took $(tail -1 "$d/peak") KB"
+  done
   # A GeoPackage that cannot be written is the user's to mend (exit 2), as every writer's.
   timeout 60 "$curdle" generate "$p/courtyard-l-shaped.toml" --outputs layout.gpkg --out /proc/self/fd \
     > /dev/null 2> "$d/gpkg.err"

@@ -112,6 +112,28 @@ TEST(SiteStudyTest, AClickInsideARegionPicksTheOutline) {
   }
 }
 
+// An upload that could take more memory to read than the server allows is refused before it is
+// parsed, naming the limit and how to raise it.
+TEST(SiteStudyTest, ADrawingTooLargeForTheMemoryLimitIsRefusedUnread) {
+  app::Run run = courtyard_run();
+  run.generate.max_memory_bytes = 1 << 20;
+  run.generate.memory_limit_hint = "start the server with a larger --max-memory";
+  SiteStudyRequest r;
+  r.name = "paths.svg";
+  r.bytes = "<svg xmlns=\"http://www.w3.org/2000/svg\">";
+  for (int i = 0; i < 2000; ++i) r.bytes += "<path d=\"M0 0L1 1Z\"/>";
+  r.bytes += "</svg>";
+  try {
+    study_site(run, r);
+    FAIL() << "read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "above the memory limit of 1.0 MiB; start the server with a larger --max-memory"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(SiteStudyTest, RefusesWithTheDrawingsMessage) {
   const app::Run run = courtyard_run();
   SiteStudyRequest r;

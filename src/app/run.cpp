@@ -16,6 +16,8 @@
 
 #include "curdle/error.h"
 #include "export/bounded_image.h"
+#include "site/drawing.h"
+#include "site/reading_memory.h"
 
 namespace curdle::app {
 
@@ -24,22 +26,31 @@ constexpr uint64_t kMaxRecipeBytes = uint64_t{1} << 20;
 constexpr int64_t kMaxDensitySide = 4096;
 constexpr uint64_t kMaxDensityPixels = uint64_t{kMaxDensitySide} * kMaxDensitySide;
 
-// The files a recipe names, beside it: regular files of bounded size, read whole.
+// The files a recipe names, beside it: regular files of bounded size, read whole, and refused
+// before any parser sees them where reading them could take more than the run's memory limit.
 class RecipeFolderFiles : public RecipeFiles {
  public:
-  explicit RecipeFolderFiles(std::string recipe_path) : recipe_path_(std::move(recipe_path)) {}
+  RecipeFolderFiles(std::string recipe_path, uint64_t max_memory, std::string hint)
+      : recipe_path_(std::move(recipe_path)), max_memory_(max_memory), hint_(std::move(hint)) {}
   std::string read(const std::string& name, const SourceLocation& where,
                    size_t max_bytes) const override {
     const auto path = std::filesystem::path(recipe_path_).parent_path() / name;
     try {
-      return read_bounded_text(path.string(), "the drawing", "name a DXF file", max_bytes);
+      std::string bytes =
+          read_bounded_text(path.string(), "the drawing", "name a DXF file", max_bytes);
+      site::check_reading_memory(bytes, name, max_memory_, hint_);
+      return bytes;
     } catch (const InputError& e) {
       throw InputError(where, name + ": " + e.message());
+    } catch (const site::SiteError& e) {
+      throw InputError(where, e.what());
     }
   }
 
  private:
   std::string recipe_path_;
+  uint64_t max_memory_;
+  std::string hint_;
 };
 
 // No files at all: the recipe is sized from its text alone.
@@ -121,9 +132,14 @@ std::string read_bounded_text(const std::string& path, const std::string& what,
                                 " is at most " + std::to_string(max_bytes >> 20) + " MiB");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(where, "cannot read " + what + ": " + std::strerror(errno));
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  // Read into one string of the size stat gave (a stream's copies held a 60 MB drawing three
+  // times); a file still being written is refused, not read past its bound.
+  std::string text(static_cast<size_t>(info.st_size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (in.get() != std::char_traits<char>::eof())
+    throw InputError(where, "grew while it was read; read " + what + " once it is saved");
+  return text;
 }
 
 bool set_names_a_file(const std::string& assignment) { return override_names_a_file(assignment); }
@@ -138,7 +154,9 @@ Run resolve_run(const RunRequest& request) {
   run.recipe_path = request.recipe_path;
   run.recipe_text = request.recipe_text;
   run.overrides = request.overrides;
-  const RecipeFolderFiles files(request.recipe_path);
+  const RecipeFolderFiles files(request.recipe_path,
+                                request.max_memory ? request.max_memory : default_memory_limit(),
+                                request.memory_limit_hint);
   const NoFiles none;
   run.recipe = parse_recipe(request.recipe_text, request.recipe_path, request.overrides,
                             request.read_files ? static_cast<const RecipeFiles*>(&files) : &none);

@@ -11,6 +11,7 @@
 
 #include "curdle/error.h"
 #include "layout/zone.h"
+#include "site/reading_memory.h"
 #include "site/site.h"
 
 namespace curdle::app {
@@ -40,12 +41,14 @@ ordered_json contour_json(const Contour& c) {
   return points;
 }
 
-site::Drawing read_drawing(const SiteStudyRequest& r, double tolerance, double unit_mm) {
+site::Drawing read_drawing(const SiteStudyRequest& r, double tolerance, double unit_mm,
+                           const GenerateOptions& limits) {
   std::string ending = r.name.size() >= 4 ? r.name.substr(r.name.size() - 4) : r.name;
   for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ending != ".svg" && ending != ".dxf")
     throw InputError(parameter("name"), "'" + r.name + "' is not a .dxf or .svg drawing");
   try {
+    site::check_reading_memory(r.bytes, r.name, limits.max_memory_bytes, limits.memory_limit_hint);
     return site::read_drawing(r.bytes, r.name, tolerance, unit_mm);
   } catch (const site::SiteError& e) {
     throw InputError(parameter("name"), e.what());
@@ -113,7 +116,7 @@ ordered_json study_site(const Run& run, const SiteStudyRequest& r) {
   const double unit_mm = r.units.empty() ? 0 : site::unit_mm(r.units);
   if (!r.units.empty() && unit_mm == 0)
     throw InputError(parameter("units"), "must be mm, cm, dm, m, in or ft");
-  const site::Drawing drawing = read_drawing(r, spec.chord_tolerance, unit_mm);
+  const site::Drawing drawing = read_drawing(r, spec.chord_tolerance, unit_mm, run.generate);
   ordered_json j{{"file", r.name},
                  {"format", drawing.format},
                  {"units", drawing.unit_name},
