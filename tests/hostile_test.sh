@@ -366,6 +366,12 @@ open(f"{d}/nan.glb", "wb").write(glb)
 # numbers (4 MB; 400 MB inside tinygltf), each refused under --max-memory 64M before parsing.
 open(f"{d}/paths.svg", "w").write('<svg xmlns="http://www.w3.org/2000/svg"><g id="A-OTLN"><rect width="10000" height="8000"/></g>'
                                   '<g id="B">' + '<path d="M0 0L1 1Z"/>' * 190000 + "</g></svg>")
+# Work: 190,000 LINEs through one point on the outline's layer (joining walked every used end
+# again: over 60 s) and 190,000 round pits on a zone layer (each tested against every other:
+# 43 s).
+open(f"{d}/star.dxf", "w").write(dxf(outline + "0\nLINE\n8\nS\n10\n0\n20\n0\n11\n1\n21\n1\n" * 190000))
+open(f"{d}/pits.dxf", "w").write(dxf(outline + "".join("0\nCIRCLE\n8\nPIT\n10\n%d\n20\n%d\n40\n1\n" % (10 + k % 400 * 20, 10 + k // 400 * 20)
+                                                       for k in range(190000))))
 import base64
 model["buffers"] = [{"byteLength": 60, "uri": "data:application/octet-stream;base64," + base64.b64encode(data[:60]).decode()}]
 open(f"{d}/numbers.gltf", "w").write(json.dumps(dict(model, extras=[0] * 2000000), separators=(",", ":")))
@@ -390,6 +396,13 @@ PY
   refused "nests arrays or objects more than 64 deep" generate "$(model_recipe deep.gltf Mass)"
   refused 'node "Mass" has a vertex that is not a finite number' generate "$(model_recipe nan.glb Mass)"
   refused "layout.building.plan" generate "$(model_recipe nan.glb Mass)" --set 'layout.building.plan=[[0,0],[1000,0],[1000,1000]]'
+  # Many shapes on one layer are sorted in linear time: refused (the star is no outline, the
+  # pits too many corners to cut) in seconds, not minutes.
+  local many
+  for many in "$(site_recipe star.dxf S)" "$(site_recipe pits.dxf A-OTLN "$pit" "$layer" "$rule")"; do
+    timeout 15 "$curdle" generate "$many" --outputs report.json --out "$d/many" > /dev/null 2> "$d/many.err"
+    [ $? -eq 2 ] && pass || fail "$many: not refused within 15 s: $(head -c 300 "$d/many.err")"
+  done
   # Memory estimated from the bytes before a parser runs: refused under the limit, and the
   # refusal itself within twice the limit (it was 2.0 GB under 64 MiB).
   local heavy

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 #include <unordered_map>
 
@@ -40,25 +41,39 @@ void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& clos
     return Key{static_cast<int64_t>(std::floor(x / cell)),
                static_cast<int64_t>(std::floor(y / cell))};
   };
-  std::unordered_multimap<Key, size_t, KeyHash> ends;  // piece * 2 + (0 start, 1 end)
+  // Each cell's piece ends in the drawing's order (piece * 2 + 0 start, 1 end), with the used
+  // ones at its front skipped for good, so that a search does not walk them again.
+  struct Cell {
+    std::vector<size_t> ends;
+    size_t begin = 0;
+  };
+  std::unordered_map<Key, Cell, KeyHash> cells;
   for (size_t i = 0; i < pieces.size(); ++i) {
-    ends.emplace(key_of(pieces[i].path.front().x, pieces[i].path.front().y), 2 * i);
-    ends.emplace(key_of(pieces[i].path.back().x, pieces[i].path.back().y), 2 * i + 1);
+    cells[key_of(pieces[i].path.front().x, pieces[i].path.front().y)].ends.push_back(2 * i);
+    cells[key_of(pieces[i].path.back().x, pieces[i].path.back().y)].ends.push_back(2 * i + 1);
   }
   std::vector<bool> used(pieces.size(), false);
+  auto use = [&](size_t piece) { used[piece] = true; };
+  // The nearest free end within the tolerance; of ends heaped in one cell (a hostile drawing's
+  // thousands of lines through one point) the first 256 are looked at, an exact match at once.
   auto find_near = [&](const ContourVertex& v) -> std::optional<size_t> {
     const Key k = key_of(v.x, v.y);
     std::optional<size_t> best;
     double nearest = tolerance;
     for (int64_t dx = -1; dx <= 1; ++dx)
       for (int64_t dy = -1; dy <= 1; ++dy) {
-        const auto [lo, hi] = ends.equal_range(Key{k.first + dx, k.second + dy});
-        for (auto it = lo; it != hi; ++it) {
-          if (used[it->second / 2]) continue;
-          const Contour& p = pieces[it->second / 2].path;
-          const ContourVertex& e = it->second % 2 ? p.back() : p.front();
+        const auto found = cells.find(Key{k.first + dx, k.second + dy});
+        if (found == cells.end()) continue;
+        Cell& cell = found->second;
+        while (cell.begin < cell.ends.size() && used[cell.ends[cell.begin] / 2]) ++cell.begin;
+        const size_t last = std::min(cell.ends.size(), cell.begin + 256);
+        for (size_t j = cell.begin; j < last; ++j) {
+          if (used[cell.ends[j] / 2]) continue;
+          const Contour& p = pieces[cell.ends[j] / 2].path;
+          const ContourVertex& e = cell.ends[j] % 2 ? p.back() : p.front();
           const double d = std::hypot(e.x - v.x, e.y - v.y);
-          if (d <= nearest) nearest = d, best = it->second;
+          if (d <= nearest) nearest = d, best = cell.ends[j];
+          if (d == 0) return best;
         }
       }
     return best;
@@ -66,7 +81,7 @@ void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& clos
   for (size_t first = 0; first < pieces.size(); ++first) {
     stop_point();
     if (used[first]) continue;
-    used[first] = true;
+    use(first);
     Closed c{pieces[first].path,
              handle_of(*pieces[first].shape),
              pieces[first].shape->entity,
@@ -78,7 +93,7 @@ void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& clos
       if (c.path.size() > 2 && std::hypot(start.x - end.x, start.y - end.y) <= tolerance) break;
       const auto next = find_near(end);
       if (!next) break;
-      used[*next / 2] = true;
+      use(*next / 2);
       const Piece& p = pieces[*next / 2];
       Contour add = *next % 2 ? reversed(p.path) : p.path;
       c.path.back().bulge = add.front().bulge;  // the shared vertex carries the next edge
@@ -97,6 +112,54 @@ void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& clos
     }
   }
 }
+
+// The outer shapes found so far, by where their boxes lie, so that a shape is tested only
+// against those whose box may hold it (the box holding its box's centre): a layer of 190,000
+// pits is sorted in linear time, not in 190,000 squared box tests.
+class OuterGrid {
+ public:
+  OuterGrid(const std::vector<Rect>& boxes, double tolerance) : tolerance_(tolerance) {
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const Rect& b : boxes)
+      x0 = std::min(x0, b.x), y0 = std::min(y0, b.y), x1 = std::max(x1, b.right()),
+      y1 = std::max(y1, b.top());
+    const auto side = static_cast<size_t>(
+        std::clamp(std::ceil(std::sqrt(static_cast<double>(boxes.size()))), 1.0, 1024.0));
+    n_ = side;
+    x0_ = x0, y0_ = y0;
+    w_ = x1 > x0 ? (x1 - x0) / static_cast<double>(side) : 1;
+    h_ = y1 > y0 ? (y1 - y0) / static_cast<double>(side) : 1;
+    cells_.resize(side * side);
+  }
+  // The outer shape `seq` (its place among the outer shapes) whose box is `b`.
+  void add(size_t seq, const Rect& b) {
+    const size_t cx0 = column(b.x - tolerance_), cx1 = column(b.right() + tolerance_);
+    const size_t cy0 = row(b.y - tolerance_), cy1 = row(b.top() + tolerance_);
+    if ((cx1 - cx0 + 1) * (cy1 - cy0 + 1) > 256) return wide_.push_back(seq);
+    for (size_t y = cy0; y <= cy1; ++y)
+      for (size_t x = cx0; x <= cx1; ++x) cells_[y * n_ + x].push_back(seq);
+  }
+  // The outer shapes whose box may hold `b`, in the order they were added.
+  std::vector<size_t> near(const Rect& b) const {
+    const std::vector<size_t>& cell = cells_[row(b.y + b.h / 2) * n_ + column(b.x + b.w / 2)];
+    std::vector<size_t> out;
+    std::merge(cell.begin(), cell.end(), wide_.begin(), wide_.end(), std::back_inserter(out));
+    return out;
+  }
+
+ private:
+  size_t column(double x) const { return index((x - x0_) / w_); }
+  size_t row(double y) const { return index((y - y0_) / h_); }
+  size_t index(double v) const {
+    return static_cast<size_t>(std::clamp(std::floor(v), 0.0, static_cast<double>(n_ - 1)));
+  }
+
+  double tolerance_;
+  size_t n_ = 1;
+  double x0_ = 0, y0_ = 0, w_ = 1, h_ = 1;
+  std::vector<std::vector<size_t>> cells_;
+  std::vector<size_t> wide_;  // boxes over more than 256 cells, tested for every shape
+};
 
 // Whether every vertex of `inner` lies inside `outer` or on its edges.
 bool lies_within(const Polygon& inner, const Polygon& outer, double tolerance) {
@@ -224,16 +287,20 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
            i.top() <= o.top() + tolerance && lies_within(flat[inner], flat[outer], tolerance);
   };
   std::vector<size_t> outer;
+  OuterGrid grid(box, tolerance);
   for (size_t i : order) {
     stop_point();
     bool nested = false, repeat = false;
-    for (size_t o : outer)
+    for (size_t seq : grid.near(box[i])) {
+      const size_t o = outer[seq];
       if (holds(o, i)) {
         nested = true;
         repeat = std::fabs(area[o] - area[i]) <= 1e-6 * area[o] && holds(i, o);
         break;
       }
+    }
     if (!nested) {
+      grid.add(outer.size(), box[i]);
       outer.push_back(i);
     } else if (repeat) {
       ++passed.repeats;
@@ -241,15 +308,13 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
       ++passed.inside;
     }
   }
-  std::sort(outer.begin(), outer.end());  // in the drawing's order
-  std::vector<Closed> kept;
-  for (size_t i : outer) kept.push_back(std::move(closed[i]));
-
   for (const Closed& o : still_open) {
+    stop_point();
     Polygon chain;
     for (const ContourVertex& v : o.path) chain.push_back({v.x, v.y});
-    const bool within = std::any_of(outer.begin(), outer.end(), [&](size_t i) {
-      return lies_within(chain, flat[i], tolerance);
+    const std::vector<size_t> near = grid.near(bounds_of(chain));
+    const bool within = std::any_of(near.begin(), near.end(), [&](size_t seq) {
+      return lies_within(chain, flat[outer[seq]], tolerance);
     });
     if (within) {
       passed.pieces += o.shapes.size();
@@ -264,6 +329,9 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
                 unit_mm),
         kJoinTolerance));
   }
+  std::sort(outer.begin(), outer.end());  // in the drawing's order
+  std::vector<Closed> kept;
+  for (size_t i : outer) kept.push_back(std::move(closed[i]));
   return kept;
 }
 
