@@ -396,6 +396,9 @@ PY
   refused "nests arrays or objects more than 64 deep" generate "$(model_recipe deep.gltf Mass)"
   refused 'node "Mass" has a vertex that is not a finite number' generate "$(model_recipe nan.glb Mass)"
   refused "layout.building.plan" generate "$(model_recipe nan.glb Mass)" --set 'layout.building.plan=[[0,0],[1000,0],[1000,1000]]'
+  # Round 3's O22: an outline of 3-D points is named as such, at z = 0 read as the plan it is.
+  refused "reads as 3-D points [x, y, z], every third number 3000" generate "$p/courtyard-l-shaped.toml" \
+    --set 'layout.outline=[[0,0,3000],[14000,0,3000],[14000,9000,3000],[0,9000,3000]]' --set 'layout.zones=[]'
   # Many shapes on one layer are sorted in linear time: refused (the star is no outline, the
   # pits too many corners to cut) in seconds, not minutes.
   local many

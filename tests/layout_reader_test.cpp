@@ -169,6 +169,10 @@ TEST(Recipe, Outline) {
       {"floor = [500, 500]\noutline = [[0, 0], [1000, 0], [1000, 900], [0, 900]]\n",
        "outside the surface"},
       {"outline = [[0, 0], [1000, 0]]\n", "at least 3 corners"},
+      // Points copied from a 3-D model: named as such, not as a bulge out of range.
+      {"outline = [[0, 0, 3000], [1000, 0, 3000], [1000, 900, 3000]]\n",
+       "reads as 3-D points [x, y, z], every third number 3000"},
+      {"outline = [[0, 0, 150], [1000, 0, 150], [1000, 900, 150]]\n", "reads as 3-D points"},
   };
   for (const auto& [text, said] : wrong) {
     const std::string e = error_of(head + text);

@@ -83,17 +83,29 @@ Contour read_vertices(TableReader& r, const std::string& key, const std::string&
   const toml::array* a = r.get(key)->as_array();
   if (!a || a->size() < least || a->size() > most) r.fail(key, allowed);
   Contour contour;
+  // Every corner's third number the same and over 1 (each edge an arc past a half turn): points
+  // copied from a 3-D model, [x, y, z], not bulges.
+  std::optional<double> third;
+  bool thirds_alike = true, bulge_beyond = false;
   for (const toml::node& item : *a) {
     const toml::array* p = item.as_array();
     const bool sized = p && (p->size() == 2 || p->size() == 3);
     const auto x = sized ? finite_number(p->get(0)) : std::nullopt;
     const auto y = sized ? finite_number(p->get(1)) : std::nullopt;
     const auto bulge = sized && p->size() == 3 ? finite_number(p->get(2)) : std::optional(0.0);
-    if (!x || !y || !bulge || std::fabs(*x) > reach || std::fabs(*y) > reach ||
-        std::fabs(*bulge) > 1000)
-      r.fail(key, allowed);
+    thirds_alike = thirds_alike && sized && p->size() == 3 && bulge && (!third || *third == *bulge);
+    if (bulge) third = *bulge;
+    if (!x || !y || !bulge || std::fabs(*x) > reach || std::fabs(*y) > reach) r.fail(key, allowed);
+    bulge_beyond = bulge_beyond || std::fabs(*bulge) > 1000;
     contour.push_back({*x, *y, tidy_bulge(*bulge)});
   }
+  const bool three_d = thirds_alike && third && std::fabs(*third) > 1 && contour.size() >= 3;
+  if (bulge_beyond && !three_d) r.fail(key, allowed);
+  if (three_d)
+    r.fail(key, fmt::format("reads as 3-D points [x, y, z], every third number {:g}: a plan's "
+                            "corners are [x, y] in millimetres (a third number is a bulge, which "
+                            "makes the edge to the next corner an arc)",
+                            *third));
   return contour;
 }
 
