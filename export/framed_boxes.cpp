@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "layout/piece.h"
+
 namespace curdle {
 namespace {
 // How far a bent unit's facets may lie inside its arc, mm: well within a panel's tolerance.
@@ -105,6 +107,12 @@ LaidFace laid_face(const Element& e, double length) {
 }
 
 }  // namespace
+
+Rect framed_strip_bounds(const Layout& layout, const Element& e) {
+  const LaidFace f = laid_face(e, layout.width);
+  const Rect b = laid_bounds(e);
+  return {f.from, b.y, f.to - f.from, b.h};
+}
 
 BuildingPoint framed_centre(const Layout& layout, const Element& e) {
   const LaidFace f = laid_face(e, layout.width);

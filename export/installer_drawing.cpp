@@ -53,7 +53,7 @@ InstallerDrawing installer_set(const Layout& layout, const InstallerPlan& plan) 
     const Element& e = layout.elements[i];
     const Rect bounds = laid_bounds(e);
     list_on_sheets(plan, bounds, i, set.elements_on);
-    SheetContents& c = set.contents[sheet_holding_centre(bounds)];
+    SheetContents& c = set.contents[sheet_holding_centre(label_bounds(e))];
     if (elements) {
       c.row0 = std::min(c.row0, e.row), c.row1 = std::max(c.row1, e.row);
       c.column0 = std::min(c.column0, e.column), c.column1 = std::max(c.column1, e.column);

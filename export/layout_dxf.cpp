@@ -118,7 +118,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout,
   }
   for (const Element& e : layout.elements) {
     stop_point();
-    const Rect b = laid_bounds(e);
+    const Rect b = label_bounds(e);
     dxf.text("ID", b.x + b.w / 2, b.y + b.h / 2, id_height(b, e.id), e.id, true);
   }
   dxf.text("TEXT", 0, -2 * h, h, caption, false);

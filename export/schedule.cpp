@@ -107,8 +107,11 @@ ScheduleRow schedule_row(const Layout& layout, size_t index) {
   else if (r.outlines.empty())
     r.outlines.push_back({{rect_polygon(b)}, b.area()});
   if (!layout.frames.empty()) {
+    // On the strip, the closing corner's unit is one brick, not a box from end to end.
+    const Rect strip = framed_strip_bounds(layout, e);
+    r.width = strip.w;
     const BuildingPoint p = framed_centre(layout, e);
-    r.strip_x = r.x, r.strip_y = r.y;
+    r.strip_x = strip.x, r.strip_y = r.y;
     r.x = p[0], r.y = p[1], r.z = p[2];
     r.facade = framed_facade(layout, e)->name;
   }

@@ -34,6 +34,9 @@ struct BuildingKeys {
   Contour path;              // open (a free-standing wall)
   std::string site_summary;  // where a drawn plan was read from, for the report
   size_t start = 0;
+  // The field column at the strip's start, round a closed envelope (strip_ring.h); absent: the
+  // phase that keeps the corners off the coarse stages' boundaries.
+  std::optional<int64_t> phase;
   double height = 0;            // mm, whole courses: the tallest façade's
   std::vector<double> heights;  // per plan edge where they differ, each at most `height`
   double storey = 0;            // floor to floor, mm; 0: one storey the wall's height

@@ -13,7 +13,8 @@ constexpr double kEps = 1e-6;
 }  // namespace
 
 void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
-                  const std::vector<uint16_t>& values, const LayoutSpec& spec) {
+                  const std::vector<uint16_t>& values, const LayoutSpec& spec,
+                  const std::optional<StripRing>& ring) {
   const double pitch_w = spec.module_w + spec.joint, pitch_h = spec.module_h + spec.joint;
   // Above a façade lower than the wall: no units, drawn as paper.
   for (const SurfaceFrame& f : env.facades)
@@ -44,7 +45,9 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
     e.row = u.course;
     e.column = column++;
     const double middle = wrap_along((u.from + u.to) / 2, env.length);
-    const int64_t i = std::min<int64_t>(static_cast<int64_t>(middle / pitch_w), view.size[0] - 1);
+    const int64_t i =
+        ring ? std::min<int64_t>(ring_column(*ring, middle), view.size[0] - 1)
+             : std::min<int64_t>(static_cast<int64_t>(middle / pitch_w), view.size[0] - 1);
     const int64_t j = std::min<int64_t>(u.course, view.size[1] - 1);
     e.cell_x = view.origin[0] + i;
     e.cell_y = view.origin[1] + j;
@@ -74,7 +77,8 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
   layout.notes.insert(layout.notes.end(), coursing.notes.begin(), coursing.notes.end());
 }
 
-std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& design) {
+std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& design,
+                                           const std::optional<StripRing>& ring) {
   std::vector<std::string> out;
   const double pitch_w = layout.module_w + layout.joint;
   const int b = design.lattice.base, stages = design.lattice.stages;
@@ -84,7 +88,9 @@ std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& d
   const int64_t origin = layout.view.origin[0];
   auto place = [&](double u) {
     std::string s;
-    const double cell = static_cast<double>(origin) + u / pitch_w;
+    const double cell = ring ? std::fmod(u / ring->cell + static_cast<double>(ring->phase),
+                                         static_cast<double>(ring->columns))
+                             : static_cast<double>(origin) + u / pitch_w;
     for (int64_t size = root / b, k = 1; k <= stages; ++k, size /= b) {
       const double within = std::fmod(cell, static_cast<double>(size));
       s += fmt::format("{}stage {}: {}", k == 1 ? "" : "; ", k,
@@ -99,7 +105,9 @@ std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& d
     const double u = f.start + f.length;
     const bool closing = layout.closed_envelope && &f == &layout.frames.back();
     std::string seam;
-    if (closing)
+    if (closing && ring)
+      seam = ", the closing corner: the field wraps round, its last cell beside its first";
+    else if (closing)
       seam = on_root ? ", the closing seam: the strip begins on a root-cell boundary, so its "
                        "start and end meet as two root cells do"
                      : fmt::format(

@@ -9,16 +9,20 @@
 
 #include "building/building.h"
 #include "building/coursing.h"
+#include "building/strip_ring.h"
 
 namespace curdle {
 
 // Lays the units of `coursing`, in its bond, on `layout` (the strip's surface and openings,
-// builder.h's lay_surface), `values` being the view's cells (x fastest).
+// builder.h's lay_surface), `values` being the view's cells (x fastest): round a closed
+// envelope's `ring` where there is one, else a cell a unit's pitch from the strip's start.
 void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
-                  const std::vector<uint16_t>& values, const LayoutSpec& spec);
+                  const std::vector<uint16_t>& values, const LayoutSpec& spec,
+                  const std::optional<StripRing>& ring = std::nullopt);
 
 // How corners and the closing seam fall against the stage grid, for the report: each corner's
 // place in the cells of every stage.
-std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& design);
+std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& design,
+                                           const std::optional<StripRing>& ring = std::nullopt);
 
 }  // namespace curdle

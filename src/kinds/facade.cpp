@@ -41,6 +41,44 @@ double FacadeKind::thickness(const LayoutSpec& spec) const {
   return keys.envelope ? keys.envelope->depth : 20;
 }
 
+namespace {
+
+// Round a closed envelope the field is a ring of whole root cells, turned to keep the corners
+// off the coarse stages' boundaries (strip_ring.h); a field the recipe sizes itself is laid as
+// given, its closing seam where the strip's ends meet.
+void wrap_round(reading::TableReader& r, Design& design, LayoutSpec& spec, bool field_given) {
+  FacadeKeys& keys = spec.own<FacadeKeys>();
+  if (!keys.envelope || !keys.envelope->closed) return;
+  const Envelope& env = *keys.envelope;
+  if (field_given) {
+    if (keys.building->phase)
+      r.fail("building.phase",
+             "turns the field round the building, which curdle sizes itself: leave field.cells "
+             "out, or choose the segment with field.window");
+    return;
+  }
+  int64_t root = 1;
+  for (int k = 0; k < design.lattice.stages; ++k) root *= design.lattice.base;
+  const double pitch = spec.module_w + spec.joint;
+  StripRing ring = ring_round(env.length, pitch, root);
+  if (keys.building->phase && *keys.building->phase >= ring.columns)
+    r.fail("building.phase", fmt::format("must be a field column round the building, from 0 to {}",
+                                         ring.columns - 1));
+  std::vector<double> corners{0};  // the closing corner, where the strip begins
+  for (const SurfaceFrame& f : env.facades) corners.push_back(f.start + f.length);
+  turn_ring(ring, corners, design.lattice.base, design.lattice.stages, keys.building->phase);
+  design.field.size[0] = ring.columns;
+  keys.ring = ring;
+}
+
+}  // namespace
+
+std::optional<std::array<int64_t, 2>> FacadeKind::own_cells(const LayoutSpec& spec) const {
+  const FacadeKeys& keys = spec.own<FacadeKeys>();
+  if (!keys.ring || !keys.envelope) return std::nullopt;
+  return std::array<int64_t, 2>{keys.ring->columns, keys.envelope->courses};
+}
+
 void FacadeKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
                       bool field_given) const {
   SurfaceKind::read(r, design, spec, field_given);
@@ -72,6 +110,7 @@ void FacadeKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
                       "least {:g} mm deep (layout.building.depth)",
                       spec.header_bond, queen, keys.envelope->depth, spec.joint, 40 + spec.joint));
   }
+  wrap_round(r, design, spec, field_given);
   // The storeys mark the coursed sheets' levels and the model's building storeys.
   if (spec.drawing.storey == 0 && spec.drawing.storeys.empty()) {
     spec.drawing.storey = keys.building->storey;
@@ -85,10 +124,17 @@ Layout FacadeKind::build(const Design& design, const CurdField& field, const Box
   if (!keys.envelope) return SurfaceKind::build(design, field, view, spec);
   const Envelope& env = *keys.envelope;
   Layout layout = lay_surface(view, spec, env.openings);
-  lay_envelope(layout, env, course_envelope(env, spec, keys.bond), values_in(field, view), spec);
+  lay_envelope(layout, env, course_envelope(env, spec, keys.bond), values_in(field, view), spec,
+               keys.ring);
+  if (keys.ring) {
+    int64_t root = 1;
+    for (int k = 0; k < design.lattice.stages; ++k) root *= design.lattice.base;
+    layout.notes.push_back(
+        ring_note(*keys.ring, spec.module_w + spec.joint, root, keys.building->phase.has_value()));
+  }
   report_open_area(layout, layout.openings_given);
   count_values(layout, design, spec);
-  const std::vector<std::string> grid = corner_grid_notes(layout, design);
+  const std::vector<std::string> grid = corner_grid_notes(layout, design, keys.ring);
   layout.notes.insert(layout.notes.end(), grid.begin(), grid.end());
   return layout;
 }

@@ -8,6 +8,7 @@
 
 #include "building/building.h"
 #include "building/coursing.h"
+#include "building/strip_ring.h"
 #include "kinds/surface_kind.h"
 
 namespace curdle {
@@ -20,6 +21,7 @@ struct FacadeKeys : KindKeysOf<FacadeKeys> {
   std::optional<BuildingKeys> building;
   std::optional<Envelope> envelope;
   CourseBond bond = CourseBond::stretcher;
+  std::optional<StripRing> ring;  // the field round a closed envelope (strip_ring.h)
 };
 
 class FacadeKind : public SurfaceKind {
@@ -31,6 +33,7 @@ class FacadeKind : public SurfaceKind {
   bool upright() const override { return true; }
   std::unique_ptr<KindKeys> default_keys() const override;
   bool take_opening(LayoutSpec& spec, const std::array<double, 4>& rect) const override;
+  std::optional<std::array<int64_t, 2>> own_cells(const LayoutSpec& spec) const override;
   void read(reading::TableReader& r, Design& design, LayoutSpec& spec,
             bool field_given) const override;
   Layout build(const Design& design, const CurdField& field, const Box& view,

@@ -52,6 +52,8 @@ double centring_shift(double extent, double module, double joint) {
 }
 
 std::array<int64_t, 2> elements_to_cover(const LayoutSpec& spec) {
+  if (spec.kind)
+    if (const auto own = spec.kind->own_cells(spec)) return *own;
   if (spec.pattern != LayingPattern::grid)
     return pattern_cells(pattern_units(spec.pattern, spec.module_w, spec.module_h, spec.joint,
                                        spec.size->at(0), spec.size->at(1)));

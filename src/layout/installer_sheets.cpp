@@ -364,7 +364,7 @@ std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
   pieces.reserve(layout.elements.size());
   for (const Element& e : layout.elements) {
     stop_point();
-    const Rect bounds = laid_bounds(e);
+    const Rect bounds = label_bounds(e);
     pieces.push_back(
         {e.id, e.shape.empty() || e.circle || e.outline ? std::vector<Rect>{bounds} : e.shape,
          bounds, e.outline ? &*e.outline : nullptr});

@@ -102,6 +102,11 @@ class LayoutKind {
   virtual Layout build(const Design& design, const CurdField& field, const Box& view,
                        const LayoutSpec& spec) const = 0;
 
+  // The field cells the surface takes where the kind sizes its field itself (the ring round a
+  // building, building/strip_ring.h); absent: a cell a unit (builder.h's elements_to_cover).
+  virtual std::optional<std::array<int64_t, 2>> own_cells(const LayoutSpec&) const {
+    return std::nullopt;
+  }
   // Where it lays each lattice cell, for density fields in millimetres (curdle/density.h).
   virtual CellPlacement cell_placement(const LayoutSpec& spec, const Box& view) const;
   // The drawing's extent in mm before anything is laid, for size checks (layout.png's pixels).

@@ -25,6 +25,16 @@ Rect laid_bounds(const Element& e) {
   return Rect{x0, y0, x1 - x0, y1 - y0};
 }
 
+Rect label_bounds(const Element& e) {
+  // A part before the unit's own start is its part carried round to the strip's start.
+  const bool round_the_seam = !e.circle && !e.outline && e.shape.size() > 1 &&
+                              std::any_of(e.shape.begin(), e.shape.end(),
+                                          [&](const Rect& r) { return r.x < e.nominal.x - 1e-6; });
+  if (!round_the_seam) return laid_bounds(e);
+  return *std::max_element(e.shape.begin(), e.shape.end(),
+                           [](const Rect& a, const Rect& b) { return a.area() < b.area(); });
+}
+
 bool is_rectangle(const Element& e) {
   if (e.circle || e.outline) return false;
   if (e.shape.size() <= 1) return true;

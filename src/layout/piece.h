@@ -14,6 +14,11 @@ namespace curdle {
 // merged outline); the nominal element when it has neither.
 Rect laid_bounds(const Element& e);
 
+// Where the piece is labelled and found on a sheet: its laid extent, but for a unit round a
+// closed envelope's last corner, laid in two parts at the strip's two ends, its larger part
+// (the box of both would span the strip).
+Rect label_bounds(const Element& e);
+
 // Whether the piece is one axis-aligned rectangle (whole, or cut straight at an edge).
 bool is_rectangle(const Element& e);
 

@@ -99,9 +99,10 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
   const toml::table* t = read_table(layout, "building");
   if (!t)
     layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
-  TableReader r(*t, layout.key_path("building"), layout.source(),
-                {"plan", "path", "site", "height", "storey", "storeys", "base", "depth", "start",
-                 "coursed_openings", "arcs", "openings", "windows", "elevations", "heights"});
+  TableReader r(
+      *t, layout.key_path("building"), layout.source(),
+      {"plan", "path", "site", "height", "storey", "storeys", "base", "depth", "start", "phase",
+       "coursed_openings", "arcs", "openings", "windows", "elevations", "heights"});
   BuildingKeys b;
   const bool drawn = r.get("site");
   const bool plan = r.get("plan") || drawn, path = r.get("path");
@@ -164,6 +165,10 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
   const size_t corners = plan ? b.plan.size() : 0;
   b.start = static_cast<size_t>(
       read_int(r, "start", 0, 0, corners ? static_cast<int64_t>(corners) - 1 : 0));
+  if (r.get("phase")) {
+    if (!plan) r.fail("phase", "turns the field round a building (plan); a path has two ends");
+    b.phase = read_int(r, "phase", 0, 0, int64_t{1} << 30);
+  }
   b.coursed_openings = read_bool(r, "coursed_openings", true);
   if (const auto arcs = read_string(r, "arcs", "how units lie on an arc")) {
     if (*arcs != "chords" && *arcs != "bent")

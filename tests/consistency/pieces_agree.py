@@ -134,6 +134,15 @@ def has_parts(boxes, b):
     return all(near(u, v) for u, v in zip(b, span))
 
 
+def wkt_boxes(wkt):
+    """The box of each polygon of a WKT MULTIPOLYGON (its outer ring's points)."""
+    out = []
+    for polygon in re.findall(r"\(\(([^()]*)\)", wkt):
+        pts = [tuple(map(float, p.split())) for p in polygon.split(",")]
+        out.append(box_of_points(pts))
+    return out
+
+
 def install_boxes(path):
     """Each element's extent in install.svg, layout millimetres: the drawing's units are layout
     millimetres (drawn at the installer's scale through its size), the layout's frame its first
@@ -346,10 +355,21 @@ def check(curdle, recipe, out, corner):
         b = (x, y, x + w, y + h)
         area += float(row["area_m2"])
         parts = row["shape_wkt"].startswith("MULTIPOLYGON")
+        label = b
+        if building and parts:
+            # A unit round the closing corner: one brick in the schedule (its box runs on past
+            # the strip's end), two parts at the strip's ends in the drawings, labelled on the
+            # larger.
+            pieces = wkt_boxes(row["shape_wkt"])
+            if x + w > max(q[2] for q in pieces) + 0.01:
+                b = box_of_points([(q[0], q[1]) for q in pieces] + [(q[2], q[3]) for q in pieces])
+                label = max(pieces, key=lambda q: (q[2] - q[0]) * (q[3] - q[1]))
+                if not near(sum(q[2] - q[0] for q in pieces), w):
+                    fail(f"{where}: {eid}'s parts are {pieces}, not {w} mm along the strip")
         if not (has_parts(boxes, b) if parts else has_box(boxes, b)):
             fail(f"{where}: {eid} at {b} has no piece of that extent in layout.dxf")
         p = ids.get(eid)
-        if p is None or not (near(p[0], x + w / 2) and near(p[1], y + h / 2)):
+        if p is None or not (near(p[0], (label[0] + label[2]) / 2) and near(p[1], (label[1] + label[3]) / 2)):
             fail(f"{where}: {eid}'s ID in layout.dxf is at {p}, not at its centre")
         g = modelled.get(eid)
         if building:
