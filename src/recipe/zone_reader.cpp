@@ -123,8 +123,8 @@ ReadContour read_contour(TableReader& r, const std::string& key, double toleranc
   // Before its arcs are drawn in chords: an arc swept kilometres wide would take millions.
   const Rect extent = contour_bounds(contour);
   if (!(extent.x >= -1e7 && extent.y >= -1e7 && extent.right() <= 1e7 && extent.top() <= 1e7))
-    r.fail(key, fmt::format("reaches [{:g}, {:g}] to [{:g}, {:g}] with its corners and arcs: a "
-                            "surface and its zones lie within 10 km of the origin",
+    r.fail(key, fmt::format("reaches [{:g}, {:g}] to [{:g}, {:g}] with its corners and arcs, "
+                            "beyond 10 km from the origin: a surface and its zones lie within it",
                             extent.x, extent.y, extent.right(), extent.top()));
   ReadContour read{contour, flatten(contour, tolerance)};
   if (read.polygon.size() < 3 || !is_simple(read.polygon)) r.fail(key, allowed);
