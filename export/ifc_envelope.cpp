@@ -167,13 +167,12 @@ std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
              step_refs(parts[k]));
   }
   contained = wall_ids;
-  int doors = 0, windows = 0;
   for (size_t i = 0; i < l_.openings_given; ++i) {
     const Rect& o = l_.openings[i];
     const SurfaceFrame* f = frame_at(l_.frames, o.x + o.w / 2);
     const size_t k = static_cast<size_t>(f - l_.frames.data());
     const bool door = i < l_.opening_kinds.size() && l_.opening_kinds[i] == "door";
-    const std::string id = fmt::format("{}-{}", door ? "D" : "W", door ? ++doors : ++windows);
+    const std::string id = opening_name(l_.opening_kinds, i);
     // The opening through the wall, 10 mm proud of both faces so that no reader leaves a skin
     // (and on a curve by its chord's sagitta more, at the back).
     g_.set_local_origin(0, 0);

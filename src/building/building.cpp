@@ -165,14 +165,21 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
     const auto ruled = ruled_windows(*keys.windows, env.facades, keys);
     given.insert(given.end(), ruled.begin(), ruled.end());
   }
+  std::vector<std::string> types;
+  for (const BuildingOpening& o : given) types.push_back(o.type);
+  // "W-12 on façade W at x 3375, sill 900": as the IFC, the sheets and the schedules name it.
+  auto named = [&](size_t i, const SurfaceFrame* f, const Rect& r) {
+    return fmt::format("{}{} at x {:g}, sill {:g}", opening_name(types, i),
+                       f ? " on façade " + f->name : std::string(), r.x, r.y);
+  };
   size_t moved = 0;
   for (size_t i = 0; i < given.size(); ++i) {
     const BuildingOpening& o = given[i];
     const SurfaceFrame* f = facade_named(env.facades, o.facade);
     if (!f)
-      refuse("openings", fmt::format("opening {} names the façade \"{}\", which the plan does not "
+      refuse("openings", fmt::format("{} names the façade \"{}\", which the plan does not "
                                      "have: name one by its compass point ({}) or its index",
-                                     i, o.facade, [&] {
+                                     named(i, nullptr, o.rect), o.facade, [&] {
                                        std::string names;
                                        for (const SurfaceFrame& g : env.facades)
                                          names += (names.empty() ? "" : ", ") + g.name;
@@ -183,23 +190,26 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
       const double y = on_course(r.y, pitch_h), top = on_course(r.top(), pitch_h);
       moved += y != r.y || top != r.top();
       r.y = y, r.h = top - y;
-      if (r.h <= 0) refuse("openings", fmt::format("opening {} is lower than one course", i));
+      if (r.h <= 0)
+        refuse("openings", fmt::format("{} is lower than one course", named(i, f, o.rect)));
     }
     if (r.right() > f->length + kEps)
-      refuse("openings", fmt::format("opening {} on façade {} runs to {:g} mm, past its corner at "
-                                     "{:g} mm: an opening lies on one façade",
-                                     i, f->name, r.right(), f->length));
+      refuse("openings", fmt::format("{} runs to {:g} mm, past its corner at {:g} mm: an opening "
+                                     "lies on one façade",
+                                     named(i, f, r), r.right(), f->length));
     const double top = f->height > 0 ? f->height : env.height;
     if (r.top() > top + kEps)
-      refuse("openings", fmt::format("opening {} on façade {} reaches {:g} mm, above the wall's "
-                                     "top at {:g} mm",
-                                     i, f->name, r.top(), top));
+      refuse("openings", fmt::format("{} reaches {:g} mm, above the wall's top at {:g} mm",
+                                     named(i, f, r), r.top(), top));
     const Rect on_strip{f->start + r.x, r.y, r.w, r.h};
     for (size_t k = 0; k < env.openings.size(); ++k)
-      if (overlaps(env.openings[k], on_strip))
-        refuse("openings", fmt::format("opening {} on façade {} overlaps opening {}: openings "
-                                       "must stand apart",
-                                       i, f->name, k));
+      if (overlaps(env.openings[k], on_strip)) {
+        const SurfaceFrame& g = env.facades[env.opening_facade[k]];
+        refuse("openings", fmt::format("{} overlaps {}: openings must stand apart", named(i, f, r),
+                                       named(k, &g,
+                                             Rect{env.openings[k].x - g.start, env.openings[k].y,
+                                                  env.openings[k].w, env.openings[k].h})));
+      }
     env.openings.push_back(on_strip);
     env.opening_facade.push_back(static_cast<size_t>(f - env.facades.data()));
     env.opening_type.push_back(o.type);

@@ -64,15 +64,15 @@ void join(std::vector<Piece> pieces, double tolerance, std::vector<Closed>& clos
       for (int64_t dy = -1; dy <= 1; ++dy) {
         const auto found = cells.find(Key{k.first + dx, k.second + dy});
         if (found == cells.end()) continue;
-        Cell& cell = found->second;
-        while (cell.begin < cell.ends.size() && used[cell.ends[cell.begin] / 2]) ++cell.begin;
-        const size_t last = std::min(cell.ends.size(), cell.begin + 256);
-        for (size_t j = cell.begin; j < last; ++j) {
-          if (used[cell.ends[j] / 2]) continue;
-          const Contour& p = pieces[cell.ends[j] / 2].path;
-          const ContourVertex& e = cell.ends[j] % 2 ? p.back() : p.front();
+        Cell& near = found->second;
+        while (near.begin < near.ends.size() && used[near.ends[near.begin] / 2]) ++near.begin;
+        const size_t last = std::min(near.ends.size(), near.begin + 256);
+        for (size_t j = near.begin; j < last; ++j) {
+          if (used[near.ends[j] / 2]) continue;
+          const Contour& p = pieces[near.ends[j] / 2].path;
+          const ContourVertex& e = near.ends[j] % 2 ? p.back() : p.front();
           const double d = std::hypot(e.x - v.x, e.y - v.y);
-          if (d <= nearest) nearest = d, best = cell.ends[j];
+          if (d <= nearest) nearest = d, best = near.ends[j];
           if (d == 0) return best;
         }
       }

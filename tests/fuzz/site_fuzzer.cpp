@@ -18,14 +18,16 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size > 256 * 1024) return 0;
   const std::string bytes(reinterpret_cast<const char*>(data), size);
-  // Built whole (GCC 12 warns falsely of an overlapping copy when file is assigned a literal).
-  const curdle::site::LayerMap map{
-      .file = "fuzz.dxf",
-      .outline = "A",
-      .openings = {"B"},
-      .zones = {{"C", curdle::ZoneRule::exclude, 0}},
-      .unit_mm = size % 2 ? 0.0 : 1.0,  // as the drawing or a recipe says
-      .unit_name = "mm"};
+  // Key by key: GCC 12 warns falsely both of a designated initializer (a member "may be used
+  // uninitialized") and of a literal assigned to a string (an overlapping copy).
+  curdle::site::LayerMap map;
+  const std::string file = "fuzz.dxf", outline = "A", openings = "B", zone = "C", mm = "mm";
+  map.file = file;
+  map.outline = outline;
+  map.openings = {openings};
+  map.zones = {{zone, curdle::ZoneRule::exclude, 0}};
+  map.unit_mm = size % 2 ? 0.0 : 1.0;  // as the drawing or a recipe says
+  map.unit_name = mm;
   try {
     // An SVG begins with markup, a glTF model with its magic or JSON; anything else goes to
     // the DXF reader.
