@@ -117,13 +117,15 @@ py::dict schedule_columns(const app::GeneratedRun& g) {
                            "stock_height_mm",
                            "opening_x_mm",
                            "opening_y_mm",
-                           "opening_diameter_mm"};
+                           "opening_diameter_mm",
+                           "strip_x_mm",
+                           "strip_y_mm"};
   std::map<std::string, py::array_t<double>> number;
   for (const char* name : numbers) number.emplace(name, py::array_t<double>(n));
   py::array_t<int64_t> row(n), column(n);
   py::array_t<uint32_t> value(n);
   py::array_t<bool> cut(n);
-  py::list id, lot, type, colour, material, wkt;
+  py::list id, lot, type, colour, material, wkt, facade;
   const double none = std::numeric_limits<double>::quiet_NaN();
   auto put = [&](const char* name, size_t i, std::optional<double> v) {
     number.at(name).mutable_at(i) = v.value_or(none);
@@ -145,6 +147,9 @@ py::dict schedule_columns(const app::GeneratedRun& g) {
     put("opening_x_mm", i, r.opening_x);
     put("opening_y_mm", i, r.opening_y);
     put("opening_diameter_mm", i, r.opening_diameter);
+    put("strip_x_mm", i, r.strip_x);  // a building's: on its unrolled strip
+    put("strip_y_mm", i, r.strip_y);
+    facade.append(r.facade);
     value.mutable_at(i) = r.value;
     cut.mutable_at(i) = r.cut;
     id.append(r.id);
@@ -168,6 +173,7 @@ py::dict schedule_columns(const app::GeneratedRun& g) {
   columns["material"] = material;
   columns["cut"] = cut;
   columns["shape_wkt"] = wkt;
+  columns["facade"] = facade;  // a building's façade ("S", "E2"); empty elsewhere
   return columns;
 }
 

@@ -151,6 +151,30 @@ class AgainstTheCommandLine(unittest.TestCase):
                 self.assertEqual(Path(path).read_bytes(), (out / name).read_bytes(), name)
 
 
+class ABuilding(unittest.TestCase):
+    def test_elements_carry_their_facade_and_strip_place_as_schedule_csv(self):
+        """A building's pieces say their façade and where they lie on the unrolled strip, as
+        schedule.csv does, in the elements and in the table (its façade a word field)."""
+        pattern = "patterns/pavilion-l-shaped.toml"
+        with tempfile.TemporaryDirectory() as tmp:
+            subprocess.run([PROGRAM, "generate", str(SOURCE / pattern), "--out", tmp, "--seed",
+                            str(SEED), "--outputs", "schedule.csv"], check=True,
+                           stdout=subprocess.DEVNULL)
+            rows = read_csv(Path(tmp) / "schedule.csv")
+        run = curdle.Recipe.from_file(SOURCE / pattern).generate(seed=SEED, threads=1)
+        elements, table = run.layout.elements, run.layout.table()
+        self.assertEqual(len(elements), len(rows))
+        self.assertEqual(table.dtype["facade"].kind, "U")
+        for e, t, r in zip(elements, table, rows):
+            self.assertEqual((e.facade, str(t.facade)), (r["facade"], r["facade"]), e.element_id)
+            self.assertTrue(same_mm(r["strip_x_mm"], e.strip_x_mm), e.element_id)
+            self.assertTrue(same_mm(r["strip_y_mm"], e.strip_y_mm), e.element_id)
+        self.assertEqual(sorted({e.facade for e in elements}), ["E", "E2", "N", "N2", "S", "W"])
+        plain = curdle.Recipe.from_file(SOURCE / PATTERNS[0]).generate(seed=SEED, threads=1)
+        self.assertIsNone(plain.layout.elements[0].facade)
+        self.assertIsNone(plain.layout.elements[0].strip_x_mm)
+
+
 class Calls(unittest.TestCase):
     def test_overrides_seed_and_window_are_the_command_lines(self):
         recipe = curdle.Recipe.from_file(SOURCE / "patterns/paper/fig7-three-stages.toml")

@@ -193,10 +193,13 @@ class Element:
     cut: bool
     shape_wkt: str
     opening: tuple | None
+    facade: str | None = None       # a building's: its façade ("S", "E2")
+    strip_x_mm: float | None = None  # and where it lies on the unrolled strip
+    strip_y_mm: float | None = None
     polygon: list | None = dataclasses.field(default=None, repr=False)
 
 
-_WORDS = ("element_id", "lot", "element_type", "colour", "material", "shape_wkt")
+_WORDS = ("element_id", "lot", "element_type", "colour", "material", "shape_wkt", "facade")
 
 
 def _optional(x):
@@ -227,7 +230,8 @@ class Layout:
 
         Returns:
             {column: values}: NumPy arrays of numbers (NaN where the CSV is empty) and lists
-            of words (element_id, lot, element_type, colour, material, shape_wkt).
+            of words (element_id, lot, element_type, colour, material, shape_wkt, facade:
+            a building's façade, empty elsewhere).
         Raises:
             InputError: never for a layout made by generate.
         Example:
@@ -288,6 +292,9 @@ class Layout:
                 element_type=c["element_type"][i], colour=c["colour"][i],
                 material=c["material"][i], cut=bool(c["cut"][i]), shape_wkt=c["shape_wkt"][i],
                 opening=None if centre[0] is None else centre + (diameter,),
+                facade=c["facade"][i] or None,
+                strip_x_mm=_optional(c["strip_x_mm"][i]),
+                strip_y_mm=_optional(c["strip_y_mm"][i]),
                 polygon=self._run._native.element_outlines(i)))
         return out
 
