@@ -79,10 +79,9 @@ class IfcModel {
       stop_point();
       element(l_.elements[i], i);
     }
-    if (!l_.frames.empty()) {
-      const std::vector<int64_t> walls = envelope_.walls(container_place_, parts_);
-      contained_.insert(contained_.end(), walls.begin(), walls.end());
-    }
+    if (!l_.frames.empty())
+      for (const auto& [id, base] : envelope_.walls(container_place_, parts_))
+        contained_in(base).push_back(id);
     closing_relations();
     w_.finish();
   }
@@ -232,6 +231,8 @@ class IfcModel {
                                text("Level " + std::to_string(k)), ref(place), real(at)));
       if (k == 0) container_ = storeys.back(), container_place_ = place;
     }
+    storeys_ = storeys, levels_ = levels;
+    upper_.assign(storeys.size(), {});
     w_.add("IFCRELAGGREGATES({},$,$,{},{})", root("building-storey"), ref(building),
            step_refs(storeys));
   }
@@ -401,8 +402,10 @@ class IfcModel {
         w_.add("IFCRELVOIDSELEMENT({},$,$,{},{})", root("void ", e.id),
                ref(sheet_plates_[static_cast<size_t>(e.sheet)]), ref(id));
     } else {
-      if (framed) parts_[envelope_.facade_of(e)].push_back(id);  // nested in its façade's wall
-      contained_.push_back(id);
+      if (framed)
+        parts_[envelope_.facade_of(e)].push_back(id);  // nested in its façade's wall, only
+      else
+        contained_.push_back(id);
     }
     const std::string& material = piece_material(l_, e);
     materials_[material].push_back(id);
@@ -488,11 +491,23 @@ class IfcModel {
     w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("qto-rel ", e.id), ref(id), ref(set));
   }
 
-  // What groups elements: containment, materials and covering types.
+  // What the storey whose floor is at or below `base` (mm above the building's base) contains:
+  // a window with its sill on the upper floor stands in the upper storey.
+  std::vector<int64_t>& contained_in(double base) {
+    size_t k = 0;
+    while (k + 1 < levels_.size() && levels_[k + 1] <= base + 1e-6) ++k;
+    return k == 0 ? contained_ : upper_[k];
+  }
+
+  // What groups elements: containment in each storey, materials and covering types.
   void closing_relations() {
     if (!contained_.empty())
       w_.add("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})", root("contained"),
              step_refs(contained_), ref(container_));
+    for (size_t k = 1; k < upper_.size(); ++k)
+      if (!upper_[k].empty())
+        w_.add("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})",
+               root("contained " + std::to_string(k)), step_refs(upper_[k]), ref(storeys_[k]));
     for (const auto& [name, ids] : materials_) {
       const int64_t m = w_.add("IFCMATERIAL({},$,$)", text(name));
       w_.add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("material " + name), step_refs(ids),
@@ -533,6 +548,9 @@ class IfcModel {
   int64_t owner_ = 0, world_ = 0, out_of_wall_ = 0, along_ = 0, annotation_ = 0;
   int64_t profile_context_ = 0, project_ = 0, container_ = 0, container_place_ = 0;
   std::vector<int64_t> contained_, sheet_plates_, sheet_places_;
+  std::vector<int64_t> storeys_;             // Level 0, 1, ...
+  std::vector<double> levels_{0};            // their floors, mm above the base
+  std::vector<std::vector<int64_t>> upper_;  // what each storey above Level 0 contains
   std::map<std::string, std::vector<int64_t>> materials_;
   struct TextHash {  // looks a shared entity up by its text, without making a string of it
     using is_transparent = void;

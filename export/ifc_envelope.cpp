@@ -138,9 +138,9 @@ int64_t IfcEnvelopeWriter::placement_on(const SurfaceFrame& f, double u, double 
   return w_.add("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame));
 }
 
-std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
-                                              const std::vector<std::vector<int64_t>>& parts) {
-  std::vector<int64_t> contained;
+std::vector<std::pair<int64_t, double>> IfcEnvelopeWriter::walls(
+    int64_t container, const std::vector<std::vector<int64_t>>& parts) {
+  std::vector<std::pair<int64_t, double>> contained;
   const double t = l_.thickness;
   std::vector<int64_t> wall_ids;
   for (size_t k = 0; k < l_.frames.size(); ++k) {
@@ -159,14 +159,14 @@ std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
                                   root_("wall-common " + f.name), ref(reference), ref(external));
     w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root_("wall-common-rel " + f.name),
            ref(wall), ref(common));
-    // Its units nested in it, and each also in the storey: IfcRelAggregates would say the same,
-    // but web-ifc then subtracts the wall's openings from every unit (already cut to them),
-    // taking 6 s to open the pavilion instead of 3.
+    // Its units nested in it, and so in the storeys through it (a part is not contained as
+    // well): IfcRelAggregates would say the same, but web-ifc then subtracts the wall's openings
+    // from every unit (already cut to them), taking 6 s to open the pavilion instead of 3.
     if (!parts[k].empty())
       w_.add("IFCRELNESTS({},$,$,{},{})", root_("wall-parts " + f.name), ref(wall),
              step_refs(parts[k]));
   }
-  contained = wall_ids;
+  for (const int64_t wall : wall_ids) contained.push_back({wall, 0.0});
   for (size_t i = 0; i < l_.openings_given; ++i) {
     const Rect& o = l_.openings[i];
     const SurfaceFrame* f = frame_at(l_.frames, o.x + o.w / 2);
@@ -202,7 +202,7 @@ std::vector<int64_t> IfcEnvelopeWriter::walls(int64_t container,
                            ref(g_.body({panel})), text(id), real(o.h), real(o.w));
     const int64_t filler = w_.add(entity);
     w_.add("IFCRELFILLSELEMENT({},$,$,{},{})", root_("fill " + id), ref(opening), ref(filler));
-    contained.push_back(filler);
+    contained.push_back({filler, o.y});
   }
   return contained;
 }

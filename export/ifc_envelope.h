@@ -38,9 +38,10 @@ class IfcEnvelopeWriter {
   size_t facade_of(const Element& e) const;
 
   // The walls, each nesting `parts[k]` (façade k's units), their openings, windows and
-  // doors; returns what the storey contains (walls, windows and doors).
-  std::vector<int64_t> walls(int64_t container_place,
-                             const std::vector<std::vector<int64_t>>& parts);
+  // doors; returns what the storeys contain (walls, windows and doors), each with the level
+  // its base stands at, mm above the building's base.
+  std::vector<std::pair<int64_t, double>> walls(int64_t container_place,
+                                                const std::vector<std::vector<int64_t>>& parts);
 
  private:
   // A placement relative to `container` at strip position (u, v) of `frame`'s outer face, along

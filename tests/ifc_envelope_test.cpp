@@ -1,11 +1,12 @@
 // Tests of ifc_envelope.h, through layout.ifc of the pavilion: a wall per façade nesting its
-// units, each unit a building element part in the storey, an opening per window and door
-// voiding its wall and filled, storeys at the recipe's floor-to-floor height, and a corner
-// unit one part with one prism.
+// units, each unit a building element part in the storeys through it, an opening per window
+// and door voiding its wall and filled, each in the storey its sill stands in, storeys at the
+// recipe's floor-to-floor height, and a corner unit one part with one prism.
 #include "export/ifc_envelope.h"
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -64,6 +65,36 @@ type = "door"
   EXPECT_EQ(count(ifc, "IFCDOOR"), 1u);
   EXPECT_NE(ifc.find("'Level 1',$,$,#"), std::string::npos);
   EXPECT_NE(ifc.find(",.ELEMENT.,3525.);"), std::string::npos);
+  // Each storey contains what stands in it: Level 0 the walls, the door and the ground
+  // floor's 20 windows; Level 1 the 20 upper windows (sills at 4425). The parts are in the
+  // storeys through their walls, not contained as well.
+  std::map<std::string, std::string> storey_of;  // storey id -> its name
+  for (size_t at = ifc.find("=IFCBUILDINGSTOREY("); at != std::string::npos;
+       at = ifc.find("=IFCBUILDINGSTOREY(", at + 1)) {
+    const size_t start = ifc.rfind('#', at) + 1;
+    const std::string line = line_of(ifc, ifc.substr(start, at - start));
+    storey_of[ifc.substr(start, at - start)] = line.substr(line.find("'Level"), 9);
+  }
+  std::map<std::string, std::map<std::string, size_t>> held;  // storey -> entity -> count
+  std::smatch m;
+  for (size_t at = ifc.find("=IFCRELCONTAINEDINSPATIALSTRUCTURE("); at != std::string::npos;
+       at = ifc.find("=IFCRELCONTAINEDINSPATIALSTRUCTURE(", at + 1)) {
+    const std::string line = ifc.substr(at, ifc.find('\n', at) - at);
+    const size_t open = line.find(",$,$,(") + 6, close = line.find(')', open);
+    const std::string storey = storey_of[line.substr(close + 3, line.size() - close - 5)];
+    std::stringstream ids(line.substr(open, close - open));
+    for (std::string id; std::getline(ids, id, ',');) {
+      const std::string held_line = line_of(ifc, id.substr(1));
+      const size_t eq = held_line.find('=');
+      ++held[storey][held_line.substr(eq + 1, held_line.find('(') - eq - 1)];
+    }
+  }
+  EXPECT_EQ(held["'Level 0'"]["IFCWALL"], 6u);
+  EXPECT_EQ(held["'Level 0'"]["IFCDOOR"], 1u);
+  EXPECT_EQ(held["'Level 0'"]["IFCWINDOW"], 20u);
+  EXPECT_EQ(held["'Level 1'"]["IFCWINDOW"], 20u);
+  EXPECT_EQ(held["'Level 0'"]["IFCBUILDINGELEMENTPART"], 0u);
+  EXPECT_EQ(held["'Level 1'"].size(), 1u);
   // A quoin is one part whose body is one prism, its footprint cut to the corner.
   const Element* quoin = nullptr;
   for (const Element& e : l.elements)
@@ -78,7 +109,6 @@ type = "door"
       ifc.substr(ifc.rfind('\n', at) + 1, ifc.find('\n', at) - ifc.rfind('\n', at) - 1);
   ASSERT_EQ(part.find("IFCBUILDINGELEMENTPART("), part.find('=') + 1) << part;
   // Its representation (after its placement), a product shape of one body of one solid.
-  std::smatch m;
   ASSERT_TRUE(std::regex_search(part, m, std::regex("',#\\d+,#(\\d+),'")));
   const std::string shape = line_of(ifc, m[1].str());
   ASSERT_TRUE(std::regex_search(shape, m, std::regex("\\(\\$,\\$,\\(#(\\d+)\\)\\)")));

@@ -3,7 +3,8 @@
 // its ID, with the model's owner history; its value, lot and material as the schedule gives
 // them (the standard sets are ifc_lite_check.mjs's to read); its placement at its own corner;
 // its body one solid (a tree: trunk and canopy) whose extent (from web-ifc's own meshes) is the
-// row's box within 0.01 mm; each element but the openings in a space or a storey; every
+// row's box within 0.01 mm; each element but the openings in a space or a storey (a building's
+// units in them through the wall that nests them, its walls, windows and doors in one); every
 // opening a void of a plate, its outline (a 'Profile' curve) the row's box, and each plate's
 // mesh as open as its sheet (the holes are in its body); every setting-out annotation's
 // IfcIndexedPolyCurve with its arcs as IfcArcIndex through three distinct points on a circle.
@@ -165,6 +166,13 @@ function buildingProblems(model, dir, problems) {
                            ['windows and doors', count(W.IFCWINDOW) + count(W.IFCDOOR)]])
     if (n !== openings) problems.push(`${n} ${what} for ${openings} openings in the report`);
   if (count(W.IFCBUILDINGSTOREY) < 1) problems.push('no storey');
+  // Walls, windows and doors each in a storey (the one their base stands in).
+  const heldBy = containers(model);
+  for (const type of [W.IFCWALL, W.IFCWINDOW, W.IFCDOOR]) {
+    const ids = api.GetLineIDsWithType(model, type);
+    for (let i = 0; i < ids.size(); ++i)
+      if (heldBy.get(ids.get(i)) !== W.IFCBUILDINGSTOREY) problems.push(`${api.GetLine(model, ids.get(i)).Name?.value}: in no storey`);
+  }
   return { walls: facades.length, openings };
 }
 
@@ -240,7 +248,10 @@ function check(dir) {
     if (e.type !== W.IFCOPENINGELEMENT) {
       const holder = heldBy.get(e.id);
       if (building && wallOf.get(e.id) !== row.facade) problems.push(`${row.element_id}: a part of wall ${wallOf.get(e.id)}, not ${row.facade}`);
-      if (holder !== W.IFCSPACE && holder !== W.IFCBUILDINGSTOREY) problems.push(`${row.element_id}: not in a space or a storey`);
+      // A building's unit is in the storeys through its wall, which nests it: not contained too.
+      if (building && e.type === W.IFCBUILDINGELEMENTPART) {
+        if (holder !== undefined) problems.push(`${row.element_id}: contained as well as nested in its wall`);
+      } else if (holder !== W.IFCSPACE && holder !== W.IFCBUILDINGSTOREY) problems.push(`${row.element_id}: not in a space or a storey`);
       const shape = api.GetRawLineData(model, e.line.Representation.value).arguments[2][0].value;
       const items = api.GetRawLineData(model, shape).arguments[3];
       const solids = e.type === W.IFCGEOGRAPHICELEMENT ? 2 : 1;
