@@ -111,5 +111,31 @@ TEST(RunFill, WholeUnitsFromTheEndsWithTheCutInTheMiddle) {
   EXPECT_NEAR(sliver.units[0].to, 50, 1e-9);
 }
 
+// A run a fraction of a millimetre short of whole pitches (a curved wall's chords) or up to
+// 2 mm off is laid in whole units, its joints taking the difference up: no closer. 5 mm off is
+// no longer a joint's play: a closer.
+TEST(RunFill, ARunWithinTheJointToleranceOfWholeUnitsHasNoCloser) {
+  for (const double off : {-0.027, 0.027, -1.9, 1.9}) {
+    Filled f;
+    const double run = 80 * (kL + kJ) - kJ + off;
+    fill_whole_from_ends(f.fill(), 0, run);
+    ASSERT_EQ(f.units.size(), 80u) << off;
+    for (const CourseUnit& u : f.units) EXPECT_EQ(u.role, UnitRole::stretcher) << off;
+    EXPECT_NEAR(f.units.front().from, 0, 1e-9);
+    EXPECT_NEAR(f.units.back().to, run, 1e-9) << off;
+    EXPECT_NEAR(f.units[1].from - f.units[0].to, kJ + off / 79, 1e-9) << off;
+  }
+  Filled closer;
+  fill_whole_from_ends(closer.fill(), 0, 80 * (kL + kJ) - kJ - 5);
+  EXPECT_TRUE(std::any_of(closer.units.begin(), closer.units.end(),
+                          [](const CourseUnit& u) { return u.role == UnitRole::closer; }));
+  // The gap left in a bond's middle: a unit's width within 2 mm is a whole unit.
+  Filled gap;
+  const BondOrder none{{}, {BondPiece{1000, UnitRole::stretcher, 0}}};
+  fill_in_order(gap.fill(), 0, kL + 1.5, none, none);
+  ASSERT_EQ(gap.units.size(), 1u);
+  EXPECT_EQ(gap.units[0].role, UnitRole::stretcher);
+}
+
 }  // namespace
 }  // namespace curdle

@@ -22,7 +22,11 @@ void put(const RunFill& f, double from, double width, UnitRole role, double dept
 // two halves where it is longer than a unit (a short cut taken with its whole neighbour).
 void cut_gap(const RunFill& f, double from, double to, double depth = 0) {
   const double gap = to - from;
-  if (gap <= -f.j + kEps) return;  // filled exactly
+  if (gap <= -f.j + kJointTolerance) return;      // filled, a joint a little wider at most
+  if (std::fabs(gap - f.l) <= kJointTolerance) {  // a whole unit, its joints taking it up
+    put(f, from + (gap - f.l) / 2, f.l, UnitRole::stretcher, depth);
+    return;
+  }
   if (gap > f.l + kEps) {
     const double half = (gap - f.j) / 2;
     put(f, from, half, UnitRole::closer, depth);
@@ -38,6 +42,15 @@ void cut_gap(const RunFill& f, double from, double to, double depth = 0) {
 void fill_whole_from_ends(const RunFill& f, double s, double e) {
   const double room = e - s, l = f.l, j = f.j;
   if (room < kEps) return;
+  // Within the joint tolerance of whole units: those units, the difference in their joints.
+  const double nearest = std::round((room + j) / (l + j));
+  if (nearest >= 1 && std::fabs(room + j - nearest * (l + j)) <= kJointTolerance) {
+    const auto n = static_cast<int64_t>(nearest);
+    const double joint = n > 1 ? (room - nearest * l) / (nearest - 1) : 0;
+    double at = n > 1 ? s : s + (room - l) / 2;
+    for (int64_t k = 0; k < n; ++k, at += l + joint) put(f, at, l, UnitRole::stretcher);
+    return;
+  }
   const int64_t whole = static_cast<int64_t>(std::floor((room + j) / (l + j) + kEps));
   const double left = room - (static_cast<double>(whole) * (l + j) - j);
   std::vector<double> lengths(static_cast<size_t>(whole), l);

@@ -6,7 +6,10 @@
 // - from each end in the bond's own order of headers, stretchers and queen closers, the cut in
 //   the middle (English and Flemish bond).
 // No cut is narrower than `min_cut` where any arrangement avoids it: a piece that would be is
-// taken with its neighbour and the two laid as two halves.
+// taken with its neighbour and the two laid as two halves. A run (or the gap left in its
+// middle) within kJointTolerance of whole units takes the difference up in its joints, as a
+// bricklayer does, and has no closer: a curved wall's chords leave each course a fraction of a
+// millimetre short of whole pitches.
 #pragma once
 
 #include <cstdint>
@@ -32,6 +35,10 @@ struct BondOrder {
 
 // What every fill needs: the course, the unit's length `l`, the joint `j` and the narrowest
 // cut; `sliver` is set where a run is shorter than the narrowest cut and laid as one piece.
+// How far a run may be from whole units and be laid whole, its joints a little wider or
+// narrower, mm over the run (a 10 mm joint is laid within about ±2 mm).
+inline constexpr double kJointTolerance = 2.0;
+
 struct RunFill {
   int64_t course = 0;
   double l = 0, j = 0, min_cut = 0;
