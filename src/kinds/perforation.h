@@ -48,6 +48,8 @@ class PerforationKind : public SurfaceKind {
   std::string_view legend_unit() const override { return "opening"; }
   char id_letter() const override { return 'C'; }  // cells; their openings become "H-..."
   double thickness(const LayoutSpec& spec) const override;
+  // A perforated screen stands: its sheet's y runs up in the model (+Y in glTF, z in IFC).
+  bool upright() const override { return true; }
   Finish finish() const override { return {0.9, 0.4}; }
   Ground ground() const override { return Ground::sheet; }
   Depiction depiction() const override { return Depiction::shapes; }

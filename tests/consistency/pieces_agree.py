@@ -334,7 +334,7 @@ def check(curdle, recipe, out, corner):
     with open(recipe, "rb") as f:
         kind = tomllib.load(f).get("layout", {}).get("kind", "tile")
     building = "building" in layout_table(recipe)
-    modelled = glb_nodes(os.path.join(out, "layout.glb"), kind in ("facade", "façade", "rhythm"))
+    modelled = glb_nodes(os.path.join(out, "layout.glb"), kind in ("facade", "façade", "rhythm", "perforation"))
     faces = glb_faces(os.path.join(out, "layout.glb")) if building else {}
     named, ranges = svg_ids(os.path.join(out, "layout.svg"))
     runs = ids_in_ranges(ranges)
