@@ -150,13 +150,15 @@ TEST(Gltf, PerforatedSheetIsASolidWithItsOpenings) {
   const Layout layout = make_layout(d, curdle(d, 3, d.field), d.field, spec);
   const tinygltf::Model m = read_back(layout);
   const Totals t = totals(m);
+  // A screen stands: its sheet's y up (+Y), its thickness out of its face (+Z).
   EXPECT_NEAR(t.hi[0], 0.64, 1e-6);
-  EXPECT_NEAR(t.hi[1], 0.003, 1e-6);
-  EXPECT_NEAR(t.lo[2], -0.64, 1e-6);
+  EXPECT_NEAR(t.hi[1], 0.64, 1e-6);
+  EXPECT_NEAR(t.lo[2], 0, 1e-6);
+  EXPECT_NEAR(t.hi[2], 0.003, 1e-6);
   size_t openings = 0;
   for (const Element& e : layout.elements) openings += t.names.count(e.id);
   EXPECT_EQ(openings, layout.elements.size());
-  // The top face's area is the sheet less its openings: sum the triangles facing +Y over the
+  // The front face's area is the sheet less its openings: sum the triangles facing +Z over the
   // sheet's own mesh and the tiles it places round its round openings (sheet_tiles.h).
   const tinygltf::Node* sheet = nullptr;
   for (const tinygltf::Node& node : m.nodes)
@@ -179,8 +181,8 @@ TEST(Gltf, PerforatedSheetIsASolidWithItsOpenings) {
       const float* a = p + 3 * idx[i];
       const float* b = p + 3 * idx[i + 1];
       const float* c = p + 3 * idx[i + 2];
-      if (a[1] < 0.0029 || b[1] < 0.0029 || c[1] < 0.0029) continue;
-      top += 0.5 * std::fabs((b[0] - a[0]) * (c[2] - a[2]) - (c[0] - a[0]) * (b[2] - a[2]));
+      if (a[2] < 0.0029 || b[2] < 0.0029 || c[2] < 0.0029) continue;
+      top += 0.5 * std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
     }
   }
   // Polygons inscribed in the circles make openings a little smaller: the sheet keeps more
