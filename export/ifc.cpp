@@ -137,7 +137,21 @@ class IfcModel {
         l_.source.description.empty() ? std::string("$") : step_string(l_.source.description);
     project_ = w_.add("IFCPROJECT({},{},{},$,$,$,({}),{})", root("project"), text(l_.source.recipe),
                       description, ref(model), ref(units));
+    map_conversion(model);
     recipe_properties();
+  }
+
+  // [layout.georef]: the model's origin (the layout's datum) on the projected CRS, its x axis
+  // turned by the rotation, millimetres to the map's metres, as BIM coordinators place a model.
+  void map_conversion(int64_t model) {
+    if (!l_.georef) return;
+    const Georef& g = *l_.georef;
+    const int64_t metre = w_.add("IFCSIUNIT(*,.LENGTHUNIT.,$,.METRE.)");
+    const int64_t crs = w_.add("IFCPROJECTEDCRS({},$,$,$,$,$,{})",
+                               text(fmt::format("EPSG:{}", g.epsg)), ref(metre));
+    const double turn = g.rotation * 3.14159265358979323846 / 180;
+    w_.add("IFCMAPCONVERSION({},{},{},{},0.,{},{},0.001)", ref(model), ref(crs), real(g.easting),
+           real(g.northing), real(std::cos(turn)), real(std::sin(turn)));
   }
 
   // Who made the model and when, as Revit and Solibri expect of every rooted entity: curdle, at

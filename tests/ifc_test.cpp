@@ -78,6 +78,19 @@ TEST(Ifc, EveryScheduleRowIsAnElementNamedAndTaggedByItsId) {
   EXPECT_NE(w.ifc.find("IFCMATERIAL('Basalt slab 600 x 300',$,$)"), std::string::npos);
 }
 
+// [layout.georef]: the model placed on the projected CRS as a BIM coordinator places one, its
+// origin at the easting and northing, its x axis turned, millimetres to the map's metres; none
+// without it.
+TEST(Ifc, AGeoreferencedLayoutCarriesItsMapConversion) {
+  const Written w = written("courtyard-l-shaped.toml",
+                            {"layout.georef={epsg=27700, easting=530000.5, northing=180000.25, "
+                             "rotation=30}"});
+  EXPECT_EQ(count(w.ifc, "=IFCPROJECTEDCRS('EPSG:27700',$,$,$,$,$,#"), 1u);
+  EXPECT_NE(w.ifc.find(",530000.5,180000.25,0.,0.8660254037844387,0.49999999999999994,0.001);"),
+            std::string::npos);
+  EXPECT_EQ(count(written("courtyard-l-shaped.toml").ifc, "IFCMAPCONVERSION"), 0u);
+}
+
 TEST(Ifc, KindsBecomeTheClassesABimModellerWouldChoose) {
   const Written facade = written("brick-facade-five-storeys.toml");
   EXPECT_EQ(count(facade.ifc, "=IFCBUILDINGSTOREY("), 1u);
