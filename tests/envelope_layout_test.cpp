@@ -190,6 +190,13 @@ TEST(EnvelopeLayout, APhaseGivenTurnsTheRing) {
     }
   };
   refused(test::pavilion_recipe("phase = 288\n"), "from 0 to 287");
+  // A root cell of 729 cells round a strip of 284 units would shrink the curd's clusters to
+  // units 88 mm long: laid a cell a unit instead, its seam as before.
+  std::string coarse = test::pavilion_recipe();
+  coarse.replace(coarse.find("base = 2"), 8, "base = 3");
+  coarse.insert(coarse.find("\"7/8\""), "\"9/10\", ");
+  const Recipe wide = parse_recipe(coarse, "pavilion.toml");
+  EXPECT_FALSE(wide.layout->own<FacadeKeys>().ring.has_value());
   refused(test::pavilion_recipe("phase = 3\n", "[field]\ncells = [400, 94]\n"),
           "turns the field round the building");
 }

@@ -52,8 +52,11 @@ void turn_ring(StripRing& ring, const std::vector<double>& corners, int base, in
     ring.quiet_stages = score(*given).first;
     return;
   }
+  // Every phase of a root cell, or 4,096 spread over it where the root is larger (a lattice of
+  // 8 stages of base 8 has 16.8 million cells a root).
+  const int64_t step = std::max<int64_t>(1, (std::min(root, ring.columns) + 4095) / 4096);
   std::pair<int, double> best{-1, 0};
-  for (int64_t phase = 0; phase < root && phase < ring.columns; ++phase) {
+  for (int64_t phase = 0; phase < root && phase < ring.columns; phase += step) {
     const std::pair<int, double> s = score(phase);
     if (s > best) best = s, ring.phase = phase;
   }

@@ -28,7 +28,8 @@ StripRing ring_round(double length, double pitch, int64_t root);
 
 // The phase, from 0 to root - 1, that keeps `corners` (mm along the strip) at least a cell from
 // the boundaries of as many coarse stages as it can, from the root down (base^stages cells a
-// root); of those, the one that keeps them farthest from the next stage's, then the smallest.
+// root); of those, the one that keeps them farthest from the next stage's, then the smallest
+// (of at most 4,096 phases spread over a larger root).
 // `given` fixes it instead (the recipe's layout.building.phase).
 void turn_ring(StripRing& ring, const std::vector<double>& corners, int base, int stages,
                std::optional<int64_t> given);

@@ -61,6 +61,16 @@ void wrap_round(reading::TableReader& r, Design& design, LayoutSpec& spec, bool 
   for (int k = 0; k < design.lattice.stages; ++k) root *= design.lattice.base;
   const double pitch = spec.module_w + spec.joint;
   StripRing ring = ring_round(env.length, pitch, root);
+  // A root cell much longer than the strip would make the ring's cells far smaller than the
+  // units, and the curd's clusters with them: laid a cell a unit instead, with its seam.
+  if (ring.cell < 0.75 * pitch || ring.cell > 1.5 * pitch) {
+    if (keys.building->phase)
+      r.fail("building.phase",
+             fmt::format("turns the field round the building, but a root cell of {} cells is too "
+                         "long for a ring of {:.0f} units: the strip is laid from its start",
+                         root, env.length / pitch));
+    return;
+  }
   if (keys.building->phase && *keys.building->phase >= ring.columns)
     r.fail("building.phase", fmt::format("must be a field column round the building, from 0 to {}",
                                          ring.columns - 1));
