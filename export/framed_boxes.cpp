@@ -99,7 +99,7 @@ LaidFace laid_face(const Element& e, double length) {
   if (e.shape.empty()) return {e.nominal.x, e.nominal.right(), e.nominal.y + e.nominal.h / 2};
   double lo = 1e300, hi = -1e300, bottom = 1e300, top = -1e300;
   for (const Rect& r : e.shape) {
-    const double shift = r.x < e.nominal.x - 1e-6 ? length : 0;
+    const double shift = carried_round_the_seam(e, r) ? length : 0;
     lo = std::min(lo, r.x + shift), hi = std::max(hi, r.right() + shift);
     bottom = std::min(bottom, r.y), top = std::max(top, r.top());
   }

@@ -82,8 +82,7 @@ std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& d
   std::vector<std::string> out;
   const double pitch_w = layout.module_w + layout.joint;
   const int b = design.lattice.base, stages = design.lattice.stages;
-  int64_t root = 1;  // the lattice's whole cell, in field cells
-  for (int k = 0; k < stages; ++k) root *= b;
+  const auto root = static_cast<int64_t>(design.lattice.root_side());  // in field cells
   // Places in the field's own cells: a window may start the strip anywhere in a larger curd.
   const int64_t origin = layout.view.origin[0];
   auto place = [&](double u) {

@@ -57,8 +57,7 @@ void wrap_round(reading::TableReader& r, Design& design, LayoutSpec& spec, bool 
              "out, or choose the segment with field.window");
     return;
   }
-  int64_t root = 1;
-  for (int k = 0; k < design.lattice.stages; ++k) root *= design.lattice.base;
+  const auto root = static_cast<int64_t>(design.lattice.root_side());
   const double pitch = spec.module_w + spec.joint;
   StripRing ring = ring_round(env.length, pitch, root);
   // A root cell much longer than the strip would make the ring's cells far smaller than the
@@ -137,10 +136,9 @@ Layout FacadeKind::build(const Design& design, const CurdField& field, const Box
   lay_envelope(layout, env, course_envelope(env, spec, keys.bond), values_in(field, view), spec,
                keys.ring);
   if (keys.ring) {
-    int64_t root = 1;
-    for (int k = 0; k < design.lattice.stages; ++k) root *= design.lattice.base;
-    layout.notes.push_back(
-        ring_note(*keys.ring, spec.module_w + spec.joint, root, keys.building->phase.has_value()));
+    layout.notes.push_back(ring_note(*keys.ring, spec.module_w + spec.joint,
+                                     static_cast<int64_t>(design.lattice.root_side()),
+                                     keys.building->phase.has_value()));
   }
   report_open_area(layout, layout.openings_given);
   count_values(layout, design, spec);

@@ -26,10 +26,10 @@ Rect laid_bounds(const Element& e) {
 }
 
 Rect label_bounds(const Element& e) {
-  // A part before the unit's own start is its part carried round to the strip's start.
   const bool round_the_seam = !e.circle && !e.outline && e.shape.size() > 1 &&
-                              std::any_of(e.shape.begin(), e.shape.end(),
-                                          [&](const Rect& r) { return r.x < e.nominal.x - 1e-6; });
+                              std::any_of(e.shape.begin(), e.shape.end(), [&](const Rect& r) {
+                                return carried_round_the_seam(e, r);
+                              });
   if (!round_the_seam) return laid_bounds(e);
   return *std::max_element(e.shape.begin(), e.shape.end(),
                            [](const Rect& a, const Rect& b) { return a.area() < b.area(); });

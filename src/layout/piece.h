@@ -14,6 +14,12 @@ namespace curdle {
 // merged outline); the nominal element when it has neither.
 Rect laid_bounds(const Element& e);
 
+// Whether `part` of a unit round a closed envelope's last corner is the part carried round to
+// the strip's start (it lies before the unit's own start).
+inline bool carried_round_the_seam(const Element& e, const Rect& part) {
+  return part.x < e.nominal.x - 1e-6;
+}
+
 // Where the piece is labelled and found on a sheet: its laid extent, but for a unit round a
 // closed envelope's last corner, laid in two parts at the strip's two ends, its larger part
 // (the box of both would span the strip).
