@@ -172,7 +172,8 @@ std::vector<std::pair<int64_t, double>> IfcEnvelopeWriter::walls(
     const SurfaceFrame* f = frame_at(l_.frames, o.x + o.w / 2);
     const size_t k = static_cast<size_t>(f - l_.frames.data());
     const bool door = i < l_.opening_kinds.size() && l_.opening_kinds[i] == "door";
-    const std::string id = opening_name(l_.opening_kinds, i);
+    const std::string id =
+        i < l_.opening_names.size() ? l_.opening_names[i] : fmt::format("opening-{}", i + 1);
     // The opening through the wall, 10 mm proud of both faces so that no reader leaves a skin
     // (and on a curve by its chord's sagitta more, at the back).
     g_.set_local_origin(0, 0);

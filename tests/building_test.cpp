@@ -63,6 +63,45 @@ TEST(Building, ARuleSetsWindowsOnEveryFacadeAndStoreyClearOfTheCorners) {
   }
 }
 
+// Doors and windows are counted apart, the listed openings first and then the rule's: the names
+// the IFC and every message give them. A rule's window is left out or replaced by its name, and
+// the others keep theirs, so that a name means the same window before and after.
+TEST(Building, OpeningsKeepTheirNamesWhenARulesWindowIsOmittedOrReplaced) {
+  BuildingKeys keys = pavilion_keys();
+  keys.storey = 3525;
+  keys.openings = {{"S", Rect{9400, 0, 1200, 2400}, "door"}};
+  keys.windows = WindowRule{{1200, 1500}, 3000, 900, 900};
+  const Envelope all = envelope_of(keys, test::bricks());
+  ASSERT_EQ(all.opening_names.size(), 41u);
+  EXPECT_EQ(all.opening_names[0], "D-1");
+  EXPECT_EQ(all.opening_names[1], "W-1");
+  EXPECT_EQ(all.opening_names[40], "W-40");
+
+  keys.windows->omit = {"W-3"};
+  keys.openings.push_back({"", Rect{6900, 0, 1200, 2400}, "door", "W-2"});
+  keys.openings.push_back({"", Rect{900, 600, 1200, 1800}, "window", "W-1"});
+  const Envelope changed = envelope_of(keys, test::bricks());
+  ASSERT_EQ(changed.opening_names.size(), 40u);
+  EXPECT_EQ(changed.opening_names[0], "D-1");
+  EXPECT_EQ(changed.opening_names[1], "W-1");  // taller, in W-1's place and name
+  EXPECT_DOUBLE_EQ(changed.openings[1].h, 1800);
+  EXPECT_EQ(changed.opening_names[2], "D-2");  // a door where W-2 was, on its façade
+  EXPECT_EQ(changed.opening_type[2], "door");
+  EXPECT_EQ(changed.opening_facade[2], 0u);
+  EXPECT_EQ(changed.opening_names[3], "W-4");  // W-3 left out; W-4 is still W-4
+  EXPECT_DOUBLE_EQ(changed.openings[3].x, all.openings[4].x);
+  EXPECT_EQ(changed.opening_names[39], "W-40");
+
+  BuildingKeys twice = keys;
+  twice.windows->omit = {"W-2"};
+  EXPECT_NE(refusal(twice).find("names W-2 twice"), std::string::npos) << refusal(twice);
+  BuildingKeys unknown = keys;
+  unknown.windows->omit = {"W-41"};
+  EXPECT_NE(refusal(unknown).find("W-41, which is not a window of the rule: it sets W-1 to W-40"),
+            std::string::npos)
+      << refusal(unknown);
+}
+
 TEST(Building, StoreysOfDifferentHeightsSetEachStoreysWindowsFromItsOwnFloor) {
   BuildingKeys keys = pavilion_keys();
   keys.storeys = {4200, 2850};  // a tall ground floor

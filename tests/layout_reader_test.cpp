@@ -359,4 +359,32 @@ height = 7050
             std::string::npos);
 }
 
+// A rule's windows left out and replaced by name: read into the building; names that are not
+// a rule's window refused saying what is.
+TEST(Recipe, ARulesWindowsOmittedAndReplacedByName) {
+  const std::string recipe =
+      with_layout("kind = \"facade\"\npanel = [215, 65]\njoint = 10\n") + R"([layout.building]
+plan = [[0, 0], [9000, 0], [9000, 6000], [0, 6000]]
+height = 3000
+[[layout.building.openings]]
+replaces = "W-2"
+rect = [3000, 0, 1000, 2100]
+type = "door"
+[layout.building.windows]
+size = [1200, 1500]
+every = 3000
+clear = 900
+sill = 900
+)";
+  const Recipe r = parse_recipe(recipe + "omit = [\"W-1\"]\n", "r.toml");
+  const BuildingKeys& b = *r.layout->own<FacadeKeys>().building;
+  EXPECT_EQ(b.windows->omit, (std::vector<std::string>{"W-1"}));
+  EXPECT_EQ(b.openings.at(0).replaces, "W-2");
+  EXPECT_NE(site_error(recipe + "omit = [\"D-1\"]\n", nullptr).find("[\"W-3\", \"W-17\"]"),
+            std::string::npos);
+  EXPECT_NE(site_error(recipe + "omit = [\"W-50\"]\n", nullptr)
+                .find("W-50, which is not a window of the rule: it sets W-1 to W-"),
+            std::string::npos);
+}
+
 }  // namespace curdle

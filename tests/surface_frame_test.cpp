@@ -54,15 +54,5 @@ TEST(SurfaceFrame, SpansSplitAtFramesAndRoundTheClosingCorner) {
   EXPECT_EQ(frame_at(frames, 1500), &frames[1]);
 }
 
-// Doors and windows are counted apart, in the order given: the names the IFC and every message
-// give them.
-TEST(SurfaceFrame, OpeningsAreNamedAsTheOutputsNameThem) {
-  const std::vector<std::string> types = {"window", "door", "window", "window", "door"};
-  EXPECT_EQ(opening_name(types, 0), "W-1");
-  EXPECT_EQ(opening_name(types, 1), "D-1");
-  EXPECT_EQ(opening_name(types, 3), "W-3");
-  EXPECT_EQ(opening_name(types, 4), "D-2");
-}
-
 }  // namespace
 }  // namespace curdle

@@ -64,6 +64,61 @@ std::vector<BuildingOpening> ruled_windows(const WindowRule& rule,
   return out;
 }
 
+// An opening with the name every output gives it.
+struct NamedOpening {
+  BuildingOpening opening;
+  std::string name;
+  bool gone = false;  // a rule's window omitted, or replaced by a listed opening
+};
+
+// The rule's window called `name` among `all` (from `first` on), or refused under `key`.
+size_t ruled_window(std::vector<NamedOpening>& all, size_t first, const std::string& name,
+                    const char* key) {
+  for (size_t i = first; i < all.size(); ++i)
+    if (all[i].name == name) {
+      if (all[i].gone)
+        refuse(key, fmt::format("names {} twice (omitted or replaced already)", name));
+      return i;
+    }
+  refuse(key,
+         fmt::format("names {}, which is not a window of the rule: it sets {}", name,
+                     first < all.size() ? fmt::format("{} to {}", all[first].name, all.back().name)
+                                        : std::string("none here")));
+}
+
+// Every opening with its name: the listed ones, then the rule's windows, numbered in that order,
+// doors and windows apart ("D-1", "W-12"). Omitting or replacing a rule's window keeps the
+// others' names, so that W-17 is the same window before and after a change of the recipe; a
+// replacement of the same type takes the replaced one's name, a door in a window's place the
+// next door's.
+std::vector<NamedOpening> named_openings(const BuildingKeys& keys,
+                                         const std::vector<SurfaceFrame>& facades) {
+  std::vector<NamedOpening> all;
+  size_t doors = 0, windows = 0;
+  auto next = [&](const std::string& type) {
+    return type == "door" ? fmt::format("D-{}", ++doors) : fmt::format("W-{}", ++windows);
+  };
+  for (const BuildingOpening& o : keys.openings)
+    if (o.replaces.empty()) all.push_back({o, next(o.type)});
+  const size_t first_ruled = all.size();
+  if (keys.windows) {
+    for (BuildingOpening& o : ruled_windows(*keys.windows, facades, keys))
+      all.push_back({std::move(o), next("window")});
+    for (const std::string& name : keys.windows->omit)
+      all[ruled_window(all, first_ruled, name, "windows")].gone = true;
+  }
+  for (const BuildingOpening& o : keys.openings) {
+    if (o.replaces.empty()) continue;
+    const size_t i = ruled_window(all, first_ruled, o.replaces, "openings");
+    NamedOpening in_place{o, o.type == "window" ? all[i].name : next(o.type)};
+    if (in_place.opening.facade.empty()) in_place.opening.facade = all[i].opening.facade;
+    all[i].gone = true;
+    all.insert(all.begin() + static_cast<std::ptrdiff_t>(i) + 1, std::move(in_place));
+  }
+  std::erase_if(all, [](const NamedOpening& o) { return o.gone; });
+  return all;
+}
+
 // The least a joint may close to at the back of a curved wall, mm.
 constexpr double kNarrowestJoint = 3;
 
@@ -160,21 +215,15 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
     env.notes.push_back(f.bent ? bent_units(f, spec)
                                : joint_taper(f, spec, env.depth, keys.plan.empty()));
   }
-  std::vector<BuildingOpening> given = keys.openings;
-  if (keys.windows) {
-    const auto ruled = ruled_windows(*keys.windows, env.facades, keys);
-    given.insert(given.end(), ruled.begin(), ruled.end());
-  }
-  std::vector<std::string> types;
-  for (const BuildingOpening& o : given) types.push_back(o.type);
+  const std::vector<NamedOpening> given = named_openings(keys, env.facades);
   // "W-12 on façade W at x 3375, sill 900": as the IFC, the sheets and the schedules name it.
   auto named = [&](size_t i, const SurfaceFrame* f, const Rect& r) {
-    return fmt::format("{}{} at x {:g}, sill {:g}", opening_name(types, i),
+    return fmt::format("{}{} at x {:g}, sill {:g}", given[i].name,
                        f ? " on façade " + f->name : std::string(), r.x, r.y);
   };
   size_t moved = 0;
   for (size_t i = 0; i < given.size(); ++i) {
-    const BuildingOpening& o = given[i];
+    const BuildingOpening& o = given[i].opening;
     const SurfaceFrame* f = facade_named(env.facades, o.facade);
     if (!f)
       refuse("openings", fmt::format("{} names the façade \"{}\", which the plan does not "
@@ -213,6 +262,7 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
     env.openings.push_back(on_strip);
     env.opening_facade.push_back(static_cast<size_t>(f - env.facades.data()));
     env.opening_type.push_back(o.type);
+    env.opening_names.push_back(given[i].name);
   }
   if (moved)
     env.notes.push_back(

@@ -19,6 +19,7 @@ struct BuildingOpening {
   std::string facade;
   Rect rect;
   std::string type = "window";  // "window" or "door"
+  std::string replaces;         // a window of the rule this one stands in place of ("W-5")
 };
 
 // Windows by rule: `size` every `every` mm along each façade, each storey, clear of the
@@ -27,6 +28,7 @@ struct BuildingOpening {
 struct WindowRule {
   std::array<double, 2> size{0, 0};
   double every = 0, clear = 0, sill = 0;
+  std::vector<std::string> omit;  // the rule's windows left out, by name ("W-3")
 };
 
 struct BuildingKeys {
@@ -62,6 +64,7 @@ struct Envelope {
   std::vector<Rect> openings;          // on the strip, mm
   std::vector<size_t> opening_facade;  // each opening's façade (an index of `facades`)
   std::vector<std::string> opening_type;
+  std::vector<std::string> opening_names;  // "W-12", "D-1": as every output names them
   std::vector<std::string> notes;  // what was moved onto courses, and why
 };
 

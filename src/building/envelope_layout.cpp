@@ -37,6 +37,7 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
                      : bond == CourseBond::flemish ? "Flemish"
                                                    : "";
   layout.opening_kinds = env.opening_type;
+  layout.opening_names = env.opening_names;
   int64_t course = -1, column = 0;
   for (const CourseUnit& u : coursing.units) {
     stop_point();

@@ -352,6 +352,7 @@ struct Layout {
   size_t openings_given = 0;  // the first of `openings` are the surface's own (windows, doors),
                               // the rest excluded zones' rectangles
   std::vector<std::string> opening_kinds;  // a building's: "window" or "door" per own opening
+  std::vector<std::string> opening_names;  // and its name: "W-12", "D-1"
   std::vector<ZoneCount> zones;            // one per [[layout.zones]], in order
   // With layout.outline: the polygon, and the parts of the width x height rectangle outside it
   // (no elements; drawn as paper, not as openings).

@@ -79,11 +79,4 @@ std::vector<FramedSpan> framed_spans(const std::vector<SurfaceFrame>& frames, do
   return out;
 }
 
-std::string opening_name(const std::vector<std::string>& types, size_t index) {
-  const bool door = index < types.size() && types[index] == "door";
-  size_t n = 0;
-  for (size_t i = 0; i <= index && i < types.size(); ++i) n += (types[i] == "door") == door;
-  return fmt::format("{}-{}", door ? "D" : "W", std::max<size_t>(n, 1));
-}
-
 }  // namespace curdle

@@ -46,10 +46,6 @@ std::array<double, 2> frame_direction(const SurfaceFrame& frame, double u);
 // for none.
 const SurfaceFrame* frame_at(const std::vector<SurfaceFrame>& frames, double u);
 
-// An opening's name in every output and message: "D-1" for the first door, "W-12" for the
-// twelfth window, counted in the order the openings are given (`types`: "door", "window").
-std::string opening_name(const std::vector<std::string>& types, size_t index);
-
 // The strip position u taken round a closed strip of `length` (a unit at the closing corner
 // runs past its end), into [0, length).
 double wrap_along(double u, double length);

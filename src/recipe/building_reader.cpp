@@ -1,7 +1,7 @@
 // [layout.building]: plan = [[x, y], [x, y, bulge], ...] (closed, a building) or path = [...]
 // (open, a free-standing wall), height, storey, base, depth, start, coursed_openings,
-// [[layout.building.openings]] (facade, rect, type) and [layout.building.windows] (size,
-// every, clear, sill).
+// [[layout.building.openings]] (facade, rect, type, replaces) and [layout.building.windows]
+// (size, every, clear, sill, omit).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -29,14 +29,20 @@ Contour read_path(TableReader& r) {
 
 BuildingOpening read_opening(TableReader& o, size_t index) {
   BuildingOpening b;
+  if (const auto name = read_string(o, "replaces", "a window of the rule by name (\"W-5\")")) {
+    if (name->size() < 3 || name->rfind("W-", 0) != 0)
+      o.fail("replaces", "must name a window of the rule as the outputs do: \"W-5\"");
+    b.replaces = *name;
+  }
   const toml::node* f = o.get("facade");
   if (const auto i = f ? f->value<int64_t>() : std::nullopt; i && *i >= 0)
     b.facade = std::to_string(*i);
   else if (const auto s = f ? f->value<std::string>() : std::nullopt; s && !s->empty())
     b.facade = *s;
-  else
+  else if (b.replaces.empty() || f)
     o.fail("facade", fmt::format("opening {} needs facade = its façade's index (the plan edge "
-                                 "from that vertex) or its name (\"S\", \"E2\")",
+                                 "from that vertex) or its name (\"S\", \"E2\"); one that "
+                                 "replaces a window may leave it out (the window's façade)",
                                  index));
   const toml::array* a = o.get("rect") ? o.get("rect")->as_array() : nullptr;
   std::array<double, 4> v{};
@@ -53,7 +59,7 @@ BuildingOpening read_opening(TableReader& o, size_t index) {
   b.rect = Rect{v[0], v[1], v[2], v[3]};
   b.type = read_string(o, "type", "\"window\" or \"door\"").value_or("window");
   if (b.type != "window" && b.type != "door") o.fail("type", "must be \"window\" or \"door\"");
-  o.report_unused("is not a key of an opening (facade, rect, type)");
+  o.report_unused("is not a key of an opening (facade, rect, type, replaces)");
   return b;
 }
 
@@ -66,7 +72,18 @@ WindowRule read_windows(TableReader& w) {
     w.fail("every", "must be at least the window's width: windows stand apart");
   rule.clear = read_mm(w, "clear", 0, 0);
   rule.sill = read_mm(w, "sill", 0, 0);
-  w.report_unused("is not a key of layout.building.windows (size, every, clear, sill)");
+  if (const toml::node* n = w.get("omit")) {
+    const toml::array* a = n->as_array();
+    const char* allowed = "must be a list of the rule's windows by name: [\"W-3\", \"W-17\"]";
+    if (!a || a->size() > 10000) w.fail("omit", allowed);
+    for (const toml::node& item : *a) {
+      const auto name = item.value<std::string>();
+      if (!name || name->size() < 3 || name->size() > 32 || name->rfind("W-", 0) != 0)
+        w.fail("omit", allowed);
+      rule.omit.push_back(*name);
+    }
+  }
+  w.report_unused("is not a key of layout.building.windows (size, every, clear, sill, omit)");
   return rule;
 }
 
@@ -185,7 +202,7 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
       const toml::table* o = a->get(i)->as_table();
       const std::string where = r.key_path("openings") + "." + std::to_string(i);
       if (!o) r.fail_node(*a->get(i), where, "must be a table: facade, rect, type");
-      TableReader ro(*o, where, r.source(), {"facade", "rect", "type"});
+      TableReader ro(*o, where, r.source(), {"facade", "rect", "type", "replaces"});
       b.openings.push_back(read_opening(ro, i));
     }
   }
@@ -195,8 +212,9 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
   }
   if (r.get("windows")) {
     const toml::table* w = read_table(r, "windows");
-    if (!w) r.fail("windows", "must be a table: size, every, clear, sill");
-    TableReader rw(*w, r.key_path("windows"), r.source(), {"size", "every", "clear", "sill"});
+    if (!w) r.fail("windows", "must be a table: size, every, clear, sill, omit");
+    TableReader rw(*w, r.key_path("windows"), r.source(),
+                   {"size", "every", "clear", "sill", "omit"});
     b.windows = read_windows(rw);
   }
   r.report_unused("is not a key of layout.building");
