@@ -130,13 +130,48 @@ function setsOf(model, names) {
 // Which spatial element holds each element: id -> IFC type of its container.
 function containers(model) {
   const out = new Map();
+  for (const [id, holder] of holders(model)) out.set(id, api.GetLineType(model, holder));
+  return out;
+}
+
+// Which spatial element holds each element: id -> the container's id.
+function holders(model) {
+  const out = new Map();
   const rels = api.GetLineIDsWithType(model, W.IFCRELCONTAINEDINSPATIALSTRUCTURE);
   for (let i = 0; i < rels.size(); ++i) {
     const rel = api.GetLine(model, rels.get(i));
-    const type = api.GetLineType(model, rel.RelatingStructure.value);
-    for (const object of rel.RelatedElements) out.set(object.value, type);
+    for (const object of rel.RelatedElements) out.set(object.value, rel.RelatingStructure.value);
   }
   return out;
+}
+
+// Each window and door in the storey its base stands in: the highest whose elevation (IFC z,
+// mm) is at or below the bottom of its mesh (web-ifc's Y, metres). Returns how many stand in
+// each storey, by name.
+function storeyProblems(model, problems) {
+  const storeys = [];
+  const ids = api.GetLineIDsWithType(model, W.IFCBUILDINGSTOREY);
+  for (let i = 0; i < ids.size(); ++i) {
+    const s = api.GetLine(model, ids.get(i));
+    storeys.push({ id: ids.get(i), name: s.Name?.value, elevation: Number(s.Elevation?.value) / 1000, held: 0 });
+  }
+  storeys.sort((a, b) => a.elevation - b.elevation);
+  const held = holders(model);
+  const openings = [];
+  for (const type of [W.IFCWINDOW, W.IFCDOOR]) {
+    const found = api.GetLineIDsWithType(model, type);
+    for (let i = 0; i < found.size(); ++i) openings.push(found.get(i));
+  }
+  const meshes = extents(model, openings);
+  for (const id of openings) {
+    const base = meshes.get(id)?.[1];
+    const want = storeys.filter((s) => s.elevation <= base + 1e-6).pop();
+    const got = storeys.find((s) => s.id === held.get(id));
+    if (!want || got !== want)
+      problems.push(`${api.GetLine(model, id).Name?.value}: base at ${base} m in ${got?.name ?? 'no storey'}, not ${want?.name}`);
+    else ++got.held;
+  }
+  return storeys.map((s) => `${s.name} ${s.held}`).join(', ');
 }
 
 // A building's parts: each unit's wall (by the wall's Tag, its façade's name), which nests it.
@@ -173,7 +208,7 @@ function buildingProblems(model, dir, problems) {
     for (let i = 0; i < ids.size(); ++i)
       if (heldBy.get(ids.get(i)) !== W.IFCBUILDINGSTOREY) problems.push(`${api.GetLine(model, ids.get(i)).Name?.value}: in no storey`);
   }
-  return { walls: facades.length, openings };
+  return { walls: facades.length, openings, storeys: storeyProblems(model, problems) };
 }
 
 // The area of a plate's faces that look along `normal` (metres², web-ifc's frame): the sheet
@@ -309,7 +344,7 @@ function check(dir) {
     console.log(`${name}: ${problems.length} problems`);
     for (const p of problems.slice(0, 10)) console.log('  ' + p);
   } else {
-    console.log(`${name}: ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)${built ? `, ${built.walls} walls with their ${built.openings} openings filled` : ''}${voids ? `, ${voids} voids` : ''}${plates.size() ? `, ${plates.size()} sheets as punched` : ''}${arcs ? `, ${arcs} arcs set out` : ''}; opened and meshed in ${(meshed / 1000).toFixed(2)} s`);
+    console.log(`${name}: ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)${built ? `, ${built.walls} walls with their ${built.openings} openings filled (windows and doors by storey: ${built.storeys})` : ''}${voids ? `, ${voids} voids` : ''}${plates.size() ? `, ${plates.size()} sheets as punched` : ''}${arcs ? `, ${arcs} arcs set out` : ''}; opened and meshed in ${(meshed / 1000).toFixed(2)} s`);
   }
   slowest = Math.max(slowest, meshed / 1000);
   return problems.length === 0;

@@ -3,7 +3,8 @@
 // one element per schedule row, named and tagged by its ID, with its value, lot and material;
 // its common property set's Reference and its base quantities' area as the schedule's; its
 // mesh's extent equal to the row's box within 0.01 mm (openings are outlines, not bodies: the
-// sheets' meshes carry their holes). And a schema check of every entity in the file against
+// sheets' meshes carry their holes); a building's windows and doors each in the storey its base
+// stands in, as IFClite's spatial hierarchy has it. And a schema check of every entity in the file against
 // IFC4's EXPRESS schema as IFClite's registry holds it: a known, instantiable entity, with as
 // many attributes as the schema gives it, none left out that is not optional, an aggregate
 // where the schema has one, an enumeration's value where it has one, a reference where it
@@ -124,6 +125,25 @@ function schemaProblems(text) {
   return { problems, count };
 }
 
+// Each window and door in the storey its base stands in, as IFClite's spatial hierarchy has it:
+// the highest storey whose elevation (metres) is at or below the bottom of its mesh (Y up).
+// Returns how many stand in each storey, by name.
+function storeyProblems(store, meshes, problems) {
+  const h = store.spatialHierarchy;
+  const storeys = [...h.storeyElevations].map(([id, elevation]) => ({ id, elevation, held: 0,
+    name: Lite.extractEntityAttributesOnDemand(store, id).name })).sort((a, b) => a.elevation - b.elevation);
+  for (const type of ['IFCWINDOW', 'IFCDOOR'])
+    for (const id of store.entityIndex.byType.get(type) ?? []) {
+      const base = meshes.get(id)?.[1];
+      const want = storeys.filter((s) => s.elevation <= base + 1e-6).pop();
+      const got = storeys.find((s) => s.id === h.elementToStorey.get(id));
+      if (!want || got !== want)
+        problems.push(`${Lite.extractEntityAttributesOnDemand(store, id).name}: base at ${base} m in ${got?.name ?? 'no storey'}, not ${want?.name}`);
+      else ++got.held;
+    }
+  return storeys.map((s) => `${s.name} ${s.held}`).join(', ');
+}
+
 async function check(dir) {
   const rows = csvRows(fs.readFileSync(path.join(dir, 'schedule.csv'), 'utf8'));
   const bytes = new Uint8Array(fs.readFileSync(path.join(dir, 'layout.ifc')));
@@ -177,6 +197,7 @@ async function check(dir) {
     worst = Math.max(worst, miss);
     if (miss > kTolerance) problems.push(`${row.element_id}: extent off by ${(miss * 1000).toFixed(4)} mm`);
   }
+  const storeys = building ? storeyProblems(store, meshes, problems) : '';
   for (const plate of store.entityIndex.byType.get('IFCPLATE') ?? [])
     if (!meshes.has(plate)) problems.push(`sheet #${plate}: no mesh`);
   const name = path.basename(dir);
@@ -184,7 +205,7 @@ async function check(dir) {
     console.log(`${name}: ${problems.length} problems`);
     for (const p of problems.slice(0, 10)) console.log('  ' + p);
   } else {
-    console.log(`${name}: ${count} entities as the schema has them; ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)`);
+    console.log(`${name}: ${count} entities as the schema has them; ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)${storeys ? `; windows and doors by storey: ${storeys}` : ''}`);
   }
   return problems.length === 0;
 }
