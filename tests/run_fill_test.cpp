@@ -111,11 +111,15 @@ TEST(RunFill, WholeUnitsFromTheEndsWithTheCutInTheMiddle) {
   EXPECT_NEAR(sliver.units[0].to, 50, 1e-9);
 }
 
-// A run a fraction of a millimetre short of whole pitches (a curved wall's chords) or up to
-// 2 mm off is laid in whole units, its joints taking the difference up: no closer. 5 mm off is
-// no longer a joint's play: a closer.
-TEST(RunFill, ARunWithinTheJointToleranceOfWholeUnitsHasNoCloser) {
-  for (const double off : {-0.027, 0.027, -1.9, 1.9}) {
+// A run a fraction of a millimetre short of whole pitches (a curved wall's chords), or off by
+// up to a joint over 80 units (a wall set out a joint off brick sizes) is laid in whole units,
+// its joints taking the difference up: no closer. More than a joint over the run, or more than
+// a millimetre a joint over three units, is no longer the joints' play: a closer.
+TEST(RunFill, ARunWithinTheJointsPlayOfWholeUnitsHasNoCloser) {
+  EXPECT_DOUBLE_EQ(joint_play(79, 10), 10);
+  EXPECT_DOUBLE_EQ(joint_play(4, 10), 4);
+  EXPECT_DOUBLE_EQ(joint_play(1, 10), 2);
+  for (const double off : {-0.027, 0.027, -1.9, 1.9, -9.973, 9.9}) {
     Filled f;
     const double run = 80 * (kL + kJ) - kJ + off;
     fill_whole_from_ends(f.fill(), 0, run);
@@ -125,10 +129,13 @@ TEST(RunFill, ARunWithinTheJointToleranceOfWholeUnitsHasNoCloser) {
     EXPECT_NEAR(f.units.back().to, run, 1e-9) << off;
     EXPECT_NEAR(f.units[1].from - f.units[0].to, kJ + off / 79, 1e-9) << off;
   }
-  Filled closer;
-  fill_whole_from_ends(closer.fill(), 0, 80 * (kL + kJ) - kJ - 5);
-  EXPECT_TRUE(std::any_of(closer.units.begin(), closer.units.end(),
-                          [](const CourseUnit& u) { return u.role == UnitRole::closer; }));
+  for (const auto& [units, off] : {std::pair{80, -12.0}, {80, 12.0}, {3, 2.5}, {3, -2.5}}) {
+    Filled closer;
+    fill_whole_from_ends(closer.fill(), 0, units * (kL + kJ) - kJ + off);
+    EXPECT_TRUE(std::any_of(closer.units.begin(), closer.units.end(),
+                            [](const CourseUnit& u) { return u.role == UnitRole::closer; }))
+        << units << " units " << off;
+  }
   // The gap left in a bond's middle: a unit's width within 2 mm is a whole unit.
   Filled gap;
   const BondOrder none{{}, {BondPiece{1000, UnitRole::stretcher, 0}}};

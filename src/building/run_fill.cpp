@@ -42,9 +42,10 @@ void cut_gap(const RunFill& f, double from, double to, double depth = 0) {
 void fill_whole_from_ends(const RunFill& f, double s, double e) {
   const double room = e - s, l = f.l, j = f.j;
   if (room < kEps) return;
-  // Within the joint tolerance of whole units: those units, the difference in their joints.
+  // Within what its joints take up of whole units: those units, the difference in their joints.
   const double nearest = std::round((room + j) / (l + j));
-  if (nearest >= 1 && std::fabs(room + j - nearest * (l + j)) <= kJointTolerance) {
+  if (nearest >= 1 &&
+      std::fabs(room + j - nearest * (l + j)) <= joint_play(static_cast<int64_t>(nearest) - 1, j)) {
     const auto n = static_cast<int64_t>(nearest);
     const double joint = n > 1 ? (room - nearest * l) / (nearest - 1) : 0;
     double at = n > 1 ? s : s + (room - l) / 2;

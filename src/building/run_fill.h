@@ -6,12 +6,13 @@
 // - from each end in the bond's own order of headers, stretchers and queen closers, the cut in
 //   the middle (English and Flemish bond).
 // No cut is narrower than `min_cut` where any arrangement avoids it: a piece that would be is
-// taken with its neighbour and the two laid as two halves. A run (or the gap left in its
-// middle) within kJointTolerance of whole units takes the difference up in its joints, as a
-// bricklayer does, and has no closer: a curved wall's chords leave each course a fraction of a
-// millimetre short of whole pitches.
+// taken with its neighbour and the two laid as two halves. A run off whole units by no more
+// than its joints can take up (joint_play) is laid whole, as a bricklayer gauges the perpends,
+// with no closer: a curved wall's chords leave each course a fraction of a millimetre short of
+// whole pitches, and a wall set out a joint off brick sizes is a joint long over its run.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -36,8 +37,17 @@ struct BondOrder {
 // What every fill needs: the course, the unit's length `l`, the joint `j` and the narrowest
 // cut; `sliver` is set where a run is shorter than the narrowest cut and laid as one piece.
 // How far a run may be from whole units and be laid whole, its joints a little wider or
-// narrower, mm over the run (a 10 mm joint is laid within about ±2 mm).
+// narrower: each joint by at most kJointPlay (a 10 mm perpend laid 9 to 11 mm), the run by at
+// most a joint's width, so that its perpends stay within half a joint of the half-lap over the
+// course below; and a run of one or two joints, or the gap left in a bond's middle between two,
+// by kJointTolerance.
 inline constexpr double kJointTolerance = 2.0;
+inline constexpr double kJointPlay = 1.0;
+
+// How much a run of `joints` joints of width `joint` may take up, mm.
+inline double joint_play(int64_t joints, double joint) {
+  return std::max(kJointTolerance, std::min(static_cast<double>(joints) * kJointPlay, joint));
+}
 
 struct RunFill {
   int64_t course = 0;
