@@ -5,8 +5,10 @@
 
 #include <fstream>
 #include <map>
+#include <numbers>
 
 #include "kinds/facade.h"
+#include "layout/contour.h"
 #include "recipe_support.h"
 
 namespace curdle {
@@ -385,6 +387,44 @@ sill = 900
   EXPECT_NE(site_error(recipe + "omit = [\"W-50\"]\n", nullptr)
                 .find("W-50, which is not a window of the rule: it sets W-1 to W-"),
             std::string::npos);
+}
+
+// An arc by its centre after the vertex it starts from, as a setter-out gives it: the sweep in
+// degrees or the length along the arc, positive anticlockwise; the same bulge and end as the
+// bulge's form. A radius that is not the distance to the centre, both sweep and length, an
+// arc first and an unknown key are refused saying what is allowed.
+TEST(Recipe, AnArcByItsCentreRadiusAndSweepOrLength) {
+  const std::string bricks = with_layout("kind = \"facade\"\npanel = [215, 65]\njoint = 10\n");
+  auto wall = [&](const std::string& path) {
+    return bricks + "[layout.building]\nheight = 2400\npath = " + path + "\n";
+  };
+  const Recipe swept =
+      parse_recipe(wall("[[0, 0], { centre = [0, 12000], sweep = 90 }]"), "r.toml");
+  const Contour& p = swept.layout->own<FacadeKeys>().building->path;
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_NEAR(p[0].bulge, std::tan(std::numbers::pi / 8), 1e-12);
+  EXPECT_NEAR(p[1].x, 12000, 1e-9);
+  EXPECT_NEAR(p[1].y, 12000, 1e-9);
+  const Recipe along = parse_recipe(
+      wall("[[0, 0], { centre = [0, 12000], length = 18000, radius = 12000 }]"), "r.toml");
+  const Contour& q = along.layout->own<FacadeKeys>().building->path;
+  EXPECT_NEAR(q[0].bulge, std::tan(1.5 / 4), 1e-12);
+  EXPECT_NEAR(arc_between(q[0], q[1]).radius, 12000, 1e-6);
+  const Recipe clockwise =
+      parse_recipe(wall("[[0, 0], { centre = [0, -5000], sweep = -30 }, [9000, 0]]"), "r.toml");
+  EXPECT_LT(clockwise.layout->own<FacadeKeys>().building->path[0].bulge, 0);
+  EXPECT_EQ(clockwise.layout->own<FacadeKeys>().building->path.size(), 3u);
+
+  EXPECT_NE(
+      site_error(wall("[[0, 0], { centre = [0, 12000], sweep = 90, radius = 11000 }]"), nullptr)
+          .find("lies 12000.0 mm from that centre"),
+      std::string::npos);
+  for (const char* bad : {"[[0, 0], { centre = [0, 12000], sweep = 90, length = 100 }]",
+                          "[{ centre = [0, 12000], sweep = 90 }, [5, 5]]",
+                          "[[0, 0], { centre = [0, 12000], sweep = 360 }]",
+                          "[[0, 0], { centre = [0, 12000], turn = 90 }]",
+                          "[[0, 0], { centre = [0, nan], sweep = 90 }]"})
+    EXPECT_NE(site_error(wall(bad), nullptr).find("centre = [x, y]"), std::string::npos) << bad;
 }
 
 }  // namespace curdle

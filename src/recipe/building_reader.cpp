@@ -23,7 +23,8 @@ Contour read_path(TableReader& r) {
       r, "path",
       "must be 2 to 10000 points [[x, y], ...] in millimetres along the wall's outer face, "
       "within 10 km; [x, y, bulge] makes the edge to the next point an arc (bulge = tan(angle / "
-      "4), positive anticlockwise)",
+      "4), positive anticlockwise), or an arc after a point by its centre: { centre = [x, y], "
+      "sweep = degrees } or { centre = [x, y], length = mm along it }, and radius = mm as a check",
       2, kMostPlanVertices, 1e7);
 }
 

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "curdle/text.h"
 #include "layout/contour.h"
@@ -76,6 +77,51 @@ Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size,
   return z;
 }
 
+// An arc given by its centre, from the vertex before it: { centre = [x, y], sweep = degrees }
+// or { centre = [x, y], length = mm along it }, positive anticlockwise, and `radius` if given
+// as a check. Sets `from`'s bulge and returns the arc's end, the next vertex.
+ContourVertex read_arc_to(TableReader& r, const std::string& key, const toml::table& t,
+                          ContourVertex& from, double reach) {
+  const std::string allowed =
+      "an arc by its centre follows the vertex it starts from: { centre = [x, y], sweep = "
+      "degrees } or { centre = [x, y], length = mm along the arc }, positive anticlockwise, "
+      "under a whole turn; radius = mm as a check of the distance from that vertex to the centre";
+  for (const auto& [name, value] : t)
+    if (name != "centre" && name != "sweep" && name != "length" && name != "radius")
+      r.fail(key, fmt::format("has an arc with the key '{}': {}", name.str(), allowed));
+  const toml::array* c = t.get("centre") ? t.get("centre")->as_array() : nullptr;
+  const auto cx = c && c->size() == 2 ? finite_number(c->get(0)) : std::nullopt;
+  const auto cy = c && c->size() == 2 ? finite_number(c->get(1)) : std::nullopt;
+  const auto sweep = finite_number(t.get("sweep")), length = finite_number(t.get("length"));
+  if (!cx || !cy || std::fabs(*cx) > reach || std::fabs(*cy) > reach ||
+      (t.get("sweep") != nullptr) == (t.get("length") != nullptr) || (t.get("sweep") && !sweep) ||
+      (t.get("length") && !length))
+    r.fail(key, allowed);
+  const double radius = std::hypot(from.x - *cx, from.y - *cy);
+  if (radius < 1) r.fail(key, "has an arc whose centre is its start: " + allowed);
+  if (t.get("radius")) {
+    const auto given = finite_number(t.get("radius"));
+    if (!given || std::fabs(*given - radius) > 0.5)
+      r.fail(key, fmt::format("has an arc of radius {} round [{:g}, {:g}], but its start [{:g}, "
+                              "{:g}] lies {:.1f} mm from that centre",
+                              given ? fmt::format("{:g}", *given) : std::string("(not a number)"),
+                              *cx, *cy, from.x, from.y, radius));
+  }
+  const double turn = sweep ? *sweep * std::numbers::pi / 180 : *length / radius;
+  if (std::fabs(turn) < 1e-9 || std::fabs(turn) > 359 * std::numbers::pi / 180)
+    r.fail(key, fmt::format("has an arc of {:.2f}° round [{:g}, {:g}]: {}",
+                            turn * 180 / std::numbers::pi, *cx, *cy, allowed));
+  const double start = std::atan2(from.y - *cy, from.x - *cx);
+  from.bulge = bulge_of_sweep(turn);
+  const ContourVertex to{*cx + radius * std::cos(start + turn),
+                         *cy + radius * std::sin(start + turn), 0};
+  if (std::fabs(to.x) > reach || std::fabs(to.y) > reach)
+    r.fail(key, fmt::format("has an arc round [{:g}, {:g}] that ends at [{:.0f}, {:.0f}], beyond "
+                            "{:g} mm of the origin",
+                            *cx, *cy, to.x, to.y, reach));
+  return to;
+}
+
 }  // namespace
 
 Contour read_vertices(TableReader& r, const std::string& key, const std::string& allowed,
@@ -88,6 +134,14 @@ Contour read_vertices(TableReader& r, const std::string& key, const std::string&
   std::optional<double> third;
   bool thirds_alike = true, bulge_beyond = false;
   for (const toml::node& item : *a) {
+    if (const toml::table* arc = item.as_table()) {
+      if (contour.empty())
+        r.fail(key,
+               "starts with an arc: its first item is the vertex [x, y] an arc by its centre "
+               "{ centre = [x, y], sweep = degrees } starts from");
+      contour.push_back(read_arc_to(r, key, *arc, contour.back(), reach));
+      continue;
+    }
     const toml::array* p = item.as_array();
     const bool sized = p && (p->size() == 2 || p->size() == 3);
     const auto x = sized ? finite_number(p->get(0)) : std::nullopt;
@@ -98,6 +152,12 @@ Contour read_vertices(TableReader& r, const std::string& key, const std::string&
     if (!x || !y || !bulge || std::fabs(*x) > reach || std::fabs(*y) > reach) r.fail(key, allowed);
     bulge_beyond = bulge_beyond || std::fabs(*bulge) > 1000;
     contour.push_back({*x, *y, tidy_bulge(*bulge)});
+  }
+  // A closing arc given by its centre ends on the first vertex, to rounding: the same vertex.
+  if (contour.size() > 2 && std::hypot(contour.back().x - contour.front().x,
+                                       contour.back().y - contour.front().y) < 0.01) {
+    contour.back().x = contour.front().x;
+    contour.back().y = contour.front().y;
   }
   const bool three_d = thirds_alike && third && std::fabs(*third) > 1 && contour.size() >= 3;
   if (bulge_beyond && !three_d) r.fail(key, allowed);
@@ -115,7 +175,9 @@ ReadContour read_contour(TableReader& r, const std::string& key, double toleranc
   const std::string allowed =
       "must be at least 3 corners [[x, y], ...] in millimetres (at most 10000), a simple polygon "
       "whose edges do not cross; [x, y, bulge] makes the edge to the next corner an arc (bulge "
-      "= tan(angle / 4), positive counter-clockwise, as CAD's polylines; at most 1000 in size)";
+      "= tan(angle / 4), positive counter-clockwise, as CAD's polylines; at most 1000 in size), "
+      "or an arc after a corner by its centre, { centre = [x, y], sweep = degrees } or { centre "
+      "= [x, y], length = mm }";
   Contour contour = read_vertices(r, key, allowed, 2, kMostVertices, 1e300);
   if (contour.size() > 2 && contour.front().x == contour.back().x &&
       contour.front().y == contour.back().y)
