@@ -15,9 +15,11 @@
 #include "export/installer_drawing.h"
 #include "export/layout_png.h"
 #include "export/page_buffer.h"
+#include "export/setting_out_plan.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
 #include "layout/arc_setting_out.h"
+#include "layout/curved_facade.h"
 #include "layout/installer_sheets.h"
 #include "layout/laying_pattern.h"
 #include "layout/legend.h"
@@ -108,9 +110,16 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   start_corner(cr, layout, v);
   draw_facades(cr, layout, v);
   setting_out(cr, layout, v);
+  // A curved wall's setting-out plan where the sheet has more room, above the elevation or
+  // below it (clear of its setting-out marks and caption, and of the scale bar).
+  const double strip = h - kMargin - kTitleStrip;
+  const double above = v.top - kMargin - 12, below_y = v.top + layout.height / s.scale + 18;
+  const double below = strip - 12 - below_y;
+  if (std::max(above, below) > 30)
+    draw_setting_out_plan(cr, layout, kLeftMargin + 2, above >= below ? kMargin + 3 : below_y,
+                          area[0] - 4, std::max(above, below));
 
   // Legend: up to 8 rows a column, 62 mm a column, from the strip's left.
-  const double strip = h - kMargin - kTitleStrip;
   size_t shown = 0;
   const double room = w - kMargin - title_width(w) - kLeftMargin - 6;
   const size_t columns = room >= 200 ? 2 : 1;
@@ -297,7 +306,9 @@ std::vector<std::string> sheet_setting_out(const Layout& layout, const Rect& win
                   on.y, on.top())};
   std::vector<std::pair<std::string, Rect>> shown;
   for (size_t i = 0; i < layout.openings_given; ++i)
-    shown.emplace_back(fmt::format("opening {}", i + 1), layout.openings[i]);
+    shown.emplace_back(i < layout.opening_names.size() ? layout.opening_names[i]
+                                                       : fmt::format("opening {}", i + 1),
+                       layout.openings[i]);
   for (const ZoneCount& z : layout.zones) {
     if (z.polygon.empty() || !z.contour.empty()) continue;  // arcs: by centre and radius, below
     Rect r{z.polygon[0][0], z.polygon[0][1], 0, 0};
@@ -420,6 +431,10 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
     info.push_back("courses left, columns below; gauge rod in mm right");
   else if (plan.coursed)
     info.push_back(fmt::format("laid {}: each unit as drawn", pattern_name(layout.pattern)));
+  // A curved façade on the sheet: its radius, centre, each unit's chord and the joints' taper.
+  for (const CurvedFacade& c : curved_facades(layout))
+    if (c.frame->start < sheet.window.right() && c.frame->start + c.frame->length > sheet.window.x)
+      info.insert(info.end(), c.brief.begin(), c.brief.end());
   for (std::string& line : sheet_setting_out(layout, sheet.window)) info.push_back(std::move(line));
   if (plan.unplaced)
     info.push_back(fmt::format("{} labels found no room: use a larger sheet", plan.unplaced));

@@ -4,7 +4,9 @@ schedule.csv) is named on that page, with the key's heading. Each key line says 
 material the sheet holds ("Red facing brick: 409"): over the set, they add up to schedule.csv's
 count of each material, so that a coursed set (no IDs) is checked too, and a coursed page names
 every course it says it holds ("courses 51 to 106"). Sheet 1 names every zone of the recipe
-([[layout.zones]]), drawn where it lies.
+([[layout.zones]]), drawn where it lies. A curved wall's sheet 1 sets its arc out (radius,
+centre, the offsets from its chord, the joints' taper), and each of its sheets states the radius,
+the centre, a unit's chord and the taper.
 
 Usage: drawing_keys.py CURDLE SOURCE_DIR PATTERN...
 """
@@ -39,6 +41,15 @@ for pattern in patterns:
         for zone in zones:
             if zone["name"] not in first:
                 failures.append(f"{pattern} sheet 1: zone {zone['name']} is not drawn")
+        building = tomllib.loads((source / pattern).read_text()).get("layout", {}).get(
+            "building", {})
+        curved = any(isinstance(v, dict) or (len(v) == 3 and v[2] != 0)
+                     for v in building.get("plan", []) + building.get("path", []))
+        flat_first = " ".join(first.split())
+        for said in ["setting-out plan of the curved façades", "radius", "centre (",
+                     "offsets square to the chord", "mm at the back"] if curved else []:
+            if said not in flat_first:
+                failures.append(f"{pattern} sheet 1: a curved wall, but no \"{said}\"")
         checked = 0
         for page in range(2, pages + 1):
             words = subprocess.run(["pdftotext", "-f", str(page), "-l", str(page), "-layout",
@@ -48,6 +59,10 @@ for pattern in patterns:
                 failures.append(f"{pattern} sheet {page}: no key")
                 continue
             flat = " ".join(words.split())
+            if curved and not re.search(r"radius \d+ mm round centre \(.*chord \d+ mm a unit; "
+                                        r"joints \d+ mm face, [\d.]+ mm back", flat):
+                failures.append(f"{pattern} sheet {page}: a curved wall, its radius, centre, "
+                                "chord and taper not stated")
             on_sheet = {material[w] for w in words.split() if w in material}
             for m in on_sheet:
                 if m not in flat:
@@ -67,7 +82,8 @@ for pattern in patterns:
             failures.append(f"{pattern}: the keys count {dict(keyed)}, the schedule "
                             f"{dict(ordered)}")
         print(f"{pattern}: {pages - 1} installer's sheets, {checked} materials found in their keys,"
-              f" {sum(keyed.values())} pieces counted in them, {len(zones)} zones named on sheet 1")
+              f" {sum(keyed.values())} pieces counted in them, {len(zones)} zones named on sheet 1"
+              + (", the arc set out" if curved else ""))
 for f in failures[:20]:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)
