@@ -65,7 +65,7 @@ struct Envelope {
   std::vector<size_t> opening_facade;  // each opening's façade (an index of `facades`)
   std::vector<std::string> opening_type;
   std::vector<std::string> opening_names;  // "W-12", "D-1": as every output names them
-  std::vector<std::string> notes;  // what was moved onto courses, and why
+  std::vector<std::string> notes;          // what was moved onto courses, and why
 };
 
 // The envelope of `keys` for units of the spec's size and joint. Throws InputError (keys under
