@@ -32,11 +32,27 @@ std::string element_type_of(const Layout& layout, const Element& e) {
       return fmt::format("{}, special for a {:.1f}° {} corner", layout.element_type, angle,
                          turn > 0 ? "outer" : "inner");
   }
-  // A unit bent to a curved façade is ordered as one, by its developed width.
+  // A unit bent to a curved façade is ordered as one, by its developed width; headers, snap
+  // headers, queen closers, cuts and half bats each on lines of their own.
+  std::string type = layout.element_type;
   if (const SurfaceFrame* f = layout.frames.empty() ? nullptr : framed_facade(layout, e);
       f && f->bent)
-    return fmt::format("{}, bent to a {:.0f} mm radius", layout.element_type, frame_radius(*f));
-  return layout.element_type;
+    type += fmt::format(", bent to a {:.0f} mm radius", frame_radius(*f));
+  switch (e.part) {
+    case UnitPart::header:
+      return type + ", header";
+    case UnitPart::snap_header:
+      return type + ", snap header (a half)";
+    case UnitPart::queen_closer:
+      return type + ", queen closer";
+    case UnitPart::cut:
+      return type + ", cut to fit";
+    case UnitPart::half_bat:
+      return type + ", half bat (stopped end)";
+    case UnitPart::whole:
+      break;
+  }
+  return type;
 }
 
 // What an order line is bought as: the stock size, or the opening's diameter.
@@ -232,6 +248,19 @@ OrderKey order_key(const Layout& layout, const Element& e) {
           hex_colour(piece_colour(layout, e)), stock_size_of(layout, e)};
 }
 
+// A one-brick wall's backing unit behind a face unit that does not run through: the face
+// unit's size, in the backing's material, unseen (no colour or value).
+void add_backing(std::map<OrderKey, OrderLine>& lines, const Layout& layout, const Element& e) {
+  if (!layout.backed || e.form != ElementForm::piece || e.depth >= layout.module_w - 1e-6) return;
+  OrderLine& l = lines[{layout.element_type + ", backing", layout.backing_material, "",
+                        stock_size_of(layout, e)}];
+  l.materials.insert(layout.backing_material);
+  ++l.count;
+  (e.cut ? l.cut : l.whole) += 1;
+  l.laid_area += std::round(e.area());
+  l.stock_area += stock_area(e);
+}
+
 void add_to(OrderLine& l, const Layout& layout, const Element& e) {
   l.materials.insert(piece_material(layout, e));
   l.colours.insert(hex_colour(piece_colour(layout, e)));
@@ -273,7 +302,10 @@ std::string order_fields(const OrderKey& key, const OrderLine& l) {
 void write_quantities_csv(std::ostream& out, const Layout& layout) {
   const OrderingKeys& spec = layout.ordering;
   std::map<OrderKey, OrderLine> lines;
-  for (const Element& e : layout.elements) add_to(lines[order_key(layout, e)], layout, e);
+  for (const Element& e : layout.elements) {
+    add_to(lines[order_key(layout, e)], layout, e);
+    add_backing(lines, layout, e);
+  }
   out << kUtf8Mark
       << "element_type,material,colour,size_mm,values,count,whole,cut,laid_area_m2,"
          "stock_area_m2,spare,count_with_spare,area_to_buy_m2,pack_size,packs\r\n";
@@ -289,10 +321,13 @@ void write_quantities_csv(std::ostream& out, const Layout& layout) {
     }
     // Every piece, whole or cut, takes one stock element: offcuts are not reused.
     const auto with_spare = static_cast<uint64_t>(std::ceil(l.count * (1 + spec.spare) - 1e-9));
-    const auto packs = (with_spare + spec.pack - 1) / spec.pack;
+    // Specials are made to order and bought by the piece, not in packs.
+    const auto pack =
+        std::get<0>(key).find(", special for") != std::string::npos ? int64_t{1} : spec.pack;
+    const auto packs = (with_spare + pack - 1) / pack;
     const double per_piece = l.count ? l.stock_area / static_cast<double>(l.count) : 0;
     out << fmt::format("{},{},{},{:.6f},{},{}\r\n", order_fields(key, l), spec.spare, with_spare,
-                       per_piece * static_cast<double>(with_spare) / 1e6, spec.pack, packs);
+                       per_piece * static_cast<double>(with_spare) / 1e6, pack, packs);
   }
 }
 
@@ -306,6 +341,7 @@ void write_lots_csv(std::ostream& out, const Layout& layout) {
       lot = "level " + std::to_string(e.cell_z - layout.view.origin[2]);
     if (!lots.count(lot)) order.push_back(lot);
     add_to(lots[lot][order_key(layout, e)], layout, e);
+    add_backing(lots[lot], layout, e);
   }
   out << kUtf8Mark
       << "lot,element_type,material,colour,size_mm,values,count,whole,cut,laid_area_m2,"

@@ -354,6 +354,16 @@ height = 7050
   EXPECT_TRUE(parse_recipe(bricks + building + "arcs = \"bent\"\n", "r.toml")
                   .layout->own<FacadeKeys>()
                   .building->bent_on_arcs);
+  EXPECT_EQ(
+      parse_recipe(bricks + building + "wall = \"one-brick\"\nbacking = \"Commons\"\n", "r.toml")
+          .layout->own<FacadeKeys>()
+          .building->backing,
+      "Commons");
+  EXPECT_NE(site_error(bricks + building + "wall = \"double\"\n", nullptr).find("\"one-brick\""),
+            std::string::npos);
+  EXPECT_NE(site_error(bricks + building + "backing = \"Commons\"\n", nullptr)
+                .find("a half-brick or cavity leaf has none"),
+            std::string::npos);
   EXPECT_NE(site_error(with_layout("kind = \"facade\"\npanel = [215, 65]\nwall = [2000, 975]\n"
                                    "bond = \"flemish\"\n"),
                        nullptr)

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "building_support.h"
 #include "curdle/curdling.h"
 #include "curdle/overlay.h"
 #include "export_support.h"
@@ -190,6 +191,65 @@ TEST(Schedule, EveryPieceHasItsShapeInWkt) {
   }
   EXPECT_GT(circles, 0u);
   EXPECT_GT(rectangles, 0u);
+}
+
+// A one-brick wall counted whole: its face's stretchers, headers through the wall and queen
+// closers each on a line of their own, and a backing brick behind every face brick that does
+// not run through. The hand count for a one-brick wall of 215 x 102.5 x 65 bricks with 10 mm
+// joints, English or Flemish bond alike: each metre of a course holds 1000 / 112.5 = 8.889
+// brick-lengths across the wall's thickness (a stretcher and its backing per 225 mm, or a
+// header per 112.5 mm), and a metre of height 1000 / 75 = 13.333 courses: 118.5 bricks a m².
+// The pavilion's 451.2 m² of face, its corners and all, lies within 1 % of it.
+TEST(Schedule, AOneBrickWallIsCountedWholeWithEachPartOnItsOwnLine) {
+  constexpr double kHandCount = 1000.0 / 112.5 * 1000.0 / 75;  // 118.52 a m²
+  for (const char* bond : {"english", "flemish"}) {
+    const Layout l = test::lay_recipe(
+        test::pavilion_recipe("wall = \"one-brick\"\nbacking = \"Class B engineering brick\"\n",
+                              fmt::format("bond = \"{}\"\nunit = \"brick\"\n", bond)));
+    std::ostringstream out;
+    write_quantities_csv(out, l);
+    const auto rows = strict_csv(out.str().substr(3));
+    std::map<std::string, uint64_t> by_type;
+    uint64_t total = 0;
+    for (size_t i = 1; i < rows.size(); ++i) {
+      by_type[rows[i][0]] += std::stoull(rows[i][5]);
+      total += std::stoull(rows[i][5]);
+      if (rows[i][0] == "brick, backing") EXPECT_EQ(rows[i][1], "Class B engineering brick");
+    }
+    const double per_m2 = static_cast<double>(total) / (64.0 * 7.05);
+    EXPECT_NEAR(per_m2 / kHandCount, 1, 0.01) << bond << ": " << per_m2 << " a m²";
+    for (const char* line : {"brick", "brick, header", "brick, queen closer", "brick, backing"})
+      EXPECT_GT(by_type[line], 100u) << bond << ": " << line;
+    EXPECT_EQ(by_type.count("brick, snap header (a half)"), 0u);
+  }
+  // A half-brick leaf in English bond: its headers are snap headers, as deep as the leaf, and
+  // nothing stands behind it.
+  const Layout leaf =
+      test::lay_recipe(test::pavilion_recipe("", "bond = \"english\"\nunit = \"brick\"\n"));
+  std::ostringstream out;
+  write_quantities_csv(out, leaf);
+  EXPECT_NE(out.str().find("brick, snap header (a half)"), std::string::npos);
+  EXPECT_EQ(out.str().find("backing"), std::string::npos);
+  for (const Element& e : leaf.elements) EXPECT_EQ(e.depth, 0) << e.id;
+}
+
+// A special (a brick for a 135° corner) is made to order and bought by the piece, while the
+// rest come in packs of 500.
+TEST(Schedule, SpecialsAreBoughtByThePiece) {
+  const Layout l = test::lay_recipe(test::building_recipe(
+      "panel = [215, 65]\njoint = 10\nunit = \"brick\"\npack = 500\n",
+      "plan = [[0, 0], [9000, 0], [12000, 3000], [12000, 8000], [0, 8000]]\nheight = 750\n"));
+  std::ostringstream out;
+  write_quantities_csv(out, l);
+  const auto rows = strict_csv(out.str().substr(3));
+  size_t specials = 0;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const bool special = rows[i][0].find("special for a 135.0° outer corner") != std::string::npos;
+    specials += special;
+    EXPECT_EQ(rows[i][13], special ? "1" : "500") << rows[i][0];
+    if (special) EXPECT_EQ(rows[i][14], rows[i][11]) << "as many as are laid";
+  }
+  EXPECT_GT(specials, 0u);
 }
 
 }  // namespace curdle

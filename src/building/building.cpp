@@ -199,6 +199,8 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
     }
   }
   env.depth = keys.depth > 0 ? keys.depth : (spec.module_w - spec.joint) / 2;
+  env.solid = keys.wall == "one-brick";
+  if (env.solid) env.backing = keys.backing;
   if (env.depth >= spec.module_w)
     refuse("depth", fmt::format("{:g} mm is not less than the unit's length ({:g} mm): a unit "
                                 "turns a corner on its end",

@@ -47,6 +47,11 @@ struct BuildingKeys {
   double depth = 0;  // the unit's depth into the wall, mm; 0: half a unit less half a joint
   bool coursed_openings = true;  // sills and heads moved onto course lines
   bool bent_on_arcs = false;     // units on an arc bent to it (cladding), not straight on chords
+  // What the wall is: "half-brick" (a leaf, the face alone: its headers snap headers), "cavity"
+  // (a cavity wall's outer leaf, likewise), or "one-brick" (a solid wall a unit's length thick:
+  // headers run through, and a backing unit of `backing` stands behind every other face unit).
+  std::string wall = "half-brick";
+  std::string backing = "Common brick";
   std::vector<BuildingOpening> openings;
   std::optional<WindowRule> windows;
 };
@@ -56,10 +61,12 @@ inline constexpr double kMostEnvelopeUnits = 500000;
 
 struct Envelope {
   std::vector<SurfaceFrame> facades;
-  bool closed = true;  // round a building, or along a free-standing wall
-  double length = 0;   // the strip, mm
-  double height = 0;   // mm
-  double depth = 0;    // the unit's depth, mm
+  bool closed = true;   // round a building, or along a free-standing wall
+  double length = 0;    // the strip, mm
+  double height = 0;    // mm
+  double depth = 0;     // the unit's depth, mm
+  bool solid = false;   // a one-brick wall: backing units behind the face (BuildingKeys::wall)
+  std::string backing;  // their material
   int64_t courses = 0;
   std::vector<Rect> openings;          // on the strip, mm
   std::vector<size_t> opening_facade;  // each opening's façade (an index of `facades`)

@@ -10,6 +10,22 @@
 namespace curdle {
 namespace {
 constexpr double kEps = 1e-6;
+
+// A unit's part in its bond, for the order: a header through a solid wall or a snap header in
+// a leaf, a queen closer (running as deep as a header), a cut, a stopped end's half unit.
+UnitPart part_of(const CourseUnit& u, bool solid, double queen) {
+  switch (u.role) {
+    case UnitRole::header:
+      return solid ? UnitPart::header : UnitPart::snap_header;
+    case UnitRole::closer:
+      return u.depth > 0 && std::fabs(u.to - u.from - queen) < kEps ? UnitPart::queen_closer
+                                                                    : UnitPart::cut;
+    case UnitRole::end:
+      return UnitPart::half_bat;
+    default:
+      return UnitPart::whole;
+  }
+}
 }  // namespace
 
 void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
@@ -38,6 +54,9 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
                                                    : "";
   layout.opening_kinds = env.opening_type;
   layout.opening_names = env.opening_names;
+  const bool solid = env.solid;
+  layout.backed = solid;
+  layout.backing_material = env.backing;
   int64_t course = -1, column = 0;
   for (const CourseUnit& u : coursing.units) {
     stop_point();
@@ -57,7 +76,10 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
     e.nominal = Rect{u.from, y, u.to - u.from, spec.module_h};
     e.stock_w = spec.module_w, e.stock_h = spec.module_h;
     e.corner = u.corner;
-    e.depth = u.depth;
+    e.part = part_of(u, solid, queen_closer(env.depth, spec.joint));
+    // In a leaf a header is a snap header, no deeper than the leaf; through a solid wall the
+    // units that do not run through stand in front of their backing, a leaf's depth.
+    e.depth = solid ? (u.depth > 0 ? u.depth : env.depth) : 0;
     std::vector<Rect> parts{Rect{u.from, y, std::min(u.to, env.length) - u.from, spec.module_h}};
     if (u.to > env.length + kEps) parts.push_back(Rect{0, y, u.to - env.length, spec.module_h});
     for (const Rect& p : parts)

@@ -38,7 +38,8 @@ void FacadeKind::after_laying(Layout& layout, const LayoutSpec& spec) const {
 
 double FacadeKind::thickness(const LayoutSpec& spec) const {
   const FacadeKeys& keys = spec.own<FacadeKeys>();
-  return keys.envelope ? keys.envelope->depth : 20;
+  if (!keys.envelope) return 20;
+  return keys.envelope->solid ? spec.module_w : keys.envelope->depth;  // one brick, or a leaf
 }
 
 namespace {

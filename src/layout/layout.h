@@ -289,6 +289,11 @@ enum class ElementForm {
   block,      // a voxel of a stack (`cell_z` its level)
 };
 
+// What a building's unit is in its bond, for the order: a stretcher (or any whole unit on its
+// face), a header through the wall, a snap header (a half unit showing as a header in a leaf),
+// a queen closer, a unit cut to fit its run, or a stopped end's half unit.
+enum class UnitPart : uint8_t { whole, header, snap_header, queen_closer, cut, half_bat };
+
 struct Element {
   ElementForm form = ElementForm::piece;
   ElementId key;                    // stable and readable: kind, row and column in laying order
@@ -310,6 +315,7 @@ struct Element {
   double turn = 0;   // a pattern's unit: its long side (a hexagon: a flat's normal) from x, °
   int corner = -1;   // a building's unit that turns the corner at the end of frames[corner]
   double depth = 0;  // a building's unit: into the wall (a header's length), mm; 0: the wall's
+  UnitPart part = UnitPart::whole;  // a building's unit: its part in the bond
   double area() const;
 };
 
@@ -353,7 +359,11 @@ struct Layout {
                               // the rest excluded zones' rectangles
   std::vector<std::string> opening_kinds;  // a building's: "window" or "door" per own opening
   std::vector<std::string> opening_names;  // and its name: "W-12", "D-1"
-  std::vector<ZoneCount> zones;            // one per [[layout.zones]], in order
+  // A building's wall one unit thick: behind each face unit that does not run through it, a
+  // backing unit of `backing_material`, counted in quantities.csv and lots.csv.
+  bool backed = false;
+  std::string backing_material;
+  std::vector<ZoneCount> zones;  // one per [[layout.zones]], in order
   // With layout.outline: the polygon, and the parts of the width x height rectangle outside it
   // (no elements; drawn as paper, not as openings).
   Polygon outline;

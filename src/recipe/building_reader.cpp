@@ -113,14 +113,36 @@ void read_storeys(TableReader& r, BuildingKeys& b) {
            fmt::format("add up to {:g} mm, more than the wall's height ({:g} mm)", sum, b.height));
 }
 
+// wall = "half-brick", "cavity" or "one-brick", and a one-brick wall's backing material.
+void read_wall(TableReader& r, BuildingKeys& b) {
+  if (const auto wall = read_string(r, "wall", "what the wall is")) {
+    if (*wall != "half-brick" && *wall != "one-brick" && *wall != "cavity")
+      r.fail("wall",
+             "must be \"half-brick\" (a leaf of the face alone; English and Flemish headers are "
+             "snap headers), \"cavity\" (a cavity wall's outer leaf, likewise) or \"one-brick\" "
+             "(solid, a unit's length thick: headers run through and backing units stand behind "
+             "the rest)");
+    b.wall = *wall;
+  }
+  if (const auto backing = read_string(r, "backing", "the backing units' material")) {
+    if (b.wall != "one-brick")
+      r.fail("backing",
+             "is the material behind the face of a one-brick wall (wall = "
+             "\"one-brick\"); a half-brick or cavity leaf has none");
+    if (backing->empty() || backing->size() > 200)
+      r.fail("backing", "must be the backing units' material, 1 to 200 characters");
+    b.backing = *backing;
+  }
+}
+
 ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
   const toml::table* t = read_table(layout, "building");
   if (!t)
     layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
-  TableReader r(
-      *t, layout.key_path("building"), layout.source(),
-      {"plan", "path", "site", "height", "storey", "storeys", "base", "depth", "start", "phase",
-       "coursed_openings", "arcs", "openings", "windows", "elevations", "heights"});
+  TableReader r(*t, layout.key_path("building"), layout.source(),
+                {"plan", "path", "site", "height", "storey", "storeys", "base", "depth", "start",
+                 "phase", "coursed_openings", "arcs", "openings", "windows", "elevations",
+                 "heights", "wall", "backing"});
   BuildingKeys b;
   const bool drawn = r.get("site");
   const bool plan = r.get("plan") || drawn, path = r.get("path");
@@ -195,6 +217,7 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
              "\"bent\" (units bent to the arc: cladding panels, ordered by their developed size)");
     b.bent_on_arcs = *arcs == "bent";
   }
+  read_wall(r, b);
   if (const toml::node* n = r.get("openings")) {
     const toml::array* a = n->as_array();
     if (!a || a->size() > kMostOpenings)
