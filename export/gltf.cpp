@@ -451,13 +451,26 @@ void add_framed_pieces(Scene& sc) {
   const double t = sc.t;
   const int mortar = sc.b.add_material("mortar", layout.joint_colour, 0, 1);
   const double kSetBack = 8;  // a recessed joint, mm
+  // A one-brick wall's backing leaf behind the face leaf and its collar joint, in a common
+  // brick's colour: the headers run into it, as they are bonded into it.
+  const int backing = layout.backed ? sc.b.add_material("backing: " + layout.backing_material,
+                                                        Rgb{150, 96, 72}, 0, 1)
+                                    : mortar;
+  const double mortar_to = layout.backed ? layout.backing_from : t;
   int part = 0;
-  for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, layout.holes()))
-    for (const FramedBox& f : framed_backing(layout, r, kSetBack, t, 600)) {
+  for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, layout.holes())) {
+    for (const FramedBox& f : framed_backing(layout, r, kSetBack, mortar_to, 600)) {
       tinygltf::Node n = sc.framed_node(f, mortar);
       n.name = "mortar-" + std::to_string(part++);
       sc.roots.push_back(sc.b.add_node(std::move(n)));
     }
+    if (!layout.backed) continue;
+    for (const FramedBox& f : framed_backing(layout, r, layout.backing_from, t, 600)) {
+      tinygltf::Node n = sc.framed_node(f, backing);
+      n.name = "backing-" + std::to_string(part++);
+      sc.roots.push_back(sc.b.add_node(std::move(n)));
+    }
+  }
   for (const Element& e : layout.elements) {
     stop_point();
     const int mat = sc.material[e.value];

@@ -92,6 +92,29 @@ IfcEnvelopeWriter::Placed IfcEnvelopeWriter::unit(const Element& e, int64_t cont
   return p;
 }
 
+IfcEnvelopeWriter::Placed IfcEnvelopeWriter::backing(const SurfaceFrame& f, int64_t container) {
+  const double top = f.height > 0 ? f.height : l_.height;
+  const std::vector<FramedBox> boxes =
+      framed_backing(l_, Rect{f.start, 0, f.length, top}, l_.backing_from, l_.thickness, 1e300);
+  Placed p;
+  if (boxes.empty()) return p;
+  const Axes own = face_axes(boxes.front());
+  const int64_t frame = g_.axes(own.origin, tidy(own.z), tidy(own.x));
+  p.placement = w_.add("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame));
+  std::vector<int64_t> solids;
+  for (const FramedBox& b : boxes) {
+    const Axes face = face_axes(b);
+    const Vec back{face.origin[0] - face.z[0] * b.depth, face.origin[1] - face.z[1] * b.depth,
+                   face.origin[2]};
+    const int64_t at =
+        position(own.local(back, true), own.local(face.z, false), own.local(face.x, false));
+    solids.push_back(
+        g_.solid_placed(face_profile(b.length, b.height), at, b.depth, Rgb{150, 96, 72}));
+  }
+  p.shape = g_.body(solids);
+  return p;
+}
+
 int64_t IfcEnvelopeWriter::face_profile(double length, double height) {
   auto it = profiles_.find({length, height});
   if (it != profiles_.end()) return it->second;
@@ -146,10 +169,13 @@ std::vector<std::pair<int64_t, double>> IfcEnvelopeWriter::walls(
   for (size_t k = 0; k < l_.frames.size(); ++k) {
     const SurfaceFrame& f = l_.frames[k];
     const std::string name = "Wall " + f.name;
+    // A one-brick wall's body is its backing leaf; a leaf's shape is its units' (nested in it).
+    const Placed body = l_.backed ? backing(f, container) : Placed{};
     const int64_t wall =
-        w_.add("IFCWALL({},{},{},$,{},$,{},.SOLIDWALL.)", root_("wall " + f.name), text(name),
+        w_.add("IFCWALL({},{},{},$,{},{},{},.SOLIDWALL.)", root_("wall " + f.name), text(name),
                text(fmt::format("{:g} mm along the envelope from {:g} mm", f.length, f.start)),
-               ref(placement_on(f, f.start, 0, container)), text(f.name));
+               ref(body.placement ? body.placement : placement_on(f, f.start, 0, container)),
+               body.shape ? fmt::format("#{}", body.shape) : std::string("$"), text(f.name));
     wall_ids.push_back(wall);
     // Its common set, as BIM tools sort walls by it: the façade's name, and outside.
     const int64_t reference =

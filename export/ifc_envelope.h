@@ -32,6 +32,9 @@ class IfcEnvelopeWriter {
     int64_t placement = 0, shape = 0;
   };
   Placed unit(const Element& e, int64_t container_place, const Rgb& colour);
+  // A one-brick wall's body: its backing leaf behind the face leaf and the collar joint, the
+  // headers' tails bonded into it.
+  Placed backing(const SurfaceFrame& f, int64_t container_place);
 
   // The façade a unit belongs to (an index of the layout's frames): the face holding the
   // middle of its laid face.

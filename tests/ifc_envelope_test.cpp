@@ -121,5 +121,30 @@ type = "door"
   EXPECT_NE(line_of(ifc, m[1].str()).find("IFCARBITRARYCLOSEDPROFILEDEF"), std::string::npos);
 }
 
+// A one-brick wall's IfcWall has a body, its backing leaf: an extruded solid a backing's depth
+// (215 - 102.5 - 10 mm) behind the face leaf; a half-brick leaf's walls have none (their shape
+// is their units').
+TEST(IfcEnvelope, AOneBrickWallsBodyIsItsBackingLeaf) {
+  auto walls = [](const std::string& building) {
+    const Layout l = test::lay_recipe(test::pavilion_recipe(building, "bond = \"english\"\n"));
+    std::ostringstream out;
+    write_layout_ifc(out, l);
+    std::vector<std::string> found;
+    const std::string text = out.str();
+    for (size_t at = text.find("=IFCWALL("); at != std::string::npos;
+         at = text.find("=IFCWALL(", at + 1))
+      found.push_back(text.substr(at, text.find('\n', at) - at));
+    return std::make_pair(found, text);
+  };
+  const auto [solid, solid_text] = walls("wall = \"one-brick\"\n");
+  ASSERT_EQ(solid.size(), 6u);
+  for (const std::string& w : solid) EXPECT_EQ(w.find(",$,'"), std::string::npos) << w;
+  EXPECT_NE(solid_text.find("IFCEXTRUDEDAREASOLID"), std::string::npos);
+  EXPECT_NE(solid_text.find(",102.5)"), std::string::npos) << "a backing leaf 102.5 mm deep";
+  const auto [leaf, leaf_text] = walls("");
+  ASSERT_EQ(leaf.size(), 6u);
+  for (const std::string& w : leaf) EXPECT_NE(w.find(",$,'"), std::string::npos) << w;
+}
+
 }  // namespace
 }  // namespace curdle

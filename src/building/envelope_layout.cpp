@@ -57,6 +57,7 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
   const bool solid = env.solid;
   layout.backed = solid;
   layout.backing_material = env.backing;
+  layout.backing_from = solid ? env.depth + spec.joint : 0;
   int64_t course = -1, column = 0;
   for (const CourseUnit& u : coursing.units) {
     stop_point();
