@@ -363,7 +363,7 @@ struct Layout {
   // backing unit of `backing_material`, counted in quantities.csv and lots.csv.
   bool backed = false;
   std::string backing_material;
-  double backing_from = 0;  // mm behind the face: the face units' depth and the collar joint
+  double backing_from = 0;       // mm behind the face: the face units' depth and the collar joint
   std::vector<ZoneCount> zones;  // one per [[layout.zones]], in order
   // With layout.outline: the polygon, and the parts of the width x height rectangle outside it
   // (no elements; drawn as paper, not as openings).

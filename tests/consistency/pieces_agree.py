@@ -408,11 +408,23 @@ def check(curdle, recipe, out, corner):
             key = (row["element_type"], row["material"], row["colour"])
         by_line.setdefault(key, 0)
         by_line[key] += micro(row["area_m2"])
+    # A one-brick wall's backing: a unit behind every face piece that does not run through it,
+    # so behind all but its headers and queen closers (and the cuts of its header courses).
+    faced = [r for r in rows if r.get("facade")]
+    through = sum(r["element_type"].endswith((", header", ", queen closer")) for r in faced)
+    cuts = sum(r["element_type"].endswith(", cut to fit") for r in faced)
+    backing = 0
     lines = {}
     for q in read_csv(os.path.join(out, "quantities.csv")):
+        if q["element_type"].endswith(", backing"):
+            backing += int(q["count"])
+            continue
         key = (("opening", opening_size(q["size_mm"])) if q["element_type"] == "opening" else
                (q["element_type"], q["material"], q["colour"]))
         lines[key] = lines.get(key, 0) + micro(q["laid_area_m2"])
+    if backing and not len(faced) - through - cuts <= backing <= len(faced) - through:
+        fail(f"{where}: {backing} backing units behind {len(faced)} face pieces, {through} of "
+             f"them through the wall and {cuts} cut")
     if by_line != lines:
         wrong = [k for k in set(by_line) | set(lines) if by_line.get(k) != lines.get(k)]
         fail(f"{where}: the schedule's areas do not add up to the quantities' laid areas for "
