@@ -74,4 +74,19 @@ TEST(Density, EveryCellsBoundHoldsItsChildren) {
   }
 }
 
+// Round a building's ring (a period along x) a radial field is measured the nearer way round,
+// and a cell's span that runs past the period is taken round to its start: near the closing
+// corner the field is as near the centre as on the other side.
+TEST(Density, ARadialFieldIsMeasuredRoundARing) {
+  DensityField f;
+  f.kind = DensityKind::radial, f.dimension = 2, f.centre = {0, 0, 0}, f.radius = 100;
+  f.values = {1, 0};
+  f.placement.period = 1000;
+  EXPECT_DOUBLE_EQ(f.at({950, 0, 0}), f.at({50, 0, 0}));
+  EXPECT_DOUBLE_EQ(f.at({950, 0, 0}), 0.5);
+  EXPECT_NEAR(f.most_in({900, 0, 0}, {990, 10, 0}), 0.9, 1e-12);  // its nearest point: 10 away
+  f.placement.period = 0;
+  EXPECT_DOUBLE_EQ(f.most_in({900, 0, 0}, {990, 10, 0}), 0);
+}
+
 }  // namespace curdle

@@ -12,6 +12,7 @@
 
 #include "building/run_fill.h"
 #include "building_support.h"
+#include "curdle/density.h"
 #include "curdle/overlay.h"
 #include "export/schedule.h"
 #include "kinds/facade.h"
@@ -251,6 +252,37 @@ TEST(EnvelopeLayout, TheCurvedGardenWallHasNoCloserALaidJointWouldTakeUp) {
   // The 28 courses beside the gate, and of the four above it the two with half bats at their
   // stopped ends; the other two are whole bricks, their joints taking up 9.97 mm over 18 m.
   EXPECT_EQ(courses_with_cuts, 30u);
+}
+
+// Round the pavilion's ring a density field in millimetres lies where it says: the cell a unit
+// takes its value from is placed under the unit's middle (taken round the building), whatever
+// the ring's phase, so that a field centred on the closing corner reaches both sides of it.
+TEST(EnvelopeLayout, ADensityFieldInMillimetresFollowsTheTurnedRing) {
+  const Recipe r = parse_recipe(test::pavilion_recipe("phase = 13\n"), "pavilion.toml");
+  const Design& d = r.design;
+  const Layout l = make_layout(d, curdle(d, r.seed, d.field), d.field, *r.layout);
+  const CellPlacement p = r.layout->kind->cell_placement(*r.layout, d.field);
+  ASSERT_NEAR(p.period, 64000, 1e-6);
+  const double cell = p.scale[0];
+  for (const Element& e : l.elements) {
+    const std::array<double, 3> at = p.centre({e.cell_x, e.cell_y, 0}, 2);
+    const double middle = wrap_along((e.nominal.x + e.nominal.right()) / 2, 64000);
+    double off = std::fabs(at[0] - middle);
+    off = std::min(off, 64000 - off);
+    ASSERT_LE(off, cell / 2 + 1e-6) << e.id << " at " << middle << ", its cell at " << at[0];
+  }
+  // A radial field at the closing corner thins both sides of it alike.
+  DensityField f;
+  f.kind = DensityKind::radial, f.dimension = 2, f.centre = {0, 3525, 0}, f.radius = 3000;
+  f.values = {0, 1};
+  f.placement = p;
+  const auto near_corner = [&](double u) {
+    const int64_t column = static_cast<int64_t>(std::floor(wrap_along(u, 64000) / cell + 13)) %
+                           static_cast<int64_t>(std::llround(64000 / cell));
+    return f.at_cell({column, 47, 0});
+  };
+  EXPECT_NEAR(near_corner(-500), near_corner(500), 0.1);
+  EXPECT_LT(near_corner(-500), 0.3);
 }
 
 }  // namespace

@@ -19,6 +19,7 @@ std::array<double, 3> CellPlacement::centre(const std::array<int64_t, 3>& cell,
   for (int d = 0; d < dimension; ++d)
     p[d] = origin[d] + scale[d] * (static_cast<double>(cell[d]) + 0.5);
   if (dimension >= 2) p[0] += shift_of_row(cell[1]);
+  if (period > 0) p[0] -= std::floor(p[0] / period) * period;
   return p;
 }
 
@@ -55,7 +56,13 @@ double DensityField::at(const std::array<double, 3>& p) const {
     }
     case DensityKind::radial: {
       double d2 = 0;
-      for (int d = 0; d < dimension; ++d) d2 += (p[d] - centre[d]) * (p[d] - centre[d]);
+      for (int d = 0; d < dimension; ++d) {
+        // Round a ring the nearer way: across the closing corner as well as along the strip.
+        const double delta = d == 0 && placement.period > 0
+                                 ? std::remainder(p[d] - centre[d], placement.period)
+                                 : p[d] - centre[d];
+        d2 += delta * delta;
+      }
       return blend(values, std::min(1.0, std::sqrt(d2) / radius));
     }
     case DensityKind::image: {
@@ -87,7 +94,16 @@ double DensityField::most_in(const std::array<double, 3>& lo,
       for (int d = 0; d < dimension; ++d)
         p[d] = falls ? std::clamp(centre[d], lo[d], hi[d])
                      : (std::abs(lo[d] - centre[d]) > std::abs(hi[d] - centre[d]) ? lo[d] : hi[d]);
-      return at(p);
+      if (placement.period <= 0) return at(p);
+      // Round a ring: the nearest (or farthest) point of the box to the centre taken round.
+      double most = at(p);
+      const double period = placement.period;
+      for (const double x : {centre[0] - period, centre[0] + period, centre[0] + period / 2,
+                             centre[0] - period / 2, lo[0], hi[0]}) {
+        p[0] = std::clamp(x, lo[0], hi[0]);
+        most = std::max(most, at(p));
+      }
+      return most;
     }
     case DensityKind::image: {  // the brightest or darkest pixel the box touches
       if (!luminance || width <= 0 || height <= 0) return values[0];
@@ -126,6 +142,17 @@ double DensityField::survival(const Lattice& lattice, int stage, const std::arra
     const auto range = placement.shift_range();
     lo[0] += range[0];
     hi[0] += range[1];
+  }
+  if (placement.period > 0) {  // round a ring: the span taken round, in one or two parts
+    const double period = placement.period, turns = std::floor(lo[0] / period) * period;
+    lo[0] -= turns, hi[0] -= turns;
+    if (hi[0] - lo[0] >= period) {
+      lo[0] = 0, hi[0] = period;
+    } else if (hi[0] > period) {
+      std::array<double, 3> lo2 = lo, hi2 = hi;
+      lo2[0] = 0, hi2[0] = hi[0] - period, hi[0] = period;
+      return std::min(1.0, survival_product * std::max(most_in(lo, hi), most_in(lo2, hi2)));
+    }
   }
   return std::min(1.0, survival_product * most_in(lo, hi));
 }

@@ -33,6 +33,8 @@ struct CellPlacement {
   std::array<double, 3> scale{1, 1, 1};
   std::vector<double> course_shift;  // empty: no bond
   int64_t row_sign = 1, row_base = 0;
+  // Round a closed building the field is a ring: x taken round modulo `period` (0: no ring).
+  double period = 0;
 
   double shift_of_row(int64_t y) const;
   // The centre of a finest cell (absolute coordinates) in the field's units.

@@ -83,6 +83,18 @@ void wrap_round(reading::TableReader& r, Design& design, LayoutSpec& spec, bool 
 
 }  // namespace
 
+CellPlacement FacadeKind::cell_placement(const LayoutSpec& spec, const Box& view) const {
+  CellPlacement p = SurfaceKind::cell_placement(spec, view);
+  const FacadeKeys& keys = spec.own<FacadeKeys>();
+  if (!keys.ring || !keys.envelope) return p;
+  const StripRing& ring = *keys.ring;
+  p.scale[0] = ring.cell;
+  p.origin[0] = -static_cast<double>(ring.phase + view.origin[0]) * ring.cell;
+  p.period = static_cast<double>(ring.columns) * ring.cell;
+  p.course_shift.clear();  // a unit takes the ring cell under its middle, bond and all
+  return p;
+}
+
 std::optional<std::array<int64_t, 2>> FacadeKind::own_cells(const LayoutSpec& spec) const {
   const FacadeKeys& keys = spec.own<FacadeKeys>();
   if (!keys.ring || !keys.envelope) return std::nullopt;

@@ -34,6 +34,9 @@ class FacadeKind : public SurfaceKind {
   std::unique_ptr<KindKeys> default_keys() const override;
   bool take_opening(LayoutSpec& spec, const std::array<double, 4>& rect) const override;
   std::optional<std::array<int64_t, 2>> own_cells(const LayoutSpec& spec) const override;
+  // Round a ring, each field cell a ring cell of the strip, turned by its phase and taken
+  // round: a density field in mm lies where it says on the building.
+  CellPlacement cell_placement(const LayoutSpec& spec, const Box& view) const override;
   void read(reading::TableReader& r, Design& design, LayoutSpec& spec,
             bool field_given) const override;
   Layout build(const Design& design, const CurdField& field, const Box& view,
