@@ -53,9 +53,17 @@ function svgPolygon(points, segment, h, cls) {
 // A building's façades on its unrolled strip: a dashed line at each corner and each face's
 // name along the top, so that a segment is chosen knowing where the corners fall.
 function drawFacades(overlay, building, segment, h) {
+  // Round a ring (the field wrapped round the building, turned by its phase) a place on the
+  // strip is taken round to the field's cells.
+  const s = surface().surface;
+  const round = (x) => {
+    const [u] = mmToCell([x, 0], segment);
+    if (!(s.period_mm > 0)) return u;
+    const cells = s.period_mm / s.cell_mm[0];
+    return segment[0] + ((((u - segment[0]) % cells) + cells) % cells);
+  };
   for (const f of building.facades) {
-    const [u0] = mmToCell([f.start_mm, 0], segment);
-    const [u1] = mmToCell([f.start_mm + f.length_mm, 0], segment);
+    const u1 = round(f.start_mm + f.length_mm), middle = round(f.start_mm + f.length_mm / 2);
     if (f.corner !== 'end' && f.corner !== 'bend') {
       const line = document.createElementNS(svgNS, 'line');
       line.setAttribute('x1', u1), line.setAttribute('x2', u1);
@@ -64,7 +72,7 @@ function drawFacades(overlay, building, segment, h) {
       overlay.append(line);
     }
     const name = document.createElementNS(svgNS, 'text');
-    name.setAttribute('x', (u0 + u1) / 2);
+    name.setAttribute('x', middle);
     name.setAttribute('y', 0);
     name.setAttribute('class', 'facade-name');
     name.setAttribute('font-size', (h / 9).toFixed(2));  // in cells, as the strip is drawn

@@ -51,7 +51,7 @@ ordered_json polygon_json(const Polygon& polygon) {
 
 // The surface the page draws over the floor's segment: its outline and zones in mm, and where
 // the segment's cells lie (mm = origin_mm + cell_mm * u, u in cells from the segment's corner,
-// without a bond's course shifts).
+// without a bond's course shifts; round a building's ring u is taken round period_mm).
 ordered_json surface_json(const LayoutSpec& spec) {
   const auto need = elements_to_cover(spec);
   Box segment;
@@ -69,6 +69,7 @@ ordered_json surface_json(const LayoutSpec& spec) {
   return {
       {"origin_mm", {placement.origin[0], placement.origin[1]}},
       {"cell_mm", {placement.scale[0], placement.scale[1]}},
+      {"period_mm", placement.period},  // round a building's ring: x taken round, mm; 0: none
       {"outline_mm",
        polygon_json(spec.outline.empty()
                         ? Polygon{{0, 0}, {extent[0], 0}, {extent[0], extent[1]}, {0, extent[1]}}

@@ -608,10 +608,16 @@ try {
           'a building offers no floor zones and no site drop: its plan and openings are the recipe\'s');
     check((await page.textContent('#fix-floor-label')).trim() === 'the strip', 'the segment is fixed to the strip');
     const cornerAt = () => page.evaluate(() => Number(document.querySelector('#surface-overlay line.corner').getAttribute('x1')));
-    const before = await cornerAt();
+    // Round the kiosk the field is a ring turned by its phase; a field of given cells is laid
+    // from the strip's start, a cell a unit: the corners compared in that field.
     await page.fill('#field-w', '245');
     await page.dispatchEvent('#field-w', 'change');
     await page.waitForFunction(() => document.querySelector('#status').textContent.includes('9,800 cells'));
+    await page.fill('#window-text', '0,0,117,40');
+    await page.dispatchEvent('#window-text', 'change');
+    await page.waitForFunction(() => document.querySelector('#command').textContent.includes('--window 0,0,117,40'));
+    await page.waitForFunction(() => document.querySelectorAll('#surface-overlay line.corner').length === 4);
+    const before = await cornerAt();
     await page.fill('#window-text', '64,0,117,40');
     await page.dispatchEvent('#window-text', 'change');
     await page.waitForFunction(() => / 64,0,117,40 /.test(' ' + document.querySelector('#segment-text').textContent.split(' ')[1] + ' '));
