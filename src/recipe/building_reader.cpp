@@ -158,10 +158,7 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
   if (drawn) b.plan = read_site_plan(r, spec, b.site_summary, model_height);
   if (plan && !drawn) b.plan = read_contour(r, "plan", spec.chord_tolerance).contour;
   if (plan && !drawn && b.plan.empty()) {  // no arcs: read_contour keeps the polygon only
-    for (const toml::node& item : *r.get("plan")->as_array()) {
-      const toml::array* p = item.as_array();
-      b.plan.push_back({*finite_number(p->get(0)), *finite_number(p->get(1)), 0});
-    }
+    b.plan = read_vertices(r, "plan", "must be the plan's corners", 3, kMostPlanVertices, 1e300);
     if (b.plan.size() > 2 && b.plan.front().x == b.plan.back().x &&
         b.plan.front().y == b.plan.back().y)
       b.plan.pop_back();
