@@ -15,6 +15,7 @@
 #include "export/installer_drawing.h"
 #include "export/layout_png.h"
 #include "export/page_buffer.h"
+#include "export/schedule.h"
 #include "export/setting_out_plan.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
@@ -62,6 +63,14 @@ std::vector<std::pair<std::vector<Rgb>, std::string>> sheet_legend(const Layout&
                         ? e.parts
                         : std::vector<Rgb>{e.colour},
                     line});
+  }
+  if (layout.backed) {  // a one-brick wall: the backing behind its face, unseen but laid
+    size_t backing = 0, cut = 0;
+    for (const Element& e : layout.elements)
+      if (needs_backing(layout, e)) ++backing, cut += e.cut;
+    rows.push_back({{kBackingColour},
+                    fmt::format("behind the face, {}: {} ({} cut)", layout.backing_material,
+                                legend_count(layout, backing), cut)});
   }
   return rows;
 }
@@ -435,6 +444,8 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   for (const CurvedFacade& c : curved_facades(layout))
     if (c.frame->start < sheet.window.right() && c.frame->start + c.frame->length > sheet.window.x)
       info.insert(info.end(), c.brief.begin(), c.brief.end());
+  if (held.backing)
+    info.push_back(fmt::format("behind them, {}: {}", layout.backing_material, held.backing));
   for (std::string& line : sheet_setting_out(layout, sheet.window)) info.push_back(std::move(line));
   if (plan.unplaced)
     info.push_back(fmt::format("{} labels found no room: use a larger sheet", plan.unplaced));

@@ -453,9 +453,9 @@ void add_framed_pieces(Scene& sc) {
   const double kSetBack = 8;  // a recessed joint, mm
   // A one-brick wall's backing leaf behind the face leaf and its collar joint, in a common
   // brick's colour: the headers run into it, as they are bonded into it.
-  const int backing = layout.backed ? sc.b.add_material("backing: " + layout.backing_material,
-                                                        Rgb{150, 96, 72}, 0, 1)
-                                    : mortar;
+  const int backing =
+      layout.backed ? sc.b.add_material("backing: " + layout.backing_material, kBackingColour, 0, 1)
+                    : mortar;
   const double mortar_to = layout.backed ? layout.backing_from : t;
   int part = 0;
   for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, layout.holes())) {

@@ -109,7 +109,7 @@ IfcEnvelopeWriter::Placed IfcEnvelopeWriter::backing(const SurfaceFrame& f, int6
     const int64_t at =
         position(own.local(back, true), own.local(face.z, false), own.local(face.x, false));
     solids.push_back(
-        g_.solid_placed(face_profile(b.length, b.height), at, b.depth, Rgb{150, 96, 72}));
+        g_.solid_placed(face_profile(b.length, b.height), at, b.depth, kBackingColour));
   }
   p.shape = g_.body(solids);
   return p;

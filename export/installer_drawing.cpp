@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "curdle/stop.h"
+#include "export/schedule.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
 #include "layout/legend.h"
@@ -58,6 +59,7 @@ InstallerDrawing installer_set(const Layout& layout, const InstallerPlan& plan) 
       c.row0 = std::min(c.row0, e.row), c.row1 = std::max(c.row1, e.row);
       c.column0 = std::min(c.column0, e.column), c.column1 = std::max(c.column1, e.column);
     }
+    c.backing += needs_backing(layout, e);
     // Values that lay the same product are one line, hatched alike (LegendEntry::same_as).
     const uint32_t value = e.type.empty() ? layout.legend[e.value].same_as : 0;
     SheetContents::KeyLine& line = c.key[{piece_material(layout, e), value}];

@@ -29,6 +29,7 @@ struct SheetContents {
     size_t count = 0;
   };
   std::map<std::pair<std::string, uint32_t>, KeyLine> key;  // by material, then value
+  size_t backing = 0;  // a one-brick wall's backing units behind the pieces it holds
 };
 
 struct InstallerDrawing {

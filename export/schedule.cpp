@@ -55,6 +55,10 @@ std::string element_type_of(const Layout& layout, const Element& e) {
   return type;
 }
 
+bool needs_backing(const Layout& layout, const Element& e) {
+  return layout.backed && e.form == ElementForm::piece && e.depth < layout.module_w - 1e-6;
+}
+
 // What an order line is bought as: the stock size, or the opening's diameter.
 std::string stock_size_of(const Layout& layout, const Element& e) {
   if (e.circle) {
@@ -251,7 +255,7 @@ OrderKey order_key(const Layout& layout, const Element& e) {
 // A one-brick wall's backing unit behind a face unit that does not run through: the face
 // unit's size, in the backing's material, unseen (no colour or value).
 void add_backing(std::map<OrderKey, OrderLine>& lines, const Layout& layout, const Element& e) {
-  if (!layout.backed || e.form != ElementForm::piece || e.depth >= layout.module_w - 1e-6) return;
+  if (!needs_backing(layout, e)) return;
   OrderLine& l = lines[{layout.element_type + ", backing", layout.backing_material, "",
                         stock_size_of(layout, e)}];
   l.materials.insert(layout.backing_material);

@@ -34,6 +34,9 @@ int64_t lot_of(const Element& element, size_t index, const OrderingKeys& orderin
 // What the schedules call an element, its stock size ("600 x 300", "D12") and its lot ("1",
 // or the fabrication sheet "S-R1-C2"): the same words in every file that names the piece.
 std::string element_type_of(const Layout& layout, const Element& element);
+// Whether a one-brick wall has a backing unit behind this face piece: all but those that run
+// through it (headers, queen closers, and the cuts of header courses).
+bool needs_backing(const Layout& layout, const Element& element);
 std::string stock_size_of(const Layout& layout, const Element& element);
 std::string lot_text(const Layout& layout, const Element& element, size_t index);
 

@@ -6,7 +6,8 @@ count of each material, so that a coursed set (no IDs) is checked too, and a cou
 every course it says it holds ("courses 51 to 106"). Sheet 1 names every zone of the recipe
 ([[layout.zones]]), drawn where it lies. A curved wall's sheet 1 sets its arc out (radius,
 centre, the offsets from its chord, the joints' taper), and each of its sheets states the radius,
-the centre, a unit's chord and the taper.
+the centre, a unit's chord and the taper. A one-brick wall's backing, counted in quantities.csv,
+is counted on sheet 1's legend and, sheet by sheet, behind the pieces each holds.
 
 Usage: drawing_keys.py CURDLE SOURCE_DIR PATTERN...
 """
@@ -26,7 +27,12 @@ failures = []
 for pattern in patterns:
     with tempfile.TemporaryDirectory() as tmp:
         subprocess.run([curdle, "generate", str(source / pattern), "--out", tmp, "--outputs",
-                        "layout.pdf,schedule.csv"], check=True, stdout=subprocess.DEVNULL)
+                        "layout.pdf,schedule.csv,quantities.csv"], check=True,
+                       stdout=subprocess.DEVNULL)
+        backing = sum(int(r["count"]) for r in csv.DictReader(io.StringIO(
+            Path(tmp, "quantities.csv").read_text(encoding="utf-8-sig"), newline=""))
+            if r["element_type"].endswith(", backing"))
+        behind = 0
         text = Path(tmp, "schedule.csv").read_text(encoding="utf-8-sig")
         material = {r["element_id"]: r["material"]
                     for r in csv.DictReader(io.StringIO(text, newline=""))}
@@ -59,6 +65,7 @@ for pattern in patterns:
                 failures.append(f"{pattern} sheet {page}: no key")
                 continue
             flat = " ".join(words.split())
+            behind += sum(int(n) for n in re.findall(r"behind them, [^:]+: (\d+)", flat))
             if curved and not re.search(r"radius \d+ mm round centre \(.*chord \d+ mm a unit; "
                                         r"joints \d+ mm face, [\d.]+ mm back", flat):
                 failures.append(f"{pattern} sheet {page}: a curved wall, its radius, centre, "
@@ -78,12 +85,17 @@ for pattern in patterns:
                            if str(c) not in numbers]
                 if missing:
                     failures.append(f"{pattern} sheet {page}: courses {missing[:5]} not numbered")
+        legend = re.search(r"behind the face, [^:]+: (\d+) bricks", " ".join(first.split()))
+        if backing and (not legend or int(legend[1]) != backing or behind != backing):
+            failures.append(f"{pattern}: quantities.csv counts {backing} backing bricks, sheet 1 "
+                            f"{legend[1] if legend else 'none'}, the sheets {behind}")
         if keyed != ordered:
             failures.append(f"{pattern}: the keys count {dict(keyed)}, the schedule "
                             f"{dict(ordered)}")
         print(f"{pattern}: {pages - 1} installer's sheets, {checked} materials found in their keys,"
               f" {sum(keyed.values())} pieces counted in them, {len(zones)} zones named on sheet 1"
-              + (", the arc set out" if curved else ""))
+              + (", the arc set out" if curved else "")
+              + (f", {backing} backing bricks on sheet 1 and behind each sheet's" if backing else ""))
 for f in failures[:20]:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)

@@ -289,6 +289,9 @@ enum class ElementForm {
   block,      // a voxel of a stack (`cell_z` its level)
 };
 
+// A one-brick wall's backing, unseen behind the face: the colour it is drawn and modelled in.
+inline constexpr Rgb kBackingColour{150, 96, 72};
+
 // What a building's unit is in its bond, for the order: a stretcher (or any whole unit on its
 // face), a header through the wall, a snap header (a half unit showing as a header in a leaf),
 // a queen closer, a unit cut to fit its run, or a stopped end's half unit.
