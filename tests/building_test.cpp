@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "building_support.h"
@@ -155,6 +156,18 @@ TEST(Building, BadBuildingsAreRefusedSayingWhatIsAllowed) {
   keys = pavilion_keys();
   keys.depth = 300;
   EXPECT_NE(refusal(keys).find("depth"), std::string::npos);
+}
+
+// A curved one-brick wall's joints taper to its back, a unit's length in: a radius a leaf
+// takes (its joints 5.4 mm at its back, 102.5 mm in) closes them behind a one-brick wall.
+TEST(Building, AOneBrickWallsJointsAreCheckedAtItsBack) {
+  BuildingKeys keys;
+  keys.path = {{0, 0, std::tan(1.0 / 4)}, {2 * 5000 * std::sin(0.5), 0, 0}};  // R 5 m, 1 rad
+  keys.height = 750;
+  EXPECT_EQ(refusal(keys), "");
+  keys.wall = "one-brick";
+  EXPECT_NE(refusal(keys).find("the joints would close to 0.3 mm at the back"), std::string::npos)
+      << refusal(keys);
 }
 
 TEST(Building, AFacadeIsFoundByNameOrIndex) {

@@ -214,8 +214,9 @@ Envelope envelope_of(const BuildingKeys& keys, const LayoutSpec& spec) {
   for (SurfaceFrame& f : env.facades) {
     if (f.bulge == 0) continue;
     f.bent = keys.bent_on_arcs;
-    env.notes.push_back(f.bent ? bent_units(f, spec)
-                               : joint_taper(f, spec, env.depth, keys.plan.empty()));
+    env.notes.push_back(
+        f.bent ? bent_units(f, spec)
+               : joint_taper(f, spec, env.solid ? spec.module_w : env.depth, keys.plan.empty()));
   }
   const std::vector<NamedOpening> given = named_openings(keys, env.facades);
   // "W-12 on façade W at x 3375, sill 900": as the IFC, the sheets and the schedules name it.
