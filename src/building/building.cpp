@@ -8,6 +8,7 @@
 #include "building/facades.h"
 #include "curdle/error.h"
 #include "layout/contour.h"
+#include "layout/curved_facade.h"
 
 namespace curdle {
 namespace {
@@ -127,11 +128,8 @@ constexpr double kNarrowestJoint = 3;
 std::string joint_taper(const SurfaceFrame& f, const LayoutSpec& spec, double depth, bool path) {
   const Arc arc = arc_between({f.from[0], f.from[1], f.bulge}, {f.to[0], f.to[1], 0});
   const double l = spec.module_w, j = spec.joint, r = arc.radius;
-  // The turn from unit to unit: a unit's chord and a joint along the face.
-  const double turn = 2 * std::asin(std::min(1.0, l / (2 * r))) + j / r;
   const bool convex = f.bulge > 0;  // the face outside the curve: the joints close behind it
-  const double back = convex ? j - depth * turn : j + depth * turn;
-  const double sagitta = r - std::sqrt(r * r - l * l / 4);
+  const auto [sagitta, back] = chord_fit(r, l, j, depth, convex);
   if (back < kNarrowestJoint) {
     const double least = depth * (l + j) / (j - kNarrowestJoint);
     refuse(
@@ -157,7 +155,7 @@ std::string joint_taper(const SurfaceFrame& f, const LayoutSpec& spec, double de
 // the strip, as ordered) and the chord and rise it is bent over.
 std::string bent_units(const SurfaceFrame& f, const LayoutSpec& spec) {
   const double r = frame_radius(f), l = spec.module_w;
-  const double chord = 2 * r * std::sin(l / (2 * r));
+  const double chord = bent_chord(r, l);
   return fmt::format(
       "façade {} is curved, radius {:.0f} mm at its face ({}): its units are bent to the arc, "
       "each {:g} mm wide developed (as ordered) over a chord of {:.1f} mm, rising {:.1f} mm",

@@ -26,6 +26,12 @@ double station_step(double chord) {
 
 }  // namespace
 
+ChordFit chord_fit(double r, double l, double j, double depth, bool convex) {
+  // The turn from unit to unit: a unit's chord and a joint along the face.
+  const double turn = 2 * std::asin(std::min(1.0, l / (2 * r))) + j / r;
+  return {r - std::sqrt(r * r - l * l / 4), convex ? j - depth * turn : j + depth * turn};
+}
+
 std::vector<CurvedFacade> curved_facades(const Layout& layout, double step) {
   std::vector<CurvedFacade> out;
   for (const SurfaceFrame& f : layout.frames) {
@@ -39,16 +45,15 @@ std::vector<CurvedFacade> curved_facades(const Layout& layout, double step) {
     c.convex = f.bulge > 0;
     const double r = c.radius, l = layout.module_w, j = layout.joint, depth = layout.thickness;
     if (f.bent) {
-      c.unit_chord = 2 * r * std::sin(l / (2 * r));
+      c.unit_chord = bent_chord(r, l);
       c.units = fmt::format(
           "{:g} mm units bent to the arc (as ordered), each over a chord of "
           "{:.1f} mm",
           l, c.unit_chord);
     } else {
       c.unit_chord = l;
-      c.inside = r - std::sqrt(r * r - l * l / 4);
-      const double turn = 2 * std::asin(std::min(1.0, l / (2 * r))) + j / r;
-      c.joint_back = c.convex ? j - depth * turn : j + depth * turn;
+      const ChordFit fit = chord_fit(r, l, j, depth, c.convex);
+      c.inside = fit.inside, c.joint_back = fit.joint_back;
       c.units = fmt::format(
           "{:g} mm units straight on chords, {:.2f} mm inside the arc at their middle; each "
           "joint {:g} mm at the face, {:.1f} mm at the back ({:g} mm in)",

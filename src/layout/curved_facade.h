@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,18 @@ struct CurvedFacade {
   // and "chord 215 mm a unit; joints 10 mm face, 8.1 mm back".
   std::array<std::string, 2> brief;
 };
+
+// How a straight unit `l` mm long sits on a chord of an arc of radius `r` at the face, with
+// joints `j` mm wide there: its middle `inside` mm inside the arc (its chord's sagitta), and
+// each joint `joint_back` mm wide `depth` mm behind the face (narrower behind a convex face,
+// wider behind a concave one).
+struct ChordFit {
+  double inside = 0, joint_back = 0;
+};
+ChordFit chord_fit(double r, double l, double j, double depth, bool convex);
+
+// The chord a unit `l` mm long spans when bent to a radius of `r` mm.
+inline double bent_chord(double r, double l) { return 2 * r * std::sin(l / (2 * r)); }
 
 // Every curved façade of a building's layout, with the offsets at stations `step` mm apart
 // along its chord (0: a round step giving 4 to 10 stations).
