@@ -96,6 +96,10 @@ struct LaidFace {
   double from = 0, to = 0, v = 0;
 };
 LaidFace laid_face(const Element& e, double length) {
+  if (e.form == ElementForm::opening) {  // a screen's opening: its own box, not its cell's
+    const Rect b = laid_bounds(e);
+    return {b.x, b.right(), b.y + b.h / 2};
+  }
   if (e.shape.empty()) return {e.nominal.x, e.nominal.right(), e.nominal.y + e.nominal.h / 2};
   double lo = 1e300, hi = -1e300, bottom = 1e300, top = -1e300;
   for (const Rect& r : e.shape) {

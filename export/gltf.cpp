@@ -16,6 +16,7 @@
 #include "curdle/stop.h"
 #include "export/framed_boxes.h"
 #include "export/framed_corner.h"
+#include "export/framed_sheet.h"
 #include "export/gltf_json.h"
 #include "export/gltf_model.h"
 #include "export/gltf_solids.h"
@@ -285,6 +286,64 @@ void add_sheet(Scene& sc) {
   }
 }
 
+// A perforated screen on a building: each fabrication sheet a solid laid on its façade's frame
+// (rolled to an arc), its tiles placed on the face round their openings, and a named node per
+// opening at the middle of its face, where schedule.csv places it.
+void add_framed_screen(Scene& sc) {
+  const Layout& layout = sc.layout;
+  ModelBuilder& b = sc.b;
+  const double t = sc.t;
+  const FramedScreen screen = framed_screen(layout);
+  const int metal = b.add_material("aluminium sheet", Rgb{201, 205, 210}, 0.9, 0.4);
+  std::map<std::vector<int64_t>, int> tile_meshes;  // by shape, to a nanometre
+  std::vector<std::vector<int>> tile_nodes(layout.sheets.size());
+  for (const size_t i : screen.tiled) {
+    stop_point();
+    const Element& e = layout.elements[i];
+    const OpeningTile tile = tile_of(layout, e);
+    std::vector<int64_t> shape;
+    for (const auto& [x, y] : tile.hole)
+      shape.push_back(std::llround(x * 1e6)), shape.push_back(std::llround(y * 1e6));
+    auto [it, added] = tile_meshes.try_emplace(std::move(shape), 0);
+    if (added) {
+      std::vector<Vec3> tp, tn;
+      std::vector<uint32_t> ti;
+      add_caps(true, tile.triangles, 0, t, tp, tn, ti);
+      add_walls(true, {tile.hole}, 0, t, tp, tn, ti);
+      it->second = b.add_mesh(fmt::format("sheet round opening {}", tile_meshes.size()),
+                              {b.primitive(tp, tn, ti, metal)});
+    }
+    // The tile's thickness runs out of the face from the sheet's back.
+    const FramedPose pose = tile_pose(layout, e);
+    const double turn = std::atan2(pose.along[1], pose.along[0]);
+    tinygltf::Node part;
+    part.mesh = it->second;
+    part.translation = {pose.origin[0] / 1000, pose.origin[2] / 1000, -pose.origin[1] / 1000};
+    part.rotation = {0, std::sin(turn / 2), 0, std::cos(turn / 2)};
+    tile_nodes[static_cast<size_t>(e.sheet)].push_back(b.add_node(std::move(part)));
+  }
+  for (size_t k = 0; k < layout.sheets.size(); ++k) {
+    const Layout::FabricationSheet& s = layout.sheets[k];
+    FramedMesh mesh;
+    add_framed_sheet(*frame_at(layout.frames, s.area.x + s.area.w / 2), screen.rings[k],
+                     screen.squares[k], t, mesh);
+    std::vector<Vec3> p, n;
+    to_gltf_mesh(mesh, p, n);
+    tinygltf::Node node;
+    node.name = s.id;
+    node.mesh = b.add_mesh("sheet " + s.id, {b.primitive(p, n, mesh.indices, metal)});
+    node.children = std::move(tile_nodes[k]);
+    sc.roots.push_back(b.add_node(std::move(node)));
+  }
+  for (const Element& e : layout.elements) {  // each opening, named, at its face's middle
+    stop_point();
+    const BuildingPoint c = framed_centre(layout, e);
+    tinygltf::Node h;
+    h.translation = {c[0] / 1000, c[2] / 1000, -c[1] / 1000};
+    sc.add_named(e, std::move(h));
+  }
+}
+
 // Blocks: a node per block, its box showing only the faces that are not against another.
 void add_blocks(Scene& sc) {
   const Layout& layout = sc.layout;
@@ -522,7 +581,9 @@ struct Built {
 Built build(const Layout& layout) {
   Scene sc(layout);
   if (layout.kind->bedded()) add_bed(sc);
-  if (!layout.frames.empty()) {
+  if (!layout.frames.empty() && layout.kind->ground() == Ground::sheet) {
+    add_framed_screen(sc);
+  } else if (!layout.frames.empty()) {
     add_framed_pieces(sc);
   } else if (layout.kind->ground() == Ground::sheet) {
     add_sheet(sc);

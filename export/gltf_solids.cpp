@@ -29,7 +29,7 @@ void add_caps(bool upright, const std::vector<std::array<std::array<double, 2>, 
       const auto [it, added] = corner.try_emplace(v, static_cast<uint32_t>(p.size()));
       if (added) {
         p.push_back(to_gltf(upright, v[0], v[1], face ? base : top));
-        n.push_back(face ? Vec3{0, -1, 0} : Vec3{0, 1, 0});
+        n.push_back(to_gltf(upright, 0, 0, face ? -1000 : 1000));  // out of the plane
       }
       return it->second;
     };

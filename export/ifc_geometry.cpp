@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "curdle/palette.h"
 #include "layout/zone.h"
@@ -180,6 +181,65 @@ int64_t IfcGeometryWriter::axes(const std::array<double, 3>& o, const std::array
 int64_t IfcGeometryWriter::body(const std::vector<int64_t>& items) {
   const int64_t rep =
       w_.add("IFCSHAPEREPRESENTATION({},'Body','SweptSolid',{})", ref(body_), step_refs(items));
+  return w_.add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
+}
+
+int64_t IfcGeometryWriter::triangles(const std::vector<std::array<double, 3>>& points,
+                                     const std::vector<uint32_t>& indices, const Rgb& colour) {
+  // Corners at the same point (a cap's and a wall's) are one, to a tenth of a micrometre: a
+  // reader needs no normals, and a rolled sheet's list is a third the size.
+  std::map<std::array<int64_t, 3>, uint32_t> at;
+  std::vector<uint32_t> corner(points.size());
+  std::string coords, faces;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const std::array<int64_t, 3> key{std::llround(points[i][0] * 1e4),
+                                     std::llround(points[i][1] * 1e4),
+                                     std::llround(points[i][2] * 1e4)};
+    const auto [it, added] = at.try_emplace(key, static_cast<uint32_t>(at.size() + 1));
+    corner[i] = it->second;  // IFC counts corners from 1
+    if (!added) continue;
+    coords += coords.empty() ? "(" : ",(";
+    for (int k = 0; k < 3; ++k) {
+      if (k) coords += ',';
+      append_step_real(coords, static_cast<double>(key[static_cast<size_t>(k)]) / 1e4);
+    }
+    coords += ')';
+  }
+  for (size_t i = 0; i + 2 < indices.size(); i += 3) {
+    const uint32_t a = corner[indices[i]], b = corner[indices[i + 1]], c = corner[indices[i + 2]];
+    if (a == b || b == c || a == c) continue;  // a sliver closed up by the rounding
+    faces += fmt::format("{}({},{},{})", faces.empty() ? "" : ",", a, b, c);
+  }
+  const int64_t list = w_.add("IFCCARTESIANPOINTLIST3D(({}))", coords);
+  // Not closed of itself: a screen's sheet is open where its tiles fill it, and they where it
+  // holds them.
+  const int64_t s = w_.add("IFCTRIANGULATEDFACESET({},$,.F.,({}),$)", ref(list), faces);
+  w_.add("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour)));
+  return s;
+}
+
+int64_t IfcGeometryWriter::representation_map(int64_t item) {
+  const int64_t rep =
+      w_.add("IFCSHAPEREPRESENTATION({},'Body','Tessellation',({}))", ref(body_), ref(item));
+  return w_.add("IFCREPRESENTATIONMAP({},{})", ref(world_), ref(rep));
+}
+
+int64_t IfcGeometryWriter::mapped(int64_t map, const std::array<double, 3>& origin,
+                                  const std::array<double, 2>& x) {
+  auto once = [&](const std::array<double, 3>& d) {
+    auto it = directions_.find(d);
+    return it != directions_.end() ? it->second : directions_[d] = direction(d[0], d[1], d[2]);
+  };
+  const int64_t op =
+      w_.add("IFCCARTESIANTRANSFORMATIONOPERATOR3D({},{},{},1.,{})", ref(once({x[0], x[1], 0})),
+             ref(once({0, 0, 1})), ref(point(origin[0], origin[1], origin[2])),
+             ref(once({x[1], -x[0], 0})));
+  return w_.add("IFCMAPPEDITEM({},{})", ref(map), ref(op));
+}
+
+int64_t IfcGeometryWriter::mapped_body(const std::vector<int64_t>& items) {
+  const int64_t rep = w_.add("IFCSHAPEREPRESENTATION({},'Body','MappedRepresentation',{})",
+                             ref(body_), step_refs(items));
   return w_.add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
 }
 

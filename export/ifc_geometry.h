@@ -63,6 +63,16 @@ class IfcGeometryWriter {
                const std::array<double, 3>& ref);
   // The product's shape: a 'Body' representation of `items`.
   int64_t body(const std::vector<int64_t>& items);
+  // A surface given by its triangles (3-D points, mm; corners counter-clockwise seen from
+  // outside), in its colour: a sheet rolled to an arc, which no extrusion draws, or a tile of
+  // it; the solid is their sum.
+  int64_t triangles(const std::vector<std::array<double, 3>>& points,
+                    const std::vector<uint32_t>& indices, const Rgb& colour);
+  // A shape drawn once and placed many times (a screen's tiles): its map, and a copy of it
+  // moved to `origin` (absolute, mm) with its x, y and z along `x`, up and `x` x up.
+  int64_t representation_map(int64_t item);
+  int64_t mapped(int64_t map, const std::array<double, 3>& origin, const std::array<double, 2>& x);
+  int64_t mapped_body(const std::vector<int64_t>& items);
 
  private:
   int64_t point(double x, double y);

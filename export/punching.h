@@ -2,7 +2,9 @@
 // it): one row per fabrication sheet — its ID, material, thickness, the stock sheet it is cut
 // from, its own area, the offcut (stock less the sheet's area), its open share, and the hits
 // of each punch ("D12" the 12 mm punch; "outline" merged openings cut along their outline) —
-// then a row "total" that sums them.
+// then its façade on a building, its blank (width and height; a sheet rolled to an arc developed
+// at mid-thickness) and the inside radius it is rolled to (empty: flat); then a row "total"
+// that sums them.
 #pragma once
 
 #include <ostream>

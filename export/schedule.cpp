@@ -75,13 +75,14 @@ std::string stock_size_of(const Layout& layout, const Element& e) {
 }
 
 std::string lot_text(const Layout& layout, const Element& e, size_t index) {
+  // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in (on a
+  // building too: a sheet stands on one façade).
+  if (e.sheet >= 0) return layout.sheets[static_cast<size_t>(e.sheet)].id;
   // A building's units are lotted by façade (a corner unit by the face holding its middle), so
   // that lots.csv gives each façade's quantities, unless the recipe asks for lots by size.
   if (!layout.frames.empty() && layout.ordering.lot_rows == 0 && layout.ordering.lot_size == 0)
     return framed_facade(layout, e)->name;
-  // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in.
-  return e.sheet >= 0 ? layout.sheets[static_cast<size_t>(e.sheet)].id
-                      : std::to_string(lot_of(e, index, layout.ordering));
+  return std::to_string(lot_of(e, index, layout.ordering));
 }
 
 int64_t lot_of(const Element& e, size_t index, const OrderingKeys& ordering) {

@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <sstream>
 
+#include "building_support.h"
 #include "export_support.h"
 #include "kinds/perforation.h"
 #include "layout_support.h"
@@ -51,7 +53,18 @@ TEST(Punching, ARowPerSheetWithItsStockAndHitsAndATotal) {
     area += std::stod(rows[r][5]);
   }
   EXPECT_NEAR(std::stod(total[5]), area, 1e-6);
-  for (size_t c = 8; c < rows[0].size(); ++c) {
+  // The hits, then each sheet's blank: a flat sheet's is the sheet, on no façade, not rolled.
+  const size_t blank = rows[0].size() - 4;
+  EXPECT_EQ(rows[0][blank], "facade");
+  EXPECT_EQ(rows[0][blank + 1], "blank_width_mm");
+  EXPECT_EQ(rows[0][blank + 3], "bend_radius_mm");
+  for (size_t r = 1; r + 1 < rows.size(); ++r) {
+    EXPECT_EQ(rows[r][blank], "");
+    EXPECT_NEAR(std::stod(rows[r][blank + 1]), layout.sheets[r - 1].area.w, 0.005);
+    EXPECT_NEAR(std::stod(rows[r][blank + 2]), layout.sheets[r - 1].area.h, 0.005);
+    EXPECT_EQ(rows[r][blank + 3], "");
+  }
+  for (size_t c = 8; c < blank; ++c) {
     uint64_t sum = 0;
     for (size_t r = 1; r + 1 < rows.size(); ++r) sum += std::stoull(rows[r][c]);
     EXPECT_EQ(std::stoull(total[c]), sum) << rows[0][c];
@@ -59,6 +72,43 @@ TEST(Punching, ARowPerSheetWithItsStockAndHitsAndATotal) {
       EXPECT_EQ(sum, openings[rows[0][c]]) << rows[0][c];
     }
   }
+}
+
+// A screen along a curve: its sheets cut within each leg, those on the arc rolled to it, their
+// blanks developed at mid-thickness.
+TEST(Punching, ARolledSheetsBlankIsDevelopedAtMidThicknessWithItsBendRadius) {
+  const Layout layout = test::lay_recipe(R"(name = "screen"
+seed = 2
+[lattice]
+base = 2
+dimension = 2
+[[curds]]
+probabilities = ["0.9", "0.8", "0.8"]
+[layout]
+kind = "perforation"
+cell = [50, 50]
+thickness = 3
+holes = [{ diameter = 20 }]
+sheet_size = [1250, 2500]
+[layout.building]
+path = [[0, 0], { centre = [0, 8000], sweep = 30 }, [4000, 3000]]
+height = 1600
+)");
+  std::ostringstream out;
+  write_punching_csv(out, layout);
+  const auto rows = strict_csv(out.str().substr(3));
+  const double arc = 8000 * M_PI / 6;  // 4188.8 mm: four sheets of a quarter of it
+  ASSERT_GE(rows.size(), 7u);
+  const size_t blank = rows[0].size() - 4;
+  ASSERT_EQ(layout.frames.size(), 2u);
+  const std::string arc_facade = layout.frames[0].name, straight = layout.frames[1].name;
+  EXPECT_EQ(rows[1][0], "S-" + arc_facade + "-R1-C1");
+  EXPECT_EQ(rows[1][blank], arc_facade);
+  EXPECT_NEAR(std::stod(rows[1][blank + 1]), arc / 4 * (8000 - 1.5) / 8000, 0.005);
+  EXPECT_NEAR(std::stod(rows[1][blank + 2]), 1600, 1e-9);
+  EXPECT_EQ(rows[1][blank + 3], "7997.0");            // the inside of the bend
+  EXPECT_EQ(rows[5][0], "S-" + straight + "-R1-C1");  // the straight leg, flat
+  EXPECT_EQ(rows[5][blank + 3], "");
 }
 
 }  // namespace

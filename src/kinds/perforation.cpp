@@ -26,8 +26,8 @@ std::string PerforationKind::laying_line(const Layout& layout) const {
 }
 
 std::vector<std::string> PerforationKind::own_keys() const {
-  return {"holes",      "thickness", "min_diameter", "min_bridge", "edge_margin",   "fix",
-          "sheet_size", "punches",   "open_area",    "outline",    "sheet_material"};
+  return {"holes",      "thickness", "min_diameter", "min_bridge", "edge_margin",    "fix",
+          "sheet_size", "punches",   "open_area",    "outline",    "sheet_material", "building"};
 }
 
 std::unique_ptr<KindKeys> PerforationKind::default_keys() const {
@@ -37,6 +37,17 @@ std::unique_ptr<KindKeys> PerforationKind::default_keys() const {
 void PerforationKind::read_own(reading::TableReader& r, const Design& design,
                                LayoutSpec& spec) const {
   reading::read_perforation(r, design, spec);
+  if (r.get("building")) reading::read_perforated_building(r, spec);
+}
+
+Layout PerforationKind::build(const Design& design, const CurdField& field, const Box& view,
+                              const LayoutSpec& spec) const {
+  Layout layout = SurfaceKind::build(design, field, view, spec);
+  if (const auto& envelope = spec.own<PerforationKeys>().envelope) {
+    layout.frames = envelope->facades;
+    layout.closed_envelope = envelope->closed;
+  }
+  return layout;
 }
 
 void PerforationKind::replace_cells(Layout& layout, const Design& design,

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "building/building.h"
 #include "curdle/curd.h"
 #include "kinds/surface_kind.h"
 #include "layout/layout.h"
@@ -39,6 +40,10 @@ struct PerforationKeys : KindKeysOf<PerforationKeys> {
   std::vector<double> punches;  // the tools' diameters: every opening is one of them; empty: any
   std::optional<std::array<double, 2>> open_area;  // [min, max] share each sheet must be open
   std::string sheet_material = "sheet metal";      // what the sheets are, for the order list
+  // [layout.building]: the screen is a building's envelope (or a free-standing screen's path)
+  // unrolled, its fabrication sheets cut within each façade and, on an arc, rolled to it.
+  std::optional<BuildingKeys> building;
+  std::optional<Envelope> envelope;
 };
 
 class PerforationKind : public SurfaceKind {
@@ -57,6 +62,8 @@ class PerforationKind : public SurfaceKind {
   std::string size_line(const Layout& layout) const override;
   std::string laying_line(const Layout& layout) const override;
   std::unique_ptr<KindKeys> default_keys() const override;
+  Layout build(const Design& design, const CurdField& field, const Box& view,
+               const LayoutSpec& spec) const override;
 
  protected:
   reading::SurfaceKeys surface() const override { return {"cell", "sheet", true, false, false}; }
@@ -72,6 +79,9 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec);
 namespace reading {
 // The kind's own keys: holes, thickness, fabrication rules, sheets, punches, open area.
 void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec);
+// [layout.building] of a screen: its plan or path, height and arcs (building/building.h); the
+// screen's size is the envelope's, its sheets cut within each façade.
+void read_perforated_building(TableReader& r, LayoutSpec& spec);
 }  // namespace reading
 
 // The least material between two openings made of these circles (negative when they overlap).

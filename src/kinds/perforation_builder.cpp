@@ -9,6 +9,7 @@
 #include "curdle/stop.h"
 #include "kinds/perforation.h"
 #include "layout/contour_clip.h"
+#include "layout/surface_frame.h"
 #include "layout/union.h"
 #include "layout/zone.h"
 
@@ -241,12 +242,9 @@ void apply_rules(std::vector<Hole>& holes, Layout& layout, const PerforationKeys
   }
 }
 
-// Fabrication sheets of at most `size`: every opening keeps the edge margin inside its own
-// sheet, so one that crosses a seam or comes within the margin of it is dropped (the stated
-// rule), and reported.
-void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const PerforationKeys& keys) {
-  if (!keys.sheet_size) return;
-  const double sw = (*keys.sheet_size)[0], sh = (*keys.sheet_size)[1];
+// The fabrication sheets of a flat surface: rows and columns of at most the sheet size from
+// the origin, the last of each cut to the surface.
+void flat_sheets(Layout& layout, double sw, double sh) {
   const int nx = static_cast<int>(std::ceil(layout.width / sw - 1e-9));
   const int ny = static_cast<int>(std::ceil(layout.height / sh - 1e-9));
   for (int j = 0; j < ny; ++j)
@@ -254,13 +252,66 @@ void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const Perforation
       layout.sheets.push_back({fmt::format("S-R{}-C{}", j + 1, i + 1),
                                Rect{i * sw, j * sh, std::min(sw, layout.width - i * sw),
                                     std::min(sh, layout.height - j * sh)}});
+}
+
+// A screen on a building: each façade cut into columns of equal width no wider than a sheet
+// (a sheet never turns a corner), rows of at most a sheet's height from the base; a sheet on
+// an arc is rolled to it, its blank developed at mid-thickness.
+void facade_sheets(Layout& layout, const Envelope& env, double sw, double sh, double t) {
+  for (const SurfaceFrame& f : env.facades) {
+    const double height = f.height > 0 ? f.height : env.height;
+    const int nx = std::max(1, static_cast<int>(std::ceil(f.length / sw - 1e-9)));
+    const int ny = std::max(1, static_cast<int>(std::ceil(height / sh - 1e-9)));
+    const double w = f.length / nx;
+    const double outer = frame_radius(f);
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        Layout::FabricationSheet s{fmt::format("S-{}-R{}-C{}", f.name, j + 1, i + 1),
+                                   Rect{f.start + i * w, j * sh, w, std::min(sh, height - j * sh)}};
+        s.facade = f.name;
+        if (outer > 0) {
+          s.bend_radius = std::min(outer, frame_radius_behind(f, t));
+          s.developed = frame_radius_behind(f, t / 2) / outer;
+        }
+        layout.sheets.push_back(std::move(s));
+      }
+  }
+}
+
+// The sheet that holds (x, y), or -1.
+int sheet_holding(const Layout& layout, double x, double y) {
+  for (size_t k = 0; k < layout.sheets.size(); ++k) {
+    const Rect& a = layout.sheets[k].area;
+    if (x >= a.x && x < a.right() && y >= a.y && y < a.top()) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+// Fabrication sheets of at most `size`: every opening keeps the edge margin inside its own
+// sheet, so one that crosses a seam or comes within the margin of it is dropped (the stated
+// rule), and reported.
+void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const PerforationKeys& keys) {
+  if (!keys.sheet_size && !keys.envelope) return;
+  const std::array<double, 2> size =
+      keys.sheet_size.value_or(std::array<double, 2>{layout.width, layout.height});
+  const double sw = size[0], sh = size[1];
+  if (keys.envelope)
+    facade_sheets(layout, *keys.envelope, sw, sh, keys.thickness);
+  else
+    flat_sheets(layout, sw, sh);
+  const int nx = static_cast<int>(std::ceil(layout.width / sw - 1e-9));
+  const int ny = static_cast<int>(std::ceil(layout.height / sh - 1e-9));
   for (Hole& h : holes) {
     if (h.dropped) continue;
     const Circle& first = h.parts.front();
-    const int i = std::clamp(static_cast<int>(first.cx / sw), 0, nx - 1);
-    const int j = std::clamp(static_cast<int>(first.cy / sh), 0, ny - 1);
-    const int index = j * nx + i;
-    const Rect& a = layout.sheets[index].area;
+    const int index = keys.envelope ? sheet_holding(layout, first.cx, first.cy)
+                                    : std::clamp(static_cast<int>(first.cy / sh), 0, ny - 1) * nx +
+                                          std::clamp(static_cast<int>(first.cx / sw), 0, nx - 1);
+    if (index < 0) {  // above a lower façade's top
+      h.dropped = true;
+      continue;
+    }
+    const Rect& a = layout.sheets[static_cast<size_t>(index)].area;
     double gap = 1e300;
     for (const Circle& c : h.parts) {
       const double r = c.d / 2;
@@ -273,7 +324,7 @@ void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const Perforation
       layout.violations.push_back(
           fmt::format("{}: {:.2f} mm from the edge of sheet {}, below {:.2f} mm; dropped "
                       "(openings never cross a seam)",
-                      h.element.id, gap, layout.sheets[index].id, clear));
+                      h.element.id, gap, layout.sheets[static_cast<size_t>(index)].id, clear));
       h.dropped = true;
     } else {
       h.element.sheet = index;

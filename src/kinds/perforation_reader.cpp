@@ -129,4 +129,38 @@ void read_perforation(TableReader& r, const Design& design, LayoutSpec& spec) {
   }
 }
 
+void read_perforated_building(TableReader& r, LayoutSpec& spec) {
+  for (const char* key : {"outline", "site", "sheet"})
+    if (r.get(key))
+      r.fail(key,
+             "does not go with [layout.building]: the screen is the building's envelope, as "
+             "high as layout.building.height and as long as its plan or path");
+  if (spec.origin != Corner::bottom_left)
+    r.fail("origin", "a screen on a building starts at its start corner, bottom left");
+  // What a brick wall is made of, or openings in it, a screen of sheets does not have yet.
+  const toml::table& t = *r.get("building")->as_table();
+  for (const char* key : {"wall", "backing", "depth", "phase", "openings", "windows", "elevations",
+                          "coursed_openings"})
+    if (const toml::node* n = t.get(key))
+      r.fail_node(*n, r.key_path("building") + "." + key,
+                  std::string("is not a key of a perforated screen on a building: it takes plan "
+                              "(or path, or site), height, heights, storey, storeys, base, start "
+                              "and arcs; its sheet is layout.thickness deep") +
+                      (std::string_view(key) == "openings" || std::string_view(key) == "windows"
+                           ? ", and it has no windows or doors"
+                           : ""));
+  if (const toml::node* arcs = t.get("arcs"); arcs && arcs->value<std::string>() == "chords")
+    r.fail_node(*arcs, r.key_path("building.arcs"),
+                "a perforated sheet on an arc is rolled to it: arcs = \"bent\" (the default "
+                "for a screen); for flat sheets on chords, give the plan the chords as straight "
+                "edges");
+  PerforationKeys& keys = spec.own<PerforationKeys>();
+  ReadBuilding read = read_building(r, spec, true);
+  keys.building = std::move(read.keys);
+  keys.envelope = std::move(read.envelope);
+  keys.envelope->depth = keys.thickness;
+  if (!keys.building->site_summary.empty()) spec.site_summary = keys.building->site_summary;
+  spec.size = std::array<double, 2>{keys.envelope->length, keys.envelope->height};
+}
+
 }  // namespace curdle::reading

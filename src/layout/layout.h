@@ -402,6 +402,12 @@ struct Layout {
     // Openings per tool: "D22.6" for a punch of 22.6 mm, "outline" for merged openings cut
     // along their outline; in order of the tool's name.
     std::vector<std::pair<std::string, uint64_t>> tools;
+    // On a building: the façade it stands on, and where that is an arc the sheet is rolled to
+    // it: the inside radius of the bend, and the blank's length per mm of the outer face (the
+    // blank is developed at mid-thickness). Flat: radius 0, the blank the sheet.
+    std::string facade;
+    double bend_radius = 0;
+    double developed = 1;
   };
   std::vector<FabricationSheet> sheets;
   // What they are cut from: the stock sheet's size (layout.sheet_size, or the whole surface)

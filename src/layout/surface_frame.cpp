@@ -20,6 +20,12 @@ Arc arc_of(const SurfaceFrame& f) {
 
 double frame_radius(const SurfaceFrame& f) { return f.bulge == 0 ? 0 : arc_of(f).radius; }
 
+double frame_radius_behind(const SurfaceFrame& f, double inward) {
+  if (f.bulge == 0) return 0;
+  const Arc arc = arc_of(f);
+  return arc.sweep > 0 ? arc.radius - inward : arc.radius + inward;  // as frame_point goes in
+}
+
 std::array<double, 2> frame_direction(const SurfaceFrame& f, double u) {
   if (f.bulge == 0) {
     const double dx = f.to[0] - f.from[0], dy = f.to[1] - f.from[1];

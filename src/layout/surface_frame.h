@@ -39,6 +39,10 @@ BuildingPoint frame_point(const SurfaceFrame& frame, double u, double v, double 
 // The radius of an arc frame's outer face, mm; 0 for a straight one.
 double frame_radius(const SurfaceFrame& frame);
 
+// The radius of the surface `inward` mm behind an arc frame's outer face (smaller where the
+// arc bows out, larger where it bows in), mm; 0 for a straight one.
+double frame_radius_behind(const SurfaceFrame& frame, double inward);
+
 // The outer face's horizontal direction along the frame at u (unit vector, plan).
 std::array<double, 2> frame_direction(const SurfaceFrame& frame, double u);
 

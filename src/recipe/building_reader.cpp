@@ -135,7 +135,7 @@ void read_wall(TableReader& r, BuildingKeys& b) {
   }
 }
 
-ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
+ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec, bool bent_by_default) {
   const toml::table* t = read_table(layout, "building");
   if (!t)
     layout.fail("building", "must be a table: [layout.building] with plan (or path) and height");
@@ -207,6 +207,7 @@ ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec) {
     b.phase = read_int(r, "phase", 0, 0, int64_t{1} << 30);
   }
   b.coursed_openings = read_bool(r, "coursed_openings", true);
+  b.bent_on_arcs = bent_by_default;
   if (const auto arcs = read_string(r, "arcs", "how units lie on an arc")) {
     if (*arcs != "chords" && *arcs != "bent")
       r.fail("arcs",

@@ -75,12 +75,14 @@ std::vector<BuildingOpening> read_site_elevations(TableReader& building, const L
 
 // [layout.building] (facade): a building's plan or a free-standing wall's path, its height,
 // base, unit depth and openings (building/building.h), and the envelope they make, checked
-// where they were read.
+// where they were read. `bent_by_default`: units on an arc are bent to it unless arcs says
+// otherwise (a screen's rolled sheets).
 struct ReadBuilding {
   BuildingKeys keys;
   Envelope envelope;
 };
-ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec);
+ReadBuilding read_building(TableReader& layout, const LayoutSpec& spec,
+                           bool bent_by_default = false);
 
 // [[layout.zones]], after the surface's size (tile, paving, facade).
 void read_zones(TableReader& r, const Design& design, LayoutSpec& spec);

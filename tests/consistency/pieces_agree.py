@@ -206,6 +206,17 @@ def glb_nodes(path, upright):
     return out
 
 
+def glb_markers(path):
+    """Per named node of a binary glTF that has no mesh (a screen's opening, marked at the
+    middle of its face): its place in building millimetres (x east, y north, z up)."""
+    data = open(path, "rb").read()
+    length, _ = struct.unpack_from("<I4s", data, 12)
+    doc = json.loads(data[20:20 + length])
+    return {n["name"]: (n["translation"][0] * 1000, -n["translation"][2] * 1000,
+                        n["translation"][1] * 1000)
+            for n in doc["nodes"] if n.get("name") and "mesh" not in n and "translation" in n}
+
+
 def glb_faces(path):
     """Per named node of a building's binary glTF: the outer face of each of its boxes, as
     (centre, along, half length, half height) in building millimetres (x east, y north, z up):
@@ -319,8 +330,11 @@ def in_runs(eid, runs):
 
 
 def check(curdle, recipe, out, corner):
+    with open(recipe, "rb") as f:
+        kind = tomllib.load(f).get("layout", {}).get("kind", "tile")
+    outputs = "schedule.csv,quantities.csv,layout.dxf,layout.glb,layout.svg,install.svg,sheets"
     args = [curdle, "generate", recipe, "--out", out,
-            "--outputs", "schedule.csv,quantities.csv,layout.dxf,layout.glb,layout.svg,install.svg,sheets"]
+            "--outputs", outputs + (",punching.csv" if kind == "perforation" else "")]
     if corner:
         args += ["--set", f'layout.origin="{corner}"']
     run = subprocess.run(args, capture_output=True, text=True)
@@ -331,11 +345,10 @@ def check(curdle, recipe, out, corner):
     rows = read_csv(os.path.join(out, "schedule.csv"))
     boxes, ids = dxf_pieces(os.path.join(out, "layout.dxf"))
     drawn = install_boxes(os.path.join(out, "install.svg"))
-    with open(recipe, "rb") as f:
-        kind = tomllib.load(f).get("layout", {}).get("kind", "tile")
     building = "building" in layout_table(recipe)
     modelled = glb_nodes(os.path.join(out, "layout.glb"), kind in ("facade", "façade", "rhythm", "perforation"))
     faces = glb_faces(os.path.join(out, "layout.glb")) if building else {}
+    markers = glb_markers(os.path.join(out, "layout.glb")) if building else {}
     named, ranges = svg_ids(os.path.join(out, "layout.svg"))
     runs = ids_in_ranges(ranges)
     sheet_offsets = {}
@@ -347,7 +360,12 @@ def check(curdle, recipe, out, corner):
         if building:  # x, y, z in the building; the strip's drawings from strip_x, strip_y
             point = (x, y, float(row["z_mm"]))
             f = faces.get(eid, [])
-            if not on_a_face(point, f, len(f) == 1):
+            if row["element_type"] == "opening":  # a screen's: its node marks its face's middle
+                m = markers.get(eid)
+                if m is None or max(abs(u - v) for u, v in zip(m, point)) > 0.01:
+                    fail(f"{where}: {eid} at {point} in the schedule is marked at {m} in "
+                         f"layout.glb")
+            elif not on_a_face(point, f, len(f) == 1):
                 fail(f"{where}: {eid} at {point} in the schedule is on no face of its node in "
                      f"layout.glb")
             x, y = float(row["strip_x_mm"]), float(row["strip_y_mm"])
@@ -430,20 +448,40 @@ def check(curdle, recipe, out, corner):
         fail(f"{where}: the schedule's areas do not add up to the quantities' laid areas for "
              f"{wrong[:3]}: {[by_line.get(k) for k in wrong[:3]]} vs {[lines.get(k) for k in wrong[:3]]} mm2")
     # Sheet DXFs are in millimetres from each sheet's corner; the schedule's lot names the sheet.
+    # A sheet rolled to an arc is drawn as its blank: its length along the arc developed at
+    # mid-thickness, (r + t/2) / (r + t) of the outer face's for an inside radius r where the arc
+    # bows out, (r + t/2) / r where it bows in.
     if os.path.isdir(sheets):
         by_sheet = {}
         for row in rows:
             by_sheet.setdefault(row["lot"], []).append(row)
+        punched = {r["sheet_id"]: r for r in read_csv(os.path.join(out, "punching.csv"))} \
+            if building and os.path.exists(os.path.join(out, "punching.csv")) else {}
         for name, members in by_sheet.items():
             path = os.path.join(sheets, name + ".dxf")
             if not os.path.exists(path):
                 fail(f"{where}: no {name}.dxf for its openings")
                 continue
             sboxes, sids = dxf_pieces(path)
+            k = 1.0
+            if building:  # on the strip; rolled: the blank's scale, from its two outermost IDs
+                placed = sorted((float(r["strip_x_mm"]) + float(r["width_mm"]) / 2, sids[r["element_id"]][0])
+                                for r in members if r["element_id"] in sids)
+                if len(placed) >= 2 and placed[-1][0] - placed[0][0] > 1:
+                    k = (placed[-1][1] - placed[0][1]) / (placed[-1][0] - placed[0][0])
+                radius = punched.get(name, {}).get("bend_radius_mm", "")
+                t = float(punched.get(name, {}).get("thickness_mm") or 0)
+                wanted = [1.0] if not radius else [(float(radius) + t / 2) / (float(radius) + t),
+                                                   (float(radius) + t / 2) / float(radius)]
+                if not any(abs(k - u) < 1e-6 for u in wanted):
+                    fail(f"{where}: {name}.dxf is drawn at {k:.7f} of the strip, not {wanted}")
             for row in members:
                 eid = row["element_id"]
                 x, y = float(row["x_mm"]), float(row["y_mm"])
+                if building:
+                    x, y = float(row["strip_x_mm"]), float(row["strip_y_mm"])
                 w, h = float(row["width_mm"]), float(row["height_mm"])
+                x = (x + w / 2) * k - w / 2  # its middle where the blank has it; a hole keeps its size
                 p = sids.get(eid)
                 if p is None:
                     fail(f"{where}: {eid} missing from {name}.dxf")

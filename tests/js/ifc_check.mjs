@@ -15,7 +15,7 @@
 import fs from 'fs';
 import path from 'path';
 import * as W from 'web-ifc';
-import { boxMiss, buildingMiss, csvRows, expectedBox, isBuilding } from './schedule_rows.mjs';
+import { boxMiss, buildingMiss, csvRows, expectedBox, isBuilding, isFramedScreen } from './schedule_rows.mjs';
 
 const api = new W.IfcAPI();
 await api.Init();
@@ -236,6 +236,28 @@ function facingArea(model, id, normal) {
   return area;
 }
 
+// The volume a plate's mesh encloses (metres³, by the divergence theorem over its triangles):
+// a rolled sheet's metal, which no one direction shows.
+function enclosedVolume(model, id) {
+  let volume = 0;
+  api.StreamMeshes(model, [id], (mesh) => {
+    for (let g = 0; g < mesh.geometries.size(); ++g) {
+      const placed = mesh.geometries.get(g);
+      const geometry = api.GetGeometry(model, placed.geometryExpressID);
+      const v = api.GetVertexArray(geometry.GetVertexData(), geometry.GetVertexDataSize());
+      const ix = api.GetIndexArray(geometry.GetIndexData(), geometry.GetIndexDataSize());
+      const T = placed.flatTransformation;
+      const p = (k) => [0, 1, 2].map((a) => T[a] * v[6 * k] + T[4 + a] * v[6 * k + 1] + T[8 + a] * v[6 * k + 2] + T[12 + a]);
+      for (let t = 0; t < ix.length; t += 3) {
+        const [a, b, c] = [p(ix[t]), p(ix[t + 1]), p(ix[t + 2])];
+        volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+      }
+      geometry.delete();
+    }
+  });
+  return volume;
+}
+
 function check(dir) {
   const problems = [];
   const rows = csvRows(fs.readFileSync(path.join(dir, 'schedule.csv'), 'utf8'));
@@ -259,6 +281,7 @@ function check(dir) {
     }
   }
   const building = isBuilding(rows);
+  const screen = isFramedScreen(rows);  // its openings are rows, placed on its façades
   if (building)  // a building's openings are its walls', not schedule rows
     for (const [tag, e] of byTag) if (e.type === W.IFCOPENINGELEMENT) byTag.delete(tag);
   const byId = new Map([...byTag.values()].map((e) => [e.id, e]));
@@ -302,12 +325,12 @@ function check(dir) {
   const upright = first ? Math.abs(placementFrame(model, first.line.ObjectPlacement.value, frames)[3][2]) < 0.5 : false;
   let worst = 0;
   const built = building ? buildingProblems(model, dir, problems) : null;
-  const curved = building && JSON.parse(fs.readFileSync(path.join(dir, 'report.json'), 'utf8')).layout.facades.some((f) => f.curved);
+  const curved = (building || screen) && JSON.parse(fs.readFileSync(path.join(dir, 'report.json'), 'utf8')).layout.facades.some((f) => f.curved);
   for (const row of rows) {
     const e = byTag.get(row.element_id);
     if (!e) continue;
-    if (building) {  // its face's middle on its mesh's outside, at its course's height
-      const extent = meshes.get(e.id);
+    if (building || screen) {  // its face's middle on its mesh's outside, at its course's height
+      const extent = e.type === W.IFCOPENINGELEMENT ? outlineExtent(model, e, frames) : meshes.get(e.id);
       if (!extent) { problems.push(`${row.element_id}: no mesh`); continue; }
       const miss = buildingMiss(extent, row, curved);
       worst = Math.max(worst, miss);
@@ -333,7 +356,10 @@ function check(dir) {
   for (let i = 0; i < plates.size(); ++i) {
     const plate = plates.get(i);
     const { NetArea: net, GrossArea: gross } = sets.get(plate)?.Qto_PlateBaseQuantities ?? {};
-    const area = facingArea(model, plate, upright ? [0, 0, 1] : [0, 1, 0]);  // out of the sheet
+    // Out of the sheet; a sheet rolled to an arc faces every way, and its metal is its volume.
+    const width = sets.get(plate)?.Qto_PlateBaseQuantities?.Width;
+    const area = screen ? enclosedVolume(model, plate) / (width / 1000)
+                        : facingArea(model, plate, upright ? [0, 0, 1] : [0, 1, 0]);
     // Within 5 % of the open area: the holes' polygons lie within the chord tolerance of their
     // circles, and a sheet without its holes would miss by all of it.
     if (!(Math.abs(area - net) <= 0.05 * (gross - net))) problems.push(`sheet #${plate}: ${area.toFixed(5)} m² of metal, ${net} net of ${gross}`);

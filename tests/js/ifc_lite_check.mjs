@@ -14,7 +14,7 @@ import fs from 'fs';
 import path from 'path';
 import * as Lite from '@ifc-lite/parser';
 import init, { IfcAPI } from '@ifc-lite/wasm';
-import { boxMiss, buildingMiss, csvRows, expectedBox, isBuilding } from './schedule_rows.mjs';
+import { boxMiss, buildingMiss, csvRows, expectedBox, isBuilding, isFramedScreen } from './schedule_rows.mjs';
 
 await init({ module_or_path: fs.readFileSync(new URL('./node_modules/@ifc-lite/wasm/pkg/ifc-lite_bg.wasm', import.meta.url)) });
 const geometry = new IfcAPI();
@@ -200,6 +200,14 @@ async function check(dir) {
   const storeys = building ? storeyProblems(store, meshes, problems) : '';
   for (const plate of store.entityIndex.byType.get('IFCPLATE') ?? [])
     if (!meshes.has(plate)) problems.push(`sheet #${plate}: no mesh`);
+  if (isFramedScreen(rows)) {  // a screen on a building: each opening's middle in a sheet's mesh
+    const sheets = (store.entityIndex.byType.get('IFCPLATE') ?? []).map((p) => meshes.get(p)).filter(Boolean);
+    for (const row of rows) {
+      const p = [Number(row.x_mm) / 1000, Number(row.z_mm) / 1000, -Number(row.y_mm) / 1000];
+      const inside = (e) => [0, 1, 2].every((a) => p[a] >= e[a] - 1e-6 && p[a] <= e[3 + a] + 1e-6);
+      if (!sheets.some(inside)) problems.push(`${row.element_id}: in no sheet's mesh`);
+    }
+  }
   const name = path.basename(dir);
   if (problems.length) {
     console.log(`${name}: ${problems.length} problems`);

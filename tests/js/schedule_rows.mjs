@@ -37,8 +37,11 @@ export function boxMiss(e, box) {
 }
 
 // A building's schedule (layout.building): each row's x, y, z is the middle of the unit's outer
-// face in the building (mm, x east, y north, z up), and its façade is named.
-export function isBuilding(rows) { return rows.length > 0 && 'facade' in rows[0]; }
+// face in the building (mm, x east, y north, z up), and its façade is named. A building's walls
+// have units; a perforated screen on a building (or along a path) has only openings.
+const framed = (rows) => rows.length > 0 && 'facade' in rows[0];
+export function isBuilding(rows) { return framed(rows) && rows.some((r) => r.element_type !== 'opening'); }
+export function isFramedScreen(rows) { return framed(rows) && !isBuilding(rows); }
 
 // How far a building unit's mesh extent [min x, y, z, max x, y, z] (metres, Y up, Z towards the
 // viewer, south) lies from what its row says: its course's height about z, and the middle of
