@@ -8,6 +8,7 @@
 
 #include "layout/contour.h"
 #include "layout/drawing_sheet.h"
+#include "layout/layout_kind.h"
 
 namespace curdle {
 namespace {
@@ -44,7 +45,15 @@ std::vector<CurvedFacade> curved_facades(const Layout& layout, double step) {
     c.chord = std::hypot(f.to[0] - f.from[0], f.to[1] - f.from[1]);
     c.convex = f.bulge > 0;
     const double r = c.radius, l = layout.module_w, j = layout.joint, depth = layout.thickness;
-    if (f.bent) {
+    const bool screen = layout.kind && layout.kind->ground() == Ground::sheet;
+    const double inside = c.convex ? r - depth : r;  // a rolled sheet's bend
+    if (screen) {  // sheets rolled to it, their openings in cells of `l`
+      c.unit_chord = bent_chord(r, l);
+      c.units = fmt::format(
+          "sheets rolled to the arc, {:.1f} mm inside radius; their blanks developed at "
+          "mid-thickness (punching.csv, sheets/)",
+          inside);
+    } else if (f.bent) {
       c.unit_chord = bent_chord(r, l);
       c.units = fmt::format(
           "{:g} mm units bent to the arc (as ordered), each over a chord of "
@@ -72,9 +81,10 @@ std::vector<CurvedFacade> curved_facades(const Layout& layout, double step) {
         point(c.to), std::fabs(c.sweep), drawing_mm(f.length), drawing_mm(c.chord));
     c.brief[0] = fmt::format("façade {}: radius {} mm round centre {}", f.name, drawing_mm(r),
                              point(c.centre));
-    c.brief[1] = f.bent ? fmt::format("units bent to it, a chord of {:.1f} mm each", c.unit_chord)
-                        : fmt::format("chord {:g} mm a unit; joints {:g} mm face, {:.1f} mm back",
-                                      l, j, c.joint_back);
+    c.brief[1] = screen   ? fmt::format("sheets rolled to it, {:.1f} mm inside radius", inside)
+                 : f.bent ? fmt::format("units bent to it, a chord of {:.1f} mm each", c.unit_chord)
+                          : fmt::format("chord {:g} mm a unit; joints {:g} mm face, {:.1f} mm back",
+                                        l, j, c.joint_back);
     out.push_back(std::move(c));
   }
   return out;
