@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "layout/layout_kind.h"
 #include "layout/piece.h"
 
 namespace curdle {
@@ -112,6 +113,11 @@ LaidFace laid_face(const Element& e, double length) {
 
 }  // namespace
 
+std::array<double, 2> framed_depth(const Layout& layout, const Element& e) {
+  if (layout.kind && layout.kind->stands_off()) return {-layout.thickness, 0};
+  return {0, e.depth > 0 ? e.depth : layout.thickness};
+}
+
 Rect framed_strip_bounds(const Layout& layout, const Element& e) {
   const LaidFace f = laid_face(e, layout.width);
   const Rect b = laid_bounds(e);
@@ -120,6 +126,7 @@ Rect framed_strip_bounds(const Layout& layout, const Element& e) {
 
 BuildingPoint framed_centre(const Layout& layout, const Element& e) {
   const LaidFace f = laid_face(e, layout.width);
+  const double face = framed_depth(layout, e)[0];
   const double middle = wrap_along((f.from + f.to) / 2, layout.width);
   // On the chord of the face the middle lies on, as the 3-D writers lay it: a straight unit on
   // a curve lies inside the arc.
@@ -132,9 +139,13 @@ BuildingPoint framed_centre(const Layout& layout, const Element& e) {
     const BuildingPoint a = frame_point(*s.frame, lo, f.v, 0);
     const BuildingPoint b = frame_point(*s.frame, hi, f.v, 0);
     const double t = (middle - lo) / (hi - lo);
-    return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2]};
+    // A fin's edge stands off the chord square to it, as framed_boxes stands it.
+    const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
+    const double ox = len > 0 ? (b[1] - a[1]) / len * -face : 0;
+    const double oy = len > 0 ? -(b[0] - a[0]) / len * -face : 0;
+    return {a[0] + (b[0] - a[0]) * t + ox, a[1] + (b[1] - a[1]) * t + oy, a[2]};
   }
-  return frame_point(*frame_at(layout.frames, middle), middle, f.v, 0);
+  return frame_point(*frame_at(layout.frames, middle), middle, f.v, face);
 }
 
 const SurfaceFrame* framed_facade(const Layout& layout, const Element& e) {

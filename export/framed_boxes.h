@@ -28,11 +28,17 @@ std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& strip_rect
 std::vector<FramedBox> framed_backing(const Layout& layout, const Rect& strip_rect, double set_back,
                                       double depth, double longest);
 
+// How far behind the outer face a piece runs, mm: a unit from the face to its depth (a header
+// by its length), a fin standing off the face from its thickness in front of it (negative) to
+// the face.
+std::array<double, 2> framed_depth(const Layout& layout, const Element& e);
+
 // A piece's box on the strip, a unit round the closing corner in one piece: its part at the
 // strip's start taken on past the end (x + w may pass the strip's length).
 Rect framed_strip_bounds(const Layout& layout, const Element& e);
 
-// Where a piece of the strip lies in the building: the middle of its laid outer face (a unit
+// Where a piece of the strip lies in the building: the middle of its laid outer face (a fin's
+// edge standing off the wall; a unit
 // that turns the closing corner measured round it; a unit on a curve, on its chord, or on the
 // facet that holds it where it is bent to the arc), mm.
 BuildingPoint framed_centre(const Layout& layout, const Element& e);

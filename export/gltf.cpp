@@ -517,7 +517,10 @@ void add_framed_pieces(Scene& sc) {
                     : mortar;
   const double mortar_to = layout.backed ? layout.backing_from : t;
   int part = 0;
-  for (const Rect& r : subtract(Rect{0, 0, layout.width, layout.height}, layout.holes())) {
+  // Mortar shows in joints; fins standing off a wall have none.
+  const bool jointed = !layout.kind->stands_off();
+  for (const Rect& r : jointed ? subtract(Rect{0, 0, layout.width, layout.height}, layout.holes())
+                               : std::vector<Rect>{}) {
     for (const FramedBox& f : framed_backing(layout, r, kSetBack, mortar_to, 600)) {
       tinygltf::Node n = sc.framed_node(f, mortar);
       n.name = "mortar-" + std::to_string(part++);
@@ -538,8 +541,9 @@ void add_framed_pieces(Scene& sc) {
       continue;
     }
     std::vector<FramedBox> boxes;
-    for (const Rect& r : e.shape) {  // a header runs into the wall by its length
-      const std::vector<FramedBox> more = framed_boxes(layout, r, 0, e.depth > 0 ? e.depth : t);
+    const std::array<double, 2> depth = framed_depth(layout, e);  // a header runs in further
+    for (const Rect& r : e.shape) {
+      const std::vector<FramedBox> more = framed_boxes(layout, r, depth[0], depth[1]);
       boxes.insert(boxes.end(), more.begin(), more.end());
     }
     if (boxes.size() == 1) {

@@ -61,10 +61,11 @@ size_t IfcEnvelopeWriter::facade_of(const Element& e) const {
 
 IfcEnvelopeWriter::Placed IfcEnvelopeWriter::unit(const Element& e, int64_t container,
                                                   const Rgb& colour) {
-  const double t = e.depth > 0 ? e.depth : l_.thickness;  // a header runs in by its length
+  const std::array<double, 2> depth = framed_depth(l_, e);  // a header runs in by its length
+  const double t = depth[1] - depth[0];
   std::vector<FramedBox> boxes;
   for (const Rect& r : e.shape) {
-    const std::vector<FramedBox> more = framed_boxes(l_, r, 0, t);
+    const std::vector<FramedBox> more = framed_boxes(l_, r, depth[0], depth[1]);
     boxes.insert(boxes.end(), more.begin(), more.end());
   }
   const Axes own = face_axes(boxes.front());

@@ -131,18 +131,26 @@ std::string joint_taper(const SurfaceFrame& f, const LayoutSpec& spec, double de
   const bool convex = f.bulge > 0;  // the face outside the curve: the joints close behind it
   const auto [sagitta, back] = chord_fit(r, l, j, depth, convex);
   if (back < kNarrowestJoint) {
+    // Joints no wider than the least they may close to fit no curve: only wider ones do.
     const double least = depth * (l + j) / (j - kNarrowestJoint);
+    const std::string remedy =
+        j > kNarrowestJoint
+            ? fmt::format("use a radius of at least {:.0f} mm, shorter units or wider joints",
+                          std::ceil(least))
+            : fmt::format(
+                  "straight units need joints wider than {:g} mm to lie on a curve, or "
+                  "units bent to it (arcs = \"bent\")",
+                  kNarrowestJoint);
     refuse(
         path ? "path" : "plan",
         fmt::format("façade {} curves on a radius of {:.0f} mm, too tight for {:g} mm units "
-                    "{:g} mm deep with {:g} mm joints: {} (a joint must keep {:g} mm); use a "
-                    "radius of at least {:.0f} mm, shorter units or wider joints",
+                    "{:g} mm deep with {:g} mm joints: {} (a joint must keep {:g} mm); {}",
                     f.name, r, l, depth, j,
                     back < 0 ? fmt::format("the units would run {:.1f} mm into each other at "
                                            "the back",
                                            -back)
                              : fmt::format("the joints would close to {:.1f} mm at the back", back),
-                    kNarrowestJoint, std::ceil(least)));
+                    kNarrowestJoint, remedy));
   }
   return fmt::format(
       "façade {} is curved, radius {:.0f} mm at its face ({}): its {:g} mm units "

@@ -138,7 +138,10 @@ void read_perforated_building(TableReader& r, LayoutSpec& spec) {
   if (spec.origin != Corner::bottom_left)
     r.fail("origin", "a screen on a building starts at its start corner, bottom left");
   // What a brick wall is made of, or openings in it, a screen of sheets does not have yet.
-  const toml::table& t = *r.get("building")->as_table();
+  const toml::table* building = r.get("building")->as_table();
+  if (!building)
+    r.fail("building", "must be a table: [layout.building] with plan (or path) and height");
+  const toml::table& t = *building;
   for (const char* key : {"wall", "backing", "depth", "phase", "openings", "windows", "elevations",
                           "coursed_openings"})
     if (const toml::node* n = t.get(key))

@@ -21,7 +21,7 @@ std::string RhythmKind::size_line(const Layout& layout) const {
 }
 
 std::vector<std::string> RhythmKind::keys() const {
-  return {"sheet", "bay", "height", "length", "widths", "origin"};
+  return {"sheet", "bay", "height", "length", "widths", "origin", "building"};
 }
 
 std::unique_ptr<KindKeys> RhythmKind::default_keys() const {
@@ -31,6 +31,47 @@ std::unique_ptr<KindKeys> RhythmKind::default_keys() const {
 CellPlacement RhythmKind::cell_placement(const LayoutSpec&, const Box&) const {
   return {};  // the bays take their widths from the values: cells are the line's units
 }
+
+namespace {
+
+// [layout.building] of a line of fins: the line is the envelope unrolled, the fins its height.
+void read_fins_round(reading::TableReader& r, Design& design, LayoutSpec& spec, bool field_given) {
+  using namespace reading;
+  for (const char* key : {"length", "height", "origin"})
+    if (r.get(key))
+      r.fail(key,
+             "does not go with [layout.building]: the fins run along its plan or path from its "
+             "start corner, as high as layout.building.height");
+  const toml::table* building = r.get("building")->as_table();
+  if (!building)
+    r.fail("building", "must be a table: [layout.building] with plan (or path) and height");
+  const toml::table& t = *building;
+  for (const char* key : {"wall", "backing", "depth", "phase", "openings", "windows", "elevations",
+                          "coursed_openings", "heights", "storeys"})
+    if (const toml::node* n = t.get(key))
+      r.fail_node(*n, r.key_path("building") + "." + key,
+                  "is not a key of fins on a building: they take plan (or path, or site), "
+                  "height, storey, base, start and arcs");
+  // The fins are the building's height: one course of it.
+  const auto height = t.get("height") ? finite_number(t.get("height")) : std::nullopt;
+  if (height && *height >= 1 && *height <= 1e6) spec.module_h = *height;
+  RhythmKeys& keys = spec.own<RhythmKeys>();
+  // A fin on an arc stands square to it, a plate of its own: no joints to close behind it, as
+  // there would be behind units bent to it (read so; stand_round stands them straight).
+  ReadBuilding read = read_building(r, spec, true);
+  keys.building = std::move(read.keys);
+  keys.envelope = std::move(read.envelope);
+  if (!keys.building->site_summary.empty()) spec.site_summary = keys.building->site_summary;
+  spec.size = std::array<double, 2>{keys.envelope->length, keys.envelope->height};
+  const auto bays = static_cast<int64_t>(std::ceil(keys.envelope->length / spec.module_w - 1e-9));
+  if (field_given && design.field.size[0] < bays)
+    r.fail("building", fmt::format("needs {} bays round the building but field.cells is {}; "
+                                   "leave field.cells out, or make it at least that large",
+                                   bays, design.field.size[0]));
+  if (!field_given) design.field.size[0] = bays;
+}
+
+}  // namespace
 
 void RhythmKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
                       bool field_given) const {
@@ -59,6 +100,10 @@ void RhythmKind::read(reading::TableReader& r, Design& design, LayoutSpec& spec,
                       std::to_string(static_cast<int>(spec.module_w)) + " mm)");
     spec.own<RhythmKeys>().widths.push_back(*x);
   }
+  if (r.get("building")) {
+    read_fins_round(r, design, spec, field_given);
+    return;
+  }
   if (r.get("length")) {
     const double length = read_mm(r, "length", 0, 1);
     spec.size = std::array<double, 2>{length, spec.module_h};
@@ -77,7 +122,32 @@ Layout RhythmKind::build(const Design& design, const CurdField& field, const Box
   Layout layout = lay_grid(design, field, view, spec, {});
   count_values(layout, design, spec);
   set_rhythm(layout, spec);
+  if (const auto& envelope = spec.own<RhythmKeys>().envelope) stand_round(layout, *envelope);
   return layout;
+}
+
+void stand_round(Layout& layout, const Envelope& envelope) {
+  layout.frames = envelope.facades;
+  for (SurfaceFrame& f : layout.frames) f.bent = false;  // a fin is a straight plate
+  layout.closed_envelope = envelope.closed;
+  // A fin stands on one face: one whose bay would take it round a corner (or past a path's
+  // end) is left out, and said.
+  std::vector<Element> fins;
+  size_t turning = 0;
+  for (Element& e : layout.elements) {
+    const Rect& r = e.shape.front();
+    const SurfaceFrame* f = frame_at(layout.frames, r.x + r.w / 2);
+    if (!f || r.x < f->start - 1e-9 || r.right() > f->start + f->length + 1e-9) {
+      ++turning;
+      continue;
+    }
+    fins.push_back(std::move(e));
+  }
+  layout.elements = std::move(fins);
+  if (turning)
+    layout.notes.push_back(
+        fmt::format("{} {} at a corner (or past the end) left out: a fin stands on one face",
+                    turning, turning == 1 ? "fin that would turn" : "fins that would turn"));
 }
 
 void set_rhythm(Layout& layout, const LayoutSpec& spec) {

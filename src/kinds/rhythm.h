@@ -2,14 +2,20 @@
 // colonnade — whose element widths and colours follow the values.
 #pragma once
 
+#include <optional>
 #include <vector>
 
+#include "building/building.h"
 #include "layout/layout.h"
 
 namespace curdle {
 
 struct RhythmKeys : KindKeysOf<RhythmKeys> {
   std::vector<double> widths;  // per value, the element's width in its bay, mm; 0: no element
+  // [layout.building]: the line runs round a building's plan (or along a path), the fins
+  // standing off its face, as high as the building.
+  std::optional<BuildingKeys> building;
+  std::optional<Envelope> envelope;
 };
 
 class RhythmKind : public LayoutKind {
@@ -21,6 +27,7 @@ class RhythmKind : public LayoutKind {
   int dimension() const override { return 1; }
   double thickness(const LayoutSpec&) const override { return 300; }  // fins stand out
   bool upright() const override { return true; }
+  bool stands_off() const override { return true; }
   Finish finish() const override { return {0.9, 0.8}; }
   Ground ground() const override { return Ground::paper; }
   Depiction depiction() const override { return Depiction::shapes; }
@@ -36,5 +43,9 @@ class RhythmKind : public LayoutKind {
 
 // Narrows each bay's element to its value's width, centred in the bay; drops zero widths.
 void set_rhythm(Layout& layout, const LayoutSpec& spec);
+
+// Stands the fins round a building's envelope: its frames place them, and a fin whose width
+// would cross a corner is left out, with a note.
+void stand_round(Layout& layout, const Envelope& envelope);
 
 }  // namespace curdle

@@ -47,7 +47,12 @@ std::vector<CurvedFacade> curved_facades(const Layout& layout, double step) {
     const double r = c.radius, l = layout.module_w, j = layout.joint, depth = layout.thickness;
     const bool screen = layout.kind && layout.kind->ground() == Ground::sheet;
     const double inside = c.convex ? r - depth : r;  // a rolled sheet's bend
-    if (screen) {  // sheets rolled to it, their openings in cells of `l`
+    const bool fins = layout.kind && layout.kind->stands_off();
+    if (fins) {  // plates square to it
+      c.unit_chord = l;
+      c.units = fmt::format(
+          "fins standing square to the arc, {:g} mm off its face, a bay of {:g} mm each", depth, l);
+    } else if (screen) {  // sheets rolled to it, their openings in cells of `l`
       c.unit_chord = bent_chord(r, l);
       c.units = fmt::format(
           "sheets rolled to the arc, {:.1f} mm inside radius; their blanks developed at "
@@ -81,7 +86,8 @@ std::vector<CurvedFacade> curved_facades(const Layout& layout, double step) {
         point(c.to), std::fabs(c.sweep), drawing_mm(f.length), drawing_mm(c.chord));
     c.brief[0] = fmt::format("façade {}: radius {} mm round centre {}", f.name, drawing_mm(r),
                              point(c.centre));
-    c.brief[1] = screen   ? fmt::format("sheets rolled to it, {:.1f} mm inside radius", inside)
+    c.brief[1] = fins     ? fmt::format("fins square to it, {:g} mm off its face", depth)
+                 : screen ? fmt::format("sheets rolled to it, {:.1f} mm inside radius", inside)
                  : f.bent ? fmt::format("units bent to it, a chord of {:.1f} mm each", c.unit_chord)
                           : fmt::format("chord {:g} mm a unit; joints {:g} mm face, {:.1f} mm back",
                                         l, j, c.joint_back);

@@ -77,6 +77,9 @@ class LayoutKind {
   virtual bool upright() const { return false; }
   virtual bool bedded() const { return false; }
   virtual Finish finish() const { return {}; }
+  // On a building: whether what is laid stands off the wall's face by its thickness (fins),
+  // rather than in the wall behind it (bricks, panels, sheets).
+  virtual bool stands_off() const { return false; }
 
   // On drawings: what shows behind the elements, how they are drawn, whether they are laid in
   // numbered rows and columns from a start corner, and the title block's line on its size.
