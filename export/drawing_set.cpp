@@ -37,7 +37,8 @@ struct Quantity {
 };
 
 // Sheet 1's legend, a swatch and a line each: a park's materials as planted and built, else one
-// line a product with its values, count, cut pieces and area.
+// line a product with its values, count, cut pieces and area; a building's units then by part
+// (stretchers, headers, closers, each special), as quantities.csv has them.
 std::vector<std::pair<std::vector<Rgb>, std::string>> sheet_legend(const Layout& layout) {
   std::vector<std::pair<std::vector<Rgb>, std::string>> rows;
   if (layout.kind->depiction() == Depiction::objects) {
@@ -63,6 +64,13 @@ std::vector<std::pair<std::vector<Rgb>, std::string>> sheet_legend(const Layout&
                         ? e.parts
                         : std::vector<Rgb>{e.colour},
                     line});
+  }
+  if (!layout.frames.empty()) {  // a building's units by part, as quantities.csv orders them
+    std::map<std::string, uint64_t> by_part;
+    for (const Element& e : layout.elements) ++by_part[element_type_of(layout, e)];
+    if (by_part.size() > 1)
+      for (const auto& [part, n] : by_part)
+        rows.push_back({{}, fmt::format("all tones, {}: {}", part, n)});
   }
   if (layout.backed) {  // a one-brick wall: the backing behind its face, unseen but laid
     size_t backing = 0, cut = 0;
@@ -145,7 +153,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
       cairo_fill(cr);
     }
     colour(cr, kInk);
-    box(cr, x, y, 8, 4, 0.2);
+    if (!parts.empty()) box(cr, x, y, 8, 4, 0.2);  // a line of a breakdown has no swatch
     text(cr, x + 10, y + 3.4, fit_lines(cr, {line}, column_w - 12, 2)[0], 2);
   }
   scale_bar(cr, w - kMargin - title_width(w), strip - 6, s.scale, title_width(w) - 20);

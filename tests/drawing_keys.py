@@ -7,7 +7,8 @@ every course it says it holds ("courses 51 to 106"). Sheet 1 names every zone of
 ([[layout.zones]]), drawn where it lies. A curved wall's sheet 1 sets its arc out (radius,
 centre, the offsets from its chord, the joints' taper), and each of its sheets states the radius,
 the centre, a unit's chord and the taper. A one-brick wall's backing, counted in quantities.csv,
-is counted on sheet 1's legend and, sheet by sheet, behind the pieces each holds.
+is counted on sheet 1's legend and, sheet by sheet, behind the pieces each holds; a building's
+units are counted by part there too (stretchers, headers, closers, each special).
 
 Usage: drawing_keys.py CURDLE SOURCE_DIR PATTERN...
 """
@@ -85,6 +86,15 @@ for pattern in patterns:
                            if str(c) not in numbers]
                 if missing:
                     failures.append(f"{pattern} sheet {page}: courses {missing[:5]} not numbered")
+        # A building's units by part on sheet 1's legend, as schedule.csv types them.
+        rows = list(csv.DictReader(io.StringIO(text, newline="")))
+        parts = collections.Counter(r["element_type"] for r in rows if r.get("facade"))
+        if len(parts) > 1:
+            for part, n in parts.items():
+                said = re.search(re.escape(f"all tones, {part}: ") + r"(\d+)", flat_first)
+                if not said or int(said[1]) != n:
+                    failures.append(f"{pattern} sheet 1: {n} of {part} in the schedule, "
+                                    f"{said[1] if said else 'none'} on its legend")
         legend = re.search(r"behind the face, [^:]+: (\d+) bricks", " ".join(first.split()))
         if backing and (not legend or int(legend[1]) != backing or behind != backing):
             failures.append(f"{pattern}: quantities.csv counts {backing} backing bricks, sheet 1 "
@@ -95,7 +105,8 @@ for pattern in patterns:
         print(f"{pattern}: {pages - 1} installer's sheets, {checked} materials found in their keys,"
               f" {sum(keyed.values())} pieces counted in them, {len(zones)} zones named on sheet 1"
               + (", the arc set out" if curved else "")
-              + (f", {backing} backing bricks on sheet 1 and behind each sheet's" if backing else ""))
+              + (f", {backing} backing bricks on sheet 1 and behind each sheet's" if backing else "")
+              + (f", {len(parts)} parts on sheet 1" if len(parts) > 1 else ""))
 for f in failures[:20]:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)

@@ -12,6 +12,8 @@
 #include "export/measure_files.h"
 #include "export/report_json.h"
 #include "kinds/facade.h"
+#include "kinds/perforation.h"
+#include "kinds/rhythm.h"
 #include "layout/builder.h"
 #include "layout/cell_placement.h"
 #include "layout/legend.h"
@@ -79,9 +81,17 @@ ordered_json surface_json(const LayoutSpec& spec) {
 
 // A building's façades on its unrolled strip, for the page to mark its corners and name its
 // faces over the curd; null for any other layout.
+// The envelope a kind laid round a building (a façade's bricks, a screen's sheets, fins).
+const Envelope* envelope_of(const LayoutSpec& spec) {
+  const std::optional<Envelope>* e = nullptr;
+  if (spec.kind->name() == "facade") e = &spec.own<FacadeKeys>().envelope;
+  if (spec.kind->name() == "perforation") e = &spec.own<PerforationKeys>().envelope;
+  if (spec.kind->name() == "rhythm") e = &spec.own<RhythmKeys>().envelope;
+  return e && *e ? &**e : nullptr;
+}
+
 ordered_json building_json(const LayoutSpec& spec) {
-  if (spec.kind->name() != "facade") return nullptr;
-  const auto& envelope = spec.own<FacadeKeys>().envelope;
+  const Envelope* envelope = envelope_of(spec);
   if (!envelope) return nullptr;
   ordered_json facades = ordered_json::array();
   for (const SurfaceFrame& f : envelope->facades)

@@ -46,6 +46,10 @@ Layout PerforationKind::build(const Design& design, const CurdField& field, cons
   if (const auto& envelope = spec.own<PerforationKeys>().envelope) {
     layout.frames = envelope->facades;
     layout.closed_envelope = envelope->closed;
+    if (envelope->closed)  // unlike a façade's bricks, the cells are not laid as a ring
+      layout.notes.push_back(
+          "round the plan the screen's field is laid from its start corner, its seam where the "
+          "strip's end meets its start (layout.building.start moves it)");
   }
   return layout;
 }

@@ -144,6 +144,10 @@ void stand_round(Layout& layout, const Envelope& envelope) {
     fins.push_back(std::move(e));
   }
   layout.elements = std::move(fins);
+  if (envelope.closed)
+    layout.notes.push_back(
+        "round the plan the fins' field is laid from its start corner, its seam where the "
+        "strip's end meets its start (layout.building.start moves it)");
   if (turning)
     layout.notes.push_back(
         fmt::format("{} {} at a corner (or past the end) left out: a fin stands on one face",
