@@ -296,4 +296,11 @@ OpeningTile tile_of(const Layout& layout, const Element& e) {
   return opening_tile(e.circle->d, layout.chord_tolerance);
 }
 
+std::vector<int64_t> tile_shape(const OpeningTile& tile) {
+  std::vector<int64_t> shape;
+  for (const auto& [x, y] : tile.hole)
+    shape.push_back(std::llround(x * 1e6)), shape.push_back(std::llround(y * 1e6));
+  return shape;
+}
+
 }  // namespace curdle

@@ -67,4 +67,7 @@ FramedPose tile_pose(const Layout& layout, const Element& opening);
 // The tile of an opening (sheet_tiles.h) from its pose's origin.
 OpeningTile tile_of(const Layout& layout, const Element& opening);
 
+// A tile's shape to a nanometre: openings alike share one mesh (glTF) or map (IFC).
+std::vector<int64_t> tile_shape(const OpeningTile& tile);
+
 }  // namespace curdle

@@ -301,10 +301,7 @@ void add_framed_screen(Scene& sc) {
     stop_point();
     const Element& e = layout.elements[i];
     const OpeningTile tile = tile_of(layout, e);
-    std::vector<int64_t> shape;
-    for (const auto& [x, y] : tile.hole)
-      shape.push_back(std::llround(x * 1e6)), shape.push_back(std::llround(y * 1e6));
-    auto [it, added] = tile_meshes.try_emplace(std::move(shape), 0);
+    auto [it, added] = tile_meshes.try_emplace(tile_shape(tile), 0);
     if (added) {
       std::vector<Vec3> tp, tn;
       std::vector<uint32_t> ti;

@@ -374,10 +374,7 @@ class IfcModel {
       const Element& e = l_.elements[i];
       if (e.sheet != static_cast<int>(k)) continue;
       const OpeningTile tile = tile_of(l_, e);
-      std::vector<int64_t> shape;
-      for (const auto& [x, y] : tile.hole)
-        shape.push_back(std::llround(x * 1e6)), shape.push_back(std::llround(y * 1e6));
-      auto [it, added] = tile_maps_.try_emplace(std::move(shape), 0);
+      auto [it, added] = tile_maps_.try_emplace(tile_shape(tile), 0);
       if (added) {
         std::vector<Vec3> p, n;
         std::vector<uint32_t> idx;

@@ -50,6 +50,17 @@ inline std::string building_recipe(const std::string& layout, const std::string&
          layout + "[layout.building]\n" + building;
 }
 
+// A perforated screen of 3 mm sheet, 20 mm openings on a 50 mm grid, 1.6 m high along `path`
+// (an arc of 8 m radius from (0, 0) sweeping 30°, unless given); `layout` adds [layout] keys.
+inline std::string screen_recipe(
+    const std::string& layout = "",
+    const std::string& path = "[[0, 0], { centre = [0, 8000], sweep = 30 }]") {
+  return "name = \"screen\"\nseed = 2\n[lattice]\nbase = 2\ndimension = 2\n[[curds]]\n"
+         "probabilities = [\"0.9\", \"0.8\", \"0.8\"]\n[layout]\nkind = \"perforation\"\n"
+         "cell = [50, 50]\nthickness = 3\nholes = [{ diameter = 20 }]\n" +
+         layout + "[layout.building]\npath = " + path + "\nheight = 1600\n";
+}
+
 inline Layout lay_recipe(const std::string& text, uint64_t seed = 0) {
   const Recipe r = parse_recipe(text, "building.toml");
   const Design& d = r.design;

@@ -48,22 +48,7 @@ TEST(CurvedFacade, TheGardenWallIsSetOutByCentreRadiusEndsAndChordOffsets) {
 }
 
 TEST(CurvedFacade, AScreensSheetsAreRolledToTheArc) {
-  const Layout l = test::lay_recipe(R"(name = "screen"
-seed = 2
-[lattice]
-base = 2
-dimension = 2
-[[curds]]
-probabilities = ["0.9", "0.8", "0.8"]
-[layout]
-kind = "perforation"
-cell = [50, 50]
-thickness = 3
-holes = [{ diameter = 20 }]
-[layout.building]
-path = [[0, 0], { centre = [0, 8000], sweep = 30 }]
-height = 1600
-)");
+  const Layout l = test::lay_recipe(test::screen_recipe());
   const std::vector<CurvedFacade> arcs = curved_facades(l);
   ASSERT_EQ(arcs.size(), 1u);
   EXPECT_EQ(arcs[0].brief[1], "sheets rolled to it, 7997.0 mm inside radius");

@@ -77,23 +77,8 @@ TEST(Punching, ARowPerSheetWithItsStockAndHitsAndATotal) {
 // A screen along a curve: its sheets cut within each leg, those on the arc rolled to it, their
 // blanks developed at mid-thickness.
 TEST(Punching, ARolledSheetsBlankIsDevelopedAtMidThicknessWithItsBendRadius) {
-  const Layout layout = test::lay_recipe(R"(name = "screen"
-seed = 2
-[lattice]
-base = 2
-dimension = 2
-[[curds]]
-probabilities = ["0.9", "0.8", "0.8"]
-[layout]
-kind = "perforation"
-cell = [50, 50]
-thickness = 3
-holes = [{ diameter = 20 }]
-sheet_size = [1250, 2500]
-[layout.building]
-path = [[0, 0], { centre = [0, 8000], sweep = 30 }, [4000, 3000]]
-height = 1600
-)");
+  const Layout layout = test::lay_recipe(test::screen_recipe(
+      "sheet_size = [1250, 2500]\n", "[[0, 0], { centre = [0, 8000], sweep = 30 }, [4000, 3000]]"));
   std::ostringstream out;
   write_punching_csv(out, layout);
   const auto rows = strict_csv(out.str().substr(3));

@@ -211,10 +211,8 @@ function buildingProblems(model, dir, problems) {
   return { walls: facades.length, openings, storeys: storeyProblems(model, problems) };
 }
 
-// The area of a plate's faces that look along `normal` (metres², web-ifc's frame): the sheet
-// as punched, holes out.
-function facingArea(model, id, normal) {
-  let area = 0;
+// Each triangle of a product's meshes, placed (metres, web-ifc's frame): fn(a, b, c).
+function eachTriangle(model, id, fn) {
   api.StreamMeshes(model, [id], (mesh) => {
     for (let g = 0; g < mesh.geometries.size(); ++g) {
       const placed = mesh.geometries.get(g);
@@ -223,15 +221,21 @@ function facingArea(model, id, normal) {
       const ix = api.GetIndexArray(geometry.GetIndexData(), geometry.GetIndexDataSize());
       const T = placed.flatTransformation;
       const p = (k) => [0, 1, 2].map((a) => T[a] * v[6 * k] + T[4 + a] * v[6 * k + 1] + T[8 + a] * v[6 * k + 2] + T[12 + a]);
-      for (let t = 0; t < ix.length; t += 3) {
-        const [a, b, c] = [p(ix[t]), p(ix[t + 1]), p(ix[t + 2])];
-        const u = [0, 1, 2].map((k) => b[k] - a[k]), w = [0, 1, 2].map((k) => c[k] - a[k]);
-        const n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
-        const along = n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2];
-        if (along > 0) area += along / 2;
-      }
+      for (let t = 0; t < ix.length; t += 3) fn(p(ix[t]), p(ix[t + 1]), p(ix[t + 2]));
       geometry.delete();
     }
+  });
+}
+
+// The area of a plate's faces that look along `normal` (metres², web-ifc's frame): the sheet
+// as punched, holes out.
+function facingArea(model, id, normal) {
+  let area = 0;
+  eachTriangle(model, id, (a, b, c) => {
+    const u = [0, 1, 2].map((k) => b[k] - a[k]), w = [0, 1, 2].map((k) => c[k] - a[k]);
+    const n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
+    const along = n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2];
+    if (along > 0) area += along / 2;
   });
   return area;
 }
@@ -240,20 +244,8 @@ function facingArea(model, id, normal) {
 // a rolled sheet's metal, which no one direction shows.
 function enclosedVolume(model, id) {
   let volume = 0;
-  api.StreamMeshes(model, [id], (mesh) => {
-    for (let g = 0; g < mesh.geometries.size(); ++g) {
-      const placed = mesh.geometries.get(g);
-      const geometry = api.GetGeometry(model, placed.geometryExpressID);
-      const v = api.GetVertexArray(geometry.GetVertexData(), geometry.GetVertexDataSize());
-      const ix = api.GetIndexArray(geometry.GetIndexData(), geometry.GetIndexDataSize());
-      const T = placed.flatTransformation;
-      const p = (k) => [0, 1, 2].map((a) => T[a] * v[6 * k] + T[4 + a] * v[6 * k + 1] + T[8 + a] * v[6 * k + 2] + T[12 + a]);
-      for (let t = 0; t < ix.length; t += 3) {
-        const [a, b, c] = [p(ix[t]), p(ix[t + 1]), p(ix[t + 2])];
-        volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
-      }
-      geometry.delete();
-    }
+  eachTriangle(model, id, (a, b, c) => {
+    volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
   });
   return volume;
 }
