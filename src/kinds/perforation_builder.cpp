@@ -254,15 +254,25 @@ void flat_sheets(Layout& layout, double sw, double sh) {
                                     std::min(sh, layout.height - j * sh)}});
 }
 
+// Where a façade's sheets are: its first in layout.sheets, its columns' width and count.
+struct FacadeSheets {
+  double start = 0, end = 0, top = 0, width = 0;
+  int columns = 0, rows = 0;
+  size_t first = 0;
+};
+
 // A screen on a building: each façade cut into columns of equal width no wider than a sheet
 // (a sheet never turns a corner), rows of at most a sheet's height from the base; a sheet on
 // an arc is rolled to it, its blank developed at mid-thickness.
-void facade_sheets(Layout& layout, const Envelope& env, double sw, double sh, double t) {
+std::vector<FacadeSheets> facade_sheets(Layout& layout, const Envelope& env, double sw, double sh,
+                                        double t) {
+  std::vector<FacadeSheets> out;
   for (const SurfaceFrame& f : env.facades) {
     const double height = f.height > 0 ? f.height : env.height;
     const int nx = std::max(1, static_cast<int>(std::ceil(f.length / sw - 1e-9)));
     const int ny = std::max(1, static_cast<int>(std::ceil(height / sh - 1e-9)));
     const double w = f.length / nx;
+    out.push_back({f.start, f.start + f.length, height, w, nx, ny, layout.sheets.size()});
     const double outer = frame_radius(f);
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
@@ -276,15 +286,19 @@ void facade_sheets(Layout& layout, const Envelope& env, double sw, double sh, do
         layout.sheets.push_back(std::move(s));
       }
   }
+  return out;
 }
 
-// The sheet that holds (x, y), or -1.
-int sheet_holding(const Layout& layout, double x, double y) {
-  for (size_t k = 0; k < layout.sheets.size(); ++k) {
-    const Rect& a = layout.sheets[k].area;
-    if (x >= a.x && x < a.right() && y >= a.y && y < a.top()) return static_cast<int>(k);
-  }
-  return -1;
+// The sheet of a screen on a building that holds (x, y), or -1 (above a lower façade's top).
+int sheet_holding(const std::vector<FacadeSheets>& facades, double sh, double x, double y) {
+  auto f = std::upper_bound(facades.begin(), facades.end(), x,
+                            [](double u, const FacadeSheets& s) { return u < s.start; });
+  if (f == facades.begin()) return -1;
+  --f;
+  const int i = std::clamp(static_cast<int>((x - f->start) / f->width), 0, f->columns - 1);
+  const int j = static_cast<int>(y / sh);
+  if (x > f->end || y < 0 || y >= f->top || j >= f->rows) return -1;
+  return static_cast<int>(f->first) + j * f->columns + i;
 }
 
 // Fabrication sheets of at most `size`: every opening keeps the edge margin inside its own
@@ -295,8 +309,9 @@ void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const Perforation
   const std::array<double, 2> size =
       keys.sheet_size.value_or(std::array<double, 2>{layout.width, layout.height});
   const double sw = size[0], sh = size[1];
+  std::vector<FacadeSheets> facades;
   if (keys.envelope)
-    facade_sheets(layout, *keys.envelope, sw, sh, keys.thickness);
+    facades = facade_sheets(layout, *keys.envelope, sw, sh, keys.thickness);
   else
     flat_sheets(layout, sw, sh);
   const int nx = static_cast<int>(std::ceil(layout.width / sw - 1e-9));
@@ -304,7 +319,7 @@ void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const Perforation
   for (Hole& h : holes) {
     if (h.dropped) continue;
     const Circle& first = h.parts.front();
-    const int index = keys.envelope ? sheet_holding(layout, first.cx, first.cy)
+    const int index = keys.envelope ? sheet_holding(facades, sh, first.cx, first.cy)
                                     : std::clamp(static_cast<int>(first.cy / sh), 0, ny - 1) * nx +
                                           std::clamp(static_cast<int>(first.cx / sw), 0, nx - 1);
     if (index < 0) {  // above a lower façade's top
