@@ -270,8 +270,8 @@ struct TileSpan {
 };
 TileSpan tile_span(const Element& e) {
   if (e.outline) {
-    const std::array<double, 2> corner = outline_corner(e.outline->rings[0]);
-    return {corner[0], corner[0] + laid_bounds(e).w, corner[0], corner[1]};
+    const std::array<double, 4> box = outline_box(e.outline->rings[0]);
+    return {box[0], box[2], box[0], box[1]};
   }
   const Circle& c = *e.circle;
   return {c.cx - c.d / 2, c.cx + c.d / 2, c.cx, c.cy};

@@ -246,7 +246,8 @@ void add_sheet(Scene& sc) {
     std::array<double, 2> corner{};
     if (e.outline) {
       const Ring& ring = e.outline->rings[0];
-      corner = outline_corner(ring);
+      const std::array<double, 4> box = outline_box(ring);
+      corner = {box[0], box[1]};
       std::vector<std::array<double, 2>> shape;
       for (const auto& [x, y] : ring)
         shape.push_back({std::round((x - corner[0]) * 1e6), std::round((y - corner[1]) * 1e6)});

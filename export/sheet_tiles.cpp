@@ -21,34 +21,19 @@ Square square_of(const Circle& c) {
   return {c.cx - r, c.cy - r, c.cx + r, c.cy + r};
 }
 
-// A merged opening's box: the least rectangle round its one ring.
+// A merged opening's box: the least rectangle round its one ring, grown by kTileMargin on every
+// side. A union of polygonised circles runs along its least box at its extremes, where the
+// tile's triangulation could not tell the ring from the box; grown, the ring never touches it.
 Square box_of(const Ring& ring) {
   Square s{ring[0][0], ring[0][1], ring[0][0], ring[0][1]};
   for (const auto& [x, y] : ring)
     s = {std::min(s.x0, x), std::min(s.y0, y), std::max(s.x1, x), std::max(s.y1, y)};
-  return s;
+  return {s.x0 - kTileMargin, s.y0 - kTileMargin, s.x1 + kTileMargin, s.y1 + kTileMargin};
 }
 
-// Whether a ring runs along its box's side anywhere (more than touching it at a point): the
-// tile's triangulation could not tell the two apart there.
-bool runs_along_its_box(const Ring& ring) {
-  const Square b = box_of(ring);
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const auto& p = ring[i];
-    const auto& q = ring[(i + 1) % ring.size()];
-    if ((p[0] == q[0] && (p[0] == b.x0 || p[0] == b.x1)) ||
-        (p[1] == q[1] && (p[1] == b.y0 || p[1] == b.y1)))
-      return true;
-  }
-  return false;
-}
-
-// An opening drawn as a tile: a round one, or a merged one of a single ring that meets its box
-// only at points (as circles' unions do).
+// An opening drawn as a tile: a round one, or a merged one of a single ring.
 bool tileable(const Element& e) {
-  if (e.outline)
-    return e.outline->rings.size() == 1 && e.outline->rings[0].size() >= 3 &&
-           !runs_along_its_box(e.outline->rings[0]);
+  if (e.outline) return e.outline->rings.size() == 1 && e.outline->rings[0].size() >= 3;
   return e.circle && e.circle->d > 0;
 }
 
@@ -195,9 +180,9 @@ OpeningTile outline_tile(const Ring& ring) {
   return tile;
 }
 
-std::array<double, 2> outline_corner(const Ring& ring) {
+std::array<double, 4> outline_box(const Ring& ring) {
   const Square box = box_of(ring);
-  return {box.x0, box.y0};
+  return {box.x0, box.y0, box.x1, box.y1};
 }
 
 }  // namespace curdle

@@ -37,8 +37,10 @@ struct OpeningTile {
 OpeningTile opening_tile(double d, double tolerance);
 
 // The tile of a merged opening of one ring: the triangles between its box and its ring, and
-// the ring, clockwise, both from the box's lower-left corner, which outline_corner gives.
+// the ring, clockwise, both from the box's lower-left corner. Its box, as outline_box gives it
+// ([x0, y0, x1, y1]), is the least round the ring grown by kTileMargin.
+inline constexpr double kTileMargin = 0.01;  // mm
 OpeningTile outline_tile(const Ring& ring);
-std::array<double, 2> outline_corner(const Ring& ring);
+std::array<double, 4> outline_box(const Ring& ring);
 
 }  // namespace curdle

@@ -93,20 +93,26 @@ TEST(SheetTiles, AMergedOpeningClearOfTheRestIsATileOfItsBoxLessItsRing) {
   for (auto& [x, y] : touching.outline->rings[0]) x += 200;
   layout.elements.push_back(touching);                     // 2: its box meets 3's square
   layout.elements.push_back(round_opening(770, 270, 20));  // 3
-  Element along;                                           // 4: an L along two sides of its box
+  Element along;  // 4: an L along two sides of its least box: a tile of its grown box
   along.outline =
       Outline{{{{300, 300}, {360, 300}, {360, 330}, {330, 330}, {330, 360}, {300, 360}}}, 2700};
   layout.elements.push_back(along);
   const std::vector<Ring> sheet{{{0, 0}, {1000, 0}, {1000, 500}, {0, 500}}};
   const SheetTiles tiles = sheet_tiles(layout, sheet);
-  EXPECT_EQ(tiles.tiled, (std::vector<size_t>{0, 1}));
-  ASSERT_EQ(tiles.holes.size(), 3u);  // the second merged opening, the round one by it, the L
+  EXPECT_EQ(tiles.tiled, (std::vector<size_t>{0, 1, 4}));
+  ASSERT_EQ(tiles.holes.size(), 2u);  // the second merged opening and the round one by it
   for (const Ring& h : tiles.holes) EXPECT_LT(signed_area(h), 0);
   double squares = 0;
   for (const Ring& s : tiles.squares) squares -= signed_area(s);
-  EXPECT_NEAR(squares, 3600 + 400, 1e-9);  // the merged opening's box and the round one's
+  // The merged openings' boxes, each grown by kTileMargin a side, and the round one's square.
+  const double grown = 60 + 2 * kTileMargin;
+  EXPECT_NEAR(squares, 2 * grown * grown + 400, 1e-9);
   // The tile: from its box's corner, the box less the ring, and the ring clockwise.
-  EXPECT_EQ(outline_corner(ring), (std::array<double, 2>{500, 200}));
+  const std::array<double, 4> box = outline_box(ring);
+  EXPECT_NEAR(box[0], 500 - kTileMargin, 1e-12);
+  EXPECT_NEAR(box[1], 200 - kTileMargin, 1e-12);
+  EXPECT_NEAR(box[2], 560 + kTileMargin, 1e-12);
+  EXPECT_NEAR(box[3], 260 + kTileMargin, 1e-12);
   const OpeningTile tile = outline_tile(ring);
   double face = 0;
   for (const auto& t : tile.triangles) {
@@ -114,7 +120,7 @@ TEST(SheetTiles, AMergedOpeningClearOfTheRestIsATileOfItsBoxLessItsRing) {
     EXPECT_GT(a, 0);
     face += a;
   }
-  EXPECT_NEAR(face, 3600 - 1500, 1e-9);
+  EXPECT_NEAR(face, grown * grown - 1500, 1e-9);
   EXPECT_NEAR(signed_area(tile.hole), -1500, 1e-9);
 }
 
