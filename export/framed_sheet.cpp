@@ -242,11 +242,22 @@ FramedScreen framed_screen(const Layout& layout) {
   std::vector<Ring> outlines;  // every sheet's rectangle, counter-clockwise
   for (const Layout::FabricationSheet& s : layout.sheets) outlines.push_back(rect_polygon(s.area));
   const SheetTiles tiles = sheet_tiles(layout, outlines);
+  // The sheet that holds a ring's first point: the sheets tile the strip, so it is in the
+  // column that starts nearest before it (a few rows), or, on a column's edge, the one before.
+  std::vector<size_t> by_x(layout.sheets.size());
+  for (size_t k = 0; k < by_x.size(); ++k) by_x[k] = k;
+  std::sort(by_x.begin(), by_x.end(),
+            [&](size_t a, size_t b) { return layout.sheets[a].area.x < layout.sheets[b].area.x; });
   auto sheet_of = [&](const Ring& ring) {
     const auto& [x, y] = ring.front();
-    for (size_t k = 0; k < layout.sheets.size(); ++k) {
-      const Rect& a = layout.sheets[k].area;
-      if (x >= a.x && x <= a.right() && y >= a.y && y <= a.top()) return k;
+    auto it = std::upper_bound(by_x.begin(), by_x.end(), x,
+                               [&](double u, size_t k) { return u < layout.sheets[k].area.x; });
+    for (int column = 0; column < 2 && it != by_x.begin(); ++column) {
+      const double x0 = layout.sheets[*std::prev(it)].area.x;
+      while (it != by_x.begin() && layout.sheets[*std::prev(it)].area.x == x0) {
+        const Rect& a = layout.sheets[*--it].area;
+        if (x >= a.x && x <= a.right() && y >= a.y && y <= a.top()) return *it;
+      }
     }
     return layout.sheets.size();
   };
@@ -258,7 +269,9 @@ FramedScreen framed_screen(const Layout& layout) {
     if (const size_t k = sheet_of(h); k < out.rings.size()) out.rings[k].push_back(h);
   for (const Ring& q : tiles.squares)
     if (const size_t k = sheet_of(q); k < out.squares.size()) out.squares[k].push_back(q);
-  out.tiled = tiles.tiled;
+  out.tiled.resize(layout.sheets.size());
+  for (const size_t i : tiles.tiled)
+    out.tiled[static_cast<size_t>(layout.elements[i].sheet)].push_back(i);
   return out;
 }
 

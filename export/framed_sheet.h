@@ -50,7 +50,7 @@ void add_framed_sheet(const SurfaceFrame& frame, const std::vector<Ring>& rings,
 // (sheet_tiles.h), by sheet.
 struct FramedScreen {
   std::vector<std::vector<Ring>> rings, squares;
-  std::vector<size_t> tiled;  // indices in layout.elements
+  std::vector<std::vector<size_t>> tiled;  // indices in layout.elements, by sheet
 };
 FramedScreen framed_screen(const Layout& layout);
 

@@ -370,9 +370,8 @@ class IfcModel {
     std::vector<int64_t> items{
         g_.mapped(g_.representation_map(g_.triangles(mesh.positions, mesh.indices, colour)),
                   {0, 0, 0}, {1, 0})};
-    for (const size_t i : screen_.tiled) {
+    for (const size_t i : screen_.tiled[k]) {
       const Element& e = l_.elements[i];
-      if (e.sheet != static_cast<int>(k)) continue;
       const OpeningTile tile = tile_of(l_, e);
       auto [it, added] = tile_maps_.try_emplace(tile_shape(tile), 0);
       if (added) {

@@ -157,8 +157,10 @@ TEST(FramedSheet, TheCurvedScreensSheetsHoldTheMetalTheyAreOrderedWith) {
   ASSERT_EQ(l.sheets.size(), 9u);
   const FramedScreen screen = framed_screen(l);
   std::vector<FramedMesh> meshes(l.sheets.size());
-  for (const size_t i : screen.tiled) {  // each tile laid where it stands, as the writers do
+  for (size_t i = 0; i < l.elements.size(); ++i) {  // each tile where it stands, as written
     const Element& e = l.elements[i];
+    const std::vector<size_t>& on_sheet = screen.tiled[static_cast<size_t>(e.sheet)];
+    if (std::find(on_sheet.begin(), on_sheet.end(), i) == on_sheet.end()) continue;
     const OpeningTile tile = tile_of(l, e);
     std::vector<Vec3> p, n;
     std::vector<uint32_t> idx;
