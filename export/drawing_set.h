@@ -10,6 +10,8 @@
 
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "export/image.h"
 #include "layout/drawing_sheet.h"
@@ -27,6 +29,12 @@ struct OverviewSheet {
   double scale = 1;
 };
 OverviewSheet overview_sheet(const Layout& layout);
+
+// Sheet 1's legend, a swatch (none, one, or a kept element's stripes) and a line each: a park's
+// materials as planted and built, else one line a product with its values, count, cut pieces
+// and area; a building's units then by part (stretchers, headers, closers, each special), as
+// quantities.csv has them, and a one-brick wall's backing (drawing_set_legend.cpp).
+std::vector<std::pair<std::vector<Rgb>, std::string>> sheet_legend(const Layout& layout);
 
 // The drawing set as PDF 1.5: sheet 1 and the installer's sheets of `plan`.
 void write_layout_pdf(std::ostream& out, const Layout& layout, const InstallerPlan& plan);

@@ -309,6 +309,21 @@ OpeningTile tile_of(const Layout& layout, const Element& e) {
   return opening_tile(e.circle->d, layout.chord_tolerance);
 }
 
+void add_tile_solid(bool upright, const OpeningTile& tile, double thickness,
+                    std::vector<Vec3>& positions, std::vector<Vec3>& normals,
+                    std::vector<uint32_t>& indices) {
+  add_caps(upright, tile.triangles, 0, thickness, positions, normals, indices);
+  add_walls(upright, {tile.hole}, 0, thickness, positions, normals, indices);
+}
+
+FramedPose opening_pose(const Layout& layout, const Element& e) {
+  const Rect b = laid_bounds(e);
+  const SurfaceFrame& f = *frame_at(layout.frames, b.x + b.w / 2);
+  const BuildingPoint p = frame_point(f, b.x, b.y, 0), q = frame_point(f, b.right(), b.y, 0);
+  const double len = std::hypot(q[0] - p[0], q[1] - p[1]);
+  return {p, {(q[0] - p[0]) / len, (q[1] - p[1]) / len}};
+}
+
 std::vector<int64_t> tile_shape(const OpeningTile& tile) {
   std::vector<int64_t> shape;
   for (const auto& [x, y] : tile.hole)

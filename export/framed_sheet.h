@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "export/gltf_solids.h"
@@ -16,6 +17,9 @@
 #include "layout/surface_frame.h"
 
 namespace curdle {
+
+class ModelBuilder;
+class IfcGeometryWriter;
 
 // Triangles in the building's millimetres (x east, y north, z up), counter-clockwise seen from
 // outside, each corner with its outward normal.
@@ -69,5 +73,34 @@ OpeningTile tile_of(const Layout& layout, const Element& opening);
 
 // A tile's shape to a nanometre: openings alike share one mesh (glTF) or map (IFC).
 std::vector<int64_t> tile_shape(const OpeningTile& tile);
+
+// A tile as a solid `thickness` deep out of its plane: its face both sides and the hole's
+// wall (gltf_solids.h: `upright`, standing; else lying).
+void add_tile_solid(bool upright, const OpeningTile& tile, double thickness,
+                    std::vector<Vec3>& positions, std::vector<Vec3>& normals,
+                    std::vector<uint32_t>& indices);
+
+// Where an opening's outline is drawn: its box's lower-left corner on the outer face, on the
+// chord across the box, and the chord's way in plan.
+FramedPose opening_pose(const Layout& layout, const Element& opening);
+
+// layout.glb's sheets of a screen on a building (framed_sheet_gltf.cpp): a node a sheet, named
+// by its ID, its solid in material `metal` and its tiles its children, each shape one mesh.
+std::vector<int> add_screen_sheets(ModelBuilder& builder, const Layout& layout, int metal);
+
+// layout.ifc's bodies of a screen's sheets (framed_sheet_ifc.cpp): each sheet's solid less its
+// tiles' squares, and each tile a mapped copy of one shape placed round its opening, as
+// layout.glb draws it: the thousands of openings cost a placement each, not their corners.
+class IfcScreenSheets {
+ public:
+  IfcScreenSheets(IfcGeometryWriter& geometry, const Layout& layout) : g_(geometry), l_(layout) {}
+  int64_t body(size_t sheet, const Rgb& colour);
+
+ private:
+  IfcGeometryWriter& g_;
+  const Layout& l_;
+  FramedScreen screen_;                                // worked out at the first sheet
+  std::map<std::vector<int64_t>, int64_t> tile_maps_;  // by shape
+};
 
 }  // namespace curdle

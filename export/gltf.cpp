@@ -232,8 +232,7 @@ void add_sheet(Scene& sc) {
   auto tile_mesh = [&](const OpeningTile& tile, const std::string& name) {
     std::vector<Vec3> tp, tn;
     std::vector<uint32_t> ti;
-    add_caps(layout.kind->upright(), tile.triangles, 0, t, tp, tn, ti);
-    add_walls(layout.kind->upright(), {tile.hole}, 0, t, tp, tn, ti);
+    add_tile_solid(layout.kind->upright(), tile, t, tp, tn, ti);
     return b.add_mesh(name, {b.primitive(tp, tn, ti, metal)});
   };
   std::map<double, int> round_tiles;  // by diameter
@@ -292,48 +291,9 @@ void add_sheet(Scene& sc) {
 // opening at the middle of its face, where schedule.csv places it.
 void add_framed_screen(Scene& sc) {
   const Layout& layout = sc.layout;
-  ModelBuilder& b = sc.b;
-  const double t = sc.t;
-  const FramedScreen screen = framed_screen(layout);
-  const int metal = b.add_material("aluminium sheet", Rgb{201, 205, 210}, 0.9, 0.4);
-  std::map<std::vector<int64_t>, int> tile_meshes;  // by shape, to a nanometre
-  std::vector<std::vector<int>> tile_nodes(layout.sheets.size());
-  for (const std::vector<size_t>& on_sheet : screen.tiled)
-    for (const size_t i : on_sheet) {
-      stop_point();
-      const Element& e = layout.elements[i];
-      const OpeningTile tile = tile_of(layout, e);
-      auto [it, added] = tile_meshes.try_emplace(tile_shape(tile), 0);
-      if (added) {
-        std::vector<Vec3> tp, tn;
-        std::vector<uint32_t> ti;
-        add_caps(true, tile.triangles, 0, t, tp, tn, ti);
-        add_walls(true, {tile.hole}, 0, t, tp, tn, ti);
-        it->second = b.add_mesh(fmt::format("sheet round opening {}", tile_meshes.size()),
-                                {b.primitive(tp, tn, ti, metal)});
-      }
-      // The tile's thickness runs out of the face from the sheet's back.
-      const FramedPose pose = tile_pose(layout, e);
-      const double turn = std::atan2(pose.along[1], pose.along[0]);
-      tinygltf::Node part;
-      part.mesh = it->second;
-      part.translation = {pose.origin[0] / 1000, pose.origin[2] / 1000, -pose.origin[1] / 1000};
-      part.rotation = {0, std::sin(turn / 2), 0, std::cos(turn / 2)};
-      tile_nodes[static_cast<size_t>(e.sheet)].push_back(b.add_node(std::move(part)));
-    }
-  for (size_t k = 0; k < layout.sheets.size(); ++k) {
-    const Layout::FabricationSheet& s = layout.sheets[k];
-    FramedMesh mesh;
-    add_framed_sheet(*frame_at(layout.frames, s.area.x + s.area.w / 2), screen.rings[k],
-                     screen.squares[k], t, mesh);
-    std::vector<Vec3> p, n;
-    to_gltf_mesh(mesh, p, n);
-    tinygltf::Node node;
-    node.name = s.id;
-    node.mesh = b.add_mesh("sheet " + s.id, {b.primitive(p, n, mesh.indices, metal)});
-    node.children = std::move(tile_nodes[k]);
-    sc.roots.push_back(b.add_node(std::move(node)));
-  }
+  const int metal = sc.b.add_material("aluminium sheet", Rgb{201, 205, 210}, 0.9, 0.4);
+  const std::vector<int> sheets = add_screen_sheets(sc.b, layout, metal);
+  sc.roots.insert(sc.roots.end(), sheets.begin(), sheets.end());
   for (const Element& e : layout.elements) {  // each opening, named, at its face's middle
     stop_point();
     const BuildingPoint c = framed_centre(layout, e);

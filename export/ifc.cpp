@@ -13,7 +13,6 @@
 #include "curdle/palette.h"
 #include "curdle/stop.h"
 #include "export/framed_sheet.h"
-#include "export/gltf_solids.h"
 #include "export/ifc_envelope.h"
 #include "export/ifc_geometry.h"
 #include "export/ifc_standard_sets.h"
@@ -343,7 +342,7 @@ class IfcModel {
           framed ? w_.add("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(world_))
                  : placement_at(s.area.x, s.area.y);
       const int64_t body =
-          framed ? framed_sheet_body(k, metal)
+          framed ? screen_sheets_.body(k, metal)
                  : g_.body({g_.solid(sheet_profile(s, holes[k], islands[k]), 0, t, metal)});
       const int64_t plate =
           w_.add("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)", root("sheet " + s.id),
@@ -358,49 +357,17 @@ class IfcModel {
     w_.add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("sheet-material"),
            step_refs(sheet_plates_), ref(material));
   }
-  // A sheet of a screen on a building: its solid laid on its façade's frame (rolled to an arc)
-  // less its tiles' squares, and each tile a copy of one shape placed round its opening, as
-  // layout.glb draws it: the thousands of openings cost a placement each, not their corners.
-  int64_t framed_sheet_body(size_t k, const Rgb& colour) {
-    if (screen_.rings.empty()) screen_ = framed_screen(l_);
-    const Layout::FabricationSheet& s = l_.sheets[k];
-    FramedMesh mesh;
-    add_framed_sheet(*frame_at(l_.frames, s.area.x + s.area.w / 2), screen_.rings[k],
-                     screen_.squares[k], l_.thickness, mesh);
-    std::vector<int64_t> items{
-        g_.mapped(g_.representation_map(g_.triangles(mesh.positions, mesh.indices, colour)),
-                  {0, 0, 0}, {1, 0})};
-    for (const size_t i : screen_.tiled[k]) {
-      const Element& e = l_.elements[i];
-      const OpeningTile tile = tile_of(l_, e);
-      auto [it, added] = tile_maps_.try_emplace(tile_shape(tile), 0);
-      if (added) {
-        std::vector<Vec3> p, n;
-        std::vector<uint32_t> idx;
-        add_caps(true, tile.triangles, 0, l_.thickness, p, n, idx);
-        add_walls(true, {tile.hole}, 0, l_.thickness, p, n, idx);
-        std::vector<std::array<double, 3>> mm;
-        for (const Vec3& v : p) mm.push_back({v[0] * 1000.0, v[1] * 1000.0, v[2] * 1000.0});
-        it->second = g_.representation_map(g_.triangles(mm, idx, colour));
-      }
-      const FramedPose pose = tile_pose(l_, e);
-      items.push_back(g_.mapped(it->second, pose.origin, pose.along));
-    }
-    return g_.mapped_body(items);
-  }
   // An opening of a screen on a building: at its box's corner on the face, its profile in the
   // plane of the chord across it, relative to the sheet (placed at the building's origin).
   int64_t placement_in_framed_sheet(const Element& e) {
     const Rect b = laid_bounds(e);
     g_.set_local_origin(b.x, b.y);
-    const SurfaceFrame& f = *frame_at(l_.frames, b.x + b.w / 2);
-    const BuildingPoint p = frame_point(f, b.x, b.y, 0), q = frame_point(f, b.right(), b.y, 0);
-    const double len = std::hypot(q[0] - p[0], q[1] - p[1]);
-    const std::array<double, 2> d{(q[0] - p[0]) / len, (q[1] - p[1]) / len};
-    const int64_t axes = g_.axes(p, {d[1], -d[0], 0}, {d[0], d[1], 0});
+    const FramedPose pose = opening_pose(l_, e);
+    const auto& [dx, dy] = pose.along;
     return w_.add("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[static_cast<size_t>(e.sheet)]),
-                  ref(axes));
+                  ref(g_.axes(pose.origin, {dy, -dx, 0}, {dx, dy, 0})));
   }
+
   // A sheet (its rectangle, or each part of its outline) less the holes inside it; the islands
   // of merged openings inside it as parts of their own.
   int64_t sheet_profile(const Layout::FabricationSheet& s, const std::vector<Ring>& holes,
@@ -613,11 +580,10 @@ class IfcModel {
   int64_t owner_ = 0, world_ = 0, out_of_wall_ = 0, along_ = 0, annotation_ = 0;
   int64_t profile_context_ = 0, project_ = 0, container_ = 0, container_place_ = 0;
   std::vector<int64_t> contained_, sheet_plates_, sheet_places_;
-  FramedScreen screen_;  // a screen on a building: its sheets' parts, as layout.glb has them
-  std::map<std::vector<int64_t>, int64_t> tile_maps_;  // its tiles' shapes, to a nanometre
-  std::vector<int64_t> storeys_;                       // Level 0, 1, ...
-  std::vector<double> levels_{0};                      // their floors, mm above the base
-  std::vector<std::vector<int64_t>> upper_;            // what each storey above Level 0 contains
+  IfcScreenSheets screen_sheets_{g_, l_};    // a screen on a building: its sheets' bodies
+  std::vector<int64_t> storeys_;             // Level 0, 1, ...
+  std::vector<double> levels_{0};            // their floors, mm above the base
+  std::vector<std::vector<int64_t>> upper_;  // what each storey above Level 0 contains
   std::map<std::string, std::vector<int64_t>> materials_;
   struct TextHash {  // looks a shared entity up by its text, without making a string of it
     using is_transparent = void;
