@@ -79,8 +79,6 @@ ordered_json surface_json(const LayoutSpec& spec) {
       {"zones", zones}};
 }
 
-// A building's façades on its unrolled strip, for the page to mark its corners and name its
-// faces over the curd; null for any other layout.
 // The envelope a kind laid round a building (a façade's bricks, a screen's sheets, fins).
 const Envelope* envelope_of(const LayoutSpec& spec) {
   const std::optional<Envelope>* e = nullptr;
@@ -90,6 +88,8 @@ const Envelope* envelope_of(const LayoutSpec& spec) {
   return e && *e ? &**e : nullptr;
 }
 
+// A building's façades on its unrolled strip, for the page to mark its corners and name its
+// faces over the curd; null for any other layout.
 ordered_json building_json(const LayoutSpec& spec) {
   const Envelope* envelope = envelope_of(spec);
   if (!envelope) return nullptr;
