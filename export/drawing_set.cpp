@@ -15,7 +15,7 @@
 #include "export/installer_drawing.h"
 #include "export/layout_png.h"
 #include "export/page_buffer.h"
-#include "export/schedule.h"
+#include "export/piece_rows.h"
 #include "export/setting_out_plan.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"

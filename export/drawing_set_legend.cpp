@@ -5,7 +5,7 @@
 
 #include "curdle/stop.h"
 #include "export/drawing_set.h"
-#include "export/schedule.h"
+#include "export/piece_rows.h"
 #include "export/title_block.h"
 #include "layout/layout_kind.h"
 #include "layout/legend.h"

@@ -18,9 +18,6 @@
 
 namespace curdle {
 
-class ModelBuilder;
-class IfcGeometryWriter;
-
 // Triangles in the building's millimetres (x east, y north, z up), counter-clockwise seen from
 // outside, each corner with its outward normal.
 struct FramedMesh {
@@ -83,24 +80,5 @@ void add_tile_solid(bool upright, const OpeningTile& tile, double thickness,
 // Where an opening's outline is drawn: its box's lower-left corner on the outer face, on the
 // chord across the box, and the chord's way in plan.
 FramedPose opening_pose(const Layout& layout, const Element& opening);
-
-// layout.glb's sheets of a screen on a building (framed_sheet_gltf.cpp): a node a sheet, named
-// by its ID, its solid in material `metal` and its tiles its children, each shape one mesh.
-std::vector<int> add_screen_sheets(ModelBuilder& builder, const Layout& layout, int metal);
-
-// layout.ifc's bodies of a screen's sheets (framed_sheet_ifc.cpp): each sheet's solid less its
-// tiles' squares, and each tile a mapped copy of one shape placed round its opening, as
-// layout.glb draws it: the thousands of openings cost a placement each, not their corners.
-class IfcScreenSheets {
- public:
-  IfcScreenSheets(IfcGeometryWriter& geometry, const Layout& layout) : g_(geometry), l_(layout) {}
-  int64_t body(size_t sheet, const Rgb& colour);
-
- private:
-  IfcGeometryWriter& g_;
-  const Layout& l_;
-  FramedScreen screen_;                                // worked out at the first sheet
-  std::map<std::vector<int64_t>, int64_t> tile_maps_;  // by shape
-};
 
 }  // namespace curdle

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <map>
 
-#include "export/schedule.h"
+#include "export/piece_rows.h"
 #include "layout/zone.h"
 
 namespace curdle {

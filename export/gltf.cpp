@@ -19,6 +19,7 @@
 #include "export/framed_sheet.h"
 #include "export/gltf_json.h"
 #include "export/gltf_model.h"
+#include "export/gltf_screen.h"
 #include "export/gltf_solids.h"
 #include "export/sheet_tiles.h"
 #include "layout/piece.h"

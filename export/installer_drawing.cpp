@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "curdle/stop.h"
-#include "export/schedule.h"
+#include "export/piece_rows.h"
 #include "export/sheet_drawing.h"
 #include "export/title_block.h"
 #include "layout/legend.h"

@@ -125,22 +125,6 @@ struct Canvas {
 
 }  // namespace
 
-double drawing_scale(const Layout& layout) {
-  if (layout.drawing.scale > 0) return layout.drawing.scale;
-  const auto sheet = paper_sheet(layout.drawing.paper).value_or(*paper_sheet("A3"));
-  return fit_to_sheet(layout.width, layout.height, sheet).scale;
-}
-
-Layout layout_extent(const LayoutSpec& spec, const Box& view) {
-  Layout outline;
-  outline.kind = spec.kind;
-  outline.drawing = spec.drawing;
-  const auto extent = spec.kind->drawing_extent(spec, view);
-  outline.width = extent[0];
-  outline.height = extent[1];
-  return outline;
-}
-
 uint64_t layout_png_pixels(const LayoutSpec& spec, const Box& view) {
   const Layout outline = layout_extent(spec, view);
   const double ppm = spec.drawing.dpi / 25.4 / drawing_scale(outline);

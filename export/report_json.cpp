@@ -132,12 +132,6 @@ json report_to_json(const Report& r) {
   return j;
 }
 
-uint64_t cut_elements(const Layout& layout) {
-  uint64_t cut = 0;
-  for (const Element& e : layout.elements) cut += e.cut;
-  return cut;
-}
-
 namespace {
 
 // A building's façades: where each lies, its size, openings and units (a corner unit on the

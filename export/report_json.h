@@ -12,7 +12,4 @@ nlohmann::ordered_json report_to_json(const Report& report);
 // The same with what report.json says of the layout built from it (under "layout").
 nlohmann::ordered_json report_to_json(const Report& report, const Layout& layout);
 
-// Elements smaller than their module (cut at an edge or an opening).
-uint64_t cut_elements(const Layout& layout);
-
 }  // namespace curdle

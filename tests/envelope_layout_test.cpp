@@ -14,7 +14,7 @@
 #include "building_support.h"
 #include "curdle/density.h"
 #include "curdle/overlay.h"
-#include "export/schedule.h"
+#include "export/piece_rows.h"
 #include "kinds/facade.h"
 
 namespace curdle {

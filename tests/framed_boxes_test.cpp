@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "building_support.h"
-#include "export/schedule.h"
+#include "export/piece_rows.h"
 
 namespace curdle {
 namespace {

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <tuple>
 
-#include "export/schedule.h"
+#include "export/piece_rows.h"
 #include "export_support.h"
 #include "kinds/park.h"
 #include "layout/piece.h"

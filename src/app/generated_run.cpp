@@ -11,11 +11,11 @@
 
 #include "curdle/error.h"
 #include "curdle/stop.h"
-#include "export/layout_png.h"
 #include "export/mask_image.h"
-#include "export/report_json.h"
 #include "kinds/facade.h"
 #include "layout/builder.h"
+#include "layout/drawing_scale.h"
+#include "layout/piece.h"
 
 namespace fs = std::filesystem;
 

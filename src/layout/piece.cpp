@@ -108,4 +108,10 @@ std::optional<Rect> tree_pit(const Layout& layout, const Element& e) {
   return centred_on(b.x + b.w / 2, b.y + b.h / 2, p.pit[0], p.pit[1]);
 }
 
+uint64_t cut_elements(const Layout& layout) {
+  uint64_t cut = 0;
+  for (const Element& e : layout.elements) cut += e.cut;
+  return cut;
+}
+
 }  // namespace curdle

@@ -2,6 +2,7 @@
 // the glTF and the DXF share, so that no two files can describe the same piece differently.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ bool is_rectangle(const Element& e);
 // The piece's outline when it is not one rectangle and not a circle: the union of its
 // rectangles (an L-shaped panel cut at a window), or a merged opening. Empty otherwise.
 std::vector<Outline> piece_outlines(const Element& e);
+
+// Pieces smaller than their module (cut at an edge or an opening).
+uint64_t cut_elements(const Layout& layout);
 
 // What the piece is made of and its colour: a park element's own (a standing object's species
 // where the recipe names one, else its type), else its value's (the legend's label is the

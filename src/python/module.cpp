@@ -18,7 +18,7 @@
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
 #include "export/measure_files.h"
-#include "export/schedule.h"
+#include "export/piece_rows.h"
 #include "export/wkt.h"
 #include "python/interruptible.h"
 #include "recipe/toml_reader.h"

@@ -1,6 +1,5 @@
 // layout.ifc's bodies of a screen's sheets (framed_sheet.h).
-#include "export/framed_sheet.h"
-#include "export/ifc_geometry.h"
+#include "export/ifc_screen.h"
 
 namespace curdle {
 

@@ -1,4 +1,6 @@
 // layout.glb's sheets of a screen on a building (framed_sheet.h).
+#include "export/gltf_screen.h"
+
 #include <fmt/format.h>
 #include <tiny_gltf.h>
 
