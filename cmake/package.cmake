@@ -14,10 +14,11 @@ set(CURDLE_PUBLIC_HEADERS
   src/curdle/overlay.h src/curdle/probability.h
   src/curdle/report.h src/curdle/search.h src/curdle/stop.h
   src/layout/drawing_sheet.h src/layout/element_id.h src/layout/installer_sheets.h
-  src/layout/layout.h src/layout/layout_kind.h src/layout/planting_spec.h src/layout/surface_frame.h
+  src/layout/layout.h src/layout/layout_kind.h src/layout/piece_rows.h src/layout/planting_spec.h
+  src/layout/surface_frame.h src/layout/wkt.h
+  src/io/atomic_file.h src/io/image.h
   src/recipe/recipe.h src/recipe/recipe_files.h
-  export/atomic_file.h export/image.h export/measure_files.h export/report_json.h
-  export/schedule.h export/wkt.h)
+  export/report/measure_files.h export/report/report_json.h export/schedules/schedule.h)
 
 add_library(curdle_library SHARED src/app/version.cpp)
 add_library(curdle::curdle ALIAS curdle_library)
@@ -25,7 +26,7 @@ target_compile_definitions(curdle_library PRIVATE CURDLE_VERSION="${PROJECT_VERS
 # Every object of the layers, so that the library holds what its headers declare. (CMake's
 # WHOLE_ARCHIVE feature refuses libraries that also come in as another's dependency.)
 target_link_libraries(curdle_library
-  PRIVATE -Wl,--whole-archive curdle_app curdle_export curdle_recipe curdle_site curdle_building curdle_layout curdle_core
+  PRIVATE -Wl,--whole-archive curdle_app curdle_export curdle_recipe curdle_site curdle_building curdle_io curdle_layout curdle_core
           -Wl,--no-whole-archive curdle_warnings
   PUBLIC nlohmann_json::nlohmann_json)
 target_include_directories(curdle_library PUBLIC

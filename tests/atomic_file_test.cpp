@@ -1,5 +1,5 @@
 // Tests of atomic_file.h.
-#include "export/atomic_file.h"
+#include "io/atomic_file.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

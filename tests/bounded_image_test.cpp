@@ -1,6 +1,6 @@
 // Tests of bounded_image.h: a picture a user names is read only when it is a regular file whose
 // pixels fit the limits; otherwise the message names it and what is allowed.
-#include "export/bounded_image.h"
+#include "io/bounded_image.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Tests of cairo_on_demand.h: cairo is there to be loaded, and a drawing made through the
 // forwarders is cairo's own (pixels and a PDF stream as cairo makes them).
-#include "export/cairo_on_demand.h"
+#include "export/drawing/cairo_on_demand.h"
 
 #include <cairo-pdf.h>
 #include <cairo.h>

@@ -1,5 +1,5 @@
 // Tests of cells_csv_reader.h.
-#include "export/cells_csv_reader.h"
+#include "io/cells_csv_reader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Tests of cells_csv.h.
-#include "export/cells_csv.h"
+#include "export/report/cells_csv.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Tests of course_marks.h: a coursed sheet carries its gauge rod beside the window, the storey
 // levels across it, and its chain of dimensions under the column numbers, in ink that a
 // printer puts on paper.
-#include "export/course_marks.h"
+#include "export/drawing/course_marks.h"
 
 #include <cairo.h>
 #include <gtest/gtest.h>

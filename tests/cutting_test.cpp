@@ -1,6 +1,6 @@
 // Fabrication sheets: openings keep their margins within each sheet and their bridges across
 // seams, and each sheet's DXF, read back with dxflib's reader, holds exactly its openings.
-#include "export/cutting.h"
+#include "export/dxf/cutting.h"
 
 #include <dxflib/dl_creationadapter.h>
 #include <dxflib/dl_dxf.h>
@@ -13,7 +13,7 @@
 #include <set>
 
 #include "curdle/curdling.h"
-#include "export/layout_dxf.h"
+#include "export/dxf/layout_dxf.h"
 #include "kinds/perforation.h"
 #include "layout/builder.h"
 #include "picture_support.h"

@@ -13,7 +13,7 @@
 #include "curdle/density.h"
 #include "curdle/error.h"
 #include "curdle/report.h"
-#include "export/image.h"
+#include "io/image.h"
 #include "layout/builder.h"
 #include "layout/cell_placement.h"
 #include "recipe/recipe.h"

@@ -1,6 +1,6 @@
 // Tests of drawing_set.h: layout.pdf holds sheet 1 and every installer's sheet; the overview's
 // sheet holds the drawing at its scale.
-#include "export/drawing_set.h"
+#include "export/drawing/drawing_set.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Tests of dxf_document.h: a DXF in millimetres with its extents, valid layer names and closed
 // polylines, read back as text.
-#include "export/dxf_document.h"
+#include "export/dxf/dxf_document.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Tests of dxf_writer.h: the buffered writer writes the bytes dxflib's own DL_WriterA writes,
 // group for group, and a whole drawing through dxflib's calls the same file.
-#include "export/dxf_writer.h"
+#include "export/dxf/dxf_writer.h"
 
 #include <dxflib/dl_dxf.h>
 #include <gtest/gtest.h>

@@ -14,8 +14,8 @@
 #include "building_support.h"
 #include "curdle/density.h"
 #include "curdle/overlay.h"
-#include "export/piece_rows.h"
 #include "kinds/facade.h"
+#include "layout/piece_rows.h"
 
 namespace curdle {
 namespace {

@@ -13,12 +13,12 @@
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
 #include "curdle/report.h"
-#include "export/atomic_file.h"
-#include "export/cells_csv.h"
-#include "export/cells_csv_reader.h"
-#include "export/preview_png.h"
-#include "export/report_json.h"
-#include "export/report_table.h"
+#include "export/report/cells_csv.h"
+#include "export/report/preview_png.h"
+#include "export/report/report_json.h"
+#include "export/report/report_table.h"
+#include "io/atomic_file.h"
+#include "io/cells_csv_reader.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;

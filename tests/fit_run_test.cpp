@@ -10,7 +10,7 @@
 
 #include "curdle/curdling.h"
 #include "curdle/error.h"
-#include "export/cells_csv.h"
+#include "export/report/cells_csv.h"
 #include "picture_support.h"
 
 namespace curdle::app {

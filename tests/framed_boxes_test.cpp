@@ -1,14 +1,14 @@
 // Tests of framed_boxes.h: a unit of the pavilion's strip in 3-D, along its façade and turned
 // round a corner in one box a face; a unit of a curved wall a chord of its arc; and the middle
 // of a unit's face, the position the schedule gives.
-#include "export/framed_boxes.h"
+#include "layout/framed_boxes.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "building_support.h"
-#include "export/piece_rows.h"
+#include "layout/piece_rows.h"
 
 namespace curdle {
 namespace {

@@ -3,7 +3,7 @@
 // an obtuse and an acute corner its two faces reach along their façades and its backs meet at
 // the mitre, so that its plan area is t (a + b) - t^2 tan(turn / 2); a corner too sharp for the
 // unit is refused with the least angle that can be laid.
-#include "export/framed_corner.h"
+#include "layout/framed_corner.h"
 
 #include <gtest/gtest.h>
 

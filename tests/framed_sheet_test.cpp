@@ -1,7 +1,7 @@
 // Tests of framed_sheet.h: a perforated sheet laid on a building's frame, rolled to an arc:
 // closed, its metal's volume the sheet's at mid-thickness less its holes, within the rise of
 // its strips from the arc; and its tiles placed on the chord across their openings.
-#include "export/framed_sheet.h"
+#include "layout/framed_sheet.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "building_support.h"
-#include "export/framed_boxes.h"
+#include "layout/framed_boxes.h"
 #include "layout/piece.h"
 #include "layout/zone.h"
 

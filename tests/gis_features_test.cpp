@@ -1,6 +1,6 @@
 // The layout as GIS features: a feature per schedule row with its attributes, a layer per kind
 // of element, shapes in metres, and layout.georef placing them in the project's CRS.
-#include "export/gis_features.h"
+#include "export/gis/gis_features.h"
 
 #include <gtest/gtest.h>
 

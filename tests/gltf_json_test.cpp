@@ -1,6 +1,6 @@
 // Tests of gltf_json.h: the JSON curdle writes for a model says what tinygltf's own writer
 // says, value for value, and the GLB container is laid out as glTF 2.0 section 4.4 asks.
-#include "export/gltf_json.h"
+#include "export/gltf/gltf_json.h"
 
 #include <gtest/gtest.h>
 

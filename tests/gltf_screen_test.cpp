@@ -1,5 +1,5 @@
 // Tests of gltf_screen.h: a screen on a building as glTF nodes, one a sheet with its tiles.
-#include "export/gltf_screen.h"
+#include "export/gltf/gltf_screen.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "building_support.h"
-#include "export/framed_sheet.h"
+#include "layout/framed_sheet.h"
 
 namespace curdle {
 namespace {

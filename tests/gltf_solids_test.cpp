@@ -1,5 +1,5 @@
 // Solids in glTF coordinates: the axes a floor and a wall map to, and a prism's faces.
-#include "export/gltf_solids.h"
+#include "layout/gltf_solids.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // glTF export read back with tinygltf: what the file holds matches the layout, names and all.
-#include "export/gltf.h"
+#include "export/gltf/gltf.h"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
@@ -12,7 +12,7 @@
 
 #include "app/run.h"
 #include "curdle/curdling.h"
-#include "export/svg.h"
+#include "export/drawing/svg.h"
 #include "layout/builder.h"
 #include "test_support.h"
 

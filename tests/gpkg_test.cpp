@@ -1,7 +1,7 @@
 // layout.gpkg as written: a GeoPackage (an SQLite file) with a table per kind of element; a
 // recipe's CRS that is not projected in metres is refused by name. GDAL reads every pattern's
 // back in tests/gpkg_read_back.py.
-#include "export/gpkg.h"
+#include "export/gis/gpkg.h"
 
 #include <gtest/gtest.h>
 

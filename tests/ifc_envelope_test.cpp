@@ -2,7 +2,7 @@
 // units, each unit a building element part in the storeys through it, an opening per window
 // and door voiding its wall and filled, each in the storey its sill stands in, storeys at the
 // recipe's floor-to-floor height, and a corner unit one part with one prism.
-#include "export/ifc_envelope.h"
+#include "export/ifc/ifc_envelope.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "building_support.h"
-#include "export/ifc.h"
+#include "export/ifc/ifc.h"
 
 namespace curdle {
 namespace {

@@ -1,7 +1,7 @@
 // The IFC model's geometry: circles as polygons with their extremes exact, a piece in parts as
 // one composite profile, holes as clockwise voids, and profiles drawn from the product's own
 // corner.
-#include "export/ifc_geometry.h"
+#include "export/ifc/ifc_geometry.h"
 
 #include <gtest/gtest.h>
 

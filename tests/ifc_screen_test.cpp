@@ -1,6 +1,6 @@
 // Tests of ifc_screen.h: a screen's sheet in IFC is its triangles and a mapped copy of one
 // shape per opening, each shape written once.
-#include "export/ifc_screen.h"
+#include "export/ifc/ifc_screen.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "building_support.h"
-#include "export/step_file.h"
+#include "export/ifc/step_file.h"
 
 namespace curdle {
 namespace {

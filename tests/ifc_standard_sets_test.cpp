@@ -1,6 +1,6 @@
 // IFC4's standard sets per class: the names BIM tools look for, the reference, whether the
 // element is external only where that is known, and quantities in the model's units.
-#include "export/ifc_standard_sets.h"
+#include "export/ifc/ifc_standard_sets.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // IFC class and spatial structure per kind, openings voiding their sheets, names in 7-bit
 // STEP, and the same bytes for the same run. web-ifc reads every pattern's model back in
 // tests/js/ifc_check.mjs (ctest js.ifc_read_back).
-#include "export/ifc.h"
+#include "export/ifc/ifc.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Tests of image.h: a PNG curdle encodes reads back through OpenImageIO with its size and its
 // luminance, top row first.
-#include "export/image.h"
+#include "io/image.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Tests of install.h: install.svg is well-formed XML that labels every piece once, numbers the
 // rows and shows where laying starts.
-#include "export/install.h"
+#include "export/drawing/install.h"
 
 #include <expat.h>
 #include <gtest/gtest.h>

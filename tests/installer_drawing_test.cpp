@@ -1,10 +1,10 @@
 // What each installer's sheet shows, listed once for the set: the same elements, pieces and
 // labels as asking every sheet's view of every one of them.
-#include "export/installer_drawing.h"
+#include "export/drawing/installer_drawing.h"
 
 #include <gtest/gtest.h>
 
-#include "export/sheet_drawing.h"
+#include "export/drawing/sheet_drawing.h"
 #include "layout/builder.h"
 #include "pattern_support.h"
 

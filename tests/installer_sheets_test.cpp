@@ -12,8 +12,8 @@
 #include <sstream>
 
 #include "curdle/error.h"
-#include "export/drawing_set.h"
-#include "export/layout_png.h"
+#include "export/drawing/drawing_set.h"
+#include "export/drawing/layout_png.h"
 #include "layout/builder.h"
 #include "pattern_support.h"
 

@@ -1,6 +1,6 @@
 // Tests of layout_dxf.h: every piece a closed polyline on its material's layer, and its ID as
 // text on layer ID, for a paving read back as DXF text.
-#include "export/layout_dxf.h"
+#include "export/dxf/layout_dxf.h"
 
 #include <gtest/gtest.h>
 

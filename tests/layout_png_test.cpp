@@ -1,5 +1,5 @@
 // Tests of layout_png.h.
-#include "export/layout_png.h"
+#include "export/drawing/layout_png.h"
 
 #include <gtest/gtest.h>
 

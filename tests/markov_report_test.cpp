@@ -6,7 +6,7 @@
 
 #include "curdle/curdling.h"
 #include "curdle/report.h"
-#include "export/report_table.h"
+#include "export/report/report_table.h"
 #include "markov_support.h"
 
 namespace curdle {

@@ -1,5 +1,5 @@
 // Tests of mask_image.h: a mask's dark pixels become openings stretched over the wall.
-#include "export/mask_image.h"
+#include "site/mask_image.h"
 
 #include <gtest/gtest.h>
 

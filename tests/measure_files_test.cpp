@@ -1,5 +1,5 @@
 // Tests of measure_files.h: measure.json says what was measured, and the plot is a picture.
-#include "export/measure_files.h"
+#include "export/report/measure_files.h"
 
 #include <gtest/gtest.h>
 

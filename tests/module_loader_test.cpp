@@ -1,6 +1,6 @@
 // Optional modules are found where a build tree or an installation puts them, and a missing
 // one is named with the places looked in.
-#include "export/module_loader.h"
+#include "io/module_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Tests of opening_dots.h: a perforated sheet's round and merged openings, drawn as dots, cover
 // exactly their circles on paper, faint or not.
-#include "export/opening_dots.h"
+#include "export/drawing/opening_dots.h"
 
 #include <cairo.h>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Tests of page_buffer.h: the buffer is zeroed, writable to its last byte, aligned to a huge
 // page when it is at least one, and moves without copying or freeing twice.
-#include "export/page_buffer.h"
+#include "export/drawing/page_buffer.h"
 
 #include <gtest/gtest.h>
 

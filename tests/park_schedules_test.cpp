@@ -1,7 +1,7 @@
 // Tests of park_schedules.h: every tree in planting.csv, every bench in furniture.csv, each at
 // the centre schedule.csv and the drawing give it, and the surfaces' areas per material and zone
 // adding up to the schedule's.
-#include "export/park_schedules.h"
+#include "export/schedules/park_schedules.h"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +11,10 @@
 #include <sstream>
 #include <tuple>
 
-#include "export/piece_rows.h"
 #include "export_support.h"
 #include "kinds/park.h"
 #include "layout/piece.h"
+#include "layout/piece_rows.h"
 #include "layout/zone.h"
 #include "layout_support.h"
 

@@ -131,7 +131,7 @@ TEST(Park, ObjectsKeepTheirClearanceOrAreLeftOutWithANote) {
 
 #include <sstream>
 
-#include "export/park_schedules.h"
+#include "export/schedules/park_schedules.h"
 #include "recipe/recipe.h"
 
 namespace curdle {
@@ -190,7 +190,7 @@ value = 1
 
 }  // namespace curdle
 
-#include "export/schedule.h"
+#include "export/schedules/schedule.h"
 
 namespace curdle {
 

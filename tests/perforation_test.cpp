@@ -187,7 +187,7 @@ TEST(Perforation, OpenAreaAgreesWithThePixelsOfTheDrawing) {
 
 #include <sstream>
 
-#include "export/schedule.h"
+#include "export/schedules/schedule.h"
 
 namespace curdle {
 

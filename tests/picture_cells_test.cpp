@@ -6,7 +6,7 @@
 #include "curdle/curdling.h"
 #include "curdle/error.h"
 #include "curdle/overlay.h"
-#include "export/preview_png.h"
+#include "export/report/preview_png.h"
 #include "picture_support.h"
 
 namespace curdle::app {

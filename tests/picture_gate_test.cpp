@@ -1,7 +1,7 @@
 // Tests of picture_gate.h: the four formats are known by their first bytes and sized by their
 // headers, whatever their names; everything else, and every header cut short, is refused before
 // a decoder sees it.
-#include "export/picture_gate.h"
+#include "io/picture_gate.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include <functional>
 #include <string>
 
-#include "export/image.h"
+#include "io/image.h"
 
 namespace curdle::test {
 

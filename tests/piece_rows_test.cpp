@@ -1,5 +1,5 @@
 // Piece rows: every piece's row names it as the layout does and holds its box, area and shape.
-#include "export/piece_rows.h"
+#include "layout/piece_rows.h"
 
 #include <gtest/gtest.h>
 

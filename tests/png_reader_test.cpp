@@ -1,6 +1,6 @@
 // Tests of png_reader.h: every kind of PNG read in process gives, value for value, what the
 // OpenImageIO module gives for the same file; a broken file is refused with libpng's reason.
-#include "export/png_reader.h"
+#include "io/png_reader.h"
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "export/module_loader.h"
+#include "io/module_loader.h"
 
 namespace curdle {
 namespace {

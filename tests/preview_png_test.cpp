@@ -1,5 +1,5 @@
 // Tests of preview_png.h.
-#include "export/preview_png.h"
+#include "export/report/preview_png.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Tests of punching.h: the order list has a row per fabrication sheet with its stock and the
 // hits of each punch, and a total that adds them up to the openings of the schedule.
-#include "export/punching.h"
+#include "export/schedules/punching.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Tests of report_json.h.
-#include "export/report_json.h"
+#include "export/report/report_json.h"
 
 #include <gtest/gtest.h>
 

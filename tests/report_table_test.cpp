@@ -1,5 +1,5 @@
 // Tests of report_table.h: the terminal table says what report.json says, a row per stage.
-#include "export/report_table.h"
+#include "export/report/report_table.h"
 
 #include <gtest/gtest.h>
 

@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "building_support.h"
-#include "export/framed_boxes.h"
 #include "layout/contour.h"
+#include "layout/framed_boxes.h"
 #include "layout_support.h"
 
 namespace curdle {

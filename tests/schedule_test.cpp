@@ -1,5 +1,5 @@
 // Schedules: strict CSV, quantities add up to the schedule, counts per value match the report.
-#include "export/schedule.h"
+#include "export/schedules/schedule.h"
 
 #include <gtest/gtest.h>
 
@@ -96,7 +96,7 @@ TEST(Schedule, QuantitiesAddUpAndCountsMatchTheReport) {
 
 #include <regex>
 
-#include "export/install.h"
+#include "export/drawing/install.h"
 
 namespace curdle {
 
@@ -151,8 +151,8 @@ TEST(Install, TheMapNamesEveryElementAndWhereLayingStarts) {
 
 #include <fmt/format.h>
 
-#include "export/wkt.h"
 #include "layout/piece.h"
+#include "layout/wkt.h"
 #include "layout_support.h"
 
 namespace curdle {

@@ -22,7 +22,7 @@
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/search.h"
-#include "export/image.h"
+#include "io/image.h"
 #include "server_support.h"
 #include "socket_support.h"
 

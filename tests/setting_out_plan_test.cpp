@@ -1,7 +1,7 @@
 // Tests of setting_out_plan.h: a curved wall's setting-out plan is drawn on paper, the arc
 // inked where it lies in the box; a building with no curved façade, or a box too small to hold
 // a plan, draws nothing.
-#include "export/setting_out_plan.h"
+#include "export/drawing/setting_out_plan.h"
 
 #include <cairo.h>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Tests of sheet_drawing.h: the view places layout millimetres on paper at the scale, y down,
 // and lines too wide for their room are cut short.
-#include "export/sheet_drawing.h"
+#include "export/drawing/sheet_drawing.h"
 
 #include <cairo.h>
 #include <gtest/gtest.h>

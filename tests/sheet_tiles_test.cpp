@@ -1,5 +1,5 @@
 // A perforated sheet drawn as tiles: which openings become shared tiles, and the tile's shape.
-#include "export/sheet_tiles.h"
+#include "layout/sheet_tiles.h"
 
 #include <gtest/gtest.h>
 

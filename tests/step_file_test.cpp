@@ -1,7 +1,7 @@
 // The STEP physical file writer: strings 7-bit whatever their script, reals always with a
 // point, GlobalIds of IFC's alphabet derived from their key alone, and entities numbered as
 // they are written.
-#include "export/step_file.h"
+#include "export/ifc/step_file.h"
 
 #include <gtest/gtest.h>
 

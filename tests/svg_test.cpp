@@ -1,5 +1,5 @@
 // Tests of svg.h.
-#include "export/svg.h"
+#include "export/drawing/svg.h"
 
 #include <gtest/gtest.h>
 

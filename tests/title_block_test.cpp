@@ -1,6 +1,6 @@
 // Tests of title_block.h: the title block names the recipe, seed, lattice and probabilities,
 // and the kind says the surface and how it is laid; legends count in the kind's unit.
-#include "export/title_block.h"
+#include "layout/title_block.h"
 
 #include <gtest/gtest.h>
 

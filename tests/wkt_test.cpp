@@ -1,5 +1,5 @@
 // Tests of wkt.h: lengths to the micrometre, and outlines as WKT polygons that close.
-#include "export/wkt.h"
+#include "layout/wkt.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // over the binary chunk without a copy, the scene as flat arrays (view3d.js builds the
 // three.js objects of its elements from them when a click or a check asks) and the drawing the
 // camera shows, merged a material at a time (glb_merge.js). It reads what curdle's own writer
-// puts in a glb (export/gltf_json.cpp): float positions and normals, integer indices, PBR
+// puts in a glb (export/gltf/gltf_json.cpp): float positions and normals, integer indices, PBR
 // colours, node trees with matrices or TRS and extras. Anything else is answered with
 // `unsupported`, and the page falls back to three.js's own loader.
 "use strict";

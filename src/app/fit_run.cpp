@@ -11,9 +11,9 @@
 #include "app/run.h"
 #include "curdle/error.h"
 #include "curdle/measure.h"
-#include "export/atomic_file.h"
-#include "export/cells_csv_reader.h"
-#include "export/measure_files.h"
+#include "export/report/measure_files.h"
+#include "io/atomic_file.h"
+#include "io/cells_csv_reader.h"
 
 namespace curdle::app {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "curdle/fit.h"
 #include "curdle/lattice.h"
-#include "export/image.h"
+#include "io/image.h"
 
 namespace curdle::app {
 

@@ -11,11 +11,11 @@
 
 #include "curdle/error.h"
 #include "curdle/stop.h"
-#include "export/mask_image.h"
 #include "kinds/facade.h"
 #include "layout/builder.h"
 #include "layout/drawing_scale.h"
 #include "layout/piece.h"
+#include "site/mask_image.h"
 
 namespace fs = std::filesystem;
 

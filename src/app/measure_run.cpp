@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "app/run.h"
-#include "export/bounded_image.h"
+#include "io/bounded_image.h"
 
 namespace curdle::app {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "app/output_sink.h"
-#include "export/measure_files.h"
+#include "export/report/measure_files.h"
 
 namespace curdle::app {
 

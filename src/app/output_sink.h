@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "export/atomic_file.h"
+#include "io/atomic_file.h"
 
 namespace curdle::app {
 

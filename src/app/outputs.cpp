@@ -6,23 +6,23 @@
 
 #include "app/generated_run.h"
 #include "curdle/error.h"
-#include "export/cairo_on_demand.h"
-#include "export/cells_csv.h"
-#include "export/cutting.h"
-#include "export/drawing_set.h"
-#include "export/gltf.h"
-#include "export/gpkg.h"
-#include "export/ifc.h"
-#include "export/install.h"
-#include "export/layout_dxf.h"
-#include "export/layout_png.h"
-#include "export/park_schedules.h"
-#include "export/preview_png.h"
-#include "export/punching.h"
-#include "export/report_json.h"
-#include "export/report_table.h"
-#include "export/schedule.h"
-#include "export/svg.h"
+#include "export/drawing/cairo_on_demand.h"
+#include "export/drawing/drawing_set.h"
+#include "export/drawing/install.h"
+#include "export/drawing/layout_png.h"
+#include "export/drawing/svg.h"
+#include "export/dxf/cutting.h"
+#include "export/dxf/layout_dxf.h"
+#include "export/gis/gpkg.h"
+#include "export/gltf/gltf.h"
+#include "export/ifc/ifc.h"
+#include "export/report/cells_csv.h"
+#include "export/report/preview_png.h"
+#include "export/report/report_json.h"
+#include "export/report/report_table.h"
+#include "export/schedules/park_schedules.h"
+#include "export/schedules/punching.h"
+#include "export/schedules/schedule.h"
 
 namespace fs = std::filesystem;
 
@@ -41,7 +41,8 @@ auto with_progress(RunObserver* observer, const std::string& what, F&& step) {
 uint64_t view_cells(const Run& run) { return run.view.cells(); }
 
 // Rough bytes an element costs in each writer's structures, measured: layout.glb keeps its nodes
-// as JSON text (export/gltf_json.h) and adds 0.52 GB to a million tiles' run for a 262 MB file.
+// as JSON text (export/gltf/gltf_json.h) and adds 0.52 GB to a million tiles' run for a 262 MB
+// file.
 constexpr uint64_t kGltfBytesPerElement = 800;
 // layout.gpkg holds every feature (its attributes as text, its rings in metres) before GDAL
 // writes it: 1.2 KB an element measured (4,489 to 40,000 pavers), with room.

@@ -8,7 +8,7 @@
 #include "curdle/error.h"
 #include "curdle/measure.h"
 #include "curdle/palette.h"
-#include "export/measure_files.h"
+#include "export/report/measure_files.h"
 
 namespace curdle::app {
 namespace {

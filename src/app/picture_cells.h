@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "export/image.h"
+#include "io/image.h"
 
 namespace curdle::app {
 

@@ -8,8 +8,8 @@
 #include "app/measure_run.h"
 #include "app/run.h"
 #include "curdle/error.h"
-#include "export/bounded_image.h"
-#include "export/picture_gate.h"
+#include "io/bounded_image.h"
+#include "io/picture_gate.h"
 
 namespace fs = std::filesystem;
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/fit_run.h"
-#include "export/measure_files.h"
+#include "export/report/measure_files.h"
 
 namespace curdle::app {
 

@@ -15,7 +15,7 @@
 #include <sstream>
 
 #include "curdle/error.h"
-#include "export/bounded_image.h"
+#include "io/bounded_image.h"
 #include "site/drawing.h"
 #include "site/reading_memory.h"
 

@@ -12,8 +12,8 @@
 #include "app/zone_in_cells.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
-#include "export/csv_field.h"
-#include "export/preview_png.h"
+#include "export/report/preview_png.h"
+#include "io/csv_field.h"
 #include "layout/builder.h"
 
 namespace curdle::app {

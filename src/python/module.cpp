@@ -17,9 +17,9 @@
 #include "curdle/markov.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
-#include "export/measure_files.h"
-#include "export/piece_rows.h"
-#include "export/wkt.h"
+#include "export/report/measure_files.h"
+#include "layout/piece_rows.h"
+#include "layout/wkt.h"
 #include "python/interruptible.h"
 #include "recipe/toml_reader.h"
 

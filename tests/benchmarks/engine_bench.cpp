@@ -13,7 +13,7 @@
 #include "curdle/curdling.h"
 #include "curdle/report.h"
 #include "curdle/search.h"
-#include "export/schedule.h"
+#include "export/schedules/schedule.h"
 #include "kinds/registry.h"
 #include "layout/builder.h"
 #include "recipe/recipe.h"

@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "curdle/error.h"
-#include "export/cells_csv_reader.h"
+#include "io/cells_csv_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size > 1 << 20) return 0;

@@ -1,5 +1,5 @@
-// Fuzz target: the picture gate (export/picture_gate.h) reading any bytes as a picture's file,
-// and a PNG it lets through decoded by the in-process reader (export/png_reader.h). Either may
+// Fuzz target: the picture gate (src/io/picture_gate.h) reading any bytes as a picture's file,
+// and a PNG it lets through decoded by the in-process reader (src/io/png_reader.h). Either may
 // refuse them; neither may crash, hang or read past them.
 #include <cstddef>
 #include <cstdint>
@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "export/picture_gate.h"
-#include "export/png_reader.h"
+#include "io/picture_gate.h"
+#include "io/png_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::string why;

@@ -1,0 +1,599 @@
+#include "export/drawing/sheet_drawing.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "curdle/stop.h"
+#include "export/drawing/opening_dots.h"
+#include "export/drawing/svg.h"
+#include "layout/arc_setting_out.h"
+#include "layout/installer_sheets.h"
+#include "layout/piece.h"
+#include "layout/title_block.h"
+#include "layout/zone.h"
+
+namespace curdle::sheet_drawing {
+namespace {
+
+constexpr const char* kFont = "DejaVu Sans";
+
+// Text drawn unhinted with unrounded metrics on every surface. Left to the defaults, a PNG
+// drawn after a PDF in the same process reused the PDF's cached font and its glyphs came out a
+// pixel off, so layout.png's bytes depended on what the process had drawn before.
+const cairo_font_options_t* fixed_font_options() {
+  static cairo_font_options_t* options = [] {
+    cairo_font_options_t* o = cairo_font_options_create();
+    cairo_font_options_set_hint_style(o, CAIRO_HINT_STYLE_NONE);
+    cairo_font_options_set_hint_metrics(o, CAIRO_HINT_METRICS_OFF);
+    cairo_font_options_set_antialias(o, CAIRO_ANTIALIAS_GRAY);
+    return o;
+  }();
+  return options;
+}
+
+// The sheets' font, its capitals `height` mm high.
+void font(cairo_t* cr, double height, bool bold) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, height / kCapHeightEm);
+  cairo_set_font_options(cr, fixed_font_options());
+}
+
+}  // namespace
+
+void draw_zones(cairo_t* cr, const Layout& layout, const View& v, bool named) {
+  for (const ZoneCount& z : layout.zones) {
+    if (z.polygon.empty()) continue;
+    const bool value = z.rule == ZoneRule::value;
+    cairo_new_path(cr);
+    for (size_t i = 0; i < z.polygon.size(); ++i)
+      (i ? cairo_line_to : cairo_move_to)(cr, v.x(z.polygon[i][0]), v.y(z.polygon[i][1]));
+    cairo_close_path(cr);
+    colour(cr, value ? Rgb{34, 34, 34} : Rgb{68, 81, 92});
+    cairo_set_line_width(cr, 0.35);
+    const double dashes[] = {2.0, 1.2};
+    cairo_set_dash(cr, dashes, value ? 2 : 0, 0);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    if (named)
+      text(cr, v.x(z.polygon[0][0]) + 1.2, v.y(z.polygon[0][1]) - 1.2,
+           value ? fmt::format("{} (value {})", z.name, z.value) : z.name, 2);
+  }
+}
+
+void colour(cairo_t* cr, const Rgb& c, double alpha) {
+  cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
+}
+
+namespace {
+
+// Saves the state, turns it as the text reads and moves to where `s` starts; the caller draws
+// and restores.
+void begin_text(cairo_t* cr, double x, double y, const std::string& s, double height, Align align,
+                bool rotated, bool bold) {
+  font(cr, height, bold);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  const double shift = align == Align::left     ? 0
+                       : align == Align::centre ? e.x_advance / 2
+                                                : e.x_advance;
+  cairo_save(cr);
+  cairo_translate(cr, x, y);
+  if (rotated) cairo_rotate(cr, -M_PI / 2);
+  cairo_move_to(cr, -shift, 0);
+}
+
+}  // namespace
+
+void text(cairo_t* cr, double x, double y, const std::string& s, double height, Align align,
+          bool rotated, bool bold) {
+  begin_text(cr, x, y, s, height, align, rotated, bold);
+  cairo_show_text(cr, s.c_str());
+  cairo_restore(cr);
+}
+
+void text_on_halo(cairo_t* cr, double x, double y, const std::string& s, double height, Align align,
+                  bool rotated) {
+  begin_text(cr, x, y, s, height, align, rotated, false);
+  double px = 0, py = 0;
+  cairo_get_current_point(cr, &px, &py);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  // The halo is a box round the ink, not the glyphs' outlines stroked wide: those outlines
+  // were most of a sheet's bytes and of the time it took to write.
+  const double pad = height * 0.14;
+  cairo_rectangle(cr, px + e.x_bearing - pad, py + e.y_bearing - pad, e.width + 2 * pad,
+                  e.height + 2 * pad);
+  colour(cr, Rgb{255, 255, 255}, 0.9);
+  cairo_fill(cr);
+  // The ink as text: a reader finds an ID by searching the PDF for it.
+  colour(cr, kInk);
+  cairo_move_to(cr, px, py);
+  cairo_show_text(cr, s.c_str());
+  cairo_restore(cr);
+}
+
+double text_width(cairo_t* cr, const std::string& s, double height) {
+  font(cr, height, false);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  return e.x_advance;
+}
+
+void box(cairo_t* cr, double x, double y, double w, double h, double line) {
+  cairo_rectangle(cr, x, y, w, h);
+  cairo_set_line_width(cr, line);
+  cairo_stroke(cr);
+}
+
+// The layout's pieces as vectors; `faint` washes the colours out so that labels read over them.
+void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
+  const double alpha = faint ? kFaintAlpha : 1;
+  const Rect all{0, 0, layout.width, layout.height};
+  const bool sheet = layout.kind->ground() == Ground::sheet;
+  colour(cr,
+         sheet              ? Rgb{201, 205, 210}
+         : layout.joint > 0 ? layout.joint_colour
+                            : seamless_background(layout),
+         faint ? 0.25 : 1);
+  v.rect(cr, all);
+  cairo_fill(cr);
+  colour(cr, Rgb{223, 234, 242});
+  for (const Rect& o : layout.openings) v.rect(cr, o), cairo_fill(cr);
+  colour(cr, Rgb{255, 255, 255});  // beyond the outline: paper
+  for (const Rect& o : layout.outside) v.rect(cr, o), cairo_fill(cr);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);  // beyond sloping edges, in sloping zones
+  for (const Outline& o : layout.cut_away) ring_paths(cr, o.rings, v), cairo_fill(cr);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+  for (const Layout::ViewCell& c : layout.views) {
+    colour(cr, layout.legend[c.value].colour, alpha);
+    v.rect(cr, c.rect);
+    cairo_fill(cr);
+  }
+  if (!layout.views.empty()) return;  // blocks are drawn as their views
+  OpeningDots dots;
+  for_each_element(layout, v, [&](const Element& e) {
+    stop_point();
+    if (!v.shows(laid_bounds(e))) return;
+    const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
+    if (OpeningDots::takes(e)) return dots.add(e, c, v);  // drawn after the rest, as dots
+    if (e.circle) {  // a park's round element, drawn in its turn
+      colour(cr, c, alpha);
+      cairo_new_path(cr);
+      cairo_arc(cr, v.x(e.circle->cx), v.y(e.circle->cy), e.circle->d / 2 / v.scale, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
+    if (const std::optional<Rect> pit = tree_pit(layout, e)) {  // dashed, as dug below ground
+      colour(cr, kInk);
+      const double dash[] = {1.0, 0.6};
+      cairo_set_dash(cr, dash, 2, 0);
+      cairo_set_line_width(cr, 0.2);
+      v.rect(cr, *pit);
+      cairo_stroke(cr);
+      cairo_set_dash(cr, nullptr, 0, 0);
+    }
+    if (e.outline) {
+      colour(cr, c, alpha);
+      ring_paths(cr, e.outline->rings, v);
+      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+      cairo_fill(cr);
+      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    }
+    if (e.circle || e.outline) return;
+    if (!e.type.empty()) {
+      colour(cr, c, alpha);
+      for (const Rect& r : e.shape) v.rect(cr, r), cairo_fill(cr);
+      return;
+    }
+    for (const ColouredRect& stripe : keep_stripes(layout, e)) {
+      colour(cr, stripe.colour, alpha);
+      v.rect(cr, stripe.rect);
+      cairo_fill(cr);
+    }
+  });
+  dots.draw(cr, alpha);
+}
+
+void ring_paths(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {
+  cairo_new_path(cr);
+  add_rings(cr, rings, v);
+}
+
+std::optional<HatchStyle> hatch_style(uint32_t value, const Rgb& under) {
+  if (value == 0) return std::nullopt;
+  // Directions of the lines (degrees from the paper's x axis), per value within each eight.
+  static const std::vector<std::vector<double>> kStyles = {{45}, {135},   {45, 135}, {0},
+                                                           {90}, {0, 90}, {45}};
+  const size_t round = (value - 1) / kStyles.size();
+  const size_t style = (value - 1) % kStyles.size();
+  HatchStyle h;
+  h.degrees = kStyles[style];
+  h.spacing = (style + 1 == kStyles.size() ? 0.6 : 1.2) + 0.6 * static_cast<double>(round);
+  const double luminance = 0.299 * under.r + 0.587 * under.g + 0.114 * under.b;
+  h.ink = luminance < 110 ? Rgb{255, 255, 255} : kInk;
+  return h;
+}
+
+void hatch(cairo_t* cr, uint32_t value, const Rgb& under, double x0, double y0, double x1,
+           double y1) {
+  const std::optional<HatchStyle> h = hatch_style(value, under);
+  if (!h) return;
+  colour(cr, h->ink, kHatchAlpha);
+  cairo_set_line_width(cr, kHatchLineMm);
+  const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+  const double reach = std::hypot(x1 - x0, y1 - y0) / 2 + h->spacing;
+  for (const double degrees : h->degrees) {
+    const double a = degrees * M_PI / 180, dx = std::cos(a), dy = -std::sin(a);
+    for (double t = -reach; t <= reach; t += h->spacing) {  // offsets along the normal (-dy, dx)
+      const double px = cx - dy * t, py = cy + dx * t;
+      cairo_move_to(cr, px - dx * reach, py - dy * reach);
+      cairo_line_to(cr, px + dx * reach, py + dy * reach);
+    }
+  }
+  cairo_stroke(cr);
+}
+
+void draw_hatches(cairo_t* cr, const Layout& layout, const View& v) {
+  std::map<uint32_t, std::vector<const Element*>> by_value;
+  for_each_element(layout, v, [&](const Element& e) {
+    // Values that lay the same product share a hatch, as they share a key line.
+    if (e.value != 0 && v.shows(laid_bounds(e)))
+      by_value[e.type.empty() ? layout.legend[e.value].same_as : e.value].push_back(&e);
+  });
+  const double x0 = v.x(v.window.x), x1 = v.x(v.window.right());
+  const double y0 = v.y(v.window.top()), y1 = v.y(v.window.y);
+  for (const auto& [value, elements] : by_value) {
+    stop_point();
+    cairo_save(cr);
+    cairo_new_path(cr);
+    for (const Element* e : elements) {
+      if (e->circle) {
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, v.x(e->circle->cx), v.y(e->circle->cy), e->circle->d / 2 / v.scale, 0,
+                  2 * M_PI);
+      } else if (e->outline) {
+        add_rings(cr, e->outline->rings, v);
+      } else {
+        for (const Rect& r : e->shape.empty() ? std::vector<Rect>{laid_bounds(*e)} : e->shape)
+          v.rect(cr, r);
+      }
+    }
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+    cairo_clip(cr);
+    hatch(cr, value, piece_colour(layout, *elements.front()), x0, y0, x1, y1);
+    cairo_restore(cr);
+  }
+}
+
+void add_rings(cairo_t* cr, const std::vector<Ring>& rings, const View& v) {
+  // Corners are left out while every one left out lies within a hundredth of a paper
+  // millimetre of the line drawn past it: a round opening polygonised to a fraction of a
+  // millimetre has ten times the corners a drawing at 1:20 can show, and its path was most of
+  // a perforated sheet's PDF. At most kRun in a row, so that a long straight run stays linear.
+  constexpr double kPaperTolerance = 0.01;  // mm
+  constexpr size_t kRun = 64;
+  for (const Ring& ring : rings) {
+    const size_t n = ring.size();
+    auto at = [&](size_t i) {
+      return std::array<double, 2>{v.x(ring[i % n][0]), v.y(ring[i % n][1])};
+    };
+    size_t kept = 0;
+    cairo_move_to(cr, v.x(ring[0][0]), v.y(ring[0][1]));
+    for (size_t i = 1; i < n; ++i) {
+      // Can the line from the last corner drawn run on to i + 1, past i and those before it?
+      const std::array<double, 2> from = at(kept), to = at(i + 1);
+      bool passes = i - kept < kRun;
+      for (size_t j = kept + 1; passes && j <= i; ++j)
+        passes = distance_to_segment(at(j), from, to) < kPaperTolerance;
+      if (passes) continue;
+      const std::array<double, 2> p = at(i);
+      cairo_line_to(cr, p[0], p[1]);
+      kept = i;
+    }
+    cairo_close_path(cr);
+  }
+}
+
+void draw_boundary(cairo_t* cr, const Layout& layout, const View& v) {
+  if (layout.width <= 0 || layout.height <= 0) return;
+  cairo_save(cr);
+  colour(cr, kInk);
+  cairo_set_line_width(cr, 0.5);
+  if (layout.outline.empty()) {
+    cairo_new_path(cr);
+    v.rect(cr, Rect{0, 0, layout.width, layout.height});
+  } else {
+    ring_paths(cr, {layout.outline}, v);
+  }
+  cairo_stroke(cr);
+  cairo_restore(cr);
+}
+
+// A white ISO sheet with its frame (ISO 5457 margins) and the line above the title strip.
+void frame(cairo_t* cr, double w, double h) {
+  colour(cr, Rgb{255, 255, 255});
+  cairo_paint(cr);
+  colour(cr, kInk);
+  box(cr, kLeftMargin, kMargin, w - kLeftMargin - kMargin, h - 2 * kMargin, 0.5);
+  cairo_move_to(cr, kLeftMargin, h - kMargin - kTitleStrip);
+  cairo_line_to(cr, w - kMargin, h - kMargin - kTitleStrip);
+  cairo_set_line_width(cr, 0.35);
+  cairo_stroke(cr);
+}
+
+// A scale bar of whole metres (or tenths) that reads at 1 : scale, at most `room` mm long.
+void scale_bar(cairo_t* cr, double x, double y, double scale, double room) {
+  double step = 1;  // mm of the layout per division
+  for (const double s : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0, 2000.0,
+                         5000.0, 10000.0, 20000.0, 50000.0, 100000.0})
+    if (4 * s / scale <= room) step = s;
+  const double d = step / scale;
+  for (int i = 0; i < 4; ++i) {
+    cairo_rectangle(cr, x + i * d, y, d, 1.6);
+    colour(cr, i % 2 ? Rgb{255, 255, 255} : kInk);
+    cairo_fill_preserve(cr);
+    colour(cr, kInk);
+    cairo_set_line_width(cr, 0.2);
+    cairo_stroke(cr);
+  }
+  auto label = [&](double v) {
+    return v == 0      ? std::string("0")
+           : v >= 1000 ? fmt::format("{:g} m", v / 1000)
+                       : fmt::format("{:g} mm", v);
+  };
+  for (int i = 0; i <= 4; i += 2) text(cr, x + i * d, y - 1.2, label(i * step), 2, Align::centre);
+}
+
+// Where laying starts: a red dot just outside the origin corner, and arrows along the first
+// row and up the rows, clear of the first element.
+void start_corner(cairo_t* cr, const Layout& layout, const View& v) {
+  if (!layout.kind->laid_from_corner()) return;
+  const bool right = from_right(layout.origin), top = from_top(layout.origin);
+  const double cx = v.x(right ? layout.width : 0), cy = v.y(top ? layout.height : 0);
+  const double dx = right ? -1 : 1, dy = top ? 1 : -1;  // paper y runs down
+  const double ox = cx - dx * kStartDotMm, oy = cy - dy * kStartDotMm;
+  colour(cr, kRed);
+  cairo_new_path(cr);  // no line from where the last text ended
+  cairo_arc(cr, ox, oy, 1.2, 0, 2 * M_PI);
+  cairo_fill(cr);
+  cairo_set_line_width(cr, 0.35);
+  cairo_move_to(cr, ox, oy);
+  cairo_line_to(cr, ox + dx * kStartArrowMm, oy);
+  cairo_move_to(cr, ox, oy);
+  cairo_line_to(cr, ox, oy + dy * kStartArrowMm);
+  cairo_stroke(cr);
+  text(cr, ox + dx * (kStartArrowMm + 2), oy + kStartTextMm / 2, kStartText, kStartTextMm,
+       right ? Align::right : Align::left);
+}
+
+void draw_facades(cairo_t* cr, const Layout& layout, const View& v) {
+  if (layout.frames.empty()) return;
+  const double bottom = v.y(0), top = v.y(layout.height);
+  const double below = bottom + kStartDotMm + 1.25;  // in line with the start corner's words
+  // Clear of those words where the strip starts on this sheet.
+  const double clear = v.shows(Rect{0, 0, 0, 0})
+                           ? v.x(0) + kStartArrowMm + 4 + text_width(cr, kStartText, kStartTextMm)
+                           : -1e300;
+  cairo_save(cr);
+  colour(cr, kBlue);
+  cairo_set_line_width(cr, 0.35);
+  const double dash[] = {2.0, 1.0};
+  for (const SurfaceFrame& f : layout.frames) {
+    const double from = std::max(f.start, v.window.x);
+    const double to = std::min(f.start + f.length, v.window.right());
+    if (to <= from) continue;
+    // The corner at the façade's end, dashed up the wall and down to the names.
+    const double end = f.start + f.length;
+    if (end >= v.window.x && end <= v.window.right() && !f.last_of_path) {
+      cairo_set_dash(cr, dash, 2, 0);
+      cairo_move_to(cr, v.x(end), top);
+      cairo_line_to(cr, v.x(end), below + 1);
+      cairo_stroke(cr);
+      cairo_set_dash(cr, nullptr, 0, 0);
+    }
+    std::string name = f.name;
+    name += f.bulge != 0 ? " (curved), " : ", ";
+    name += fmt::format("{:g} mm", std::round(f.length * 10) / 10);
+    const double left = std::max(v.x(from), clear), right = v.x(to);
+    for (const std::string& said : {name, f.name})
+      if (right - left > text_width(cr, said, 2.5) + 3) {
+        text_on_halo(cr, (left + right) / 2, below, said, 2.5, Align::centre);
+        break;
+      }
+  }
+  cairo_restore(cr);
+}
+
+namespace {
+
+// Each arc of the outline and zones named where it runs (A1 and its radius at its middle), with
+// a cross at its centre where that lies on the drawing; the list below the caption gives their
+// centres, radii and ends.
+void mark_arcs(cairo_t* cr, const Layout& layout, const View& v,
+               const std::vector<SetOutArc>& arcs) {
+  colour(cr, kBlue);
+  cairo_set_line_width(cr, 0.15);
+  for (const SetOutArc& a : arcs) {
+    const double cx = a.arc.centre[0], cy = a.arc.centre[1];
+    if (cx >= 0 && cy >= 0 && cx <= layout.width && cy <= layout.height) {
+      cairo_move_to(cr, v.x(cx) - 1.2, v.y(cy)), cairo_line_to(cr, v.x(cx) + 1.2, v.y(cy));
+      cairo_move_to(cr, v.x(cx), v.y(cy) - 1.2), cairo_line_to(cr, v.x(cx), v.y(cy) + 1.2);
+      cairo_stroke(cr);
+    }
+    if (a.circle) {
+      text(cr, v.x(cx) + 1.5, v.y(cy) + 2.8, "R " + drawing_mm(a.arc.radius), 1.6);
+      continue;
+    }
+    // The arc's middle, with the label a little towards its centre.
+    const double mid = a.arc.start_angle() + a.arc.sweep / 2;
+    const double mx = cx + a.arc.radius * std::cos(mid), my = cy + a.arc.radius * std::sin(mid);
+    const double in = 4 * v.scale;  // 4 mm on paper
+    text(cr, v.x(mx - in * std::cos(mid)), v.y(my - in * std::sin(mid)),
+         a.name + " R " + drawing_mm(a.arc.radius), 1.6, Align::centre);
+  }
+}
+
+}  // namespace
+
+void setting_out(cairo_t* cr, const Layout& layout, const View& v) {
+  if (layout.width <= 0 || layout.height <= 0 || !layout.views.empty()) return;
+  std::vector<double> xs{0, layout.width}, ys{0, layout.height};
+  auto add_ring = [&](const Polygon& ring) {
+    for (const auto& p : ring) xs.push_back(p[0]), ys.push_back(p[1]);
+  };
+  // An arc is set out by its ends and centre (listed below), not by its chords' corners.
+  auto add_shape = [&](const Polygon& polygon, const Contour& contour) {
+    add_ring(contour.empty() ? polygon : set_out_points(contour, layout.width, layout.height));
+  };
+  add_shape(layout.outline, layout.outline_contour);
+  for (size_t i = 0; i < layout.openings_given; ++i) {
+    const Rect& o = layout.openings[i];
+    xs.insert(xs.end(), {o.x, o.right()}), ys.insert(ys.end(), {o.y, o.top()});
+  }
+  for (const ZoneCount& z : layout.zones) add_shape(z.polygon, z.contour);
+  auto tidy = [](std::vector<double>& values, double high) {
+    for (double& x : values) x = std::clamp(std::round(x * 10) / 10, 0.0, high);
+    std::sort(values.begin(), values.end());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+  };
+  tidy(xs, layout.width), tidy(ys, layout.height);
+  // Away from the start corner, whose arrows and words lie along its two edges.
+  const bool below = from_top(layout.origin), left = from_right(layout.origin);
+  const double edge_y = below ? v.y(0) : v.y(layout.height);
+  const double edge_x = left ? v.x(0) : v.x(layout.width);
+  const double out_y = below ? 1 : -1, out_x = left ? -1 : 1;
+  constexpr double kText = 1.6, kGap = 2.2;  // mm on paper
+  colour(cr, kBlue);
+  cairo_set_line_width(cr, 0.15);
+  double last = -1e300;
+  for (const double x : xs) {
+    const double px = v.x(x);
+    if (px - last < kGap && x != layout.width) continue;
+    last = px;
+    cairo_move_to(cr, px, edge_y + out_y * 0.8), cairo_line_to(cr, px, edge_y + out_y * 2.4);
+    cairo_stroke(cr);
+    // Read bottom to top, beyond the tick.
+    const double ty = below ? edge_y + 3 + text_width(cr, drawing_mm(x), kText) : edge_y - 3;
+    text(cr, px + kText / 2, ty, drawing_mm(x), kText, Align::left, true);
+  }
+  last = -1e300;
+  for (const double y : ys) {
+    const double py = v.y(y);
+    if (last - py < kGap && y != layout.height && last > -1e299) continue;
+    last = py;
+    cairo_move_to(cr, edge_x + out_x * 0.8, py), cairo_line_to(cr, edge_x + out_x * 2.4, py);
+    cairo_stroke(cr);
+    text(cr, edge_x + out_x * 3, py + kText / 2, drawing_mm(y), kText,
+         left ? Align::right : Align::left);
+  }
+  const char* corner = from_top(layout.origin)
+                           ? (from_right(layout.origin) ? "top-right" : "top-left")
+                       : from_right(layout.origin) ? "bottom-right"
+                                                   : "bottom-left";
+  const std::string caption = fmt::format(
+      "setting out: mm from the datum (0, 0), the bottom-left corner; laying starts at the {} "
+      "corner ({}, {})",
+      corner, drawing_mm(from_right(layout.origin) ? layout.width : 0),
+      drawing_mm(from_top(layout.origin) ? layout.height : 0));
+  const double caption_y = below ? v.y(layout.height) - 2 : v.y(0) + 12;
+  text(cr, v.x(0), caption_y, caption, 1.8);
+  const std::vector<SetOutArc> arcs = arcs_to_set_out(layout);
+  if (arcs.empty()) return;
+  mark_arcs(cr, layout, v, arcs);
+  // Up to three lines of arcs under the caption (above it where the caption stands on top).
+  std::vector<std::string> lines;
+  for (size_t i = 0; i < arcs.size() && lines.size() < 3; ++i) lines.push_back(arcs[i].line);
+  if (arcs.size() > 3)
+    lines.back() += fmt::format("; {} more in the DXF (layer OUTLINE and ZONES)", arcs.size() - 3);
+  lines = fit_lines(cr, lines, std::max(40.0, v.x(layout.width) - v.x(0)), 1.6);
+  for (size_t i = 0; i < lines.size(); ++i)
+    text(cr, v.x(0), caption_y + (below ? -2.4 : 2.4) * static_cast<double>(i + 1), lines[i], 1.6);
+}
+
+std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,
+                                   double height) {
+  for (std::string& l : lines)
+    while (l.size() > 4 && text_width(cr, l, height) > width) l = l.substr(0, l.size() - 4) + "...";
+  return lines;
+}
+
+std::vector<std::string> wrap_lines(cairo_t* cr, const std::vector<std::string>& lines,
+                                    double width, double height, size_t most) {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    std::string rest = lines[i];
+    // Room for the lines still to come, one each.
+    while (text_width(cr, rest, height) > width && out.size() + (lines.size() - i) < most) {
+      size_t cut = rest.rfind(' ');
+      while (cut != std::string::npos && cut > 0 &&
+             text_width(cr, rest.substr(0, cut), height) > width)
+        cut = rest.rfind(' ', cut - 1);
+      if (cut == std::string::npos || cut == 0) break;  // one word wider than the line
+      out.push_back(rest.substr(0, cut));
+      rest = rest.substr(cut + 1);
+    }
+    out.push_back(std::move(rest));
+  }
+  return fit_lines(cr, std::move(out), width, height);
+}
+
+double title_width(double w) { return std::min(150.0, (w - kLeftMargin - kMargin) * 0.55); }
+
+// A north arrow 9 mm tall standing on (x, y), with its N above.
+void north_arrow(cairo_t* cr, double x, double y) {
+  colour(cr, kInk);
+  cairo_new_path(cr);
+  cairo_move_to(cr, x, y - 9);
+  cairo_line_to(cr, x + 2.2, y);
+  cairo_line_to(cr, x, y - 2);
+  cairo_close_path(cr);
+  cairo_fill(cr);
+  cairo_move_to(cr, x, y - 9);
+  cairo_line_to(cr, x - 2.2, y);
+  cairo_line_to(cr, x, y - 2);
+  cairo_close_path(cr);
+  cairo_set_line_width(cr, 0.25);
+  cairo_stroke(cr);
+  text(cr, x, y - 10.5, "N", 2.5, Align::centre, false, true);
+}
+
+void title_block(cairo_t* cr, const Layout& layout, const std::vector<std::string>& title_text,
+                 double w, double h, const std::string& what, double scale, size_t number,
+                 size_t total, const std::string& paper) {
+  const double tw = title_width(w);
+  const double x = w - kMargin - tw, y = h - kMargin - kTitleStrip;
+  colour(cr, kInk);
+  box(cr, x, y, tw, kTitleStrip, 0.35);
+  std::vector<std::string> lines = title_text;
+  lines.insert(lines.begin() + 1, what);
+  // The first is bold at 2.5 mm, about 1.4 times as wide as the same at 2 mm: a long title
+  // gives its description a line of its own rather than an ellipsis; long lines wrap, so that
+  // only what ten lines cannot hold is cut.
+  // Plans carry a north arrow under the ninth line: then nine lines, else ten.
+  const bool arrow = !layout.kind->upright() && layout.views.empty();
+  const size_t most = arrow ? 9 : 10;
+  const std::string title = lines[0];
+  const size_t dash = title.find(" - ");
+  if (text_width(cr, title, 2) * 1.4 > tw - 6 && dash != std::string::npos) {
+    lines[0] = title.substr(0, dash);
+    lines.insert(lines.begin() + 1, title.substr(dash + 3));
+  }
+  lines[0] = fit_lines(cr, {lines[0]}, (tw - 6) / 1.4, 2)[0];
+  std::vector<std::string> rest(lines.begin() + 1, lines.end());
+  rest = wrap_lines(cr, rest, tw - 6, 2, most - 1);
+  lines.resize(1);
+  lines.insert(lines.end(), rest.begin(), rest.end());
+  for (size_t i = 0; i < lines.size() && i < most; ++i)
+    text(cr, x + 3, y + 5 + 4.2 * static_cast<double>(i), lines[i], i == 0 ? 2.5 : 2, Align::left,
+         false, i == 0);
+  text(cr, x + 3, y + kTitleStrip - 3, fmt::format("scale 1 : {:g} on {}", scale, paper), 2.5);
+  text(cr, x + tw - 3, y + kTitleStrip - 3, fmt::format("sheet {} of {}", number, total), 3.5,
+       Align::right, false, true);
+  // Plans carry a north arrow: +y of the layout, as its glTF and IFC take north.
+  if (arrow) north_arrow(cr, x + tw * 0.55, y + kTitleStrip - 1);
+}
+
+}  // namespace curdle::sheet_drawing

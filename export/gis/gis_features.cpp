@@ -1,0 +1,104 @@
+#include "export/gis/gis_features.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+
+#include "layout/piece_rows.h"
+#include "layout/zone.h"
+
+namespace curdle {
+namespace {
+
+using T = GisField::Type;
+
+// The schedule's columns, in its units, as fields (curd bits are the value's).
+const std::vector<GisField> kFields{{"element_id", T::text},     {"lot", T::text},
+                                    {"level", T::integer},       {"row", T::integer},
+                                    {"column", T::integer},      {"x_mm", T::real},
+                                    {"y_mm", T::real},           {"z_mm", T::real},
+                                    {"width_mm", T::real},       {"height_mm", T::real},
+                                    {"depth_mm", T::real},       {"area_m2", T::real},
+                                    {"stock_width_mm", T::real}, {"stock_height_mm", T::real},
+                                    {"value", T::integer},       {"element_type", T::text},
+                                    {"colour", T::text},         {"material", T::text},
+                                    {"cut", T::integer},         {"opening_diameter_mm", T::real}};
+
+std::string number(double v) { return fmt::format("{}", v); }
+std::string number(const std::optional<double>& v) { return v ? number(*v) : std::string(); }
+
+// A table name from an element type: "paving tile" -> "paving_tile".
+std::string table_name(const std::string& type) {
+  std::string out;
+  for (const char c : type) {
+    const bool keep = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+    if (c >= 'A' && c <= 'Z')
+      out += static_cast<char>(c - 'A' + 'a');
+    else
+      out += keep ? c : '_';
+  }
+  return out.empty() || (out[0] >= '0' && out[0] <= '9') ? "elements_" + out : out;
+}
+
+std::vector<std::string> values_of(const ScheduleRow& r) {
+  return {r.id,
+          r.lot,
+          r.level ? std::to_string(*r.level) : "",
+          std::to_string(r.row),
+          std::to_string(r.column),
+          number(r.x),
+          number(r.y),
+          number(r.z),
+          number(r.width),
+          number(r.height),
+          number(r.depth),
+          number(area_m2(r.area)),
+          number(r.stock_width),
+          number(r.stock_height),
+          std::to_string(r.value),
+          r.element_type,
+          r.colour,
+          r.material,
+          r.cut ? "1" : "0",
+          number(r.opening_diameter)};
+}
+
+}  // namespace
+
+std::array<double, 2> map_point(const Layout& layout, double x_mm, double y_mm) {
+  const double x = x_mm / 1000, y = y_mm / 1000;
+  if (!layout.georef) return {x, y};
+  const Georef& g = *layout.georef;
+  const double a = g.rotation * 3.14159265358979323846 / 180;
+  return {g.easting + x * std::cos(a) - y * std::sin(a),
+          g.northing + x * std::sin(a) + y * std::cos(a)};
+}
+
+GisDataset gis_features(const Layout& layout) {
+  GisDataset data;
+  data.epsg = layout.georef ? layout.georef->epsg : 0;
+  data.fields = kFields;
+  std::map<std::string, size_t> layer_of;  // table name -> index, in order of first piece
+  for (size_t i = 0; i < layout.elements.size(); ++i) {
+    const ScheduleRow row = schedule_row(layout, i);
+    const std::string name = table_name(row.element_type);
+    auto [at, added] = layer_of.try_emplace(name, data.layers.size());
+    if (added) data.layers.push_back({name, {}});
+    GisFeature f;
+    f.values = values_of(row);
+    for (const Outline& part : row.outlines) {
+      std::vector<Ring> rings;
+      for (const Ring& ring : part.rings) {
+        Ring mapped;
+        for (const auto& [x, y] : ring) mapped.push_back(map_point(layout, x, y));
+        rings.push_back(std::move(mapped));
+      }
+      f.polygons.push_back(std::move(rings));
+    }
+    data.layers[at->second].features.push_back(std::move(f));
+  }
+  return data;
+}
+
+}  // namespace curdle
