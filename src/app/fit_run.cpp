@@ -13,6 +13,7 @@
 #include "curdle/measure.h"
 #include "export/report/measure_files.h"
 #include "io/atomic_file.h"
+#include "io/bounded_file.h"
 #include "io/cells_csv_reader.h"
 
 namespace curdle::app {

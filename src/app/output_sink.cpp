@@ -10,13 +10,13 @@
 #include <charconv>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <mutex>
 #include <optional>
 #include <set>
 #include <sstream>
 
 #include "curdle/error.h"
+#include "io/bounded_file.h"
 
 namespace fs = std::filesystem;
 
@@ -33,10 +33,8 @@ void OutputSink::write_via_file(const std::string& name,
     ~Remove() { ::unlink(path.c_str()); }
   } remove{pattern};
   fill(pattern);
-  std::ifstream in(pattern, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  write(name, [&](std::ostream& out) { out << bytes.str(); });
+  const std::string bytes = read_own_file(pattern);
+  write(name, [&](std::ostream& out) { out << bytes; });
 }
 
 namespace {

@@ -54,10 +54,6 @@ bool set_names_a_file(const std::string& assignment);
 
 // The recipe file's text; InputError when it is not a readable regular file of at most 1 MiB.
 std::string read_recipe_file(const std::string& path);
-// A text file a user names: a regular file of at most `max_bytes`. `what` names it in messages
-// ("the recipe"), `kind` says what it should be.
-std::string read_bounded_text(const std::string& path, const std::string& what,
-                              const std::string& kind, uint64_t max_bytes);
 
 // "8G", "512M", "1.5GiB" or a number of bytes; InputError naming `parameter`.
 uint64_t parse_bytes(const std::string& text, const std::string& parameter);
