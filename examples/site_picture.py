@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""The README's "From your drawing" picture: the architect's DXF as drawn (left, every entity of
-its layers read with ezdxf, in the layer's colour) beside the layout curdle lays from it (right,
+"""The manual's "From your drawing" picture (docs/layouts.md): the architect's DXF as drawn
+(left, every entity of its layers read with ezdxf, in the layer's colour) beside the layout curdle lays from it (right,
 its layout.svg), at one scale. Needs rsvg-convert (librsvg2-bin).
 
     site_picture.py DRAWING.dxf LAYOUT.svg OUT.png

@@ -1,4 +1,4 @@
-"""The five design briefs of examples/briefs, each done as the README tells a new user, and each
+"""The five design briefs of examples/briefs, each done as the manual (docs/briefs.md) tells a new user, and each
 checked for what its user needs from it:
 
 - courtyard: its DXF names the porcelain ("Grès cérame") right when ezdxf reads it back, and

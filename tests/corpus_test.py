@@ -9,7 +9,7 @@ root. Each file must be read as the trusted reader reads it (the outline's area 
 0.5 %), or refused with a message that names the file and the layer, entity, element or line
 and says what to do; never a crash, a hang (10 s) or a silently different reading. Where the
 trusted reading is wrong, EXPECTED says what is right and why. Writes results.md, the table the
-README quotes.
+manual quotes (docs/layouts.md).
 
     corpus_test.py CURDLE CORPUS_DIR OUT_DIR     (exit 77, skipped, without the corpus)
 """

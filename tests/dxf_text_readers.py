@@ -4,7 +4,7 @@ Greek and Chinese, and an emoji beyond the BMP, in the drawing's title (TEXT) an
 names (the materials), must come back letter for letter.
 
 - ezdxf: every layer name and the title;
-- GDAL (python3-gdal's OGR DXF driver, with DXF_ENCODING=UTF-8 as the README says: GDAL reads
+- GDAL (python3-gdal's OGR DXF driver, with DXF_ENCODING=UTF-8 as docs/hand-over.md says: GDAL reads
   a DXF's strings in its $DWGCODEPAGE whatever its version): every layer and the title;
 - FreeCAD (freecadcmd, its own DXF importer): the title, as a text annotation;
 - LibreCAD (librecad dxf2pdf): the drawing printed from layout.dxf draws the very same strokes

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Every measured figure the README quotes (a time, a size in bytes, a speed ratio) is produced by
-a named benchmark or test in the repository: the paragraph, list item or table row that quotes it,
+"""Every measured figure the README and the manual (docs/) quote (a time, a size in bytes, a
+speed ratio) is produced by a named benchmark or test in the repository: the paragraph, list
+item or table row that quotes it,
 or else the section it stands in, names a benchmark (tests/benchmarks/..., BM_...), a test
 (Suite.Name, or a tests/ script) or an example program, and each name exists. Lists every figure
 with its source; exits 1 naming the figures that have none and the sources that do not exist.
@@ -12,29 +13,37 @@ from pathlib import Path
 
 root = Path(sys.argv[1])
 listing = "--list" in sys.argv
-readme = (root / "README.md").read_text(encoding="utf-8").split("\n")
 
-# Blocks: a table row, a list item or a paragraph, each with its heading (fences skipped).
-blocks, current, heading, fenced = [], None, "", False
-for number, line in enumerate(readme, 1):
-    if line.startswith("```"):
-        fenced, current = not fenced, None
-        continue
-    if fenced:
-        continue
-    if line.startswith("#"):
-        heading, current = line.lstrip("# "), None
-        continue
-    if not line.strip():
-        current = None
-        continue
-    if line.startswith("|") or re.match(r"\s*([-*]|\d+\.) ", line) or current is None:
-        current = {"line": number, "text": line, "heading": heading}
-        blocks.append(current)
-        if line.startswith("|"):
+
+def read_blocks(path):
+    """Blocks of one file: a table row, a list item or a paragraph, each with its heading
+    (fences skipped)."""
+    blocks, current, heading, fenced = [], None, "", False
+    name = path.relative_to(root).as_posix()
+    for number, line in enumerate(path.read_text(encoding="utf-8").split("\n"), 1):
+        if line.startswith("```"):
+            fenced, current = not fenced, None
+            continue
+        if fenced:
+            continue
+        if line.startswith("#"):
+            heading, current = line.lstrip("# "), None
+            continue
+        if not line.strip():
             current = None
-        continue
-    current["text"] += " " + line
+            continue
+        if line.startswith("|") or re.match(r"\s*([-*]|\d+\.) ", line) or current is None:
+            current = {"file": name, "line": number, "text": line, "heading": (name, heading)}
+            blocks.append(current)
+            if line.startswith("|"):
+                current = None
+            continue
+        current["text"] += " " + line
+    return blocks
+
+
+blocks = [b for path in [root / "README.md", *sorted((root / "docs").glob("*.md"))]
+          for b in read_blocks(path)]
 
 NUMBER = r"\d[\d,.]*(?:\s?[–-]\s?\d[\d,.]*)?"
 # A time, a size or a ratio: "0.23–0.26 s", "13.5 MB", "229–237×"; not a size in cells or
@@ -79,13 +88,13 @@ for b in blocks:
     sources = own or [s for s in section_sources[b["heading"]] if exists(s)]
     unknown.update(s for s in SOURCE.findall(b["text"]) if not exists(s) and "/" in s)
     if not sources:
-        missing.append(f"README.md:{b['line']}: {', '.join(found)}")
+        missing.append(f"{b['file']}:{b['line']}: {', '.join(found)}")
     listed += len(found)
     if listing:
-        print(f"README.md:{b['line']}: {', '.join(found)} <- {', '.join(dict.fromkeys(sources))}")
+        print(f"{b['file']}:{b['line']}: {', '.join(found)} <- {', '.join(dict.fromkeys(sources))}")
 for m in missing:
     print("FAIL: no benchmark or test names this figure:", m)
 for u in sorted(unknown):
-    print("FAIL: the README names a source that does not exist:", u)
+    print("FAIL: the README or docs/ name a source that does not exist:", u)
 print(f"{listed} figures, {len(missing)} without a source")
 sys.exit(1 if missing or unknown else 0)

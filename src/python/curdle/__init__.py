@@ -486,7 +486,7 @@ def search(recipe: Recipe | str | os.PathLike, seeds: str | range = "1..1000",
         recipe: a Recipe, or the path of its TOML file.
         seeds: "from..to", or a range of step 1.
         segment: (w, h) in cells to search segments of that size too; None: whole views.
-        targets: such as "density:dark=0.3..0.4" (README: Searching seeds and segments).
+        targets: such as "density:dark=0.3..0.4" (docs/page.md: Searching seeds and segments).
         top: how many hits to return.
         stride: cells between segments tried (0: a quarter of the segment).
         overrides, threads, max_memory: as generate.
