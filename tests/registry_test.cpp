@@ -19,7 +19,9 @@ TEST(LayoutKind, TheRegistryNamesEveryKindAndRefusesASecondOfOneName) {
   struct Another : SteppingStones {
     std::string_view name() const override { return "tile"; }
   };
-  EXPECT_THROW(register_layout_kind(std::make_unique<Another>()), std::logic_error);
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_DEATH(register_layout_kind(std::make_unique<Another>()),
+               "check failed: .*layout kind \"tile\" is registered twice");
   // An unknown kind's message lists the registered ones.
   try {
     run_of(kStones, {"layout.kind=\"lawn\""});

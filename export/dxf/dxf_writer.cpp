@@ -6,6 +6,8 @@
 #include <charconv>
 #include <stdexcept>
 
+#include "curdle/check.h"
+
 namespace curdle {
 
 // The base class opens a file of its own, written to by nothing here: /dev/null.
@@ -54,7 +56,7 @@ void BufferedDxfWriter::dxfHex(int gc, int value) const {
 }
 
 void BufferedDxfWriter::dxfString(int gc, const char* value) const {
-  if (!value) throw std::logic_error("a DXF string that is null");
+  CHECK(value, "a DXF string that is null");
   group(gc);
   out_ << value << '\n';
 }

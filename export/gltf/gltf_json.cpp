@@ -7,6 +7,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "curdle/check.h"
 #include "curdle/stop.h"
 
 namespace curdle {
@@ -128,7 +129,8 @@ const char* accessor_type(int type) {
     case TINYGLTF_TYPE_MAT4:
       return "MAT4";
     default:
-      throw std::logic_error("an accessor of a type curdle does not write");
+      CHECK(false, "an accessor of a type curdle does not write");
+      return "";
   }
 }
 
@@ -269,10 +271,10 @@ namespace {
 
 // The model's JSON; with `split`, without its nodes, which go at *split.
 std::string model_json(const tinygltf::Model& model, const std::string& buffer_uri, size_t* split) {
-  if (model.buffers.size() != 1 || !model.extensionsUsed.empty() || !model.images.empty() ||
-      !model.textures.empty() || !model.animations.empty() || !model.skins.empty() ||
-      !model.cameras.empty())
-    throw std::logic_error("a glTF model with parts curdle does not write");
+  CHECK(model.buffers.size() == 1 && model.extensionsUsed.empty() && model.images.empty() &&
+            model.textures.empty() && model.animations.empty() && model.skins.empty() &&
+            model.cameras.empty(),
+        "a glTF model with parts curdle does not write");
   JsonText j;
   j.open('{');
   accessors(j, model);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "curdle/check.h"
 #include "curdle/text.h"
 
 namespace curdle {
@@ -60,7 +61,7 @@ void append_step_real(std::string& out, double v) {
 }
 
 char* write_step_real(char* first, double v) {
-  if (!std::isfinite(v)) throw std::logic_error("a STEP real must be finite");
+  CHECK(std::isfinite(v), "a STEP real must be finite");
   if (v == 0) {
     first[0] = '0';
     first[1] = '.';

@@ -3,6 +3,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "curdle/check.h"
 #include "kinds/blocks.h"
 #include "kinds/facade.h"
 #include "kinds/park.h"
@@ -30,9 +31,8 @@ struct Registry {
   }
   void add(std::unique_ptr<const LayoutKind> kind) {
     for (const LayoutKind* k : kinds)
-      if (k->name() == kind->name())
-        throw std::logic_error("layout kind \"" + std::string(kind->name()) +
-                               "\" is registered twice");
+      CHECK(k->name() != kind->name(),
+            "layout kind \"" + std::string(kind->name()) + "\" is registered twice");
     kinds.push_back(kind.get());
     owned.push_back(std::move(kind));
   }
@@ -56,7 +56,7 @@ const LayoutKind* find_layout_kind(std::string_view name) {
 
 const LayoutKind& layout_kind(std::string_view name) {
   const LayoutKind* k = find_layout_kind(name);
-  if (!k) throw std::logic_error("no layout kind \"" + std::string(name) + "\" is registered");
+  CHECK(k, "no layout kind \"" + std::string(name) + "\" is registered");
   return *k;
 }
 

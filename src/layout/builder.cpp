@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "curdle/check.h"
 #include "curdle/error.h"
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
@@ -420,7 +421,7 @@ void count_values(Layout& layout, const Design& design, const LayoutSpec& spec) 
 
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec) {
-  if (!spec.kind) throw std::logic_error("make_layout: the spec names no layout kind");
+  CHECK(spec.kind, "make_layout: the spec names no layout kind");
   // A fixed floor, wall, sheet or line is laid from the view's corner: the view is the segment
   // of the curd that becomes the floor, so it must have the floor's number of elements.
   if (spec.size) {

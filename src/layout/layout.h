@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "curdle/check.h"
 #include "curdle/curd.h"
 #include "layout/element_id.h"
 #include "layout/layout_kind.h"
@@ -196,7 +197,7 @@ class OwnKeys {
   template <class K>
   const K& as() const {
     const K* k = find<K>();
-    if (!k) throw std::logic_error("a layout spec asked for another kind's keys");
+    CURDLE_CHECK(k, "a layout spec asked for another kind's keys");
     return *k;
   }
   template <class K>

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "curdle/check.h"
 #include "curdle/overlay.h"
 #include "curdle/text.h"
 #include "kinds/registry.h"
@@ -444,9 +445,9 @@ std::optional<LayoutSpec> read_layout(TableReader& top, Design& design, bool fie
   read_georef(r, spec);  // after the kind's keys: from = "site" takes [layout.site]'s datum
   r.report_unused("is not read by a " + std::string(kind->name()) + " layout");
   // A key the kind lists but its reader never asks for would pass unread: a programming error.
-  if (const auto unread = r.never_asked(); !unread.empty())
-    throw std::logic_error("the " + std::string(kind->name()) +
-                           " kind lists keys its reader never asks for: " + join(unread));
+  const auto unread = r.never_asked();
+  CHECK(unread.empty(), "the " + std::string(kind->name()) +
+                            " kind lists keys its reader never asks for: " + join(unread));
   return spec;
 }
 
