@@ -49,7 +49,7 @@ TEST(DxfBlocksTest, PlacementsAreCountedEvenOfEmptyBlocks) {
   try {
     place_blocks(blocks, "site.dxf", 0.01, d);
     ADD_FAILURE() << "placed";
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("1000000 block placements"), std::string::npos)
         << e.what();
   }

@@ -10,7 +10,7 @@ namespace {
 std::string checks_refusal(const std::string& bytes) {
   try {
     check_dxf_bytes(bytes, "site.dxf");
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "(accepted)";

@@ -10,7 +10,7 @@ namespace {
 std::string refusal(const std::function<void()>& f) {
   try {
     f();
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "(read)";

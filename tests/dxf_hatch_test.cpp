@@ -39,7 +39,7 @@ TEST(DxfHatchTest, APathWithoutItsGroupsIsRefusedByName) {
   try {
     hatch_boundaries(cut.groups, cut.numbers, "HATCH 60", "L-PAVE", 0.01);
     ADD_FAILURE() << "read";
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("the HATCH 60 on layer \"L-PAVE\" has a boundary path "
                                          "without group 93"),
               std::string::npos)

@@ -20,7 +20,7 @@ const Shape& on(const Drawing& d, const std::string& layer, size_t k = 0) {
 std::string refusal(const std::string& bytes, const DxfReading& r = {}) {
   try {
     read_dxf(bytes, "site.dxf", r);
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "(read)";

@@ -127,13 +127,13 @@ plan = "Pavilion"
 }
 
 TEST(GltfReader, AModelThatIsNotGltfOrReachesOutsideIsRefused) {
-  EXPECT_THROW(read_gltf("not a model", "massing.gltf"), SiteError);
+  EXPECT_THROW(read_gltf("not a model", "massing.gltf"), InputError);
   const std::string outside = R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "/etc/passwd",
     "byteLength": 12}], "scenes": [{"nodes": []}], "scene": 0})";
   try {
     read_gltf(outside, "massing.gltf");
     ADD_FAILURE() << "a buffer outside the file was read";
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("massing.gltf"), std::string::npos) << e.what();
   }
   // Each node placing the next twice, 40 deep: 2^40 places, refused at a bound.
@@ -145,7 +145,7 @@ TEST(GltfReader, AModelThatIsNotGltfOrReachesOutsideIsRefused) {
   try {
     read_gltf(doubling, "deep.gltf");
     ADD_FAILURE() << "2^40 node places were walked";
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("places nodes more than 100000 times"), std::string::npos)
         << e.what();
   }
@@ -163,7 +163,7 @@ TEST(GltfReader, AModelThatIsNotGltfOrReachesOutsideIsRefused) {
   try {
     site_from(two, map);
     ADD_FAILURE() << "one of two outlines was picked";
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("holds 2 closed shapes side by side (node Two loop 1 (1 x "
                                          "1 at (0, 0)); node Two loop 2 (1 x 1 at (5, 0)))"),
               std::string::npos)
@@ -213,7 +213,7 @@ TEST(GltfReader, ANanVertexIsNamedAsSuch) {
   try {
     read_gltf(glb, "nan.glb");
     ADD_FAILURE() << "read";
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("node \"Pavilion\" has a vertex that is not a finite"),
               std::string::npos)
         << e.what();
@@ -228,7 +228,7 @@ TEST(GltfReader, DeeplyNestedJsonIsRefusedBeforeParsing) {
   try {
     read_gltf(deep, "deep.gltf");
     ADD_FAILURE() << "read";
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("nests arrays or objects more than 64 deep"),
               std::string::npos)
         << e.what();

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <optional>
+
 #include "outputs_support.h"
 
 namespace fs = std::filesystem;
@@ -52,6 +55,33 @@ TEST(Outputs, MemoryAndDirectorySinksHoldTheSameBytes) {
     EXPECT_FALSE(bytes.str().empty()) << o->name;
   }
   fs::remove_all(dir);
+}
+
+// A temporary file that cannot be made (the server and the Python module write layout.dxf and
+// layout.gpkg through one) is a user's writing failure, as a folder that cannot be written is:
+// an InputError saying where and what to do.
+TEST(Outputs, ATemporaryFileThatCannotBeMadeSaysWhereAndWhatToDo) {
+  struct Tmpdir {  // TMPDIR as the test sets it, then as it was
+    std::optional<std::string> before;
+    explicit Tmpdir(const char* value) {
+      if (const char* b = std::getenv("TMPDIR")) before = b;
+      ::setenv("TMPDIR", value, 1);
+    }
+    ~Tmpdir() {
+      before ? (void)::setenv("TMPDIR", before->c_str(), 1) : (void)::unsetenv("TMPDIR");
+    }
+  };
+  for (const char* folder : {"/no/such/folder", "/dev/null"}) {
+    const Tmpdir tmpdir(folder);
+    MemorySink memory;
+    try {
+      memory.write_via_file("layout.gpkg", [](const std::filesystem::path&) {});
+      ADD_FAILURE() << "a temporary file was made in " << folder;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(folder), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("set TMPDIR"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace curdle::app

@@ -66,7 +66,7 @@ TEST(ReadingMemoryTest, RefusesAboveTheLimitNamingIt) {
   try {
     check_reading_memory(json, "model.gltf", 16 << 20, "raise the limit with --max-memory");
     FAIL() << "accepted";
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("model.gltf: reading this drawing of 0.4 MiB could take up to"),
               std::string::npos)

@@ -28,7 +28,7 @@ Site site_of(const DxfText& dxf, const LayerMap& map) {
 std::string refusal(const DxfText& dxf, const LayerMap& map) {
   try {
     site_of(dxf, map);
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "(read)";
@@ -201,7 +201,7 @@ TEST(SiteTest, TheOriginMovesTheDatum) {
   EXPECT_EQ(s.outline[0].y, 500);
   // A datum right of the outline's corner would put it at negative x: refused.
   map.origin = std::array<double, 2>{3000, 0};
-  EXPECT_THROW(site_from(read_dxf(dxf.text(), map.file, {}), map), SiteError);
+  EXPECT_THROW(site_from(read_dxf(dxf.text(), map.file, {}), map), InputError);
 }
 
 TEST(SiteTest, ShapesInsideAZoneAreNotZonesOfTheirOwn) {

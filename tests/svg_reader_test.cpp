@@ -29,7 +29,7 @@ const Shape& on(const Drawing& d, const std::string& layer, size_t k = 0) {
 std::string refusal(const std::string& text) {
   try {
     read_svg(text, "site.svg", {});
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "(read)";
@@ -189,7 +189,7 @@ TEST(SvgReaderTest, UsesAreCountedAsTheyArePlaced) {
   try {
     read_svg(svg("<defs>" + defs + "</defs><use href=\"#u10\"/>"), "site.svg", {});
     ADD_FAILURE() << "read";
-  } catch (const SiteError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("through <use> more than"), std::string::npos) << e.what();
   }
 }

@@ -475,7 +475,8 @@ void write_layout_pdf(std::ostream& out, const Layout& layout, const InstallerPl
   const cairo_status_t status = cairo_surface_status(surface);
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error(std::string("layout.pdf: ") + cairo_status_to_string(status));
+    throw InputError(std::string("cannot write layout.pdf: ") + cairo_status_to_string(status) +
+                     " (is the disk full?)");
 }
 
 namespace {

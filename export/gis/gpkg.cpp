@@ -68,7 +68,7 @@ bool gpkg_installed(std::string* why) {
 void write_layout_gpkg(const std::filesystem::path& path, const Layout& layout) {
   const Loaded& loaded = start_loading().get();
   const WriteFn write = loaded.write;
-  if (!write) throw std::runtime_error("cannot write layout.gpkg: " + loaded.why);
+  if (!write) throw InputError("cannot write layout.gpkg: " + loaded.why);
   // A sink may hand over an empty file it made to hold the name (mkstemp); GDAL creates the
   // GeoPackage itself and will not write over a file.
   std::error_code ec;

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "curdle/error.h"
+#include "io/atomic_file.h"
 #include "io/bounded_file.h"
 
 namespace fs = std::filesystem;
@@ -24,9 +25,12 @@ namespace curdle::app {
 
 void OutputSink::write_via_file(const std::string& name,
                                 const std::function<void(const fs::path&)>& fill) {
-  std::string pattern = (fs::temp_directory_path() / "curdle-XXXXXX").string();
+  const fs::path folder = temporary_folder();
+  std::string pattern = (folder / "curdle-XXXXXX").string();
   const int fd = ::mkstemp(pattern.data());
-  if (fd < 0) throw std::runtime_error("cannot make a temporary file for " + name);
+  if (fd < 0)
+    throw InputError("cannot make a temporary file for " + name + " in " + folder.string() + ": " +
+                     std::strerror(errno) + "; set TMPDIR to a folder this program may write to");
   ::close(fd);
   struct Remove {
     std::string path;

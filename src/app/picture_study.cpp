@@ -2,12 +2,15 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "app/measure_run.h"
 #include "app/run.h"
 #include "curdle/error.h"
+#include "io/atomic_file.h"
 #include "io/bounded_image.h"
 #include "io/picture_gate.h"
 
@@ -23,10 +26,13 @@ constexpr size_t kMaxUploadBytes = size_t{64} << 20;  // as a picture file read 
 class TemporaryPicture {
  public:
   TemporaryPicture(const std::string& bytes, const std::string& extension) {
-    std::string pattern = (fs::temp_directory_path() / "curdle-upload-XXXXXX").string();
+    const fs::path folder = temporary_folder();
+    std::string pattern = (folder / "curdle-upload-XXXXXX").string();
     pattern += extension;
     const int fd = ::mkstemps(pattern.data(), static_cast<int>(extension.size()));
-    if (fd < 0) throw std::runtime_error("cannot make a temporary file for the picture");
+    if (fd < 0)
+      throw InputError("cannot make a temporary file for the picture in " + folder.string() + ": " +
+                       std::strerror(errno) + "; set TMPDIR to a folder this program may write to");
     path_ = pattern;
     size_t written = 0;
     while (written < bytes.size()) {
@@ -34,7 +40,8 @@ class TemporaryPicture {
       if (n <= 0) {
         ::close(fd);
         ::unlink(path_.c_str());
-        throw std::runtime_error("cannot write the picture to a temporary file");
+        throw InputError("cannot write the picture to a temporary file in " + folder.string() +
+                         " (is the disk full?)");
       }
       written += static_cast<size_t>(n);
     }

@@ -34,16 +34,18 @@ class RecipeFolderFiles : public RecipeFiles {
   std::string read(const std::string& name, const SourceLocation& where,
                    size_t max_bytes) const override {
     const auto path = std::filesystem::path(recipe_path_).parent_path() / name;
+    std::string bytes;
     try {
-      std::string bytes =
-          read_bounded_text(path.string(), "the drawing", "name a DXF file", max_bytes);
-      site::check_reading_memory(bytes, name, max_memory_, hint_);
-      return bytes;
+      bytes = read_bounded_text(path.string(), "the drawing", "name a DXF file", max_bytes);
     } catch (const InputError& e) {
       throw InputError(where, name + ": " + e.message());
-    } catch (const site::SiteError& e) {
-      throw InputError(where, e.what());
     }
+    try {
+      site::check_reading_memory(bytes, name, max_memory_, hint_);  // names the file itself
+    } catch (const InputError& e) {
+      throw InputError(where, e.message());
+    }
+    return bytes;
   }
 
  private:

@@ -50,8 +50,8 @@ site::Drawing read_drawing(const SiteStudyRequest& r, double tolerance, double u
   try {
     site::check_reading_memory(r.bytes, r.name, limits.max_memory_bytes, limits.memory_limit_hint);
     return site::read_drawing(r.bytes, r.name, tolerance, unit_mm);
-  } catch (const site::SiteError& e) {
-    throw InputError(parameter("name"), e.what());
+  } catch (const InputError& e) {
+    throw InputError(parameter("name"), e.message());
   }
 }
 
@@ -140,8 +140,8 @@ ordered_json study_site(const Run& run, const SiteStudyRequest& r) {
   site::Site s;
   try {
     s = site::site_from(drawing, map);
-  } catch (const site::SiteError& e) {
-    throw InputError(parameter("outline"), e.what());
+  } catch (const InputError& e) {
+    throw InputError(parameter("outline"), e.message());
   }
   std::vector<std::string> sets{"layout.outline=" + contour_toml(s.outline)};
   ordered_json zones = ordered_json::array();

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 
@@ -75,6 +76,19 @@ void make_output_dir(const fs::path& dir) {
   if (::access(dir.c_str(), W_OK) != 0)
     throw InputError("cannot write into the output directory " + dir.string() + ": " +
                      std::strerror(errno));
+}
+
+std::filesystem::path temporary_folder() {
+  std::error_code ec;
+  const std::filesystem::path folder = std::filesystem::temp_directory_path(ec);
+  if (ec) {
+    const char* named = std::getenv("TMPDIR");
+    throw InputError(
+        std::string("cannot make a temporary file: ") +
+        (named ? std::string("TMPDIR names ") + named + ", which is not a folder" : ec.message()) +
+        "; set TMPDIR to a folder this program may write to");
+  }
+  return folder;
 }
 
 }  // namespace curdle

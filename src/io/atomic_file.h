@@ -42,4 +42,8 @@ void write_file(const std::filesystem::path& target,
 // Creates `dir` and its parents, or throws InputError saying why it cannot.
 void make_output_dir(const std::filesystem::path& dir);
 
+// The folder temporary files go in (TMPDIR, else /tmp); InputError saying so, and what to do,
+// when it is not a folder.
+std::filesystem::path temporary_folder();
+
 }  // namespace curdle

@@ -173,8 +173,8 @@ site::Site drawn_site(const TableReader& r, const toml::node& table, const site:
   try {
     return site::site_from(site::read_drawing(bytes, map.file, spec.chord_tolerance, map.unit_mm),
                            map);
-  } catch (const site::SiteError& e) {
-    r.fail("file", e.what());
+  } catch (const InputError& e) {  // the drawing's own fault, located at the recipe's key
+    r.fail("file", e.message());
   }
 }
 

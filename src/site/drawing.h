@@ -1,6 +1,8 @@
 // A drawing as the site readers give it (dxf_reader.h, svg_reader.h): shapes on layers in the
 // drawing's own units and coordinates, blocks already placed, before they are turned into a
 // surface's outline, openings and zones (site.h). Nothing here knows the file's format.
+// A drawing that cannot be read or used is an InputError without a location (what is wrong,
+// naming the file, layer and entity, and what to do); the recipe reader adds the recipe's key.
 #pragma once
 
 #include <algorithm>
@@ -8,16 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "curdle/error.h"
 #include "layout/contour.h"
 
 namespace curdle::site {
-
-// A drawing that cannot be read or used: what is wrong, naming the file, layer and entity,
-// and what to do. The recipe reader adds the recipe's key.
-class SiteError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // The layer of an SVG's shapes that lie in no layer (no group at the top, or outside Inkscape's
 // layers), so that a recipe can name it.

@@ -88,18 +88,18 @@ class Placer {
       return;
     }
     if (depth > kDeepestBlock)
-      throw SiteError(
+      throw InputError(
           fmt::format("{}: block \"{}\" is nested more than {} deep (or inserts "
                       "itself); explode it and save the drawing again",
                       file_, name, kDeepestBlock));
-    if (++placements_ > kMostPlacements) throw SiteError(too_many());
+    if (++placements_ > kMostPlacements) throw InputError(too_many());
     stop_point();
     for (const Shape& s : it->second.shapes) {
-      if (drawing_.shapes.size() >= kMostShapes) throw SiteError(too_many());
+      if (drawing_.shapes.size() >= kMostShapes) throw InputError(too_many());
       Shape out = depth == 0 ? s : placed(s, p, tolerance_);
       // Counted as placed: a block's few vertices, inserted in arrays, can be millions.
       if ((vertices_ += out.path.size() + out.strip.size()) > kMostVertices)
-        throw SiteError(too_many());
+        throw InputError(too_many());
       if (depth > 0 && (out.layer == "0" || out.layer.empty())) out.layer = insert_layer;
       out.insert = insert;
       out.insert_handle = insert_handle;
@@ -110,7 +110,7 @@ class Placer {
       const int top = depth == 0 ? next_insert_++ : insert;
       const std::string& top_handle = depth == 0 ? i.handle : insert_handle;
       if (static_cast<uint64_t>(i.columns) * static_cast<uint64_t>(i.rows) > kMostPlacements)
-        throw SiteError(too_many());
+        throw InputError(too_many());
       const auto inner = blocks_.find(i.block);
       if (inner == blocks_.end()) {
         missing_.insert(i.block);

@@ -33,7 +33,7 @@ inline constexpr size_t kMostPlacements = 1000000;
 // Places the model's shapes (the block "") and the blocks it inserts, nested, into `drawing`:
 // a block's shapes on layer 0 take the INSERT's layer, and each shape says its top INSERT;
 // arcs stretched unevenly are flattened within `tolerance` (drawing units). Returns the names
-// of blocks inserted but never defined. SiteError naming `file` for a block nested more than
+// of blocks inserted but never defined. InputError naming `file` for a block nested more than
 // 16 deep, or for more shapes, vertices or placements than a site drawing holds.
 std::set<std::string> place_blocks(const std::map<std::string, Block>& blocks,
                                    const std::string& file, double tolerance, Drawing& drawing);

@@ -14,19 +14,19 @@ namespace {
 // What the first bytes say a file is, when it is not an ASCII DXF.
 void check_is_ascii_dxf(std::string_view bytes, const std::string& file) {
   if (bytes.size() > kMostDrawingBytes)
-    throw SiteError(
+    throw InputError(
         fmt::format("{}: is {} MiB; a site drawing may be at most {} MiB (keep only "
                     "the layers of the surface)",
                     file, bytes.size() >> 20, kMostDrawingBytes >> 20));
   if (bytes.substr(0, 18) == "AutoCAD Binary DXF")
-    throw SiteError(file +
-                    ": is a binary DXF; save it as an ASCII DXF (in AutoCAD: SAVEAS, "
-                    "DXF, with Options > DXF format ASCII)");
+    throw InputError(file +
+                     ": is a binary DXF; save it as an ASCII DXF (in AutoCAD: SAVEAS, "
+                     "DXF, with Options > DXF format ASCII)");
   if (bytes.size() >= 6 && bytes.substr(0, 2) == "AC" && bytes[2] >= '1' && bytes[2] <= '2' &&
       std::isdigit(static_cast<unsigned char>(bytes[3])))
-    throw SiteError(file +
-                    ": is a DWG drawing, which curdle does not read; save it as DXF "
-                    "(SAVEAS, DXF, AutoCAD 2000 or later)");
+    throw InputError(file +
+                     ": is a DWG drawing, which curdle does not read; save it as DXF "
+                     "(SAVEAS, DXF, AutoCAD 2000 or later)");
   // An ASCII DXF begins with the group code 0 and SECTION (after an optional 999 comment).
   const size_t first = bytes.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
   // Its first line is that group code alone: dxflib spun without end on one long line that
@@ -39,13 +39,13 @@ void check_is_ascii_dxf(std::string_view bytes, const std::string& file) {
                      bytes.find("SECTION") != std::string_view::npos &&
                      (code == "0" || code == "999");
   if (!looks)
-    throw SiteError(file +
-                    ": is not a DXF drawing (an ASCII DXF begins with the group code 0 "
-                    "and SECTION); export the drawing as DXF");
+    throw InputError(file +
+                     ": is not a DXF drawing (an ASCII DXF begins with the group code 0 "
+                     "and SECTION); export the drawing as DXF");
   if (bytes.find('\0') != std::string_view::npos)
-    throw SiteError(file +
-                    ": holds NUL bytes, which an ASCII DXF never does; export it as DXF "
-                    "again");
+    throw InputError(file +
+                     ": holds NUL bytes, which an ASCII DXF never does; export it as DXF "
+                     "again");
 }
 
 // dxflib allocates what an entity's count says before it reads the vertices (an LWPOLYLINE
@@ -97,7 +97,7 @@ void check_counts(std::string_view bytes, const std::string& file) {
       if (c.code != code || c.entity != entity) continue;
       const int64_t n = leading_number(value);
       if (n < 0 || n > groups)
-        throw SiteError(
+        throw InputError(
             fmt::format("{}: the {} at line {} says it has {} parts, more than the "
                         "file's {} groups hold; the file is damaged: export it as "
                         "DXF again",

@@ -8,7 +8,7 @@
 
 namespace curdle::site {
 
-// Throws SiteError naming the file (and the line of a count that does not fit).
+// Throws InputError naming the file (and the line of a count that does not fit).
 void check_dxf_bytes(std::string_view bytes, const std::string& file);
 
 }  // namespace curdle::site

@@ -37,7 +37,7 @@ DxfGroups::DxfGroups(std::string_view bytes, std::string file)
 std::string_view DxfGroups::line() {
   const size_t end = std::min(bytes_.find('\n', at_), bytes_.size());
   if (end - at_ > kLongestDxfLine)
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: line {} is {} characters long, longer than any DXF's ({}); the file is damaged or "
         "not a DXF: export the drawing as DXF again",
         file_, line_ + 1, end - at_, kLongestDxfLine));
@@ -61,12 +61,12 @@ bool DxfGroups::next(DxfGroup& group) {
   const auto [end, error] =
       std::from_chars(code_text.data(), code_text.data() + code_text.size(), code);
   if (error != std::errc() || end != code_text.data() + code_text.size() || code < 0 || code > 1071)
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: line {} should be a group code (a whole number from 0 to 1071) and holds \"{}\"; "
         "the file is damaged or not an ASCII DXF: export the drawing as DXF again",
         file_, code_line, shown(code_text)));
   if (at_ > bytes_.size())
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: ends after the group code at line {}, without its value; the file is cut short: "
         "export the drawing as DXF again",
         file_, code_line));
@@ -88,7 +88,7 @@ double DxfGroups::real(const DxfGroup& group, std::string_view entity) const {
   if (first != last && *first == '+') ++first;
   const auto [end, error] = std::from_chars(first, last, v);
   if (error != std::errc() || end != last || first == last || !std::isfinite(v))
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: line {}: the {} has \"{}\" for group {}, which must be one finite number written "
         "as DXF writes them (e.g. 1.5 or -2.5E+03); the file is damaged: export it again",
         file_, group.line, entity, shown(group.value), group.code));
@@ -116,7 +116,7 @@ int64_t DxfGroups::integer(const DxfGroup& group, std::string_view entity) const
   if (first != last && *first == '+') ++first;
   const auto [end, error] = std::from_chars(first, last, v);
   if (error != std::errc() || end != last || first == last)
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: line {}: the {} has \"{}\" for group {}, which must be one whole number; the file "
         "is damaged: export it again",
         file_, group.line, entity, shown(group.value), group.code));

@@ -26,13 +26,13 @@ class DxfGroups {
  public:
   DxfGroups(std::string_view bytes, std::string file);
 
-  // The next group into `group`; false at the end of the bytes. Throws SiteError for a code
+  // The next group into `group`; false at the end of the bytes. Throws InputError for a code
   // that is not an integer or a line longer than kLongestDxfLine.
   bool next(DxfGroup& group);
   // The group read again by the next call to next().
   void put_back(const DxfGroup& group);
 
-  // A real number (codes 10-59, 110-149, 210-239, 460-469, 1010-1059), or SiteError naming the
+  // A real number (codes 10-59, 110-149, 210-239, 460-469, 1010-1059), or InputError naming the
   // line, the group and `entity` ("LWPOLYLINE 2A").
   double real(const DxfGroup& group, std::string_view entity) const;
   // An integer (codes 60-99, 170-179, 270-289, 370-389, 400-409, 1060-1071).

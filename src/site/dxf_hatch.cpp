@@ -82,14 +82,14 @@ Contour hatch_edge(int64_t edge, Number& number, const std::string& file, const 
     for (const Point& p : flatten_spline(degree, knots, control, weights, tolerance))
       arc.push_back({p[0], p[1], 0});
     if (arc.empty())
-      throw SiteError(
+      throw InputError(
           fmt::format("{}: the {} on layer \"{}\" has a spline edge whose knots do "
                       "not fit its control points; the file is damaged",
                       file, name, layer));
     ++flattened;
     return arc;
   }
-  throw SiteError(
+  throw InputError(
       fmt::format("{}: the {} on layer \"{}\" has a boundary edge of type {}, "
                   "which no DXF has (1 line, 2 arc, 3 elliptic arc, 4 spline)",
                   file, name, layer, edge));
@@ -136,7 +136,7 @@ std::optional<HatchBoundaries> hatch_boundaries(const std::vector<DxfGroup>& g,
   auto number = [&](int code) {
     const DxfGroup* found = expect(code);
     if (!found)
-      throw SiteError(
+      throw InputError(
           fmt::format("{}: the {} on layer \"{}\" has a boundary path without "
                       "group {}; the file is damaged: export it again",
                       numbers.file(), name, layer, code));

@@ -18,7 +18,7 @@ struct HatchBoundaries {
 };
 
 // The paths of the HATCH whose groups these are (nullopt: it gives none), curved edges within
-// `tolerance` (drawing units); `numbers` reads its values strictly. SiteError naming `name`
+// `tolerance` (drawing units); `numbers` reads its values strictly. InputError naming `name`
 // ("HATCH 60") and `layer` for a path that lacks a group or has an edge of no known type.
 std::optional<HatchBoundaries> hatch_boundaries(const std::vector<DxfGroup>& groups,
                                                 const DxfGroups& numbers, const std::string& name,

@@ -109,7 +109,7 @@ class Reader {
         break;
       }
       if (r.groups.size() >= 4 * kMostVertices + 64)
-        throw SiteError(
+        throw InputError(
             fmt::format("{}: the {} at line {} holds more groups than a site "
                         "drawing's entity needs",
                         file_, r.type, r.line));
@@ -137,7 +137,7 @@ class Reader {
       if (r.groups[i].value == "$INSUNITS" && v.code == 70) {
         const int64_t code = groups_.integer(v, "header's $INSUNITS");
         if (code < 0 || code > 24)
-          throw SiteError(
+          throw InputError(
               fmt::format("{}: line {}: $INSUNITS is {}, which is no unit code (0 to 24 in the DXF "
                           "Reference); save the drawing again with its units set (UNITS)",
                           file_, v.line, code));
@@ -225,7 +225,7 @@ class Reader {
   void keep(Shape s) {
     if (in_paper_) return;
     if (++shapes_ > kMostShapes || (vertices_ += s.path.size()) > kMostVertices)
-      throw SiteError(fmt::format(
+      throw InputError(fmt::format(
           "{}: holds more than {} shapes or {} vertices, more than a site drawing needs; keep "
           "only the layers of the surface (e.g. WBLOCK or LAYISO, then save as DXF)",
           file_, kMostShapes, kMostVertices));

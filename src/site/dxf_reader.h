@@ -20,7 +20,7 @@ struct DxfReading {
   double unit_mm = 0;
 };
 
-// Throws SiteError naming the file (and the entity's handle) for a file that is not an ASCII
+// Throws InputError naming the file (and the entity's handle) for a file that is not an ASCII
 // DXF (binary DXF and DWG are named as such), is larger than kMostDrawingBytes, or holds more
 // than kMostShapes entities once its blocks are placed.
 Drawing read_dxf(std::string_view bytes, const std::string& file_name, const DxfReading& reading);

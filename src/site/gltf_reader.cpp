@@ -115,7 +115,7 @@ class Reader {
   std::vector<std::vector<std::array<Point, 3>>> layers;
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw SiteError(fmt::format("{}: {}", file_, what));
+    throw InputError(fmt::format("{}: {}", file_, what));
   }
 
  private:
@@ -311,9 +311,9 @@ constexpr int kDeepestJson = 64;
 
 Drawing read_gltf(std::string_view bytes, const std::string& file) {
   if (bytes.size() > kMostDrawingBytes)
-    throw SiteError(fmt::format("{}: larger than {} MB", file, kMostDrawingBytes >> 20));
+    throw InputError(fmt::format("{}: larger than {} MB", file, kMostDrawingBytes >> 20));
   if (json_depth(json_of(bytes), kDeepestJson) > kDeepestJson)
-    throw SiteError(
+    throw InputError(
         fmt::format("{}: its JSON nests arrays or objects more than {} deep, which no "
                     "model needs; the file is damaged or hostile: export it again",
                     file, kDeepestJson));
@@ -341,8 +341,8 @@ Drawing read_gltf(std::string_view bytes, const std::string& file) {
   const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, size, "")
                          : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, "");
   if (!ok)
-    throw SiteError(fmt::format("{}: not a glTF 2.0 model curdle can read: {}", file,
-                                err.empty() ? "no reason given" : err.substr(0, 300)));
+    throw InputError(fmt::format("{}: not a glTF 2.0 model curdle can read: {}", file,
+                                 err.empty() ? "no reason given" : err.substr(0, 300)));
   Reader reader(model, file);
   Drawing d;
   d.format = "glTF";

@@ -12,7 +12,7 @@
 
 namespace curdle::site {
 
-// Throws SiteError naming the file for one that is not glTF 2.0, refers to files outside it,
+// Throws InputError naming the file for one that is not glTF 2.0, refers to files outside it,
 // is larger than kMostDrawingBytes, or holds more than kMostVertices vertices; a node whose
 // footprint is not one closed outline (a courtyard, a pile of loose faces) is named as such.
 Drawing read_gltf(std::string_view bytes, const std::string& file_name);

@@ -234,13 +234,13 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
   for (const Shape& s : drawing.shapes) {
     if (!on_layer(s, layer)) continue;
     if (!s.fault.empty())
-      throw SiteError(fmt::format(
+      throw InputError(fmt::format(
           "{}: {}{} (the layer holds the {})", file, s.fault,
           s.insert_handle.empty() ? "" : ", placed by INSERT " + s.insert_handle, role));
     for (const ContourVertex& v : s.path)
       if (!(std::fabs(v.x) <= kFarthest && std::fabs(v.y) <= kFarthest &&
             std::fabs(v.bulge) <= kSteepest))
-        throw SiteError(
+        throw InputError(
             fmt::format("{}: the {} on layer \"{}\" has the point ({:g}, {:g}), "
                         "beyond {:g} drawing units from the origin or not a number; "
                         "the drawing is damaged: export it again",
@@ -320,7 +320,7 @@ std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, 
       passed.pieces += o.shapes.size();
       continue;
     }
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: the {} on layer \"{}\" is not closed: {} ends at {} and {} ({} mm apart, more than "
         "the {:g} mm that are joined); close it (PEDIT Join, or draw it as one closed polyline)",
         file, role, layer, o.handles, point_text(o.path.front(), drawing.precision),
@@ -358,7 +358,7 @@ void note_passed_over(const PassedOver& p, const std::string& layer,
 }
 
 // The smallest of a layer's shapes around a point in drawing coordinates, as CAD's BOUNDARY
-// picks; SiteError naming the point when none lies around it.
+// picks; InputError naming the point when none lies around it.
 Closed smallest_around(const std::vector<Closed>& shapes, const std::array<double, 2>& point,
                        double tolerance, const std::string& file, const std::string& layer,
                        int precision) {
@@ -370,7 +370,7 @@ Closed smallest_around(const std::vector<Closed>& shapes, const std::array<doubl
     if (contains(p, point[0], point[1]) && (!best || a < smallest)) best = i, smallest = a;
   }
   if (!best)
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: no closed shape on layer \"{}\" lies around the point ({}, "
         "{}) that around gives (drawing coordinates)",
         file, layer, number_text(point[0], precision), number_text(point[1], precision)));

@@ -30,7 +30,7 @@ struct PassedOver {
 };
 
 // The layer's closed contours in drawing units (see above); `role` ("outline", "zone") and
-// `unit_mm` for messages. SiteError naming the file, layer and entities for a piece left open
+// `unit_mm` for messages. InputError naming the file, layer and entities for a piece left open
 // outside every shape, a shape that could not be read (Shape::fault), or a point beyond reach.
 std::vector<Closed> closed_on(const Drawing& drawing, const std::string& layer, double tolerance,
                               const std::string& file, const std::string& role, double unit_mm,
@@ -41,7 +41,7 @@ void note_passed_over(const PassedOver& p, const std::string& layer,
                       std::vector<std::string>& notes);
 
 // The smallest of `shapes` around `point` (drawing coordinates), as CAD's BOUNDARY picks;
-// SiteError naming the point when none lies around it.
+// InputError naming the point when none lies around it.
 Closed smallest_around(const std::vector<Closed>& shapes, const std::array<double, 2>& point,
                        double tolerance, const std::string& file, const std::string& layer,
                        int precision);

@@ -89,7 +89,7 @@ void check_reading_memory(std::string_view bytes, const std::string& name, uint6
   if (limit == 0) return;
   const uint64_t need = reading_memory(bytes, name);
   if (need <= limit) return;
-  throw SiteError(fmt::format(
+  throw InputError(fmt::format(
       "{}: reading this drawing of {} could take up to {}, above the memory limit of {}; {}, or "
       "keep in the drawing only the layers the surface needs",
       name, mebibytes(bytes.size()), mebibytes(need), mebibytes(limit),

@@ -15,7 +15,7 @@ namespace curdle::site {
 // Bytes at most that reading `bytes` as `name` says (.dxf, .svg, .glb, .gltf) may take.
 uint64_t reading_memory(std::string_view bytes, const std::string& name);
 
-// SiteError when reading_memory is above `limit` bytes (0: no limit): naming the file, its size,
+// InputError when reading_memory is above `limit` bytes (0: no limit): naming the file, its size,
 // the estimate and the limit, and `hint`, how the caller raises it ("raise --max-memory").
 void check_reading_memory(std::string_view bytes, const std::string& name, uint64_t limit,
                           const std::string& hint);

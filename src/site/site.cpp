@@ -37,14 +37,14 @@ void check_simple(const Polygon& mm, const Closed& c, const std::string& layer, 
                   const std::string& file, int precision) {
   const double area = mm.size() < 3 ? 0 : polygon_area(mm);
   if (!(area >= kLeastArea))
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: the {} {} on layer \"{}\" (at {} in the drawing) encloses {} mm², less than the "
         "{:g} mm² a {} needs: it is a line or a sliver; redraw it as a closed shape, or take it "
         "off the layer",
         file, role, c.handles, layer, point_text(c.path.front(), precision),
         fmt::format("{:.3g}", area), kLeastArea, role));
   if (const auto crossing = first_crossing(mm))
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: the {} {} on layer \"{}\" crosses or touches itself at ({:g}, {:g}) mm from the "
         "layout's datum; a {} goes round its area once: redraw it",
         file, role, c.handles, layer, (*crossing)[0], (*crossing)[1], role));
@@ -79,7 +79,7 @@ void check_named(const Drawing& drawing, const std::vector<std::string>& layers,
   if (std::any_of(drawing.shapes.begin(), drawing.shapes.end(),
                   [&](const Shape& s) { return on_layer(s, layer); }))
     return;
-  throw SiteError(
+  throw InputError(
       fmt::format("{}: layer \"{}\" ({}) has nothing on it; the layers with shapes "
                   "are {}",
                   file, layer, role, layers_with_shapes(layers)));
@@ -121,7 +121,7 @@ double units_of(const Drawing& drawing, const LayerMap& map, std::string& name,
     name = drawing.unit_name;
     return drawing.unit_mm;
   }
-  throw SiteError(fmt::format(
+  throw InputError(fmt::format(
       "{}: does not say its units ({}); say what they are with [layout.site] units = \"mm\", "
       "\"cm\", \"m\", \"in\" or \"ft\" (a drawing in metres read as millimetres would be laid "
       "1000 times too small)",
@@ -158,7 +158,7 @@ void check_plausible(const Rect& mm, const LayerMap& map, const std::string& uni
                                       : "is it drawn in other units? then say so with units")
                    : (unit_mm <= 1 ? "is it drawn in metres? then units = \"m\""
                                    : "is it drawn in other units? then say so with units");
-  throw SiteError(
+  throw InputError(
       fmt::format("{}: the outline is {} read in {} ({}), which is no surface curdle "
                   "lays (at most 5 km, at least 10 mm across); {} in [layout.site]",
                   map.file, size, unit_name, longer > 5e6 ? "too large" : "too small", hint));
@@ -176,7 +176,7 @@ void read_holes(const Drawing& drawing, const LayerMap& map, const Polygon& outl
         p.begin(), p.end(), [&](const auto& v) { return contains(outline, v[0], v[1]); });
     const bool holds_outline = !outline.empty() && contains(p, outline[0][0], outline[0][1]);
     if (!any_inside && !holds_outline)
-      throw SiteError(fmt::format(
+      throw InputError(fmt::format(
           "{}: the {} {} on layer \"{}\" lies outside the outline (at "
           "{} in the drawing); move it onto the surface, or off the layer",
           map.file, role, c.handles, layer, point_text(c.path.front(), drawing.precision)));
@@ -223,16 +223,16 @@ Closed picked_outline(const std::vector<Closed>& outlines, const LayerMap& map,
     try {
       return smallest_around(outlines, *map.pick.around, tolerance, map.file, map.outline,
                              drawing.precision);
-    } catch (const SiteError& e) {
-      throw SiteError(std::string(e.what()) + "; the layer's shapes are " +
-                      (outlines.empty() ? std::string("none") : list()));
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + "; the layer's shapes are " +
+                       (outlines.empty() ? std::string("none") : list()));
     }
   }
   if (!map.pick.handle.empty()) {
     for (const Closed& c : outlines)
       for (const Shape* s : c.shapes)
         if (s->handle == map.pick.handle || s->insert_handle == map.pick.handle) return c;
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: no closed shape on layer \"{}\" is drawn by the entity "
         "with handle {}; the layer's shapes are {}",
         map.file, map.outline, map.pick.handle, outlines.empty() ? std::string("none") : list()));
@@ -244,12 +244,12 @@ Closed picked_outline(const std::vector<Closed>& outlines, const LayerMap& map,
     return outlines[best];
   }
   if (outlines.empty())
-    throw SiteError(
+    throw InputError(
         fmt::format("{}: layer \"{}\" holds no closed shape to be the outline; draw "
                     "the surface's outline on it as one closed shape",
                     map.file, map.outline));
   if (outlines.size() != 1)
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: layer \"{}\" holds {} closed shapes side by side ({}); say which is the outline: "
         "outline = {{ layer = \"{}\", around = [x, y] }} with a point inside it in the "
         "drawing's coordinates, or handle = \"...\", or pick = \"largest\"",
@@ -294,7 +294,7 @@ std::vector<Contour> closed_regions(const Drawing& drawing, const std::string& l
     for (Closed& c :
          closed_on(drawing, layer, kJoinTolerance / unit_mm, "", "outline", unit_mm, passed))
       regions.push_back(std::move(c.path));
-  } catch (const SiteError&) {
+  } catch (const InputError&) {
     regions.clear();  // a layer left open or faulty forms no region to pick
   }
   return regions;
@@ -327,18 +327,18 @@ Site site_from(const Drawing& drawing, const LayerMap& map) {
   check_plausible(extent, map, unit_name, mm);
   const Polygon flat = flatten(site.outline, map.chord_tolerance);
   if (const auto crossing = first_crossing(flat))
-    throw SiteError(fmt::format(
+    throw InputError(fmt::format(
         "{}: the outline {} on layer \"{}\" crosses itself at ({:g}, {:g}) in the drawing; an "
         "outline goes round the surface once",
         map.file, outline.handles, map.outline, (*crossing)[0] / mm + datum[0],
         (*crossing)[1] / mm + datum[1]));
   if (flat.size() < 3 || !(polygon_area(flat) >= kLeastArea))
-    throw SiteError(
+    throw InputError(
         fmt::format("{}: the outline {} on layer \"{}\" encloses no area (under {:g} "
                     "mm²)",
                     map.file, outline.handles, map.outline, kLeastArea));
   if (extent.x < -1e-6 || extent.y < -1e-6)
-    throw SiteError(
+    throw InputError(
         fmt::format("{}: the outline reaches ({:g}, {:g}) mm left of or below the "
                     "datum; set [layout.site] origin = \"outline\" or a point at or "
                     "below its bottom-left corner",

@@ -68,14 +68,14 @@ struct Site {
 };
 
 // The drawing in `bytes`, read as its name's ending says: ".svg" (any case) by svg_reader.h,
-// anything else by dxf_reader.h. SiteError as they throw it.
+// anything else by dxf_reader.h. InputError as they throw it.
 Drawing read_drawing(std::string_view bytes, const std::string& name, double chord_tolerance_mm,
                      double unit_mm);
 
 // Millimetres per unit for "mm", "cm", "dm", "m", "in" or "ft"; 0 for anything else.
 double unit_mm(const std::string& name);
 
-// Throws SiteError naming the file, the layer and the entity's handle for: a layer named with
+// Throws InputError naming the file, the layer and the entity's handle for: a layer named with
 // nothing on it, an open outline (with the gap's ends), a self-intersecting outline (with the
 // crossing), an opening or zone outside the outline, a unitless drawing the recipe gives no
 // units for, and a drawing whose size in its units is no plausible surface.

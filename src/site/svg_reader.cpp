@@ -199,7 +199,7 @@ void PathCollector::path_elliptical_arc_to(double rx, double ry, double rotation
   curve(at);
 }
 
-// An element's viewBox (x, y, width, height), if it has one; SiteError for one that is not four
+// An element's viewBox (x, y, width, height), if it has one; InputError for one that is not four
 // numbers with a width and height above 0.
 std::optional<std::array<double, 4>> view_box(const xmlNode* node, const std::string& file) {
   const std::string view = attribute(node, "viewBox");
@@ -210,7 +210,7 @@ std::optional<std::array<double, 4>> view_box(const xmlNode* node, const std::st
     if (ch == ',') ch = ' ';
   if (std::sscanf(spaced.c_str(), "%lf %lf %lf %lf", &box[0], &box[1], &box[2], &box[3]) != 4 ||
       !(box[2] > 0 && box[3] > 0) || !std::isfinite(box[0] + box[1] + box[2] + box[3]))
-    throw SiteError(
+    throw InputError(
         fmt::format("{}: {} has the viewBox \"{}\", not four numbers with a width "
                     "and height above 0",
                     file, name_of(node), view.substr(0, 100)));
@@ -226,7 +226,7 @@ double length(const xmlNode* node, const char* name, const std::string& file, do
   std::string rest(end ? end : "");
   while (!rest.empty() && std::isspace(static_cast<unsigned char>(rest.back()))) rest.pop_back();
   if (end == text.c_str() || !std::isfinite(v) || !(rest.empty() || rest == "px"))
-    throw SiteError(
+    throw InputError(
         fmt::format("{}: {} has {}=\"{}\"; curdle reads shapes' lengths in user units "
                     "(a number), not percentages or other units",
                     file, name_of(node), name, text));
@@ -269,12 +269,12 @@ class Walker {
 
   void index(const xmlNode* node, int depth) {
     if (depth > kDeepest)
-      throw SiteError(fmt::format("{}: nests elements more than {} deep", file_, kDeepest));
+      throw InputError(fmt::format("{}: nests elements more than {} deep", file_, kDeepest));
     for (const xmlNode* c = node->children; c; c = c->next) {
       if (c->type != XML_ELEMENT_NODE) continue;
       stop_point();
       if (++elements_ > 4 * kMostShapes)
-        throw SiteError(
+        throw InputError(
             fmt::format("{}: holds more than {} elements, more than a site drawing "
                         "needs; keep only the layers of the surface",
                         file_, 4 * kMostShapes));
@@ -299,7 +299,7 @@ class Walker {
   void walk(const xmlNode* node, const Affine& ctm, const std::string& layer,
             const std::vector<std::string>& names, int depth, int uses) {
     if (depth > kDeepest)
-      throw SiteError(fmt::format("{}: nests groups more than {} deep", file_, kDeepest));
+      throw InputError(fmt::format("{}: nests groups more than {} deep", file_, kDeepest));
     for (const xmlNode* c = node->children; c; c = c->next) {
       if (c->type != XML_ELEMENT_NODE || !c->ns ||
           !xmlStrEqual(c->ns->href, reinterpret_cast<const xmlChar*>(kSvg)))
@@ -351,12 +351,12 @@ class Walker {
       svgpp::value_parser<svgpp::tag::type::transform_list>::parse(
           svgpp::tag::attribute::transform(), matrix, text, svgpp::tag::source::attribute());
     } catch (const std::exception&) {
-      throw SiteError(fmt::format("{}: {} has a transform curdle cannot read: \"{}\"", file_,
-                                  name_of(node), text.substr(0, 200)));
+      throw InputError(fmt::format("{}: {} has a transform curdle cannot read: \"{}\"", file_,
+                                   name_of(node), text.substr(0, 200)));
     }
     const Affine& m = matrix.m;
     if (!std::isfinite(m.a + m.b + m.c + m.d + m.e + m.f) || m.determinant() == 0)
-      throw SiteError(
+      throw InputError(
           fmt::format("{}: {} has a transform that is not finite or flattens it to "
                       "a line: \"{}\"",
                       file_, name_of(node), text.substr(0, 200)));
@@ -401,8 +401,8 @@ class Walker {
       return;
     }
     if (uses >= kDeepestUse)
-      throw SiteError(fmt::format("{}: {} refers to <use> more than {} deep (or to itself)", file_,
-                                  name_of(node), kDeepestUse));
+      throw InputError(fmt::format("{}: {} refers to <use> more than {} deep (or to itself)", file_,
+                                   name_of(node), kDeepestUse));
     const Affine placed =
         ctm.after(Affine{1, 0, 0, 1, length(node, "x", file_, 0), length(node, "y", file_, 0)});
     const xmlNode* target = it->second;
@@ -427,7 +427,7 @@ class Walker {
 
   void count_visit() {
     if (++visits_ > kMostVisits)
-      throw SiteError(
+      throw InputError(
           fmt::format("{}: places elements through <use> more than {} times; keep "
                       "only the layers of the surface",
                       file_, kMostVisits));
@@ -442,8 +442,8 @@ class Walker {
       svgpp::value_parser<svgpp::tag::type::path_data>::parse(
           svgpp::tag::attribute::d(), collector, data, svgpp::tag::source::attribute());
     } catch (const std::exception&) {
-      throw SiteError(fmt::format("{}: {} has path data curdle cannot read: \"{}\"", file_,
-                                  name_of(node), data.substr(0, 200)));
+      throw InputError(fmt::format("{}: {} has path data curdle cannot read: \"{}\"", file_,
+                                   name_of(node), data.substr(0, 200)));
     }
     std::vector<std::string> also = names;
     for (const char* key : {"label", "id"}) {
@@ -454,10 +454,10 @@ class Walker {
     for (auto& [path, closed] : collector.paths) {
       for (const ContourVertex& v : path)
         if (!std::isfinite(v.x) || !std::isfinite(v.y))
-          throw SiteError(
+          throw InputError(
               fmt::format("{}: {} has coordinates that are not finite", file_, name_of(node)));
       if (drawing_.shapes.size() >= kMostShapes || (vertices_ += path.size()) > kMostVertices)
-        throw SiteError(
+        throw InputError(
             fmt::format("{}: holds more than {} shapes or {} vertices, more than a "
                         "site drawing needs; keep only the layers of the surface",
                         file_, kMostShapes, kMostVertices));
@@ -507,12 +507,12 @@ struct DocumentDeleter {
 
 Drawing read_svg(std::string_view bytes, const std::string& file_name, const SvgReading& reading) {
   if (bytes.size() > kMostDrawingBytes)
-    throw SiteError(fmt::format("{}: is {} MiB; a site drawing may be at most {} MiB", file_name,
-                                bytes.size() >> 20, kMostDrawingBytes >> 20));
+    throw InputError(fmt::format("{}: is {} MiB; a site drawing may be at most {} MiB", file_name,
+                                 bytes.size() >> 20, kMostDrawingBytes >> 20));
   if (bytes.find("<svg") == std::string_view::npos)
-    throw SiteError(file_name +
-                    ": is not an SVG drawing (no <svg> element); export the drawing "
-                    "as SVG");
+    throw InputError(file_name +
+                     ": is not an SVG drawing (no <svg> element); export the drawing "
+                     "as SVG");
   // Elements counted in the bytes before libxml2 builds a tree of them (a 60 MB file of empty
   // groups made a tree of 2 GB): every tag but a closing one is at most an element.
   const auto tags = static_cast<size_t>(std::count(bytes.begin(), bytes.end(), '<'));
@@ -520,15 +520,15 @@ Drawing read_svg(std::string_view bytes, const std::string& file_name, const Svg
   for (size_t at = bytes.find("</"); at != std::string_view::npos; at = bytes.find("</", at + 2))
     ++closing;
   if (tags - closing > 4 * kMostShapes)
-    throw SiteError(
+    throw InputError(
         fmt::format("{}: holds {} elements, more than the {} a site drawing needs; "
                     "keep only the layers of the surface",
                     file_name, tags - closing, 4 * kMostShapes));
   // Entity declarations can make a small file expand without bound: a drawing needs none.
   if (bytes.find("<!ENTITY") != std::string_view::npos)
-    throw SiteError(file_name +
-                    ": declares XML entities, which an SVG drawing does not need; "
-                    "export it again as plain SVG");
+    throw InputError(file_name +
+                     ": declares XML entities, which an SVG drawing does not need; "
+                     "export it again as plain SVG");
   std::unique_ptr<xmlDoc, DocumentDeleter> doc(
       xmlReadMemory(bytes.data(), static_cast<int>(bytes.size()), "drawing.svg", nullptr,
                     XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
@@ -538,9 +538,10 @@ Drawing read_svg(std::string_view bytes, const std::string& file_name, const Svg
     std::string why = e && e->message ? e->message : "";
     while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back())))
       why.pop_back();  // libxml2 ends its messages with a newline
-    throw SiteError(fmt::format("{}: is not an SVG drawing{}; export the drawing as SVG", file_name,
-                                !why.empty() ? fmt::format(" (line {}: {})", e->line, why)
-                                             : std::string(" (its root is no <svg>)")));
+    throw InputError(fmt::format("{}: is not an SVG drawing{}; export the drawing as SVG",
+                                 file_name,
+                                 !why.empty() ? fmt::format(" (line {}: {})", e->line, why)
+                                              : std::string(" (its root is no <svg>)")));
   }
   // Units: the root's width over its viewBox's, y turned up about the viewBox's bottom edge.
   double width = 0, height = 0;

@@ -19,7 +19,7 @@ struct SvgReading {
   double unit_mm = 0;  // millimetres per user unit when the recipe says (0: from width / viewBox)
 };
 
-// Throws SiteError naming the file and the element (its id, or its line) for a file that is
+// Throws InputError naming the file and the element (its id, or its line) for a file that is
 // not SVG, holds entity declarations, nests deeper than 64 groups, holds more than kMostShapes
 // shapes, or whose path data or transforms do not parse.
 Drawing read_svg(std::string_view bytes, const std::string& file_name, const SvgReading& reading);
