@@ -20,6 +20,8 @@ packages=(
 if ! $main_only; then
   # The programs the tests read every output back with.
   packages+=(blender python3-ezdxf librsvg2-bin libxml2-utils poppler-utils chromium clang-format)
+  # The tidy preset (not run by the tests) runs .clang-tidy's checks.
+  packages+=(clang-tidy)
   # DXF text read by four programs: ezdxf (above), GDAL, FreeCAD and LibreCAD.
   packages+=(gdal-bin python3-gdal freecad-python3 librecad)
   # layout.gpkg: the GeoPackage module is built against GDAL.

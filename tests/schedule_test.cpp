@@ -214,7 +214,9 @@ TEST(Schedule, AOneBrickWallIsCountedWholeWithEachPartOnItsOwnLine) {
     for (size_t i = 1; i < rows.size(); ++i) {
       by_type[rows[i][0]] += std::stoull(rows[i][5]);
       total += std::stoull(rows[i][5]);
-      if (rows[i][0] == "brick, backing") EXPECT_EQ(rows[i][1], "Class B engineering brick");
+      if (rows[i][0] == "brick, backing") {
+        EXPECT_EQ(rows[i][1], "Class B engineering brick");
+      }
     }
     const double per_m2 = static_cast<double>(total) / (64.0 * 7.05);
     EXPECT_NEAR(per_m2 / kHandCount, 1, 0.01) << bond << ": " << per_m2 << " a m²";
@@ -247,7 +249,9 @@ TEST(Schedule, SpecialsAreBoughtByThePiece) {
     const bool special = rows[i][0].find("special for a 135.0° outer corner") != std::string::npos;
     specials += special;
     EXPECT_EQ(rows[i][13], special ? "1" : "500") << rows[i][0];
-    if (special) EXPECT_EQ(rows[i][14], rows[i][11]) << "as many as are laid";
+    if (special) {
+      EXPECT_EQ(rows[i][14], rows[i][11]) << "as many as are laid";
+    }
   }
   EXPECT_GT(specials, 0u);
 }
