@@ -32,4 +32,21 @@ TEST(LayoutKind, TheRegistryNamesEveryKindAndRefusesASecondOfOneName) {
   }
 }
 
+// What the writers and the page once asked of a kind's name, each kind now answers: whether
+// its pieces are outside, which outputs only it writes, and the building it was laid round.
+TEST(LayoutKind, EachKindSaysWhatItIsInsteadOfItsNameBeingAsked) {
+  for (const char* name : {"facade", "perforation", "rhythm", "paving", "park"})
+    EXPECT_TRUE(layout_kind(name).outdoors()) << name;
+  for (const char* name : {"tile", "blocks"}) EXPECT_FALSE(layout_kind(name).outdoors()) << name;
+  EXPECT_TRUE(layout_kind("park").owns_output("planting.csv"));
+  EXPECT_TRUE(layout_kind("park").owns_output("surfaces.csv"));
+  EXPECT_TRUE(layout_kind("perforation").owns_output("punching.csv"));
+  EXPECT_FALSE(layout_kind("perforation").owns_output("planting.csv"));
+  for (const LayoutKind* k : layout_kinds())
+    EXPECT_FALSE(k->owns_output("layout.glb")) << k->name();
+  LayoutSpec spec;
+  spec.set_kind(layout_kind("facade"));
+  EXPECT_EQ(spec.kind->envelope(spec), nullptr) << "a wall of its own, not a building";
+}
+
 }  // namespace curdle

@@ -450,8 +450,7 @@ class IfcModel {
     properties(e, index, id);
     quantities(e, id);
     const double t = e.form == ElementForm::block ? l_.level_height : l_.thickness;
-    const bool known =
-        l_.kind->upright() || l_.kind->name() == "paving" || l_.kind->name() == "park";
+    const bool known = l_.kind->outdoors();
     sets(id, e.id, c.entity,
          {e.id, known, known, t, b.w, b.h, gross_area(e, parts) / 1e6, e.area() / 1e6});
   }

@@ -23,6 +23,7 @@
 #include "export/schedules/park_schedules.h"
 #include "export/schedules/punching.h"
 #include "export/schedules/schedule.h"
+#include "kinds/registry.h"
 
 namespace fs = std::filesystem;
 
@@ -167,23 +168,23 @@ void add_kind_outputs(Add& add) {
        .description = "parks: every tree and shrub, its plant, centre to set out from, canopy "
                       "and zone",
        .needs_layout = true,
-       .for_kind = "park",
+       .kind_owned = true,
        .write = write_planting});
   add({.name = "furniture.csv",
        .description = "parks: every bench and other standing object, its centre, size and zone",
        .needs_layout = true,
-       .for_kind = "park",
+       .kind_owned = true,
        .write = write_furniture});
   add({.name = "surfaces.csv",
        .description = "parks: the ground and surfaces as areas per material and zone",
        .needs_layout = true,
-       .for_kind = "park",
+       .kind_owned = true,
        .write = write_surfaces});
   add({.name = "punching.csv",
        .description = "perforations: the order list, per fabrication sheet its stock, material, "
                       "offcut, open share and the hits of each punch, and their total",
        .needs_layout = true,
-       .for_kind = "perforation",
+       .kind_owned = true,
        .write = write_punching});
 }
 
@@ -337,6 +338,12 @@ bool is_output_name(const std::string& name, bool folder) {
   return false;
 }
 
+std::string owner_of(const Output& o) {
+  for (const LayoutKind* k : layout_kinds())
+    if (k->owns_output(o.name)) return std::string(k->name());
+  return "";
+}
+
 void check_output_applies(const Output& o, const Run& run) {
   if (o.needs_layout && !run.recipe.layout)
     throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout", ""},
@@ -349,7 +356,7 @@ void check_output_applies(const Output& o, const Run& run) {
                          "recipe's surface is not read from one");
   if (!output_applies(o, run))
     throw InputError(SourceLocation{run.recipe_path, 0, 0, "layout.kind", ""},
-                     o.name + " is written for layouts of kind \"" + o.for_kind +
+                     o.name + " is written for layouts of kind \"" + owner_of(o) +
                          "\"; this recipe's is \"" + std::string(run.recipe.layout->kind->name()) +
                          "\"");
 }
@@ -357,7 +364,7 @@ void check_output_applies(const Output& o, const Run& run) {
 bool output_applies(const Output& o, const Run& run) {
   if (o.needs_layout && !run.recipe.layout) return false;
   if (o.for_site_drawing && !(run.recipe.layout && run.recipe.layout->site_frame)) return false;
-  return !o.for_kind || (run.recipe.layout && run.recipe.layout->kind->name() == o.for_kind);
+  return !o.kind_owned || (run.recipe.layout && run.recipe.layout->kind->owns_output(o.name));
 }
 
 const Output* find_output(const std::string& name) {

@@ -38,9 +38,9 @@ struct Output {
   std::string description;
   bool needs_layout = false;
   bool by_default = true;
-  bool download = true;            // one file the page can offer (not a folder, not a pair)
-  const char* for_kind = nullptr;  // written only for layouts of this kind ("park"); null: any
-  bool for_site_drawing = false;   // written only for a surface read from a DXF ([layout.site])
+  bool download = true;     // one file the page can offer (not a folder, not a pair)
+  bool kind_owned = false;  // written only for the kind that lists it (LayoutKind::own_outputs)
+  bool for_site_drawing = false;  // written only for a surface read from a DXF ([layout.site])
   // Skipped unless named when size(run) is above this (0: never skipped): huge files nobody
   // opens are not written by accident.
   uint64_t skip_above = 0;
@@ -67,6 +67,9 @@ const Output* find_output(const std::string& name);
 std::vector<const Output*> select_outputs(const Run& run, const std::vector<std::string>& named,
                                           RunObserver* observer);
 
+// The kind that alone writes an output (a park's planting.csv: "park"); empty for one any
+// layout writes.
+std::string owner_of(const Output& o);
 // Whether the output is one this run can write: its kind's, and a layout when it needs one.
 bool output_applies(const Output& output, const Run& run);
 // InputError naming the recipe key when it is not: [layout], or layout.kind and the kind it is

@@ -1,6 +1,7 @@
 #include "app/page.h"
 
 #include "app/outputs.h"
+#include "building/building.h"
 #include "building/coursing.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
@@ -11,9 +12,7 @@
 #include "curdle/report.h"
 #include "export/report/measure_files.h"
 #include "export/report/report_json.h"
-#include "kinds/facade.h"
-#include "kinds/perforation.h"
-#include "kinds/rhythm.h"
+#include "kinds/registry.h"
 #include "layout/builder.h"
 #include "layout/cell_placement.h"
 #include "layout/legend.h"
@@ -79,19 +78,10 @@ ordered_json surface_json(const LayoutSpec& spec) {
       {"zones", zones}};
 }
 
-// The envelope a kind laid round a building (a façade's bricks, a screen's sheets, fins).
-const Envelope* envelope_of(const LayoutSpec& spec) {
-  const std::optional<Envelope>* e = nullptr;
-  if (spec.kind->name() == "facade") e = &spec.own<FacadeKeys>().envelope;
-  if (spec.kind->name() == "perforation") e = &spec.own<PerforationKeys>().envelope;
-  if (spec.kind->name() == "rhythm") e = &spec.own<RhythmKeys>().envelope;
-  return e && *e ? &**e : nullptr;
-}
-
 // A building's façades on its unrolled strip, for the page to mark its corners and name its
 // faces over the curd; null for any other layout.
 ordered_json building_json(const LayoutSpec& spec) {
-  const Envelope* envelope = envelope_of(spec);
+  const Envelope* envelope = spec.kind->envelope(spec);
   if (!envelope) return nullptr;
   ordered_json facades = ordered_json::array();
   for (const SurfaceFrame& f : envelope->facades)
@@ -104,13 +94,22 @@ ordered_json building_json(const LayoutSpec& spec) {
 
 }  // namespace
 
+namespace {
+// Whether the kind the page names writes an output only its kind writes.
+bool owned_by(std::string_view kind, const std::string& output) {
+  const LayoutKind* k = find_layout_kind(kind);
+  return k && k->owns_output(output);
+}
+}  // namespace
+
 std::vector<std::string> page_downloads(bool with_layout, std::string_view kind,
                                         bool site_drawing) {
   std::vector<std::string> names;
   std::string why;
   for (const Output& o : output_registry())
     if (o.download && (with_layout || !o.needs_layout) && (site_drawing || !o.for_site_drawing) &&
-        (!o.for_kind || kind.empty() || kind == o.for_kind) && (!o.installed || o.installed(&why)))
+        (!o.kind_owned || kind.empty() || owned_by(kind, o.name)) &&
+        (!o.installed || o.installed(&why)))
       names.push_back(o.name);
   names.push_back("recipe.toml");
   return names;

@@ -206,4 +206,9 @@ void FacadeKind::read_own(reading::TableReader& r, const Design&, LayoutSpec& sp
   spec.own<FacadeKeys>().mask = read_string(r, "mask", "the path of an image").value_or("");
 }
 
+const Envelope* FacadeKind::envelope(const LayoutSpec& spec) const {
+  const std::optional<Envelope>& e = spec.own<FacadeKeys>().envelope;
+  return e ? &*e : nullptr;
+}
+
 }  // namespace curdle

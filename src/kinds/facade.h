@@ -31,6 +31,7 @@ class FacadeKind : public SurfaceKind {
   char id_letter() const override { return 'F'; }
   double thickness(const LayoutSpec& spec) const override;
   bool upright() const override { return true; }
+  const Envelope* envelope(const LayoutSpec& spec) const override;
   std::unique_ptr<KindKeys> default_keys() const override;
   bool take_opening(LayoutSpec& spec, const std::array<double, 4>& rect) const override;
   std::optional<std::array<int64_t, 2>> own_cells(const LayoutSpec& spec) const override;

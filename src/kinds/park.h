@@ -39,6 +39,10 @@ class ParkKind : public SurfaceKind {
   char id_letter() const override { return 'C'; }  // cells; their elements become "K-..."
   double thickness(const LayoutSpec&) const override { return 30; }
   Ground ground() const override { return Ground::paper; }
+  bool outdoors() const override { return true; }
+  std::vector<std::string_view> own_outputs() const override {
+    return {"planting.csv", "furniture.csv", "surfaces.csv"};
+  }
   Depiction depiction() const override { return Depiction::objects; }
   std::string size_line(const Layout& layout) const override;
   std::unique_ptr<KindKeys> default_keys() const override;

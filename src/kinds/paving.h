@@ -13,6 +13,7 @@ class PavingKind : public SurfaceKind {
   char id_letter() const override { return 'P'; }
   double thickness(const LayoutSpec&) const override { return 30; }
   bool bedded() const override { return true; }
+  bool outdoors() const override { return true; }
 
  protected:
   reading::SurfaceKeys surface() const override { return {"tile", "floor", true, true, true}; }

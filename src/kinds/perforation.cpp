@@ -59,4 +59,9 @@ void PerforationKind::replace_cells(Layout& layout, const Design& design,
   perforate(layout, design, spec);
 }
 
+const Envelope* PerforationKind::envelope(const LayoutSpec& spec) const {
+  const std::optional<Envelope>& e = spec.own<PerforationKeys>().envelope;
+  return e ? &*e : nullptr;
+}
+
 }  // namespace curdle

@@ -55,6 +55,8 @@ class PerforationKind : public SurfaceKind {
   double thickness(const LayoutSpec& spec) const override;
   // A perforated screen stands: its sheet's y runs up in the model (+Y in glTF, z in IFC).
   bool upright() const override { return true; }
+  const Envelope* envelope(const LayoutSpec& spec) const override;
+  std::vector<std::string_view> own_outputs() const override { return {"punching.csv"}; }
   Finish finish() const override { return {0.9, 0.4}; }
   Ground ground() const override { return Ground::sheet; }
   Depiction depiction() const override { return Depiction::shapes; }

@@ -174,4 +174,9 @@ void set_rhythm(Layout& layout, const LayoutSpec& spec) {
   }
 }
 
+const Envelope* RhythmKind::envelope(const LayoutSpec& spec) const {
+  const std::optional<Envelope>& e = spec.own<RhythmKeys>().envelope;
+  return e ? &*e : nullptr;
+}
+
 }  // namespace curdle

@@ -21,6 +21,7 @@ struct RhythmKeys : KindKeysOf<RhythmKeys> {
 class RhythmKind : public LayoutKind {
  public:
   std::string_view name() const override { return "rhythm"; }
+  const Envelope* envelope(const LayoutSpec& spec) const override;
   std::string_view element_noun() const override { return "bay"; }
   std::string_view legend_unit() const override { return "bay"; }
   char id_letter() const override { return 'B'; }  // bays; their elements become "R-..."

@@ -5,6 +5,7 @@
 // table (kinds/registry.h), as outputs are (app/outputs.h).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <string>
@@ -55,6 +56,8 @@ struct Finish {
   double metallic = 0, roughness = 0.8;
 };
 
+struct Envelope;  // building/building.h: a plan unrolled into façades
+
 class LayoutKind {
  public:
   virtual ~LayoutKind() = default;
@@ -80,6 +83,19 @@ class LayoutKind {
   // On a building: whether what is laid stands off the wall's face by its thickness (fins),
   // rather than in the wall behind it (bricks, panels, sheets).
   virtual bool stands_off() const { return false; }
+  // Whether its pieces are known to be outside (IFC's IsExternal): what stands upright (a
+  // façade, a screen, fins), a paving and a park are; a tile floor or blocks may be either.
+  virtual bool outdoors() const { return upright(); }
+  // The building it was laid round ([layout.building]: the envelope unrolled into its strip);
+  // null where it was laid on a surface of its own.
+  virtual const Envelope* envelope(const LayoutSpec&) const { return nullptr; }
+  // The outputs only this kind writes (a park's schedules, a perforation's order list), by
+  // their names in the outputs' registry.
+  virtual std::vector<std::string_view> own_outputs() const { return {}; }
+  bool owns_output(std::string_view output) const {
+    const std::vector<std::string_view> own = own_outputs();
+    return std::find(own.begin(), own.end(), output) != own.end();
+  }
 
   // On drawings: what shows behind the elements, how they are drawn, whether they are laid in
   // numbered rows and columns from a start corner, and the title block's line on its size.

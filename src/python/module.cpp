@@ -439,12 +439,12 @@ PYBIND11_MODULE(_curdle, m) {
   m.def("outputs", [] {
     py::list list;
     for (const app::Output& o : app::output_registry())
-      list.append(py::dict(py::arg("name") = o.name, py::arg("description") = o.description,
-                           py::arg("needs_layout") = o.needs_layout,
-                           py::arg("by_default") = o.by_default,
-                           py::arg("for_site_drawing") = o.for_site_drawing,
-                           py::arg("for_kind") = o.for_kind ? py::object(py::str(o.for_kind))
-                                                            : py::object(py::none())));
+      list.append(
+          py::dict(py::arg("name") = o.name, py::arg("description") = o.description,
+                   py::arg("needs_layout") = o.needs_layout, py::arg("by_default") = o.by_default,
+                   py::arg("for_site_drawing") = o.for_site_drawing,
+                   py::arg("for_kind") = o.kind_owned ? py::object(py::str(app::owner_of(o)))
+                                                      : py::object(py::none())));
     return list;
   });
 }
