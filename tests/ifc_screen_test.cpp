@@ -9,15 +9,12 @@
 
 #include "building_support.h"
 #include "export/ifc/step_file.h"
+#include "test_support.h"
 
 namespace curdle {
 namespace {
 
-size_t occurrences(const std::string& text, const std::string& what) {
-  size_t n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
+using test::occurrences;
 
 TEST(IfcScreen, ASheetsBodyIsItsTrianglesAndAMappedTileAnOpening) {
   std::ifstream in(std::string(CURDLE_SOURCE_DIR) + "/patterns/perforated-screen-curved.toml");

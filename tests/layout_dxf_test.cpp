@@ -14,11 +14,7 @@
 namespace curdle {
 namespace {
 
-size_t occurrences(const std::string& s, const std::string& what) {
-  size_t n = 0;
-  for (size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
-  return n;
-}
+using test::occurrences;
 
 TEST(LayoutDxf, EveryPieceOnItsMaterialsLayerWithItsId) {
   const Design d = test::design(2, 2, {{"3/4", "2/3"}});

@@ -59,4 +59,11 @@ inline std::vector<std::vector<std::string>> repeat(const std::string& p, int n)
   return {std::vector<std::string>(n, p)};
 }
 
+// How many times `what` occurs in `text` (overlapping occurrences counted).
+inline size_t occurrences(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 }  // namespace curdle::test
