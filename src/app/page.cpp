@@ -92,14 +92,12 @@ ordered_json building_json(const LayoutSpec& spec) {
   return {{"closed", envelope->closed}, {"facades", facades}};
 }
 
-}  // namespace
-
-namespace {
 // Whether the kind the page names writes an output only its kind writes.
 bool owned_by(std::string_view kind, const std::string& output) {
   const LayoutKind* k = find_layout_kind(kind);
   return k && k->owns_output(output);
 }
+
 }  // namespace
 
 std::vector<std::string> page_downloads(bool with_layout, std::string_view kind,
