@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "curdle/curdling.h"
+#include "curdle/extinction.h"
 #include "curdle/markov_report.h"
 #include "curdle/theory.h"
 #include "markov_support.h"
@@ -131,6 +132,35 @@ TEST(MarkovTheory, AFieldThatCutsRootCellsMatchesOverAThousandSeeds) {
                     markov_curd(R"(["dark", "mid"])", "\"dark\"", kStationary) + "stages = 5\n",
                     "cells = [100, 70]");
   check_against_theory(d, kSeeds);
+}
+
+TEST(MarkovTheory, ExactModeThroughAFieldThatCutsRootCellsMatchesOverAThousandSeeds) {
+  // Exact mode deals each parent's children a fixed multiset of states: the children a field
+  // cuts off take some of them, which the box counts of cut cells must follow.
+  const Design d = markov_design(
+      "base = 2\ndimension = 2\nstages = 5\nmode = \"exact\"",
+      markov_curd(R"(["dark", "mid"])", R"(["1/2", "1/2"])",
+                  R"([[["1", "0", "0"], ["1/4", "1/2", "1/4"], ["0", "1/4", "3/4"]]])") +
+          "stages = 5\n",
+      "cells = [100, 70]");
+  check_against_theory(d, 1000);
+}
+
+TEST(MarkovTheory, OneLivingStateInExactModeThroughACutFieldIsTheCurdsBoxCounts) {
+  // Fig. 7's lattice on 67 x 67 cells: a plain exact curd's expected box counts, to 1e-9.
+  const std::string stage = R"([["1", "0"], ["4/9", "5/9"]])";
+  const Design d =
+      markov_design("base = 3\ndimension = 2\nstages = 4\nmode = \"exact\"",
+                    markov_curd(R"(["alive"])", "\"alive\"",
+                                "[" + stage + ", " + stage + ", " + stage + ", " + stage + "]"),
+                    "cells = [67, 67]");
+  const Design plain = test::design(3, 2, test::repeat("5/9", 4), Mode::exact);
+  const std::vector<double> want =
+      expected_box_counts(plain.lattice, plain.curds[0].probabilities, d.field);
+  const std::vector<double> got =
+      expected_state_box_counts(d.lattice, *d.curds[0].chain, {false, true}, d.field);
+  ASSERT_EQ(got.size(), want.size());
+  for (size_t m = 0; m < want.size(); ++m) EXPECT_NEAR(got[m], want[m], 1e-9 * want[m]) << m;
 }
 
 TEST(MarkovTheory, OneLivingStateIsTheCurdsTheory) {

@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include "curdle/markov_theory.h"
+#include "export/report/json_number.h"
 #include "export_support.h"
+#include "markov_support.h"
 
 namespace fs = std::filesystem;
 
@@ -40,6 +43,25 @@ TEST(ReportJson, HasTheDocumentedShapeAndAddsUp) {
   const std::string table = format_report_table(r);
   EXPECT_NE(table.find("box dimension: fit"), std::string::npos);
   EXPECT_NE(table.find("red+c1"), std::string::npos);
+}
+
+TEST(ReportJson, SmallProbabilitiesKeepTheirDigits) {
+  EXPECT_EQ(probability_json(7e-89).dump(), "7e-89");
+  EXPECT_EQ(probability_json(5.96e-08).dump(), "5.96e-08");
+  EXPECT_EQ(probability_json(0.75).dump(), "0.75");
+  EXPECT_TRUE(probability_json(std::nan("")).is_null());
+  // A chain that hardly ever dies out: its extinction, about 3e-15, is written as computed.
+  const Design d = test::markov_design(
+      "base = 4\ndimension = 2\nstages = 3",
+      test::markov_curd(R"(["alive"])", "\"alive\"", R"([[["1", "0"], ["1/8", "7/8"]]])") +
+          "stages = 3\n");
+  const Report r = make_report(d, 1, curdle(d, 1, d.field), d.field);
+  const auto j = nlohmann::json::parse(report_to_json(r).dump());
+  const double want = extinction_chance(d.lattice, *d.curds[0].chain, {false, true});
+  ASSERT_GT(want, 0);
+  ASSERT_LT(want, 1e-12);
+  const double got = j["markov_curds"][0]["sets"][0]["extinction"].get<double>();
+  EXPECT_NEAR(got, want, 1e-11 * want);
 }
 
 }  // namespace curdle

@@ -35,7 +35,7 @@ json markov_json(const MarkovReport& m) {
                       {"state", s.state},
                       {"cells", s.cells},
                       {"count", s.count},
-                      {"expected_share", rounded(s.share, 9)},
+                      {"expected_share", probability_json(s.share)},
                       {"expected", rounded(s.expected, 3)},
                       {"expected_sd", rounded(s.expected_sd, 3)},
                       {"z", s.z ? rounded(*s.z, 3) : json(nullptr)}});
@@ -50,7 +50,7 @@ json markov_json(const MarkovReport& m) {
                     {"expected_box_dimension", fit_json(set.expected_fit)},
                     {"theory_dimension",
                      set.theory_dimension ? rounded(*set.theory_dimension) : json(nullptr)},
-                    {"extinction", rounded(set.extinction, 9)}});
+                    {"extinction", probability_json(set.extinction)}});
   }
   return {{"name", m.name},   {"states", m.states}, {"stationary", m.stationary},
           {"wheys", m.wheys}, {"stages", stages},   {"sets", sets}};
@@ -76,7 +76,7 @@ json report_to_json(const Report& r) {
     json stages = json::array();
     for (const StageRow& s : c.stages) {
       stages.push_back({{"stage", s.stage},
-                        {"probability", rounded(s.probability.value(), 6)},
+                        {"probability", probability_json(s.probability.value())},
                         {"probability_text", s.probability.text()},
                         {"cells", s.cells},
                         {"survivors", s.survivors},
@@ -108,7 +108,7 @@ json report_to_json(const Report& r) {
     else
       fit["share_weighted"] = nullptr;
     curds.push_back({{"name", c.name},
-                     {"final_probability", rounded(c.final_probability, 6)},
+                     {"final_probability", probability_json(c.final_probability)},
                      // A cell's final survival is min(1, P_K g), g the field at its centre.
                      {"density", c.density.empty() ? json(nullptr) : json(c.density)},
                      {"roots", c.roots},

@@ -1,8 +1,10 @@
 #include "curdle/markov_theory.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 
 #include "curdle/cell_shapes.h"
 #include "curdle/theory.h"
@@ -43,6 +45,60 @@ double sibling_pair(const Lattice& l, double mean, double square) {
   return (B * B * mean * mean - B * square) / (B * (B - 1));
 }
 
+// The exact deal below is followed in a table of at most this many count vectors, and at most
+// this many table entries over all the children (a few milliseconds).
+constexpr uint64_t kDealtTable = uint64_t{1} << 20;
+constexpr uint64_t kDealtWork = uint64_t{1} << 24;
+
+// Exact mode deals a state-i parent's B children the states of a fixed multiset, n_t = P[i][t] B
+// of each, in random order; the children inside the view (`inside`: each group's chance of no
+// target per state, and how many children it has) take the first of them, so that
+//   E[prod over inside children of f(state)]
+// follows child by child over how many of each state are still to deal (a mixed-radix count
+// vector), each child taking state t with (still to deal of t) / (still to deal). Empty when that
+// table is too large (many children in many states): the caller then draws with replacement,
+// O(1/B) off.
+std::optional<double> dealt_product(
+    uint64_t B, const std::vector<Probability>& row,
+    const std::vector<std::pair<std::vector<double>, uint64_t>>& inside) {
+  const size_t n = row.size();
+  std::vector<uint64_t> deal(n, 0), radix(n, 1);
+  uint64_t living = 0;
+  for (size_t t = 1; t < n; ++t) living += deal[t] = row[t].round_times(B);
+  if (living > B) return std::nullopt;
+  deal[0] = B - living;
+  uint64_t table = 1, children = 0;
+  for (size_t t = 0; t < n; ++t) {
+    radix[t] = table;
+    if (table > kDealtTable / (deal[t] + 1)) return std::nullopt;
+    table *= deal[t] + 1;
+  }
+  for (const auto& group : inside) children += group.second;
+  if (children > B || table * children > kDealtWork) return std::nullopt;
+  // weight[index of the counts already dealt]
+  std::vector<double> weight(table, 0.0), next(table);
+  weight[0] = 1;
+  uint64_t dealt = 0;
+  for (const auto& [f, count] : inside)
+    for (uint64_t c = 0; c < count; ++c, ++dealt) {
+      std::fill(next.begin(), next.end(), 0.0);
+      const double left = static_cast<double>(B - dealt);
+      for (uint64_t index = 0; index < table; ++index) {
+        if (weight[index] == 0) continue;
+        for (size_t t = 0; t < n; ++t) {
+          const uint64_t used = index / radix[t] % (deal[t] + 1);
+          if (used == deal[t]) continue;
+          next[index + radix[t]] +=
+              weight[index] * static_cast<double>(deal[t] - used) / left * f[t];
+        }
+      }
+      std::swap(weight, next);
+    }
+  double sum = 0;
+  for (const double w : weight) sum += w;
+  return sum;
+}
+
 // The chance that a cell in each state leaves no finest cell of `targets` in the view, for
 // cells of a given stage and inside shape (memoised: a level has at most 3^E shapes).
 class StateExtinction {
@@ -75,8 +131,16 @@ class StateExtinction {
           e[i] *= std::pow(child[t], static_cast<double>(row[t].round_times(l_.children())));
         continue;
       }
-      for (const auto& [shape_c, count] : children) {
-        const std::vector<double> child = (*this)(k + 1, shape_c);
+      std::vector<std::pair<std::vector<double>, uint64_t>> inside;
+      for (const auto& [shape_c, count] : children)
+        inside.push_back({(*this)(k + 1, shape_c), count});
+      if (l_.mode == Mode::exact) {
+        if (const std::optional<double> dealt = dealt_product(l_.children(), row, inside)) {
+          e[i] = *dealt;
+          continue;
+        }
+      }
+      for (const auto& [child, count] : inside) {
         double none = 0;
         for (size_t t = 0; t < n; ++t) none += row[t].value() * child[t];
         e[i] *= std::pow(none, static_cast<double>(count));

@@ -13,12 +13,13 @@
 // Extinction and box counts: e_m(i; A), the chance that a stage-m cell in state i leaves no
 // finest cell in the states A inside the view, from e_K(i) = [i not in A] and
 //   e_m(i) = prod over the children inside of sum_t P_(m+1)[i][t] e_(m+1)(child, t)
-// (canonical; exact mode's whole cells: prod_t e_(m+1)(t)^(n_t)). Expected box count of A at
-// level m: sum over the stage-m cells meeting the view of sum_i s_m[i] (1 - e_m(i)).
-// Dimension, for a stationary P: the set of a state j is fed by the states that can reach it,
-// R_j (dead too, with wheys); D_j = log rho(B P restricted to R_j) / log b, rho the spectral
-// radius, where rho > 1 (else the set dies out). The living set: the states that can reach a
-// living one.
+// (canonical; exact mode's whole cells: prod_t e_(m+1)(t)^(n_t); its cells the view cuts: the same
+// deal, child by child over the states still to deal, as the plain curd's hypergeometric sum).
+// Expected box count of A at level m: sum over the stage-m cells meeting the view of sum_i s_m[i]
+// (1 - e_m(i)). Dimension, for a stationary P: the set of a state j is fed by the states that can
+// reach it, R_j (dead too, with wheys); D_j = log rho(B P restricted to R_j) / log b, rho the
+// spectral radius, where rho > 1 (else the set dies out). The living set: the states that can reach
+// a living one.
 #pragma once
 
 #include <cstdint>
