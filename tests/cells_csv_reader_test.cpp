@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "export_support.h"
+#include "recipe/recipe.h"
 
 namespace fs = std::filesystem;
 
@@ -55,9 +56,54 @@ TEST(CellsCsv, ReadsBackWhatItWritesAndRefusesWhatItCannotTrust) {
             std::string::npos);
   EXPECT_NE(refusal("value,a\n1,1\n").find("the header must be"), std::string::npos);
   EXPECT_NE(refusal("x,value,a\nnan,1,1\n").find("x must be a whole number"), std::string::npos);
-  // A Markov curd's column names its state: said plainly, as fit cannot take it yet.
-  EXPECT_NE(refusal("x,y,value,tone\n0,0,1,dark\n").find("Markov curd's states cannot be fitted"),
+  // A Markov curd's column names its states, each with one number in the value's bits.
+  EXPECT_NE(refusal("x,value,tone\n0,1,dark\n1,2,dark\n").find("line 3: curd 'tone' is 'dark'"),
             std::string::npos);
+  EXPECT_NE(refusal("x,value,tone\n0,1,dark\n1,0,mid\n").find("gives its state 0, dead"),
+            std::string::npos);
+  EXPECT_NE(refusal("x,value,tone\n0,1,dark\n1,0,\"x\n").find("names a state"), std::string::npos);
+  EXPECT_NE(refusal("x,value,a,tone\n0,3,1,dark\n1,0,dark,dead\n").find("must be 0 or 1"),
+            std::string::npos);
+}
+
+TEST(CellsCsv, AMarkovCurdsStatesComeBackByNumber) {
+  // A plain curd, then a chain of three living states over two planes: bits 1 and 2 of value.
+  const std::string text =
+      "x,value,a,tone\n0,0,0,dead\n1,3,1,dark\n2,5,1,mid\n3,4,0,mid\n4,7,1,pale\n";
+  const CellsTable t = parse_cells_csv(text, 100);
+  ASSERT_EQ(t.curds.size(), 2u);
+  EXPECT_FALSE(t.markov(0));
+  ASSERT_TRUE(t.markov(1));
+  EXPECT_EQ(t.states[1], (std::vector<std::string>{"dark", "mid", "pale"}));
+  EXPECT_EQ(t.state_cells[1], (std::vector<uint8_t>{0, 1, 2, 2, 3}));
+  EXPECT_EQ(t.state_cells[0], (std::vector<uint8_t>{0, 1, 1, 0, 1}));
+  EXPECT_EQ(t.cells[1], (std::vector<bool>{false, true, true, true, true}));
+}
+
+TEST(CellsCsv, ReadsBackAMarkovRunsFile) {
+  const Design d = parse_recipe(R"(name = "m"
+[lattice]
+base = 2
+dimension = 2
+stages = 3
+[[curds]]
+name = "tone"
+states = ["dark", "mid"]
+start = "dark"
+transitions = [["1", "0", "0"], ["1/4", "1/2", "1/4"], ["1/4", "1/4", "1/2"]]
+stages = 3
+)",
+                                "m.toml")
+                       .design;
+  const CurdField f = curdle(d, 2, d.field);
+  std::ostringstream out;
+  write_cells_csv(out, d, f, d.field);
+  const CellsTable t = parse_cells_csv(out.str(), 1 << 20);
+  ASSERT_EQ(t.curds, (std::vector<std::string>{"tone"}));
+  EXPECT_EQ(t.states[0], (std::vector<std::string>{"dark", "mid"}));
+  const std::vector<uint16_t> values = values_in(f, d.field);
+  ASSERT_EQ(t.state_cells[0].size(), values.size());
+  for (size_t i = 0; i < values.size(); ++i) EXPECT_EQ(t.state_cells[0][i], values[i]) << i;
 }
 
 }  // namespace curdle
