@@ -5,9 +5,11 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/chain_reading.h"
 #include "curdle/fit.h"
 #include "curdle/lattice.h"
 #include "io/image.h"
@@ -21,6 +23,12 @@ struct FitRequest {
   int curds = 1;
   int cell_pixels = 0;      // a picture's cells are this many pixels a side; 0: found from it
   uint64_t max_memory = 0;  // bytes; 0: default_memory_limit()
+  // A Markov curd of this many living states instead of overlaid curds (0: curds): a picture's
+  // S + 1 tones, the lightest the ground; a cells.csv's values. A cells.csv of one Markov curd
+  // is fitted as a chain of its own states whatever this says.
+  int states = 0;
+  bool stage_wise = false;  // the chain's matrix fitted per stage, not one for all
+  bool wheys = false;       // the chain's dead row fitted too (dead cells that come back)
 };
 
 struct FittedCurd {
@@ -36,6 +44,10 @@ struct FittedRecipe {
   int pixels_per_cell = 1;               // a picture's cells, in pixels a side
   bool by_colour = false;                // its curds told apart by its colours
   std::vector<FittedCurd> curds;
+  // The cells read as one Markov curd: the recipe's curd when recipe_is_chain, else beside the
+  // overlaid curds, to say which reading the cells support.
+  std::optional<ChainReading> chain;
+  bool recipe_is_chain = false;
   std::string toml;  // the recipe, checked by reading it back
   // What the fit cannot vouch for: a curd no curd at these stages explains (naming the stages
   // that fail and which way), or too few cells to tell. Also written into the recipe's text.

@@ -97,9 +97,10 @@ std::vector<uint16_t> values_by_colour(const std::vector<uint32_t>& palette, int
   return best_values;
 }
 
-}  // namespace
-
-PictureCells picture_cells(const LuminanceImage& image, int curds, int cell_pixels) {
+// The picture's cells (k x k pixels each, k found when `cell_pixels` is 0): each cell's top-left
+// pixel's luminance and colour (a preview's cells are one shade).
+PictureCells cells_of(const LuminanceImage& image, int cell_pixels, std::vector<float>& luminance,
+                      std::vector<uint8_t>& colour) {
   PictureCells out;
   const int k = cell_pixels > 0 ? cell_pixels : found_cell_pixels(image);
   if (image.width % k != 0 || image.height % k != 0)
@@ -109,15 +110,21 @@ PictureCells picture_cells(const LuminanceImage& image, int curds, int cell_pixe
                                                    std::to_string(k) + " x " + std::to_string(k));
   out.pixels_per_cell = k;
   out.width = image.width / k, out.height = image.height / k;
-  // A cell's pixel: its top-left one (a preview's cells are one shade).
-  std::vector<float> luminance;
-  std::vector<uint8_t> colour;
   for (int64_t y = 0; y < out.height; ++y)
     for (int64_t x = 0; x < out.width; ++x) {
       const size_t at = static_cast<size_t>(y * k * image.width + x * k);
       luminance.push_back(image.luminance[at]);
       if (!image.colour.empty()) colour.push_back(image.colour[at]);
     }
+  return out;
+}
+
+}  // namespace
+
+PictureCells picture_cells(const LuminanceImage& image, int curds, int cell_pixels) {
+  std::vector<float> luminance;
+  std::vector<uint8_t> colour;
+  PictureCells out = cells_of(image, cell_pixels, luminance, colour);
   std::vector<Rgb> curd_rgb;
   const std::vector<uint16_t> by_colour =
       curds >= 2 && !colour.empty() && image.palette.size() <= (size_t{1} << curds)
@@ -133,6 +140,32 @@ PictureCells picture_cells(const LuminanceImage& image, int curds, int cell_pixe
   out.values = quantise(out.width, out.height, luminance, 1 << curds, levels).values;
   for (int c = 0; c < curds; ++c)
     out.curd_colours.push_back(level_colour(levels[static_cast<size_t>(1) << c]));
+  return out;
+}
+
+PictureCells picture_tones(const LuminanceImage& image, int tones, int cell_pixels) {
+  std::vector<float> luminance;
+  std::vector<uint8_t> colour;
+  PictureCells out = cells_of(image, cell_pixels, luminance, colour);
+  if (!colour.empty() && image.palette.size() <= static_cast<size_t>(tones)) {
+    // Its own colours, lightest first.
+    std::vector<size_t> order(image.palette.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      return luminance_of(rgb_of(image.palette[a])) > luminance_of(rgb_of(image.palette[b]));
+    });
+    std::vector<uint16_t> tone_of(order.size());
+    for (size_t t = 0; t < order.size(); ++t) {
+      tone_of[order[t]] = static_cast<uint16_t>(t);
+      out.curd_colours.push_back(hex_colour(rgb_of(image.palette[order[t]])));
+    }
+    for (uint8_t c : colour) out.values.push_back(tone_of[c]);
+    out.by_colour = true;
+    return out;
+  }
+  std::vector<double> levels;
+  out.values = quantise(out.width, out.height, luminance, tones, levels).values;
+  for (const double l : levels) out.curd_colours.push_back(level_colour(l));
   return out;
 }
 

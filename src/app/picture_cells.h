@@ -25,4 +25,9 @@ struct PictureCells {
 // not whole cells of it.
 PictureCells picture_cells(const LuminanceImage& image, int curds, int cell_pixels);
 
+// The picture as `tones` tones, 0 the lightest (a Markov curd's dead ground) and then then darker
+// and darker: its own flat colours when it has no more than `tones` of them, else
+// its luminance quantised (measure.h). curd_colours holds each tone's colour, 0 first.
+PictureCells picture_tones(const LuminanceImage& image, int tones, int cell_pixels);
+
 }  // namespace curdle::app
