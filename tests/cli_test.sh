@@ -305,6 +305,37 @@ expect 2 "must be from 1 to 4" fit "$work/curd.png" --stages 3 --curds 9 --out "
 # b^K past 64 bits wrapped to 0 and was divided by (SIGFPE): refused, naming --stages.
 expect 2 "stages with this base" fit "$work/curd.png" --stages 30 --base 64 --out "$work/fit-bad/x.toml"
 expect 2 "is not a regular file" fit /dev/zero --stages 3 --out "$work/fit-bad/x.toml"
+# A Markov curd: the three-tone paving's preview fitted as a chain of two states, the chain
+# supported over two overlaid curds, and its recipe runs; measure --stages prints the same.
+local paving="$src/patterns/paving-three-tone-markov.toml"
+expect 0 "outputs in" generate "$paving" --out "$work/paving" --outputs preview.png,cells.csv
+expect 0 "chain by" fit "$work/paving/preview.png" --base 4 --stages 3 --states 2 --stage-wise \
+  --out "$work/fit/paving.toml"
+expect 0 "supported  one Markov curd" fit "$work/paving/cells.csv" --base 4 --stages 3 \
+  --out "$work/fit/paving-cells.toml"
+/usr/bin/python3 - "$work/fit/paving.toml" "$work/fit/paving-cells.toml" <<'PY' && pass || fail "the chain's recipe is not as fitted"
+import sys, tomllib
+picture, cells = (tomllib.load(open(p, "rb")) for p in sys.argv[1:])
+chain = picture["curds"][0]
+assert len(chain["states"]) == 2 and len(chain["transitions"]) == 3, chain
+for matrix in chain["transitions"]:
+    for row in matrix:
+        assert sum(round(float(x) * 10000) for x in row) == 10000, row
+assert cells["curds"][0]["states"] == ["dark", "mid"], cells
+PY
+expect 0 "outputs in" generate "$work/fit/paving.toml" --out "$work/fit-paving" --outputs report.json
+expect 0 "boxes holding a finest cell" measure "$work/paving/preview.png" --values 3 --base 4 \
+  --stages 3 --out "$work/measure-chain"
+/usr/bin/python3 - "$work/measure-chain/measure.json" <<'PY' && pass || fail "measure.json has no chain"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["chain"]["supported"] == "chain" and len(j["chain"]["levels"]) == 4, j["chain"].keys()
+PY
+expect 2 "needs 3 (the lightest is the ground" fit "$work/curd.png" --stages 8 --states 2 \
+  --out "$work/fit-bad/x.toml"
+expect 2 "give --states S with them" fit "$work/curd.png" --stages 8 --wheys --out "$work/fit-bad/x.toml"
+expect 2 "from 1 to 15 living states" fit "$work/curd.png" --stages 8 --states 99 --out "$work/fit-bad/x.toml"
+expect 2 "not to a threshold" measure "$work/curd.png" --threshold 0.5 --stages 3 --out "$work/fit-bad"
 [ ! -e "$work/fit-bad" ] && pass || fail "a refused fit left $work/fit-bad"
 }
 

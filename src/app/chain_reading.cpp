@@ -8,6 +8,9 @@
 #include <numeric>
 
 #include "curdle/error.h"
+#include "curdle/markov.h"
+#include "curdle/markov_theory.h"
+#include "curdle/theory.h"
 
 namespace curdle::app {
 namespace {
@@ -108,6 +111,67 @@ std::string overlay_words(const std::vector<int>& value_of, const std::vector<st
   return s + ")";
 }
 
+// The fitted chain as the engine's (markov.h), for its theory.
+MarkovChain chain_of(const ChainReading& c, int stages) {
+  MarkovChain m;
+  m.states = c.states;
+  m.colours.assign(c.states.size(), std::nullopt);
+  const ChainValues v = c.fit.values(stages);
+  auto probabilities = [](const std::vector<double>& row) {
+    std::vector<Probability> out;
+    for (const double x : row) out.push_back(*Probability::from_double(std::clamp(x, 0.0, 1.0)));
+    return out;
+  };
+  m.start = probabilities(v.start);
+  for (const auto& matrix : v.transitions) {
+    m.transitions.emplace_back();
+    for (const auto& row : matrix) m.transitions.back().push_back(probabilities(row));
+  }
+  return m;
+}
+
+std::vector<StateLevel> state_levels(const ChainReading& c, const StateTree& tree, const Lattice& l,
+                                     const Box& view) {
+  const size_t S = c.states.size() + 1;
+  const int K = l.stages;
+  const MarkovChain chain = chain_of(c, K);
+  const StateTreeCounts seen = tree.expected_counts(c.fit.values(K));
+  std::vector<StateLevel> levels(static_cast<size_t>(K) + 1);
+  for (int m = 0; m <= K; ++m) {
+    StateLevel& at = levels[static_cast<size_t>(m)];
+    at.level = m;
+    at.cells.assign(S, 0.0);
+    if (m == 0) {
+      at.cells = seen.roots;
+    } else {
+      for (size_t i = 0; i < S; ++i)
+        for (size_t j = 0; j < S; ++j) at.cells[j] += seen.steps[static_cast<size_t>(m) - 1][i][j];
+    }
+    const double C = static_cast<double>(cells_meeting(l, m, view));
+    for (const double share : state_shares(chain, m)) at.expected_cells.push_back(C * share);
+    at.boxes.assign(S, 0);
+    at.expected_boxes.assign(S, 0.0);
+  }
+  for (size_t j = 1; j < S; ++j) {
+    std::vector<bool> targets(S, false);
+    targets[j] = true;
+    const std::vector<double> expected = expected_state_box_counts(l, chain, targets, view);
+    std::vector<bool> held(tree.leaves());
+    for (size_t i = 0; i < held.size(); ++i) held[i] = tree.leaf(i) == j;
+    for (int m = K; m >= 0; --m) {
+      StateLevel& at = levels[static_cast<size_t>(m)];
+      at.boxes[j] = static_cast<uint64_t>(std::count(held.begin(), held.end(), true));
+      at.expected_boxes[j] = expected[static_cast<size_t>(m)];
+      if (m == 0) break;
+      std::vector<bool> up(tree.cells(m - 1), false);
+      for (size_t i = 0; i < held.size(); ++i)
+        if (held[i]) up[tree.parent(m, i)] = true;
+      held.swap(up);
+    }
+  }
+  return levels;
+}
+
 }  // namespace
 
 double overlay_log_likelihood(const Lattice& l, const Box& view, const std::vector<uint8_t>& tones,
@@ -161,6 +225,7 @@ ChainReading read_as_chain(ChainRequest r) {
                    out.options.wheys ? ", wheys" : ""),
        out.fit.log_likelihood, out.fit.parameters, out.fit.bic});
   out.supported = "chain";
+  if (r.intervals) out.levels = state_levels(out, tree, r.lattice, r.view);
   if (living == 1) return out;  // the overlay of one curd is this same model
   const int curds = static_cast<int>(std::bit_width(living));
   double best = -INFINITY;
@@ -247,6 +312,13 @@ json chain_reading_json(const ChainReading& c, int stages) {
                         {"log_likelihood", r.log_likelihood},
                         {"parameters", r.parameters},
                         {"bic", r.bic}});
+  json levels = json::array();
+  for (const StateLevel& l : c.levels)
+    levels.push_back({{"level", l.level},
+                      {"cells", l.cells},
+                      {"expected_cells", l.expected_cells},
+                      {"boxes", l.boxes},
+                      {"expected_boxes", l.expected_boxes}});
   return {{"curd", c.curd},
           {"states", c.states},
           {"colours", c.colours},
@@ -259,7 +331,8 @@ json chain_reading_json(const ChainReading& c, int stages) {
           {"intervals", c.fit.intervals},
           {"readings", readings},
           {"supported", c.supported},
-          {"margin", c.margin}};
+          {"margin", c.margin},
+          {"levels", levels}};
 }
 
 }  // namespace curdle::app

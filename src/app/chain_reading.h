@@ -28,15 +28,28 @@ struct Reading {
   double bic = 0;
 };
 
+// At one level m (0..K) of the lattice, the cells' states beside what the fitted chain gives.
+struct StateLevel {
+  int level = 0;
+  // Per state 0..S: the stage-m cells in it (the finest counted; coarser ones hidden, their
+  // expected number given the cells), and the chain's expectation C_m s_m.
+  std::vector<double> cells, expected_cells;
+  // Per state 0..S (0 unused): the stage-m boxes holding a finest cell of it, and the chain's
+  // expected box count (markov_theory.h).
+  std::vector<uint64_t> boxes;
+  std::vector<double> expected_boxes;
+};
+
 struct ChainReading {
   std::string curd;                  // the chain's name in the recipe
   std::vector<std::string> states;   // living states 1..S
   std::vector<std::string> colours;  // "#rrggbb" per living state; empty strings for none
   ChainFitOptions options;
   ChainFit fit;
-  std::vector<Reading> readings;  // the chain's, then the overlay's (none when S = 1: the same)
-  std::string supported;          // the reading with the lower BIC
-  double margin = 0;              // the other's BIC minus the supported's
+  std::vector<Reading> readings;   // the chain's, then the overlay's (none when S = 1: the same)
+  std::string supported;           // the reading with the lower BIC
+  double margin = 0;               // the other's BIC minus the supported's
+  std::vector<StateLevel> levels;  // 0..K (empty when the chain is only compared)
 };
 
 struct ChainRequest {

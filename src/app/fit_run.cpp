@@ -335,7 +335,7 @@ void check_fit_lattice(const Lattice& l) {
 FittedRecipe run_fit(const FitRequest& r) {
   check_fit_options(r);
   if (std::filesystem::path(r.source).extension() == ".csv") return fit_cells_file(r);
-  if (r.stage_wise || r.wheys) refuse_chain_options_without_states();
+  if ((r.stage_wise || r.wheys) && r.states == 0) refuse_chain_options_without_states();
   return fit_picture(read_picture(r.source, r.max_memory), r);
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "app/fit_run.h"
 #include "app/run.h"
 #include "io/bounded_image.h"
 
@@ -33,12 +34,16 @@ void check_measure_options(const MeasureRequest& r) {
     throw InputError(parameter("threshold"),
                      "must be a luminance between 0 (black) and 1 (white), e.g. 0.5");
   check_base(r.base);
+  if (r.stages < 0 || r.stages > 30)
+    throw InputError(parameter("stages"),
+                     "must be from 1 to 30, or 0 for no chain, not " + std::to_string(r.stages));
 }
 
-MeasuredPicture run_measure(const MeasureRequest& r) {
+MeasuredPicture run_measure(const MeasureRequest& r, std::optional<ChainReading>* chain) {
   check_measure_options(r);
-  return measure_picture(read_picture(r.image, r.max_memory),
-                         std::filesystem::path(r.image).filename().string(), r);
+  const LuminanceImage image = read_picture(r.image, r.max_memory);
+  if (chain && r.stages > 0) *chain = measured_chain(image, r);
+  return measure_picture(image, std::filesystem::path(r.image).filename().string(), r);
 }
 
 MeasuredPicture measure_picture(const LuminanceImage& image, const std::string& source,
@@ -66,9 +71,24 @@ bool is_measure_output_name(const std::string& name, bool folder) {
   return !folder && (name == "measure.json" || name == "measure.png");
 }
 
-void write_measure_outputs(const MeasuredPicture& picture, OutputSink& sink) {
-  sink.write("measure.json",
-             [&](std::ostream& out) { out << measure_to_json(picture).dump(1) << "\n"; });
+ChainReading measured_chain(const LuminanceImage& image, const MeasureRequest& r) {
+  if (r.threshold)
+    throw InputError(parameter("stages"),
+                     "a chain is fitted to the values --values quantises to, not to a threshold's "
+                     "two: give --values 3 or more with --stages");
+  FitRequest fit;
+  fit.source = r.image;
+  fit.base = r.base;
+  fit.stages = r.stages;
+  fit.states = r.values - 1;
+  return *fit_picture(image, fit).chain;
+}
+
+void write_measure_outputs(const MeasuredPicture& picture, OutputSink& sink,
+                           const ChainReading* chain) {
+  nlohmann::ordered_json j = measure_to_json(picture);
+  if (chain) j["chain"] = chain_reading_json(*chain, static_cast<int>(chain->levels.size()) - 1);
+  sink.write("measure.json", [&](std::ostream& out) { out << j.dump(1) << "\n"; });
   const std::string png = encode_png(plot_box_counts(picture));
   sink.write("measure.png", [&](std::ostream& out) { out << png; });
 }

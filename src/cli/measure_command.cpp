@@ -5,6 +5,7 @@
 
 #include "app/measure_run.h"
 #include "app/run.h"
+#include "cli/chain_table.h"
 #include "cli/options.h"
 
 namespace fs = std::filesystem;
@@ -22,6 +23,10 @@ void add_measure_options(CLI::App& c, MeasureOptions& o) {
                "Two values instead: darker than this luminance (0 black to 1 white) is value 1")
       ->excludes(values);
   c.add_option("--base", o.base, "Boxes of side base^j pixels (default 2; 3 for a carpet)");
+  c.add_option("--stages", o.stages,
+               "Also read the values as one Markov curd of values - 1 states, K stages of this "
+               "base: its states and boxes per stage beside the fitted chain's, and whether the "
+               "cells read better as overlaid curds");
   c.add_option("--out", o.out_dir, "Output directory (default: curdle-out/<image name>-measure)")
       ->check(kNotEmpty);
   c.add_option("--max-memory", o.max_memory, "Refuse pictures above this much memory, e.g. 2G")
@@ -34,13 +39,15 @@ int run_measure(const MeasureOptions& o) {
   request.values = o.values;
   request.threshold = o.threshold;
   request.base = o.base;
+  request.stages = o.stages;
   if (!o.max_memory.empty()) request.max_memory = app::parse_bytes(o.max_memory, "max_memory");
-  const MeasuredPicture picture = app::run_measure(request);
+  std::optional<app::ChainReading> chain;
+  const MeasuredPicture picture = app::run_measure(request, &chain);
   const fs::path dir =
       o.out_dir.empty() ? fs::path("curdle-out") / (fs::path(o.image).stem().string() + "-measure")
                         : fs::path(o.out_dir);
   app::StagingDirectory sink(dir, app::is_measure_output_name);
-  app::write_measure_outputs(picture, sink);
+  app::write_measure_outputs(picture, sink, chain ? &*chain : nullptr);
   sink.commit();
 
   const Measurement& m = picture.measurement;
@@ -60,6 +67,7 @@ int run_measure(const MeasureOptions& o) {
     else
       std::printf(" %10s %6s %7s\n", v.most_common ? "(ground)" : "-", "-", "-");
   }
+  if (chain) print_chain(*chain), print_levels(*chain), print_readings(*chain);
   std::printf("outputs in %s: measure.json, measure.png\n",
               fs::absolute(dir).lexically_normal().c_str());
   return 0;

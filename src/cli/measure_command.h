@@ -13,6 +13,7 @@ struct MeasureOptions {
   int values = 2;
   std::optional<double> threshold;
   int base = 2;
+  int stages = 0;
   std::string out_dir;
   std::string max_memory;
 };
