@@ -7,6 +7,8 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 
+#include "picture_support.h"
+
 namespace curdle::server {
 namespace {
 
@@ -51,6 +53,31 @@ TEST(Api, EndpointsAnswerJsonAndNameBadParameters) {
   const auto error = nlohmann::json::parse(api_error(413, "too large").body);
   EXPECT_EQ(error["status"], 413);
   EXPECT_EQ(error["error"], "too large");
+}
+
+// /api/measure with states: the picture's tones fitted as one Markov curd, the chain and its
+// recipe in the answer; a count of states the picture cannot hold is a 400 naming states.
+TEST(Api, MeasureFitsAChainWhenAskedForStates) {
+  const ApiContext c = context();
+  // Three tones in blocks of 4 x 4 pixels: ground, and dark patches holding mid ones.
+  const std::string png = test::grey_png(64, 64, [](int x, int y) -> uint8_t {
+    const int bx = x / 4, by = y / 4;
+    if ((bx * 7 + by * 5) % 11 < 5) return 255;
+    return (bx + by) % 3 ? 60 : 140;
+  });
+  const ApiResponse r =
+      api_measure(c, {{"base", "2"}, {"stages", "4"}, {"states", "2"}, {"name", "t.png"}}, png);
+  ASSERT_EQ(r.status, 200) << r.body;
+  const auto j = nlohmann::json::parse(r.body);
+  EXPECT_TRUE(j["fit"]["recipe_is_chain"].get<bool>());
+  EXPECT_EQ(j["fit"]["chain"]["states"].size(), 2u);
+  EXPECT_EQ(j["fit"]["chain"]["transitions"][0].size(), 3u);
+  EXPECT_NE(j["fit"]["recipe_toml"].get<std::string>().find("transitions = ["), std::string::npos);
+  EXPECT_EQ(j["measure"]["values"].size(), 3u);
+  const ApiResponse bad =
+      api_measure(c, {{"base", "2"}, {"stages", "4"}, {"states", "5"}, {"name", "t.png"}}, png);
+  EXPECT_EQ(bad.status, 400) << bad.body;
+  EXPECT_NE(bad.body.find("--states 5 needs 6"), std::string::npos) << bad.body;
 }
 
 // /api/field: "CRD1", the head's length, the head (generate's answer without the values,

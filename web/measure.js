@@ -9,7 +9,16 @@ const measured = { result: null, url: null };
 function plotSeries() {
   const series = [];
   const fit = measured.result && measured.result.fit;
-  if (fit) {
+  if (fit && fit.recipe_is_chain) {
+    // Each state's boxes at each stage beside the fitted chain's expectation.
+    const b = fit.lattice.base, K = fit.lattice.stages, chain = fit.chain;
+    const colours = ["#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"];
+    chain.states.forEach((name, i) => series.push({
+      label: `picture · ${name}`, colour: chain.colours[i] || colours[i % colours.length], filled: true,
+      points: chain.levels.map((l) => [Math.pow(b, K - l.level), l.boxes[i + 1]]),
+      line: chain.levels.map((l) => [Math.pow(b, K - l.level), l.expected_boxes[i + 1]]),
+    }));
+  } else if (fit) {
     const b = fit.lattice.base, K = fit.lattice.stages;
     fit.curds.forEach((c) => series.push({
       label: `picture · ${c.name}`, colour: "#d62728", filled: true,
@@ -109,6 +118,20 @@ function renderMeasure() {
       `<td>${fmt(v.share, 3)}</td><td>${fmt(v.lacunarity, 3)}</td><td>${d ? fmt(d.fit, 3) : "–"}</td><td>${d ? fmt(d.r2, 3) : "–"}</td></tr>`;
   }
   $("measure-values").innerHTML = html;
+  const chain = fit.chain;
+  $("measure-readings").textContent = chain && chain.readings.length > 1
+    ? "Which reading the picture supports (BIC, lower is better): " +
+      chain.readings.map((g) => `${g.what}: ${fmt(g.bic, 1)}${g.name === chain.supported ? " (supported)" : ""}`).join("; ") +
+      `; by ${fmt(chain.margin, 1)}.`
+    : "";
+  $("measure-recipe").hidden = !fit.recipe_is_chain;
+  $("measure-recipe").textContent = fit.recipe_is_chain ? fit.recipe_toml : "";
+  // The page's controls edit plain curds: a chain's recipe is downloaded and served, not loaded.
+  $("measure-load").hidden = fit.recipe_is_chain;
+  if (fit.recipe_is_chain) {
+    renderChainFit(m, fit);
+    return;
+  }
   $("measure-caption").textContent =
     `${m.source}: ${m.size[0]} × ${m.size[1]} pixels, boxes of side ${m.base}^j; fitted as base ${fit.lattice.base}, ` +
     `${fit.lattice.stages} stages, ${fit.curds.length} curd${fit.curds.length > 1 ? "s" : ""} (the picture's boxes: dots, ` +
@@ -119,6 +142,30 @@ function renderMeasure() {
       fits += `<tr><td>${escapeHtml(c.name)}</td><td>${s.stage}</td><td>${s.measured}</td><td>${fmt(s.expected, 1)}</td>` +
         `<td>${fmt(s.probability, 4)}</td><td>${fmt(s.low, 3)} to ${fmt(s.high, 3)}</td></tr>`;
   $("measure-fit").innerHTML = fits;
+  offerRecipe(fit);
+}
+
+// A Markov curd fitted to the picture's tones: each entry with its 95 % interval.
+function renderChainFit(m, fit) {
+  const chain = fit.chain, names = ["dead"].concat(chain.states);
+  $("measure-caption").textContent =
+    `${m.source}: ${m.size[0]} × ${m.size[1]} pixels, read as one Markov curd of ${chain.states.length} states ` +
+    `(${chain.stage_wise ? "a matrix per stage" : "one matrix"}), base ${fit.lattice.base}, ${fit.lattice.stages} stages ` +
+    "(each state's boxes: dots, the fitted chain's expectation: dashed)";
+  const cell = (e) => e.fixed ? `${fmt(e.value, 4)}` : `${fmt(e.value, 4)} <small>(${fmt(e.low, 3)}–${fmt(e.high, 3)})</small>`;
+  let rows = "<tr><th>from \\ to</th>" + names.map((n) => `<th>${escapeHtml(n)}</th>`).join("") + "</tr>";
+  rows += "<tr><td>start</td>" + chain.start.map((e) => `<td>${cell(e)}</td>`).join("") + "</tr>";
+  chain.transitions.forEach((matrix, k) => {
+    if (chain.transitions.length > 1) rows += `<tr><th colspan="${names.length + 1}">stage ${k + 1}</th></tr>`;
+    matrix.forEach((row, i) => {
+      rows += `<tr><td>${escapeHtml(names[i])}</td>` + row.map((e) => `<td>${cell(e)}</td>`).join("") + "</tr>";
+    });
+  });
+  $("measure-fit").innerHTML = rows;
+  offerRecipe(fit);
+}
+
+function offerRecipe(fit) {
   if (measured.url) URL.revokeObjectURL(measured.url);
   measured.url = URL.createObjectURL(new Blob([fit.recipe_toml], { type: "application/toml" }));
   const link = $("measure-download");
@@ -134,7 +181,8 @@ async function measurePicture(file) {
     showError(`${file.name} is ${(file.size / 1048576).toFixed(1)} MiB; the server takes pictures up to ${(limit / 1048576).toFixed(0)} MiB`);
     return;
   }
-  const p = new URLSearchParams({ name: file.name, base: state.base, stages: state.stages, curds: state.curds.length });
+  const states = Math.max(0, Math.min(15, Number($("measure-states").value) || 0));
+  const p = new URLSearchParams({ name: file.name, base: state.base, stages: state.stages, curds: state.curds.length, states });
   $("measure-status").textContent = `measuring ${file.name}…`;
   try {
     measured.result = await getJson("/api/measure?" + p.toString(), undefined,

@@ -292,6 +292,8 @@ ordered_json picture_study_json(const PictureStudy& study) {
               {"field", {f.size[0], f.size[1]}},
               {"curds", curds},
               {"warnings", f.warnings},
+              {"recipe_is_chain", f.recipe_is_chain},
+              {"chain", f.chain ? chain_reading_json(*f.chain, f.lattice.stages) : ordered_json()},
               {"recipe_toml", f.toml}};
   return j;
 }

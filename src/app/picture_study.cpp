@@ -79,11 +79,12 @@ PictureStudy study_picture(const PictureStudyRequest& r) {
   fit.base = r.base;
   fit.stages = r.stages;
   fit.curds = r.curds;
+  fit.states = r.states;
   // Options first: a wrong one is named before the picture is read (and before 2^curds).
   check_fit_options(fit);
   MeasureRequest measure;
   measure.image = name;
-  measure.values = 1 << r.curds;
+  measure.values = r.states > 0 ? r.states + 1 : 1 << r.curds;
   measure.base = r.base;
   check_measure_options(measure);
   // Saved under the ending of what its bytes are: nothing reads it by the name it was sent as.

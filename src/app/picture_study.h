@@ -17,6 +17,7 @@ struct PictureStudyRequest {
   int base = 2;       // lattice base, and the boxes' base
   int stages = 1;     // stages fitted
   int curds = 1;      // curds fitted; the picture is quantised to 2^curds values
+  int states = 0;     // or one Markov curd of this many states: S + 1 tones (fit_run.h)
   uint64_t max_pixels = uint64_t{1} << 22;
   uint64_t max_memory = 0;  // bytes; 0: default_memory_limit()
 };

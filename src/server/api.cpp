@@ -315,7 +315,7 @@ ApiResponse api_search(const ApiContext& c, const Params& params) {
 
 ApiResponse api_measure(const ApiContext& c, const Params& params, const std::string& body) {
   return guarded([&] {
-    const RunRequest r = read_run(params, {"name", "base", "stages", "curds"});
+    const RunRequest r = read_run(params, {"name", "base", "stages", "curds", "states"});
     if (!r.sets.empty() || !r.seed.empty() || !r.window.empty())
       throw InputError(parameter("set"),
                        "a measure takes name, base, stages and curds only; the recipe is not run");
@@ -334,6 +334,7 @@ ApiResponse api_measure(const ApiContext& c, const Params& params, const std::st
     request.base = integer("base", lattice.base);
     request.stages = integer("stages", lattice.stages);
     request.curds = integer("curds", 1);
+    request.states = integer("states", 0);
     // A fitted recipe this server could not generate is no use to the page.
     request.max_pixels = c.limits.max_cells;
     request.max_memory = memory_limit(c);

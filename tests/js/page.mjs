@@ -431,6 +431,27 @@ try {
   await page.setInputFiles('#measure-file', notPicture);
   await page.waitForFunction(() => document.querySelector('#error').textContent.includes('cannot read the picture not-a-picture.png'));
   check(true, 'a file that is no picture shows the server\'s message');
+  // The three-tone paving's preview read as one Markov curd of two states: the chain with its
+  // intervals, the readings compared, and the recipe shown is the one `curdle fit --states 2` writes.
+  const paving = path.join(work, 'paving');
+  execFileSync(curdle, ['generate', path.join(source, 'patterns/paving-three-tone-markov.toml'),
+                        '--out', paving, '--outputs', 'preview.png']);
+  await page.fill('#measure-states', '2');
+  await page.setInputFiles('#measure-file', path.join(paving, 'preview.png'));
+  await page.waitForFunction(() => measured.result && measured.result.fit.recipe_is_chain);
+  const chainBody = await page.evaluate(() => measured.result);
+  const [chainBase, chainStages] = [await page.inputValue('#base'), await page.inputValue('#stages')];
+  const chainFitted = path.join(work, 'chain.toml');
+  execFileSync(curdle, ['fit', path.join(paving, 'preview.png'), '--base', chainBase, '--stages', chainStages,
+                        '--states', '2', '--out', chainFitted]);
+  check(chainBody.fit.recipe_toml === await readFile(chainFitted, 'utf8'),
+        'the page\'s fitted chain is the one curdle fit --states 2 writes');
+  check(await page.locator('#measure-recipe').isVisible(), 'the fitted recipe is shown');
+  check(await page.locator('#measure-load').isHidden(), 'a chain is downloaded, not loaded into the plain curds');
+  check((await page.textContent('#measure-readings')).includes('(supported)'), 'the supported reading is named');
+  check(await page.locator('#measure-fit tr').count() >= 5, 'the start and each row of the chain are listed');
+  await page.screenshot({ path: path.join(shots, '5-measure-chain.png'), fullPage: true });
+  await page.fill('#measure-states', '0');
 
   // A floor that is not a rectangle: the L-shaped courtyard's outline and zones are drawn over
   // the curd, and zones drawn or typed in metres go to the layout and to the search.
