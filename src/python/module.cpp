@@ -274,13 +274,16 @@ std::string measure_json(const std::string& image, int values, std::optional<dou
 }
 
 py::dict fit_source(const std::string& source, int base, int stages, int curds, int cell_pixels,
-                    uint64_t max_memory) {
+                    uint64_t max_memory, int states, bool stage_wise, bool wheys) {
   const app::FitRequest request{.source = source,
                                 .base = base,
                                 .stages = stages,
                                 .curds = curds,
                                 .cell_pixels = cell_pixels,
-                                .max_memory = max_memory};
+                                .max_memory = max_memory,
+                                .states = states,
+                                .stage_wise = stage_wise,
+                                .wheys = wheys};
   const app::FittedRecipe f =
       run_interruptible([&](InterruptWatch&) { return app::run_fit(request); });
   py::dict out;
@@ -303,6 +306,11 @@ py::dict fit_source(const std::string& source, int base, int stages, int curds, 
                            py::arg("degrees") = c.fit.degrees, py::arg("p_value") = c.fit.p_value));
   }
   out["curds"] = fitted;
+  // The chain, when the cells were read as one (or compared with one): as the page gets it.
+  out["chain"] = f.chain ? py::module_::import("json").attr("loads")(
+                               app::chain_reading_json(*f.chain, f.lattice.stages).dump())
+                         : py::object(py::none());
+  out["recipe_is_chain"] = f.recipe_is_chain;
   out["warnings"] = f.warnings;
   out["pixels_per_cell"] = f.pixels_per_cell;
   out["toml"] = f.toml;
@@ -435,7 +443,8 @@ PYBIND11_MODULE(_curdle, m) {
   m.def("measure", measure_json, py::arg("path"), py::arg("values"), py::arg("threshold"),
         py::arg("base"), py::arg("max_memory"));
   m.def("fit", fit_source, py::arg("source"), py::arg("base"), py::arg("stages"), py::arg("curds"),
-        py::arg("cell_pixels"), py::arg("max_memory"));
+        py::arg("cell_pixels"), py::arg("max_memory"), py::arg("states"), py::arg("stage_wise"),
+        py::arg("wheys"));
   m.def("outputs", [] {
     py::list list;
     for (const app::Output& o : app::output_registry())

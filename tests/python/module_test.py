@@ -348,6 +348,18 @@ class Calls(unittest.TestCase):
             self.assertEqual(fitted["lattice"], {"base": 4, "dimension": 2, "stages": 3})
             again = curdle.Recipe.from_text(fitted["toml"], "fitted.toml").generate(seed=1)
             self.assertEqual(again.values.shape, run.values.shape)
+        # A Markov curd's cells come back as its chain, as `curdle fit` reads them.
+        paving = curdle.Recipe.from_file(SOURCE / "patterns/paving-three-tone-markov.toml")
+        with tempfile.TemporaryDirectory() as tmp:
+            paving.generate(layout=False).write(["cells.csv"], out=tmp)
+            chain = curdle.fit(Path(tmp) / "cells.csv", base=4, stages=3, stage_wise=True)
+            self.assertTrue(chain["recipe_is_chain"])
+            self.assertEqual(chain["chain"]["states"], ["dark", "mid"])
+            self.assertEqual(chain["chain"]["supported"], "chain")
+            self.assertEqual(len(chain["chain"]["transitions"]), 3)
+            entry = chain["chain"]["transitions"][2][1][1]
+            self.assertLessEqual(entry["low"], entry["value"])
+            self.assertLessEqual(entry["value"], entry["high"])
 
 
 class MovedBuildTree(unittest.TestCase):

@@ -534,7 +534,8 @@ def measure(path: str | os.PathLike, values: int = 2, threshold: float | None = 
 
 
 def fit(source: str | os.PathLike, base: int = 2, stages: int = 0, curds: int = 1,
-        cell_pixels: int = 0, max_memory: int = 0) -> dict:
+        cell_pixels: int = 0, max_memory: int = 0, states: int = 0, stage_wise: bool = False,
+        wheys: bool = False) -> dict:
     """A recipe fitted to a picture or a cells.csv, as `curdle fit` fits it.
 
     Parameters:
@@ -544,16 +545,25 @@ def fit(source: str | os.PathLike, base: int = 2, stages: int = 0, curds: int = 
         curds: how many curds (a picture's values are 2^curds).
         cell_pixels: a picture's cells in pixels a side (0: found).
         max_memory: bytes (0: half the machine's).
+        states: read the source as one Markov curd of this many living states instead (a
+            picture's states + 1 tones, the lightest the ground); a cells.csv of a Markov curd
+            is read as its chain whatever this says.
+        stage_wise: the chain's matrix per stage, not one for every stage.
+        wheys: the chain's dead row fitted too (dead cells that come back).
     Returns:
         the lattice, each curd's per-stage probability with its 95 % interval, measured and
-        expected counts and the test of its branching, the warnings, and the recipe's TOML.
+        expected counts and the test of its branching, the warnings, and the recipe's TOML; with
+        "chain" the fitted chain (each entry's value and 95 % interval, its stages beside the
+        picture's, and the readings compared by BIC with the supported one), None without one,
+        and "recipe_is_chain" whether the recipe is the chain's.
     Raises:
         InputError: the source cannot be read or does not fit (saying why).
     Example:
         >>> curdle.Recipe.from_text(curdle.fit("preview.png", stages=6)["toml"]).generate()
+        >>> curdle.fit("paving.png", base=4, stages=3, states=2)["chain"]["supported"]
     """
     return _curdle.fit(os.fspath(source), int(base), int(stages), int(curds), int(cell_pixels),
-                       int(max_memory))
+                       int(max_memory), int(states), bool(stage_wise), bool(wheys))
 
 
 def outputs() -> list[dict[str, typing.Any]]:
