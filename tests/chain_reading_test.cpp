@@ -203,6 +203,17 @@ TEST(ChainReading, BadRequestsAreRefusedByName) {
               fit_file("values.csv", cells_csv_of(kTwoCurds, 1), 2);
             }).find("has values up to 3"),
             std::string::npos);
+  ChainRequest big;
+  big.lattice = Lattice{2, 2, 6, Mode::canonical};
+  big.view = Box{{0, 0, 0}, {64, 64, 1}};
+  big.tones.assign(64 * 64, 1);
+  big.max_memory = 1000;
+  try {
+    read_as_chain(big);
+    ADD_FAILURE() << "a chain past its memory was fitted";
+  } catch (const ResourceLimitError& e) {
+    EXPECT_NE(std::string(e.what()).find("over the limit of"), std::string::npos) << e.what();
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "app/run.h"
 #include "curdle/error.h"
 #include "curdle/markov.h"
 #include "curdle/markov_theory.h"
@@ -204,6 +205,19 @@ ChainReading read_as_chain(ChainRequest r) {
   const size_t living = std::max<size_t>(r.states.size(), static_cast<size_t>(most));
   if (living < 1)
     throw InputError(parameter("states"), "the cells hold no living state: nothing to fit");
+  // The tree's tables: each coarser cell's state chances up and down (3 x 8 bytes a state) and
+  // its parent (4 bytes), each finest cell's state and parent (5 bytes).
+  const double B = static_cast<double>(r.lattice.children());
+  const double coarser = static_cast<double>(r.tones.size()) / std::max(1.0, B - 1) + 1;
+  const double bytes = coarser * (24.0 * static_cast<double>(living + 1) + 4) +
+                       5.0 * static_cast<double>(r.tones.size());
+  const uint64_t limit = r.max_memory ? r.max_memory : default_memory_limit();
+  if (bytes > static_cast<double>(limit))
+    throw ResourceLimitError(fmt::format(
+        "fitting a chain of {} states to {} cells takes about {:.0f} MiB, over the limit of "
+        "{:.0f} MiB: fit fewer cells (--cell-pixels, a part of the picture) or allow more memory "
+        "(--max-memory)",
+        living, r.tones.size(), bytes / 1048576, static_cast<double>(limit) / 1048576));
   ChainReading out;
   out.curd = r.curd;
   out.states = r.states;

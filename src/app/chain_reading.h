@@ -59,14 +59,15 @@ struct ChainRequest {
   std::string curd = "tone";
   std::vector<std::string> states, colours;  // per living tone; empty: "tone-1", ... and none
   bool stage_wise = false, wheys = false;
-  bool intervals = true;  // false when the chain is only compared with an overlay
+  bool intervals = true;    // false when the chain is only compared with an overlay
+  uint64_t max_memory = 0;  // bytes the fit may take; 0: default_memory_limit()
 };
 
 // Most finest cells a chain is fitted to (its tree's memory grows with them).
 inline constexpr uint64_t kMostChainCells = uint64_t{1} << 24;
 
-// InputError when the tones hold fewer than two or a tone over 15, ResourceLimitError over
-// kMostChainCells.
+// InputError when the cells hold no living state or a tone over 15; ResourceLimitError over
+// kMostChainCells or when the tree's tables would pass max_memory.
 ChainReading read_as_chain(ChainRequest request);
 
 // The fitted curd as the recipe's [[curds]] table: a Markov curd, or for one state a plain curd's

@@ -178,7 +178,9 @@ std::vector<uint8_t> upright(const std::vector<uint16_t>& values, int64_t width,
 
 // The overlaid curds' values read as one chain, to compare: the values that occur, numbered
 // 0, 1, ... in order (0 the ground), as its states.
-ChainReading compared_chain(const Lattice& l, const Box& view, const std::vector<uint8_t>& values) {
+std::optional<ChainReading> compared_chain(const Lattice& l, const Box& view,
+                                           const std::vector<uint8_t>& values, uint64_t max_memory,
+                                           std::vector<std::string>& warnings) {
   std::vector<uint8_t> tone_of(256, 0);
   std::vector<bool> seen(256, false);
   for (const uint8_t v : values) seen[v] = true;
@@ -191,7 +193,14 @@ ChainReading compared_chain(const Lattice& l, const Box& view, const std::vector
   q.tones.reserve(values.size());
   for (const uint8_t v : values) q.tones.push_back(tone_of[v]);
   q.intervals = false;
-  return read_as_chain(std::move(q));
+  q.max_memory = max_memory;
+  try {
+    return read_as_chain(std::move(q));
+  } catch (const ResourceLimitError& e) {
+    // The overlay is what was asked for: it stands, and the comparison is said to be missing.
+    warnings.push_back(std::string("the cells were not also read as one chain: ") + e.what());
+    return std::nullopt;
+  }
 }
 
 [[noreturn]] void refuse_chain_options_without_states() {
@@ -221,6 +230,7 @@ FittedRecipe fit_picture_chain(const LuminanceImage& image, const FitRequest& r,
   q.colours.assign(picture.curd_colours.begin() + 1, picture.curd_colours.end());
   q.stage_wise = r.stage_wise;
   q.wheys = r.wheys;
+  q.max_memory = r.max_memory;
   f.chain = read_as_chain(std::move(q));
   f.recipe_is_chain = true;
   return finish(f, r.source);
@@ -253,6 +263,7 @@ FittedRecipe fit_cells_file(const FitRequest& r) {
     q.view = table.box;
     q.stage_wise = r.stage_wise;
     q.wheys = r.wheys;
+    q.max_memory = r.max_memory;
     if (chains > 0) {
       if (table.curds.size() != 1)
         throw InputError(parameter("source"),
@@ -293,7 +304,8 @@ FittedRecipe fit_cells_file(const FitRequest& r) {
     curd.fit = fit_curd(f.lattice, table.box, table.cells[c]);
     f.curds.push_back(std::move(curd));
   }
-  if (toned && table.curds.size() >= 2) f.chain = compared_chain(f.lattice, table.box, values);
+  if (toned && table.curds.size() >= 2)
+    f.chain = compared_chain(f.lattice, table.box, values, r.max_memory, f.warnings);
   return finish(f, r.source);
 }
 
@@ -371,7 +383,7 @@ FittedRecipe fit_picture(const LuminanceImage& image, const FitRequest& r) {
     curd.fit = fit_curd(f.lattice, field, cells);
     f.curds.push_back(std::move(curd));
   }
-  if (r.curds >= 2) f.chain = compared_chain(f.lattice, field, values);
+  if (r.curds >= 2) f.chain = compared_chain(f.lattice, field, values, r.max_memory, f.warnings);
   return finish(f, r.source);
 }
 
