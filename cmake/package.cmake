@@ -5,10 +5,10 @@ include(CMakePackageConfigHelpers)
 # The application's headers a program calls (a run from recipe text and overrides, its report,
 # layout and outputs' bytes; search, measure and fit) and every header they include.
 set(CURDLE_PUBLIC_HEADERS
-  src/app/fit_run.h src/app/generated_run.h src/app/measure_run.h src/app/observer.h
+  src/app/chain_reading.h src/app/fit_run.h src/app/generated_run.h src/app/measure_run.h src/app/observer.h
   src/app/output_sink.h src/app/outputs.h src/app/reproduce.h src/app/run.h src/app/search_run.h
   src/app/stopping.h src/app/version.h
-  src/curdle/bitset.h src/curdle/box.h src/curdle/check.h src/curdle/boxcount.h src/curdle/cell_index.h
+  src/curdle/bitset.h src/curdle/box.h src/curdle/chain_fit.h src/curdle/state_tree.h src/curdle/check.h src/curdle/boxcount.h src/curdle/cell_index.h
   src/curdle/curd.h src/curdle/curdling.h src/curdle/density.h src/curdle/error.h src/curdle/fit.h
   src/curdle/lattice.h src/curdle/markov.h src/curdle/markov_report.h src/curdle/measure.h
   src/curdle/overlay.h src/curdle/probability.h
