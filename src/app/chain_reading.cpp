@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "app/run.h"
+#include "app/toml_text.h"
 #include "curdle/error.h"
 #include "curdle/markov.h"
 #include "curdle/markov_theory.h"
@@ -43,23 +44,9 @@ std::vector<std::string> row_texts(const std::vector<FittedEntry>& row) {
   return out;
 }
 
-std::string quoted(const std::string& s) {
-  std::string q = "\"";
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\')
-      q += '\\', q += ch;
-    else if (c < 0x20 || c == 0x7F)
-      q += fmt::format("\\u{:04X}", c);
-    else
-      q += ch;
-  }
-  return q + '"';
-}
-
 std::string quoted_list(const std::vector<std::string>& items) {
   std::string out = "[";
-  for (size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + quoted(items[i]);
+  for (size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + toml_quoted(items[i]);
   return out + "]";
 }
 
@@ -259,7 +246,7 @@ ChainReading read_as_chain(ChainRequest r) {
 
 std::string chain_recipe_toml(const ChainReading& c, int stages) {
   const ChainFit& f = c.fit;
-  std::string t = "\n[[curds]]\nname = " + quoted(c.curd) + "\n";
+  std::string t = "\n[[curds]]\nname = " + toml_quoted(c.curd) + "\n";
   if (c.states.size() == 1) {
     // The plain curd: P_k[1][1] at each stage.
     std::string p, ranges;
@@ -270,7 +257,7 @@ std::string chain_recipe_toml(const ChainReading& c, int stages) {
     }
     t += "# 95 % intervals by stage: " + ranges + "\n";
     t += "probabilities = [" + p + "]\n";
-    if (!c.colours[0].empty()) t += "colour = " + quoted(c.colours[0]) + "\n";
+    if (!c.colours[0].empty()) t += "colour = " + toml_quoted(c.colours[0]) + "\n";
     return t;
   }
   t += "states = " + quoted_list(c.states) + "\n";

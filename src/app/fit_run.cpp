@@ -10,6 +10,7 @@
 #include "app/measure_run.h"
 #include "app/picture_cells.h"
 #include "app/run.h"
+#include "app/toml_text.h"
 #include "curdle/error.h"
 #include "curdle/measure.h"
 #include "export/report/measure_files.h"
@@ -23,22 +24,6 @@ constexpr uint64_t kMaxCells = uint64_t{1} << 26;  // a cells.csv's, as many as 
 constexpr uint64_t kMaxCsvBytes = uint64_t{2} << 30;
 // Below this chance of a statistic as large under the fitted curd, no curd explains it.
 constexpr double kExplained = 1e-3;
-
-// A TOML basic string: quotes, backslashes and control characters escaped, so that no name
-// (a curd's, from a cells.csv) can end the string and write keys of its own.
-std::string toml_quoted(const std::string& s) {
-  std::string q = "\"";
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\')
-      q += '\\', q += ch;
-    else if (c < 0x20 || c == 0x7F)
-      q += fmt::format("\\u{:04X}", c);
-    else
-      q += ch;
-  }
-  return q + '"';
-}
 
 // A file's name as a comment's text: one line, whatever the name holds.
 std::string comment_text(const std::string& s) {
