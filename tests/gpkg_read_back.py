@@ -9,6 +9,7 @@ Usage: gpkg_read_back.py CURDLE SOURCE_DIR [MODELS]   (Debian's python3 with GDA
 MODELS: the directories js.ifc_write wrote (one per pattern it writes, with layout.gpkg and
 schedule.csv); every other pattern is generated here."""
 import csv
+import sqlite3
 import math
 import subprocess
 import sys
@@ -56,6 +57,12 @@ def schedule(out):
 
 def check_pattern(recipe, work):
     rows = schedule(work) if work.is_dir() else generate(recipe, work)
+    # No georef: every layer in the undefined Cartesian SRS (srs_id -1), never the undefined
+    # geographic one (0), whose metres GDAL and QGIS read as degrees.
+    with sqlite3.connect(work / "layout.gpkg") as db:
+        ids = {srs for (srs,) in db.execute("SELECT srs_id FROM gpkg_contents")}
+    if ids != {-1}:
+        fail(f"{recipe.name}: layers in srs_id {sorted(ids)}, not the undefined Cartesian -1")
     seen, tables = set(), set()
     for layer, feature in features(work / "layout.gpkg"):
         if layer.GetName() not in tables:  # fields by index: a lookup by name per call is slow

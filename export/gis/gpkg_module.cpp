@@ -17,6 +17,8 @@ using curdle::GisField;
 
 namespace {
 
+constexpr const char* kUndefinedCartesian = "LOCAL_CS[\"Undefined Cartesian SRS\"]";
+
 struct SrsDeleter {
   void operator()(OGRSpatialReferenceH s) const { OSRDestroySpatialReference(s); }
 };
@@ -46,6 +48,15 @@ Srs projected_crs(int epsg, std::string* error) {
     return nullptr;
   }
   OSRSetAxisMappingStrategy(srs.get(), OAMS_TRADITIONAL_GIS_ORDER);
+  return srs;
+}
+
+// No georef: the site's own grid, which GeoPackage calls the undefined Cartesian SRS (srs_id -1;
+// GDAL maps this name to it). Left without one, a layer is put in the undefined *geographic*
+// SRS (srs_id 0), and GDAL and QGIS read its metres as degrees.
+Srs undefined_cartesian_crs() {
+  Srs srs(OSRNewSpatialReference(nullptr));
+  OSRSetFromUserInput(srs.get(), kUndefinedCartesian);
   return srs;
 }
 
@@ -120,6 +131,8 @@ int write_dataset(const char* path, const GisDataset& data, std::string* error) 
   if (data.epsg) {
     srs = projected_crs(data.epsg, error);
     if (!srs) return 1;
+  } else {
+    srs = undefined_cartesian_crs();
   }
   GDALDriverH driver = GDALGetDriverByName("GPKG");
   if (!driver) {
