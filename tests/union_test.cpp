@@ -25,6 +25,26 @@ TEST(Union, PolygonisedCirclesStayWithinTheTolerance) {
   }
 }
 
+TEST(Union, APolygonisedCirclesBoxIsTheCircles) {
+  // The quarter points are vertices: the ring's extent is the circle's, at any size (the
+  // schedule's WKT of a 30 mm opening once lay 0.05 mm inside its row's box).
+  for (const double d : {3.0, 30.0, 31.7, 450.0, 8000.0})
+    for (const double tolerance : {1.0, 0.05, 0.01}) {
+      const Circle c{12.5, -7.25, d};
+      const Ring ring = polygonise(c, tolerance);
+      EXPECT_EQ(ring.size() % 4, 0u) << d;
+      double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+      for (const auto& v : ring) {
+        lo_x = std::min(lo_x, v[0]), hi_x = std::max(hi_x, v[0]);
+        lo_y = std::min(lo_y, v[1]), hi_y = std::max(hi_y, v[1]);
+      }
+      EXPECT_NEAR(lo_x, c.cx - d / 2, 1e-9 * d) << d << " " << tolerance;
+      EXPECT_NEAR(hi_x, c.cx + d / 2, 1e-9 * d) << d << " " << tolerance;
+      EXPECT_NEAR(lo_y, c.cy - d / 2, 1e-9 * d) << d << " " << tolerance;
+      EXPECT_NEAR(hi_y, c.cy + d / 2, 1e-9 * d) << d << " " << tolerance;
+    }
+}
+
 TEST(Union, UnionsAndCutsKeepTheirAreas) {
   // Two overlapping circles: the union is one outline, the sum less the lens.
   const std::vector<Outline> two = union_of_circles({{0, 0, 20}, {10, 0, 20}}, 0.001);

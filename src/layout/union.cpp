@@ -104,7 +104,10 @@ Ring polygonise(const Circle& c, double tolerance) {
   const double r = c.d / 2;
   const double step =
       tolerance >= r ? 3.14159265358979323846 / 3 : 2 * std::acos(1 - tolerance / r);
-  const int n = std::max(8, static_cast<int>(std::ceil(2 * 3.14159265358979323846 / step)));
+  // A multiple of 4 vertices from angle 0: the quarter points are vertices, so that the ring's
+  // box is the circle's (a GIS's extent, the schedule's width and height, agree).
+  const int n =
+      4 * std::max(2, static_cast<int>(std::ceil(2 * 3.14159265358979323846 / step / 4)));
   Ring ring;
   for (int i = 0; i < n; ++i) {
     const double a = 2 * 3.14159265358979323846 * i / n;
