@@ -72,9 +72,17 @@ TEST(Ifc, EveryScheduleRowIsAnElementNamedAndTaggedByItsId) {
   EXPECT_EQ(count(w.ifc, "'External works',$,$,"), 1u);
   EXPECT_NE(w.ifc.find(".ELEMENT.,.EXTERNAL.,0.);"), std::string::npos);
   EXPECT_NE(w.ifc.find(".FLOORING.);"), std::string::npos);
-  // Types per material and stock size, with Pset_Tiling.
+  // Types per material and stock size, with the tile's size in curdle's own set: IFC4 has none,
+  // and a Pset_ name is buildingSMART's to give.
   EXPECT_EQ(count(w.ifc, "=IFCCOVERINGTYPE("), 2u);
   EXPECT_NE(w.ifc.find("'TileLength',$,IFCPOSITIVELENGTHMEASURE(600.)"), std::string::npos);
+  EXPECT_EQ(count(w.ifc, "'Curdle_Tiling'"), 2u);
+  const std::set<std::string> ifc4_sets{"Pset_CoveringCommon", "Pset_PlateCommon",
+                                        "Pset_WallCommon", "Pset_OpeningElementCommon",
+                                        "Pset_BuildingElementProxyCommon"};
+  for (size_t at = w.ifc.find("'Pset_"); at != std::string::npos; at = w.ifc.find("'Pset_", at + 1))
+    EXPECT_TRUE(ifc4_sets.contains(w.ifc.substr(at + 1, w.ifc.find('\'', at + 1) - at - 1)))
+        << w.ifc.substr(at, 40);
   EXPECT_NE(w.ifc.find("IFCMATERIAL('Basalt slab 600 x 300',$,$)"), std::string::npos);
 }
 

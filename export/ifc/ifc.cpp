@@ -552,7 +552,7 @@ class IfcModel {
       if (covering.stock[0] > 0) {
         const std::vector<int64_t> tiling{length("TileLength", covering.stock[0]),
                                           length("TileWidth", covering.stock[1])};
-        sets.push_back(w_.add("IFCPROPERTYSET({},'Pset_Tiling',$,{})",
+        sets.push_back(w_.add("IFCPROPERTYSET({},'Curdle_Tiling',$,{})",
                               root("tiling " + material + size), step_refs(tiling)));
       }
       const std::string name = material + ", " + size;

@@ -5,7 +5,8 @@
 // schedule.csv, named and tagged by its ID:
 //   tiles, paving and façade pieces  IfcCovering FLOORING, or CLADDING on an upright surface,
 //                                    typed by an IfcCoveringType per material and stock size
-//                                    (with Pset_Tiling's TileLength and TileWidth);
+//                                    (with Curdle_Tiling's TileLength and TileWidth: IFC4 has no
+//                                    set for a tile's size);
 //   perforations                     an IfcPlate per fabrication sheet, its openings holes in
 //                                    its profile, each an IfcOpeningElement voiding it
 //                                    (IfcRelVoidsElement) drawn by its outline;
