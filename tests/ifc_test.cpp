@@ -113,6 +113,16 @@ TEST(Ifc, KindsBecomeTheClassesABimModellerWouldChoose) {
   EXPECT_EQ(count(park.ifc, "=IFCGEOGRAPHICELEMENT("), trees);
   EXPECT_EQ(count(park.ifc, "=IFCFURNITURE("), benches);
   EXPECT_EQ(count(park.ifc, "=IFCCOVERING("), ids.size() - trees - benches);
+  // A tree's and a bench's quantities say how tall they stand (a trunk of 2.2 m and a canopy as
+  // tall as wide; 450 mm), not the paving's 30 mm thickness.
+  std::set<double> heights;
+  const std::string height = "IFCQUANTITYLENGTH('Height',$,$,";
+  for (size_t at = park.ifc.find(height); at != std::string::npos;
+       at = park.ifc.find(height, at + 1))
+    heights.insert(std::stod(park.ifc.substr(at + height.size(), 20)));
+  ASSERT_FALSE(heights.empty());
+  EXPECT_TRUE(heights.contains(450.0));
+  for (const double h : heights) EXPECT_TRUE(h == 450.0 || h > 2200.0) << h;
   const Written blocks = written("stacked-blocks.toml");
   EXPECT_EQ(count(blocks.ifc, "=IFCBUILDINGELEMENTPROXY("), schedule_ids(blocks.schedule).size());
 }

@@ -27,6 +27,10 @@
 namespace curdle {
 namespace {
 
+// A tree's body: a trunk of this diameter and height, then its canopy as a drum as tall as wide;
+// a standing object's (a bench) height.
+constexpr double kTrunkDiameter = 200, kTrunkHeight = 2200, kStandingHeight = 450;
+
 using step::real;
 using step::ref;
 using step::text;
@@ -277,6 +281,20 @@ class IfcModel {
     return w_.add("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[sheet]), ref(frame));
   }
 
+  // How tall the element's body stands (solids() below): a block its storey, a tree its trunk and
+  // canopy, a standing object (a bench) its 450 mm, a laid piece the surface's thickness.
+  double body_height(const Element& e) const {
+    if (e.form == ElementForm::block) return l_.level_height;
+    if (e.circle) return kTrunkHeight + e.circle->d;
+    return e.stands ? kStandingHeight : l_.thickness;
+  }
+  // m³ of a body that is no prism of its area (a tree's), else -1.
+  double body_volume(const Element& e) const {
+    if (!e.circle || e.form == ElementForm::block) return -1;
+    const double pi = 3.14159265358979323846, r = e.circle->d / 2, trunk = kTrunkDiameter / 2;
+    return (pi * trunk * trunk * kTrunkHeight + pi * r * r * e.circle->d) / 1e9;
+  }
+
   // The element's body as laid: one solid, whatever its shape (an L-shaped cut piece is one
   // profile, a piece in two parts one composite profile); a tree is a trunk and a canopy.
   // `parts`: piece_outlines(e), worked out once by the caller (a cut piece's is a union).
@@ -291,11 +309,11 @@ class IfcModel {
                        colour)};
     }
     if (e.circle) {  // a tree: a trunk of 200 mm to 2.2 m, then its canopy as a drum
-      const int64_t trunk =
-          g_.solid(g_.circle(Circle{e.circle->cx, e.circle->cy, 200}), t, 2200, Rgb{92, 64, 44});
-      return {trunk, g_.solid(g_.circle(*e.circle), t + 2200, e.circle->d, colour)};
+      const int64_t trunk = g_.solid(g_.circle(Circle{e.circle->cx, e.circle->cy, kTrunkDiameter}),
+                                     t, kTrunkHeight, Rgb{92, 64, 44});
+      return {trunk, g_.solid(g_.circle(*e.circle), t + kTrunkHeight, e.circle->d, colour)};
     }
-    const double base = e.stands ? t : 0, depth = e.stands ? 450 : t;
+    const double base = e.stands ? t : 0, depth = e.stands ? kStandingHeight : t;
     const int64_t profile = parts.empty() ? g_.rectangle(laid_bounds(e)) : g_.profile(parts);
     return {g_.solid(profile, base, depth, colour)};
   }
@@ -449,10 +467,10 @@ class IfcModel {
     }
     properties(e, index, id);
     quantities(e, id);
-    const double t = e.form == ElementForm::block ? l_.level_height : l_.thickness;
     const bool known = l_.kind->outdoors();
     sets(id, e.id, c.entity,
-         {e.id, known, known, t, b.w, b.h, gross_area(e, parts) / 1e6, e.area() / 1e6});
+         {e.id, known, known, body_height(e), b.w, b.h, gross_area(e, parts) / 1e6, e.area() / 1e6,
+          body_volume(e)});
   }
   // The piece's area without what is cut away inside it (its outer rings).
   static double gross_area(const Element& e, const std::vector<Outline>& parts) {
@@ -513,11 +531,13 @@ class IfcModel {
   // curdle's own quantities: the piece's extent, thickness and area as the schedule gives them.
   void quantities(const Element& e, int64_t id) {
     const Rect b = laid_bounds(e);
-    const double t = e.form == ElementForm::block ? l_.level_height : l_.thickness;
-    std::vector<int64_t> q{shared("IFCQUANTITYLENGTH('Length',$,$,{},$)", real(b.w)),
-                           shared("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h)),
-                           shared("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(t)),
-                           shared("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6))};
+    const bool standing = e.circle || e.stands;  // a tree, a bench: how tall, not how thick
+    std::vector<int64_t> q{
+        shared("IFCQUANTITYLENGTH('Length',$,$,{},$)", real(b.w)),
+        shared("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h)),
+        standing ? shared("IFCQUANTITYLENGTH('Height',$,$,{},$)", real(body_height(e)))
+                 : shared("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(body_height(e))),
+        shared("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6))};
     const int64_t set = w_.add("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})",
                                root("qto ", e.id), step_refs(q));
     w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("qto-rel ", e.id), ref(id), ref(set));

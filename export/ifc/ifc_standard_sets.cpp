@@ -26,8 +26,8 @@ IfcSet common(const std::string& name, const IfcMeasures& m) {
 
 std::vector<IfcSet> standard_sets(std::string_view entity, const IfcMeasures& m) {
   using K = IfcSetEntry::Kind;
-  const double volume = m.net_area * m.thickness / 1000,
-               gross_volume = m.gross_area * m.thickness / 1000;
+  const double volume = m.volume >= 0 ? m.volume : m.net_area * m.thickness / 1000,
+               gross_volume = m.volume >= 0 ? m.volume : m.gross_area * m.thickness / 1000;
   if (entity == "IFCCOVERING")
     return {
         common("Pset_CoveringCommon", m),

@@ -19,6 +19,8 @@ struct IfcMeasures {
   double width = 0, height = 0;  // mm, its extent in the surface's plane
   double gross_area = 0;         // m², not taking out what is cut away inside it
   double net_area = 0;           // m², as laid
+  double volume = -1;            // m³ of a body that is no prism of net_area x thickness (a
+                                 // tree's trunk and canopy); < 0: that prism's
 };
 
 // One property of a set: its name and its value as a typed STEP literal ("IFCBOOLEAN(.T.)").
