@@ -38,6 +38,25 @@ TEST(SearchTargets, ParseNamesAndComparisons) {
   }
 }
 
+// Every measure takes a range, LOW..HIGH, met anywhere inside it and ranked by how far inside.
+TEST(SearchTargets, EveryMeasureTakesARange) {
+  const Design d = two_curds_128();
+  for (const char* text : {"ratio:c0=0.22..0.26", "count:c1=100..200", "dimension:c0=1.5..1.7",
+                           "cluster:c0=2..9", "run:c1=3..8", "lacunarity:c0=1..2.5"}) {
+    const Target t = parse_target(text, d);
+    EXPECT_EQ(t.compare, Compare::within) << text;
+    EXPECT_LT(t.goal, t.goal_high) << text;
+  }
+  const Target r = parse_target("ratio:c0=0.22..0.26", d);
+  EXPECT_DOUBLE_EQ(shortfall(r, 0.24), 0);
+  EXPECT_NEAR(shortfall(r, 0.2), 0.02, 1e-12);
+  EXPECT_NEAR(margin(r, 0.24), 0.02, 1e-12);  // further inside ranks first
+  EXPECT_GT(margin(r, 0.24), margin(r, 0.255));
+  for (const char* bad : {"ratio:c0=0.26..0.22", "ratio:c0=0.5..1.5", "ratio:c0<=0.1..0.2",
+                          "count:c0=..5", "count:c0=5..", "ratio:c0=0.1..x"})
+    EXPECT_THROW(parse_target(bad, d), InputError) << bad;
+}
+
 // sheet_open_area: a range (or bound) every fabrication sheet must meet, measured at the sheet
 // that misses most; the layers above lay the sheets out, and without them it is refused.
 TEST(SearchTargets, SheetOpenAreaIsARangeEverySheetMustMeet) {

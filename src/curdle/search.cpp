@@ -21,7 +21,8 @@
 namespace curdle {
 
 const char* const kTargetSyntax =
-    "MEASURE:SUBJECT=GOAL (or <= or >=), MEASURE one of count, ratio, dimension, cluster, run, "
+    "MEASURE:SUBJECT=GOAL (or <= or >=, or =LOW..HIGH for a range), MEASURE one of count, "
+    "ratio, dimension, cluster, run, "
     "lacunarity, SUBJECT a value (its number or label, e.g. dark+light) or for dimension a "
     "curd; or empty[:CURD]=X,Y,W,H, a zone of cells from the segment's corner that must hold "
     "no survivor; or, on a perforated layout, sheet_open_area=LOW..HIGH (or <=, >= or = a "
@@ -85,6 +86,21 @@ double parse_number(const std::string& text, const std::string& number) {
   if (ec != std::errc() || p != number.data() + number.size() || !std::isfinite(x) || x < 0)
     fail(text, "the goal '" + number + "' is not a number from 0 up");
   return x;
+}
+
+// GOAL, or LOW..HIGH for a range (every measure takes one): numbers from 0 up.
+void parse_goal(const std::string& text, const std::string& goal, Target& t) {
+  const size_t dots = goal.find("..");
+  if (dots == std::string::npos) {
+    t.goal = t.goal_high = parse_number(text, goal);
+    return;
+  }
+  if (t.compare != Compare::equal)
+    fail(text, "a range is written MEASURE:SUBJECT=LOW..HIGH, with = alone");
+  t.compare = Compare::within;
+  t.goal = parse_number(text, goal.substr(0, dots));
+  t.goal_high = parse_number(text, goal.substr(dots + 2));
+  if (t.goal_high < t.goal) fail(text, "a range runs from its low end to its high end");
 }
 
 bool before(const SearchHit& a, const SearchHit& b) {
@@ -206,17 +222,8 @@ Target parse_target(const std::string& text, const Design& d) {
   t.measure = k->second;
   if (t.measure == Measure::sheet_open_area) {
     if (!subject.empty()) fail(text, "sheet_open_area takes no subject: every sheet is measured");
-    const size_t dots = goal.find("..");
-    if (dots != std::string::npos) {
-      if (t.compare != Compare::equal) fail(text, "a range is written sheet_open_area=LOW..HIGH");
-      t.compare = Compare::within;
-      t.goal = parse_number(text, goal.substr(0, dots));
-      t.goal_high = parse_number(text, goal.substr(dots + 2));
-    } else {
-      t.goal = t.goal_high = parse_number(text, goal);
-    }
-    if (t.goal > 1 || t.goal_high > 1 || t.goal_high < t.goal)
-      fail(text, "an open share is from 0 to 1, a range from its low to its high end");
+    parse_goal(text, goal, t);
+    if (t.goal > 1 || t.goal_high > 1) fail(text, "an open share is from 0 to 1");
     return t;
   }
   if (t.measure == Measure::empty) {
@@ -242,8 +249,8 @@ Target parse_target(const std::string& text, const Design& d) {
   }
   t.subject = t.measure == Measure::dimension ? parse_curd(text, subject, d)
                                               : parse_value(text, subject, d);
-  t.goal = parse_number(text, goal);
-  if (t.measure == Measure::ratio && t.goal > 1) fail(text, "a ratio is from 0 to 1");
+  parse_goal(text, goal, t);
+  if (t.measure == Measure::ratio && t.goal_high > 1) fail(text, "a ratio is from 0 to 1");
   return t;
 }
 

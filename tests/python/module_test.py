@@ -338,7 +338,18 @@ class Calls(unittest.TestCase):
                             "ratio=0.12", "--top", "3", "--out", tmp, "--no-previews"],
                            check=True, stdout=subprocess.DEVNULL)
             seeds = [r["seed"] for r in read_csv(Path(tmp) / "search.csv")]
-        self.assertEqual([h["seed"] for h in hits["hits"]], seeds)
+        self.assertEqual([h["seed"] for h in hits["hits"]], [int(s) for s in seeds])
+        self.assertTrue(all(isinstance(h["seed"], int) for h in hits["hits"]))
+        # Its command runs as written; a recipe from text has none, but a call that runs.
+        best = hits["hits"][0]
+        self.assertIn(str(recipe.path), best["command"])
+        ranged = curdle.search(curdle.Recipe.from_text(recipe.text, "made-here.toml"),
+                               seeds=range(1, 21), targets=["ratio:dark=0.10..0.14"], top=2)
+        self.assertIsNone(ranged["hits"][0]["command"])
+        self.assertGreater(ranged["hits"][0]["margin"], 0)  # a range ranks by how far inside
+        recipe_from_text = curdle.Recipe.from_text(recipe.text, "made-here.toml")
+        again = eval(ranged["hits"][0]["call"], {"recipe": recipe_from_text})
+        self.assertEqual(again.seed, ranged["hits"][0]["seed"])
         run = recipe.generate(seed=int(seeds[0]))
         with tempfile.TemporaryDirectory() as tmp:
             run.write(["preview.png", "cells.csv"], out=tmp)

@@ -486,13 +486,15 @@ def search(recipe: Recipe | str | os.PathLike, seeds: str | range = "1..1000",
         recipe: a Recipe, or the path of its TOML file.
         seeds: "from..to", or a range of step 1.
         segment: (w, h) in cells to search segments of that size too; None: whole views.
-        targets: such as "density:dark=0.3..0.4" (docs/page.md: Searching seeds and segments).
+        targets: such as "ratio:dark=0.3..0.4" or "cluster:dark<=12" (docs/page.md: Searching
+            seeds and segments).
         top: how many hits to return.
         stride: cells between segments tried (0: a quarter of the segment).
         overrides, threads, max_memory: as generate.
     Returns:
-        {"targets": [...], "hits": [{rank, seed, window, score, measured, command}, ...]},
-        best first.
+        {"targets": [...], "hits": [{rank, seed, window, score, margin, measured, command,
+        call}, ...]}, best first: seed an int, command the `curdle generate` line (None for a
+        recipe with no file of its own: from_text), call the same as a Python call on it.
     Raises:
         InputError: a target, range or key is wrong (naming it and what is allowed).
     Example:
@@ -506,10 +508,27 @@ def search(recipe: Recipe | str | os.PathLike, seeds: str | range = "1..1000",
         seeds = f"{seeds.start}..{seeds.stop - 1}"
     if isinstance(targets, str):
         targets = [targets]
-    hits = _curdle.search(recipe.text, recipe.path, _overrides(overrides), str(seeds),
-                          _cells_text(segment, "segment"), list(targets), int(top), int(stride),
-                          int(threads), int(max_memory))
-    return json.loads(hits)
+    hits = json.loads(_curdle.search(recipe.text, recipe.path, _overrides(overrides), str(seeds),
+                                     _cells_text(segment, "segment"), list(targets), int(top),
+                                     int(stride), int(threads), int(max_memory)))
+    # A command runs only on a recipe file that holds this recipe's text.
+    on_disk = os.path.isfile(recipe.path) and _same_text(recipe.path, recipe.text)
+    for hit in hits["hits"]:
+        hit["seed"] = int(hit["seed"])  # text in JSON, which a browser reads as doubles
+        window = f", window={hit['window']!r}" if segment is not None else ""
+        with_overrides = f", overrides={dict(overrides)!r}" if overrides else ""
+        hit["call"] = f"recipe.generate(seed={hit['seed']}{window}{with_overrides})"
+        if not on_disk:
+            hit["command"] = None
+    return hits
+
+
+def _same_text(path: str, text: str) -> bool:
+    try:
+        with open(path, encoding="utf-8") as f:
+            return f.read() == text
+    except (OSError, UnicodeDecodeError):
+        return False
 
 
 def measure(path: str | os.PathLike, values: int = 2, threshold: float | None = None,
