@@ -22,6 +22,14 @@ ls "$prefix"/lib/libcurdle.so.* > /dev/null || fail "no versioned libcurdle.so"
 # The package names no path of the build or the source tree.
 if grep -rl -e "$build" -e "$src" "$prefix/lib/cmake/curdle"; then fail "build paths in the package"; fi
 
+# The manual's C++ example is the consumer's: docs/library.md's cpp block, as its text stands
+# (layout aside: clang-format may break its lines elsewhere).
+"$python" - "$src/docs/library.md" "$src/tests/package/consumer/main.cpp" <<'PY' || fail "docs/library.md's C++ example is not the consumer's"
+import sys
+doc, code = (open(p, encoding="utf-8").read() for p in sys.argv[1:])
+block = doc.split("```cpp\n", 1)[1].split("```", 1)[0]
+sys.exit(0 if "".join(block.split()) in "".join(code.split()) else "not in the consumer: " + block)
+PY
 cmake -S "$src/tests/package/consumer" -B "$tmp/consumer" -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_PREFIX_PATH="$prefix" > "$tmp/configure.log" || { cat "$tmp/configure.log"; fail "configure"; }
 cmake --build "$tmp/consumer" -j2 > "$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; fail "build"; }

@@ -175,6 +175,33 @@ class ABuilding(unittest.TestCase):
         self.assertIsNone(plain.layout.elements[0].strip_x_mm)
 
 
+class TheManualsExample(unittest.TestCase):
+    def test_library_md_python_block_runs_as_written_and_passes_mypy_strict(self):
+        text = (SOURCE / "docs/library.md").read_text(encoding="utf-8")
+        block = text.split("```python\n", 1)[1].split("```", 1)[0]
+        with tempfile.TemporaryDirectory() as tmp:
+            os.symlink(SOURCE / "patterns", Path(tmp) / "patterns")
+            (Path(tmp) / "example.py").write_text(block, encoding="utf-8")
+            here = os.getcwd()
+            os.chdir(tmp)
+            try:
+                exec(compile(block, "docs/library.md", "exec"), {})
+            finally:
+                os.chdir(here)
+            self.assertTrue((Path(tmp) / "out/courtyard/layout.pdf").is_file())
+            # Typed as the package says: mypy --strict finds nothing to fix in the example.
+            mypy = subprocess.run(["/usr/bin/python3", "-m", "mypy", "--version"],
+                                  capture_output=True)
+            if mypy.returncode != 0:
+                self.skipTest("mypy is not installed")
+            module_dir = Path(curdle.__file__).parent.parent
+            checked = subprocess.run(
+                ["/usr/bin/python3", "-m", "mypy", "--strict", "--no-incremental",
+                 "--cache-dir", str(Path(tmp) / ".mypy"), str(Path(tmp) / "example.py")],
+                capture_output=True, text=True, env={**os.environ, "MYPYPATH": str(module_dir)})
+            self.assertEqual(checked.returncode, 0, checked.stdout + checked.stderr)
+
+
 class Calls(unittest.TestCase):
     def test_overrides_seed_and_window_are_the_command_lines(self):
         recipe = curdle.Recipe.from_file(SOURCE / "patterns/paper/fig7-three-stages.toml")
