@@ -85,6 +85,44 @@ TEST(ParkSchedules, PlantsFurnitureAndSurfacesInLandscapeTerms) {
   EXPECT_NEAR(listed, ground, 1e-3);  // to the mm², as schedule.csv's rows
 }
 
+// surfaces.csv books a piece to the zone holding most of its area, or to none: pieces cut round
+// an excluded pond lie in none of it, however the centre of their box falls.
+TEST(ParkSchedules, SurfacesAreBookedToTheZoneTheyLieInByArea) {
+  const Design d = test::design(4, 2, {{"3/4", "1/2"}, {"1/2", "1/2"}, {"3/4", "2/3"}});
+  LayoutSpec spec = test::trees_and_benches();
+  Zone play;
+  play.name = "play";
+  play.rule = ZoneRule::value;
+  play.value = 4;  // grey paving only
+  const Rect area{5000, 1000, 5000, 6000};
+  play.polygon = rect_polygon(area);
+  Zone pond;  // an octagon inside one module: its piece is laid round it, a hole in it
+  pond.name = "pond";
+  for (int i = 0; i < 8; ++i) {
+    const double a = (i + 0.5) * 3.14159265358979323846 / 4;
+    pond.polygon.push_back({10500 + 800 * std::cos(a), 10500 + 800 * std::sin(a)});
+  }
+  spec.zones = {play, pond};
+  spec.size = std::array<double, 2>{24000, 18000};
+  const Layout layout = lay_floor(d, spec, 4);
+  const auto [plants, items, areas] = park_csvs(layout);
+  double booked_play = 0, want_play = 0;
+  size_t cut_round_pond = 0;
+  for (size_t r = 1; r < areas.size(); ++r) {
+    EXPECT_NE(areas[r][1], "pond") << areas[r][0] << " " << areas[r][2];
+    if (areas[r][1] == "play") booked_play += std::stod(areas[r][2]) * 1e6;
+  }
+  for (const Element& e : layout.elements) {
+    if (e.stands) continue;
+    const Rect b = laid_bounds(e);
+    if (!e.cut && intersection(b, area) > e.area() / 2) want_play += std::round(e.area());
+    cut_round_pond += e.cut && contains(pond.polygon, b.x + b.w / 2, b.y + b.h / 2);
+  }
+  EXPECT_GT(cut_round_pond, 0u);  // the case the centre of a box got wrong
+  EXPECT_GT(want_play, 0);
+  EXPECT_NEAR(booked_play, want_play, 1e-3);
+}
+
 // The landscape contractor's columns: the species, girth, root ball and pit the recipe gives,
 // each bench's bearing, and edging per material that adds up to the edges between materials
 // and round the site.

@@ -9,6 +9,7 @@
 #include "io/csv_field.h"
 #include "layout/edging.h"
 #include "layout/piece.h"
+#include "layout/union.h"
 #include "layout/wkt.h"
 #include "layout/zone.h"
 
@@ -19,6 +20,30 @@ std::string zone_of(const Layout& layout, double x, double y) {
   for (const ZoneCount& z : layout.zones)
     if (contains(z.polygon, x, y)) return z.name;
   return "";
+}
+
+// The zone a laid piece lies in by area: the one holding the largest share of it, or none when
+// more of it lies outside every zone. A piece cut round an excluded zone lies in none of it,
+// wherever the centre of its box falls.
+std::string zone_by_area(const Layout& layout, const Element& e) {
+  const Rect b = laid_bounds(e);
+  std::vector<Outline> piece = piece_outlines(e);
+  if (piece.empty()) piece.push_back({{rect_polygon(b)}, b.area()});
+  const double whole = e.area();
+  double best = 0, inside = 0;
+  std::string name;
+  for (const ZoneCount& z : layout.zones) {
+    const size_t n = z.polygon.size();
+    bool crosses = false;  // else the piece's box lies wholly in the zone or wholly out
+    for (size_t i = 0; i < n && !crosses; ++i)
+      crosses = segment_meets(z.polygon[i], z.polygon[(i + 1) % n], b);
+    const double share = crosses ? area_inside(piece, z.polygon)
+                         : contains(z.polygon, b.x + b.w / 2, b.y + b.h / 2) ? whole
+                                                                             : 0.0;
+    inside += share;
+    if (share > best) best = share, name = z.name;
+  }
+  return best > whole - inside ? name : "";
 }
 
 std::array<double, 2> centre(const Element& e) {
@@ -80,9 +105,8 @@ void write_surfaces_csv(std::ostream& out, const Layout& layout) {
   std::vector<Line*> line_of;
   for (const Element& e : layout.elements) {
     if (e.stands) continue;
-    const auto [x, y] = centre(e);
     const std::string& material = piece_material(layout, e);
-    Line& l = lines[{material, zone_of(layout, x, y)}];
+    Line& l = lines[{material, zone_by_area(layout, e)}];
     l.area += std::round(e.area());
     l.pieces += 1;
     l.cut += e.cut ? 1 : 0;

@@ -106,8 +106,7 @@ Ring polygonise(const Circle& c, double tolerance) {
       tolerance >= r ? 3.14159265358979323846 / 3 : 2 * std::acos(1 - tolerance / r);
   // A multiple of 4 vertices from angle 0: the quarter points are vertices, so that the ring's
   // box is the circle's (a GIS's extent, the schedule's width and height, agree).
-  const int n =
-      4 * std::max(2, static_cast<int>(std::ceil(2 * 3.14159265358979323846 / step / 4)));
+  const int n = 4 * std::max(2, static_cast<int>(std::ceil(2 * 3.14159265358979323846 / step / 4)));
   Ring ring;
   for (int i = 0; i < n; ++i) {
     const double a = 2 * 3.14159265358979323846 * i / n;
@@ -274,6 +273,18 @@ double area_within(const Rect& r, const std::vector<Outline>& outlines) {
   if (near.empty()) return 0;
   CGAL::Polygon_set_2<Kernel> set = set_of(near);
   set.intersection(exact(r));
+  double area = 0;
+  for (const Outline& o : outlines_of(set)) area += o.area;
+  return area;
+}
+
+double area_inside(const std::vector<Outline>& outlines, const Polygon& polygon) {
+  if (outlines.empty() || polygon.size() < 3) return 0;
+  ExactPolygon zone = exact(polygon);
+  if (!zone.is_simple()) return 0;  // zones are checked simple when read
+  if (zone.is_clockwise_oriented()) zone.reverse_orientation();
+  CGAL::Polygon_set_2<Kernel> set = set_of(outlines);
+  set.intersection(zone);
   double area = 0;
   for (const Outline& o : outlines_of(set)) area += o.area;
   return area;

@@ -68,4 +68,7 @@ std::vector<Outline> clip_outline(const Rect& r, const Outline& outline);
 // The area of r inside the outlines (as cut_away gives them).
 double area_within(const Rect& r, const std::vector<Outline>& outlines);
 
+// The area of the outlines (a piece as laid) inside the polygon (a zone), exact.
+double area_inside(const std::vector<Outline>& outlines, const Polygon& polygon);
+
 }  // namespace curdle
