@@ -102,7 +102,7 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
     }
     colour(cr, kInk);
     if (!parts.empty()) box(cr, x, y, 8, 4, 0.2);  // a line of a breakdown has no swatch
-    text(cr, x + 10, y + 3.4, fit_lines(cr, {line}, column_w - 12, 2)[0], 2);
+    key_text(cr, x + 10, y + 3.4, line, column_w - 12, 2);
   }
   scale_bar(cr, w - kMargin - title_width(w), strip - 6, s.scale, title_width(w) - 20);
   const std::string segment = segment_text(layout);
@@ -143,7 +143,7 @@ void draw_sheet_key(cairo_t* cr, const SheetContents& held, bool coursed, double
     colour(cr, kInk);
     box(cr, lx, ly, 6, 3, 0.2);
     const std::string label = fmt::format("{}: {}", what.first, line.count);
-    text(cr, lx + 8, ly + 2.6, fit_lines(cr, {label}, column_w - 10, 1.8)[0], 1.8);
+    key_text(cr, lx + 8, ly + 2.6, label, column_w - 10, 1.8);
   }
 }
 

@@ -513,6 +513,9 @@ void setting_out(cairo_t* cr, const Layout& layout, const View& v) {
     text(cr, v.x(0), caption_y + (below ? -2.4 : 2.4) * static_cast<double>(i + 1), lines[i], 1.6);
 }
 
+// A key's line broken in two is drawn this much smaller, so that both fit its row.
+constexpr double kTwoLineScale = 0.8;
+
 std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, double width,
                                    double height) {
   for (std::string& l : lines)
@@ -538,6 +541,42 @@ std::vector<std::string> wrap_lines(cairo_t* cr, const std::vector<std::string>&
     out.push_back(std::move(rest));
   }
   return fit_lines(cr, std::move(out), width, height);
+}
+
+std::vector<std::string> key_lines(cairo_t* cr, const std::string& line, double width,
+                                   double height) {
+  if (text_width(cr, line, height) <= width) return {line};
+  const size_t colon = line.find(": ");
+  if (colon == std::string::npos) return fit_lines(cr, {line}, width, height);
+  const std::string name = line.substr(0, colon), count = line.substr(colon);
+  // Two lines: as much of the name as fits on the first, the rest with the count on the second.
+  const double small = height * kTwoLineScale;
+  for (size_t cut = name.rfind(' '); cut != std::string::npos && cut > 0;
+       cut = name.rfind(' ', cut - 1)) {
+    const std::string first = name.substr(0, cut), second = name.substr(cut + 1) + count;
+    if (text_width(cr, first, small) > width) continue;
+    if (text_width(cr, second, small) <= width) return {first, second};
+    break;  // the longest first line leaves too much for the second: shorten the name instead
+  }
+  std::string shortened = name;
+  while (shortened.size() > 1 && text_width(cr, shortened + "..." + count, height) > width)
+    shortened.pop_back();
+  if (text_width(cr, shortened + "..." + count, height) <= width)
+    return {shortened + "..." + count};
+  // Too narrow for a name and its count: the count first, then what it counts, cut.
+  return fit_lines(cr, {line.substr(colon + 2) + " - " + name}, width, height);
+}
+
+void key_text(cairo_t* cr, double x, double y, const std::string& line, double width,
+              double height) {
+  const std::vector<std::string> lines = key_lines(cr, line, width, height);
+  if (lines.size() == 1) {
+    text(cr, x, y, lines[0], height);
+    return;
+  }
+  const double small = height * kTwoLineScale;
+  text(cr, x, y - small * 0.6, lines[0], small);
+  text(cr, x, y + small * 0.6, lines[1], small);
 }
 
 double title_width(double w) { return std::min(150.0, (w - kLeftMargin - kMargin) * 0.55); }

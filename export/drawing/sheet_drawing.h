@@ -39,6 +39,16 @@ std::vector<std::string> fit_lines(cairo_t* cr, std::vector<std::string> lines, 
 std::vector<std::string> wrap_lines(cairo_t* cr, const std::vector<std::string>& lines,
                                     double width, double height, size_t most);
 
+// A key's or legend's line, "what: how many", within `width` mm at `height`: whole when it fits;
+// else the name broken at a space onto a second line; else the name cut with "..." before the
+// colon. The count is never cut: where even "...: count" is too wide, the count comes first.
+std::vector<std::string> key_lines(cairo_t* cr, const std::string& line, double width,
+                                   double height);
+// key_lines drawn with the first line's baseline at `y` (two lines a little smaller, the second
+// below it).
+void key_text(cairo_t* cr, double x, double y, const std::string& line, double width,
+              double height);
+
 void box(cairo_t* cr, double x, double y, double w, double h, double line);
 
 // Where layout millimetres land on paper: the window's top-left corner at (left, top).
