@@ -44,6 +44,22 @@ TEST(Install, EveryPieceLabelledOnceInWellFormedSvg) {
   EXPECT_NE(svg.find("id=\"rows\""), std::string::npos);
   EXPECT_NE(svg.find(">R0<"), std::string::npos);
   EXPECT_NE(svg.find("id=\"laying-order\""), std::string::npos);
+  EXPECT_NE(svg.find(", IDs "), std::string::npos);  // the heading gives the IDs' height
+}
+
+// A coursed map (bricks) numbers courses and columns and draws no IDs: its heading says so,
+// and gives no height of IDs it does not have.
+TEST(Install, ACoursedMapsHeadingNamesNoIds) {
+  const Design d = test::design(2, 2, {{"3/4", "2/3"}, {"1/2", "1/2"}});
+  LayoutSpec spec = test::layout_spec("facade");
+  spec.size = std::array<double, 2>{2400, 1500};
+  const Layout layout = lay_floor(d, spec, 2);
+  const InstallerPlan plan = plan_installer_sheets(layout);
+  ASSERT_TRUE(plan.coursed);
+  std::ostringstream out;
+  write_install_svg(out, layout, plan);
+  EXPECT_EQ(out.str().find(", IDs "), std::string::npos);
+  EXPECT_NE(out.str().find("courses and columns numbered"), std::string::npos);
 }
 
 // The key shows each product as the map draws it: the pieces' faint fill (once full colour,

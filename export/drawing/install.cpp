@@ -338,12 +338,15 @@ void write_install_svg(std::ostream& out, const Layout& layout, const InstallerP
       num(f.x(0)), num(f.y(H)), num(W), num(H), outlined ? "none" : "#222", num(0.35 * s));
   // The heading, two short lines so that it fits over the narrowest map.
   const double heading = 2.5 / kCapHeightEm * s;
+  // A coursed map numbers its courses and columns; it draws no IDs to give a height for.
+  const std::string what =
+      plan.coursed ? "courses and columns numbered" : fmt::format("IDs {:.1f} mm", plan.text_mm);
   out << fmt::format(
       "<g id=\"heading\" font-size=\"{}\" fill=\"#222\"><text x=\"{}\" y=\"{}\" "
-      "font-weight=\"bold\">{}</text><text x=\"{}\" y=\"{}\">installation map 1 : {:g}, IDs "
-      "{:.1f} mm; the grid: the sheets of layout.pdf</text></g>\n",
+      "font-weight=\"bold\">{}</text><text x=\"{}\" y=\"{}\">installation map 1 : {:g}, {}; "
+      "the grid: the sheets of layout.pdf</text></g>\n",
       num(heading), num(f.x(first.x)), num(3.5 * s), xml_escape(title.recipe), num(f.x(first.x)),
-      num(8 * s), s, plan.text_mm);
+      num(8 * s), s, what);
   write_hatch_patterns(out, layout, s);
   write_surface(out, layout, f, s);
   if (plan.sheets.size() > 1) write_sheet_grid(out, plan, f, s);
