@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "app/run.h"
 #include "layout/builder.h"
+#include "layout/piece.h"
 #include "test_support.h"
 
 namespace curdle {
@@ -40,6 +42,20 @@ TEST(GisFeatures, AFeaturePerPieceInALayerPerKindWithTheScheduleAttributes) {
   // The tree's attributes as schedule.csv has them: its ID first, its species as material.
   const GisFeature& tree = data.layers[1].features.front();
   EXPECT_TRUE(tree.values.front().ends_with("-tree")) << tree.values.front();
+  // planting.csv's columns on the layers too, as it gives them: a tree's species and sizes, a
+  // paving piece's left null; and every piece's zone.
+  std::map<std::string, size_t> field;
+  for (size_t i = 0; i < data.fields.size(); ++i) field[data.fields[i].name] = i;
+  for (const char* name : {"species", "girth_cm", "root_ball_mm", "pit_width_mm", "zone"})
+    ASSERT_TRUE(field.contains(name)) << name;
+  const Element* first_tree = nullptr;
+  for (const Element& e : layout.elements)
+    if (e.stands && e.circle && !first_tree) first_tree = &e;
+  ASSERT_NE(first_tree, nullptr);
+  const PlantingSpec& p = planting_of(layout, *first_tree);
+  EXPECT_EQ(tree.values[field["species"]], p.species);
+  EXPECT_EQ(tree.values[field["girth_cm"]], p.girth_text());
+  EXPECT_EQ(data.layers[0].features.front().values[field["species"]], "");
 }
 
 TEST(GisFeatures, GeorefPlacesTheDatumAndTurnsTheAxes) {

@@ -57,7 +57,7 @@ TEST(ParkSchedules, PlantsFurnitureAndSurfacesInLandscapeTerms) {
   ASSERT_EQ(plants.size(), trees + 1);
   ASSERT_EQ(items.size(), benches + 1);
   EXPECT_EQ(plants[0],
-            (std::vector<std::string>{"element_id", "plant", "species", "x_mm", "y_mm",
+            (std::vector<std::string>{"element_id", "plant", "species", "centre_x_mm", "centre_y_mm",
                                       "canopy_diameter_mm", "girth_cm", "root_ball_mm",
                                       "pit_width_mm", "pit_length_mm", "value", "zone"}));
   std::map<std::string, const Element*> by_id;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 
+#include "layout/element_zone.h"
+#include "layout/piece.h"
 #include "layout/piece_rows.h"
 #include "layout/zone.h"
 
@@ -14,16 +16,33 @@ namespace {
 using T = GisField::Type;
 
 // The schedule's columns, in its units, as fields (curd bits are the value's).
-const std::vector<GisField> kFields{{"element_id", T::text},     {"lot", T::text},
-                                    {"level", T::integer},       {"row", T::integer},
-                                    {"column", T::integer},      {"x_mm", T::real},
-                                    {"y_mm", T::real},           {"z_mm", T::real},
-                                    {"width_mm", T::real},       {"height_mm", T::real},
-                                    {"depth_mm", T::real},       {"area_m2", T::real},
-                                    {"stock_width_mm", T::real}, {"stock_height_mm", T::real},
-                                    {"value", T::integer},       {"element_type", T::text},
-                                    {"colour", T::text},         {"material", T::text},
-                                    {"cut", T::integer},         {"opening_diameter_mm", T::real}};
+const std::vector<GisField> kFields{{"element_id", T::text},
+                                    {"lot", T::text},
+                                    {"level", T::integer},
+                                    {"row", T::integer},
+                                    {"column", T::integer},
+                                    {"x_mm", T::real},
+                                    {"y_mm", T::real},
+                                    {"z_mm", T::real},
+                                    {"width_mm", T::real},
+                                    {"height_mm", T::real},
+                                    {"depth_mm", T::real},
+                                    {"area_m2", T::real},
+                                    {"stock_width_mm", T::real},
+                                    {"stock_height_mm", T::real},
+                                    {"value", T::integer},
+                                    {"element_type", T::text},
+                                    {"colour", T::text},
+                                    {"material", T::text},
+                                    {"cut", T::integer},
+                                    {"opening_diameter_mm", T::real},
+                                    // planting.csv's and furniture.csv's (null on other pieces)
+                                    {"species", T::text},
+                                    {"girth_cm", T::text},
+                                    {"root_ball_mm", T::real},
+                                    {"pit_width_mm", T::real},
+                                    {"pit_length_mm", T::real},
+                                    {"zone", T::text}};
 
 std::string number(double v) { return fmt::format("{}", v); }
 std::string number(const std::optional<double>& v) { return v ? number(*v) : std::string(); }
@@ -39,6 +58,24 @@ std::string table_name(const std::string& type) {
       out += keep ? c : '_';
   }
   return out.empty() || (out[0] >= '0' && out[0] <= '9') ? "elements_" + out : out;
+}
+
+std::string given(double v) { return v > 0 ? number(v) : std::string(); }
+
+// A tree's or a bench's planting columns as planting.csv and furniture.csv give them, and every
+// piece's zone as the schedules book it.
+std::vector<std::string> planting_values(const Layout& layout, const Element& e) {
+  std::vector<std::string> out(6);
+  if (e.stands) {
+    const PlantingSpec& p = planting_of(layout, e);
+    out[0] = p.species;
+    out[1] = p.girth_text();
+    out[2] = given(p.root_ball);
+    out[3] = given(p.pit[0]);
+    out[4] = given(p.pit[1]);
+  }
+  out[5] = zone_of_element(layout, e);
+  return out;
 }
 
 std::vector<std::string> values_of(const ScheduleRow& r) {
@@ -87,6 +124,8 @@ GisDataset gis_features(const Layout& layout) {
     if (added) data.layers.push_back({name, {}});
     GisFeature f;
     f.values = values_of(row);
+    for (std::string& v : planting_values(layout, layout.elements[i]))
+      f.values.push_back(std::move(v));
     for (const Outline& part : row.outlines) {
       std::vector<Ring> rings;
       for (const Ring& ring : part.rings) {

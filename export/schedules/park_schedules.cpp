@@ -8,43 +8,13 @@
 
 #include "io/csv_field.h"
 #include "layout/edging.h"
+#include "layout/element_zone.h"
 #include "layout/piece.h"
-#include "layout/union.h"
 #include "layout/wkt.h"
 #include "layout/zone.h"
 
 namespace curdle {
 namespace {
-
-std::string zone_of(const Layout& layout, double x, double y) {
-  for (const ZoneCount& z : layout.zones)
-    if (contains(z.polygon, x, y)) return z.name;
-  return "";
-}
-
-// The zone a laid piece lies in by area: the one holding the largest share of it, or none when
-// more of it lies outside every zone. A piece cut round an excluded zone lies in none of it,
-// wherever the centre of its box falls.
-std::string zone_by_area(const Layout& layout, const Element& e) {
-  const Rect b = laid_bounds(e);
-  std::vector<Outline> piece = piece_outlines(e);
-  if (piece.empty()) piece.push_back({{rect_polygon(b)}, b.area()});
-  const double whole = e.area();
-  double best = 0, inside = 0;
-  std::string name;
-  for (const ZoneCount& z : layout.zones) {
-    const size_t n = z.polygon.size();
-    bool crosses = false;  // else the piece's box lies wholly in the zone or wholly out
-    for (size_t i = 0; i < n && !crosses; ++i)
-      crosses = segment_meets(z.polygon[i], z.polygon[(i + 1) % n], b);
-    const double share = crosses ? area_inside(piece, z.polygon)
-                         : contains(z.polygon, b.x + b.w / 2, b.y + b.h / 2) ? whole
-                                                                             : 0.0;
-    inside += share;
-    if (share > best) best = share, name = z.name;
-  }
-  return best > whole - inside ? name : "";
-}
 
 std::array<double, 2> centre(const Element& e) {
   if (e.circle) return {e.circle->cx, e.circle->cy};
@@ -55,17 +25,12 @@ std::array<double, 2> centre(const Element& e) {
 // A size the recipe gave, or an empty cell.
 std::string given(double mm) { return mm > 0 ? mm_text(mm) : ""; }
 
-std::string girth_text(const PlantingSpec& p) {
-  if (p.girth[0] <= 0) return "";
-  return p.girth[0] == p.girth[1] ? fmt::format("{:g}", p.girth[0])
-                                  : fmt::format("{:g}-{:g}", p.girth[0], p.girth[1]);
-}
-
 }  // namespace
 
 void write_planting_csv(std::ostream& out, const Layout& layout) {
   out << kUtf8Mark
-      << "element_id,plant,species,x_mm,y_mm,canopy_diameter_mm,girth_cm,root_ball_mm,"
+      << "element_id,plant,species,centre_x_mm,centre_y_mm,canopy_diameter_mm,girth_cm,root_ball_"
+         "mm,"
          "pit_width_mm,pit_length_mm,value,zone\r\n";
   for (const Element& e : layout.elements) {
     if (!e.stands || !e.circle) continue;
@@ -73,14 +38,15 @@ void write_planting_csv(std::ostream& out, const Layout& layout) {
     const PlantingSpec& p = planting_of(layout, e);
     out << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\r\n", e.id, csv_field(e.type),
                        csv_field(p.species), mm_text(x), mm_text(y), mm_text(e.circle->d),
-                       girth_text(p), given(p.root_ball), given(p.pit[0]), given(p.pit[1]), e.value,
-                       csv_field(zone_of(layout, x, y)));
+                       p.girth_text(), given(p.root_ball), given(p.pit[0]), given(p.pit[1]),
+                       e.value, csv_field(zone_of_element(layout, e)));
   }
 }
 
 void write_furniture_csv(std::ostream& out, const Layout& layout) {
   out << kUtf8Mark
-      << "element_id,item,product,x_mm,y_mm,width_mm,depth_mm,long_side_deg,value,zone\r\n";
+      << "element_id,item,product,centre_x_mm,centre_y_mm,width_mm,depth_mm,long_side_deg,value,"
+         "zone\r\n";
   for (const Element& e : layout.elements) {
     if (!e.stands || e.circle) continue;
     const auto [x, y] = centre(e);
@@ -89,7 +55,7 @@ void write_furniture_csv(std::ostream& out, const Layout& layout) {
     out << fmt::format("{},{},{},{},{},{},{},{},{},{}\r\n", e.id, csv_field(e.type),
                        csv_field(planting_of(layout, e).species), mm_text(x), mm_text(y),
                        mm_text(b.w), mm_text(b.h), long_side, e.value,
-                       csv_field(zone_of(layout, x, y)));
+                       csv_field(zone_of_element(layout, e)));
   }
 }
 
@@ -106,7 +72,7 @@ void write_surfaces_csv(std::ostream& out, const Layout& layout) {
   for (const Element& e : layout.elements) {
     if (e.stands) continue;
     const std::string& material = piece_material(layout, e);
-    Line& l = lines[{material, zone_by_area(layout, e)}];
+    Line& l = lines[{material, zone_of_element(layout, e)}];
     l.area += std::round(e.area());
     l.pieces += 1;
     l.cut += e.cut ? 1 : 0;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <sstream>
 #include <string>
 
 namespace curdle {
@@ -15,6 +16,14 @@ struct PlantingSpec {
   std::array<double, 2> pit{0, 0};    // the tree pit dug in plan, mm, width x length; 0: none
   std::string member;                 // the curd or state placing it: its elements' key.part
   bool pit_given() const { return pit[0] > 0 && pit[1] > 0; }
+  // The girth as a nursery writes it: "16-18", "20"; "" when not given.
+  std::string girth_text() const {
+    if (girth[0] <= 0) return "";
+    std::ostringstream text;  // as %g writes them
+    text << girth[0];
+    if (girth[1] != girth[0]) text << '-' << girth[1];
+    return text.str();
+  }
 };
 
 }  // namespace curdle
