@@ -149,7 +149,32 @@ def long_names():
               f"{len(ordered)} materials named in up to {max(map(len, names))} characters")
 
 
+def north_clear(plan):
+    """Sheet 1 of a plan: its north arrow's N overlaps no word of the title block."""
+    with tempfile.TemporaryDirectory() as tmp:
+        subprocess.run([curdle, "generate", str(source / plan), "--out", tmp, "--outputs",
+                        "layout.pdf"], check=True, stdout=subprocess.DEVNULL)
+        html = subprocess.run(["pdftotext", "-f", "1", "-l", "1", "-bbox",
+                               str(Path(tmp, "layout.pdf")), "-"], capture_output=True,
+                              text=True, check=True).stdout
+        words = [(float(a), float(b), float(c), float(d), w) for a, b, c, d, w in re.findall(
+            r'<word xMin="([\d.]+)" yMin="([\d.]+)" xMax="([\d.]+)" yMax="([\d.]+)">([^<]*)'
+            r'</word>', html)]
+        norths = [w for w in words if w[4] == "N"]
+        if not norths:
+            failures.append(f"{plan} sheet 1: no north arrow's N")
+        for n in norths:
+            for w in words:
+                if w is not n and w[0] < n[2] and n[0] < w[2] and w[1] < n[3] and n[1] < w[3]:
+                    failures.append(f"{plan} sheet 1: the north arrow's N overlaps '{w[4]}'")
+        print(f"{plan}: the north arrow's N clear of {len(words) - 1} words on sheet 1")
+
+
 long_names()
+for plan in ["patterns/courtyard-l-shaped.toml", "patterns/paper/fig5a-park.toml",
+             "examples/briefs/cafe-park.toml", "examples/briefs/courtyard.toml",
+             "examples/briefs/entrance-paving.toml", "patterns/terrace-curved-edge.toml"]:
+    north_clear(plan)
 for f in failures[:20]:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)

@@ -581,7 +581,8 @@ void key_text(cairo_t* cr, double x, double y, const std::string& line, double w
 
 double title_width(double w) { return std::min(150.0, (w - kLeftMargin - kMargin) * 0.55); }
 
-// A north arrow 9 mm tall standing on (x, y), with its N above.
+// A north arrow 9 mm tall standing on (x, y), with its N beside its head: above it, the N ran
+// into the title block's last line.
 void north_arrow(cairo_t* cr, double x, double y) {
   colour(cr, kInk);
   cairo_new_path(cr);
@@ -596,7 +597,7 @@ void north_arrow(cairo_t* cr, double x, double y) {
   cairo_close_path(cr);
   cairo_set_line_width(cr, 0.25);
   cairo_stroke(cr);
-  text(cr, x, y - 10.5, "N", 2.5, Align::centre, false, true);
+  text(cr, x + 3, y - 6, "N", 2.5, Align::left, false, true);
 }
 
 void title_block(cairo_t* cr, const Layout& layout, const std::vector<std::string>& title_text,
