@@ -56,10 +56,10 @@ TEST(ParkSchedules, PlantsFurnitureAndSurfacesInLandscapeTerms) {
   ASSERT_GT(benches, 0u);
   ASSERT_EQ(plants.size(), trees + 1);
   ASSERT_EQ(items.size(), benches + 1);
-  EXPECT_EQ(plants[0],
-            (std::vector<std::string>{"element_id", "plant", "species", "centre_x_mm", "centre_y_mm",
-                                      "canopy_diameter_mm", "girth_cm", "root_ball_mm",
-                                      "pit_width_mm", "pit_length_mm", "value", "zone"}));
+  EXPECT_EQ(plants[0], (std::vector<std::string>{"element_id", "plant", "species", "centre_x_mm",
+                                                 "centre_y_mm", "canopy_diameter_mm", "girth_cm",
+                                                 "root_ball_mm", "pit_width_mm", "pit_length_mm",
+                                                 "value", "zone"}));
   std::map<std::string, const Element*> by_id;
   for (const Element& e : layout.elements) by_id[e.id] = &e;
   size_t in_lawn = 0;
