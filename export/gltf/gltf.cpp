@@ -23,6 +23,7 @@
 #include "layout/gltf_solids.h"
 #include "layout/piece.h"
 #include "layout/sheet_tiles.h"
+#include "layout/standing_body.h"
 #include "layout/triangulation.h"
 #include "layout/union.h"
 
@@ -366,7 +367,9 @@ void add_park(Scene& sc) {
     std::vector<uint32_t> i;
     if (e.circle) {  // a tree: trunk and canopy, the canopy's diameter that of the element
       const float r = static_cast<float>(e.circle->d / 2000);
-      add_box(p, n, i, {-0.1f, 0, -0.1f}, {0.2f, 2.2f, 0.2f});
+      const auto across = static_cast<float>(kTrunkWidth / 1000),
+                 tall = static_cast<float>(kTrunkHeight / 1000);
+      add_box(p, n, i, {-across / 2, 0, -across / 2}, {across, tall, across});
       const int trunk = b.add_material(e.type + " trunk", Rgb{92, 64, 44}, 0, 0.9);
       std::vector<Vec3> cp, cn;
       std::vector<uint32_t> ci;
@@ -376,7 +379,7 @@ void add_park(Scene& sc) {
           const double th = 3.14159265358979 * a / rings, ph = 2 * 3.14159265358979 * s2 / segments;
           const Vec3 dir{float(std::sin(th) * std::cos(ph)), float(std::cos(th)),
                          float(std::sin(th) * std::sin(ph))};
-          cp.push_back({dir[0] * r, 2.2f + r + dir[1] * r, dir[2] * r});
+          cp.push_back({dir[0] * r, tall + r + dir[1] * r, dir[2] * r});
           cn.push_back(dir);
         }
       for (int a = 0; a < rings; ++a)
@@ -408,7 +411,7 @@ void add_park(Scene& sc) {
       const int mat = b.model.meshes[type_mesh[e.type]].primitives[0].material;
       const bool surface = !e.stands;
       if (e.shape.size() == 1) {
-        n = sc.box_node(e.shape[0], surface ? 0 : t, surface ? t : 450, mat);
+        n = sc.box_node(e.shape[0], surface ? 0 : t, surface ? t : kStandingHeight, mat);
       } else {  // a surface cut to several rectangles by an outline along x and y
         for (const Rect& r : e.shape) n.children.push_back(b.add_node(sc.box_node(r, 0, t, mat)));
       }

@@ -21,45 +21,16 @@
 #include "layout/framed_sheet.h"
 #include "layout/piece.h"
 #include "layout/piece_rows.h"
+#include "layout/standing_body.h"
 #include "layout/union.h"
 #include "layout/zone.h"
 
 namespace curdle {
 namespace {
 
-// A tree's body: a trunk of this diameter and height, then its canopy as a drum as tall as wide;
-// a standing object's (a bench) height.
-constexpr double kTrunkDiameter = 200, kTrunkHeight = 2200, kStandingHeight = 450;
-
 using step::real;
 using step::ref;
 using step::text;
-
-// What an element becomes in the model.
-struct IfcClass {
-  const char* entity;      // IFCCOVERING, ...
-  const char* predefined;  // its PredefinedType
-  bool typed = false;      // grouped by an IfcCoveringType
-};
-
-IfcClass class_of(const Layout& layout, const Element& e) {
-  switch (e.form) {
-    case ElementForm::opening:
-      return {"IFCOPENINGELEMENT", ".OPENING."};
-    case ElementForm::block:
-      return {"IFCBUILDINGELEMENTPROXY", ".ELEMENT."};
-    case ElementForm::object:
-      if (e.circle) return {"IFCGEOGRAPHICELEMENT", ".USERDEFINED."};
-      if (e.stands) return {"IFCFURNITURE", ".USERDEFINED."};
-      return {"IFCCOVERING", ".FLOORING."};
-    case ElementForm::piece:
-    case ElementForm::cut_piece:
-      break;
-  }
-  // A building's units are the parts its walls are made of.
-  if (!layout.frames.empty()) return {"IFCBUILDINGELEMENTPART", ".USERDEFINED."};
-  return {"IFCCOVERING", layout.kind->upright() ? ".CLADDING." : ".FLOORING.", true};
-}
 
 // The model under construction: shared geometry, the spatial structure, and what the closing
 // relations gather (elements per material, per type, per sheet).
@@ -281,20 +252,6 @@ class IfcModel {
     return w_.add("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[sheet]), ref(frame));
   }
 
-  // How tall the element's body stands (solids() below): a block its storey, a tree its trunk and
-  // canopy, a standing object (a bench) its 450 mm, a laid piece the surface's thickness.
-  double body_height(const Element& e) const {
-    if (e.form == ElementForm::block) return l_.level_height;
-    if (e.circle) return kTrunkHeight + e.circle->d;
-    return e.stands ? kStandingHeight : l_.thickness;
-  }
-  // m³ of a body that is no prism of its area (a tree's), else -1.
-  double body_volume(const Element& e) const {
-    if (!e.circle || e.form == ElementForm::block) return -1;
-    const double pi = 3.14159265358979323846, r = e.circle->d / 2, trunk = kTrunkDiameter / 2;
-    return (pi * trunk * trunk * kTrunkHeight + pi * r * r * e.circle->d) / 1e9;
-  }
-
   // The element's body as laid: one solid, whatever its shape (an L-shaped cut piece is one
   // profile, a piece in two parts one composite profile); a tree is a trunk and a canopy.
   // `parts`: piece_outlines(e), worked out once by the caller (a cut piece's is a union).
@@ -309,8 +266,8 @@ class IfcModel {
                        colour)};
     }
     if (e.circle) {  // a tree: a trunk of 200 mm to 2.2 m, then its canopy as a drum
-      const int64_t trunk = g_.solid(g_.circle(Circle{e.circle->cx, e.circle->cy, kTrunkDiameter}),
-                                     t, kTrunkHeight, Rgb{92, 64, 44});
+      const int64_t trunk = g_.solid(g_.circle(Circle{e.circle->cx, e.circle->cy, kTrunkWidth}), t,
+                                     kTrunkHeight, Rgb{92, 64, 44});
       return {trunk, g_.solid(g_.circle(*e.circle), t + kTrunkHeight, e.circle->d, colour)};
     }
     const double base = e.stands ? t : 0, depth = e.stands ? kStandingHeight : t;
@@ -469,8 +426,8 @@ class IfcModel {
     quantities(e, id);
     const bool known = l_.kind->outdoors();
     sets(id, e.id, c.entity,
-         {e.id, known, known, body_height(e), b.w, b.h, gross_area(e, parts) / 1e6, e.area() / 1e6,
-          body_volume(e)});
+         {e.id, known, known, body_height(l_, e), b.w, b.h, gross_area(e, parts) / 1e6,
+          e.area() / 1e6, body_volume(e)});
   }
   // The piece's area without what is cut away inside it (its outer rings).
   static double gross_area(const Element& e, const std::vector<Outline>& parts) {
@@ -535,8 +492,8 @@ class IfcModel {
     std::vector<int64_t> q{
         shared("IFCQUANTITYLENGTH('Length',$,$,{},$)", real(b.w)),
         shared("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h)),
-        standing ? shared("IFCQUANTITYLENGTH('Height',$,$,{},$)", real(body_height(e)))
-                 : shared("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(body_height(e))),
+        standing ? shared("IFCQUANTITYLENGTH('Height',$,$,{},$)", real(body_height(l_, e)))
+                 : shared("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(body_height(l_, e))),
         shared("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6))};
     const int64_t set = w_.add("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})",
                                root("qto ", e.id), step_refs(q));

@@ -59,4 +59,23 @@ std::vector<IfcSet> standard_sets(std::string_view entity, const IfcMeasures& m)
   return {};
 }
 
+IfcClass class_of(const Layout& layout, const Element& e) {
+  switch (e.form) {
+    case ElementForm::opening:
+      return {"IFCOPENINGELEMENT", ".OPENING."};
+    case ElementForm::block:
+      return {"IFCBUILDINGELEMENTPROXY", ".ELEMENT."};
+    case ElementForm::object:
+      if (e.circle) return {"IFCGEOGRAPHICELEMENT", ".USERDEFINED."};
+      if (e.stands) return {"IFCFURNITURE", ".USERDEFINED."};
+      return {"IFCCOVERING", ".FLOORING."};
+    case ElementForm::piece:
+    case ElementForm::cut_piece:
+      break;
+  }
+  // A building's units are the parts its walls are made of.
+  if (!layout.frames.empty()) return {"IFCBUILDINGELEMENTPART", ".USERDEFINED."};
+  return {"IFCCOVERING", layout.kind->upright() ? ".CLADDING." : ".FLOORING.", true};
+}
+
 }  // namespace curdle

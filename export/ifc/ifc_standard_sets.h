@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "layout/layout.h"
+
 namespace curdle {
 
 // What an element measures, as the standard sets ask for it.
@@ -40,5 +42,14 @@ struct IfcSet {
 // The standard sets of an element of IFC class `entity` ("IFCCOVERING", "IFCPLATE", ...), both
 // the common property set and the base quantities; none for classes IFC4 gives none.
 std::vector<IfcSet> standard_sets(std::string_view entity, const IfcMeasures& m);
+
+// What an element becomes in the model: its IFC4 class, whose standard sets it carries.
+struct IfcClass {
+  const char* entity;      // IFCCOVERING, ...
+  const char* predefined;  // its PredefinedType
+  bool typed = false;      // grouped by an IfcCoveringType
+};
+
+IfcClass class_of(const Layout& layout, const Element& e);
 
 }  // namespace curdle
