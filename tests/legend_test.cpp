@@ -25,9 +25,33 @@ TEST(Legend, ValuesOfOneProductAreOneLine) {
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[2].values, "2, 3");
   EXPECT_EQ(lines[2].count, layout.legend[2].count + layout.legend[3].count);
+  EXPECT_EQ(lines[2].looks.size(), 1u);
   // The same label in another colour is another product.
   spec.value_colours[3] = Rgb{20, 20, 20};
   EXPECT_EQ(make_layout(d, f, d.field, spec).legend[3].same_as, 3u);
+}
+
+// A sheet's openings of one name are one line, as quantities.csv buys them by the tool, drawn
+// in each colour their values have: "2 Hole D30" and "3 Hole D30" were two lines.
+TEST(Legend, OpeningsOfOneNameAreOneLineInEveryColour) {
+  Design d = design(4, 2, {{"3/4", "3/4"}, {"3/4", "3/4"}});
+  const CurdField f = curdle(d, 2, d.field);
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("perforation"));
+  spec.module_w = spec.module_h = 40;
+  spec.own<PerforationKeys>().thickness = 2;
+  spec.own<PerforationKeys>().holes = {{16, -7, 6}, {16, 7, -6}};
+  spec.materials = {"Sheet", "Hole D16", "Hole D16", "Hole D16"};
+  const Layout layout = make_layout(d, f, d.field, spec);
+  ASSERT_NE(layout.legend[1].colour, layout.legend[2].colour);
+  EXPECT_EQ(layout.legend[2].same_as, 1u);
+  EXPECT_EQ(layout.legend[3].same_as, 1u);
+  const std::vector<LegendLine> lines = legend_lines(layout.legend);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].values, "1, 2, 3");
+  EXPECT_EQ(lines[0].looks.size(), 3u);
+  EXPECT_EQ(lines[0].count,
+            layout.legend[1].count + layout.legend[2].count + layout.legend[3].count);
 }
 
 }  // namespace curdle

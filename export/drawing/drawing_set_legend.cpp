@@ -41,10 +41,14 @@ std::vector<std::pair<std::vector<Rgb>, std::string>> sheet_legend(const Layout&
     if (q.cut) line += fmt::format(" ({} cut)", q.cut);
     if (q.area > 0 && layout.kind->ground() != Ground::sheet)  // not a sheet's holes
       line += fmt::format(", {:.2f} m²", q.area);
-    rows.push_back({e.parts.size() > 1 && layout.combine == Combine::keep
-                        ? e.parts
-                        : std::vector<Rgb>{e.colour},
-                    line});
+    std::vector<Rgb> swatch;  // each look the line's values are drawn in, side by side
+    for (const LegendEntry* look : legend_line.looks) {
+      if (look->parts.size() > 1 && layout.combine == Combine::keep)
+        swatch.insert(swatch.end(), look->parts.begin(), look->parts.end());
+      else
+        swatch.push_back(look->colour);
+    }
+    rows.push_back({swatch, line});
   }
   if (!layout.frames.empty()) {  // a building's units by part, as quantities.csv orders them
     std::map<std::string, uint64_t> by_part;

@@ -63,12 +63,16 @@ InstallerDrawing installer_set(const Layout& layout, const InstallerPlan& plan) 
     // Values that lay the same product are one line, hatched alike (LegendEntry::same_as).
     const uint32_t value = e.type.empty() ? layout.legend[e.value].same_as : 0;
     SheetContents::KeyLine& line = c.key[{piece_material(layout, e), value}];
-    if (line.count++ == 0) {
-      const LegendEntry& l = layout.legend[e.value];
-      line.value = l.same_as;
-      line.swatch = e.type.empty() && layout.combine == Combine::keep && l.parts.size() > 1
-                        ? l.parts
-                        : std::vector<Rgb>{piece_colour(layout, e)};
+    const LegendEntry& l = layout.legend[e.value];
+    const std::vector<Rgb> look =
+        e.type.empty() && layout.combine == Combine::keep && l.parts.size() > 1
+            ? l.parts
+            : std::vector<Rgb>{piece_colour(layout, e)};
+    if (line.count++ == 0) line.value = l.same_as;
+    // Each look the line's pieces are drawn in, side by side in the key.
+    if (std::find(line.looks.begin(), line.looks.end(), look) == line.looks.end()) {
+      line.looks.push_back(look);
+      line.swatch.insert(line.swatch.end(), look.begin(), look.end());
     }
   }
   return set;

@@ -24,8 +24,9 @@ struct SheetContents {
   int64_t row0 = INT64_MAX, row1 = INT64_MIN, column0 = INT64_MAX, column1 = INT64_MIN;
   // The key: the elements whose centre the sheet shows, by what they are made of, as drawn.
   struct KeyLine {
-    std::vector<Rgb> swatch;  // one colour, or keep mode's stripes
-    uint32_t value = 0;       // its hatch on a coursed set
+    std::vector<Rgb> swatch;  // one colour, or keep mode's stripes; each look side by side
+    std::vector<std::vector<Rgb>> looks;  // the looks in the swatch
+    uint32_t value = 0;                   // its hatch on a coursed set
     size_t count = 0;
   };
   std::map<std::pair<std::string, uint32_t>, KeyLine> key;  // by material, then value

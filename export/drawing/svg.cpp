@@ -368,19 +368,24 @@ void write_legend(std::ostream& out, const Layout& layout, double top, double le
   // One row a product (a park: a material as planted and built): its value, fill and text.
   struct Row {
     uint32_t value;
-    std::string fill, text;
+    std::vector<std::string> fills;  // side by side: each look of the product
+    std::string text;
   };
   std::vector<Row> rows;
   const bool striped = layout.combine == Combine::keep && layout.kind->ground() != Ground::sheet;
   if (layout.kind->depiction() == Depiction::objects) {
     for (const MaterialLine& l : material_lines(layout))
-      rows.push_back({0, hex_colour(l.colour), l.text()});
+      rows.push_back({0, {hex_colour(l.colour)}, l.text()});
   } else {
-    for (const LegendLine& l : legend_lines(layout.legend))
+    for (const LegendLine& l : legend_lines(layout.legend)) {
+      std::vector<std::string> fills;
+      for (const LegendEntry* look : l.looks)
+        fills.push_back(striped ? fmt::format("url(#parts-{})", look->value)
+                                : hex_colour(look->colour));
       rows.push_back(
-          {l.entry->value,
-           striped ? fmt::format("url(#parts-{})", l.entry->value) : hex_colour(l.entry->colour),
+          {l.entry->value, fills,
            fmt::format("{} {}: {}", l.values, l.entry->label, legend_count(layout, l.count))});
+    }
   }
   // The text shrinks, when its longest line would run into the title block (`legend_room`
   // from the legend's text), to about 0.6 em a character.
@@ -393,12 +398,17 @@ void write_legend(std::ostream& out, const Layout& layout, double top, double le
   for (const Row& r : rows) {
     if (shown == 16) break;
     const double y = top + unit * 1.6 * static_cast<double>(shown++);
+    const double w = unit * 2 / static_cast<double>(r.fills.size());
+    std::string swatches;
+    for (size_t i = 0; i < r.fills.size(); ++i)
+      swatches += fmt::format(
+          "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\" stroke=\"#222\" "
+          "stroke-width=\"{}\"/>",
+          mm(margin + w * static_cast<double>(i)), mm(y), mm(w), mm(unit * 1.2), r.fills[i],
+          mm(unit * 0.05));
     out << fmt::format(
-        "<g class=\"legend-entry\" data-value=\"{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" "
-        "height=\"{}\" fill=\"{}\" stroke=\"#222\" stroke-width=\"{}\"/><text x=\"{}\" y=\"{}\">"
-        "{}</text></g>\n",
-        r.value, mm(margin), mm(y), mm(unit * 2), mm(unit * 1.2), r.fill, mm(unit * 0.05),
-        mm(margin + unit * 2.6), mm(y + unit), escape(r.text));
+        "<g class=\"legend-entry\" data-value=\"{}\">{}<text x=\"{}\" y=\"{}\">{}</text></g>\n",
+        r.value, swatches, mm(margin + unit * 2.6), mm(y + unit), escape(r.text));
   }
   out << "</g>\n";
 }

@@ -9,6 +9,7 @@
 
 #include "curdle/overlay.h"
 #include "curdle/palette.h"
+#include "layout/layout_kind.h"
 #include "layout/piece.h"
 
 namespace curdle {
@@ -18,6 +19,8 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
   std::vector<LegendEntry> legend(blend.size());
   auto packed = [](const Rgb& c) { return uint32_t{c.r} << 16 | uint32_t{c.g} << 8 | c.b; };
   std::map<std::tuple<std::string, uint32_t, std::vector<uint32_t>>, uint32_t> first_alike;
+  // A sheet's openings are bought as tool sizes, whatever colour draws them (quantities.csv).
+  const bool openings = spec.kind && spec.kind->ground() == Ground::sheet;
   for (uint32_t v = 0; v < blend.size(); ++v) {
     LegendEntry& entry = legend[v];
     entry.value = v;
@@ -30,8 +33,9 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
     }
     std::vector<uint32_t> parts;
     for (const Rgb& c : entry.parts) parts.push_back(packed(c));
-    entry.same_as =
-        first_alike.try_emplace({entry.label, packed(entry.colour), parts}, v).first->second;
+    if (openings) parts.clear();
+    const uint32_t colour = openings ? 0 : packed(entry.colour);
+    entry.same_as = first_alike.try_emplace({entry.label, colour, parts}, v).first->second;
   }
   return legend;
 }
@@ -44,9 +48,14 @@ std::vector<LegendLine> legend_lines(const std::vector<LegendEntry>& legend) {
     size_t& at = line_of[e.same_as];
     if (at == SIZE_MAX) {
       at = lines.size();
-      lines.push_back({&e, std::to_string(e.value), 0});
+      lines.push_back({&e, {&e}, std::to_string(e.value), 0});
     } else {
       lines[at].values += ", " + std::to_string(e.value);
+      std::vector<const LegendEntry*>& looks = lines[at].looks;
+      const auto alike = [&e](const LegendEntry* l) {
+        return l->colour == e.colour && l->parts == e.parts;
+      };
+      if (std::none_of(looks.begin(), looks.end(), alike)) looks.push_back(&e);
     }
     lines[at].count += e.count;
   }

@@ -21,7 +21,10 @@ std::vector<LegendEntry> make_legend(const Design& design, const LayoutSpec& spe
 // summed count, in value order of their first; values with no element are left out.
 struct LegendLine {
   const LegendEntry* entry = nullptr;  // the first value's entry: label, colour, parts
-  std::string values;                  // "2" or "2, 3"
+  // Every look the product is drawn in (the first value's, then each other colour or set of
+  // parts): a sheet's openings of one size are one line however their values are coloured.
+  std::vector<const LegendEntry*> looks;
+  std::string values;  // "2" or "2, 3"
   uint64_t count = 0;
 };
 std::vector<LegendLine> legend_lines(const std::vector<LegendEntry>& legend);
