@@ -72,7 +72,7 @@ def check_pattern(recipe, work):
             # planting.csv's and furniture.csv's columns on every layer (null where they say
             # nothing), and the zone each piece is booked to.
             for f in ("species", "girth_cm", "root_ball_mm", "pit_width_mm", "pit_length_mm",
-                      "zone"):
+                      "facing_deg", "zone"):
                 if defn.GetFieldIndex(f) < 0:
                     fail(f"{recipe.name}: layer {layer.GetName()} has no field {f}")
         key = feature.GetFieldAsString(at["element_id"])

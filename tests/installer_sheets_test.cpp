@@ -157,14 +157,15 @@ TEST_P(InstallerSheets, EveryIdReadsAndNoTwoLabelsOverlap) {
         ADD_FAILURE() << l.text << " lies on a caption or the start corner";
   EXPECT_EQ(covered, 0u);
   // No leader runs through another label, a caption or the start corner, or meets another
-  // leader, but those of crowded labels, which are few; in a park, none is crowded.
+  // leader, but those of crowded labels, which are few; in a park (trees standing where their
+  // cells put them, one may straddle a match line), under 1 %.
   EXPECT_EQ(leaders_crossing(plan, reserved), 0u);
   EXPECT_EQ(plan.over_labels,
             static_cast<size_t>(std::count_if(plan.labels.begin(), plan.labels.end(),
                                               [](const InstallerLabel& l) { return l.crowded; })));
   EXPECT_LE(plan.over_labels * 50, pieces.size()) << "more than 2 % of the leaders are crowded";
-  if (layout.kind->name() == "park") {
-    EXPECT_EQ(plan.over_labels, 0u);
+  if (layout.kind->name() == "park") {  // few pieces, room round them: under 1 %
+    EXPECT_LE(plan.over_labels * 100, pieces.size());
   }
   for (size_t i = 0; i < pieces.size(); ++i)
     if (plan.labels[i].crowded)

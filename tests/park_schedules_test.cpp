@@ -78,7 +78,11 @@ TEST(ParkSchedules, PlantsFurnitureAndSurfacesInLandscapeTerms) {
     const Element& e = *by_id.at(items[r][0]);
     EXPECT_EQ(items[r][1], "bench");
     EXPECT_EQ(std::stod(items[r][5]) * std::stod(items[r][6]), e.area());
-    EXPECT_EQ(items[r][7], "0");  // 1000 x 450: its long side along x
+    // 1000 x 450, turned to face its path: the long side square to the way it faces.
+    const int facing = std::stoi(items[r][8]);
+    EXPECT_TRUE(facing % 90 == 0 && facing >= 0 && facing < 360) << items[r][8];
+    EXPECT_EQ(items[r][7], facing % 180 == 0 ? "0" : "90") << e.id;
+    EXPECT_EQ(facing, static_cast<int>(e.turn));
   }
   double listed = 0;
   for (size_t r = 1; r < areas.size(); ++r) listed += std::stod(areas[r][2]) * 1e6;
@@ -146,7 +150,8 @@ TEST(ParkSchedules, SpeciesSizesPitsBearingsAndEdging) {
               (std::vector<std::string>{"16-18", "500", "1200", "1400"}));
   for (size_t r = 1; r < items.size(); ++r) {
     EXPECT_EQ(items[r][2], "Oak slats");
-    EXPECT_EQ(items[r][7], "90");
+    // Its front (the 450 mm side) faces its path: the 1000 mm side runs along the facing.
+    EXPECT_EQ(items[r][7], std::stoi(items[r][8]) % 180 == 0 ? "90" : "0") << items[r][0];
   }
   // Every surface piece is a rectangle of the park's grid: each one's edge to another
   // material or the site's edge, summed by brute force, is what surfaces.csv lists.

@@ -271,22 +271,156 @@ elements = [
       EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
     }
   }
-  // Cells 3 m, the site 11 m wide: the fourth column's cell is 2 m wide, a 2 m pit centred in
-  // its 3 m slot would run 0.5 m past the site's edge.
+  // Cells 3 m, the site 11 m wide: the fourth column's cell is 2 m wide. A 2 m pit may reach
+  // past its cell into the neighbour's ground, never past the site's edge or into another pit:
+  // the pits had to lie within their cells, and that column's trees were all left out.
   Design d = r.design;
   const Layout layout = make_layout(d, curdle(d, r.seed, d.field), d.field, *r.layout);
-  size_t trees = 0;
+  std::vector<Rect> pits;
+  size_t past_the_cell = 0;
   for (const Element& e : layout.elements) {
     if (!e.stands) continue;
-    ++trees;
     const std::optional<Rect> pit = tree_pit(layout, e);
     ASSERT_TRUE(pit) << e.id;
+    EXPECT_GE(pit->x, -1e-9) << e.id;
+    EXPECT_GE(pit->y, -1e-9) << e.id;
     EXPECT_LE(pit->right(), layout.width + 1e-9) << e.id;
     EXPECT_LE(pit->top(), layout.height + 1e-9) << e.id;
+    for (const Rect& other : pits) EXPECT_FALSE(overlaps(other, *pit)) << e.id;
+    past_the_cell += pit->x < e.nominal.x - 1e-9 || pit->right() > e.nominal.right() + 1e-9;
+    pits.push_back(*pit);
   }
-  EXPECT_EQ(trees, 12u);  // 4 x 4 cells, one column too narrow for its pit
-  ASSERT_FALSE(layout.notes.empty());
-  EXPECT_NE(layout.notes.back().find("tree pit"), std::string::npos) << layout.notes.back();
+  EXPECT_GE(pits.size(), 14u);  // of 16 cells; 12 when pits kept to their cells
+  EXPECT_GT(past_the_cell, 0u);
+}
+
+// Trees stand where their cell's own stream puts them in their slot, not on a grid at the
+// cells' centres; a cell places its tree alike in any window of the field (the stream is keyed
+// by the field cell), and a zone asks for trees by the curd's name.
+TEST(Park, TreesStandOffTheGridAsTheirCellsDrawThem) {
+  const Design d = test::design(4, 2, {{"1", "1"}, {"1/2", "1/2"}, {"1/2", "1/2"}});
+  LayoutSpec spec = test::trees_and_benches();
+  spec.size = std::array<double, 2>{24000, 24000};
+  const Layout layout = lay_floor(d, spec, 7);
+  std::set<long> offsets_x, offsets_y;
+  size_t trees = 0;
+  for (const Element& e : layout.elements) {
+    if (!e.stands || !e.circle) continue;
+    ++trees;
+    offsets_x.insert(std::lround(e.circle->cx - (e.nominal.x + e.nominal.w / 2)));
+    offsets_y.insert(std::lround(e.circle->cy - (e.nominal.y + e.nominal.h / 2)));
+    // Whole in the cell, clear of its edges by the clearance.
+    EXPECT_GE(e.circle->cx - 500, e.nominal.x + 300 - 1e-9) << e.id;
+    EXPECT_LE(e.circle->cy + 500, e.nominal.top() - 300 + 1e-9) << e.id;
+  }
+  ASSERT_GE(trees, 30u);
+  EXPECT_GT(offsets_x.size(), trees / 2);  // one offset for every tree on a grid
+  EXPECT_GT(offsets_y.size(), trees / 2);
+  // The same seed places every tree of a cell alike in a window of a larger field.
+  Design larger = d;
+  larger.field.size = {16, 16, 1};
+  const CurdField big = curdle(larger, 7, larger.field);
+  const Box window{{0, 0, 0}, {8, 8, 1}};
+  const Layout again = make_layout(larger, big, window, spec);
+  std::map<std::string, std::array<double, 2>> at;
+  for (const Element& e : layout.elements)
+    if (e.circle) at[e.id] = {e.circle->cx, e.circle->cy};
+  size_t same = 0;
+  for (const Element& e : again.elements)
+    if (e.circle && at.count(e.id) && at[e.id] == std::array<double, 2>{e.circle->cx, e.circle->cy})
+      ++same;
+  EXPECT_GT(same, 0u);
+}
+
+// A bench turns to face the nearest piece of the path it is to face (the ground by default,
+// or a surface or zone the recipe names), its long side square to that way; an unknown name
+// is refused with those that exist.
+TEST(Park, BenchesFaceThePathOrTheZoneNamed) {
+  const Design d = test::design(4, 2, {{"1/2", "1/2"}, {"3/4", "3/4"}, {"1/2", "1/2"}});
+  LayoutSpec spec = test::trees_and_benches();
+  spec.size = std::array<double, 2>{24000, 24000};
+  const Layout layout = lay_floor(d, spec, 3);
+  std::vector<Rect> ground;
+  for (const Element& e : layout.elements)
+    if (e.type == "white paving") ground.push_back(laid_bounds(e));
+  size_t benches = 0;
+  for (const Element& e : layout.elements) {
+    if (e.type != "bench") continue;
+    ++benches;
+    const Rect b = laid_bounds(e);
+    const int facing = static_cast<int>(e.turn);
+    EXPECT_EQ(b.w > b.h, facing % 180 == 0) << e.id;  // 1000 x 450: its front is the long side
+    // Some ground lies that way from its front, outside its own cell.
+    const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
+    bool ahead = false;
+    for (const Rect& g : ground) {
+      if (overlaps(g, e.nominal)) continue;
+      ahead |= (facing == 0 && g.y >= cy) || (facing == 180 && g.top() <= cy) ||
+               (facing == 90 && g.x >= cx) || (facing == 270 && g.right() <= cx);
+    }
+    EXPECT_TRUE(ahead) << e.id << " faces " << facing;
+  }
+  ASSERT_GT(benches, 3u);
+  // Facing a zone: a bench west of it faces east.
+  LayoutSpec zoned = spec;
+  Zone lawn;
+  lawn.name = "lawn";
+  lawn.rule = ZoneRule::value;
+  lawn.value = 0;
+  lawn.polygon = {{20000, 0}, {24000, 0}, {24000, 24000}, {20000, 24000}};
+  zoned.zones = {lawn};
+  zoned.own<ParkKeys>().elements[1].faces = "lawn";
+  const Layout facing_lawn = lay_floor(d, zoned, 3);
+  size_t east = 0, all = 0;
+  for (const Element& e : facing_lawn.elements)
+    if (e.type == "bench" && e.nominal.right() <= 20000) ++all, east += e.turn == 90;
+  ASSERT_GT(all, 0u);
+  EXPECT_EQ(east, all);
+}
+
+// A zone asks for trees by the curd's name, and a bench's `faces` must name a surface or a
+// zone: anything else is refused with the names there are.
+TEST(Park, ZonesAskForTreesByNameAndFacesNamesWhatExists) {
+  const std::string head = R"(name = "grove"
+[lattice]
+base = 2
+dimension = 2
+[[curds]]
+name = "tree"
+probabilities = ["1/2", "1/2"]
+[[curds]]
+name = "bench"
+probabilities = ["1/2", "1/2"]
+[layout]
+kind = "park"
+cell = [3000, 3000]
+area = [12000, 12000]
+zones = [{ name = "grove", rect = [0, 0, 6000, 6000], rule = "value", value = "tree" }]
+)";
+  const std::string elements =
+      "elements = [{ type = \"tree\", shape = \"circle\", size = [1000, 1000] },\n"
+      "  { type = \"bench\", shape = \"rectangle\", size = [1500, 500], faces = ";
+  const Recipe r = parse_recipe(head + elements + "\"grove\" }]\n", "p");
+  EXPECT_EQ(r.layout->zones.at(0).value, 1u);
+  Design d = r.design;
+  const Layout layout = make_layout(d, curdle(d, 2, d.field), d.field, *r.layout);
+  size_t in_grove = 0;
+  for (const Element& e : layout.elements)
+    if (e.stands && e.circle && e.circle->cx < 6000 && e.circle->cy < 6000) ++in_grove;
+  EXPECT_EQ(in_grove, 4u);  // every cell of the zone holds a tree
+  for (const auto& [value, says] : std::vector<std::pair<std::string, std::string>>{
+           {"\"oak\" }]", "\"tree\", \"bench\", \"tree+bench\""},
+           {"\"pond\" }]", "no surface's type or zone's name here: \"white paving\", \"grove\""}}) {
+    const bool zone = value.find("oak") != std::string::npos;
+    std::string text = head + elements + (zone ? "\"grove\" }]" : value) + "\n";
+    if (zone) text.replace(text.find("value = \"tree\""), 14, "value = \"oak\"");
+    try {
+      parse_recipe(text, "p");
+      ADD_FAILURE() << value << " was taken";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace curdle

@@ -42,6 +42,7 @@ const std::vector<GisField> kFields{{"element_id", T::text},
                                     {"root_ball_mm", T::real},
                                     {"pit_width_mm", T::real},
                                     {"pit_length_mm", T::real},
+                                    {"facing_deg", T::integer},
                                     {"zone", T::text}};
 
 std::string number(double v) { return fmt::format("{}", v); }
@@ -65,7 +66,7 @@ std::string given(double v) { return v > 0 ? number(v) : std::string(); }
 // A tree's or a bench's planting columns as planting.csv and furniture.csv give them, and every
 // piece's zone as the schedules book it.
 std::vector<std::string> planting_values(const Layout& layout, const Element& e) {
-  std::vector<std::string> out(6);
+  std::vector<std::string> out(7);
   if (e.stands) {
     const PlantingSpec& p = planting_of(layout, e);
     out[0] = p.species;
@@ -73,8 +74,9 @@ std::vector<std::string> planting_values(const Layout& layout, const Element& e)
     out[2] = given(p.root_ball);
     out[3] = given(p.pit[0]);
     out[4] = given(p.pit[1]);
+    if (!e.circle) out[5] = std::to_string(static_cast<int>(e.turn));  // a bench's facing
   }
-  out[5] = zone_of_element(layout, e);
+  out[6] = zone_of_element(layout, e);
   return out;
 }
 

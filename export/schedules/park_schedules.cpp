@@ -45,16 +45,18 @@ void write_planting_csv(std::ostream& out, const Layout& layout) {
 
 void write_furniture_csv(std::ostream& out, const Layout& layout) {
   out << kUtf8Mark
-      << "element_id,item,product,centre_x_mm,centre_y_mm,width_mm,depth_mm,long_side_deg,value,"
-         "zone\r\n";
+      << "element_id,item,product,centre_x_mm,centre_y_mm,width_mm,depth_mm,long_side_deg,"
+         "facing_deg,value,zone\r\n";
   for (const Element& e : layout.elements) {
     if (!e.stands || e.circle) continue;
     const auto [x, y] = centre(e);
     const Rect b = laid_bounds(e);
     const int long_side = b.w >= b.h ? 0 : 90;  // objects stand square to the grid
-    out << fmt::format("{},{},{},{},{},{},{},{},{},{}\r\n", e.id, csv_field(e.type),
+    // The way a seated person looks, degrees clockwise from the drawing's north (+y).
+    const int facing = static_cast<int>(e.turn);
+    out << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\r\n", e.id, csv_field(e.type),
                        csv_field(planting_of(layout, e).species), mm_text(x), mm_text(y),
-                       mm_text(b.w), mm_text(b.h), long_side, e.value,
+                       mm_text(b.w), mm_text(b.h), long_side, facing, e.value,
                        csv_field(zone_of_element(layout, e)));
   }
 }

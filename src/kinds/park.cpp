@@ -21,6 +21,7 @@ std::unique_ptr<KindKeys> ParkKind::default_keys() const { return std::make_uniq
 void ParkKind::read_own(reading::TableReader& r, const Design& design, LayoutSpec& spec) const {
   reading::read_park(r, design, spec);
   reading::read_zones(r, design, spec);
+  reading::check_park_faces(r, spec);
 }
 
 void ParkKind::replace_cells(Layout& layout, const Design& design, const LayoutSpec& spec) const {

@@ -2,7 +2,9 @@
 // a surface (grey paving) or an object (a tree, a bench); cells where no surface survived keep
 // the ground (white paving). Elements that share a cell all stay (a + b = ab): surfaces split
 // the cell in strips, objects stand in slots along its longer side, clear of each other and of
-// the cell's edge by the recipe's clearance.
+// the cell's edge by the recipe's clearance, each where the cell's own random stream puts it
+// in its slot (park_placing.h); a tree pit may reach past the cell into laid ground no other
+// object or pit holds, and a bench stands at its slot's edge facing the path or zone named.
 #pragma once
 
 #include <string>
@@ -23,6 +25,9 @@ struct ParkElement {
   double w = 0, h = 0;   // objects: footprint, mm
   Rgb colour;
   PlantingSpec order;  // objects: species, girth, root ball and pit
+  // A rectangular object (a bench): the surface type or zone it turns to face; empty: the
+  // ground, where no surface survived (the path people walk on).
+  std::string faces;
 };
 
 struct ParkKeys : KindKeysOf<ParkKeys> {
@@ -69,6 +74,8 @@ std::vector<Rect> object_slots(const Rect& cell, size_t count, double clearance)
 namespace reading {
 // The kind's own keys: the elements per curd, the ground and the clearance.
 void read_park(TableReader& r, const Design& design, LayoutSpec& spec);
+// Each object's `faces` names a surface's type or a zone (read after the zones).
+void check_park_faces(TableReader& r, const LayoutSpec& spec);
 }  // namespace reading
 
 }  // namespace curdle

@@ -1,5 +1,7 @@
 // [layout] of kind "park": what each curd places in its cells, the ground and the clearance
 // (Cirovic 2014, fig. 5).
+#include <algorithm>
+
 #include "curdle/markov.h"
 #include "kinds/park.h"
 #include "recipe/layout_reader.h"
@@ -74,6 +76,9 @@ ParkElement read_park_element(TableReader& r, bool ground) {
     const auto size = read_mm_pair(r, "size", true);
     e.w = (*size)[0], e.h = e.round ? (*size)[0] : (*size)[1];
     e.order = read_planting(r);
+    e.faces = read_name(r, "faces", "a surface's type or a zone's name").value_or("");
+    if (!e.faces.empty() && e.round)
+      r.fail("faces", "is for a rectangular object (a bench); a round one faces every way");
   }
   return e;
 }
@@ -100,9 +105,9 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
     const std::string path = "layout.elements." + std::to_string(i);
     if (!a->get(i)->as_table())
       r.fail_node(*a->get(i), path, "must be a table {type = ..., form = ...}");
-    TableReader er(
-        *a->get(i)->as_table(), path, r.source(),
-        {"type", "form", "shape", "size", "colour", "species", "girth", "root_ball", "pit"});
+    TableReader er(*a->get(i)->as_table(), path, r.source(),
+                   {"type", "form", "shape", "size", "colour", "species", "girth", "root_ball",
+                    "pit", "faces"});
     spec.own<ParkKeys>().elements.push_back(read_park_element(er, false));
     objects += !spec.own<ParkKeys>().elements.back().surface;
   }
@@ -124,6 +129,22 @@ void read_park(TableReader& r, const Design& design, LayoutSpec& spec) {
                       std::to_string(static_cast<int>(std::max(0.0, slots[0].w))) + " x " +
                       std::to_string(static_cast<int>(std::max(0.0, slots[0].h))) +
                       " mm); use smaller elements, a larger cell or less clearance");
+  }
+}
+
+void check_park_faces(TableReader& r, const LayoutSpec& spec) {
+  const ParkKeys& park = spec.own<ParkKeys>();
+  std::vector<std::string> known{park.ground.type};
+  for (const ParkElement& e : park.elements)
+    if (e.surface) known.push_back(e.type);
+  for (const Zone& z : spec.zones) known.push_back(z.name);
+  for (size_t i = 0; i < park.elements.size(); ++i) {
+    const std::string& faces = park.elements[i].faces;
+    if (faces.empty() || std::find(known.begin(), known.end(), faces) != known.end()) continue;
+    std::string list;
+    for (const std::string& k : known) list += (list.empty() ? "\"" : ", \"") + k + "\"";
+    r.fail("elements", "element " + std::to_string(i) + " faces \"" + faces +
+                           "\", which is no surface's type or zone's name here: " + list);
   }
 }
 

@@ -29,6 +29,7 @@ Layout SurfaceKind::build(const Design& design, const CurdField& field, const Bo
   after_laying(layout, spec);
   if (laid_on_a_grid()) check_cut_widths(layout, spec, openings(spec));
   count_values(layout, design, spec);
+  layout.source.seed = field.seed;  // a kind's own draws (where a park's objects stand)
   replace_cells(layout, design, spec);
   return layout;
 }

@@ -316,7 +316,9 @@ struct Element {
   int sheet = -1;                   // perforation: the fabrication sheet it is cut in
   Rgb colour;                       // park: the element's own colour
   bool stands = false;              // park: an object standing on the ground (tree, bench)
-  double turn = 0;   // a pattern's unit: its long side (a hexagon: a flat's normal) from x, °
+  // A pattern's unit: its long side (a hexagon: a flat's normal) from x, °. A park's bench:
+  // the way it faces, ° clockwise from north (+y): 0, 90, 180 or 270.
+  double turn = 0;
   int corner = -1;   // a building's unit that turns the corner at the end of frames[corner]
   double depth = 0;  // a building's unit: into the wall (a header's length), mm; 0: the wall's
   UnitPart part = UnitPart::whole;  // a building's unit: its part in the bond

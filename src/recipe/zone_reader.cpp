@@ -1,11 +1,13 @@
 // layout.outline = [[x, y], ...], and [[layout.zones]]: name, rect = [x, y, w, h] or
-// polygon = [[x, y], ...] in millimetres, and rule = "exclude" or rule = "value" with value = N.
+// polygon = [[x, y], ...] in millimetres, and rule = "exclude" or rule = "value" with value = N
+// or the curds' names ("tree+bench").
 // A vertex [x, y, bulge] makes the edge to the next an arc (contour.h).
 #include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "curdle/overlay.h"
 #include "curdle/text.h"
 #include "layout/contour.h"
 #include "layout/zone.h"
@@ -40,7 +42,26 @@ Polygon read_rect(TableReader& r) {
   return rect_polygon(Rect{v[0], v[1], v[2], v[3]});
 }
 
-Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size, double tolerance) {
+// A value rule's value: a number, or what the curds place in it by name ("tree", "tree+bench"),
+// as the legend names the values.
+uint32_t read_zone_value(TableReader& r, const std::vector<std::string>& labels) {
+  const toml::node* n = r.get("value");
+  if (n && n->is_string()) {
+    const std::string name = n->as_string()->get();
+    for (uint32_t v = 0; v < labels.size(); ++v)
+      if (labels[v] == name) return v;
+    std::string known;
+    for (uint32_t v = 1; v < labels.size(); ++v)
+      known += (v > 1 ? ", \"" : "\"") + labels[v] + "\"";
+    r.fail("value", "must be a value 0 to " + std::to_string(labels.size() - 1) +
+                        " or the curds it holds by name: " + known);
+  }
+  return static_cast<uint32_t>(
+      read_int(r, "value", 0, 0, static_cast<int64_t>(labels.size()) - 1, /*required=*/true));
+}
+
+Zone read_zone(TableReader& r, const std::vector<std::string>& labels,
+               const std::array<double, 2>& size, double tolerance) {
   Zone z;
   z.name = read_name(r, "name", "a name").value_or("");
   if (z.name.empty() || z.name.size() > 200)
@@ -67,12 +88,12 @@ Zone read_zone(TableReader& r, size_t values, const std::array<double, 2>& size,
     if (const auto rects = as_rectangles(z.polygon)) z.rects = *rects;
   } else if (rule == "value") {
     z.rule = ZoneRule::value;
-    z.value = static_cast<uint32_t>(
-        read_int(r, "value", 0, 0, static_cast<int64_t>(values) - 1, /*required=*/true));
+    z.value = read_zone_value(r, labels);
   } else {
     r.fail("rule",
            "must be \"exclude\" (no elements: planters, drains, columns) or \"value\" with value = "
-           "N (every element whose centre it holds takes value N)");
+           "N or the curds by name, e.g. \"tree\" (every element whose centre it holds takes "
+           "that value)");
   }
   return z;
 }
@@ -225,11 +246,12 @@ void read_zones(TableReader& r, const Design& design, LayoutSpec& spec) {
            "polygon, and rule");
   if (!spec.size)
     r.fail("zones", "need the surface's size in mm (the layout's floor, wall or size key)");
-  const size_t values = size_t{1} << design.curds.size();
+  std::vector<std::string> labels(size_t{1} << design.curds.size());
+  for (uint32_t v = 0; v < labels.size(); ++v) labels[v] = value_label(v, design.curds);
   for (size_t i = 0; i < a->size(); ++i) {
     TableReader zr(*a->get(i)->as_table(), r.key_path("zones." + std::to_string(i)), r.source(),
                    {"name", "rect", "polygon", "rule", "value"});
-    spec.zones.push_back(read_zone(zr, values, *spec.size, spec.chord_tolerance));
+    spec.zones.push_back(read_zone(zr, labels, *spec.size, spec.chord_tolerance));
   }
 }
 
