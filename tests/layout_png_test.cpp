@@ -26,4 +26,22 @@ TEST(Layout, PngColoursEachElementAndRecordsItsScale) {
   }
 }
 
+// Pieces that meet inside a pixel share it with no light seam: each takes its share from the
+// ground, where one painted over the other left a quarter of the ground showing (a park's
+// cells of one material were ruled by light lines at 200 dpi).
+TEST(Layout, PiecesMeetingInsideAPixelLeaveNoSeam) {
+  const Design d = design(4, 2, {{"1", "1"}});
+  LayoutSpec spec = test::layout_spec();  // no joints: the pieces meet
+  spec.combine = Combine::keep;           // on white: the ground differs from every piece
+  Layout layout = make_layout(d, curdle(d, 1, d.field), d.field, spec);
+  layout.drawing.scale = 10, layout.drawing.dpi = 254 / 7.0;  // 1 px = 7 mm: edges mid-pixel
+  const PreviewImage png = render_layout(layout);
+  size_t off = 0;
+  for (int y = 0; y + 1 < png.height; ++y)  // the last row and column run past the surface
+    for (int x = 0; x + 1 < png.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        off += std::abs(png.rgb[(static_cast<size_t>(y) * png.width + x) * 3 + c] - png.rgb[c]) > 1;
+  EXPECT_EQ(off, 0u);  // every pixel the pieces' one colour
+}
+
 }  // namespace curdle

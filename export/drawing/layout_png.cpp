@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "curdle/error.h"
 #include "curdle/stop.h"
@@ -22,6 +23,18 @@ struct Canvas {
   PageBuffer pixels{0};  // tens of MB for a sheet's layout: on pages of its own
   float* rgb = nullptr;  // in `pixels`, set once to the background
   size_t size = 0;
+  // Set while pieces that never overlap are painted: each takes its share of a pixel from
+  // the ground under it, so that two pieces meeting inside a pixel leave no light seam (one
+  // painted over the other leaves a quarter of the ground showing).
+  std::optional<Rgb> ground;
+
+  void blend(float* p, double a, const Rgb& c) const {
+    const float g[3] = {ground ? ground->r : p[0], ground ? ground->g : p[1],
+                        ground ? ground->b : p[2]};
+    p[0] += static_cast<float>(a * (c.r - g[0]));
+    p[1] += static_cast<float>(a * (c.g - g[1]));
+    p[2] += static_cast<float>(a * (c.b - g[2]));
+  }
 
   // Paints an axis-aligned rectangle (mm, y up) weighting each pixel by the share it covers.
   void fill(const Rect& r, const Rgb& c) {
@@ -36,10 +49,7 @@ struct Canvas {
       for (int x = ix0; x <= ix1; ++x) {
         const double a = cy * (std::min<double>(x + 1, x1) - std::max<double>(x, x0));
         if (a <= 0) continue;
-        float* p = &rgb[(static_cast<size_t>(y) * width + x) * 3];
-        p[0] += static_cast<float>(a * (c.r - p[0]));
-        p[1] += static_cast<float>(a * (c.g - p[1]));
-        p[2] += static_cast<float>(a * (c.b - p[2]));
+        blend(&rgb[(static_cast<size_t>(y) * width + x) * 3], a, c);
       }
     }
   }
@@ -61,10 +71,7 @@ struct Canvas {
                            layout_height - (y + (sy + 0.5) / 4) / px_per_mm);
         if (!hits) continue;
         const double a = hits / 16.0;
-        float* p = &rgb[(static_cast<size_t>(y) * width + x) * 3];
-        p[0] += static_cast<float>(a * (c.r - p[0]));
-        p[1] += static_cast<float>(a * (c.g - p[1]));
-        p[2] += static_cast<float>(a * (c.b - p[2]));
+        blend(&rgb[(static_cast<size_t>(y) * width + x) * 3], a, c);
       }
   }
 
@@ -114,10 +121,7 @@ struct Canvas {
       for (int x = first; x <= last; ++x) {
         if (!hits[static_cast<size_t>(x)]) continue;
         const double a = hits[static_cast<size_t>(x)] / 16.0;
-        float* p = &rgb[(static_cast<size_t>(y) * width + x) * 3];
-        p[0] += static_cast<float>(a * (colour.r - p[0]));
-        p[1] += static_cast<float>(a * (colour.g - p[1]));
-        p[2] += static_cast<float>(a * (colour.b - p[2]));
+        blend(&rgb[(static_cast<size_t>(y) * width + x) * 3], a, colour);
       }
     }
   }
@@ -160,6 +164,8 @@ PreviewImage render_layout(const Layout& layout) {
     stop_point();
     if (!layout.views.empty()) break;  // blocks are drawn as their views
     const LegendEntry& entry = layout.legend[e.value];
+    // Pieces tile the surface; a park's standing objects are painted over its ground.
+    canvas.ground = e.stands ? std::nullopt : std::optional<Rgb>(background);
     if (!e.type.empty()) {  // park: each element in its own colour
       if (e.circle) canvas.fill(*e.circle, e.colour);
       if (e.outline) canvas.fill(*e.outline, e.colour);
@@ -178,6 +184,7 @@ PreviewImage render_layout(const Layout& layout) {
     for (const ColouredRect& stripe : keep_stripes(layout, e))
       canvas.fill(stripe.rect, stripe.colour);
   }
+  canvas.ground.reset();
   PreviewImage image;
   image.width = canvas.width;
   image.height = canvas.height;
