@@ -9,6 +9,8 @@
 #include <cmath>
 #include <vector>
 
+#include "layout_support.h"
+
 namespace curdle::sheet_drawing {
 namespace {
 
@@ -122,6 +124,33 @@ TEST(SheetDrawing, RingsLeaveOutCornersCloserThanAHundredthOfAMillimetreOnPaper)
     }
     EXPECT_LT(nearest, 0.02) << x << ", " << y;
   }
+}
+
+// Pieces that meet (no joints) are filled one path a colour: filled one by one, a reader that
+// smooths each fill's edges left a light seam where two pieces of a material meet.
+TEST(SheetDrawing, PiecesThatMeetLeaveNoSeam) {
+  const Design d = test::design(4, 2, {{"1", "1"}});
+  LayoutSpec spec = test::layout_spec();  // no joints: the pieces meet
+  spec.combine = Combine::keep;           // on white: the ground differs from every piece
+  const Layout layout = make_layout(d, curdle(d, 1, d.field), d.field, spec);
+  View v;
+  v.window = Rect{0, 0, layout.width, layout.height};
+  v.scale = 7;  // a pixel a paper mm: 7 mm, so that the pieces' edges fall inside pixels
+  const int w = static_cast<int>(layout.width / 7), h = static_cast<int>(layout.height / 7);
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
+  cairo_t* cr = cairo_create(surface);
+  draw_pieces(cr, layout, v, false);
+  cairo_surface_flush(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  auto channel = [&](int x, int y, int c) { return int{data[y * stride + x * 4 + c]}; };
+  size_t off = 0;  // pixels more than a rounding from the first
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) off += std::abs(channel(x, y, c) - channel(0, 0, c)) > 2;
+  EXPECT_EQ(off, 0u);
+  cairo_destroy(cr);
+  cairo_surface_destroy(surface);
 }
 
 }  // namespace

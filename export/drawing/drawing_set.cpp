@@ -74,10 +74,10 @@ void draw_overview(cairo_t* cr, const Layout& layout, const OverviewSheet& s, si
   cairo_stroke(cr);
   start_corner(cr, layout, v);
   draw_facades(cr, layout, v);
-  setting_out(cr, layout, v);
+  const double strip = h - kMargin - kTitleStrip;
+  setting_out(cr, layout, v, strip - 1);
   // A curved wall's setting-out plan where the sheet has more room, above the elevation or
   // below it (clear of its setting-out marks and caption, and of the scale bar).
-  const double strip = h - kMargin - kTitleStrip;
   const double above = v.top - kMargin - 12, below_y = v.top + layout.height / s.scale + 18;
   const double below = strip - 12 - below_y;
   if (std::max(above, below) > 30)

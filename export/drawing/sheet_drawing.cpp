@@ -9,7 +9,6 @@
 #include "curdle/stop.h"
 #include "export/drawing/opening_dots.h"
 #include "export/drawing/svg.h"
-#include "layout/arc_setting_out.h"
 #include "layout/installer_sheets.h"
 #include "layout/piece.h"
 #include "layout/title_block.h"
@@ -129,6 +128,55 @@ void box(cairo_t* cr, double x, double y, double w, double h, double line) {
   cairo_stroke(cr);
 }
 
+// The flat pieces of a drawing: a rectangle, or an outline with its holes. Where pieces meet
+// (no joints), by colour in the order the colours first come, each colour one path filled once,
+// so that a reader that smooths each fill's edges leaves no light seam between two pieces of a
+// material; with joints between them, each filled as it comes (a smaller, faster PDF).
+class FlatFills {
+ public:
+  struct Shape {
+    Rect rect;
+    const Outline* outline = nullptr;
+  };
+  FlatFills(cairo_t* cr, const View& v, double alpha, bool meeting)
+      : cr_(cr), v_(v), alpha_(alpha), meeting_(meeting) {}
+  void add(const Rgb& c, const Shape& shape) {
+    if (!meeting_) return fill(c, {shape});
+    const uint32_t key = uint32_t{c.r} << 16 | uint32_t{c.g} << 8 | c.b;
+    const auto [at, added] = index_.try_emplace(key, fills_.size());
+    if (added) fills_.push_back({c, {}});
+    fills_[at->second].second.push_back(shape);
+  }
+  void draw() const {
+    for (const auto& [c, shapes] : fills_) stop_point(), fill(c, shapes);
+  }
+
+ private:
+  // One path; even-odd, so that an outline's holes stay open (pieces never overlap).
+  void fill(const Rgb& c, const std::vector<Shape>& shapes) const {
+    colour(cr_, c, alpha_);
+    cairo_new_path(cr_);
+    bool outlines = false;
+    for (const Shape& s : shapes) {
+      if (s.outline)
+        add_rings(cr_, s.outline->rings, v_), outlines = true;
+      else
+        v_.rect(cr_, s.rect);
+    }
+    cairo_set_fill_rule(
+        cr_, outlines || shapes.size() > 1 ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+    cairo_fill(cr_);
+    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+  }
+
+  cairo_t* cr_;
+  const View& v_;
+  double alpha_;
+  bool meeting_;
+  std::map<uint32_t, size_t> index_;
+  std::vector<std::pair<Rgb, std::vector<Shape>>> fills_;
+};
+
 // The layout's pieces as vectors; `faint` washes the colours out so that labels read over them.
 void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
   const double alpha = faint ? kFaintAlpha : 1;
@@ -154,45 +202,41 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
     cairo_fill(cr);
   }
   if (!layout.views.empty()) return;  // blocks are drawn as their views
+  FlatFills flat(cr, v, alpha, layout.joint <= 0);
   OpeningDots dots;
   for_each_element(layout, v, [&](const Element& e) {
     stop_point();
     if (!v.shows(laid_bounds(e))) return;
     const Rgb& c = e.type.empty() ? layout.legend[e.value].colour : e.colour;
     if (OpeningDots::takes(e)) return dots.add(e, c, v);  // drawn after the rest, as dots
-    if (e.circle) {  // a park's round element, drawn in its turn
-      colour(cr, c, alpha);
-      cairo_new_path(cr);
-      cairo_arc(cr, v.x(e.circle->cx), v.y(e.circle->cy), e.circle->d / 2 / v.scale, 0, 2 * M_PI);
-      cairo_fill(cr);
-    }
-    if (const std::optional<Rect> pit = tree_pit(layout, e)) {  // dashed, as dug below ground
-      colour(cr, kInk);
-      const double dash[] = {1.0, 0.6};
-      cairo_set_dash(cr, dash, 2, 0);
-      cairo_set_line_width(cr, 0.2);
-      v.rect(cr, *pit);
-      cairo_stroke(cr);
-      cairo_set_dash(cr, nullptr, 0, 0);
-    }
-    if (e.outline) {
-      colour(cr, c, alpha);
-      ring_paths(cr, e.outline->rings, v);
-      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
-      cairo_fill(cr);
-      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
-    }
-    if (e.circle || e.outline) return;
+    if (e.circle) return;                                 // a park's round object: below
+    if (e.outline) return flat.add(c, {Rect{}, &*e.outline});
     if (!e.type.empty()) {
-      colour(cr, c, alpha);
-      for (const Rect& r : e.shape) v.rect(cr, r), cairo_fill(cr);
+      for (const Rect& r : e.shape) flat.add(c, {r, nullptr});
       return;
     }
-    for (const ColouredRect& stripe : keep_stripes(layout, e)) {
-      colour(cr, stripe.colour, alpha);
-      v.rect(cr, stripe.rect);
-      cairo_fill(cr);
-    }
+    for (const ColouredRect& stripe : keep_stripes(layout, e))
+      flat.add(stripe.colour, {stripe.rect, nullptr});
+  });
+  flat.draw();
+  // What stands on them: a park's round objects, and the tree pits dashed, as dug below ground.
+  for_each_element(layout, v, [&](const Element& e) {
+    if (!e.circle || OpeningDots::takes(e) || !v.shows(laid_bounds(e))) return;
+    colour(cr, e.type.empty() ? layout.legend[e.value].colour : e.colour, alpha);
+    cairo_new_path(cr);
+    cairo_arc(cr, v.x(e.circle->cx), v.y(e.circle->cy), e.circle->d / 2 / v.scale, 0, 2 * M_PI);
+    cairo_fill(cr);
+  });
+  for_each_element(layout, v, [&](const Element& e) {
+    const std::optional<Rect> pit = tree_pit(layout, e);
+    if (!pit || !v.shows(laid_bounds(e))) return;
+    colour(cr, kInk);
+    const double dash[] = {1.0, 0.6};
+    cairo_set_dash(cr, dash, 2, 0);
+    cairo_set_line_width(cr, 0.2);
+    v.rect(cr, *pit);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
   });
   dots.draw(cr, alpha);
 }
@@ -405,112 +449,6 @@ void draw_facades(cairo_t* cr, const Layout& layout, const View& v) {
       }
   }
   cairo_restore(cr);
-}
-
-namespace {
-
-// Each arc of the outline and zones named where it runs (A1 and its radius at its middle), with
-// a cross at its centre where that lies on the drawing; the list below the caption gives their
-// centres, radii and ends.
-void mark_arcs(cairo_t* cr, const Layout& layout, const View& v,
-               const std::vector<SetOutArc>& arcs) {
-  colour(cr, kBlue);
-  cairo_set_line_width(cr, 0.15);
-  for (const SetOutArc& a : arcs) {
-    const double cx = a.arc.centre[0], cy = a.arc.centre[1];
-    if (cx >= 0 && cy >= 0 && cx <= layout.width && cy <= layout.height) {
-      cairo_move_to(cr, v.x(cx) - 1.2, v.y(cy)), cairo_line_to(cr, v.x(cx) + 1.2, v.y(cy));
-      cairo_move_to(cr, v.x(cx), v.y(cy) - 1.2), cairo_line_to(cr, v.x(cx), v.y(cy) + 1.2);
-      cairo_stroke(cr);
-    }
-    if (a.circle) {
-      text(cr, v.x(cx) + 1.5, v.y(cy) + 2.8, "R " + drawing_mm(a.arc.radius), 1.6);
-      continue;
-    }
-    // The arc's middle, with the label a little towards its centre.
-    const double mid = a.arc.start_angle() + a.arc.sweep / 2;
-    const double mx = cx + a.arc.radius * std::cos(mid), my = cy + a.arc.radius * std::sin(mid);
-    const double in = 4 * v.scale;  // 4 mm on paper
-    text(cr, v.x(mx - in * std::cos(mid)), v.y(my - in * std::sin(mid)),
-         a.name + " R " + drawing_mm(a.arc.radius), 1.6, Align::centre);
-  }
-}
-
-}  // namespace
-
-void setting_out(cairo_t* cr, const Layout& layout, const View& v) {
-  if (layout.width <= 0 || layout.height <= 0 || !layout.views.empty()) return;
-  std::vector<double> xs{0, layout.width}, ys{0, layout.height};
-  auto add_ring = [&](const Polygon& ring) {
-    for (const auto& p : ring) xs.push_back(p[0]), ys.push_back(p[1]);
-  };
-  // An arc is set out by its ends and centre (listed below), not by its chords' corners.
-  auto add_shape = [&](const Polygon& polygon, const Contour& contour) {
-    add_ring(contour.empty() ? polygon : set_out_points(contour, layout.width, layout.height));
-  };
-  add_shape(layout.outline, layout.outline_contour);
-  for (size_t i = 0; i < layout.openings_given; ++i) {
-    const Rect& o = layout.openings[i];
-    xs.insert(xs.end(), {o.x, o.right()}), ys.insert(ys.end(), {o.y, o.top()});
-  }
-  for (const ZoneCount& z : layout.zones) add_shape(z.polygon, z.contour);
-  auto tidy = [](std::vector<double>& values, double high) {
-    for (double& x : values) x = std::clamp(std::round(x * 10) / 10, 0.0, high);
-    std::sort(values.begin(), values.end());
-    values.erase(std::unique(values.begin(), values.end()), values.end());
-  };
-  tidy(xs, layout.width), tidy(ys, layout.height);
-  // Away from the start corner, whose arrows and words lie along its two edges.
-  const bool below = from_top(layout.origin), left = from_right(layout.origin);
-  const double edge_y = below ? v.y(0) : v.y(layout.height);
-  const double edge_x = left ? v.x(0) : v.x(layout.width);
-  const double out_y = below ? 1 : -1, out_x = left ? -1 : 1;
-  constexpr double kText = 1.6, kGap = 2.2;  // mm on paper
-  colour(cr, kBlue);
-  cairo_set_line_width(cr, 0.15);
-  double last = -1e300;
-  for (const double x : xs) {
-    const double px = v.x(x);
-    if (px - last < kGap && x != layout.width) continue;
-    last = px;
-    cairo_move_to(cr, px, edge_y + out_y * 0.8), cairo_line_to(cr, px, edge_y + out_y * 2.4);
-    cairo_stroke(cr);
-    // Read bottom to top, beyond the tick.
-    const double ty = below ? edge_y + 3 + text_width(cr, drawing_mm(x), kText) : edge_y - 3;
-    text(cr, px + kText / 2, ty, drawing_mm(x), kText, Align::left, true);
-  }
-  last = -1e300;
-  for (const double y : ys) {
-    const double py = v.y(y);
-    if (last - py < kGap && y != layout.height && last > -1e299) continue;
-    last = py;
-    cairo_move_to(cr, edge_x + out_x * 0.8, py), cairo_line_to(cr, edge_x + out_x * 2.4, py);
-    cairo_stroke(cr);
-    text(cr, edge_x + out_x * 3, py + kText / 2, drawing_mm(y), kText,
-         left ? Align::right : Align::left);
-  }
-  const char* corner = from_top(layout.origin)
-                           ? (from_right(layout.origin) ? "top-right" : "top-left")
-                       : from_right(layout.origin) ? "bottom-right"
-                                                   : "bottom-left";
-  const std::string caption = fmt::format(
-      "setting out: mm from the datum (0, 0), the bottom-left corner; laying starts at the {} "
-      "corner ({}, {})",
-      corner, drawing_mm(from_right(layout.origin) ? layout.width : 0),
-      drawing_mm(from_top(layout.origin) ? layout.height : 0));
-  const double caption_y = below ? v.y(layout.height) - 2 : v.y(0) + 12;
-  text(cr, v.x(0), caption_y, caption, 1.8);
-  const std::vector<SetOutArc> arcs = arcs_to_set_out(layout);
-  if (arcs.empty()) return;
-  mark_arcs(cr, layout, v, arcs);
-  // Up to three lines of arcs under the caption (above it where the caption stands on top).
-  std::vector<std::string> lines;
-  for (size_t i = 0; i < arcs.size() && lines.size() < 3; ++i) lines.push_back(arcs[i].line);
-  if (arcs.size() > 3)
-    lines.back() += fmt::format("; {} more in the DXF (layer OUTLINE and ZONES)", arcs.size() - 3);
-  lines = fit_lines(cr, lines, std::max(40.0, v.x(layout.width) - v.x(0)), 1.6);
-  for (size_t i = 0; i < lines.size(); ++i)
-    text(cr, v.x(0), caption_y + (below ? -2.4 : 2.4) * static_cast<double>(i + 1), lines[i], 1.6);
 }
 
 }  // namespace curdle::sheet_drawing

@@ -135,8 +135,10 @@ void start_corner(cairo_t* cr, const Layout& layout, const View& v);
 // the x of every edge of the surface, its outline's corners, its openings and its zones along
 // the long side away from the start corner, their y along the other side, in mm, each with a
 // tick (those closer than a text's height to the last drawn are left out), and a caption that
-// names the datum and the corner where laying starts.
-void setting_out(cairo_t* cr, const Layout& layout, const View& v);
+// names the datum and the corner where laying starts. An arc is set out by its centre and ends,
+// a free curve by offsets at regular stations (curve_stations.h), listed under the caption as
+// far as `bottom` (paper mm) leaves room.
+void setting_out(cairo_t* cr, const Layout& layout, const View& v, double bottom);
 
 // The title block's width on a sheet `w` mm wide: 150 mm, less on narrow portrait sheets.
 double title_width(double w);
