@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "curdle/markov.h"
 #include "kinds/park.h"
@@ -77,13 +78,44 @@ struct Placed {
   }
 };
 
-// How much of r the laid cells hold (the site less its edge, outline and excluded zones).
-double laid_area(const std::vector<Element>& cells, const Rect& r) {
-  double area = 0;
-  for (const Element& c : cells)
-    if (overlaps(c.nominal, r)) area += within(c, r).area();
-  return area;
-}
+// The cells by where they stand on their grid, so that a pit asks only the cells round it.
+class CellGrid {
+ public:
+  explicit CellGrid(const std::vector<Element>& cells) : cells_(cells) {
+    if (cells.empty()) return;
+    pitch_x_ = std::max(cells[0].nominal.w, 1.0), pitch_y_ = std::max(cells[0].nominal.h, 1.0);
+    for (size_t i = 0; i < cells.size(); ++i) {
+      const Rect& n = cells[i].nominal;
+      // Cells of one size: a rectangle meets only those of its buckets and the ones before.
+      uniform_ = uniform_ && n.w <= pitch_x_ && n.h <= pitch_y_;
+      at_[{bucket(n.x, pitch_x_), bucket(n.y, pitch_y_)}].push_back(i);
+    }
+  }
+  // How much of r the laid cells hold (the site less its edge, outline and excluded zones).
+  double laid_area(const Rect& r) const {
+    double area = 0;
+    if (!uniform_) {
+      for (const Element& c : cells_)
+        if (overlaps(c.nominal, r)) area += within(c, r).area();
+      return area;
+    }
+    for (int64_t bx = bucket(r.x, pitch_x_) - 1; bx <= bucket(r.right(), pitch_x_); ++bx)
+      for (int64_t by = bucket(r.y, pitch_y_) - 1; by <= bucket(r.top(), pitch_y_); ++by)
+        if (const auto it = at_.find({bx, by}); it != at_.end())
+          for (const size_t i : it->second)
+            if (overlaps(cells_[i].nominal, r)) area += within(cells_[i], r).area();
+    return area;
+  }
+
+ private:
+  static int64_t bucket(double v, double pitch) {
+    return static_cast<int64_t>(std::floor(v / pitch));
+  }
+  const std::vector<Element>& cells_;
+  double pitch_x_ = 1, pitch_y_ = 1;
+  bool uniform_ = true;
+  std::map<std::pair<int64_t, int64_t>, std::vector<size_t>> at_;
+};
 
 // Where an object stands: its centre and footprint.
 struct Placing {
@@ -99,7 +131,7 @@ constexpr uint32_t kPlacingAttempts = 8;
 // other objects and pits; the slot's centre last. Nothing when none of those will do.
 std::optional<Placing> place(const Element& cell, const Rect& slot, const ParkElement& kind,
                              const std::array<double, 2>& size, int bearing, uint64_t seed,
-                             uint32_t member, const std::vector<Element>& cells, double clearance,
+                             uint32_t member, const CellGrid& cells, double clearance,
                              Placed& placed) {
   const double fw = size[0], fh = size[1];
   const double free_x = std::max(0.0, slot.w - fw), free_y = std::max(0.0, slot.h - fh);
@@ -128,7 +160,7 @@ std::optional<Placing> place(const Element& cell, const Rect& slot, const ParkEl
         Placed::any_overlap(placed.pits, footprint))
       continue;
     if (pit.area() > 0 &&
-        (laid_area(cells, pit) < pit.area() - kEps || Placed::any_overlap(placed.footprints, pit) ||
+        (cells.laid_area(pit) < pit.area() - kEps || Placed::any_overlap(placed.footprints, pit) ||
          Placed::any_overlap(placed.pits, pit)))
       continue;
     placed.footprints.push_back(footprint);
@@ -207,6 +239,7 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
     }
   }
   // Then the objects, each whole on the cell as laid or not at all.
+  const CellGrid grid(cells);
   Placed placed;
   size_t left_out = 0;
   for (size_t c = 0; c < cells.size(); ++c) {
@@ -232,7 +265,7 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
       }
       const std::optional<Placing> at =
           place(cell, slot, kind, {fw, fh}, bearing, layout.source.seed,
-                static_cast<uint32_t>(objects[i]), cells, park.clearance, placed);
+                static_cast<uint32_t>(objects[i]), grid, park.clearance, placed);
       if (!at) {
         ++left_out;
         continue;
