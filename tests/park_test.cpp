@@ -350,6 +350,13 @@ TEST(Park, BenchesFaceThePathOrTheZoneNamed) {
     const Rect b = laid_bounds(e);
     const int facing = static_cast<int>(e.turn);
     EXPECT_EQ(b.w > b.h, facing % 180 == 0) << e.id;  // 1000 x 450: its front is the long side
+    // Its backrest, drawn thick, on the side away from the way it faces.
+    const auto back = back_edge(e);
+    ASSERT_TRUE(back) << e.id;
+    const double bx = ((*back)[0][0] + (*back)[1][0]) / 2, by = ((*back)[0][1] + (*back)[1][1]) / 2;
+    EXPECT_TRUE((facing == 0 && by == b.y) || (facing == 180 && by == b.top()) ||
+                (facing == 90 && bx == b.x) || (facing == 270 && bx == b.right()))
+        << e.id;
     // Some ground lies that way from its front, outside its own cell.
     const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
     bool ahead = false;

@@ -9,6 +9,7 @@
 #include "export/drawing/page_buffer.h"
 #include "export/drawing/svg.h"
 #include "layout/drawing_sheet.h"
+#include "layout/ground_colour.h"
 #include "layout/piece.h"
 
 namespace curdle {
@@ -146,10 +147,7 @@ PreviewImage render_layout(const Layout& layout) {
                      std::to_string(canvas.height) + " pixels, above " +
                      std::to_string(kMaxPixels) +
                      " a side; use a larger layout.scale or lower layout.dpi");
-  const bool sheet = layout.kind->ground() == Ground::sheet;
-  const Rgb background = sheet              ? Rgb{201, 205, 210}
-                         : layout.joint > 0 ? layout.joint_colour
-                                            : seamless_background(layout);
+  const Rgb background = ground_colour(layout);
   canvas.size = static_cast<size_t>(canvas.width) * canvas.height * 3;
   canvas.pixels = PageBuffer(canvas.size * sizeof(float));
   canvas.rgb = canvas.pixels.as<float>();

@@ -9,6 +9,7 @@
 #include "curdle/stop.h"
 #include "export/drawing/opening_dots.h"
 #include "export/drawing/svg.h"
+#include "layout/ground_colour.h"
 #include "layout/installer_sheets.h"
 #include "layout/piece.h"
 #include "layout/title_block.h"
@@ -181,12 +182,7 @@ class FlatFills {
 void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
   const double alpha = faint ? kFaintAlpha : 1;
   const Rect all{0, 0, layout.width, layout.height};
-  const bool sheet = layout.kind->ground() == Ground::sheet;
-  colour(cr,
-         sheet              ? Rgb{201, 205, 210}
-         : layout.joint > 0 ? layout.joint_colour
-                            : seamless_background(layout),
-         faint ? 0.25 : 1);
+  colour(cr, ground_colour(layout), faint ? 0.25 : 1);
   v.rect(cr, all);
   cairo_fill(cr);
   colour(cr, Rgb{223, 234, 242});
@@ -226,6 +222,15 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
     cairo_new_path(cr);
     cairo_arc(cr, v.x(e.circle->cx), v.y(e.circle->cy), e.circle->d / 2 / v.scale, 0, 2 * M_PI);
     cairo_fill(cr);
+  });
+  colour(cr, kInk);  // a bench's backrest, so that the way it faces reads
+  cairo_set_line_width(cr, 0.35);
+  for_each_element(layout, v, [&](const Element& e) {
+    if (const auto back = back_edge(e); back && v.shows(laid_bounds(e))) {
+      cairo_move_to(cr, v.x((*back)[0][0]), v.y((*back)[0][1]));
+      cairo_line_to(cr, v.x((*back)[1][0]), v.y((*back)[1][1]));
+      cairo_stroke(cr);
+    }
   });
   for_each_element(layout, v, [&](const Element& e) {
     const std::optional<Rect> pit = tree_pit(layout, e);

@@ -10,6 +10,7 @@
 #include "curdle/stop.h"
 #include "curdle/text.h"
 #include "layout/contour.h"
+#include "layout/ground_colour.h"
 #include "layout/legend.h"
 #include "layout/piece.h"
 #include "layout/title_block.h"
@@ -237,6 +238,12 @@ void draw_park(std::ostream& out, const Layout& layout, const Sheet& s, double u
                   e->shape[0].h < e->nominal.h - 1e-6
               ? fmt::format(" stroke=\"#3a2a1a\" stroke-width=\"{}\"", mm(unit * 0.04))
               : "");
+      if (const auto back = back_edge(*e))  // a bench's backrest: the way it faces reads
+        out << fmt::format(
+            "<line class=\"back\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#222\" "
+            "stroke-width=\"{}\"/>\n",
+            mm(s.x((*back)[0][0])), mm(s.y((*back)[0][1])), mm(s.x((*back)[1][0])),
+            mm(s.y((*back)[1][1])), mm(unit * 0.12));
     }
     for (const GridRect& g : merge_runs(grid, layout.rows, layout.columns)) {
       write_merged(out, s, layout, at, g);
@@ -505,17 +512,6 @@ void draw_overlays_and_sheet(std::ostream& out, const Layout& layout, const Shee
 
 }  // namespace
 
-Rgb seamless_background(const Layout& layout) {
-  // With no joints, adjacent shapes meet edge to edge and antialiasing can let the background
-  // through the seam: the most common value's colour hides it. Lines and blocks stay on white.
-  if (layout.combine != Combine::mix || layout.kind->ground() == Ground::paper)
-    return Rgb{255, 255, 255};
-  const LegendEntry* most = nullptr;
-  for (const LegendEntry& e : layout.legend)
-    if (!most || e.count > most->count) most = &e;
-  return most ? most->colour : Rgb{255, 255, 255};
-}
-
 void write_layout_svg(std::ostream& out, const Layout& layout) {
   const Provenance& source = layout.source;
   const double W = layout.width, H = layout.height;
@@ -571,9 +567,7 @@ void write_layout_svg(std::ostream& out, const Layout& layout) {
       "<rect id=\"background\" class=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" "
       "height=\"{}\" fill=\"{}\"{}/>\n",
       sheet ? "sheet" : "joint", mm(s.x(0)), mm(s.y(0, H)), mm(W), mm(H),
-      sheet              ? std::string("#c9cdd2")
-      : layout.joint > 0 ? hex_colour(layout.joint_colour)
-                         : hex_colour(seamless_background(layout)),
+      hex_colour(ground_colour(layout)),
       sheet ? fmt::format(" stroke=\"#222\" stroke-width=\"{}\"", mm(unit * 0.05)) : "");
 
   switch (layout.kind->depiction()) {

@@ -18,9 +18,6 @@
 
 namespace curdle {
 
-// The background that hides seams between jointless elements: the most common value's colour.
-Rgb seamless_background(const Layout& layout);
-
 void write_layout_svg(std::ostream& out, const Layout& layout);
 
 }  // namespace curdle

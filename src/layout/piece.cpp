@@ -108,6 +108,23 @@ std::optional<Rect> tree_pit(const Layout& layout, const Element& e) {
   return centred_on(b.x + b.w / 2, b.y + b.h / 2, p.pit[0], p.pit[1]);
 }
 
+std::optional<std::array<std::array<double, 2>, 2>> back_edge(const Element& e) {
+  if (!e.stands || e.circle || e.shape.size() != 1) return std::nullopt;
+  const Rect& b = e.shape[0];
+  switch (static_cast<int>(e.turn)) {
+    case 0:
+      return std::array<std::array<double, 2>, 2>{{{b.x, b.y}, {b.right(), b.y}}};
+    case 180:
+      return std::array<std::array<double, 2>, 2>{{{b.x, b.top()}, {b.right(), b.top()}}};
+    case 90:
+      return std::array<std::array<double, 2>, 2>{{{b.x, b.y}, {b.x, b.top()}}};
+    case 270:
+      return std::array<std::array<double, 2>, 2>{{{b.right(), b.y}, {b.right(), b.top()}}};
+    default:
+      return std::nullopt;
+  }
+}
+
 uint64_t cut_elements(const Layout& layout) {
   uint64_t cut = 0;
   for (const Element& e : layout.elements) cut += e.cut;

@@ -2,6 +2,7 @@
 // the glTF and the DXF share, so that no two files can describe the same piece differently.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -47,6 +48,9 @@ const Rgb& piece_colour(const Layout& layout, const Element& e);
 const PlantingSpec& planting_of(const Layout& layout, const Element& e);
 // The tree pit dug for a standing object, centred on it; none when the recipe gave no pit.
 std::optional<Rect> tree_pit(const Layout& layout, const Element& e);
+// A standing rectangular object's back (a bench's backrest), the edge opposite the way it faces
+// (Element::turn): its two ends, mm; nullopt for a round one or anything else.
+std::optional<std::array<std::array<double, 2>, 2>> back_edge(const Element& e);
 
 // Keep mode: the stripe of the element each curd present keeps, side by side from the side
 // laying starts from, cut to the piece as laid; one part, the whole piece, in mix mode.
