@@ -45,7 +45,7 @@ void mark_arcs(cairo_t* cr, const Layout& layout, const View& v,
 // the side away from that edge (clear of the edge's own ticks).
 void mark_curve_offsets(cairo_t* cr, const Layout& layout, const View& v,
                         const std::vector<CurveStations>& curves) {
-  constexpr double kText = 1.4, kGap = 0.8;  // mm on paper
+  constexpr double kOffsetText = 1.4, kOffsetGap = 0.8;  // mm on paper
   colour(cr, kBlue);
   cairo_set_line_width(cr, 0.1);
   const double dash[] = {0.6, 0.4};
@@ -68,14 +68,16 @@ void mark_curve_offsets(cairo_t* cr, const Layout& layout, const View& v,
       cairo_arc(cr, v.x(x), v.y(y), 0.3, 0, 2 * M_PI);
       cairo_fill(cr);
       const std::string offset = drawing_mm(c.along_x ? y : x);
-      const double w = text_width(cr, offset, kText);
+      const double w = text_width(cr, offset, kOffsetText);
       // On a halo: the pieces under it may be dark.
       if (c.along_x)  // reading up, below the dot from a top edge, above it from the bottom
-        text_on_halo(cr, v.x(x) + kText / 2, far_edge ? v.y(y) + kGap + w : v.y(y) - kGap, offset,
-                     kText, Align::left, true);
+        text_on_halo(cr, v.x(x) + kOffsetText / 2,
+                     far_edge ? v.y(y) + kOffsetGap + w : v.y(y) - kOffsetGap, offset, kOffsetText,
+                     Align::left, true);
       else  // left of the dot from a right edge, right of it from the left
-        text_on_halo(cr, far_edge ? v.x(x) - kGap : v.x(x) + kGap, v.y(y) + kText / 2, offset,
-                     kText, far_edge ? Align::right : Align::left);
+        text_on_halo(cr, far_edge ? v.x(x) - kOffsetGap : v.x(x) + kOffsetGap,
+                     v.y(y) + kOffsetText / 2, offset, kOffsetText,
+                     far_edge ? Align::right : Align::left);
       colour(cr, kBlue);
     }
   }
@@ -133,28 +135,28 @@ void setting_out(cairo_t* cr, const Layout& layout, const View& v, double bottom
   const double edge_y = below ? v.y(0) : v.y(layout.height);
   const double edge_x = left ? v.x(0) : v.x(layout.width);
   const double out_y = below ? 1 : -1, out_x = left ? -1 : 1;
-  constexpr double kText = 1.6, kGap = 2.2;  // mm on paper
+  constexpr double kTickText = 1.6, kTickGap = 2.2;  // mm on paper
   colour(cr, kBlue);
   cairo_set_line_width(cr, 0.15);
   double last = -1e300;
   for (const double x : xs) {
     const double px = v.x(x);
-    if (px - last < kGap && x != layout.width) continue;
+    if (px - last < kTickGap && x != layout.width) continue;
     last = px;
     cairo_move_to(cr, px, edge_y + out_y * 0.8), cairo_line_to(cr, px, edge_y + out_y * 2.4);
     cairo_stroke(cr);
     // Read bottom to top, beyond the tick.
-    const double ty = below ? edge_y + 3 + text_width(cr, drawing_mm(x), kText) : edge_y - 3;
-    text(cr, px + kText / 2, ty, drawing_mm(x), kText, Align::left, true);
+    const double ty = below ? edge_y + 3 + text_width(cr, drawing_mm(x), kTickText) : edge_y - 3;
+    text(cr, px + kTickText / 2, ty, drawing_mm(x), kTickText, Align::left, true);
   }
   last = -1e300;
   for (const double y : ys) {
     const double py = v.y(y);
-    if (last - py < kGap && y != layout.height && last > -1e299) continue;
+    if (last - py < kTickGap && y != layout.height && last > -1e299) continue;
     last = py;
     cairo_move_to(cr, edge_x + out_x * 0.8, py), cairo_line_to(cr, edge_x + out_x * 2.4, py);
     cairo_stroke(cr);
-    text(cr, edge_x + out_x * 3, py + kText / 2, drawing_mm(y), kText,
+    text(cr, edge_x + out_x * 3, py + kTickText / 2, drawing_mm(y), kTickText,
          left ? Align::right : Align::left);
   }
   const char* corner = from_top(layout.origin)
