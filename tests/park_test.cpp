@@ -416,7 +416,8 @@ zones = [{ name = "grove", rect = [0, 0, 6000, 6000], rule = "value", value = "t
     if (e.stands && e.circle && e.circle->cx < 6000 && e.circle->cy < 6000) ++in_grove;
   EXPECT_EQ(in_grove, 4u);  // every cell of the zone holds a tree
   for (const auto& [value, says] : std::vector<std::pair<std::string, std::string>>{
-           {"\"oak\" }]", "\"tree\", \"bench\", \"tree+bench\""},
+           {"\"oak\" }]",
+            "joined with \"+\" as the legend names them (tree+bench): \"tree\", \"bench\""},
            {"\"pond\" }]", "no surface's type or zone's name here: \"white paving\", \"grove\""}}) {
     const bool zone = value.find("oak") != std::string::npos;
     std::string text = head + elements + (zone ? "\"grove\" }]" : value) + "\n";

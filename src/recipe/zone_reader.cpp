@@ -50,11 +50,13 @@ uint32_t read_zone_value(TableReader& r, const std::vector<std::string>& labels)
     const std::string name = n->as_string()->get();
     for (uint32_t v = 0; v < labels.size(); ++v)
       if (labels[v] == name) return v;
-    std::string known;
-    for (uint32_t v = 1; v < labels.size(); ++v)
-      known += (v > 1 ? ", \"" : "\"") + labels[v] + "\"";
+    std::string curds;  // each curd alone: value 1, 2, 4, ...
+    for (size_t v = 1; v < labels.size(); v <<= 1)
+      curds += (v > 1 ? ", \"" : "\"") + labels[v] + "\"";
     r.fail("value", "must be a value 0 to " + std::to_string(labels.size() - 1) +
-                        " or the curds it holds by name: " + known);
+                        " or the curds it holds by name, joined with \"+\" as the legend names "
+                        "them (" +
+                        labels.back() + "): " + curds);
   }
   return static_cast<uint32_t>(
       read_int(r, "value", 0, 0, static_cast<int64_t>(labels.size()) - 1, /*required=*/true));
