@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <span>
 
 #include "curdle/stop.h"
 #include "export/drawing/opening_dots.h"
@@ -142,7 +143,7 @@ class FlatFills {
   FlatFills(cairo_t* cr, const View& v, double alpha, bool meeting)
       : cr_(cr), v_(v), alpha_(alpha), meeting_(meeting) {}
   void add(const Rgb& c, const Shape& shape) {
-    if (!meeting_) return fill(c, {shape});
+    if (!meeting_) return fill(c, std::span<const Shape>(&shape, 1));  // no copy a piece
     const uint32_t key = uint32_t{c.r} << 16 | uint32_t{c.g} << 8 | c.b;
     const auto [at, added] = index_.try_emplace(key, fills_.size());
     if (added) fills_.push_back({c, {}});
@@ -154,7 +155,7 @@ class FlatFills {
 
  private:
   // One path; even-odd, so that an outline's holes stay open (pieces never overlap).
-  void fill(const Rgb& c, const std::vector<Shape>& shapes) const {
+  void fill(const Rgb& c, std::span<const Shape> shapes) const {
     colour(cr_, c, alpha_);
     cairo_new_path(cr_);
     bool outlines = false;

@@ -29,9 +29,8 @@ std::string given(double mm) { return mm > 0 ? mm_text(mm) : ""; }
 
 void write_planting_csv(std::ostream& out, const Layout& layout) {
   out << kUtf8Mark
-      << "element_id,plant,species,centre_x_mm,centre_y_mm,canopy_diameter_mm,girth_cm,root_ball_"
-         "mm,"
-         "pit_width_mm,pit_length_mm,value,zone\r\n";
+      << "element_id,plant,species,centre_x_mm,centre_y_mm,canopy_diameter_mm,girth_cm,"
+         "root_ball_mm,pit_width_mm,pit_length_mm,value,zone\r\n";
   for (const Element& e : layout.elements) {
     if (!e.stands || !e.circle) continue;
     const auto [x, y] = centre(e);
