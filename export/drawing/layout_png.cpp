@@ -7,7 +7,6 @@
 #include "curdle/error.h"
 #include "curdle/stop.h"
 #include "export/drawing/page_buffer.h"
-#include "export/drawing/svg.h"
 #include "layout/drawing_sheet.h"
 #include "layout/ground_colour.h"
 #include "layout/piece.h"
@@ -182,7 +181,6 @@ PreviewImage render_layout(const Layout& layout) {
     for (const ColouredRect& stripe : keep_stripes(layout, e))
       canvas.fill(stripe.rect, stripe.colour);
   }
-  canvas.ground.reset();
   PreviewImage image;
   image.width = canvas.width;
   image.height = canvas.height;

@@ -9,7 +9,6 @@
 
 #include "curdle/stop.h"
 #include "export/drawing/opening_dots.h"
-#include "export/drawing/svg.h"
 #include "layout/ground_colour.h"
 #include "layout/installer_sheets.h"
 #include "layout/piece.h"
