@@ -51,9 +51,12 @@ fi
 
 $main_only && exit 0
 
-# The npm packages of the glTF and browser checks, as locked in tests/js/package-lock.json.
-js="$(cd "$(dirname "$0")" && pwd)/tests/js"
-if ! cmp -s "$js/package-lock.json" "$js/node_modules/.installed-lock.json" 2>/dev/null; then
-  echo "setup: installing npm packages in tests/js"
-  (cd "$js" && npm ci --no-audit --no-fund --loglevel=error && cp package-lock.json node_modules/.installed-lock.json)
-fi
+# The npm packages, each folder as its package-lock.json locks them: the page's three.js (web/,
+# copied beside the page by the build) and the glTF and browser checks (tests/js).
+root="$(cd "$(dirname "$0")" && pwd)"
+for js in "$root/web" "$root/tests/js"; do
+  if ! cmp -s "$js/package-lock.json" "$js/node_modules/.installed-lock.json" 2>/dev/null; then
+    echo "setup: installing npm packages in ${js#"$root"/}"
+    (cd "$js" && npm ci --no-audit --no-fund --loglevel=error && cp package-lock.json node_modules/.installed-lock.json)
+  fi
+done

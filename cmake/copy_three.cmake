@@ -1,6 +1,7 @@
-# The part of three.js (npm, installed in tests/js by setup.sh) the page's 3-D view loads:
-# the module build, the glTF loader with the utilities it imports, the orbit controls and the
-# licence. Without it the page still works and says the 3-D view is missing.
+# The part of three.js the page's 3-D view loads (npm, a dependency of the page itself:
+# web/package.json, installed by setup.sh): the module build, the glTF loader with the
+# utilities it imports, the orbit controls and the licence. Without it the page still works
+# and says the 3-D view is missing.
 # Usage: cmake -DFROM=.../node_modules/three -DTO=.../web/vendor/three -P copy_three.cmake
 set(files
   build/three.module.js
