@@ -1,10 +1,9 @@
 // A request to the API with the page's overrides, shared by the page and its workers
-// (importScripts): by GET while its address stays short, else by POST with the same query as a
+// (imported by both): by GET while its address stays short, else by POST with the same query as a
 // form body, since an outline of thousands of vertices (a spline read from a drawing) makes an
 // address no server takes (414). The body is the query's text, as text/plain.
-"use strict";
 
-const kLongestAddress = 4000;
+export const kLongestAddress = 4000;
 
 // [url, init] for fetch: the query moved into the body when the address is too long.
 function apiRequest(url, init = {}) {
@@ -18,7 +17,7 @@ function apiRequest(url, init = {}) {
   }];
 }
 
-function apiFetch(url, init) {
+export function apiFetch(url, init) {
   const [address, options] = apiRequest(url, init);
   return fetch(address, options);
 }

@@ -1,46 +1,24 @@
 // The curdle page: edits a recipe as overrides (the same --set the command line takes), draws
 // the curd from /api/field, selects segments snapped to cells, shows the segment's report
-// beside the whole field's, and links the downloads /api/export makes.
-"use strict";
-
-const $ = (id) => document.getElementById(id);
-
-// A zone a file is dropped on, with its chooser: `use` takes the file either way.
-function wireDrop(zoneId, inputId, use) {
-  const zone = $(zoneId);
-  zone.addEventListener("dragover", (e) => { e.preventDefault(); zone.classList.add("over"); });
-  zone.addEventListener("dragleave", () => zone.classList.remove("over"));
-  zone.addEventListener("drop", (e) => {
-    e.preventDefault();
-    zone.classList.remove("over");
-    use(e.dataTransfer.files[0]);
-  });
-  $(inputId).addEventListener("change", () => use($(inputId).files[0]));
-}
-
-const state = {
-  recipe: null,  // /api/recipe, as loaded: the base every override is measured against
-  seed: 1,
-  base: 2,
-  dimension: 2,
-  stages: 1,
-  mode: 'canonical',
-  field: [1, 1],
-  curds: [],         // {name, colour, probabilities: [text]}
-  valueColours: [],  // layout.colours, when the recipe has them
-  whole: null,       // the last /api/field of the whole field (values: its cells, typed)
-  segment: null,     // [x, y, w, h] in cells, or null for the whole field
-  segmentReport: null,
-  zones: [],  // the layout's zones: the recipe's, then those added on the page
-};
+// beside the whole field's, and links the downloads /api/export makes. The page's files are ES
+// modules, each importing what it uses. The parts call back into this one (a zone added
+// schedules a new field): those imports run in a cycle, safe because no module calls
+// another's functions while it loads.
+import { $, escapeHtml, getJson, showError, state } from "./page_state.js";
+import { fetchField } from "./field_fetch.js";
+import { draw, fieldSize, fitSegmentToField, fixedCells, fixMode, placeSelection, recolour, setFix, wireCanvas } from "./canvas.js";
+import { recipeZones, wireZones, zonesOverride } from "./surface.js";
+import { dropSlowLoads, fmt, renderExports, renderReport } from "./report.js";
+import { drawMeasurePlot, wireMeasure } from "./measure.js";
+import { wireSite } from "./site.js";
 
 // ---- overrides: what differs from the recipe, as KEY=VALUE in TOML ----
 
 // A new curd's colour, by its place.
-const defaultCurdColours = ['#3b3b3b', '#c0392b', '#2471a3', '#229954'];
+export const defaultCurdColours = ['#3b3b3b', '#c0392b', '#2471a3', '#229954'];
 
-const tomlString = (s) => JSON.stringify(String(s));
-const tomlArray = (items) => "[" + items.join(",") + "]";
+export const tomlString = (s) => JSON.stringify(String(s));
+export const tomlArray = (items) => "[" + items.join(",") + "]";
 
 function overrides() {
   const r = state.recipe;
@@ -85,7 +63,7 @@ function originalValueColours() {
     ? state.recipe.legend.map((e) => e.colour) : [];
 }
 
-function query(extra) {
+export function query(extra) {
   const p = new URLSearchParams();
   for (const s of overrides()) p.append("set", s);
   p.append("seed", String(state.seed));
@@ -95,7 +73,7 @@ function query(extra) {
   return p.toString();
 }
 
-function windowText() {
+export function windowText() {
   if (!state.segment) return null;
   const [x, y, w, h] = state.segment;
   return state.dimension === 1 ? `${x},${w}` : `${x},${y},${w},${h}`;
@@ -105,25 +83,7 @@ function windowText() {
 
 let generation = 0;
 
-// A request's JSON; its message thrown when it failed. `init` as fetch takes it (a POST's body).
-async function getJson(url, signal, init) {
-  const response = await apiFetch(url, { ...init, signal });
-  let body;
-  try {
-    body = await response.json();
-  } catch (err) {
-    if (err.name === "AbortError") throw err;  // a newer request took over mid-body
-    body = { error: `the server answered ${response.status} with no JSON` };
-  }
-  if (!response.ok) throw new Error(body.error || `request failed (${response.status})`);
-  return body;
-}
 
-function showError(message) {
-  const e = $("error");
-  e.textContent = message;
-  e.hidden = !message;
-}
 
 // One field at a time: a change while one is on its way asks for another once it is drawn,
 // with the controls as they are then. A discrete change goes at once; a slider's stream of
@@ -139,7 +99,7 @@ function fieldDone() {
 
 // From each change to its pixels drawn, as performance measures "curd-redraw" (the benchmark
 // tests/benchmarks/page_redraw.mjs reads them).
-async function regenerate() {
+export async function regenerate() {
   dropSlowLoads();
   if (fieldBusy) { fieldAgain = true; return; }
   fieldBusy = true;
@@ -181,7 +141,7 @@ async function regenerate() {
 }
 
 let segmentController = null;
-async function refreshSegment() {
+export async function refreshSegment() {
   if (segmentController) segmentController.abort();
   segmentController = new AbortController();
   state.segmentReport = null;
@@ -226,7 +186,7 @@ function readRecipeIntoState(r) {
   setFix(floor ? "floor" : "free");
 }
 
-function syncControls() {
+export function syncControls() {
   $("seed").value = String(state.seed);
   $("base").value = state.base;
   $("dimension").value = String(state.dimension);
@@ -380,7 +340,7 @@ function resizeCurds() {
 // A recipe with a colour per value needs one for every value: new values take the blend of
 // their curds' colours as the library makes it (/api/colours), so that the page and the
 // previews agree to the last bit.
-async function fillValueColours() {
+export async function fillValueColours() {
   const count = state.curds.length;
   if (!state.valueColours.length || state.valueColours.length === 1 << count) return;
   const p = new URLSearchParams();
@@ -395,7 +355,7 @@ async function fillValueColours() {
 
 // A control's change regenerates at once (or as soon as the field on its way is drawn); a
 // colour being dragged waits until the picker rests.
-function schedule() {
+export function schedule() {
   clearTimeout(timer);
   regenerate();
 }
@@ -549,7 +509,7 @@ function typedWindow() {
 }
 
 // A fixed size resizes the current selection in place (or places one at the origin).
-function applyFixedSize() {
+export function applyFixedSize() {
   const fixed = fixedCells();
   if (!fixed || !state.whole) return;
   const [x, y] = state.segment || [0, 0];

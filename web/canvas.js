@@ -1,15 +1,17 @@
-// The page: drawing the curd on the canvas, and selecting a segment on it (loaded before app.js,
-// which holds the state and starts the page).
-"use strict";
+// The page: drawing the curd on the canvas, and selecting a segment on it.
+import { $, showError, state } from "./page_state.js";
+import { fieldGl } from "./field_gl.js";
+import { drawSurface, zoneDrag, zoneFrom } from "./surface.js";
+import { refreshSegment, windowText } from "./app.js";
 
 // ---- drawing ----
 
-function hexToRgb(h) {
+export function hexToRgb(h) {
   const n = parseInt(h.slice(1), 16);
   return [n >> 16 & 255, n >> 8 & 255, n & 255];
 }
 
-function fieldSize() {
+export function fieldSize() {
   const v = state.whole.view;
   return state.whole.lattice.dimension === 1 ? [v[1], 1] : [v[2], v[3]];
 }
@@ -20,7 +22,7 @@ function legendColours() {
 
 // Draws the curd (fieldGl, field_gl.js) at the size it is shown: the canvas's pixels are the
 // screen's, not the field's cells, so a 2048 x 2048 field costs no more to draw than a small one.
-function draw() {
+export function draw() {
   const canvas = $("curd");
   const whole = state.whole;
   if (!whole.values) {
@@ -46,11 +48,11 @@ function draw() {
 }
 
 // The palette changed on the page: the same cells in new colours.
-function recolour() {
+export function recolour() {
   if (state.whole && state.whole.values) fieldGl.recolour(legendColours());
 }
 
-function placeSelection() {
+export function placeSelection() {
   const box = $("selection");
   if (!state.segment || !state.whole) {
     box.hidden = true;
@@ -79,8 +81,8 @@ function placeSelection() {
 
 // ---- selection ----
 
-function fixMode() { return document.querySelector("input[name=fix]:checked").value; }
-function setFix(mode) {
+export function fixMode() { return document.querySelector("input[name=fix]:checked").value; }
+export function setFix(mode) {
   document.querySelector(`input[name=fix][value=${mode}]`).checked = true;
   const floor = state.recipe.layout && state.recipe.layout.segment_cells;
   if (mode === "floor" && floor) { $("fix-w").value = floor[0]; $("fix-h").value = floor[1]; }
@@ -88,7 +90,7 @@ function setFix(mode) {
 }
 
 // The fixed size in cells, or null when the selection is free.
-function fixedCells() {
+export function fixedCells() {
   const mode = fixMode();
   const layout = state.whole && state.whole.layout;
   if (mode === "free") return null;
@@ -126,7 +128,7 @@ function segmentFrom(a, b) {
   return [x0, y0, x1 - x0 + 1, y1 - y0 + 1];
 }
 
-function fitSegmentToField() {
+export function fitSegmentToField() {
   if (!state.segment || !state.whole || !state.whole.values) return;
   const [w, h] = fieldSize();
   let [x, y, sw, sh] = state.segment;
@@ -136,7 +138,7 @@ function fitSegmentToField() {
 }
 
 let dragFrom = null;
-function wireCanvas() {
+export function wireCanvas() {
   const canvas = $("curd");
   canvas.addEventListener("pointerdown", (e) => {
     if (!state.whole || !state.whole.values) return;

@@ -1,13 +1,11 @@
-// The whole field for the canvas, fetched off the page's thread (loaded before app.js, which
-// asks for it through fetchField).
-"use strict";
+// The whole field for the canvas, fetched off the page's thread: fetchField.
 
 // The whole field comes through a worker (field_worker.js) as bytes: nothing decodes the
 // cells on this thread. A newer request makes the worker drop the older, whose promise is
 // rejected here as aborted.
-const fieldWorker = new Worker("field_worker.js");
+const fieldWorker = new Worker("field_worker.js", { type: "module" });
 const fieldWaiting = new Map();
-let fieldIds = 0;
+export let fieldIds = 0;  // the fields asked for (the browser check counts them)
 fieldWorker.onmessage = ({ data }) => {
   const waiting = fieldWaiting.get(data.id);
   if (!waiting) return;
@@ -19,7 +17,7 @@ fieldWorker.onmessage = ({ data }) => {
   head.values = head.value_bits ? new Uint8Array(data.buffer, data.offset) : null;
   waiting.resolve(head);
 };
-function fetchField(url) {
+export function fetchField(url) {
   for (const [id, waiting] of fieldWaiting) {
     const abort = new Error("a newer field was asked for");
     abort.name = "AbortError";

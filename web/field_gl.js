@@ -1,10 +1,9 @@
 // Drawing the curd with WebGL 2: the values are one integer texture and the colours a palette
 // texture, so that a colour change redraws without new data, and the canvas is drawn at the
 // size it is shown (a cell a screen pixel or more, or the cell under each pixel), whatever the
-// field's size. Loaded before canvas.js.
-"use strict";
+// field's size.
 
-const fieldGl = (() => {
+export const fieldGl = (() => {
   const vertexSource = `#version 300 es
     out vec2 uv;
     void main() {

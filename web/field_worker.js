@@ -4,8 +4,7 @@
 // no socket opens. It splits the binary answer ("CRD1", the head's length, the head as JSON,
 // then the values: src/server/api.h) into the head and the values, which it hands over
 // without a copy. Only the latest request is answered: an older one's answer is dropped.
-"use strict";
-importScripts("worker_fetch.js");
+import { errorText, fetchLatest } from "./worker_fetch.js";
 
 function readField(id, buffer) {
   try {

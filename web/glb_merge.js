@@ -7,8 +7,6 @@
 // between slices, so that a change on the page, which drops the model, frees the CPU at once
 // for the curd's redraw. A mirrored node's triangles are turned back, as a renderer would face
 // them.
-"use strict";
-
 const MERGE_SLICE_MS = 3;
 // Back after the messages already waiting: a plain task, queued behind them (scheduler.yield
 // would come back first).
@@ -131,7 +129,7 @@ async function mergedGroup(group, rows, world, buffer, goOn) {
 
 // The merged drawing of `scene` (glb_worker.js's arrays) and the buffers it holds, to transfer;
 // null once stillWanted() says it is no longer wanted.
-async function mergedDrawing(scene, buffer, stillWanted = () => true) {
+export async function mergedDrawing(scene, buffer, stillWanted = () => true) {
   const world = worldMatrices(scene);
   let deadline = performance.now() + MERGE_SLICE_MS;
   const goOn = async () => {

@@ -6,8 +6,8 @@
 // puts in a glb (export/gltf/gltf_json.cpp): float positions and normals, integer indices, PBR
 // colours, node trees with matrices or TRS and extras. Anything else is answered with
 // `unsupported`, and the page falls back to three.js's own loader.
-"use strict";
-importScripts("worker_fetch.js", "glb_merge.js");
+import { answerLatest } from "./worker_fetch.js";
+import { mergedDrawing } from "./glb_merge.js";
 
 class Unsupported extends Error {}
 

@@ -1,9 +1,12 @@
 // The page's measuring: a picture dropped or chosen is sent to /api/measure with the lattice on
 // the page (base, stages, curds); its box counts are plotted beside the curd's, and the recipe
-// fitted to it can be loaded as overrides or downloaded (loaded before app.js).
-"use strict";
+// fitted to it can be loaded as overrides or downloaded.
+import { $, escapeHtml, getJson, showError, state, wireDrop } from "./page_state.js";
+import { setFix } from "./canvas.js";
+import { fmt } from "./report.js";
+import { defaultCurdColours, fillValueColours, schedule, syncControls } from "./app.js";
 
-const measured = { result: null, url: null };
+export const measured = { result: null, url: null };
 
 // log N against log s: a curd's boxes with a survivor at each stage's cell side.
 function plotSeries() {
@@ -36,7 +39,7 @@ function plotSeries() {
   return series;
 }
 
-function drawMeasurePlot() {
+export function drawMeasurePlot() {
   const canvas = $("measure-plot");
   const series = plotSeries();
   canvas.hidden = !measured.result;
@@ -217,7 +220,7 @@ function loadFittedRecipe() {
   fillValueColours().catch((err) => showError(err.message)).then(schedule);
 }
 
-function wireMeasure() {
+export function wireMeasure() {
   wireDrop("measure-drop", "measure-file", measurePicture);
   $("measure-load").addEventListener("click", loadFittedRecipe);
   // A picture dropped beside the zone would replace the page: ignored instead.

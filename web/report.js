@@ -1,12 +1,14 @@
 // The page: the values, box-dimension and per-stage tables, the reproducing command, the
-// downloads and the layout drawing (loaded before app.js).
-"use strict";
+// downloads and the layout drawing.
+import { apiFetch, kLongestAddress } from "./api_request.js";
+import { $, escapeHtml, showError, state } from "./page_state.js";
+import { query, windowText } from "./app.js";
 
 // ---- report ----
 
-const fmt = (x, digits = 4) => (x === null || x === undefined || Number.isNaN(x)) ? "–" : Number(x).toFixed(digits);
+export const fmt = (x, digits = 4) => (x === null || x === undefined || Number.isNaN(x)) ? "–" : Number(x).toFixed(digits);
 
-function renderReport() {
+export function renderReport() {
   const whole = state.whole;
   if (!whole) return;
   const seg = state.segmentReport;
@@ -97,11 +99,8 @@ function renderReport() {
   $("command").textContent = shown.command;
 }
 
-function escapeHtml(s) {
-  return String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" }[c]));
-}
 
-function renderExports() {
+export function renderExports() {
   const box = $("exports");
   box.textContent = "";
   const hasLayout = !!(state.whole && state.whole.layout);
@@ -221,7 +220,7 @@ async function showPreview(win, src) {
 // way for them is dropped at once (the server stops a request whose client has gone), so that
 // it does not hold the two cores while the curd is redrawn. They are asked for again when the
 // controls rest (renderExports).
-function dropSlowLoads() {
+export function dropSlowLoads() {
   clearTimeout(slowTimer);
   if (recipeController) recipeController.abort();
   if (previewController) previewController.abort();

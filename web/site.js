@@ -1,8 +1,10 @@
 // The page's site from a drawing: a DXF or SVG dropped or chosen is sent to /api/site, its
 // layers are listed and each given a role (the outline, openings, zones kept free, or none),
 // and the surface read from them becomes the page's overrides (the outline with its arcs as
-// bulges, a façade's windows) and zones, as [layout.site] reads it (loaded before app.js).
-"use strict";
+// bulges, a façade's windows) and zones, as [layout.site] reads it.
+import { $, escapeHtml, getJson, showError, state, wireDrop } from "./page_state.js";
+import { renderZoneList, surface } from "./surface.js";
+import { applyFixedSize, query, regenerate } from "./app.js";
 
 // regions: each layer's closed regions in drawing coordinates (the server's listing); around: the
 // point clicked inside the outline where its layer holds several.
@@ -86,7 +88,7 @@ function sitePickFrame() {
 }
 
 // Where a drawing point lies on the pick canvas, in CSS pixels from its corner (for a click).
-function sitePickPosition(x, y) {
+export function sitePickPosition(x, y) {
   const canvas = $("site-pick");
   const [cx, cy] = sitePickFrame().toCanvas([x, y]);
   const box = canvas.getBoundingClientRect();
@@ -141,9 +143,6 @@ function pickSiteRegion(event) {
   renderSitePick();
 }
 
-function escapeHtml(text) {
-  return String(text).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" }[c]));
-}
 
 // The drawing sent with the page's run and `extra` parameters; the server's answer.
 async function postSite(extra) {
@@ -218,7 +217,7 @@ async function applySite() {
   }
 }
 
-function wireSite() {
+export function wireSite() {
   wireDrop("site-drop", "site-file", readSite);
   $("site-apply").addEventListener("click", applySite);
   $("site-pick").addEventListener("click", pickSiteRegion);

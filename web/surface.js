@@ -1,10 +1,11 @@
 // The floor over the curd: the layout's outline and zones drawn on the segment the floor is laid
-// from, and zones drawn or typed in metres, added to the layout or kept empty by a search
-// (loaded after canvas.js, before app.js).
-'use strict';
+// from, and zones drawn or typed in metres, added to the layout or kept empty by a search.
+import { $, showError, state } from "./page_state.js";
+import { draw, fieldSize } from "./canvas.js";
+import { schedule, tomlArray, tomlString } from "./app.js";
 
 // The surface the server describes (outline, zones, where the segment's cells lie), or null.
-function surface() {
+export function surface() {
   const layout = state.whole && state.whole.layout;
   return layout && layout.surface ? layout : null;
 }
@@ -82,7 +83,7 @@ function drawFacades(overlay, building, segment, h) {
 }
 
 // Redraws the outline, the zones and the zone being drawn over the canvas.
-function drawSurface() {
+export function drawSurface() {
   const overlay = $('surface-overlay');
   overlay.textContent = '';
   const building = surface() && surface().building;
@@ -157,8 +158,8 @@ function continuousCellAt(event) {
   ];
 }
 
-let zoneFrom = null;
-function zoneDrag(event, phase) {
+export let zoneFrom = null;
+export function zoneDrag(event, phase) {
   const segment = floorSegment();
   if (!segment) {
     showError('Select the floor (Segment: the floor) to draw a zone on it');
@@ -182,12 +183,12 @@ function drawingZone() {
 
 // ---- the layout's zones, as the override layout.zones ----
 
-function recipeZones() {
+export function recipeZones() {
   const layout = state.recipe.layout;
   return layout && layout.surface ? layout.surface.zones : [];
 }
 
-function zonesOverride() {
+export function zonesOverride() {
   if (!state.zones || JSON.stringify(state.zones) === JSON.stringify(recipeZones())) return null;
   const tables = state.zones.map(
       (z) => `{name=${tomlString(z.name)},polygon=${
@@ -253,7 +254,7 @@ function zoneSize(polygon) {
   return `${m(Math.max(...xs) - Math.min(...xs))} × ${m(Math.max(...ys) - Math.min(...ys))} m`;
 }
 
-function renderZoneList() {
+export function renderZoneList() {
   const list = $('zone-list');
   list.textContent = '';
   (state.zones || []).forEach((z, i) => {
@@ -274,7 +275,7 @@ function renderZoneList() {
   });
 }
 
-function wireZones() {
+export function wireZones() {
   for (const id of ['zone-x', 'zone-y', 'zone-w', 'zone-h'])
     $(id).addEventListener('change', () => {
       const mm = typedZone(true);

@@ -220,7 +220,7 @@ renderer.domElement.addEventListener("click", (event) => {
 // draws (glb_merge.js); here the drawing is handed to WebGL as it comes, and the three.js
 // objects of the elements are made only when a click or a check asks for them, so that a 2-D
 // redraw that arrives meanwhile is drawn at once.
-const glbWorker = new Worker("glb_worker.js");
+const glbWorker = new Worker("glb_worker.js", { type: "module" });
 const glbWaiting = new Map();
 let glbIds = 0;
 glbWorker.onmessage = ({ data }) => {

@@ -1,11 +1,10 @@
-// What the page's workers share (importScripts): one request at a time, a newer one aborting
+// What the page's workers share: one request at a time, a newer one aborting
 // the one before it, and a failed answer's JSON "error" as its message.
-"use strict";
-importScripts("api_request.js");
+import { apiFetch } from "./api_request.js";
 
 let currentRequest = null;
 
-function errorText(buffer, status) {
+export function errorText(buffer, status) {
   try {
     return JSON.parse(new TextDecoder().decode(buffer)).error || `request failed (${status})`;
   } catch (err) {
@@ -17,7 +16,7 @@ function errorText(buffer, status) {
 // stillWanted)` posts of the bytes, or with {id, error}; an aborted request posts nothing. A
 // read that takes a while asks stillWanted() between slices of its work, and stops when a
 // newer request or a drop has come.
-async function fetchLatest({ id, url }, read) {
+export async function fetchLatest({ id, url }, read) {
   if (currentRequest) currentRequest.abort();
   const controller = new AbortController();
   currentRequest = controller;
@@ -34,7 +33,7 @@ async function fetchLatest({ id, url }, read) {
 }
 
 // Answers each message {id, url} by fetchLatest. {drop: true} aborts the one on its way.
-function answerLatest(read) {
+export function answerLatest(read) {
   self.onmessage = ({ data }) => {
     if (data.drop) {
       if (currentRequest) currentRequest.abort();

@@ -23,7 +23,7 @@ inline constexpr const char* kContentSecurityPolicy =
 
 struct ServerConfig {
   ApiContext api;
-  std::filesystem::path web_root;     // index.html, app.js, style.css
+  std::filesystem::path web_root;     // index.html, its modules, style.css, vendor/three
   int workers = 2;                    // generate, export and search requests at once
   size_t max_body_bytes = 64 * 1024;  // any request's body but a picture's or a query's
   // A query sent by POST as a form body (the page's, once its address would be too long: an

@@ -7,10 +7,9 @@ import { execFileSync } from 'node:child_process';
 import { mkdir, mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import vm from 'node:vm';
 import { deflateSync } from 'node:zlib';
 import { chromium } from 'playwright-core';
-import { serve as serveOn } from './serve.mjs';
+import { openModules, serve as serveOn } from './serve.mjs';
 
 const [curdle, shots] = process.argv.slice(2);
 
@@ -94,8 +93,7 @@ const source = path.resolve(path.dirname(new URL(import.meta.url).pathname), '..
 // and moved node, checked against the same transforms by hand: the page's models have no
 // mirrored node, and a wrong turn there would draw it inside out.
 {
-  const merge = vm.createContext({ performance, MessageChannel });
-  vm.runInContext(await readFile(path.join(source, 'web/glb_merge.js'), 'utf8'), merge);
+  const merge = await import(path.join(source, 'web/glb_merge.js'));
   const buffer = new ArrayBuffer(3 * 12 * 2 + 3 * 2);
   new Float32Array(buffer, 0, 9).set([0, 0, 0, 1, 0, 0, 0, 1, 0]);  // a triangle facing +z
   new Float32Array(buffer, 36, 9).set([0, 0, 1, 0, 0, 1, 0, 0, 1]);
@@ -137,6 +135,7 @@ try {
   page.on('console', (m) => { if (/Content.Security.Policy/i.test(m.text())) pageErrors.push(m.text()); });
   await page.goto(url);
   await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+  await openModules(page);
   await page.screenshot({ path: path.join(shots, '1-loaded.png') });
   check(await page.locator('#values-table tr').count() === 3, 'the values table has a header and two values');
   check((await page.textContent('#segment-text')).includes('0,0,67,67'), 'the floor segment is preselected');
@@ -148,7 +147,7 @@ try {
   const refreshed = fieldAnswered((u) => u.includes('12ab34'));
   const canvasCheck = await page.evaluate(async () => {
     // The cells as /api/generate sends them (a byte a cell, base64), not as the canvas got them.
-    const sent = await (await fetch('/api/generate?' + query({ cells: '1' }))).json();
+    const sent = await (await fetch('/api/generate?' + app.query({ cells: '1' }))).json();
     const cells = Uint8Array.from(atob(sent.values), (c) => c.charCodeAt(0));
     const sample = () => {
       const c = document.querySelector('#curd');
@@ -157,29 +156,29 @@ try {
       copy.height = c.height;
       const ctx = copy.getContext('2d');
       ctx.drawImage(c, 0, 0);
-      const [w, h] = fieldSize();
+      const [w, h] = canvas.fieldSize();
       const wrong = [];
       for (let k = 0; k < 500; ++k) {
         const x = (k * 7919) % w, y = (k * 104729) % h;
         const px = Math.floor((x + 0.5) / w * c.width), py = Math.floor((h - 1 - y + 0.5) / h * c.height);
         const got = ctx.getImageData(px, py, 1, 1).data;
-        const want = hexToRgb(state.whole.legend[cells[y * w + x]].colour);
+        const want = canvas.hexToRgb(page_state.state.whole.legend[cells[y * w + x]].colour);
         if (want.some((v, i) => Math.abs(v - got[i]) > 2)) wrong.push(`${x},${y}: ${[...got].slice(0, 3)} not ${want}`);
       }
       return wrong;
     };
     const first = sample();
-    const asked = fieldIds;
+    const asked = field_fetch.fieldIds;
     const input = document.querySelectorAll('#palette input[type=color]')[1];
     input.value = '#12ab34';
     input.dispatchEvent(new Event('input'));
-    return { first, recoloured: sample(), asked: fieldIds - asked, colour: state.whole.legend[1].colour };
+    return { first, recoloured: sample(), asked: field_fetch.fieldIds - asked, colour: page_state.state.whole.legend[1].colour };
   });
   check(canvasCheck.first.length === 0, `every sampled cell is drawn in its value's colour (${canvasCheck.first.slice(0, 3).join('; ')})`);
   check(canvasCheck.asked === 0 && canvasCheck.recoloured.length === 0 && canvasCheck.colour === '#12ab34',
         `a palette colour redraws at once without a new field (${canvasCheck.asked} asked, ${canvasCheck.recoloured.length} cells wrong)`);
   await refreshed;
-  await page.waitForFunction(() => state.whole.legend[1].colour === '#12ab34' && !document.querySelector('#status').textContent.includes('generating'));
+  await page.waitForFunction(() => page_state.state.whole.legend[1].colour === '#12ab34' && !document.querySelector('#status').textContent.includes('generating'));
 
   // A probability through its text field: the request carries the override, the report moves.
   const before = await page.textContent('#values-table');
@@ -314,7 +313,7 @@ try {
     const said = await page.textContent('#view3d-info');
     // The value and material of that element in the segment's own schedule.csv.
     const rows = (await (await page.request.get(url + 'api/export?' + await page.evaluate(() =>
-      query({ file: 'schedule.csv', window: windowText() })))).text()).split(/\r?\n/);
+      app.query({ file: 'schedule.csv', window: app.windowText() })))).text()).split(/\r?\n/);
     const header = rows[0].replace(/^\ufeff/, '').split(',');
     const row = rows.find((r) => r.startsWith(target.id + ','));
     const field = (name) => row && row.split(',')[header.indexOf(name)];
@@ -407,7 +406,7 @@ try {
   await writeFile(picture, greyPng(240, 120, (x, y) => (y === 3 && x % 7 === 0) || maskDark(x, y) ? 0 : 255));
   await page.setInputFiles('#measure-file', picture);
   await page.waitForSelector('#measure-result:not([hidden])');
-  const measuredBody = await page.evaluate(() => measured.result);
+  const measuredBody = await page.evaluate(() => measure.measured.result);
   const [base, stages] = [await page.inputValue('#base'), await page.inputValue('#stages')];
   const fitted = path.join(work, 'fitted.toml');
   execFileSync(curdle, ['fit', picture, '--base', base, '--stages', stages, '--out', fitted]);
@@ -438,8 +437,8 @@ try {
                         '--out', paving, '--outputs', 'preview.png']);
   await page.fill('#measure-states', '2');
   await page.setInputFiles('#measure-file', path.join(paving, 'preview.png'));
-  await page.waitForFunction(() => measured.result && measured.result.fit.recipe_is_chain);
-  const chainBody = await page.evaluate(() => measured.result);
+  await page.waitForFunction(() => measure.measured.result && measure.measured.result.fit.recipe_is_chain);
+  const chainBody = await page.evaluate(() => measure.measured.result);
   const [chainBase, chainStages] = [await page.inputValue('#base'), await page.inputValue('#stages')];
   const chainFitted = path.join(work, 'chain.toml');
   execFileSync(curdle, ['fit', path.join(paving, 'preview.png'), '--base', chainBase, '--stages', chainStages,
@@ -459,6 +458,7 @@ try {
   try {
     await page.goto(yard.url);
     await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+    await openModules(page);
     const overlay = page.locator('#surface-overlay');
     check(await overlay.locator('polygon.outline').count() === 1 &&
           (await overlay.locator('polygon.outline').getAttribute('points')).split(' ').length === 6,
@@ -568,7 +568,7 @@ try {
     await page.click('#site-apply');
     check((await page.textContent('#error')).includes('click inside the one that is the outline'),
           'laying before the click asks for it');
-    await page.click('#site-pick', { position: await page.evaluate(() => sitePickPosition(7000, 3000)) });
+    await page.click('#site-pick', { position: await page.evaluate(() => site.sitePickPosition(7000, 3000)) });
     check((await page.textContent('#site-pick-note')).includes('around the point clicked'),
           'the click picks the region around it');
     await page.locator('#site-box').screenshot({ path: path.join(shots, '7c-site-pick.png') });
@@ -595,6 +595,7 @@ try {
   try {
     await page.goto(tones.url);
     await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+    await openModules(page);
     check(await page.locator('#curds .curd').count() === 1, 'the Markov curd is listed once, not by its bit planes');
     const note = await page.textContent('#curds .curd .note');
     check(note.includes('states dark, mid') && await page.locator('#curds .state-swatch').count() === 2,
@@ -622,6 +623,7 @@ try {
   try {
     await page.goto(kiosk.url);
     await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+    await openModules(page);
     await page.waitForFunction(() => document.querySelectorAll('#surface-overlay line.corner').length === 4);
     const names = await page.locator('#surface-overlay text.facade-name').allTextContents();
     check(names.join() === 'S,E,N,W', `the kiosk's four façades are named on the strip (${names.join()}), its corners dashed`);
@@ -672,9 +674,10 @@ try {
   const [, fallbackWays] = watchFields(fallback);
   await fallback.goto(url);
   await fallback.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
-  const seedBefore = await fallback.evaluate(() => state.whole.seed);
+  await openModules(fallback);
+  const seedBefore = await fallback.evaluate(() => page_state.state.whole.seed);
   await fallback.click('#seed-next');
-  await fallback.waitForFunction((s) => state.whole && state.whole.seed !== s, seedBefore);
+  await fallback.waitForFunction((s) => page_state.state.whole && page_state.state.whole.seed !== s, seedBefore);
   check(held.every(Boolean) && fallbackWays.fetched >= 2 && fallbackWays.sent === 0 &&
         await fallback.locator('#error').isHidden(),
         `with the server's ${held.length} field sockets held, the page fetches its fields and draws them ` +

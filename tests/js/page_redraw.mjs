@@ -17,7 +17,7 @@
 // Prints one JSON line per recipe.
 // Usage: [WEB_ROOT=DIR] node page_redraw.mjs CURDLE ROUNDS RECIPE...
 import { chromium } from 'playwright-core';
-import { serve } from './serve.mjs';
+import { openModules, serve } from './serve.mjs';
 
 const [curdle, roundsText, ...recipes] = process.argv.slice(2);
 const rounds = Number(roundsText);
@@ -38,6 +38,7 @@ try {
       });
       await page.goto(url);
       await page.waitForSelector('body[data-ready="1"]', { timeout: 60000 });
+      await openModules(page);
       // The 3-D view's reloads, as the page starts them (report.js's "layout3d" event) and
       // finishes them (view3d.js's "view3d-render" measure).
       await page.evaluate(() => {
@@ -93,7 +94,7 @@ try {
         const [ms, fetched, server] = await page.evaluate(() => {
           const all = performance.getEntriesByName('curd-redraw');
           const fetches = performance.getEntriesByName('curd-fetch');
-          return [all[all.length - 1].duration, fetches[fetches.length - 1].duration, state.whole.server_ms];
+          return [all[all.length - 1].duration, fetches[fetches.length - 1].duration, page_state.state.whole.server_ms];
         });
         redraws[kind].push(ms);
         fetch_ms.push(fetched);
@@ -103,8 +104,8 @@ try {
         const times = [];
         for (let i = 0; i < 20; ++i) {
           const t = performance.now();
-          state.whole.legend[0].colour = i % 2 ? '#ffffff' : '#eeeeee';
-          recolour();
+          page_state.state.whole.legend[0].colour = i % 2 ? '#ffffff' : '#eeeeee';
+          canvas.recolour();
           times.push(performance.now() - t);
         }
         return times;
@@ -115,14 +116,14 @@ try {
         for (let i = 0; i < 15; ++i) {
           await new Promise((r) => setTimeout(r, 50));
           const t = performance.now();
-          await fetchField(`/api/field?seed=${i}&set=${encodeURIComponent('field.cells=[67,67]')}`);
+          await field_fetch.fetchField(`/api/field?seed=${i}&set=${encodeURIComponent('field.cells=[67,67]')}`);
           times.push(performance.now() - t);
         }
         return times;
       });
       // The 3-D view's own pictures of each new model, on the page's thread.
       const view3d = await page.evaluate(() => performance.getEntriesByName('view3d-render').map((e) => e.duration));
-      const [w, h] = await page.evaluate(() => fieldSize());
+      const [w, h] = await page.evaluate(() => canvas.fieldSize());
       console.log(JSON.stringify({
         recipe: recipe.split('/').pop(), cells: `${w}x${h}`, rounds,
         redraw_ms_median: quantile(redraws.reload, 0.5), redraw_ms_p90: quantile(redraws.reload, 0.9),

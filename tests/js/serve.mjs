@@ -16,3 +16,11 @@ export async function serve(curdle, args) {
   });
   return { server, url };
 }
+
+// The page keeps no globals (its files are ES modules): the checks reach its state and
+// functions through the modules themselves, put on `window` under their file names
+// (`page_state.state`, `canvas.fieldSize()`, …), the same instances the page runs.
+export const openModules = (page) => page.evaluate(async () => {
+  for (const name of ['page_state', 'app', 'canvas', 'field_fetch', 'measure', 'site'])
+    window[name] = await import(`./${name}.js`);
+});
