@@ -4,7 +4,7 @@
 // message. Screenshots go to SCREENSHOT_DIR for a person to look at.
 // Usage: node page.mjs CURDLE SCREENSHOT_DIR
 import { execFileSync } from 'node:child_process';
-import { mkdir, mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
+import { mkdir, mkdtemp, readdir, readFile, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { deflateSync } from 'node:zlib';
@@ -135,6 +135,16 @@ try {
   page.on('console', (m) => { if (/Content.Security.Policy/i.test(m.text())) pageErrors.push(m.text()); });
   await page.goto(url);
   await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+  // The page's files are modules: none of the names they declare at their top level is a
+  // global, as it was when they were classic scripts.
+  const declared = [];
+  for (const file of (await readdir(path.join(source, 'web'))).filter((f) => f.endsWith('.js')))
+    for (const m of (await readFile(path.join(source, 'web', file), 'utf8')).matchAll(
+      /^(?:export )?(?:async )?(?:function\*? *|const |let |var |class )([\w$]+)/gm)) declared.push(m[1]);
+  const globals = await page.evaluate((names) => names.filter((n) =>  // an element's id aside
+    !document.getElementById(n) && new Function(`return typeof ${n}`)() !== 'undefined'), declared);
+  check(declared.length > 100 && globals.length === 0,
+        `none of the page's ${declared.length} top-level names is a global (${globals.slice(0, 5)})`);
   await openModules(page);
   await page.screenshot({ path: path.join(shots, '1-loaded.png') });
   check(await page.locator('#values-table tr').count() === 3, 'the values table has a header and two values');
