@@ -1,3 +1,5 @@
+#include "layout/geometry.h"
+
 #include <algorithm>
 
 #include "layout/layout.h"
