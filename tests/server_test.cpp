@@ -565,7 +565,7 @@ TEST_F(ServerTest, ThePageIsServedFromItsFiles) {
   auto r = get("/");
   ASSERT_TRUE(r) << httplib::to_string(r.error());
   EXPECT_EQ(r->status, 200);
-  EXPECT_NE(r->body.find("<script src=\"app.js\">"), std::string::npos);
+  EXPECT_NE(r->body.find("<script type=\"module\" src=\"app.js\">"), std::string::npos);
   auto js = get("/app.js");
   ASSERT_TRUE(js);
   EXPECT_EQ(js->status, 200);
