@@ -13,7 +13,9 @@ set(CURDLE_PUBLIC_HEADERS
   src/curdle/lattice.h src/curdle/markov.h src/curdle/markov_report.h src/curdle/measure.h
   src/curdle/overlay.h src/curdle/probability.h
   src/curdle/report.h src/curdle/search.h src/curdle/stop.h
-  src/layout/drawing_sheet.h src/layout/element_id.h src/layout/installer_sheets.h
+  src/layout/block_views.h src/layout/drawing_sheet.h src/layout/element_id.h
+  src/layout/envelope_frames.h src/layout/fabrication_sheets.h src/layout/geometry.h
+  src/layout/installer_sheets.h
   src/layout/layout.h src/layout/layout_kind.h src/layout/piece_rows.h src/layout/planting_spec.h
   src/layout/surface_frame.h src/layout/wkt.h
   src/io/atomic_file.h src/io/image.h

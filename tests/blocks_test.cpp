@@ -19,7 +19,7 @@ TEST(Blocks, PlanAndElevationShowTheFirstBlockSeen) {
   EXPECT_EQ(layout.elements.size(), 512 - counts[0]);
   std::map<std::pair<double, double>, uint32_t> shown;
   std::multiset<std::string> in_plan;  // every block named once, under its plan cell
-  for (const Layout::ViewCell& v : layout.views) {
+  for (const BlockViews::Cell& v : layout.block_views->cells) {
     shown[{v.rect.x, v.rect.y}] = v.value;
     if (v.plan) in_plan.insert(v.elements.begin(), v.elements.end());
   }

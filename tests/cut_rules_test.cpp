@@ -262,13 +262,13 @@ TEST(CutRules, AKeptUnionThatIsOneCircleStaysACircle) {
 
 TEST(CutRules, EachSheetReportsItsOpenAreaAndHoleCountsPerTool) {
   const Layout layout = screen(Combine::keep, {}, std::array<double, 2>{0.2, 0.3}, 4);
-  ASSERT_EQ(layout.sheets.size(), 3u);  // 300 + 300 + 40 mm wide
+  ASSERT_EQ(layout.sheets().size(), 3u);  // 300 + 300 + 40 mm wide
   std::map<int, double> open;
   std::map<int, uint64_t> holes;
   for (const Element& e : layout.elements) open[e.sheet] += e.area(), ++holes[e.sheet];
   size_t outside = 0;
-  for (size_t i = 0; i < layout.sheets.size(); ++i) {
-    const auto& sheet = layout.sheets[i];
+  for (size_t i = 0; i < layout.sheets().size(); ++i) {
+    const auto& sheet = layout.sheets()[i];
     EXPECT_NEAR(sheet.open_area, open[static_cast<int>(i)] / sheet.area.area(), 1e-12);
     uint64_t counted = 0;
     for (const auto& [tool, n] : sheet.tools) counted += n;

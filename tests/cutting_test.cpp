@@ -77,11 +77,11 @@ Layout screen(const Design& d) {
 
 TEST(Cutting, SheetsKeepMarginsAndBridgesAndTheirDxfHoldsTheirOpenings) {
   const Layout layout = screen(kDesign);
-  ASSERT_EQ(layout.sheets.size(), 6u);  // 3 x 2 sheets, the last column and row narrower
+  ASSERT_EQ(layout.sheets().size(), 6u);  // 3 x 2 sheets, the last column and row narrower
   std::map<int, std::vector<const Element*>> by_sheet;
   for (const Element& e : layout.elements) {
     ASSERT_GE(e.sheet, 0) << e.id;
-    const Rect& a = layout.sheets[static_cast<size_t>(e.sheet)].area;
+    const Rect& a = layout.sheets()[static_cast<size_t>(e.sheet)].area;
     const Circle& c = *e.circle;
     EXPECT_GE(c.cx - c.d / 2 - a.x, 20 - 1e-9) << e.id;
     EXPECT_GE(a.right() - c.cx - c.d / 2, 20 - 1e-9) << e.id;
@@ -96,19 +96,19 @@ TEST(Cutting, SheetsKeepMarginsAndBridgesAndTheirDxfHoldsTheirOpenings) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("curdle-dxf-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  for (size_t s = 0; s < layout.sheets.size(); ++s) {
-    const auto path = dir / (layout.sheets[s].id + ".dxf");
+  for (size_t s = 0; s < layout.sheets().size(); ++s) {
+    const auto path = dir / (layout.sheets()[s].id + ".dxf");
     write_sheet_dxf(path, layout, static_cast<int>(s));
     DxfContents read;
     DL_Dxf dxf;
     ASSERT_TRUE(dxf.in(path.string(), &read)) << path;
-    EXPECT_EQ(read.text, layout.sheets[s].id);
+    EXPECT_EQ(read.text, layout.sheets()[s].id);
     EXPECT_EQ(read.polylines, 1);  // the sheet's outline
     std::set<std::string> expected_ids;
     for (const Element* e : by_sheet[static_cast<int>(s)]) expected_ids.insert(e->id);
     EXPECT_EQ(read.ids, expected_ids);  // the same IDs as the schedule, SVG and glTF
     ASSERT_EQ(read.circles.size(), by_sheet[static_cast<int>(s)].size());
-    const Rect& a = layout.sheets[s].area;
+    const Rect& a = layout.sheets()[s].area;
     for (size_t k = 0; k < read.circles.size(); ++k) {
       const Circle& c = *by_sheet[static_cast<int>(s)][k]->circle;
       const auto& [layer, x, y, r] = read.circles[k];
@@ -136,7 +136,7 @@ TEST(Cutting, SheetsOfASiteSurfaceSayWhereTheyLieInTheDrawing) {
                                 .datum = {530000, 180000},
                                 .precision = 3};
   const auto dir = test::scratch("cutting-site");
-  const auto& second = layout.sheets[1];
+  const auto& second = layout.sheets()[1];
   write_sheet_dxf(dir / "sheet.dxf", layout, 1);
   DxfContents sheet;
   DL_Dxf reader;
@@ -150,11 +150,11 @@ TEST(Cutting, SheetsOfASiteSurfaceSayWhereTheyLieInTheDrawing) {
   write_layout_dxf(dir / "layout-site.dxf", layout, true);
   SheetsLayer sheets;
   ASSERT_TRUE(reader.in((dir / "layout-site.dxf").string(), &sheets));
-  ASSERT_EQ(sheets.ids.size(), layout.sheets.size());
-  ASSERT_EQ(sheets.corners.size(), layout.sheets.size());
-  for (size_t i = 0; i < layout.sheets.size(); ++i) {
-    const Rect& a = layout.sheets[i].area;
-    EXPECT_TRUE(sheets.ids.count(layout.sheets[i].id)) << layout.sheets[i].id;
+  ASSERT_EQ(sheets.ids.size(), layout.sheets().size());
+  ASSERT_EQ(sheets.corners.size(), layout.sheets().size());
+  for (size_t i = 0; i < layout.sheets().size(); ++i) {
+    const Rect& a = layout.sheets()[i].area;
+    EXPECT_TRUE(sheets.ids.count(layout.sheets()[i].id)) << layout.sheets()[i].id;
     EXPECT_NEAR(sheets.corners[i][0], 530000 + a.x / 1000, 1e-9) << i;
     EXPECT_NEAR(sheets.corners[i][1], 180000 + a.y / 1000, 1e-9) << i;
   }

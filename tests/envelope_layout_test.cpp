@@ -22,8 +22,8 @@ namespace {
 
 TEST(EnvelopeLayout, CoursesAreLevelAndEachCornerUnitIsOnePieceCountedOnce) {
   const Layout l = test::lay_recipe(test::pavilion_recipe());
-  ASSERT_EQ(l.frames.size(), 6u);
-  EXPECT_TRUE(l.closed_envelope);
+  ASSERT_EQ(l.frames().size(), 6u);
+  EXPECT_TRUE(l.envelope->closed);
   EXPECT_DOUBLE_EQ(l.width, 64000);
   EXPECT_DOUBLE_EQ(l.thickness, 102.5);
   std::map<int, int> corner_units;
@@ -91,16 +91,16 @@ TEST(EnvelopeLayout, AFacadeLowerThanTheWallHasNoUnitsAboveItsOwnTop) {
   // The bite's two walls one storey high, the rest two.
   const Layout l =
       test::lay_recipe(test::pavilion_recipe("heights = [7050, 7050, 3525, 3525, 7050, 7050]\n"));
-  ASSERT_EQ(l.frames[2].height, 3525);
-  EXPECT_EQ(l.frames[1].height, 0);  // as tall as the wall
+  ASSERT_EQ(l.frames()[2].height, 3525);
+  EXPECT_EQ(l.frames()[1].height, 0);  // as tall as the wall
   size_t above = 0;
   for (const Element& e : l.elements)
     for (const Rect& r : e.shape) {
-      const SurfaceFrame* f = frame_at(l.frames, r.x + r.w / 2);
+      const SurfaceFrame* f = frame_at(l.frames(), r.x + r.w / 2);
       if (f->height > 0) {
         EXPECT_LE(r.top(), f->height + 1e-9) << e.id;
       }
-      above += f == &l.frames[1] && r.y >= 3525;
+      above += f == &l.frames()[1] && r.y >= 3525;
     }
   EXPECT_GT(above, 0u);  // the east wall goes on up beside the bite's roof
 }
@@ -145,7 +145,7 @@ TEST(EnvelopeLayout, ToneContinuesRoundEveryCornerAsAcrossAnyLine) {
   const Layout probe = test::lay_recipe(recipe);
   const double length = probe.width;
   std::vector<double> corners;
-  for (const SurfaceFrame& f : probe.frames) corners.push_back(f.start + f.length);
+  for (const SurfaceFrame& f : probe.frames()) corners.push_back(f.start + f.length);
   std::vector<double> lines;  // random vertical lines, the same for every seed
   uint64_t state = 12345;
   for (int k = 0; k < 200; ++k) {
@@ -173,7 +173,7 @@ TEST(EnvelopeLayout, ToneContinuesRoundEveryCornerAsAcrossAnyLine) {
     const double var = corner_sq[c] / seeds - mean * mean;
     const double se = std::sqrt(std::max(0.0, var + line_var) / seeds);
     EXPECT_GE(mean, line_mean - 4 * se)
-        << probe.frames[c].name << " corner: " << mean << " across it, " << line_mean
+        << probe.frames()[c].name << " corner: " << mean << " across it, " << line_mean
         << " across random lines (standard error " << se << ")";
   }
 }

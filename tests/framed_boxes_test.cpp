@@ -45,7 +45,7 @@ TEST(FramedBoxes, ACurvedWallsUnitsAreChordsOfItsArc) {
   arc.to = {0, 12000};
   arc.bulge = std::tan(3.14159265358979323846 / 8);
   arc.length = 12000 * 3.14159265358979323846 / 2;
-  l.frames = {arc};
+  l.envelope.emplace().frames = {arc};
   l.width = arc.length;
   const std::vector<FramedBox> b = framed_boxes(l, Rect{1000, 0, 215, 65}, 0, 100);
   ASSERT_EQ(b.size(), 1u);
@@ -66,7 +66,7 @@ TEST(FramedBoxes, AUnitBentToAnArcIsFacetsWithinAQuarterMillimetreOfIt) {
   arc.bulge = std::tan(3.14159265358979323846 / 8);
   arc.length = 12000 * 3.14159265358979323846 / 2;
   arc.bent = true;
-  l.frames = {arc};
+  l.envelope.emplace().frames = {arc};
   l.width = arc.length;
   const std::vector<FramedBox> b = framed_boxes(l, Rect{1000, 0, 1200, 600}, 0, 20);
   ASSERT_GE(b.size(), 2u);
@@ -92,7 +92,7 @@ TEST(FramedBoxes, UnitsBentToACurvedFacadeAreOrderedOnTheirOwnLine) {
       "panel = [1200, 600]\njoint = 12\nbond = \"stack\"\n",
       "plan = [[0, 0, 0.2], [14000, 0], [14000, 8000], [0, 8000]]\nheight = 1224\ndepth = 20\n"
       "arcs = \"bent\"\n"));
-  ASSERT_TRUE(l.frames[0].bent);
+  ASSERT_TRUE(l.frames()[0].bent);
   size_t bent = 0;
   for (const Element& e : l.elements) {
     const std::string type = element_type_of(l, e);

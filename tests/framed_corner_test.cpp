@@ -74,7 +74,7 @@ TEST(FramedCorner, AnObtuseAndAnAcuteCornerMeetAtTheArrisAndTheMitre) {
   size_t seen = 0;
   for (const Element& e : l.elements) {
     if (e.corner < 0 || e.corner > 1) continue;
-    const SurfaceFrame& f = l.frames[static_cast<size_t>(e.corner)];
+    const SurfaceFrame& f = l.frames()[static_cast<size_t>(e.corner)];
     const auto p = framed_corner(l, e, t);
     ASSERT_TRUE(p) << e.id;
     ++seen;

@@ -124,15 +124,15 @@ TEST(FramedSheet, EveryCornerLiesOnTheArcOrWithinItsStripsRise) {
 
 TEST(FramedSheet, ATileStandsOnTheChordAcrossItsOpeningOnTheSheetsBack) {
   Layout l;
-  l.frames = {arc_frame(true)};
+  l.envelope.emplace().frames = {arc_frame(true)};
   l.thickness = 3;
   Element e;
   e.form = ElementForm::opening;
   e.circle = Circle{4000, 1000, 26};
   const FramedPose pose = tile_pose(l, e);
   // Its front on the chord of the outer face across its square, its back 3 mm behind.
-  const BuildingPoint a = frame_point(l.frames[0], 4000 - 13, 1000, 0);
-  const BuildingPoint b = frame_point(l.frames[0], 4000 + 13, 1000, 0);
+  const BuildingPoint a = frame_point(l.frames()[0], 4000 - 13, 1000, 0);
+  const BuildingPoint b = frame_point(l.frames()[0], 4000 + 13, 1000, 0);
   const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
   const std::array<double, 2> d{(b[0] - a[0]) / len, (b[1] - a[1]) / len};
   EXPECT_NEAR(pose.origin[0], (a[0] + b[0]) / 2 - 3 * d[1], 1e-9);
@@ -154,9 +154,9 @@ TEST(FramedSheet, TheCurvedScreensSheetsHoldTheMetalTheyAreOrderedWith) {
   std::stringstream text;
   text << in.rdbuf();
   const Layout l = test::lay_recipe(text.str());
-  ASSERT_EQ(l.sheets.size(), 9u);
+  ASSERT_EQ(l.sheets().size(), 9u);
   const FramedScreen screen = framed_screen(l);
-  std::vector<FramedMesh> meshes(l.sheets.size());
+  std::vector<FramedMesh> meshes(l.sheets().size());
   for (size_t i = 0; i < l.elements.size(); ++i) {  // each tile where it stands, as written
     const Element& e = l.elements[i];
     const std::vector<size_t>& on_sheet = screen.tiled[static_cast<size_t>(e.sheet)];
@@ -177,10 +177,10 @@ TEST(FramedSheet, TheCurvedScreensSheetsHoldTheMetalTheyAreOrderedWith) {
     }
     for (const uint32_t k : idx) m.indices.push_back(first + k);
   }
-  for (size_t k = 0; k < l.sheets.size(); ++k) {
-    const Layout::FabricationSheet& s = l.sheets[k];
+  for (size_t k = 0; k < l.sheets().size(); ++k) {
+    const FabricationSheet& s = l.sheets()[k];
     FramedMesh& mesh = meshes[k];
-    add_framed_sheet(*frame_at(l.frames, s.area.x + s.area.w / 2), screen.rings[k],
+    add_framed_sheet(*frame_at(l.frames(), s.area.x + s.area.w / 2), screen.rings[k],
                      screen.squares[k], l.thickness, mesh);
     const double metal = enclosed_volume(mesh) / l.thickness;
     const double net = s.surface * (1 - s.open_area) * s.developed;

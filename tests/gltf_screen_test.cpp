@@ -21,7 +21,7 @@ TEST(GltfScreen, ANodeASheetAndAMeshAShape) {
   ModelBuilder b;
   b.model.materials.emplace_back();
   const std::vector<int> sheets = add_screen_sheets(b, l, 0);
-  ASSERT_EQ(sheets.size(), l.sheets.size());
+  ASSERT_EQ(sheets.size(), l.sheets().size());
   EXPECT_EQ(std::set<int>(sheets.begin(), sheets.end()).size(), sheets.size());
   // A mesh per sheet, named by its ID, and one per shape of tile: the screen's 4,824 openings
   // come in a few diameters and merged shapes, not a mesh each.
@@ -31,13 +31,12 @@ TEST(GltfScreen, ANodeASheetAndAMeshAShape) {
     if (m.name.rfind("sheet round opening", 0) == 0) ++tile_meshes;
     names.insert(m.name);
   }
-  for (const Layout::FabricationSheet& s : l.sheets)
-    EXPECT_TRUE(names.count("sheet " + s.id)) << s.id;
+  for (const FabricationSheet& s : l.sheets()) EXPECT_TRUE(names.count("sheet " + s.id)) << s.id;
   EXPECT_GT(tile_meshes, 0u);
   EXPECT_LT(tile_meshes, 100u);
   size_t tiled = 0;
   for (const auto& on_sheet : framed_screen(l).tiled) tiled += on_sheet.size();
-  EXPECT_EQ(b.model.meshes.size(), l.sheets.size() + tile_meshes);
+  EXPECT_EQ(b.model.meshes.size(), l.sheets().size() + tile_meshes);
   EXPECT_GT(tiled, 4000u) << "each opening is placed as a node of its sheet";
 }
 

@@ -100,11 +100,11 @@ TEST(InstallerSheetGrid, SheetsAreBalancedByWhatTheyHold) {
 TEST(InstallerSheetGrid, ABuildingsSheetsEachHoldOneFacadeWithTheCornersOnTheirEdges) {
   const Layout l = test::lay_recipe(test::pavilion_recipe());
   const InstallerPlan plan = plan_installer_sheets(l);
-  ASSERT_GT(plan.grid_columns, l.frames.size() - 1);
+  ASSERT_GT(plan.grid_columns, l.frames().size() - 1);
   for (const InstallerSheet& sheet : plan.sheets)
-    for (const SurfaceFrame& f : l.frames) {
+    for (const SurfaceFrame& f : l.frames()) {
       const double corner = f.start + f.length;
-      if (&f == &l.frames.back()) continue;  // the strip's end: the band of paper beyond it
+      if (&f == &l.frames().back()) continue;  // the strip's end: the band of paper beyond it
       EXPECT_FALSE(corner > sheet.window.x + 1e-6 && corner < sheet.window.right() - 1e-6)
           << "the corner at " << corner << " mm crosses a sheet from " << sheet.window.x;
     }

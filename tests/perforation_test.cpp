@@ -82,11 +82,11 @@ TEST(Perforation, AnOutlineBoundsTheOpeningsAndCutsTheSheets) {
       EXPECT_GE(std::hypot(a[0] + t * dx - c.cx, a[1] + t * dy - c.cy) - c.d / 2, 5 - 1e-9) << e.id;
     }
   }
-  ASSERT_EQ(layout.sheets.size(), 4u);  // 2 x 2 sheets of 320, all meeting the gable
+  ASSERT_EQ(layout.sheets().size(), 4u);  // 2 x 2 sheets of 320, all meeting the gable
   double surface = 0;
-  for (const auto& sheet : layout.sheets) surface += sheet.surface;
+  for (const auto& sheet : layout.sheets()) surface += sheet.surface;
   EXPECT_NEAR(surface, polygon_area(s.spec.outline), 1e-6);
-  EXPECT_FALSE(layout.sheets[2].outline.empty());  // the upper sheets follow the gable
+  EXPECT_FALSE(layout.sheets()[2].outline.empty());  // the upper sheets follow the gable
   EXPECT_NEAR(layout.open_area, open / polygon_area(s.spec.outline), 1e-12);
 }
 

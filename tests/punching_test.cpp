@@ -33,7 +33,7 @@ TEST(Punching, ARowPerSheetWithItsStockAndHitsAndATotal) {
   std::ostringstream out;
   write_punching_csv(out, layout);
   const auto rows = strict_csv(out.str().substr(3));
-  ASSERT_EQ(rows.size(), layout.sheets.size() + 2);  // header, sheets, total
+  ASSERT_EQ(rows.size(), layout.sheets().size() + 2);  // header, sheets, total
   EXPECT_EQ(rows[0][0], "sheet_id");
   EXPECT_EQ(rows[0][8], "hits_D12");
   EXPECT_EQ(rows[0][9], "hits_D16");
@@ -44,7 +44,7 @@ TEST(Punching, ARowPerSheetWithItsStockAndHitsAndATotal) {
   EXPECT_EQ(total[0], "total");
   double area = 0;
   for (size_t r = 1; r + 1 < rows.size(); ++r) {
-    EXPECT_EQ(rows[r][0], layout.sheets[r - 1].id);
+    EXPECT_EQ(rows[r][0], layout.sheets()[r - 1].id);
     EXPECT_EQ(rows[r][1], "Aluminium 5005, anodised");  // quoted in the file: it holds a comma
     EXPECT_EQ(rows[r][2], "3");
     EXPECT_EQ(rows[r][3] + " x " + rows[r][4], "320 x 320");
@@ -60,8 +60,8 @@ TEST(Punching, ARowPerSheetWithItsStockAndHitsAndATotal) {
   EXPECT_EQ(rows[0][blank + 3], "bend_radius_mm");
   for (size_t r = 1; r + 1 < rows.size(); ++r) {
     EXPECT_EQ(rows[r][blank], "");
-    EXPECT_NEAR(std::stod(rows[r][blank + 1]), layout.sheets[r - 1].area.w, 0.005);
-    EXPECT_NEAR(std::stod(rows[r][blank + 2]), layout.sheets[r - 1].area.h, 0.005);
+    EXPECT_NEAR(std::stod(rows[r][blank + 1]), layout.sheets()[r - 1].area.w, 0.005);
+    EXPECT_NEAR(std::stod(rows[r][blank + 2]), layout.sheets()[r - 1].area.h, 0.005);
     EXPECT_EQ(rows[r][blank + 3], "");
   }
   for (size_t c = 8; c < blank; ++c) {
@@ -85,8 +85,8 @@ TEST(Punching, ARolledSheetsBlankIsDevelopedAtMidThicknessWithItsBendRadius) {
   const double arc = 8000 * M_PI / 6;  // 4188.8 mm: four sheets of a quarter of it
   ASSERT_GE(rows.size(), 7u);
   const size_t blank = rows[0].size() - 4;
-  ASSERT_EQ(layout.frames.size(), 2u);
-  const std::string arc_facade = layout.frames[0].name, straight = layout.frames[1].name;
+  ASSERT_EQ(layout.frames().size(), 2u);
+  const std::string arc_facade = layout.frames()[0].name, straight = layout.frames()[1].name;
   EXPECT_EQ(rows[1][0], "S-" + arc_facade + "-R1-C1");
   EXPECT_EQ(rows[1][blank], arc_facade);
   EXPECT_NEAR(std::stod(rows[1][blank + 1]), arc / 4 * (8000 - 1.5) / 8000, 0.005);

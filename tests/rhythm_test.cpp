@@ -55,13 +55,13 @@ widths = [0, 200]
 plan = [[0, 0], [12000, 0, 0.25], [12000, 8000], [0, 8000]]
 height = 4200
 )");
-  ASSERT_EQ(l.frames.size(), 4u);
+  ASSERT_EQ(l.frames().size(), 4u);
   ASSERT_FALSE(l.elements.empty());
-  const double radius = frame_radius(l.frames[1]);
+  const double radius = frame_radius(l.frames()[1]);
   size_t on_arc = 0;
   for (const Element& e : l.elements) {
     const Rect& r = e.shape.front();
-    const SurfaceFrame* f = frame_at(l.frames, r.x + r.w / 2);
+    const SurfaceFrame* f = frame_at(l.frames(), r.x + r.w / 2);
     EXPECT_GE(r.x, f->start - 1e-9) << e.id;  // on one face
     EXPECT_LE(r.right(), f->start + f->length + 1e-9) << e.id;
     EXPECT_NEAR(r.h, 4200, 1e-9);
@@ -69,7 +69,7 @@ height = 4200
     EXPECT_EQ(depth[0], -300) << e.id;  // off the face, in front of it
     EXPECT_EQ(depth[1], 0) << e.id;
     const BuildingPoint c = framed_centre(l, e);  // its outer edge, 300 mm off the face
-    if (f == &l.frames[1]) {
+    if (f == &l.frames()[1]) {
       ++on_arc;
       const Arc arc = arc_between({f->from[0], f->from[1], f->bulge}, {f->to[0], f->to[1], 0});
       // A straight plate square to the chord across its bay's part of the face: its outer
@@ -77,7 +77,7 @@ height = 4200
       const double half = r.w / 2;
       EXPECT_NEAR(std::hypot(c[0] - arc.centre[0], c[1] - arc.centre[1]),
                   std::sqrt(radius * radius - half * half) + 300, 1e-3);  // chord, not arc
-    } else if (f == &l.frames[0]) {
+    } else if (f == &l.frames()[0]) {
       EXPECT_NEAR(c[1], -300, 1e-9);  // the south face: off it towards the south
     }
   }
@@ -89,7 +89,7 @@ height = 4200
   for (size_t k = 0; k < bays; ++k) {
     const double from = 600.0 * static_cast<double>(k) + 200, to = from + 200;
     bool crosses = to > l.width + 1e-9;
-    for (const SurfaceFrame& f : l.frames)
+    for (const SurfaceFrame& f : l.frames())
       crosses = crosses || (from < f.start + f.length - 1e-9 && to > f.start + f.length + 1e-9);
     turning += crosses;
   }

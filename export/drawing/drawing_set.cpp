@@ -271,8 +271,9 @@ std::vector<std::string> sheet_setting_out(const Layout& layout, const Rect& win
                   on.y, on.top())};
   std::vector<std::pair<std::string, Rect>> shown;
   for (size_t i = 0; i < layout.openings_given; ++i)
-    shown.emplace_back(i < layout.opening_names.size() ? layout.opening_names[i]
-                                                       : fmt::format("opening {}", i + 1),
+    shown.emplace_back(layout.envelope && i < layout.envelope->opening_names.size()
+                           ? layout.envelope->opening_names[i]
+                           : fmt::format("opening {}", i + 1),
                        layout.openings[i]);
   for (const ZoneCount& z : layout.zones) {
     if (z.polygon.empty() || !z.contour.empty()) continue;  // arcs: by centre and radius, below
@@ -380,7 +381,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   const std::string unit = legend_unit(layout);
   const std::string holds =
       pieces == 0 ? "no pieces"
-      : !layout.sheets.empty()
+      : layout.fabrication.has_value()
           ? fmt::format("{} sheet{}", pieces, pieces == 1 ? "" : "s")
           : fmt::format("{}: {} {} to {}, columns {} to {}", legend_count(layout, pieces),
                         plan.coursed ? "courses" : "rows", held.row0, held.row1, held.column0,
@@ -401,7 +402,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
     if (c.frame->start < sheet.window.right() && c.frame->start + c.frame->length > sheet.window.x)
       info.insert(info.end(), c.brief.begin(), c.brief.end());
   if (held.backing)
-    info.push_back(fmt::format("behind them, {}: {}", layout.backing_material, held.backing));
+    info.push_back(fmt::format("behind them, {}: {}", layout.backing()->material, held.backing));
   for (std::string& line : sheet_setting_out(layout, sheet.window)) info.push_back(std::move(line));
   if (plan.unplaced)
     info.push_back(fmt::format("{} labels found no room: use a larger sheet", plan.unplaced));

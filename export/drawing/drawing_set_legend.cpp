@@ -50,19 +50,20 @@ std::vector<std::pair<std::vector<Rgb>, std::string>> sheet_legend(const Layout&
     }
     rows.push_back({swatch, line});
   }
-  if (!layout.frames.empty()) {  // a building's units by part, as quantities.csv orders them
+  if (layout.envelope.has_value()) {  // a building's units by part, as quantities.csv orders them
     std::map<std::string, uint64_t> by_part;
     for (const Element& e : layout.elements) ++by_part[element_type_of(layout, e)];
     if (by_part.size() > 1)
       for (const auto& [part, n] : by_part)
         rows.push_back({{}, fmt::format("all tones, {}: {}", part, n)});
   }
-  if (layout.backed) {  // a one-brick wall: the backing behind its face, unseen but laid
+  if (const WallBacking* backed =
+          layout.backing()) {  // a one-brick wall: the backing behind its face, unseen but laid
     size_t backing = 0, cut = 0;
     for (const Element& e : layout.elements)
       if (needs_backing(layout, e)) ++backing, cut += e.cut;
     rows.push_back({{kBackingColour},
-                    fmt::format("behind the face, {}: {} ({} cut)", layout.backing_material,
+                    fmt::format("behind the face, {}: {} ({} cut)", backed->material,
                                 legend_count(layout, backing), cut)});
   }
   return rows;

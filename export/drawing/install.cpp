@@ -141,7 +141,7 @@ void write_surface(std::ostream& out, const Layout& layout, const Frame& f, doub
     out << fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(f.x(o.x)),
                        num(f.y(o.top())), num(o.w), num(o.h));
   out << "</g>\n";
-  for (const auto& sheet : layout.sheets)  // a perforated surface's fabrication sheets
+  for (const auto& sheet : layout.sheets())  // a perforated surface's fabrication sheets
     out << fmt::format(
         "<rect class=\"sheet\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#c9cdd2\" "
         "stroke=\"#555\" stroke-width=\"{}\"/>\n",

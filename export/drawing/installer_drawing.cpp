@@ -48,7 +48,7 @@ InstallerDrawing installer_set(const Layout& layout, const InstallerPlan& plan) 
   }
   for (uint32_t i = 0; i < plan.labels.size(); ++i)
     if (plan.labels[i].sheet < sheets) set.labels_on[plan.labels[i].sheet].push_back(i);
-  const bool elements = layout.sheets.empty();  // else the pieces are fabrication sheets
+  const bool elements = !layout.fabrication;  // else the pieces are fabrication sheets
   for (uint32_t i = 0; i < layout.elements.size(); ++i) {
     stop_point();
     const Element& e = layout.elements[i];

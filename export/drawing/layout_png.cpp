@@ -156,10 +156,12 @@ PreviewImage render_layout(const Layout& layout) {
   for (const Rect& o : layout.openings) canvas.fill(o, Rgb{223, 234, 242});
   for (const Rect& o : layout.outside) canvas.fill(o, Rgb{255, 255, 255});  // not the surface
   for (const Outline& o : layout.cut_away) canvas.fill(o, Rgb{255, 255, 255});
-  for (const Layout::ViewCell& v : layout.views) canvas.fill(v.rect, layout.legend[v.value].colour);
+  if (layout.block_views)
+    for (const BlockViews::Cell& v : layout.block_views->cells)
+      canvas.fill(v.rect, layout.legend[v.value].colour);
   for (const Element& e : layout.elements) {
     stop_point();
-    if (!layout.views.empty()) break;  // blocks are drawn as their views
+    if (layout.block_views) break;  // blocks are drawn as their views
     const LegendEntry& entry = layout.legend[e.value];
     // Pieces tile the surface; a park's standing objects are painted over its ground.
     canvas.ground = e.stands ? std::nullopt : std::optional<Rgb>(background);

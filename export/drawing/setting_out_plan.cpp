@@ -52,7 +52,7 @@ bool draw_setting_out_plan(cairo_t* cr, const Layout& layout, double x, double y
   }
   lines = wrap_lines(cr, lines, w, kText, std::max<size_t>(3, static_cast<size_t>(h / 3 / kLine)));
   double bx0 = 1e300, by0 = 1e300, bx1 = -1e300, by1 = -1e300;
-  for (const SurfaceFrame& f : layout.frames)
+  for (const SurfaceFrame& f : layout.frames())
     for (const auto& p : face_points(f))
       bx0 = std::min(bx0, p[0]), by0 = std::min(by0, p[1]), bx1 = std::max(bx1, p[0]),
       by1 = std::max(by1, p[1]);
@@ -78,7 +78,7 @@ bool draw_setting_out_plan(cairo_t* cr, const Layout& layout, double x, double y
   auto px = [&](double X) { return ox + (X - bx0) / scale; };
   auto py = [&](double Y) { return oy + (by1 - Y) / scale; };
   cairo_set_line_width(cr, 0.35);
-  for (const SurfaceFrame& f : layout.frames) {
+  for (const SurfaceFrame& f : layout.frames()) {
     const auto points = face_points(f);
     cairo_move_to(cr, px(points[0][0]), py(points[0][1]));
     for (const auto& p : points) cairo_line_to(cr, px(p[0]), py(p[1]));

@@ -192,12 +192,14 @@ void draw_pieces(cairo_t* cr, const Layout& layout, const View& v, bool faint) {
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);  // beyond sloping edges, in sloping zones
   for (const Outline& o : layout.cut_away) ring_paths(cr, o.rings, v), cairo_fill(cr);
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
-  for (const Layout::ViewCell& c : layout.views) {
-    colour(cr, layout.legend[c.value].colour, alpha);
-    v.rect(cr, c.rect);
-    cairo_fill(cr);
+  if (layout.block_views) {  // blocks are drawn as their views
+    for (const BlockViews::Cell& c : layout.block_views->cells) {
+      colour(cr, layout.legend[c.value].colour, alpha);
+      v.rect(cr, c.rect);
+      cairo_fill(cr);
+    }
+    return;
   }
-  if (!layout.views.empty()) return;  // blocks are drawn as their views
   FlatFills flat(cr, v, alpha, layout.joint <= 0);
   OpeningDots dots;
   for_each_element(layout, v, [&](const Element& e) {
@@ -419,7 +421,7 @@ void start_corner(cairo_t* cr, const Layout& layout, const View& v) {
 }
 
 void draw_facades(cairo_t* cr, const Layout& layout, const View& v) {
-  if (layout.frames.empty()) return;
+  if (!layout.envelope) return;
   const double bottom = v.y(0), top = v.y(layout.height);
   const double below = bottom + kStartDotMm + 1.25;  // in line with the start corner's words
   // Clear of those words where the strip starts on this sheet.
@@ -430,7 +432,7 @@ void draw_facades(cairo_t* cr, const Layout& layout, const View& v) {
   colour(cr, kBlue);
   cairo_set_line_width(cr, 0.35);
   const double dash[] = {2.0, 1.0};
-  for (const SurfaceFrame& f : layout.frames) {
+  for (const SurfaceFrame& f : layout.frames()) {
     const double from = std::max(f.start, v.window.x);
     const double to = std::min(f.start + f.length, v.window.right());
     if (to <= from) continue;

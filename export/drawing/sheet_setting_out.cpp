@@ -98,7 +98,7 @@ std::string curve_line(const CurveStations& c, size_t index) {
 }  // namespace
 
 void setting_out(cairo_t* cr, const Layout& layout, const View& v, double bottom) {
-  if (layout.width <= 0 || layout.height <= 0 || !layout.views.empty()) return;
+  if (layout.width <= 0 || layout.height <= 0 || layout.block_views) return;
   std::vector<double> xs{0, layout.width}, ys{0, layout.height};
   auto add_ring = [&](const Polygon& ring) {
     for (const auto& p : ring) xs.push_back(p[0]), ys.push_back(p[1]);

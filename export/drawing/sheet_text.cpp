@@ -111,7 +111,7 @@ void title_block(cairo_t* cr, const Layout& layout, const std::vector<std::strin
   // gives its description a line of its own rather than an ellipsis; long lines wrap, so that
   // only what ten lines cannot hold is cut.
   // Plans carry a north arrow under the ninth line: then nine lines, else ten.
-  const bool arrow = !layout.kind->upright() && layout.views.empty();
+  const bool arrow = !layout.kind->upright() && !layout.block_views;
   const size_t most = arrow ? 9 : 10;
   const std::string title = lines[0];
   const size_t dash = title.find(" - ");

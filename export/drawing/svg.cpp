@@ -129,9 +129,10 @@ void draw_openings(std::ostream& out, const Layout& layout, const Sheet& s) {
 }
 
 // Blocks: the plan and the elevation, one group per value, with their captions.
-void draw_views(std::ostream& out, const Layout& layout, const Sheet& s, double unit) {
-  std::vector<std::vector<const Layout::ViewCell*>> by_value(layout.legend.size());
-  for (const Layout::ViewCell& v : layout.views) by_value[v.value].push_back(&v);
+void draw_views(std::ostream& out, const Layout& layout, const BlockViews& views, const Sheet& s,
+                double unit) {
+  std::vector<std::vector<const BlockViews::Cell*>> by_value(layout.legend.size());
+  for (const BlockViews::Cell& v : views.cells) by_value[v.value].push_back(&v);
   for (const LegendEntry& entry : layout.legend) {
     out << fmt::format(
         "<g id=\"value-{}\" class=\"value\" data-value=\"{}\" data-label=\"{}\" data-count=\"{}\" "
@@ -140,7 +141,7 @@ void draw_views(std::ostream& out, const Layout& layout, const Sheet& s, double 
         hex_colour(entry.colour), mm(unit * 0.03));
     // Each cell names the blocks it stands for; the plan's cell takes its top block's ID (every
     // block lies under exactly one plan cell, so IDs stay unique).
-    for (const Layout::ViewCell* v : by_value[entry.value]) {
+    for (const BlockViews::Cell* v : by_value[entry.value]) {
       std::string ids;
       for (const std::string& id : v->elements) ids += (ids.empty() ? "" : " ") + id;
       out << fmt::format("<path {}class=\"element\" data-elements=\"{}\" d=\"{}\"/>\n",
@@ -149,7 +150,7 @@ void draw_views(std::ostream& out, const Layout& layout, const Sheet& s, double 
     }
     out << "</g>\n";
   }
-  for (const auto& [text, area] : layout.captions)
+  for (const auto& [text, area] : views.captions)
     out << fmt::format(
         "<text class=\"caption\" x=\"{}\" y=\"{}\" font-size=\"{}\" fill=\"#222\">{}</text>\n",
         mm(s.x(area.x)), mm(s.y(area.top()) - unit * 0.4), mm(unit * 0.8), escape(text));
@@ -576,7 +577,7 @@ void write_layout_svg(std::ostream& out, const Layout& layout) {
       draw_outside(out, layout, s, unit);
       break;
     case Depiction::views:
-      draw_views(out, layout, s, unit);
+      if (layout.block_views) draw_views(out, layout, *layout.block_views, s, unit);
       break;
     case Depiction::objects:
       draw_park(out, layout, s, unit);

@@ -13,7 +13,7 @@
 
 namespace curdle {
 
-std::string rolled_text(const Layout::FabricationSheet& s, double thickness) {
+std::string rolled_text(const FabricationSheet& s, double thickness) {
   return fmt::format(
       "developed blank {:.2f} x {:.2f} mm at mid-thickness; rolled to an inside radius of {:.1f} "
       "mm "
@@ -22,7 +22,7 @@ std::string rolled_text(const Layout::FabricationSheet& s, double thickness) {
 }
 
 void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, int sheet) {
-  const auto& s = layout.sheets[static_cast<size_t>(sheet)];
+  const auto& s = layout.sheets()[static_cast<size_t>(sheet)];
   std::vector<DxfLayer> layers{{"OUTLINE", Rgb{0, 0, 0}, true},
                                {"OPENING_OUTLINE", Rgb{255, 0, 0}, true}};
   for (const Element& e : layout.elements)
@@ -73,7 +73,7 @@ void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, in
 }
 
 void write_sheet_svg(std::ostream& out, const Layout& layout, int sheet) {
-  const auto& s = layout.sheets[static_cast<size_t>(sheet)];
+  const auto& s = layout.sheets()[static_cast<size_t>(sheet)];
   const double W = s.area.w * s.developed, H = s.area.h;
   auto y = [&](double v) { return H - v; };  // SVG's y runs down
   auto bx = [&](double x) { return (x - s.area.x) * s.developed; };

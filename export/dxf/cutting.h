@@ -20,7 +20,7 @@ namespace curdle {
 
 // What the roller needs of a sheet rolled to an arc: its blank, its inside radius and its
 // length along the outer face.
-std::string rolled_text(const Layout::FabricationSheet& sheet, double thickness);
+std::string rolled_text(const FabricationSheet& sheet, double thickness);
 
 void write_sheet_dxf(const std::filesystem::path& path, const Layout& layout, int sheet);
 void write_sheet_svg(std::ostream& out, const Layout& layout, int sheet);

@@ -41,7 +41,7 @@ Rect drawn_extents(const Layout& layout, double caption_height, size_t caption_l
   };
   if (!layout.outline.empty())
     for (const auto& p : layout.outline) add(Rect{p[0], p[1], 0, 0});
-  else if (layout.views.empty())
+  else if (!layout.block_views)
     add(Rect{0, 0, layout.width, layout.height});
   for (const Rect& o : layout.openings) add(o);
   for (const Element& e : layout.elements) add(laid_bounds(e));
@@ -59,10 +59,9 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout,
   std::vector<DxfLayer> layers{{"OUTLINE", kInk, true}};
   if (layout.openings_given > 0) layers.push_back({"OPENINGS", Rgb{90, 90, 90}, true});
   if (!layout.zones.empty()) layers.push_back({"ZONES", Rgb{68, 81, 92}, true});
-  const bool pits = std::any_of(layout.planting.begin(), layout.planting.end(),
-                                [](const PlantingSpec& p) { return p.pit_given(); });
-  if (pits) layers.push_back({"TREE_PITS", Rgb{110, 80, 50}, true});
-  if (!layout.sheets.empty()) layers.push_back({"SHEETS", Rgb{0, 128, 0}, false});
+  if (layout.planting && layout.planting->any_pit())
+    layers.push_back({"TREE_PITS", Rgb{110, 80, 50}, true});
+  if (layout.fabrication) layers.push_back({"SHEETS", Rgb{0, 128, 0}, false});
   std::map<std::string, bool> seen;
   for (const Element& e : layout.elements) {
     stop_point();
@@ -84,7 +83,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout,
     dxf.contour("OUTLINE", layout.outline_contour);  // its arcs as bulges
   else if (!layout.outline.empty())
     dxf.polygon("OUTLINE", layout.outline);
-  else if (layout.views.empty())  // blocks are drawn as views, not a surface
+  else if (!layout.block_views)  // blocks are drawn as views, not a surface
     dxf.rect("OUTLINE", surface);
   for (size_t i = 0; i < layout.openings_given; ++i) dxf.rect("OPENINGS", layout.openings[i]);
   for (const ZoneCount& z : layout.zones) {
@@ -111,7 +110,7 @@ void write_layout_dxf(const std::filesystem::path& path, const Layout& layout,
   }
   // Each fabrication sheet where it lies, by its ID, so that its cutting file can be found on
   // the plan (and, in layout-site.dxf, on the site drawing).
-  for (const auto& s : layout.sheets) {
+  for (const auto& s : layout.sheets()) {
     dxf.rect("SHEETS", s.area);
     dxf.text("SHEETS", s.area.x + s.area.w / 2, s.area.y + s.area.h / 2,
              std::max(0.1, std::min(s.area.w, s.area.h) / 10), s.id, true);

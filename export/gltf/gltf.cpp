@@ -475,10 +475,10 @@ void add_framed_pieces(Scene& sc) {
   const double kSetBack = 8;  // a recessed joint, mm
   // A one-brick wall's backing leaf behind the face leaf and its collar joint, in a common
   // brick's colour: the headers run into it, as they are bonded into it.
+  const WallBacking* backed = layout.backing();
   const int backing =
-      layout.backed ? sc.b.add_material("backing: " + layout.backing_material, kBackingColour, 0, 1)
-                    : mortar;
-  const double mortar_to = layout.backed ? layout.backing_from : t;
+      backed ? sc.b.add_material("backing: " + backed->material, kBackingColour, 0, 1) : mortar;
+  const double mortar_to = backed ? backed->from : t;
   int part = 0;
   // Mortar shows in joints; fins standing off a wall have none.
   const bool jointed = !layout.kind->stands_off();
@@ -489,8 +489,8 @@ void add_framed_pieces(Scene& sc) {
       n.name = "mortar-" + std::to_string(part++);
       sc.roots.push_back(sc.b.add_node(std::move(n)));
     }
-    if (!layout.backed) continue;
-    for (const FramedBox& f : framed_backing(layout, r, layout.backing_from, t, 600)) {
+    if (!backed) continue;
+    for (const FramedBox& f : framed_backing(layout, r, backed->from, t, 600)) {
       tinygltf::Node n = sc.framed_node(f, backing);
       n.name = "backing-" + std::to_string(part++);
       sc.roots.push_back(sc.b.add_node(std::move(n)));
@@ -535,7 +535,7 @@ void add_provenance(Scene& sc) {
   scene["lattice"] = tinygltf::Value(lattice);
   scene["units"] = tinygltf::Value(std::string("metres, +Y up"));
   // A whole building (layout frames): x east, -z north; viewers frame it from above a corner.
-  if (!sc.layout.frames.empty()) scene["building"] = tinygltf::Value(true);
+  if (sc.layout.envelope.has_value()) scene["building"] = tinygltf::Value(true);
   b.model.scenes[0].name = design.recipe;
   b.model.scenes[0].extras = tinygltf::Value(scene);
 }
@@ -548,9 +548,9 @@ struct Built {
 Built build(const Layout& layout) {
   Scene sc(layout);
   if (layout.kind->bedded()) add_bed(sc);
-  if (!layout.frames.empty() && layout.kind->ground() == Ground::sheet) {
+  if (layout.envelope.has_value() && layout.kind->ground() == Ground::sheet) {
     add_framed_screen(sc);
-  } else if (!layout.frames.empty()) {
+  } else if (layout.envelope.has_value()) {
     add_framed_pieces(sc);
   } else if (layout.kind->ground() == Ground::sheet) {
     add_sheet(sc);

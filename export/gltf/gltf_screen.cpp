@@ -17,7 +17,7 @@ std::vector<int> add_screen_sheets(ModelBuilder& b, const Layout& layout, int me
   const double t = layout.thickness;
   const FramedScreen screen = framed_screen(layout);
   std::map<std::vector<int64_t>, int> tile_meshes;  // by shape
-  std::vector<std::vector<int>> tile_nodes(layout.sheets.size());
+  std::vector<std::vector<int>> tile_nodes(layout.sheets().size());
   for (const std::vector<size_t>& on_sheet : screen.tiled)
     for (const size_t i : on_sheet) {
       stop_point();
@@ -41,10 +41,10 @@ std::vector<int> add_screen_sheets(ModelBuilder& b, const Layout& layout, int me
       tile_nodes[static_cast<size_t>(e.sheet)].push_back(b.add_node(std::move(part)));
     }
   std::vector<int> sheets;
-  for (size_t k = 0; k < layout.sheets.size(); ++k) {
-    const Layout::FabricationSheet& s = layout.sheets[k];
+  for (size_t k = 0; k < layout.sheets().size(); ++k) {
+    const FabricationSheet& s = layout.sheets()[k];
     FramedMesh mesh;
-    add_framed_sheet(*frame_at(layout.frames, s.area.x + s.area.w / 2), screen.rings[k],
+    add_framed_sheet(*frame_at(layout.frames(), s.area.x + s.area.w / 2), screen.rings[k],
                      screen.squares[k], t, mesh);
     std::vector<Vec3> p, n;
     to_gltf_mesh(mesh, p, n);

@@ -56,7 +56,7 @@ class IfcModel {
       stop_point();
       element(l_.elements[i], i);
     }
-    if (!l_.frames.empty() && l_.kind->ground() != Ground::sheet)  // a screen has no walls
+    if (l_.envelope.has_value() && l_.kind->ground() != Ground::sheet)  // a screen has no walls
       for (const auto& [id, base] : envelope_.walls(container_place_, parts_))
         contained_in(base).push_back(id);
     closing_relations();
@@ -210,7 +210,7 @@ class IfcModel {
     // lowest, its walls running up through the others.
     std::vector<int64_t> storeys;
     std::vector<double> levels{0};
-    if (!l_.frames.empty())
+    if (l_.envelope.has_value())
       levels = storey_levels(l_.drawing.storey, l_.drawing.storeys, l_.height);
     while (levels.size() > 1 && levels.back() >= l_.height - 1e-9) levels.pop_back();  // the top
     for (size_t k = 0; k < levels.size(); ++k) {
@@ -247,7 +247,7 @@ class IfcModel {
   // already the surface's plane), as IFC places openings in their host.
   int64_t placement_in_sheet(double x, double y, size_t sheet) {
     g_.set_local_origin(x, y);
-    const Rect& s = l_.sheets[sheet].area;
+    const Rect& s = l_.sheets()[sheet].area;
     const int64_t frame = w_.add("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x - s.x, y - s.y, 0)));
     return w_.add("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[sheet]), ref(frame));
   }
@@ -300,9 +300,9 @@ class IfcModel {
     const Rgb metal{201, 205, 210};
     const int64_t material =
         w_.add("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {:g} mm", t)));
-    std::vector<std::vector<Ring>> holes(l_.sheets.size());
+    std::vector<std::vector<Ring>> holes(l_.sheets().size());
     // Merged openings' islands, per sheet: metal the outline leaves standing.
-    std::vector<std::vector<Outline>> islands(l_.sheets.size());
+    std::vector<std::vector<Outline>> islands(l_.sheets().size());
     for (const Element& e : l_.elements) {
       if (e.form != ElementForm::opening || e.sheet < 0) continue;
       for (const Ring& ring : opening_rings(e)) holes[static_cast<size_t>(e.sheet)].push_back(ring);
@@ -311,9 +311,9 @@ class IfcModel {
           for (size_t i = 1; i < part.rings.size(); ++i)
             islands[static_cast<size_t>(e.sheet)].push_back({{part.rings[i]}, 0});
     }
-    for (size_t k = 0; k < l_.sheets.size(); ++k) {
-      const Layout::FabricationSheet& s = l_.sheets[k];
-      const bool framed = !l_.frames.empty();
+    for (size_t k = 0; k < l_.sheets().size(); ++k) {
+      const FabricationSheet& s = l_.sheets()[k];
+      const bool framed = l_.envelope.has_value();
       const int64_t where =
           framed ? w_.add("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(world_))
                  : placement_at(s.area.x, s.area.y);
@@ -346,7 +346,7 @@ class IfcModel {
 
   // A sheet (its rectangle, or each part of its outline) less the holes inside it; the islands
   // of merged openings inside it as parts of their own.
-  int64_t sheet_profile(const Layout::FabricationSheet& s, const std::vector<Ring>& holes,
+  int64_t sheet_profile(const FabricationSheet& s, const std::vector<Ring>& holes,
                         const std::vector<Outline>& islands) {
     std::vector<Outline> parts;
     if (s.outline.empty()) {
@@ -389,13 +389,13 @@ class IfcModel {
     const IfcClass c = class_of(l_, e);
     const Rect b = laid_bounds(e);
     const bool opening = e.form == ElementForm::opening;
-    const bool framed = !l_.frames.empty() && !opening;  // a unit of a building's wall
+    const bool framed = l_.envelope.has_value() && !opening;  // a unit of a building's wall
     const IfcEnvelopeWriter::Placed unit =
         framed ? envelope_.unit(e, container_place_, piece_colour(l_, e))
                : IfcEnvelopeWriter::Placed{};
     const int64_t where =
-        framed                                          ? unit.placement
-        : opening && e.sheet >= 0 && !l_.frames.empty() ? placement_in_framed_sheet(e)
+        framed                                               ? unit.placement
+        : opening && e.sheet >= 0 && l_.envelope.has_value() ? placement_in_framed_sheet(e)
         : opening && e.sheet >= 0 ? placement_in_sheet(b.x, b.y, static_cast<size_t>(e.sheet))
                                   : placement_at(b.x, b.y);
     const std::vector<Outline> parts = opening ? std::vector<Outline>{} : piece_outlines(e);
@@ -551,7 +551,7 @@ class IfcModel {
   IfcGeometryWriter g_;
   const Layout& l_;
   IfcEnvelopeWriter envelope_;
-  std::vector<std::vector<int64_t>> parts_ = std::vector<std::vector<int64_t>>(l_.frames.size());
+  std::vector<std::vector<int64_t>> parts_ = std::vector<std::vector<int64_t>>(l_.frames().size());
   IfcGuidSource guids_;
   fmt::memory_buffer scratch_;  // a shared entity's text, reused
   int64_t owner_ = 0, world_ = 0, out_of_wall_ = 0, along_ = 0, annotation_ = 0;

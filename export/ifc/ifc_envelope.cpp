@@ -56,7 +56,7 @@ IfcEnvelopeWriter::IfcEnvelopeWriter(StepWriter& w, IfcGeometryWriter& g, const 
     : w_(w), g_(g), l_(layout), root_(std::move(root)) {}
 
 size_t IfcEnvelopeWriter::facade_of(const Element& e) const {
-  return static_cast<size_t>(framed_facade(l_, e) - l_.frames.data());
+  return static_cast<size_t>(framed_facade(l_, e) - l_.frames().data());
 }
 
 IfcEnvelopeWriter::Placed IfcEnvelopeWriter::unit(const Element& e, int64_t container,
@@ -96,7 +96,7 @@ IfcEnvelopeWriter::Placed IfcEnvelopeWriter::unit(const Element& e, int64_t cont
 IfcEnvelopeWriter::Placed IfcEnvelopeWriter::backing(const SurfaceFrame& f, int64_t container) {
   const double top = f.height > 0 ? f.height : l_.height;
   const std::vector<FramedBox> boxes =
-      framed_backing(l_, Rect{f.start, 0, f.length, top}, l_.backing_from, l_.thickness, 1e300);
+      framed_backing(l_, Rect{f.start, 0, f.length, top}, l_.backing()->from, l_.thickness, 1e300);
   Placed p;
   if (boxes.empty()) return p;
   const Axes own = face_axes(boxes.front());
@@ -167,11 +167,11 @@ std::vector<std::pair<int64_t, double>> IfcEnvelopeWriter::walls(
   std::vector<std::pair<int64_t, double>> contained;
   const double t = l_.thickness;
   std::vector<int64_t> wall_ids;
-  for (size_t k = 0; k < l_.frames.size(); ++k) {
-    const SurfaceFrame& f = l_.frames[k];
+  for (size_t k = 0; k < l_.frames().size(); ++k) {
+    const SurfaceFrame& f = l_.frames()[k];
     const std::string name = "Wall " + f.name;
     // A one-brick wall's body is its backing leaf; a leaf's shape is its units' (nested in it).
-    const Placed body = l_.backed ? backing(f, container) : Placed{};
+    const Placed body = l_.backing() ? backing(f, container) : Placed{};
     const int64_t wall =
         w_.add("IFCWALL({},{},{},$,{},{},{},.SOLIDWALL.)", root_("wall " + f.name), text(name),
                text(fmt::format("{:g} mm along the envelope from {:g} mm", f.length, f.start)),
@@ -196,11 +196,12 @@ std::vector<std::pair<int64_t, double>> IfcEnvelopeWriter::walls(
   for (const int64_t wall : wall_ids) contained.push_back({wall, 0.0});
   for (size_t i = 0; i < l_.openings_given; ++i) {
     const Rect& o = l_.openings[i];
-    const SurfaceFrame* f = frame_at(l_.frames, o.x + o.w / 2);
-    const size_t k = static_cast<size_t>(f - l_.frames.data());
-    const bool door = i < l_.opening_kinds.size() && l_.opening_kinds[i] == "door";
-    const std::string id =
-        i < l_.opening_names.size() ? l_.opening_names[i] : fmt::format("opening-{}", i + 1);
+    const SurfaceFrame* f = frame_at(l_.frames(), o.x + o.w / 2);
+    const size_t k = static_cast<size_t>(f - l_.frames().data());
+    const EnvelopeFrames& envelope = *l_.envelope;
+    const bool door = i < envelope.opening_kinds.size() && envelope.opening_kinds[i] == "door";
+    const std::string id = i < envelope.opening_names.size() ? envelope.opening_names[i]
+                                                             : fmt::format("opening-{}", i + 1);
     // The opening through the wall, 10 mm proud of both faces so that no reader leaves a skin
     // (and on a curve by its chord's sagitta more, at the back).
     g_.set_local_origin(0, 0);

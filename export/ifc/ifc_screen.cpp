@@ -5,9 +5,9 @@ namespace curdle {
 
 int64_t IfcScreenSheets::body(size_t k, const Rgb& colour) {
   if (screen_.rings.empty()) screen_ = framed_screen(l_);
-  const Layout::FabricationSheet& s = l_.sheets[k];
+  const FabricationSheet& s = l_.sheets()[k];
   FramedMesh mesh;
-  add_framed_sheet(*frame_at(l_.frames, s.area.x + s.area.w / 2), screen_.rings[k],
+  add_framed_sheet(*frame_at(l_.frames(), s.area.x + s.area.w / 2), screen_.rings[k],
                    screen_.squares[k], l_.thickness, mesh);
   std::vector<int64_t> items{
       g_.mapped(g_.representation_map(g_.triangles(mesh.positions, mesh.indices, colour)),

@@ -17,7 +17,7 @@ namespace curdle {
 class IfcScreenSheets {
  public:
   IfcScreenSheets(IfcGeometryWriter& geometry, const Layout& layout) : g_(geometry), l_(layout) {}
-  // The body of sheet `sheet` (an index into layout.sheets), its solid in `colour`.
+  // The body of sheet `sheet` (an index into layout.sheets()), its solid in `colour`.
   int64_t body(size_t sheet, const Rgb& colour);
 
  private:

@@ -145,7 +145,7 @@ json facades_json(const Layout& layout) {
     ++counts[e.value];
   }
   json out = json::array();
-  for (const SurfaceFrame& f : layout.frames) {
+  for (const SurfaceFrame& f : layout.frames()) {
     double open = 0;
     size_t openings = 0;
     for (size_t i = 0; i < layout.openings_given; ++i) {
@@ -212,10 +212,10 @@ json report_to_json(const Report& report, const Layout& layout) {
   if (layout.site_frame) j["layout"]["site_drawing"] = site_drawing_json(layout);
   if (!layout.site.empty() && (!layout.outline_contour.empty() || !layout.outline.empty()))
     j["layout"]["site_outline"] = site_outline_json(layout);
-  if (!layout.frames.empty()) j["layout"]["facades"] = facades_json(layout);
-  if (!layout.sheets.empty()) {
+  if (layout.envelope.has_value()) j["layout"]["facades"] = facades_json(layout);
+  if (layout.fabrication.has_value()) {
     json sheets = json::array();
-    for (const Layout::FabricationSheet& sheet : layout.sheets) {
+    for (const FabricationSheet& sheet : layout.sheets()) {
       json tools = json::object();
       for (const auto& [tool, count] : sheet.tools) tools[tool] = count;
       sheets.push_back({{"id", sheet.id},

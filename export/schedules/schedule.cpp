@@ -80,7 +80,7 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
   header +=
       ",element_type,colour,material,cut,shape_wkt,opening_x_mm,opening_y_mm,"
       "opening_diameter_mm";
-  if (!layout.frames.empty()) header += ",facade,strip_x_mm,strip_y_mm";
+  if (layout.envelope.has_value()) header += ",facade,strip_x_mm,strip_y_mm";
   header += "\r\n";
   out << header;
   std::string buffer;
@@ -126,9 +126,9 @@ OrderKey order_key(const Layout& layout, const Element& e) {
 // unit's size, in the backing's material, unseen (no colour or value).
 void add_backing(std::map<OrderKey, OrderLine>& lines, const Layout& layout, const Element& e) {
   if (!needs_backing(layout, e)) return;
-  OrderLine& l = lines[{layout.element_type + ", backing", layout.backing_material, "",
-                        stock_size_of(layout, e)}];
-  l.materials.insert(layout.backing_material);
+  const std::string& material = layout.backing()->material;
+  OrderLine& l = lines[{layout.element_type + ", backing", material, "", stock_size_of(layout, e)}];
+  l.materials.insert(material);
   ++l.count;
   (e.cut ? l.cut : l.whole) += 1;
   l.laid_area += std::round(e.area());

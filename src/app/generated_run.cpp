@@ -165,7 +165,7 @@ std::string output_bytes(const GeneratedRun& g, const std::string& name) {
     throw InputError(parameter("output"),
                      "this run wrote no '" + name + "'" +
                          (writer == "sheets" && g.layout
-                              ? "; its sheets are " + std::to_string(g.layout->sheets.size())
+                              ? "; its sheets are " + std::to_string(g.layout->sheets().size())
                               : std::string()));
   return file->second;
 }
@@ -176,7 +176,7 @@ LayoutSummary summarize_layout(const Layout& layout, bool with_sheets) {
   s.elements = layout.elements.size();
   s.cut = cut_elements(layout);
   s.omitted = layout.omitted;
-  if (with_sheets) s.sheets = layout.sheets.size();
+  if (with_sheets) s.sheets = layout.sheets().size();
   s.width = layout.width;
   s.height = layout.height;
   s.drawing_scale = drawing_scale(layout);

@@ -151,8 +151,8 @@ void write_punching(const OutputContext& c, OutputSink& sink) {
 
 void write_sheets(const OutputContext& c, OutputSink& sink) {
   const Layout& layout = *c.layout;
-  for (size_t i = 0; i < layout.sheets.size(); ++i) {
-    const std::string id = layout.sheets[i].id;
+  for (size_t i = 0; i < layout.sheets().size(); ++i) {
+    const std::string id = layout.sheets()[i].id;
     const int sheet = static_cast<int>(i);
     sink.write_via_file("sheets/" + id + ".dxf",
                         [&](const fs::path& path) { write_sheet_dxf(path, layout, sheet); });

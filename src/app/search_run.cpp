@@ -65,7 +65,7 @@ std::function<std::vector<double>(const CurdField&, const Box&)> sheet_open_area
                                                                  const Box& segment) {
     const Layout layout = make_layout(design, field, segment, spec);
     std::vector<double> shares;
-    for (const Layout::FabricationSheet& sheet : layout.sheets) shares.push_back(sheet.open_area);
+    for (const FabricationSheet& sheet : layout.sheets()) shares.push_back(sheet.open_area);
     return shares;
   };
 }

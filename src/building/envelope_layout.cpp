@@ -42,22 +42,21 @@ void lay_envelope(Layout& layout, const Envelope& env, const Coursing& coursing,
   layout.elements.clear();
   layout.elements.reserve(coursing.units.size());
   layout.omitted = 0;
-  layout.frames = env.facades;
-  layout.closed_envelope = env.closed;
+  EnvelopeFrames& frames = layout.envelope.emplace();
+  frames.frames = env.facades;
+  frames.closed = env.closed;
   const CourseBond bond = coursing.bond;
   layout.bond = bond == CourseBond::stack     ? 0
                 : bond == CourseBond::third   ? 1.0 / 3
                 : bond == CourseBond::quarter ? 0.25
                                               : 0.5;
-  layout.bond_name = bond == CourseBond::english   ? "English"
+  frames.bond_name = bond == CourseBond::english   ? "English"
                      : bond == CourseBond::flemish ? "Flemish"
                                                    : "";
-  layout.opening_kinds = env.opening_type;
-  layout.opening_names = env.opening_names;
+  frames.opening_kinds = env.opening_type;
+  frames.opening_names = env.opening_names;
   const bool solid = env.solid;
-  layout.backed = solid;
-  layout.backing_material = env.backing;
-  layout.backing_from = solid ? env.depth + spec.joint : 0;
+  if (solid) frames.backing = WallBacking{env.backing, env.depth + spec.joint};
   int64_t course = -1, column = 0;
   for (const CourseUnit& u : coursing.units) {
     stop_point();
@@ -123,10 +122,10 @@ std::vector<std::string> corner_grid_notes(const Layout& layout, const Design& d
     return s;
   };
   const bool on_root = origin % root == 0;
-  for (const SurfaceFrame& f : layout.frames) {
+  for (const SurfaceFrame& f : layout.frames()) {
     if (f.last_of_path) continue;
     const double u = f.start + f.length;
-    const bool closing = layout.closed_envelope && &f == &layout.frames.back();
+    const bool closing = layout.envelope->closed && &f == &layout.frames().back();
     std::string seam;
     if (closing && ring)
       seam = ", the closing corner: the field wraps round, its last cell beside its first";

@@ -112,28 +112,29 @@ Layout BlocksKind::build(const Design& design, const CurdField& field, const Box
   auto id_at = [&](int64_t x, int64_t y, int64_t z) {
     return ElementId{id_letter(), digits, z, y, x, ""}.text();
   };
+  BlockViews& views = layout.block_views.emplace();
   for (int64_t y = 0; y < view.size[1]; ++y)
     for (int64_t x = 0; x < view.size[0]; ++x) {
-      Layout::ViewCell cell{Rect{x * w, y * d, w, d}, 0, {}, true};
+      BlockViews::Cell cell{Rect{x * w, y * d, w, d}, 0, {}, true};
       for (int64_t z = view.size[2] - 1; z >= 0; --z)
         if (const uint16_t v = at(x, y, z)) {
           if (cell.elements.empty()) cell.value = v;
           cell.elements.push_back(id_at(x, y, z));
         }
-      if (!cell.elements.empty()) layout.views.push_back(std::move(cell));
+      if (!cell.elements.empty()) views.cells.push_back(std::move(cell));
     }
   for (int64_t z = 0; z < view.size[2]; ++z)
     for (int64_t x = 0; x < view.size[0]; ++x) {
-      Layout::ViewCell cell{Rect{plan_w + gap + x * w, z * h, w, h}, 0, {}, false};
+      BlockViews::Cell cell{Rect{plan_w + gap + x * w, z * h, w, h}, 0, {}, false};
       for (int64_t y = 0; y < view.size[1]; ++y)
         if (const uint16_t v = at(x, y, z)) {
           if (cell.elements.empty()) cell.value = v;
           cell.elements.push_back(id_at(x, y, z));
         }
-      if (!cell.elements.empty()) layout.views.push_back(std::move(cell));
+      if (!cell.elements.empty()) views.cells.push_back(std::move(cell));
     }
-  layout.captions = {{"plan (top-most block of each column)", Rect{0, 0, plan_w, plan_h}},
-                     {"elevation (from the front, y = 0)", Rect{plan_w + gap, 0, plan_w, elev_h}}};
+  views.captions = {{"plan (top-most block of each column)", Rect{0, 0, plan_w, plan_h}},
+                    {"elevation (from the front, y = 0)", Rect{plan_w + gap, 0, plan_w, elev_h}}};
 
   layout.legend = make_legend(design, spec);
   const std::vector<uint64_t> counts =

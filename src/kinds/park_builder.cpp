@@ -192,11 +192,11 @@ void plant(Layout& layout, const Design& design, const LayoutSpec& spec) {
   layout.element_type = "element";
   const ParkKeys& park = spec.own<ParkKeys>();
   const std::vector<CurdMember> members = curd_members(design.curds);
-  layout.planting.clear();
+  ParkPlanting& planting = layout.planting.emplace();
   for (size_t m = 0; m < members.size(); ++m)
     if (const ParkElement& kind = park.elements[m]; !kind.surface) {
-      layout.planting.push_back(kind.order);
-      layout.planting.back().member = members[m].name;  // as the elements' IDs end
+      planting.orders.push_back(kind.order);
+      planting.orders.back().member = members[m].name;  // as the elements' IDs end
     }
   // A cell's element: its key, form and look from the cell and the kind.
   auto element = [&](const Element& cell, const ParkElement& kind, Region region,

@@ -44,8 +44,8 @@ Layout PerforationKind::build(const Design& design, const CurdField& field, cons
                               const LayoutSpec& spec) const {
   Layout layout = SurfaceKind::build(design, field, view, spec);
   if (const auto& envelope = spec.own<PerforationKeys>().envelope) {
-    layout.frames = envelope->facades;
-    layout.closed_envelope = envelope->closed;
+    layout.envelope.emplace().frames = envelope->facades;
+    layout.envelope->closed = envelope->closed;
     if (envelope->closed)  // unlike a façade's bricks, the cells are not laid as a ring
       layout.notes.push_back(
           "round the plan the screen's field is laid from its start corner, its seam where the "

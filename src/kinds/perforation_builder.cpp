@@ -100,18 +100,19 @@ namespace {
 // Each sheet's open area (checked against layout.open_area) and its openings per tool.
 void summarise_sheets(Layout& layout, const LayoutSpec& spec) {
   const PerforationKeys& keys = spec.own<PerforationKeys>();
-  layout.sheet_material = keys.sheet_material;
-  layout.sheet_stock = keys.sheet_size.value_or(std::array<double, 2>{layout.width, layout.height});
-  std::vector<std::map<std::string, uint64_t>> tools(layout.sheets.size());
-  std::vector<double> open(layout.sheets.size(), 0.0);
+  layout.fabrication->material = keys.sheet_material;
+  layout.fabrication->stock =
+      keys.sheet_size.value_or(std::array<double, 2>{layout.width, layout.height});
+  std::vector<std::map<std::string, uint64_t>> tools(layout.fabrication->sheets.size());
+  std::vector<double> open(layout.fabrication->sheets.size(), 0.0);
   for (const Element& e : layout.elements) {
     stop_point();
     ++tools[static_cast<size_t>(e.sheet)][tool_name(e)];
     open[static_cast<size_t>(e.sheet)] += e.area();
   }
   double least = 1, most = 0;
-  for (size_t i = 0; i < layout.sheets.size(); ++i) {
-    Layout::FabricationSheet& sheet = layout.sheets[i];
+  for (size_t i = 0; i < layout.fabrication->sheets.size(); ++i) {
+    FabricationSheet& sheet = layout.fabrication->sheets[i];
     sheet.open_area = sheet.surface > 0 ? open[i] / sheet.surface : 0;
     sheet.tools.assign(tools[i].begin(), tools[i].end());
     least = std::min(least, sheet.open_area), most = std::max(most, sheet.open_area);
@@ -121,9 +122,9 @@ void summarise_sheets(Layout& layout, const LayoutSpec& spec) {
           fmt::format("{}: open area {:.2f} %, outside layout.open_area {:.2f} % to {:.2f} %",
                       sheet.id, 100 * sheet.open_area, 100 * (*range)[0], 100 * (*range)[1]));
   }
-  if (layout.sheets.size() > 1)
+  if (layout.fabrication->sheets.size() > 1)
     layout.notes.push_back(fmt::format("{} sheets, from {:.2f} % to {:.2f} % open",
-                                       layout.sheets.size(), 100 * least, 100 * most));
+                                       layout.fabrication->sheets.size(), 100 * least, 100 * most));
 }
 
 // Each group of circles as seen from its cell's centre, and the union of that group there: every
@@ -249,12 +250,14 @@ void flat_sheets(Layout& layout, double sw, double sh) {
   const int ny = static_cast<int>(std::ceil(layout.height / sh - 1e-9));
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
-      layout.sheets.push_back({fmt::format("S-R{}-C{}", j + 1, i + 1),
-                               Rect{i * sw, j * sh, std::min(sw, layout.width - i * sw),
-                                    std::min(sh, layout.height - j * sh)}});
+      layout.fabrication->sheets.push_back(
+          {fmt::format("S-R{}-C{}", j + 1, i + 1),
+           Rect{i * sw, j * sh, std::min(sw, layout.width - i * sw),
+                std::min(sh, layout.height - j * sh)}});
 }
 
-// Where a façade's sheets are: its first in layout.sheets, its columns' width and count.
+// Where a façade's sheets are: its first in layout.fabrication->sheets, its columns' width and
+// count.
 struct FacadeSheets {
   double start = 0, end = 0, top = 0, width = 0;
   int columns = 0, rows = 0;
@@ -272,18 +275,19 @@ std::vector<FacadeSheets> facade_sheets(Layout& layout, const Envelope& env, dou
     const int nx = std::max(1, static_cast<int>(std::ceil(f.length / sw - 1e-9)));
     const int ny = std::max(1, static_cast<int>(std::ceil(height / sh - 1e-9)));
     const double w = f.length / nx;
-    out.push_back({f.start, f.start + f.length, height, w, nx, ny, layout.sheets.size()});
+    out.push_back(
+        {f.start, f.start + f.length, height, w, nx, ny, layout.fabrication->sheets.size()});
     const double outer = frame_radius(f);
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
-        Layout::FabricationSheet s{fmt::format("S-{}-R{}-C{}", f.name, j + 1, i + 1),
-                                   Rect{f.start + i * w, j * sh, w, std::min(sh, height - j * sh)}};
+        FabricationSheet s{fmt::format("S-{}-R{}-C{}", f.name, j + 1, i + 1),
+                           Rect{f.start + i * w, j * sh, w, std::min(sh, height - j * sh)}};
         s.facade = f.name;
         if (outer > 0) {
           s.bend_radius = std::min(outer, frame_radius_behind(f, t));
           s.developed = frame_radius_behind(f, t / 2) / outer;
         }
-        layout.sheets.push_back(std::move(s));
+        layout.fabrication->sheets.push_back(std::move(s));
       }
   }
   return out;
@@ -326,7 +330,7 @@ void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const Perforation
       h.dropped = true;
       continue;
     }
-    const Rect& a = layout.sheets[static_cast<size_t>(index)].area;
+    const Rect& a = layout.fabrication->sheets[static_cast<size_t>(index)].area;
     double gap = 1e300;
     for (const Circle& c : h.parts) {
       const double r = c.d / 2;
@@ -336,10 +340,10 @@ void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const Perforation
     // A seam keeps the edge margin on each side, and never less than a bridge.
     const double clear = std::max(keys.edge_margin, keys.min_bridge);
     if (gap < clear - 1e-9) {
-      layout.violations.push_back(
-          fmt::format("{}: {:.2f} mm from the edge of sheet {}, below {:.2f} mm; dropped "
-                      "(openings never cross a seam)",
-                      h.element.id, gap, layout.sheets[static_cast<size_t>(index)].id, clear));
+      layout.violations.push_back(fmt::format(
+          "{}: {:.2f} mm from the edge of sheet {}, below {:.2f} mm; dropped "
+          "(openings never cross a seam)",
+          h.element.id, gap, layout.fabrication->sheets[static_cast<size_t>(index)].id, clear));
       h.dropped = true;
     } else {
       h.element.sheet = index;
@@ -350,13 +354,13 @@ void cut_into_sheets(std::vector<Hole>& holes, Layout& layout, const Perforation
 // The sheets cut along an outline (a sheet wholly beyond it is not made), and the openings
 // kept on them; returns the open area.
 double keep_on_sheets(std::vector<Hole>& holes, Layout& layout) {
-  if (layout.sheets.empty())
-    layout.sheets.push_back({"S-R1-C1", {0, 0, layout.width, layout.height}});
+  if (layout.fabrication->sheets.empty())
+    layout.fabrication->sheets.push_back({"S-R1-C1", {0, 0, layout.width, layout.height}});
   // An outline cuts the sheets to it; a sheet wholly beyond it is not cut at all.
-  std::vector<int> renumbered(layout.sheets.size(), -1);
-  std::vector<Layout::FabricationSheet> kept;
-  for (size_t i = 0; i < layout.sheets.size(); ++i) {
-    Layout::FabricationSheet& sheet = layout.sheets[i];
+  std::vector<int> renumbered(layout.fabrication->sheets.size(), -1);
+  std::vector<FabricationSheet> kept;
+  for (size_t i = 0; i < layout.fabrication->sheets.size(); ++i) {
+    FabricationSheet& sheet = layout.fabrication->sheets[i];
     sheet.surface = sheet.area.area();
     if (!layout.outline.empty()) {
       PolygonCuts along;
@@ -373,9 +377,9 @@ double keep_on_sheets(std::vector<Hole>& holes, Layout& layout) {
     renumbered[i] = static_cast<int>(kept.size());
     kept.push_back(std::move(sheet));
   }
-  layout.sheets = std::move(kept);
+  layout.fabrication->sheets = std::move(kept);
   double open = 0, surface = 0;
-  for (const auto& sheet : layout.sheets) surface += sheet.surface;
+  for (const auto& sheet : layout.fabrication->sheets) surface += sheet.surface;
   for (Hole& h : holes) {
     if (h.dropped) continue;
     // One sheet: the whole surface.
@@ -398,6 +402,7 @@ void perforate(Layout& layout, const Design& design, const LayoutSpec& spec) {
   const bool fix = keys.fix == HoleFix::drop;
   layout.drops_violations = fix;
   layout.chord_tolerance = keys.chord_tolerance;
+  layout.fabrication.emplace();  // its sheets, cut below
   apply_rules(holes, layout, keys);
   cut_into_sheets(holes, layout, keys);
   layout.open_area = keep_on_sheets(holes, layout);

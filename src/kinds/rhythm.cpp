@@ -127,16 +127,17 @@ Layout RhythmKind::build(const Design& design, const CurdField& field, const Box
 }
 
 void stand_round(Layout& layout, const Envelope& envelope) {
-  layout.frames = envelope.facades;
-  for (SurfaceFrame& f : layout.frames) f.bent = false;  // a fin is a straight plate
-  layout.closed_envelope = envelope.closed;
+  EnvelopeFrames& frames = layout.envelope.emplace();
+  frames.frames = envelope.facades;
+  for (SurfaceFrame& f : frames.frames) f.bent = false;  // a fin is a straight plate
+  frames.closed = envelope.closed;
   // A fin stands on one face: one whose bay would take it round a corner (or past a path's
   // end) is left out, and said.
   std::vector<Element> fins;
   size_t turning = 0;
   for (Element& e : layout.elements) {
     const Rect& r = e.shape.front();
-    const SurfaceFrame* f = frame_at(layout.frames, r.x + r.w / 2);
+    const SurfaceFrame* f = frame_at(layout.frames(), r.x + r.w / 2);
     if (!f || r.x < f->start - 1e-9 || r.right() > f->start + f->length + 1e-9) {
       ++turning;
       continue;

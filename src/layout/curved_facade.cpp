@@ -35,7 +35,7 @@ ChordFit chord_fit(double r, double l, double j, double depth, bool convex) {
 
 std::vector<CurvedFacade> curved_facades(const Layout& layout, double step) {
   std::vector<CurvedFacade> out;
-  for (const SurfaceFrame& f : layout.frames) {
+  for (const SurfaceFrame& f : layout.frames()) {
     if (f.bulge == 0) continue;
     const Arc arc = arc_between({f.from[0], f.from[1], f.bulge}, {f.to[0], f.to[1], 0});
     CurvedFacade c;

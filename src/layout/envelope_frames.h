@@ -20,7 +20,7 @@ struct WallBacking {
   double from = 0;  // mm behind the face: the face units' depth and the collar joint
 };
 
-struct Envelope {
+struct EnvelopeFrames {
   std::vector<SurfaceFrame> frames;
   bool closed = false;
   std::string bond_name;  // a building's bond where the share says too little ("Flemish")

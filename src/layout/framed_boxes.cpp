@@ -28,7 +28,7 @@ std::vector<FramedBox> framed_boxes(const Layout& layout, const Rect& r, double 
                                     double inward1, double longest) {
   std::vector<FramedBox> out;
   const double depth = inward1 - inward0;
-  for (const FramedSpan& s : framed_spans(layout.frames, layout.width, r.x, r.right())) {
+  for (const FramedSpan& s : framed_spans(layout.frames(), layout.width, r.x, r.right())) {
     const SurfaceFrame& f = *s.frame;
     const int pieces = facets(f, s.to - s.from, longest);
     for (int k = 0; k < pieces; ++k) {
@@ -68,10 +68,10 @@ double backing_trim(double turn, double set_back, double depth) {
 std::vector<FramedBox> framed_backing(const Layout& layout, const Rect& r, double set_back,
                                       double depth, double longest) {
   std::vector<FramedBox> out;
-  const std::vector<SurfaceFrame>& frames = layout.frames;
+  const std::vector<SurfaceFrame>& frames = layout.frames();
   for (size_t k = 0; k < frames.size(); ++k) {
     const SurfaceFrame& f = frames[k];
-    const bool after_corner = layout.closed_envelope || k > 0;
+    const bool after_corner = layout.envelope->closed || k > 0;
     const double from =
         f.start + (after_corner
                        ? backing_trim(frames[(k + frames.size() - 1) % frames.size()].turn_at_end,
@@ -130,7 +130,7 @@ BuildingPoint framed_centre(const Layout& layout, const Element& e) {
   const double middle = wrap_along((f.from + f.to) / 2, layout.width);
   // On the chord of the face the middle lies on, as the 3-D writers lay it: a straight unit on
   // a curve lies inside the arc.
-  for (const FramedSpan& s : framed_spans(layout.frames, layout.width, f.from, f.to)) {
+  for (const FramedSpan& s : framed_spans(layout.frames(), layout.width, f.from, f.to)) {
     if (middle < s.from - 1e-9 || middle > s.to + 1e-9) continue;
     // On the chord (or, bent, the facet) that holds it, as the writers lay it.
     const int n = facets(*s.frame, s.to - s.from, 1e300);
@@ -145,12 +145,12 @@ BuildingPoint framed_centre(const Layout& layout, const Element& e) {
     const double oy = len > 0 ? -(b[0] - a[0]) / len * -face : 0;
     return {a[0] + (b[0] - a[0]) * t + ox, a[1] + (b[1] - a[1]) * t + oy, a[2]};
   }
-  return frame_point(*frame_at(layout.frames, middle), middle, f.v, face);
+  return frame_point(*frame_at(layout.frames(), middle), middle, f.v, face);
 }
 
 const SurfaceFrame* framed_facade(const Layout& layout, const Element& e) {
   const LaidFace f = laid_face(e, layout.width);
-  return frame_at(layout.frames, wrap_along((f.from + f.to) / 2, layout.width));
+  return frame_at(layout.frames(), wrap_along((f.from + f.to) / 2, layout.width));
 }
 
 }  // namespace curdle

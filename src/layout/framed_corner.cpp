@@ -61,7 +61,7 @@ std::vector<P> tidy_footprint(const std::vector<P>& in) {
 }  // namespace
 
 std::optional<FramedPrism> framed_corner(const Layout& layout, const Element& e, double t) {
-  const std::vector<SurfaceFrame>& frames = layout.frames;
+  const std::vector<SurfaceFrame>& frames = layout.frames();
   if (e.corner < 0 || static_cast<size_t>(e.corner) >= frames.size()) return std::nullopt;
   if (std::fabs(e.area() - e.nominal.w * e.nominal.h) > kEps) return std::nullopt;  // cut
   const SurfaceFrame& f = frames[static_cast<size_t>(e.corner)];

@@ -240,36 +240,37 @@ void to_gltf_mesh(const FramedMesh& mesh, std::vector<Vec3>& positions,
 
 FramedScreen framed_screen(const Layout& layout) {
   std::vector<Ring> outlines;  // every sheet's rectangle, counter-clockwise
-  for (const Layout::FabricationSheet& s : layout.sheets) outlines.push_back(rect_polygon(s.area));
+  for (const FabricationSheet& s : layout.sheets()) outlines.push_back(rect_polygon(s.area));
   const SheetTiles tiles = sheet_tiles(layout, outlines);
   // The sheet that holds a ring's first point: the sheets tile the strip, so it is in the
   // column that starts nearest before it (a few rows), or, on a column's edge, the one before.
-  std::vector<size_t> by_x(layout.sheets.size());
+  std::vector<size_t> by_x(layout.sheets().size());
   for (size_t k = 0; k < by_x.size(); ++k) by_x[k] = k;
-  std::sort(by_x.begin(), by_x.end(),
-            [&](size_t a, size_t b) { return layout.sheets[a].area.x < layout.sheets[b].area.x; });
+  std::sort(by_x.begin(), by_x.end(), [&](size_t a, size_t b) {
+    return layout.sheets()[a].area.x < layout.sheets()[b].area.x;
+  });
   auto sheet_of = [&](const Ring& ring) {
     const auto& [x, y] = ring.front();
     auto it = std::upper_bound(by_x.begin(), by_x.end(), x,
-                               [&](double u, size_t k) { return u < layout.sheets[k].area.x; });
+                               [&](double u, size_t k) { return u < layout.sheets()[k].area.x; });
     for (int column = 0; column < 2 && it != by_x.begin(); ++column) {
-      const double x0 = layout.sheets[*std::prev(it)].area.x;
-      while (it != by_x.begin() && layout.sheets[*std::prev(it)].area.x == x0) {
-        const Rect& a = layout.sheets[*--it].area;
+      const double x0 = layout.sheets()[*std::prev(it)].area.x;
+      while (it != by_x.begin() && layout.sheets()[*std::prev(it)].area.x == x0) {
+        const Rect& a = layout.sheets()[*--it].area;
         if (x >= a.x && x <= a.right() && y >= a.y && y <= a.top()) return *it;
       }
     }
-    return layout.sheets.size();
+    return layout.sheets().size();
   };
   FramedScreen out;
-  out.rings.resize(layout.sheets.size());
-  out.squares.resize(layout.sheets.size());
-  for (size_t k = 0; k < layout.sheets.size(); ++k) out.rings[k].push_back(outlines[k]);
+  out.rings.resize(layout.sheets().size());
+  out.squares.resize(layout.sheets().size());
+  for (size_t k = 0; k < layout.sheets().size(); ++k) out.rings[k].push_back(outlines[k]);
   for (const Ring& h : tiles.holes)
     if (const size_t k = sheet_of(h); k < out.rings.size()) out.rings[k].push_back(h);
   for (const Ring& q : tiles.squares)
     if (const size_t k = sheet_of(q); k < out.squares.size()) out.squares[k].push_back(q);
-  out.tiled.resize(layout.sheets.size());
+  out.tiled.resize(layout.sheets().size());
   for (const size_t i : tiles.tiled)
     out.tiled[static_cast<size_t>(layout.elements[i].sheet)].push_back(i);
   return out;
@@ -294,7 +295,7 @@ TileSpan tile_span(const Element& e) {
 
 FramedPose tile_pose(const Layout& layout, const Element& e) {
   const TileSpan s = tile_span(e);
-  const SurfaceFrame& frame = *frame_at(layout.frames, (s.from + s.to) / 2);
+  const SurfaceFrame& frame = *frame_at(layout.frames(), (s.from + s.to) / 2);
   const BuildingPoint a = frame_point(frame, s.from, s.v, 0), b = frame_point(frame, s.to, s.v, 0);
   const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
   const std::array<double, 2> d =
@@ -318,7 +319,7 @@ void add_tile_solid(bool upright, const OpeningTile& tile, double thickness,
 
 FramedPose opening_pose(const Layout& layout, const Element& e) {
   const Rect b = laid_bounds(e);
-  const SurfaceFrame& f = *frame_at(layout.frames, b.x + b.w / 2);
+  const SurfaceFrame& f = *frame_at(layout.frames(), b.x + b.w / 2);
   const BuildingPoint p = frame_point(f, b.x, b.y, 0), q = frame_point(f, b.right(), b.y, 0);
   const double len = std::hypot(q[0] - p[0], q[1] - p[1]);
   return {p, {(q[0] - p[0]) / len, (q[1] - p[1]) / len}};

@@ -78,6 +78,16 @@ double Element::area() const {
 
 namespace curdle {
 
+const std::vector<SurfaceFrame>& Layout::frames() const {
+  static const std::vector<SurfaceFrame> none;
+  return envelope ? envelope->frames : none;
+}
+
+const std::vector<FabricationSheet>& Layout::sheets() const {
+  static const std::vector<FabricationSheet> none;
+  return fabrication ? fabrication->sheets : none;
+}
+
 std::vector<Rect> Layout::holes() const {
   std::vector<Rect> all = openings;
   all.insert(all.end(), outside.begin(), outside.end());

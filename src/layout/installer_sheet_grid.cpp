@@ -128,7 +128,7 @@ std::vector<double> sheet_edges(const std::vector<std::pair<double, double>>& sp
 std::vector<double> facade_edges(const std::vector<std::pair<double, double>>& spans,
                                  const Layout& layout, double length, double scale) {
   std::vector<double> xs;
-  const std::vector<SurfaceFrame>& frames = layout.frames;
+  const std::vector<SurfaceFrame>& frames = layout.frames();
   for (size_t k = 0; k < frames.size(); ++k) {
     const SurfaceFrame& f = frames[k];
     const double from = k == 0 ? -kBandMm * scale : f.start;
@@ -160,8 +160,8 @@ void lay_sheets(const std::vector<InstallerPiece>& pieces, double scale, const L
   for (const InstallerPiece& p : pieces)
     across.emplace_back(p.bounds.x, p.bounds.right()), up.emplace_back(p.bounds.y, p.bounds.top());
   const std::vector<double> xs =
-      layout.frames.empty() ? sheet_edges(across, layout.width, plan.viewport[0] * scale, scale)
-                            : facade_edges(across, layout, plan.viewport[0] * scale, scale);
+      !layout.envelope ? sheet_edges(across, layout.width, plan.viewport[0] * scale, scale)
+                       : facade_edges(across, layout, plan.viewport[0] * scale, scale);
   const std::vector<double> ys = sheet_edges(up, layout.height, plan.viewport[1] * scale, scale);
   plan.grid_columns = xs.size() - 1;
   plan.grid_rows = ys.size() - 1;

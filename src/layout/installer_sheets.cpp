@@ -357,8 +357,9 @@ std::array<double, 2> installer_viewport(const PaperSheet& paper, bool landscape
 
 std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
   std::vector<InstallerPiece> pieces;
-  if (!layout.sheets.empty()) {  // installed as fabrication sheets
-    for (const auto& sheet : layout.sheets) pieces.push_back({sheet.id, {sheet.area}, sheet.area});
+  if (layout.fabrication.has_value()) {  // installed as fabrication sheets
+    for (const auto& sheet : layout.sheets())
+      pieces.push_back({sheet.id, {sheet.area}, sheet.area});
     return pieces;
   }
   pieces.reserve(layout.elements.size());
@@ -375,7 +376,7 @@ std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
 // Whether the set is coursed: named so, or left automatic where elements laid in courses are
 // small units (a typical piece at most kSmallUnitMm long).
 bool coursed_set(const Layout& layout, double typical_w, double typical_h) {
-  if (!layout.sheets.empty() || !layout.kind->laid_in_courses() || layout.elements.empty())
+  if (layout.fabrication.has_value() || !layout.kind->laid_in_courses() || layout.elements.empty())
     return false;
   switch (layout.drawing.installer_set) {
     case InstallerSet::coursed:

@@ -16,7 +16,10 @@
 
 #include "curdle/check.h"
 #include "curdle/curd.h"
+#include "layout/block_views.h"
 #include "layout/element_id.h"
+#include "layout/envelope_frames.h"
+#include "layout/fabrication_sheets.h"
 #include "layout/geometry.h"
 #include "layout/layout_kind.h"
 #include "layout/planting_spec.h"
@@ -304,9 +307,8 @@ struct Layout {
   Corner origin = Corner::bottom_left;
   int64_t columns = 0, rows = 0;  // elements along x and y
   double module_w = 0, module_h = 0;
-  std::array<double, 2> shift{0, 0};  // the grid moved back from the origin corner, mm
-  double bond = 0;                    // each course's move along x, a share of the pitch
-  std::string bond_name;  // a building's bond where the share says too little ("Flemish")
+  std::array<double, 2> shift{0, 0};            // the grid moved back from the origin corner, mm
+  double bond = 0;                              // each course's move along x, a share of the pitch
   LayingPattern pattern = LayingPattern::grid;  // units laid in a paver's pattern: outlines
   bool centred = false;                         // the grid centred on the surface
   DrawingKeys drawing;           // the drawing's scale, sheet, resolution and overlays
@@ -315,15 +317,8 @@ struct Layout {
   std::vector<Element> elements;
   // Every hole in the surface: a façade's openings, then the excluded zones' rectangles.
   std::vector<Rect> openings;
-  size_t openings_given = 0;  // the first of `openings` are the surface's own (windows, doors),
-                              // the rest excluded zones' rectangles
-  std::vector<std::string> opening_kinds;  // a building's: "window" or "door" per own opening
-  std::vector<std::string> opening_names;  // and its name: "W-12", "D-1"
-  // A building's wall one unit thick: behind each face unit that does not run through it, a
-  // backing unit of `backing_material`, counted in quantities.csv and lots.csv.
-  bool backed = false;
-  std::string backing_material;
-  double backing_from = 0;       // mm behind the face: the face units' depth and the collar joint
+  size_t openings_given = 0;     // the first of `openings` are the surface's own (windows, doors),
+                                 // the rest excluded zones' rectangles
   std::vector<ZoneCount> zones;  // one per [[layout.zones]], in order
   // With layout.outline: the polygon, and the parts of the width x height rectangle outside it
   // (no elements; drawn as paper, not as openings).
@@ -343,53 +338,24 @@ struct Layout {
   // and what the fabrication rules found or changed.
   double open_area = 0;
   std::vector<std::string> violations;
-  bool drops_violations = false;  // openings that break a fabrication rule are dropped
-  double chord_tolerance = 0.05;  // how far polygonised round openings may stray, mm
-  // Perforation: the fabrication sheets the surface is cut into, row by row from the origin
-  // (one, the whole surface, when no sheet size is given).
-  struct FabricationSheet {
-    std::string id;  // S-R1-C2: row and column of sheets
-    Rect area;
-    // Its outline when layout.outline cuts it (rings in mm, as union.h lists them); empty: the
-    // whole rectangle.
-    std::vector<Ring> outline;
-    Contour outline_contour;  // the same with the outline's arcs, where it has any and is one piece
-    double surface = 0;       // mm² of sheet: the rectangle's, or its outline's
-    double open_area = 0;     // share of the sheet's area that is open
-    // Openings per tool: "D22.6" for a punch of 22.6 mm, "outline" for merged openings cut
-    // along their outline; in order of the tool's name.
-    std::vector<std::pair<std::string, uint64_t>> tools;
-    // On a building: the façade it stands on, and where that is an arc the sheet is rolled to
-    // it: the inside radius of the bend, and the blank's length per mm of the outer face (the
-    // blank is developed at mid-thickness). Flat: radius 0, the blank the sheet.
-    std::string facade;
-    double bend_radius = 0;
-    double developed = 1;
-  };
-  std::vector<FabricationSheet> sheets;
-  // What they are cut from: the stock sheet's size (layout.sheet_size, or the whole surface)
-  // and its material (layout.sheet_material), for the order list.
-  std::array<double, 2> sheet_stock{0, 0};
-  std::string sheet_material;
-  std::vector<PlantingSpec> planting;  // park: what the contractor orders, per curd of objects
-  std::vector<std::string> notes;      // what a builder should know (cut slivers, ...)
-  Box view;                            // the cells laid, in field coordinates
-  // A building's envelope (src/building): the strip's façades, each a frame that places its
-  // part of the strip in the building; empty for a flat surface. `closed`: round a building
-  // (the strip's end meets its start), else a free-standing wall.
-  std::vector<SurfaceFrame> frames;
-  bool closed_envelope = false;
-  // Blocks: the drawing is a plan and an elevation of the voxels, side by side; each shape
-  // with the value it shows and the blocks behind it, the one shown first. Captions say which
-  // view is which.
-  struct ViewCell {
-    Rect rect;
-    uint32_t value = 0;
-    std::vector<std::string> elements;  // IDs along the line of sight, the one shown first
-    bool plan = false;                  // in the plan: every block lies under one plan cell
-  };
-  std::vector<ViewCell> views;
-  std::vector<std::pair<std::string, Rect>> captions;
+  bool drops_violations = false;   // openings that break a fabrication rule are dropped
+  double chord_tolerance = 0.05;   // how far polygonised round openings may stray, mm
+  std::vector<std::string> notes;  // what a builder should know (cut slivers, ...)
+  Box view;                        // the cells laid, in field coordinates
+
+  // What only some kinds lay: each its own record, present on their layouts alone.
+  std::optional<BlockViews> block_views;        // blocks: drawn as a plan and an elevation
+  std::optional<SheetFabrication> fabrication;  // perforation: the sheets cut, and their stock
+  std::optional<ParkPlanting> planting;         // park: what the contractor orders
+  std::optional<EnvelopeFrames> envelope;       // round a building, or along a wall's path
+  // The envelope's façades (none for a flat surface), and the fabrication's sheets (none but
+  // a perforated screen's).
+  const std::vector<SurfaceFrame>& frames() const;
+  const std::vector<FabricationSheet>& sheets() const;
+  // A one-brick wall's backing behind its face; null for any other layout.
+  const WallBacking* backing() const {
+    return envelope && envelope->backing ? &*envelope->backing : nullptr;
+  }
 
   // Where the edge between field cells x - 1 and x (or y - 1 and y) lies, in mm: the middle
   // of the joint, or the layout's edge.

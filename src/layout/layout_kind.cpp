@@ -22,11 +22,12 @@ std::string LayoutKind::laying_line(const Layout& layout) const {
                              : layout.origin == Corner::bottom_right ? "bottom-right"
                              : layout.origin == Corner::top_left     ? "top-left"
                                                                      : "top-right";
-  const std::string bond = !layout.bond_name.empty() ? "; " + layout.bond_name + " bond"
-                           : layout.bond == 0.5      ? "; half bond"
-                           : layout.bond == 0.25     ? "; quarter bond"
-                           : layout.bond > 0         ? "; third bond"
-                                                     : "";
+  const std::string bond = layout.envelope && !layout.envelope->bond_name.empty()
+                               ? "; " + layout.envelope->bond_name + " bond"
+                           : layout.bond == 0.5  ? "; half bond"
+                           : layout.bond == 0.25 ? "; quarter bond"
+                           : layout.bond > 0     ? "; third bond"
+                                                 : "";
   return (layout.centred ? "grid centred, laid from the " + corner + " corner"
                          : "origin " + corner) +
          bond + "; element IDs count rows and columns from it";

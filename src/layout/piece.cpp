@@ -95,8 +95,8 @@ LayingExtents laying_extents(const Layout& layout) {
 
 const PlantingSpec& planting_of(const Layout& layout, const Element& e) {
   static const PlantingSpec none;
-  if (!e.stands) return none;
-  for (const PlantingSpec& p : layout.planting)
+  if (!e.stands || !layout.planting) return none;
+  for (const PlantingSpec& p : layout.planting->orders)
     if (p.member == e.key.part) return p;
   return none;
 }

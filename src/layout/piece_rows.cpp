@@ -17,8 +17,8 @@ std::string element_type_of(const Layout& layout, const Element& e) {
   if (!e.type.empty()) return e.type;
   if (e.form == ElementForm::opening) return "opening";
   // A building's unit turning a corner of another angle than 90° is a special, ordered as one.
-  if (e.corner >= 0 && static_cast<size_t>(e.corner) < layout.frames.size()) {
-    const double turn = layout.frames[static_cast<size_t>(e.corner)].turn_at_end;
+  if (e.corner >= 0 && static_cast<size_t>(e.corner) < layout.frames().size()) {
+    const double turn = layout.frames()[static_cast<size_t>(e.corner)].turn_at_end;
     const double angle = 180 - std::fabs(turn);
     if (std::fabs(angle - 90) >= 0.5)
       return fmt::format("{}, special for a {:.1f}° {} corner", layout.element_type, angle,
@@ -27,8 +27,7 @@ std::string element_type_of(const Layout& layout, const Element& e) {
   // A unit bent to a curved façade is ordered as one, by its developed width; headers, snap
   // headers, queen closers, cuts and half bats each on lines of their own.
   std::string type = layout.element_type;
-  if (const SurfaceFrame* f = layout.frames.empty() ? nullptr : framed_facade(layout, e);
-      f && f->bent)
+  if (const SurfaceFrame* f = !layout.envelope ? nullptr : framed_facade(layout, e); f && f->bent)
     type += fmt::format(", bent to a {:.0f} mm radius", frame_radius(*f));
   switch (e.part) {
     case UnitPart::header:
@@ -48,7 +47,7 @@ std::string element_type_of(const Layout& layout, const Element& e) {
 }
 
 bool needs_backing(const Layout& layout, const Element& e) {
-  return layout.backed && e.form == ElementForm::piece && e.depth < layout.module_w - 1e-6;
+  return layout.backing() && e.form == ElementForm::piece && e.depth < layout.module_w - 1e-6;
 }
 
 // What an order line is bought as: the stock size, or the opening's diameter.
@@ -69,10 +68,10 @@ std::string stock_size_of(const Layout& layout, const Element& e) {
 std::string lot_text(const Layout& layout, const Element& e, size_t index) {
   // Openings of a perforated sheet are lotted by the fabrication sheet they are cut in (on a
   // building too: a sheet stands on one façade).
-  if (e.sheet >= 0) return layout.sheets[static_cast<size_t>(e.sheet)].id;
+  if (e.sheet >= 0) return layout.sheets()[static_cast<size_t>(e.sheet)].id;
   // A building's units are lotted by façade (a corner unit by the face holding its middle), so
   // that lots.csv gives each façade's quantities, unless the recipe asks for lots by size.
-  if (!layout.frames.empty() && layout.ordering.lot_rows == 0 && layout.ordering.lot_size == 0)
+  if (layout.envelope.has_value() && layout.ordering.lot_rows == 0 && layout.ordering.lot_size == 0)
     return framed_facade(layout, e)->name;
   return std::to_string(lot_of(e, index, layout.ordering));
 }
@@ -119,7 +118,7 @@ ScheduleRow schedule_row(const Layout& layout, size_t index) {
     r.outlines.push_back({{polygonise(*e.circle, layout.chord_tolerance)}, e.area()});
   else if (r.outlines.empty())
     r.outlines.push_back({{rect_polygon(b)}, b.area()});
-  if (!layout.frames.empty()) {
+  if (layout.envelope.has_value()) {
     // On the strip, the closing corner's unit is one brick, not a box from end to end.
     const Rect strip = framed_strip_bounds(layout, e);
     r.width = strip.w;

@@ -6,6 +6,7 @@
 #include <array>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace curdle {
 
@@ -23,6 +24,17 @@ struct PlantingSpec {
     text << girth[0];
     if (girth[1] != girth[0]) text << '-' << girth[1];
     return text.str();
+  }
+};
+
+// A park's planting (the park kind's own record on its layout): what the contractor orders, one
+// order per curd that places standing objects.
+struct ParkPlanting {
+  std::vector<PlantingSpec> orders;
+  bool any_pit() const {
+    for (const PlantingSpec& p : orders)
+      if (p.pit_given()) return true;
+    return false;
   }
 };
 

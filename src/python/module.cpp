@@ -192,7 +192,7 @@ py::dict layout_facts(const app::GeneratedRun& g) {
   facts["rows"] = l.rows;
   facts["elements"] = l.elements.size();
   facts["omitted"] = l.omitted;
-  facts["sheets"] = l.sheets.size();
+  facts["sheets"] = l.sheets().size();
   facts["notes"] = l.notes;
   facts["violations"] = l.violations;
   py::list legend;
