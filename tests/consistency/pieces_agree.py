@@ -238,27 +238,38 @@ def glb_faces(path):
         flat = struct.unpack_from(f"<{a['count'] * size}{form}", binary, at)
         return [flat[k:k + width] for k in range(0, len(flat), width)]
 
-    def prism_walls(n, out):
-        t = n["translation"]
-        for prim in doc["meshes"][n["mesh"]]["primitives"]:
+    mesh_walls = {}  # mesh index: its walls about the node's origin (many nodes share a mesh)
+
+    def walls_of(mesh):
+        walls = []
+        for prim in doc["meshes"][mesh]["primitives"]:
             pos = read(prim["attributes"]["POSITION"], 3)
             tris = read(prim["indices"], 3)
             for a, b, c in tris:
-                pts = [((pos[v][0] + t[0]) * 1000, -(pos[v][2] + t[2]) * 1000,
-                        (pos[v][1] + t[1]) * 1000) for v in (a, b, c)]
-                xs, ys, zs = zip(*pts)
+                pts = [(pos[v][0] * 1000, -pos[v][2] * 1000, pos[v][1] * 1000) for v in (a, b, c)]
+                zs = (pts[0][2], pts[1][2], pts[2][2])
                 if max(zs) - min(zs) < 1e-6:
                     continue  # a cap
-                # An upright triangle: its wall's horizontal extent and height.
-                i, j = max(((i, j) for i in range(3) for j in range(3)),
-                           key=lambda ij: math.dist(pts[ij[0]][:2], pts[ij[1]][:2]))
-                span = math.dist(pts[i][:2], pts[j][:2])
+                # An upright triangle: its wall's horizontal extent (its longest edge in plan)
+                # and height.
+                span, i, j = max(((math.dist(pts[i][:2], pts[j][:2]), i, j)
+                                  for i, j in ((0, 1), (0, 2), (1, 2))), key=lambda e: e[0])
                 if span < 1e-6:
                     continue
                 along = ((pts[j][0] - pts[i][0]) / span, (pts[j][1] - pts[i][1]) / span)
                 centre = ((pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2,
                           (max(zs) + min(zs)) / 2)
-                out.append((centre, along, span / 2, (max(zs) - min(zs)) / 2))
+                walls.append((centre, along, span / 2, (max(zs) - min(zs)) / 2))
+        return walls
+
+    def prism_walls(n, out):
+        t = n["translation"]
+        if n["mesh"] not in mesh_walls:
+            mesh_walls[n["mesh"]] = walls_of(n["mesh"])
+        shift = (t[0] * 1000, -t[2] * 1000, t[1] * 1000)
+        for centre, along, half_l, half_h in mesh_walls[n["mesh"]]:
+            out.append(((centre[0] + shift[0], centre[1] + shift[1], centre[2] + shift[2]),
+                        along, half_l, half_h))
 
     def faces(index, out):
         n = nodes[index]
