@@ -381,7 +381,7 @@ void draw_installer_sheet(cairo_t* cr, const Layout& layout, const InstallerDraw
   const std::string unit = legend_unit(layout);
   const std::string holds =
       pieces == 0 ? "no pieces"
-      : layout.fabrication.has_value()
+      : layout.fabrication
           ? fmt::format("{} sheet{}", pieces, pieces == 1 ? "" : "s")
           : fmt::format("{}: {} {} to {}, columns {} to {}", legend_count(layout, pieces),
                         plan.coursed ? "courses" : "rows", held.row0, held.row1, held.column0,

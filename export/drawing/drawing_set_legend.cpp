@@ -50,15 +50,15 @@ std::vector<std::pair<std::vector<Rgb>, std::string>> sheet_legend(const Layout&
     }
     rows.push_back({swatch, line});
   }
-  if (layout.envelope.has_value()) {  // a building's units by part, as quantities.csv orders them
+  if (layout.envelope) {  // a building's units by part, as quantities.csv orders them
     std::map<std::string, uint64_t> by_part;
     for (const Element& e : layout.elements) ++by_part[element_type_of(layout, e)];
     if (by_part.size() > 1)
       for (const auto& [part, n] : by_part)
         rows.push_back({{}, fmt::format("all tones, {}: {}", part, n)});
   }
-  if (const WallBacking* backed =
-          layout.backing()) {  // a one-brick wall: the backing behind its face, unseen but laid
+  // A one-brick wall: the backing behind its face, unseen but laid.
+  if (const WallBacking* backed = layout.backing()) {
     size_t backing = 0, cut = 0;
     for (const Element& e : layout.elements)
       if (needs_backing(layout, e)) ++backing, cut += e.cut;

@@ -535,7 +535,7 @@ void add_provenance(Scene& sc) {
   scene["lattice"] = tinygltf::Value(lattice);
   scene["units"] = tinygltf::Value(std::string("metres, +Y up"));
   // A whole building (layout frames): x east, -z north; viewers frame it from above a corner.
-  if (sc.layout.envelope.has_value()) scene["building"] = tinygltf::Value(true);
+  if (sc.layout.envelope) scene["building"] = tinygltf::Value(true);
   b.model.scenes[0].name = design.recipe;
   b.model.scenes[0].extras = tinygltf::Value(scene);
 }
@@ -548,9 +548,9 @@ struct Built {
 Built build(const Layout& layout) {
   Scene sc(layout);
   if (layout.kind->bedded()) add_bed(sc);
-  if (layout.envelope.has_value() && layout.kind->ground() == Ground::sheet) {
+  if (layout.envelope && layout.kind->ground() == Ground::sheet) {
     add_framed_screen(sc);
-  } else if (layout.envelope.has_value()) {
+  } else if (layout.envelope) {
     add_framed_pieces(sc);
   } else if (layout.kind->ground() == Ground::sheet) {
     add_sheet(sc);

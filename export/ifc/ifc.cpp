@@ -56,7 +56,7 @@ class IfcModel {
       stop_point();
       element(l_.elements[i], i);
     }
-    if (l_.envelope.has_value() && l_.kind->ground() != Ground::sheet)  // a screen has no walls
+    if (l_.envelope && l_.kind->ground() != Ground::sheet)  // a screen has no walls
       for (const auto& [id, base] : envelope_.walls(container_place_, parts_))
         contained_in(base).push_back(id);
     closing_relations();
@@ -210,8 +210,7 @@ class IfcModel {
     // lowest, its walls running up through the others.
     std::vector<int64_t> storeys;
     std::vector<double> levels{0};
-    if (l_.envelope.has_value())
-      levels = storey_levels(l_.drawing.storey, l_.drawing.storeys, l_.height);
+    if (l_.envelope) levels = storey_levels(l_.drawing.storey, l_.drawing.storeys, l_.height);
     while (levels.size() > 1 && levels.back() >= l_.height - 1e-9) levels.pop_back();  // the top
     for (size_t k = 0; k < levels.size(); ++k) {
       const double at = levels[k];
@@ -393,11 +392,11 @@ class IfcModel {
     const IfcEnvelopeWriter::Placed unit =
         framed ? envelope_.unit(e, container_place_, piece_colour(l_, e))
                : IfcEnvelopeWriter::Placed{};
-    const int64_t where =
-        framed                                               ? unit.placement
-        : opening && e.sheet >= 0 && l_.envelope.has_value() ? placement_in_framed_sheet(e)
-        : opening && e.sheet >= 0 ? placement_in_sheet(b.x, b.y, static_cast<size_t>(e.sheet))
-                                  : placement_at(b.x, b.y);
+    const int64_t where = framed                                   ? unit.placement
+                          : opening && e.sheet >= 0 && l_.envelope ? placement_in_framed_sheet(e)
+                          : opening && e.sheet >= 0
+                              ? placement_in_sheet(b.x, b.y, static_cast<size_t>(e.sheet))
+                              : placement_at(b.x, b.y);
     const std::vector<Outline> parts = opening ? std::vector<Outline>{} : piece_outlines(e);
     const int64_t product_shape = framed    ? unit.shape
                                   : opening ? opening_shape(e)

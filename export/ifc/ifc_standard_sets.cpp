@@ -74,7 +74,7 @@ IfcClass class_of(const Layout& layout, const Element& e) {
       break;
   }
   // A building's units are the parts its walls are made of.
-  if (layout.envelope.has_value()) return {"IFCBUILDINGELEMENTPART", ".USERDEFINED."};
+  if (layout.envelope) return {"IFCBUILDINGELEMENTPART", ".USERDEFINED."};
   return {"IFCCOVERING", layout.kind->upright() ? ".CLADDING." : ".FLOORING.", true};
 }
 

@@ -212,8 +212,8 @@ json report_to_json(const Report& report, const Layout& layout) {
   if (layout.site_frame) j["layout"]["site_drawing"] = site_drawing_json(layout);
   if (!layout.site.empty() && (!layout.outline_contour.empty() || !layout.outline.empty()))
     j["layout"]["site_outline"] = site_outline_json(layout);
-  if (layout.envelope.has_value()) j["layout"]["facades"] = facades_json(layout);
-  if (layout.fabrication.has_value()) {
+  if (layout.envelope) j["layout"]["facades"] = facades_json(layout);
+  if (layout.fabrication) {
     json sheets = json::array();
     for (const FabricationSheet& sheet : layout.sheets()) {
       json tools = json::object();

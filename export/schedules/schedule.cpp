@@ -80,7 +80,7 @@ void write_schedule_csv(std::ostream& out, const Layout& layout) {
   header +=
       ",element_type,colour,material,cut,shape_wkt,opening_x_mm,opening_y_mm,"
       "opening_diameter_mm";
-  if (layout.envelope.has_value()) header += ",facade,strip_x_mm,strip_y_mm";
+  if (layout.envelope) header += ",facade,strip_x_mm,strip_y_mm";
   header += "\r\n";
   out << header;
   std::string buffer;

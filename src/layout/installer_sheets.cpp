@@ -357,7 +357,7 @@ std::array<double, 2> installer_viewport(const PaperSheet& paper, bool landscape
 
 std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
   std::vector<InstallerPiece> pieces;
-  if (layout.fabrication.has_value()) {  // installed as fabrication sheets
+  if (layout.fabrication) {  // installed as fabrication sheets
     for (const auto& sheet : layout.sheets())
       pieces.push_back({sheet.id, {sheet.area}, sheet.area});
     return pieces;
@@ -376,7 +376,7 @@ std::vector<InstallerPiece> installer_pieces(const Layout& layout) {
 // Whether the set is coursed: named so, or left automatic where elements laid in courses are
 // small units (a typical piece at most kSmallUnitMm long).
 bool coursed_set(const Layout& layout, double typical_w, double typical_h) {
-  if (layout.fabrication.has_value() || !layout.kind->laid_in_courses() || layout.elements.empty())
+  if (layout.fabrication || !layout.kind->laid_in_courses() || layout.elements.empty())
     return false;
   switch (layout.drawing.installer_set) {
     case InstallerSet::coursed:

@@ -71,7 +71,7 @@ std::string lot_text(const Layout& layout, const Element& e, size_t index) {
   if (e.sheet >= 0) return layout.sheets()[static_cast<size_t>(e.sheet)].id;
   // A building's units are lotted by façade (a corner unit by the face holding its middle), so
   // that lots.csv gives each façade's quantities, unless the recipe asks for lots by size.
-  if (layout.envelope.has_value() && layout.ordering.lot_rows == 0 && layout.ordering.lot_size == 0)
+  if (layout.envelope && layout.ordering.lot_rows == 0 && layout.ordering.lot_size == 0)
     return framed_facade(layout, e)->name;
   return std::to_string(lot_of(e, index, layout.ordering));
 }
@@ -118,7 +118,7 @@ ScheduleRow schedule_row(const Layout& layout, size_t index) {
     r.outlines.push_back({{polygonise(*e.circle, layout.chord_tolerance)}, e.area()});
   else if (r.outlines.empty())
     r.outlines.push_back({{rect_polygon(b)}, b.area()});
-  if (layout.envelope.has_value()) {
+  if (layout.envelope) {
     // On the strip, the closing corner's unit is one brick, not a box from end to end.
     const Rect strip = framed_strip_bounds(layout, e);
     r.width = strip.w;
