@@ -28,7 +28,8 @@ const browser = await chromium.launch({
 const quantile = (xs, q) => [...xs].sort((a, b) => a - b)[Math.min(xs.length - 1, Math.floor(q * xs.length))];
 try {
   for (const recipe of recipes) {
-    // WEB_ROOT: the page from another copy of its files, to compare two versions of it.
+    // WEB_ROOT: the page from another copy of its files, to compare two versions of it (both
+    // ES modules, as the page is since 098bef6: the checks import its modules).
     const { server, url } = await serve(curdle, process.env.WEB_ROOT ? ['--web-root', process.env.WEB_ROOT, recipe] : [recipe]);
     try {
       const page = await browser.newPage({ viewport: { width: 1500, height: 1000 } });
