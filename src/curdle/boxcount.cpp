@@ -182,7 +182,7 @@ void count_groups_live(const uint64_t* words, const LiveWords& live, GroupLevel*
         [&](const tbb::blocked_range<uint64_t>& r, Partial acc) {
           Partial own;
           pass(r.begin() * kCellsPerTask, std::min(cells, r.end() * kCellsPerTask), own);
-          return join(std::move(acc), own);
+          return join(acc, own);
         },
         join);
   }

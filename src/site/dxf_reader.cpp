@@ -368,8 +368,7 @@ class Reader {
     }
     const bool three_d = flags & 8;
     if (!three_d && !in_plan(c)) return off_plane(c);
-    polyline_ = Polyline{
-        shape(c, three_d ? "POLYLINE" : "POLYLINE"), {}, (flags & 1) != 0, !three_d && c.nz < 0};
+    polyline_ = Polyline{shape(c, "POLYLINE"), {}, (flags & 1) != 0, !three_d && c.nz < 0};
     polyline_->three_d = three_d;
     polyline_->common = c;
     polyline_->start_width = real(r, 40, 0, c.name);
