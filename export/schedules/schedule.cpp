@@ -10,6 +10,7 @@
 #include "curdle/markov.h"
 #include "curdle/palette.h"
 #include "io/csv_field.h"
+#include "layout/piece.h"
 #include "layout/union.h"
 #include "layout/wkt.h"
 #include "layout/zone.h"
