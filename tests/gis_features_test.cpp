@@ -22,6 +22,23 @@ Layout pattern_layout(const std::string& name) {
   return make_layout(run.recipe.design, field, run.view, *run.recipe.layout);
 }
 
+size_t of_type(GisField::Type t) {
+  switch (t) {
+    case GisField::Type::integer:
+      return GisValue(std::int64_t{0}).index();
+    case GisField::Type::real:
+      return GisValue(0.0).index();
+    case GisField::Type::text:
+      break;
+  }
+  return GisValue(std::string()).index();
+}
+
+// A text value as the schedules give it: null as empty.
+std::string text_of(const GisValue& v) {
+  return std::holds_alternative<std::monostate>(v) ? std::string() : std::get<std::string>(v);
+}
+
 TEST(GisFeatures, AFeaturePerPieceInALayerPerKindWithTheScheduleAttributes) {
   const Layout layout = pattern_layout("paper/fig5a-park.toml");
   const GisDataset data = gis_features(layout);
@@ -34,6 +51,11 @@ TEST(GisFeatures, AFeaturePerPieceInALayerPerKindWithTheScheduleAttributes) {
     for (const GisFeature& f : l.features) {
       ASSERT_EQ(f.values.size(), data.fields.size());
       ASSERT_FALSE(f.polygons.empty());
+      // Each value of its field's type, or null: GDAL is handed it by its type.
+      for (size_t i = 0; i < f.values.size(); ++i)
+        ASSERT_TRUE(std::holds_alternative<std::monostate>(f.values[i]) ||
+                    f.values[i].index() == of_type(data.fields[i].type))
+            << data.fields[i].name;
     }
   }
   EXPECT_EQ(features, layout.elements.size());
@@ -41,7 +63,8 @@ TEST(GisFeatures, AFeaturePerPieceInALayerPerKindWithTheScheduleAttributes) {
   EXPECT_EQ(data.fields.front().name, "element_id");
   // The tree's attributes as schedule.csv has them: its ID first, its species as material.
   const GisFeature& tree = data.layers[1].features.front();
-  EXPECT_TRUE(tree.values.front().ends_with("-tree")) << tree.values.front();
+  const std::string& id = std::get<std::string>(tree.values.front());
+  EXPECT_TRUE(id.ends_with("-tree")) << id;
   // planting.csv's columns on the layers too, as it gives them: a tree's species and sizes, a
   // paving piece's left null; and every piece's zone.
   std::map<std::string, size_t> field;
@@ -53,9 +76,15 @@ TEST(GisFeatures, AFeaturePerPieceInALayerPerKindWithTheScheduleAttributes) {
     if (e.stands && e.circle && !first_tree) first_tree = &e;
   ASSERT_NE(first_tree, nullptr);
   const PlantingSpec& p = planting_of(layout, *first_tree);
-  EXPECT_EQ(tree.values[field["species"]], p.species);
-  EXPECT_EQ(tree.values[field["girth_cm"]], p.girth_text());
-  EXPECT_EQ(data.layers[0].features.front().values[field["species"]], "");
+  EXPECT_EQ(text_of(tree.values[field["species"]]), p.species);
+  EXPECT_EQ(text_of(tree.values[field["girth_cm"]]), p.girth_text());
+  const GisValue& ball = tree.values[field["root_ball_mm"]];
+  if (p.root_ball > 0)
+    EXPECT_EQ(std::get<double>(ball), p.root_ball);
+  else
+    EXPECT_TRUE(std::holds_alternative<std::monostate>(ball));
+  EXPECT_TRUE(std::holds_alternative<std::monostate>(
+      data.layers[0].features.front().values[field["species"]]));
 }
 
 TEST(GisFeatures, GeorefPlacesTheDatumAndTurnsTheAxes) {

@@ -1,7 +1,5 @@
 #include "export/gis/gis_features.h"
 
-#include <fmt/format.h>
-
 #include <cmath>
 #include <map>
 
@@ -45,8 +43,20 @@ const std::vector<GisField> kFields{{"element_id", T::text},
                                     {"facing_deg", T::integer},
                                     {"zone", T::text}};
 
-std::string number(double v) { return fmt::format("{}", v); }
-std::string number(const std::optional<double>& v) { return v ? number(*v) : std::string(); }
+// Text as a value: empty text is null, as GIS readers expect of a column a piece has not.
+GisValue text(std::string v) {
+  if (v.empty()) return {};
+  return v;
+}
+GisValue number(const std::optional<double>& v) {
+  if (!v) return {};
+  return *v;
+}
+GisValue given(double v) {
+  if (v > 0) return v;
+  return {};
+}
+GisValue whole(std::int64_t v) { return v; }
 
 // A table name from an element type: "paving tile" -> "paving_tile".
 std::string table_name(const std::string& type) {
@@ -61,45 +71,43 @@ std::string table_name(const std::string& type) {
   return out.empty() || (out[0] >= '0' && out[0] <= '9') ? "elements_" + out : out;
 }
 
-std::string given(double v) { return v > 0 ? number(v) : std::string(); }
-
 // A tree's or a bench's planting columns as planting.csv and furniture.csv give them, and every
 // piece's zone as the schedules book it.
-std::vector<std::string> planting_values(const Layout& layout, const Element& e) {
-  std::vector<std::string> out(7);
+void add_planting_values(const Layout& layout, const Element& e, std::vector<GisValue>& out) {
+  const size_t first = out.size();
+  out.resize(first + 7);
   if (e.stands) {
     const PlantingSpec& p = planting_of(layout, e);
-    out[0] = p.species;
-    out[1] = p.girth_text();
-    out[2] = given(p.root_ball);
-    out[3] = given(p.pit[0]);
-    out[4] = given(p.pit[1]);
-    if (!e.circle) out[5] = std::to_string(static_cast<int>(e.turn));  // a bench's facing
+    out[first] = text(p.species);
+    out[first + 1] = text(p.girth_text());
+    out[first + 2] = given(p.root_ball);
+    out[first + 3] = given(p.pit[0]);
+    out[first + 4] = given(p.pit[1]);
+    if (!e.circle) out[first + 5] = whole(static_cast<int>(e.turn));  // a bench's facing
   }
-  out[6] = zone_of_element(layout, e);
-  return out;
+  out[first + 6] = text(zone_of_element(layout, e));
 }
 
-std::vector<std::string> values_of(const ScheduleRow& r) {
-  return {r.id,
-          r.lot,
-          r.level ? std::to_string(*r.level) : "",
-          std::to_string(r.row),
-          std::to_string(r.column),
-          number(r.x),
-          number(r.y),
-          number(r.z),
-          number(r.width),
-          number(r.height),
+std::vector<GisValue> values_of(const ScheduleRow& r) {
+  return {text(r.id),
+          text(r.lot),
+          r.level ? whole(*r.level) : GisValue{},
+          whole(r.row),
+          whole(r.column),
+          r.x,
+          r.y,
+          r.z,
+          r.width,
+          r.height,
           number(r.depth),
-          number(area_m2(r.area)),
+          area_m2(r.area),
           number(r.stock_width),
           number(r.stock_height),
-          std::to_string(r.value),
-          r.element_type,
-          r.colour,
-          r.material,
-          r.cut ? "1" : "0",
+          whole(r.value),
+          text(r.element_type),
+          text(r.colour),
+          text(r.material),
+          whole(r.cut ? 1 : 0),
           number(r.opening_diameter)};
 }
 
@@ -126,8 +134,7 @@ GisDataset gis_features(const Layout& layout) {
     if (added) data.layers.push_back({name, {}});
     GisFeature f;
     f.values = values_of(row);
-    for (std::string& v : planting_values(layout, layout.elements[i]))
-      f.values.push_back(std::move(v));
+    add_planting_values(layout, layout.elements[i], f.values);
     for (const Outline& part : row.outlines) {
       std::vector<Ring> rings;
       for (const Ring& ring : part.rings) {

@@ -7,7 +7,9 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "layout/layout.h"
@@ -20,9 +22,13 @@ struct GisField {
   Type type = Type::text;
 };
 
+// One attribute, of its field's type; none is null. Numbers go to GDAL as numbers: written as
+// text, GDAL spent as long parsing them back as the rest of its work on a feature.
+using GisValue = std::variant<std::monostate, std::int64_t, double, std::string>;
+
 struct GisFeature {
   std::vector<std::vector<Ring>> polygons;  // each an outer ring then its holes, in metres
-  std::vector<std::string> values;          // one per field, as text; empty: null
+  std::vector<GisValue> values;             // one per field
 };
 
 struct GisLayer {

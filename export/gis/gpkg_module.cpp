@@ -87,6 +87,15 @@ OGRGeometryH multipolygon(const curdle::GisFeature& f) {
   return multi;
 }
 
+void set_field(OGRFeatureH feature, int index, const curdle::GisValue& value) {
+  if (const auto* v = std::get_if<std::int64_t>(&value))
+    OGR_F_SetFieldInteger64(feature, index, *v);
+  else if (const auto* d = std::get_if<double>(&value))
+    OGR_F_SetFieldDouble(feature, index, *d);
+  else if (const auto* t = std::get_if<std::string>(&value))
+    OGR_F_SetFieldString(feature, index, t->c_str());
+}
+
 std::string gdal_error(const char* what) {
   const char* message = CPLGetLastErrorMsg();
   return std::string(what) + (message && *message ? std::string(": ") + message : "");
@@ -111,8 +120,7 @@ int write_layers(GDALDatasetH ds, const GisDataset& data, OGRSpatialReferenceH s
     for (const curdle::GisFeature& f : l.features) {
       OGRFeatureH feature = OGR_F_Create(OGR_L_GetLayerDefn(layer));
       for (size_t i = 0; i < f.values.size(); ++i)
-        if (!f.values[i].empty())
-          OGR_F_SetFieldString(feature, static_cast<int>(i), f.values[i].c_str());
+        set_field(feature, static_cast<int>(i), f.values[i]);
       OGR_F_SetGeometryDirectly(feature, multipolygon(f));
       const OGRErr e = OGR_L_CreateFeature(layer, feature);
       OGR_F_Destroy(feature);

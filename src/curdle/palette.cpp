@@ -2,7 +2,7 @@
 
 #include <array>
 #include <charconv>
-#include <cstdio>
+#include <cstdint>
 
 #include "curdle/markov.h"
 
@@ -58,9 +58,15 @@ std::vector<Rgb> value_colours(const std::vector<CurdSpec>& curds) {
 
 namespace curdle {
 
+// By hand: a writer asks this for every piece, and snprintf was 2.5 % of a building's run.
 std::string hex_colour(const Rgb& c) {
-  char text[8];
-  std::snprintf(text, sizeof text, "#%02x%02x%02x", c.r, c.g, c.b);
+  static constexpr char kDigits[] = "0123456789abcdef";
+  std::string text(7, '#');
+  const uint8_t channels[3] = {c.r, c.g, c.b};
+  for (int i = 0; i < 3; ++i) {
+    text[1 + 2 * i] = kDigits[channels[i] >> 4];
+    text[2 + 2 * i] = kDigits[channels[i] & 0xf];
+  }
   return text;
 }
 
