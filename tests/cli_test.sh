@@ -4,7 +4,7 @@
 # golden outputs still come out. Each section is its own ctest entry, so that they run side by
 # side. Usage: CURDLE=path/to/curdle cli_test.sh SOURCE_DIR SECTION [ARGUMENT]
 #   sections: pattern RECIPE, bad_recipes, bad_options, segments, overrides, threads,
-#             golden, report, search, measure, fit, serve, printf_hooks
+#             golden, report, search, measure, fit, serve, printf
 set -u
 src=${1:?source dir}
 section=${2:?section}
@@ -365,22 +365,27 @@ fi
 grep -q "curdle: stopped" "$work/serve.out" && pass || fail "serve did not say it stopped"
 }
 
-# GDAL brings libquadmath, whose printf hooks would send every printf in the process down glibc's
-# slow path (src/cli/printf_hooks.cpp): its three registrations must reach curdle's refusals,
-# not glibc, when layout.gpkg loads GDAL; and curdle-serve, which loads it too, exports them.
-section_printf_hooks() {
+# The programs' own printf paths: GDAL brings libquadmath, whose printf hooks would send every
+# printf in the process down glibc's slow path (src/cli/printf_hooks.cpp), so its three
+# registrations must reach curdle's refusals, not glibc, when layout.gpkg loads GDAL; and cairo's
+# snprintf must reach curdle's fast path for "%f" (src/cli/fixed_point_snprintf.h) when
+# layout.pdf is drawn. curdle-serve, which loads both, exports the same.
+section_printf() {
   LD_DEBUG=bindings LD_DEBUG_OUTPUT="$work/bindings" \
-    "$curdle" generate "$fig7" --out "$work/hooks" --outputs layout.gpkg > /dev/null 2>&1 \
-    && pass || fail "generate with layout.gpkg failed"
-  for name in register_printf_specifier register_printf_modifier register_printf_type; do
-    if ! cat "$work"/bindings.* | grep -q "libquadmath.*to .*curdle.*\`$name'"; then
-      fail "libquadmath's $name did not bind to curdle: $(cat "$work"/bindings.* | grep "$name")"
-    else
+    "$curdle" generate "$fig7" --out "$work/printf" --outputs layout.gpkg layout.pdf > /dev/null 2>&1 \
+    && pass || fail "generate with layout.gpkg and layout.pdf failed"
+  local serve
+  serve="$(dirname "$curdle")/curdle-serve"
+  for binding in "libquadmath register_printf_specifier" "libquadmath register_printf_modifier" \
+                 "libquadmath register_printf_type" "libcairo __snprintf_chk"; do
+    set -- $binding
+    if cat "$work"/bindings.* | grep -q "$1.*to .*curdle.*\`$2'"; then
       pass
+    else
+      fail "$1's $2 did not bind to curdle: $(cat "$work"/bindings.* | grep "$1.*\`$2'" | head -3)"
     fi
-    serve="$(dirname "$curdle")/curdle-serve"
     if [ -x "$serve" ]; then
-      nm -D --defined-only "$serve" | grep -qw "$name" && pass || fail "curdle-serve does not export $name"
+      nm -D --defined-only "$serve" | grep -qw "$2" && pass || fail "curdle-serve does not export $2"
     fi
   done
 }
