@@ -3,6 +3,7 @@
 // they are written.
 #include "export/ifc/step_file.h"
 
+#include <fmt/compile.h>
 #include <gtest/gtest.h>
 
 #include <set>
@@ -60,11 +61,11 @@ TEST(StepFile, EntitiesAreFormattedInPlaceAsTheirStringsWouldBe) {
   std::ostringstream out;
   StepWriter w(out, "layout.ifc", "IFC4", "ReferenceView_V1.2");
   const std::array<char, 22> guid = IfcGuidSource("k").guid("x");
-  EXPECT_EQ(w.add("IFCPROPERTYSINGLEVALUE({},$,IFCLABEL({}),$)", StepText{"O'Hare"},
+  EXPECT_EQ(w.add(FMT_COMPILE("IFCPROPERTYSINGLEVALUE({},$,IFCLABEL({}),$)"), StepText{"O'Hare"},
                   StepText{"Gr\xC3\xA8s"}),
             1);
-  EXPECT_EQ(w.add("IFCCARTESIANPOINT(({},{}))", StepReal{600}, StepReal{1e-5}), 2);
-  EXPECT_EQ(w.add("IFCWALL({},{})", StepRoot{guid, 12}, StepRef{2}), 3);
+  EXPECT_EQ(w.add(FMT_COMPILE("IFCCARTESIANPOINT(({},{}))"), StepReal{600}, StepReal{1e-5}), 2);
+  EXPECT_EQ(w.add(FMT_COMPILE("IFCWALL({},{})"), StepRoot{guid, 12}, StepRef{2}), 3);
   w.finish();
   const std::string s = out.str();
   EXPECT_NE(s.find("#1=IFCPROPERTYSINGLEVALUE('O''Hare',$,IFCLABEL('Gr\\X2\\00E8\\X0\\s'),$);\n"),

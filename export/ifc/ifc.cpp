@@ -1,5 +1,6 @@
 #include "export/ifc/ifc.h"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -72,8 +73,8 @@ class IfcModel {
   // A property or quantity, written once for every set that holds the same one (IFC lets a
   // property stand in many sets): most pieces share their material, lot, size and area, and
   // the pavilion's model is a third smaller for it.
-  template <typename... Args>
-  int64_t shared(fmt::format_string<Args...> format, Args&&... args) {
+  template <typename Format, typename... Args>
+  int64_t shared(const Format& format, Args&&... args) {  // a compiled format, as add's
     scratch_.clear();
     fmt::format_to(fmt::appender(scratch_), format, std::forward<Args>(args)...);
     const std::string_view text(scratch_.data(), scratch_.size());
@@ -89,19 +90,20 @@ class IfcModel {
       out_of_wall_ = g_.direction(0, -1, 0);
       along_ = g_.direction(1, 0, 0);
     }
-    const int64_t model =
-        w_.add("IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-05,{},$)", ref(world_));
-    g_.set_body_context(
-        w_.add("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Body','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
-               ref(model)));
+    const int64_t model = w_.add(
+        FMT_COMPILE("IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-05,{},$)"), ref(world_));
+    g_.set_body_context(w_.add(
+        FMT_COMPILE(
+            "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Body','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)"),
+        ref(model)));
     if (has_arc_contours())
-      annotation_ = w_.add(
-          "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Annotation','Plan',*,*,*,*,{},$,.PLAN_VIEW.,$)",
-          ref(model));
+      annotation_ = w_.add(FMT_COMPILE("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Annotation','Plan',*,"
+                                       "*,*,*,{},$,.PLAN_VIEW.,$)"),
+                           ref(model));
     if (l_.kind->ground() == Ground::sheet)
-      profile_context_ = w_.add(
-          "IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Profile','Model',*,*,*,*,{},$,.MODEL_VIEW.,$)",
-          ref(model));
+      profile_context_ = w_.add(FMT_COMPILE("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Profile','Model'"
+                                            ",*,*,*,*,{},$,.MODEL_VIEW.,$)"),
+                                ref(model));
     // Added one by one: arguments of one call are evaluated in no fixed order, and the bytes
     // must not depend on the compiler.
     const std::vector<int64_t> unit_ids{w_.add("IFCSIUNIT(*,.LENGTHUNIT.,.MILLI.,.METRE.)"),
@@ -112,8 +114,8 @@ class IfcModel {
     owner_history();
     const std::string description =
         l_.source.description.empty() ? std::string("$") : step_string(l_.source.description);
-    project_ = w_.add("IFCPROJECT({},{},{},$,$,$,({}),{})", root("project"), text(l_.source.recipe),
-                      description, ref(model), ref(units));
+    project_ = w_.add(FMT_COMPILE("IFCPROJECT({},{},{},$,$,$,({}),{})"), root("project"),
+                      text(l_.source.recipe), description, ref(model), ref(units));
     map_conversion(model);
     recipe_properties();
   }
@@ -124,11 +126,11 @@ class IfcModel {
     if (!l_.georef) return;
     const Georef& g = *l_.georef;
     const int64_t metre = w_.add("IFCSIUNIT(*,.LENGTHUNIT.,$,.METRE.)");
-    const int64_t crs = w_.add("IFCPROJECTEDCRS({},$,$,$,$,$,{})",
+    const int64_t crs = w_.add(FMT_COMPILE("IFCPROJECTEDCRS({},$,$,$,$,$,{})"),
                                text(fmt::format("EPSG:{}", g.epsg)), ref(metre));
     const double turn = g.rotation * 3.14159265358979323846 / 180;
-    w_.add("IFCMAPCONVERSION({},{},{},{},0.,{},{},0.001)", ref(model), ref(crs), real(g.easting),
-           real(g.northing), real(std::cos(turn)), real(std::sin(turn)));
+    w_.add(FMT_COMPILE("IFCMAPCONVERSION({},{},{},{},0.,{},{},0.001)"), ref(model), ref(crs),
+           real(g.easting), real(g.northing), real(std::cos(turn)), real(std::sin(turn)));
   }
 
   // Who made the model and when, as Revit and Solibri expect of every rooted entity: curdle, at
@@ -137,11 +139,11 @@ class IfcModel {
     const int64_t person = w_.add("IFCPERSON($,$,'curdle',$,$,$,$,$)");
     const int64_t organisation = w_.add("IFCORGANIZATION($,'curdle',$,$,$)");
     const int64_t both =
-        w_.add("IFCPERSONANDORGANIZATION({},{},$)", ref(person), ref(organisation));
-    const int64_t application =
-        w_.add("IFCAPPLICATION({},{},'curdle','curdle')", ref(organisation), text(CURDLE_VERSION));
-    owner_ =
-        w_.add("IFCOWNERHISTORY({},{},$,.NOCHANGE.,$,$,$,946684800)", ref(both), ref(application));
+        w_.add(FMT_COMPILE("IFCPERSONANDORGANIZATION({},{},$)"), ref(person), ref(organisation));
+    const int64_t application = w_.add(FMT_COMPILE("IFCAPPLICATION({},{},'curdle','curdle')"),
+                                       ref(organisation), text(CURDLE_VERSION));
+    owner_ = w_.add(FMT_COMPILE("IFCOWNERHISTORY({},{},$,.NOCHANGE.,$,$,$,946684800)"), ref(both),
+                    ref(application));
   }
 
   // How to make the model again: recipe, seed, lattice and the window of cells laid.
@@ -164,48 +166,55 @@ class IfcModel {
         curds += " (Markov: " + fmt::format("{}", fmt::join(g.chain->states, ", ")) + ")";
     }
     props.push_back(label("Curds", curds));
-    const int64_t set =
-        w_.add("IFCPROPERTYSET({},'Curdle_Recipe',$,{})", root("recipe"), step_refs(props));
-    w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("recipe-rel"), ref(project_),
-           ref(set));
+    const int64_t set = w_.add(FMT_COMPILE("IFCPROPERTYSET({},'Curdle_Recipe',$,{})"),
+                               root("recipe"), step_refs(props));
+    w_.add(FMT_COMPILE("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})"), root("recipe-rel"),
+           ref(project_), ref(set));
   }
 
   // A property of a set: its name and its typed value ("IFCINTEGER(3)").
   int64_t property(std::string_view name, std::string_view value) {
-    return shared("IFCPROPERTYSINGLEVALUE({},$,{},$)", text(name), value);
+    return shared(FMT_COMPILE("IFCPROPERTYSINGLEVALUE({},$,{},$)"), text(name), value);
   }
   int64_t label(std::string_view name, std::string_view value) {
-    return shared("IFCPROPERTYSINGLEVALUE({},$,IFCLABEL({}),$)", text(name), text(value));
+    return shared(FMT_COMPILE("IFCPROPERTYSINGLEVALUE({},$,IFCLABEL({}),$)"), text(name),
+                  text(value));
   }
   int64_t integer(std::string_view name, int64_t value) {
-    return shared("IFCPROPERTYSINGLEVALUE({},$,IFCINTEGER({}),$)", text(name), value);
+    return shared(FMT_COMPILE("IFCPROPERTYSINGLEVALUE({},$,IFCINTEGER({}),$)"), text(name), value);
   }
   int64_t length(std::string_view name, double value) {
-    return shared("IFCPROPERTYSINGLEVALUE({},$,IFCPOSITIVELENGTHMEASURE({}),$)", text(name),
-                  real(value));
+    return shared(FMT_COMPILE("IFCPROPERTYSINGLEVALUE({},$,IFCPOSITIVELENGTHMEASURE({}),$)"),
+                  text(name), real(value));
   }
 
   // Façades, screens and blocks stand in a building's storey. Ground works stand in an external
   // space on the site (IfcSpace .EXTERNAL.): IFC4 has no facility part, and a storey would
   // invent a building where there is none; the space is what a BIM user filters them by.
   void spatial_structure() {
-    const int64_t site_place = w_.add("IFCLOCALPLACEMENT($,{})", ref(world_));
-    const int64_t site =
-        w_.add("IFCSITE({},'Site',$,$,{},$,$,.ELEMENT.,$,$,$,$,$)", root("site"), ref(site_place));
-    w_.add("IFCRELAGGREGATES({},$,$,{},({}))", root("project-site"), ref(project_), ref(site));
+    const int64_t site_place = w_.add(FMT_COMPILE("IFCLOCALPLACEMENT($,{})"), ref(world_));
+    const int64_t site = w_.add(FMT_COMPILE("IFCSITE({},'Site',$,$,{},$,$,.ELEMENT.,$,$,$,$,$)"),
+                                root("site"), ref(site_place));
+    w_.add(FMT_COMPILE("IFCRELAGGREGATES({},$,$,{},({}))"), root("project-site"), ref(project_),
+           ref(site));
     if (ground_works()) {
-      const int64_t space_place = w_.add("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_));
+      const int64_t space_place =
+          w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"), ref(site_place), ref(world_));
       const int64_t space =
-          w_.add("IFCSPACE({},'External works',$,$,{},$,{},.ELEMENT.,.EXTERNAL.,0.)", root("space"),
-                 ref(space_place), text("Ground works"));
-      w_.add("IFCRELAGGREGATES({},$,$,{},({}))", root("site-space"), ref(site), ref(space));
+          w_.add(FMT_COMPILE("IFCSPACE({},'External works',$,$,{},$,{},.ELEMENT.,.EXTERNAL.,0.)"),
+                 root("space"), ref(space_place), text("Ground works"));
+      w_.add(FMT_COMPILE("IFCRELAGGREGATES({},$,$,{},({}))"), root("site-space"), ref(site),
+             ref(space));
       container_ = space, container_place_ = space_place;
       return;
     }
-    const int64_t building_place = w_.add("IFCLOCALPLACEMENT({},{})", ref(site_place), ref(world_));
-    const int64_t building = w_.add("IFCBUILDING({},'Building',$,$,{},$,$,.ELEMENT.,$,$,$)",
-                                    root("building"), ref(building_place));
-    w_.add("IFCRELAGGREGATES({},$,$,{},({}))", root("site-building"), ref(site), ref(building));
+    const int64_t building_place =
+        w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"), ref(site_place), ref(world_));
+    const int64_t building =
+        w_.add(FMT_COMPILE("IFCBUILDING({},'Building',$,$,{},$,$,.ELEMENT.,$,$,$)"),
+               root("building"), ref(building_place));
+    w_.add(FMT_COMPILE("IFCRELAGGREGATES({},$,$,{},({}))"), root("site-building"), ref(site),
+           ref(building));
     // A building of storeys (layout.drawing's floor to floor): what it holds stands in the
     // lowest, its walls running up through the others.
     std::vector<int64_t> storeys;
@@ -214,16 +223,16 @@ class IfcModel {
     while (levels.size() > 1 && levels.back() >= l_.height - 1e-9) levels.pop_back();  // the top
     for (size_t k = 0; k < levels.size(); ++k) {
       const double at = levels[k];
-      const int64_t place = w_.add("IFCLOCALPLACEMENT({},{})", ref(building_place),
+      const int64_t place = w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"), ref(building_place),
                                    ref(k ? g_.axes({0, 0, at}, {0, 0, 1}, {1, 0, 0}) : world_));
-      storeys.push_back(w_.add("IFCBUILDINGSTOREY({},{},$,$,{},$,$,.ELEMENT.,{})",
+      storeys.push_back(w_.add(FMT_COMPILE("IFCBUILDINGSTOREY({},{},$,$,{},$,$,.ELEMENT.,{})"),
                                root(k ? "storey " + std::to_string(k) : "storey"),
                                text("Level " + std::to_string(k)), ref(place), real(at)));
       if (k == 0) container_ = storeys.back(), container_place_ = place;
     }
     storeys_ = storeys, levels_ = levels;
     upper_.assign(storeys.size(), {});
-    w_.add("IFCRELAGGREGATES({},$,$,{},{})", root("building-storey"), ref(building),
+    w_.add(FMT_COMPILE("IFCRELAGGREGATES({},$,$,{},{})"), root("building-storey"), ref(building),
            step_refs(storeys));
   }
 
@@ -236,19 +245,21 @@ class IfcModel {
   // spatial container, as Revit and ArchiCAD expect; its profiles are drawn from that corner.
   int64_t placement_at(double x, double y) {
     g_.set_local_origin(x, y);
-    const int64_t frame = l_.kind->upright()
-                              ? w_.add("IFCAXIS2PLACEMENT3D({},{},{})", ref(g_.point(x, 0, y)),
-                                       ref(out_of_wall_), ref(along_))
-                              : w_.add("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x, y, 0)));
-    return w_.add("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(frame));
+    const int64_t frame =
+        l_.kind->upright()
+            ? w_.add(FMT_COMPILE("IFCAXIS2PLACEMENT3D({},{},{})"), ref(g_.point(x, 0, y)),
+                     ref(out_of_wall_), ref(along_))
+            : w_.add(FMT_COMPILE("IFCAXIS2PLACEMENT3D({},$,$)"), ref(g_.point(x, y, 0)));
+    return w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"), ref(container_place_), ref(frame));
   }
   // An opening's placement: at its own corner, relative to the sheet it voids (whose frame is
   // already the surface's plane), as IFC places openings in their host.
   int64_t placement_in_sheet(double x, double y, size_t sheet) {
     g_.set_local_origin(x, y);
     const Rect& s = l_.sheets()[sheet].area;
-    const int64_t frame = w_.add("IFCAXIS2PLACEMENT3D({},$,$)", ref(g_.point(x - s.x, y - s.y, 0)));
-    return w_.add("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[sheet]), ref(frame));
+    const int64_t frame =
+        w_.add(FMT_COMPILE("IFCAXIS2PLACEMENT3D({},$,$)"), ref(g_.point(x - s.x, y - s.y, 0)));
+    return w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"), ref(sheet_places_[sheet]), ref(frame));
   }
 
   // The element's body as laid: one solid, whatever its shape (an L-shaped cut piece is one
@@ -286,9 +297,9 @@ class IfcModel {
   int64_t opening_shape(const Element& e) {
     std::vector<int64_t> curves;
     for (const Ring& ring : opening_rings(e)) curves.push_back(g_.shared_polyline(ring));
-    const int64_t rep = w_.add("IFCSHAPEREPRESENTATION({},'Profile','Curve2D',{})",
+    const int64_t rep = w_.add(FMT_COMPILE("IFCSHAPEREPRESENTATION({},'Profile','Curve2D',{})"),
                                ref(profile_context_), step_refs(curves));
-    return w_.add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
+    return w_.add(FMT_COMPILE("IFCPRODUCTDEFINITIONSHAPE($,$,({}))"), ref(rep));
   }
 
   // The fabrication sheets a perforated surface is cut into: each a plate whose body has its
@@ -298,7 +309,7 @@ class IfcModel {
     const double t = l_.thickness;
     const Rgb metal{201, 205, 210};
     const int64_t material =
-        w_.add("IFCMATERIAL({},$,'metal')", text(fmt::format("sheet, {:g} mm", t)));
+        w_.add(FMT_COMPILE("IFCMATERIAL({},$,'metal')"), text(fmt::format("sheet, {:g} mm", t)));
     std::vector<std::vector<Ring>> holes(l_.sheets().size());
     // Merged openings' islands, per sheet: metal the outline leaves standing.
     std::vector<std::vector<Outline>> islands(l_.sheets().size());
@@ -313,15 +324,15 @@ class IfcModel {
     for (size_t k = 0; k < l_.sheets().size(); ++k) {
       const FabricationSheet& s = l_.sheets()[k];
       const bool framed = l_.envelope.has_value();
-      const int64_t where =
-          framed ? w_.add("IFCLOCALPLACEMENT({},{})", ref(container_place_), ref(world_))
-                 : placement_at(s.area.x, s.area.y);
+      const int64_t where = framed ? w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"),
+                                            ref(container_place_), ref(world_))
+                                   : placement_at(s.area.x, s.area.y);
       const int64_t body =
           framed ? screen_sheets_.body(k, metal)
                  : g_.body({g_.solid(sheet_profile(s, holes[k], islands[k]), 0, t, metal)});
       const int64_t plate =
-          w_.add("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)", root("sheet " + s.id),
-                 text(s.id), ref(where), ref(body), text(s.id));
+          w_.add(FMT_COMPILE("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)"),
+                 root("sheet " + s.id), text(s.id), ref(where), ref(body), text(s.id));
       contained_.push_back(plate);
       sheet_plates_.push_back(plate);
       sheet_places_.push_back(where);
@@ -329,7 +340,7 @@ class IfcModel {
       sets(plate, "sheet " + s.id, "IFCPLATE",
            {s.id, true, true, t, s.area.w, s.area.h, s.surface / 1e6, net});
     }
-    w_.add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("sheet-material"),
+    w_.add(FMT_COMPILE("IFCRELASSOCIATESMATERIAL({},$,$,{},{})"), root("sheet-material"),
            step_refs(sheet_plates_), ref(material));
   }
   // An opening of a screen on a building: at its box's corner on the face, its profile in the
@@ -339,7 +350,8 @@ class IfcModel {
     g_.set_local_origin(b.x, b.y);
     const FramedPose pose = opening_pose(l_, e);
     const auto& [dx, dy] = pose.along;
-    return w_.add("IFCLOCALPLACEMENT({},{})", ref(sheet_places_[static_cast<size_t>(e.sheet)]),
+    return w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"),
+                  ref(sheet_places_[static_cast<size_t>(e.sheet)]),
                   ref(g_.axes(pose.origin, {dy, -dx, 0}, {dx, dy, 0})));
   }
 
@@ -373,10 +385,11 @@ class IfcModel {
   void arc_annotations() {
     if (!has_arc_contours()) return;
     auto annotate = [&](const std::string& name, const Contour& c) {
-      const int64_t rep = w_.add("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',({}))",
-                                 ref(annotation_), ref(g_.contour_curve(c)));
-      const int64_t shape = w_.add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
-      contained_.push_back(w_.add("IFCANNOTATION({},{},$,'setting out',{},{})",
+      const int64_t rep =
+          w_.add(FMT_COMPILE("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',({}))"),
+                 ref(annotation_), ref(g_.contour_curve(c)));
+      const int64_t shape = w_.add(FMT_COMPILE("IFCPRODUCTDEFINITIONSHAPE($,$,({}))"), ref(rep));
+      contained_.push_back(w_.add(FMT_COMPILE("IFCANNOTATION({},{},$,'setting out',{},{})"),
                                   root("annotation " + name), text(name), ref(placement_at(0, 0)),
                                   ref(shape)));
     };
@@ -401,12 +414,12 @@ class IfcModel {
     const int64_t product_shape = framed    ? unit.shape
                                   : opening ? opening_shape(e)
                                             : g_.body(solids(e, parts, piece_colour(l_, e)));
-    const int64_t id = w_.add("{}({},{},$,{},{},{},{},{})", c.entity, root(e.id), text(e.id),
-                              text(element_type_of(l_, e)), ref(where), ref(product_shape),
-                              text(e.id), c.predefined);
+    const int64_t id = w_.add(FMT_COMPILE("{}({},{},$,{},{},{},{},{})"), c.entity, root(e.id),
+                              text(e.id), text(element_type_of(l_, e)), ref(where),
+                              ref(product_shape), text(e.id), c.predefined);
     if (opening) {
       if (e.sheet >= 0)
-        w_.add("IFCRELVOIDSELEMENT({},$,$,{},{})", root("void ", e.id),
+        w_.add(FMT_COMPILE("IFCRELVOIDSELEMENT({},$,$,{},{})"), root("void ", e.id),
                ref(sheet_plates_[static_cast<size_t>(e.sheet)]), ref(id));
     } else {
       if (framed)
@@ -443,12 +456,12 @@ class IfcModel {
       for (const IfcSetEntry& entry : set.entries) entries.push_back(set_entry(entry));
       const bool quantities = set.name.rfind("Qto_", 0) == 0;
       const int64_t definition =
-          quantities ? w_.add("IFCELEMENTQUANTITY({},{},$,$,{})", root(set.name, key),
+          quantities ? w_.add(FMT_COMPILE("IFCELEMENTQUANTITY({},{},$,$,{})"), root(set.name, key),
                               text(set.name), step_refs(entries))
-                     : w_.add("IFCPROPERTYSET({},{},$,{})", root(set.name, key), text(set.name),
-                              step_refs(entries));
-      w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root(set.name + "-rel ", key), ref(id),
-             ref(definition));
+                     : w_.add(FMT_COMPILE("IFCPROPERTYSET({},{},$,{})"), root(set.name, key),
+                              text(set.name), step_refs(entries));
+      w_.add(FMT_COMPILE("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})"),
+             root(set.name + "-rel ", key), ref(id), ref(definition));
     }
   }
   int64_t set_entry(const IfcSetEntry& entry) {
@@ -457,13 +470,16 @@ class IfcModel {
       case K::property:
         return property(entry.name, entry.value);
       case K::length:
-        return shared("IFCQUANTITYLENGTH({},$,$,{},$)", text(entry.name), real(entry.amount));
+        return shared(FMT_COMPILE("IFCQUANTITYLENGTH({},$,$,{},$)"), text(entry.name),
+                      real(entry.amount));
       case K::area:
-        return shared("IFCQUANTITYAREA({},$,$,{},$)", text(entry.name), real(entry.amount));
+        return shared(FMT_COMPILE("IFCQUANTITYAREA({},$,$,{},$)"), text(entry.name),
+                      real(entry.amount));
       case K::volume:
         break;
     }
-    return shared("IFCQUANTITYVOLUME({},$,$,{},$)", text(entry.name), real(entry.amount));
+    return shared(FMT_COMPILE("IFCQUANTITYVOLUME({},$,$,{},$)"), text(entry.name),
+                  real(entry.amount));
   }
 
   void properties(const Element& e, size_t index, int64_t id) {
@@ -479,9 +495,10 @@ class IfcModel {
                                label("StockSize", stock_size_of(l_, e))};
     if (e.form == ElementForm::block)
       props.push_back(integer("Level", e.cell_z - l_.view.origin[2]));
-    const int64_t set =
-        w_.add("IFCPROPERTYSET({},'Curdle_Element',$,{})", root("pset ", e.id), step_refs(props));
-    w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("pset-rel ", e.id), ref(id), ref(set));
+    const int64_t set = w_.add(FMT_COMPILE("IFCPROPERTYSET({},'Curdle_Element',$,{})"),
+                               root("pset ", e.id), step_refs(props));
+    w_.add(FMT_COMPILE("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})"), root("pset-rel ", e.id),
+           ref(id), ref(set));
   }
 
   // curdle's own quantities: the piece's extent, thickness and area as the schedule gives them.
@@ -489,14 +506,17 @@ class IfcModel {
     const Rect b = laid_bounds(e);
     const bool standing = e.circle || e.stands;  // a tree, a bench: how tall, not how thick
     std::vector<int64_t> q{
-        shared("IFCQUANTITYLENGTH('Length',$,$,{},$)", real(b.w)),
-        shared("IFCQUANTITYLENGTH('Width',$,$,{},$)", real(b.h)),
-        standing ? shared("IFCQUANTITYLENGTH('Height',$,$,{},$)", real(body_height(l_, e)))
-                 : shared("IFCQUANTITYLENGTH('Thickness',$,$,{},$)", real(body_height(l_, e))),
-        shared("IFCQUANTITYAREA('NetArea',$,$,{},$)", real(e.area() / 1e6))};
-    const int64_t set = w_.add("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})",
+        shared(FMT_COMPILE("IFCQUANTITYLENGTH('Length',$,$,{},$)"), real(b.w)),
+        shared(FMT_COMPILE("IFCQUANTITYLENGTH('Width',$,$,{},$)"), real(b.h)),
+        standing
+            ? shared(FMT_COMPILE("IFCQUANTITYLENGTH('Height',$,$,{},$)"), real(body_height(l_, e)))
+            : shared(FMT_COMPILE("IFCQUANTITYLENGTH('Thickness',$,$,{},$)"),
+                     real(body_height(l_, e))),
+        shared(FMT_COMPILE("IFCQUANTITYAREA('NetArea',$,$,{},$)"), real(e.area() / 1e6))};
+    const int64_t set = w_.add(FMT_COMPILE("IFCELEMENTQUANTITY({},'Curdle_Quantities',$,$,{})"),
                                root("qto ", e.id), step_refs(q));
-    w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root("qto-rel ", e.id), ref(id), ref(set));
+    w_.add(FMT_COMPILE("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})"), root("qto-rel ", e.id),
+           ref(id), ref(set));
   }
 
   // What the storey whose floor is at or below `base` (mm above the building's base) contains:
@@ -510,16 +530,16 @@ class IfcModel {
   // What groups elements: containment in each storey, materials and covering types.
   void closing_relations() {
     if (!contained_.empty())
-      w_.add("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})", root("contained"),
+      w_.add(FMT_COMPILE("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})"), root("contained"),
              step_refs(contained_), ref(container_));
     for (size_t k = 1; k < upper_.size(); ++k)
       if (!upper_[k].empty())
-        w_.add("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})",
+        w_.add(FMT_COMPILE("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})"),
                root("contained " + std::to_string(k)), step_refs(upper_[k]), ref(storeys_[k]));
     for (const auto& [name, ids] : materials_) {
-      const int64_t m = w_.add("IFCMATERIAL({},$,$)", text(name));
-      w_.add("IFCRELASSOCIATESMATERIAL({},$,$,{},{})", root("material " + name), step_refs(ids),
-             ref(m));
+      const int64_t m = w_.add(FMT_COMPILE("IFCMATERIAL({},$,$)"), text(name));
+      w_.add(FMT_COMPILE("IFCRELASSOCIATESMATERIAL({},$,$,{},{})"), root("material " + name),
+             step_refs(ids), ref(m));
     }
     const char* predefined = l_.kind->upright() ? ".CLADDING." : ".FLOORING.";
     for (const auto& [key, covering] : types_) {
@@ -528,14 +548,14 @@ class IfcModel {
       if (covering.stock[0] > 0) {
         const std::vector<int64_t> tiling{length("TileLength", covering.stock[0]),
                                           length("TileWidth", covering.stock[1])};
-        sets.push_back(w_.add("IFCPROPERTYSET({},'Curdle_Tiling',$,{})",
+        sets.push_back(w_.add(FMT_COMPILE("IFCPROPERTYSET({},'Curdle_Tiling',$,{})"),
                               root("tiling " + material + size), step_refs(tiling)));
       }
       const std::string name = material + ", " + size;
-      const int64_t type =
-          w_.add("IFCCOVERINGTYPE({},{},$,$,{},$,$,{},{})", root("type " + name), text(name),
-                 sets.empty() ? "$" : step_refs(sets), text(l_.element_type), predefined);
-      w_.add("IFCRELDEFINESBYTYPE({},$,$,{},{})", root("type-rel " + name),
+      const int64_t type = w_.add(
+          FMT_COMPILE("IFCCOVERINGTYPE({},{},$,$,{},$,$,{},{})"), root("type " + name), text(name),
+          sets.empty() ? "$" : step_refs(sets), text(l_.element_type), predefined);
+      w_.add(FMT_COMPILE("IFCRELDEFINESBYTYPE({},$,$,{},{})"), root("type-rel " + name),
              step_refs(covering.elements), ref(type));
     }
   }

@@ -1,5 +1,6 @@
 #include "export/ifc/ifc_envelope.h"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <array>
@@ -71,7 +72,7 @@ IfcEnvelopeWriter::Placed IfcEnvelopeWriter::unit(const Element& e, int64_t cont
   const Axes own = face_axes(boxes.front());
   const int64_t frame = g_.axes(own.origin, tidy(own.z), tidy(own.x));
   Placed p;
-  p.placement = w_.add("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame));
+  p.placement = w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"), ref(container), ref(frame));
   std::vector<int64_t> solids;
   if (const auto corner = framed_corner(l_, e, t)) {  // one prism, cut to the corner's angle
     const Vec up = own.local({0, 0, 1}, false), east = own.local({1, 0, 0}, false);
@@ -101,7 +102,7 @@ IfcEnvelopeWriter::Placed IfcEnvelopeWriter::backing(const SurfaceFrame& f, int6
   if (boxes.empty()) return p;
   const Axes own = face_axes(boxes.front());
   const int64_t frame = g_.axes(own.origin, tidy(own.z), tidy(own.x));
-  p.placement = w_.add("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame));
+  p.placement = w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"), ref(container), ref(frame));
   std::vector<int64_t> solids;
   for (const FramedBox& b : boxes) {
     const Axes face = face_axes(b);
@@ -159,7 +160,7 @@ int64_t IfcEnvelopeWriter::placement_on(const SurfaceFrame& f, double u, double 
     d = {(e[0] - o[0]) / n, (e[1] - o[1]) / n};
   }
   const int64_t frame = g_.axes({o[0], o[1], o[2]}, tidy({d[1], -d[0], 0}), tidy({d[0], d[1], 0}));
-  return w_.add("IFCLOCALPLACEMENT({},{})", ref(container), ref(frame));
+  return w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"), ref(container), ref(frame));
 }
 
 std::vector<std::pair<int64_t, double>> IfcEnvelopeWriter::walls(
@@ -172,25 +173,25 @@ std::vector<std::pair<int64_t, double>> IfcEnvelopeWriter::walls(
     const std::string name = "Wall " + f.name;
     // A one-brick wall's body is its backing leaf; a leaf's shape is its units' (nested in it).
     const Placed body = l_.backing() ? backing(f, container) : Placed{};
-    const int64_t wall =
-        w_.add("IFCWALL({},{},{},$,{},{},{},.SOLIDWALL.)", root_("wall " + f.name), text(name),
-               text(fmt::format("{:g} mm along the envelope from {:g} mm", f.length, f.start)),
-               ref(body.placement ? body.placement : placement_on(f, f.start, 0, container)),
-               body.shape ? fmt::format("#{}", body.shape) : std::string("$"), text(f.name));
+    const int64_t wall = w_.add(
+        FMT_COMPILE("IFCWALL({},{},{},$,{},{},{},.SOLIDWALL.)"), root_("wall " + f.name),
+        text(name), text(fmt::format("{:g} mm along the envelope from {:g} mm", f.length, f.start)),
+        ref(body.placement ? body.placement : placement_on(f, f.start, 0, container)),
+        body.shape ? fmt::format("#{}", body.shape) : std::string("$"), text(f.name));
     wall_ids.push_back(wall);
     // Its common set, as BIM tools sort walls by it: the façade's name, and outside.
-    const int64_t reference =
-        w_.add("IFCPROPERTYSINGLEVALUE('Reference',$,IFCIDENTIFIER({}),$)", text(f.name));
+    const int64_t reference = w_.add(
+        FMT_COMPILE("IFCPROPERTYSINGLEVALUE('Reference',$,IFCIDENTIFIER({}),$)"), text(f.name));
     const int64_t external = w_.add("IFCPROPERTYSINGLEVALUE('IsExternal',$,IFCBOOLEAN(.T.),$)");
-    const int64_t common = w_.add("IFCPROPERTYSET({},'Pset_WallCommon',$,({},{}))",
+    const int64_t common = w_.add(FMT_COMPILE("IFCPROPERTYSET({},'Pset_WallCommon',$,({},{}))"),
                                   root_("wall-common " + f.name), ref(reference), ref(external));
-    w_.add("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})", root_("wall-common-rel " + f.name),
-           ref(wall), ref(common));
+    w_.add(FMT_COMPILE("IFCRELDEFINESBYPROPERTIES({},$,$,({}),{})"),
+           root_("wall-common-rel " + f.name), ref(wall), ref(common));
     // Its units nested in it, and so in the storeys through it (a part is not contained as
     // well): IfcRelAggregates would say the same, but web-ifc then subtracts the wall's openings
     // from every unit (already cut to them), taking 6 s to open the pavilion instead of 3.
     if (!parts[k].empty())
-      w_.add("IFCRELNESTS({},$,$,{},{})", root_("wall-parts " + f.name), ref(wall),
+      w_.add(FMT_COMPILE("IFCRELNESTS({},$,$,{},{})"), root_("wall-parts " + f.name), ref(wall),
              step_refs(parts[k]));
   }
   for (const int64_t wall : wall_ids) contained.push_back({wall, 0.0});
@@ -213,9 +214,11 @@ std::vector<std::pair<int64_t, double>> IfcEnvelopeWriter::walls(
                                         g_.axes({0, 0, -t - 10 - sag}, {0, 0, 1}, {1, 0, 0}),
                                         t + 20 + sag, Rgb{255, 255, 255});
     const int64_t opening = w_.add(
-        "IFCOPENINGELEMENT({},{},$,'opening',{},{},{},.OPENING.)", root_("opening " + id), text(id),
-        ref(placement_on(*f, o.x, o.y, container, o.right())), ref(g_.body({cut})), text(id));
-    w_.add("IFCRELVOIDSELEMENT({},$,$,{},{})", root_("void " + id), ref(wall_ids[k]), ref(opening));
+        FMT_COMPILE("IFCOPENINGELEMENT({},{},$,'opening',{},{},{},.OPENING.)"),
+        root_("opening " + id), text(id), ref(placement_on(*f, o.x, o.y, container, o.right())),
+        ref(g_.body({cut})), text(id));
+    w_.add(FMT_COMPILE("IFCRELVOIDSELEMENT({},$,$,{},{})"), root_("void " + id), ref(wall_ids[k]),
+           ref(opening));
     // The window's glass or the door's leaf, 40 mm thick in the middle of the reveal.
     const int64_t panel = g_.solid_placed(g_.rectangle(Rect{0, 0, chord, o.h}),
                                           g_.axes({0, 0, -t / 2 - 20}, {0, 0, 1}, {1, 0, 0}), 40,
@@ -230,7 +233,8 @@ std::vector<std::pair<int64_t, double>> IfcEnvelopeWriter::walls(
                            ref(placement_on(*f, o.x, o.y, container, o.right())),
                            ref(g_.body({panel})), text(id), real(o.h), real(o.w));
     const int64_t filler = w_.add(entity);
-    w_.add("IFCRELFILLSELEMENT({},$,$,{},{})", root_("fill " + id), ref(opening), ref(filler));
+    w_.add(FMT_COMPILE("IFCRELFILLSELEMENT({},$,$,{},{})"), root_("fill " + id), ref(opening),
+           ref(filler));
     contained.push_back({filler, o.y});
   }
   return contained;

@@ -1,5 +1,6 @@
 #include "export/ifc/ifc_geometry.h"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -43,17 +44,18 @@ IfcGeometryWriter::IfcGeometryWriter(StepWriter& w, double chord_tolerance)
     : w_(w), chord_tolerance_(chord_tolerance) {
   const int64_t origin = point(0, 0, 0);
   z_ = direction(0, 0, 1);
-  world_ = w_.add("IFCAXIS2PLACEMENT3D({},$,$)", ref(origin));
+  world_ = w_.add(FMT_COMPILE("IFCAXIS2PLACEMENT3D({},$,$)"), ref(origin));
 }
 
 int64_t IfcGeometryWriter::point(double x, double y) {
-  return w_.add("IFCCARTESIANPOINT(({},{}))", real(x - local_[0]), real(y - local_[1]));
+  return w_.add(FMT_COMPILE("IFCCARTESIANPOINT(({},{}))"), real(x - local_[0]),
+                real(y - local_[1]));
 }
 int64_t IfcGeometryWriter::point(double x, double y, double z) {
-  return w_.add("IFCCARTESIANPOINT(({},{},{}))", real(x), real(y), real(z));
+  return w_.add(FMT_COMPILE("IFCCARTESIANPOINT(({},{},{}))"), real(x), real(y), real(z));
 }
 int64_t IfcGeometryWriter::direction(double x, double y, double z) {
-  return w_.add("IFCDIRECTION(({},{},{}))", real(x), real(y), real(z));
+  return w_.add(FMT_COMPILE("IFCDIRECTION(({},{},{}))"), real(x), real(y), real(z));
 }
 
 int64_t IfcGeometryWriter::polyline(const Ring& ring) {
@@ -83,7 +85,7 @@ int64_t IfcGeometryWriter::point_list_curve(const Ring& ring) {
   points.reserve(ring.size() + 1);
   for (const auto& [x, y] : ring) points.push_back({x - local_[0], y - local_[1]});
   points.push_back(points.front());
-  return w_.add("IFCINDEXEDPOLYCURVE({},$,.F.)", ref(point_list(points)));
+  return w_.add(FMT_COMPILE("IFCINDEXEDPOLYCURVE({},$,.F.)"), ref(point_list(points)));
 }
 
 int64_t IfcGeometryWriter::contour_curve(const Contour& c) {
@@ -110,7 +112,7 @@ int64_t IfcGeometryWriter::contour_curve(const Contour& c) {
     const size_t end = to ? to : index_of(next.x, next.y);
     segments += fmt::format("IFCARCINDEX(({},{},{}))", from, middle, end);
   }
-  return w_.add("IFCINDEXEDPOLYCURVE({},({}),.F.)", ref(point_list(points)), segments);
+  return w_.add(FMT_COMPILE("IFCINDEXEDPOLYCURVE({},({}),.F.)"), ref(point_list(points)), segments);
 }
 
 int64_t IfcGeometryWriter::shared_polyline(const Ring& ring) {
@@ -123,12 +125,14 @@ int64_t IfcGeometryWriter::shared_polyline(const Ring& ring) {
 }
 
 int64_t IfcGeometryWriter::rectangle(const Rect& r) {
-  const int64_t at = w_.add("IFCAXIS2PLACEMENT2D({},$)", ref(point(r.x + r.w / 2, r.y + r.h / 2)));
-  return w_.add("IFCRECTANGLEPROFILEDEF(.AREA.,$,{},{},{})", ref(at), real(r.w), real(r.h));
+  const int64_t at =
+      w_.add(FMT_COMPILE("IFCAXIS2PLACEMENT2D({},$)"), ref(point(r.x + r.w / 2, r.y + r.h / 2)));
+  return w_.add(FMT_COMPILE("IFCRECTANGLEPROFILEDEF(.AREA.,$,{},{},{})"), ref(at), real(r.w),
+                real(r.h));
 }
 
 int64_t IfcGeometryWriter::circle(const Circle& c) {
-  return w_.add("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})",
+  return w_.add(FMT_COMPILE("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})"),
                 ref(polyline(ifc_circle_ring(c, chord_tolerance_))));
 }
 
@@ -141,29 +145,31 @@ int64_t IfcGeometryWriter::profile(const std::vector<Outline>& parts) {
   if (parts.size() == 1) return part_profile(parts.front());
   std::vector<int64_t> profiles;
   for (const Outline& part : parts) profiles.push_back(part_profile(part));
-  return w_.add("IFCCOMPOSITEPROFILEDEF(.AREA.,$,{},$)", step_refs(profiles));
+  return w_.add(FMT_COMPILE("IFCCOMPOSITEPROFILEDEF(.AREA.,$,{},$)"), step_refs(profiles));
 }
 
 int64_t IfcGeometryWriter::profile_with_holes(const Ring& outer, const std::vector<Ring>& holes) {
   const int64_t boundary = polyline(outer);
-  if (holes.empty()) return w_.add("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})", ref(boundary));
+  if (holes.empty())
+    return w_.add(FMT_COMPILE("IFCARBITRARYCLOSEDPROFILEDEF(.AREA.,$,{})"), ref(boundary));
   std::vector<int64_t> inner;
   for (const Ring& hole : holes) inner.push_back(point_list_curve(clockwise(hole)));
-  return w_.add("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,{},{})", ref(boundary), step_refs(inner));
+  return w_.add(FMT_COMPILE("IFCARBITRARYPROFILEDEFWITHVOIDS(.AREA.,$,{},{})"), ref(boundary),
+                step_refs(inner));
 }
 
 int64_t IfcGeometryWriter::solid(int64_t profile, double base, double depth, const Rgb& colour) {
-  const int64_t s = w_.add("IFCEXTRUDEDAREASOLID({},{},{},{})", ref(profile),
+  const int64_t s = w_.add(FMT_COMPILE("IFCEXTRUDEDAREASOLID({},{},{},{})"), ref(profile),
                            ref(base_placement(base)), ref(z_), real(depth));
-  w_.add("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour)));
+  w_.add(FMT_COMPILE("IFCSTYLEDITEM({},({}),$)"), ref(s), ref(style(colour)));
   return s;
 }
 
 int64_t IfcGeometryWriter::solid_placed(int64_t profile, int64_t position, double depth,
                                         const Rgb& colour) {
-  const int64_t s = w_.add("IFCEXTRUDEDAREASOLID({},{},{},{})", ref(profile), ref(position),
-                           ref(z_), real(depth));
-  w_.add("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour)));
+  const int64_t s = w_.add(FMT_COMPILE("IFCEXTRUDEDAREASOLID({},{},{},{})"), ref(profile),
+                           ref(position), ref(z_), real(depth));
+  w_.add(FMT_COMPILE("IFCSTYLEDITEM({},({}),$)"), ref(s), ref(style(colour)));
   return s;
 }
 
@@ -174,14 +180,14 @@ int64_t IfcGeometryWriter::axes(const std::array<double, 3>& o, const std::array
     return it != directions_.end() ? it->second : directions_[d] = direction(d[0], d[1], d[2]);
   };
   const int64_t axis = once(z), ref_direction = once(x);
-  return w_.add("IFCAXIS2PLACEMENT3D({},{},{})", ref(point(o[0], o[1], o[2])), ref(axis),
-                ref(ref_direction));
+  return w_.add(FMT_COMPILE("IFCAXIS2PLACEMENT3D({},{},{})"), ref(point(o[0], o[1], o[2])),
+                ref(axis), ref(ref_direction));
 }
 
 int64_t IfcGeometryWriter::body(const std::vector<int64_t>& items) {
-  const int64_t rep =
-      w_.add("IFCSHAPEREPRESENTATION({},'Body','SweptSolid',{})", ref(body_), step_refs(items));
-  return w_.add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
+  const int64_t rep = w_.add(FMT_COMPILE("IFCSHAPEREPRESENTATION({},'Body','SweptSolid',{})"),
+                             ref(body_), step_refs(items));
+  return w_.add(FMT_COMPILE("IFCPRODUCTDEFINITIONSHAPE($,$,({}))"), ref(rep));
 }
 
 int64_t IfcGeometryWriter::triangles(const std::vector<std::array<double, 3>>& points,
@@ -210,18 +216,19 @@ int64_t IfcGeometryWriter::triangles(const std::vector<std::array<double, 3>>& p
     if (a == b || b == c || a == c) continue;  // a sliver closed up by the rounding
     faces += fmt::format("{}({},{},{})", faces.empty() ? "" : ",", a, b, c);
   }
-  const int64_t list = w_.add("IFCCARTESIANPOINTLIST3D(({}))", coords);
+  const int64_t list = w_.add(FMT_COMPILE("IFCCARTESIANPOINTLIST3D(({}))"), coords);
   // Not closed of itself: a screen's sheet is open where its tiles fill it, and they where it
   // holds them.
-  const int64_t s = w_.add("IFCTRIANGULATEDFACESET({},$,.F.,({}),$)", ref(list), faces);
-  w_.add("IFCSTYLEDITEM({},({}),$)", ref(s), ref(style(colour)));
+  const int64_t s =
+      w_.add(FMT_COMPILE("IFCTRIANGULATEDFACESET({},$,.F.,({}),$)"), ref(list), faces);
+  w_.add(FMT_COMPILE("IFCSTYLEDITEM({},({}),$)"), ref(s), ref(style(colour)));
   return s;
 }
 
 int64_t IfcGeometryWriter::representation_map(int64_t item) {
-  const int64_t rep =
-      w_.add("IFCSHAPEREPRESENTATION({},'Body','Tessellation',({}))", ref(body_), ref(item));
-  return w_.add("IFCREPRESENTATIONMAP({},{})", ref(world_), ref(rep));
+  const int64_t rep = w_.add(FMT_COMPILE("IFCSHAPEREPRESENTATION({},'Body','Tessellation',({}))"),
+                             ref(body_), ref(item));
+  return w_.add(FMT_COMPILE("IFCREPRESENTATIONMAP({},{})"), ref(world_), ref(rep));
 }
 
 int64_t IfcGeometryWriter::mapped(int64_t map, const std::array<double, 3>& origin,
@@ -231,34 +238,35 @@ int64_t IfcGeometryWriter::mapped(int64_t map, const std::array<double, 3>& orig
     return it != directions_.end() ? it->second : directions_[d] = direction(d[0], d[1], d[2]);
   };
   const int64_t op =
-      w_.add("IFCCARTESIANTRANSFORMATIONOPERATOR3D({},{},{},1.,{})", ref(once({x[0], x[1], 0})),
-             ref(once({0, 0, 1})), ref(point(origin[0], origin[1], origin[2])),
-             ref(once({x[1], -x[0], 0})));
-  return w_.add("IFCMAPPEDITEM({},{})", ref(map), ref(op));
+      w_.add(FMT_COMPILE("IFCCARTESIANTRANSFORMATIONOPERATOR3D({},{},{},1.,{})"),
+             ref(once({x[0], x[1], 0})), ref(once({0, 0, 1})),
+             ref(point(origin[0], origin[1], origin[2])), ref(once({x[1], -x[0], 0})));
+  return w_.add(FMT_COMPILE("IFCMAPPEDITEM({},{})"), ref(map), ref(op));
 }
 
 int64_t IfcGeometryWriter::mapped_body(const std::vector<int64_t>& items) {
-  const int64_t rep = w_.add("IFCSHAPEREPRESENTATION({},'Body','MappedRepresentation',{})",
-                             ref(body_), step_refs(items));
-  return w_.add("IFCPRODUCTDEFINITIONSHAPE($,$,({}))", ref(rep));
+  const int64_t rep =
+      w_.add(FMT_COMPILE("IFCSHAPEREPRESENTATION({},'Body','MappedRepresentation',{})"), ref(body_),
+             step_refs(items));
+  return w_.add(FMT_COMPILE("IFCPRODUCTDEFINITIONSHAPE($,$,({}))"), ref(rep));
 }
 
 int64_t IfcGeometryWriter::base_placement(double base) {
   if (base == 0) return world_;
   auto it = bases_.find(base);
   if (it != bases_.end()) return it->second;
-  return bases_[base] = w_.add("IFCAXIS2PLACEMENT3D({},$,$)", ref(point(0, 0, base)));
+  return bases_[base] = w_.add(FMT_COMPILE("IFCAXIS2PLACEMENT3D({},$,$)"), ref(point(0, 0, base)));
 }
 
 int64_t IfcGeometryWriter::style(const Rgb& c) {
   const uint32_t key = uint32_t{c.r} << 16 | uint32_t{c.g} << 8 | c.b;
   auto it = styles_.find(key);
   if (it != styles_.end()) return it->second;
-  const int64_t colour =
-      w_.add("IFCCOLOURRGB($,{},{},{})", real(c.r / 255.0), real(c.g / 255.0), real(c.b / 255.0));
-  const int64_t shading = w_.add("IFCSURFACESTYLESHADING({},0.)", ref(colour));
-  return styles_[key] =
-             w_.add("IFCSURFACESTYLE({},.BOTH.,({}))", step_string(hex_colour(c)), ref(shading));
+  const int64_t colour = w_.add(FMT_COMPILE("IFCCOLOURRGB($,{},{},{})"), real(c.r / 255.0),
+                                real(c.g / 255.0), real(c.b / 255.0));
+  const int64_t shading = w_.add(FMT_COMPILE("IFCSURFACESTYLESHADING({},0.)"), ref(colour));
+  return styles_[key] = w_.add(FMT_COMPILE("IFCSURFACESTYLE({},.BOTH.,({}))"),
+                               step_string(hex_colour(c)), ref(shading));
 }
 
 }  // namespace curdle

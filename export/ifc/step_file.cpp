@@ -85,8 +85,14 @@ char* write_step_real(char* first, double v) {
 
 std::string step_refs(const std::vector<int64_t>& ids) {
   std::string s = "(";
-  for (size_t i = 0; i < ids.size(); ++i) s += (i ? ",#" : "#") + std::to_string(ids[i]);
-  return s + ")";
+  s.reserve(2 + ids.size() * 9);
+  std::array<char, 24> digits;
+  for (size_t i = 0; i < ids.size(); ++i) {
+    s += i ? ",#" : "#";
+    s.append(digits.data(), std::to_chars(digits.data(), digits.data() + 24, ids[i]).ptr);
+  }
+  s += ')';
+  return s;
 }
 
 namespace {
