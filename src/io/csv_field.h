@@ -12,18 +12,28 @@ inline constexpr const char* kUtf8Mark = "\xEF\xBB\xBF";
 
 // A text field. One that begins with =, +, -, @, a tab or a carriage return is a formula to
 // Excel and LibreOffice: it gets a leading ' (OWASP's rule for CSV injection), shown as text.
-inline std::string csv_field(const std::string& text) {
+// Appended to `out` in place (a schedule writes one for every piece's outline).
+inline void append_csv_field(std::string& out, std::string_view text) {
   const bool formula =
       !text.empty() && std::string_view("=+-@\t\r").find(text[0]) != std::string::npos;
-  const std::string s = formula ? "'" + text : text;
-  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) {
-    if (c == '"') q += '"';
-    q += c;
+  const bool quoted = text.find_first_of(",\"\r\n") != std::string_view::npos;
+  if (quoted) out += '"';
+  if (formula) out += '\'';
+  if (!quoted) {
+    out += text;
+    return;
   }
-  q += '"';
-  return q;
+  for (const char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  out += '"';
+}
+
+inline std::string csv_field(const std::string& text) {
+  std::string out;
+  append_csv_field(out, text);
+  return out;
 }
 
 }  // namespace curdle
