@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "curdle/check.h"
+#include "curdle/fixed_text.h"
 
 namespace curdle {
 
@@ -49,13 +50,12 @@ void BufferedDxfWriter::group(int gc) const {
 
 void BufferedDxfWriter::dxfReal(int gc, double value) const {
   // Fixed with 16 decimals in the C locale (to_chars never writes a decimal comma, and is
-  // exact without fmt's slow path for long precisions), then the zeros after the last
+  // exact without fmt's slow path for long precisions; to_chars_fixed is its fast path for
+  // what a drawing holds), then the zeros after the last
   // significant decimal cut, keeping at least one: 12.5000 -> 12.5, 3.0 -> 3.0.
   std::array<char, 400> buffer{};  // DBL_MAX has 309 digits before the point
   const char* first = buffer.data();
-  const char* end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                  std::chars_format::fixed, 16)
-                        .ptr;
+  const char* end = to_chars_fixed(buffer.data(), buffer.data() + buffer.size(), value, 16).ptr;
   const char* dot = std::find(first, end, '.');
   if (dot != end) {
     const char* last = dot + 2;  // one decimal at least

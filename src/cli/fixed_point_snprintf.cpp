@@ -8,6 +8,8 @@
 #include <cstdarg>
 #include <cstring>
 
+#include "curdle/fixed_text.h"
+
 extern "C" {
 int __vsnprintf_chk(char* text, size_t size, int flag, size_t room, const char* format,
                     va_list args) noexcept;
@@ -20,8 +22,8 @@ int fixed_point_text(char* text, size_t size, double value, int precision) {
   const char* point = nl_langinfo(RADIXCHAR);  // localeconv's, without copying its whole table
   if (point[0] != '.' || point[1] != '\0') return -1;
   std::array<char, 400> digits;  // DBL_MAX has 309 digits before the point
-  const auto [end, error] = std::to_chars(digits.data(), digits.data() + digits.size(), value,
-                                          std::chars_format::fixed, precision);
+  const auto [end, error] =
+      to_chars_fixed(digits.data(), digits.data() + digits.size(), value, precision);
   if (error != std::errc()) return -1;
   const auto length = static_cast<size_t>(end - digits.data());
   if (size > 0) {

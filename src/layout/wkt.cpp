@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "curdle/fixed_text.h"
+
 namespace curdle {
 
 std::string mm_text(double v) {
@@ -16,9 +18,8 @@ void append_mm_text(std::string& out, double v) {
   const double rounded = std::round(v * 1000) / 1000;
   std::array<char, 400> buffer{};  // to_chars: exact, and without fmt's slow path
   const char* first = buffer.data();
-  const char* end = std::to_chars(buffer.data(), buffer.data() + buffer.size(),
-                                  rounded == 0 ? 0.0 : rounded,  // no "-0"
-                                  std::chars_format::fixed, 3)
+  const char* end = to_chars_fixed(buffer.data(), buffer.data() + buffer.size(),
+                                   rounded == 0 ? 0.0 : rounded, 3)  // no "-0"
                         .ptr;
   while (end[-1] == '0') --end;
   if (end[-1] == '.') --end;
