@@ -49,10 +49,10 @@ void BufferedDxfWriter::group(int gc) const {
 }
 
 void BufferedDxfWriter::dxfReal(int gc, double value) const {
-  // Fixed with 16 decimals in the C locale (to_chars never writes a decimal comma, and is
-  // exact without fmt's slow path for long precisions; to_chars_fixed is its fast path for
-  // what a drawing holds), then the zeros after the last
-  // significant decimal cut, keeping at least one: 12.5000 -> 12.5, 3.0 -> 3.0.
+  // Fixed with 16 decimals in the C locale (to_chars never writes a decimal comma, and is exact
+  // without fmt's slow path for long precisions; to_chars_fixed is its fast path for what a
+  // drawing holds), then the zeros after the last significant decimal cut, keeping at least
+  // one: 12.5000 -> 12.5, 3.0 -> 3.0.
   std::array<char, 400> buffer{};  // DBL_MAX has 309 digits before the point
   const char* first = buffer.data();
   const char* end = to_chars_fixed(buffer.data(), buffer.data() + buffer.size(), value, 16).ptr;
