@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,12 +26,16 @@ struct OutputContext {
   const Report& report;
   const Layout* layout;   // null without a [layout]; it holds the spec it was built from
   RunObserver* observer;  // may be null
-  // The installer's sheets, planned once for install.svg, layout.pdf and layout.png.
+  // The installer's sheets, planned once for install.svg, layout.pdf and layout.png, which run
+  // side by side: the first to ask plans them, the others wait for that plan. (Unguarded, two
+  // writers planned at once and wrote the same optional: the stacked blocks, whose labels take
+  // a third of a second to place, planned them three times.)
   const InstallerPlan& installer_plan() const {
-    if (!plan_) plan_ = plan_installer_sheets(*layout);
+    std::call_once(plan_once_, [this] { plan_ = plan_installer_sheets(*layout); });
     return *plan_;
   }
   mutable std::optional<InstallerPlan> plan_{};
+  mutable std::once_flag plan_once_{};
 };
 
 struct Output {
