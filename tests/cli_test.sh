@@ -368,7 +368,7 @@ grep -q "curdle: stopped" "$work/serve.out" && pass || fail "serve did not say i
 # The programs' own printf paths: GDAL brings libquadmath, whose printf hooks would send every
 # printf in the process down glibc's slow path (src/cli/printf_hooks.cpp), so its three
 # registrations must reach curdle's refusals, not glibc, when layout.gpkg loads GDAL; and cairo's
-# snprintf must reach curdle's fast path for "%f" (src/cli/fixed_point_snprintf.h) when
+# snprintf must reach curdle's fast path for "%f" (src/cli/fixed_point_snprintf.cpp) when
 # layout.pdf is drawn. curdle-serve, which loads both, exports the same.
 section_printf() {
   LD_DEBUG=bindings LD_DEBUG_OUTPUT="$work/bindings" \

@@ -1,40 +1,20 @@
-#include "cli/fixed_point_snprintf.h"
-
-#include <langinfo.h>
-
-#include <array>
-#include <charconv>
-#include <cmath>
+// A fast path for the one printf that layout.pdf leans on. cairo writes every coordinate of a
+// PDF with snprintf("%f"), "%.18f" or "%.*f" (its _cairo_dtostr), built fortified, so through
+// __snprintf_chk; glibc prints a double with arbitrary-precision arithmetic, and that was a
+// tenth of the pavilion's whole run. Defined here and exported from the programs
+// (CMakeLists.txt), __snprintf_chk comes before glibc's for every library: those three formats
+// are written by app::fixed_point_text, the same text to the byte; every other call, and any
+// it leaves to glibc, goes on to glibc.
 #include <cstdarg>
+#include <cstddef>
 #include <cstring>
 
-#include "curdle/fixed_text.h"
+#include "app/fixed_point_text.h"
 
 extern "C" {
 int __vsnprintf_chk(char* text, size_t size, int flag, size_t room, const char* format,
                     va_list args) noexcept;
 }
-
-namespace curdle::cli {
-
-int fixed_point_text(char* text, size_t size, double value, int precision) {
-  if (!std::isfinite(value) || precision < 0 || precision > 40) return -1;
-  const char* point = nl_langinfo(RADIXCHAR);  // localeconv's, without copying its whole table
-  if (point[0] != '.' || point[1] != '\0') return -1;
-  std::array<char, 400> digits;  // DBL_MAX has 309 digits before the point
-  const auto [end, error] =
-      to_chars_fixed(digits.data(), digits.data() + digits.size(), value, precision);
-  if (error != std::errc()) return -1;
-  const auto length = static_cast<size_t>(end - digits.data());
-  if (size > 0) {
-    const size_t kept = length < size ? length : size - 1;
-    std::memcpy(text, digits.data(), kept);
-    text[kept] = '\0';
-  }
-  return static_cast<int>(length);
-}
-
-}  // namespace curdle::cli
 
 namespace {
 
@@ -60,7 +40,7 @@ extern "C" __attribute__((visibility("default"))) int __snprintf_chk(char* text,
     va_copy(fast, args);
     const int precision = fixed_point_precision(format, fast);
     if (precision >= 0)
-      written = curdle::cli::fixed_point_text(text, size, va_arg(fast, double), precision);
+      written = curdle::app::fixed_point_text(text, size, va_arg(fast, double), precision);
     va_end(fast);
   }
   if (written < 0) written = __vsnprintf_chk(text, size, flag, room, format, args);

@@ -1,7 +1,7 @@
 // The programs' fast path for cairo's "%f" gives glibc's text to the byte: rounding to nearest
 // with ties to even, signs, zeros, cut buffers and the length returned; everything else is
 // glibc's own.
-#include "cli/fixed_point_snprintf.h"
+#include "app/fixed_point_text.h"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@
 extern "C" int __snprintf_chk(char* text, size_t size, int flag, size_t room, const char* format,
                               ...) noexcept;
 
-namespace curdle::cli {
+namespace curdle::app {
 namespace {
 
 std::string glibc_text(double v, int precision, int* length) {
@@ -127,4 +127,4 @@ TEST(FixedPointSnprintf, TheEntryPointWritesCairosFormatsAndPassesOnTheRest) {
 }
 
 }  // namespace
-}  // namespace curdle::cli
+}  // namespace curdle::app
