@@ -80,9 +80,13 @@ async function mergedGroup(group, rows, world, buffer, goOn) {
   const normal = group.normals ? new Float32Array(group.vertices * 3) : null;
   const index = new Uint32Array(group.indices);
   const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
+  // Which node each run of triangles came from, for a click to find its element (view3d.js).
+  const node = new Int32Array(group.parts.length / 2), firstTriangle = new Uint32Array(group.parts.length / 2);
   let vo = 0, io = 0;
   for (let p = 0; p < group.parts.length; p += 2) {
     const o = group.parts[p] * 16, r = group.parts[p + 1];
+    node[p / 2] = group.parts[p];
+    firstTriangle[p / 2] = io / 3;
     const [, po, pc, no, ixo, ic, it] = rows.subarray(r, r + 7);
     const from = new Float32Array(buffer, po, pc * 3);
     for (let v = 0; v < pc; ++v) {
@@ -124,7 +128,8 @@ async function mergedGroup(group, rows, world, buffer, goOn) {
   for (let v = 0; v < group.vertices; ++v)
     reach = Math.max(reach, (position[v * 3] - centre[0]) ** 2 + (position[v * 3 + 1] - centre[1]) ** 2 +
                      (position[v * 3 + 2] - centre[2]) ** 2);
-  return { material: group.material, position, normal, index, min, max, centre, radius: Math.sqrt(reach) };
+  return { material: group.material, position, normal, index, min, max, centre, radius: Math.sqrt(reach),
+           node, firstTriangle };
 }
 
 // The merged drawing of `scene` (glb_worker.js's arrays) and the buffers it holds, to transfer;
@@ -144,6 +149,7 @@ export async function mergedDrawing(scene, buffer, stillWanted = () => true) {
     if (!made) return null;
     drawing.push(made);
   }
-  const buffers = drawing.flatMap((g) => [g.position.buffer, g.index.buffer].concat(g.normal ? [g.normal.buffer] : []));
+  const buffers = drawing.flatMap((g) => [g.position.buffer, g.index.buffer, g.node.buffer, g.firstTriangle.buffer]
+    .concat(g.normal ? [g.normal.buffer] : []));
   return { drawing, buffers };
 }

@@ -6,7 +6,8 @@ writes the table into README.md between its markers.
 Rows: the engine alone (in process, curdle_bench), start-up alone (`curdle --help`,
 `curdle --version`), and whole processes as a user runs them (start-up included, best of
 five), each against the peer's whole process where it has one; the page from a change to its
-pixels (headless Chromium, tests/js/page_redraw.mjs); every shipped pattern and brief whole with
+pixels (headless Chromium, tests/js/page_redraw.mjs) and with the pavilion, a change to its
+3-D model drawn and clicks on it answered (tests/js/page_building.mjs); every shipped pattern and brief whole with
 every default output (the slowest of each); the screen's layout.glb. The load of the machine is
 taken before and after, and kept with the results.
 
@@ -222,6 +223,35 @@ def page(build, rows):
                      yardstick=beside)
 
 
+BUILDING_ROUNDS = 10  # changes of each kind on the pavilion's page
+
+
+def building_page(build, rows):
+    """The pavilion on the page (tests/benchmarks/page_building.sh): goals of 1 s, 100 ms and a
+    frame (16 ms) as yardsticks of 0.3 s."""
+    before = yardstick_ms()
+    out = subprocess.run(["bash", str(ROOT / "tests/benchmarks/page_building.sh"), str(build),
+                          str(BUILDING_ROUNDS)], capture_output=True, text=True).stdout
+    beside = (before + yardstick_ms()) / 2
+    lines = [line for line in out.splitlines() if line.startswith("{")]
+    if not lines:
+        print("page_building.sh printed no result:", out, file=sys.stderr)
+        return
+    r = json.loads(lines[0])
+    src = "tests/benchmarks/page_building.sh"
+    rows.add("page.building", f"the page with the pavilion ({r['bricks']:,} elements), a change to its new model "
+             f"drawn in the 3-D view, the page at rest (the 300 ms the page waits for the controls to rest "
+             f"included; median of {BUILDING_ROUNDS}, slowest {r['change_ms_max']:.0f} ms)",
+             r["change_ms_median"], "ms", ("<", 3.3), source=src, yardstick=beside)
+    rows.add("page.building_click", f"the same, a click on the 3-D view answered, wherever it lands: the slowest of "
+             f"{r['clicks']} over the view ({r['click_found']} on elements, {r['click_none']} on none, which the "
+             f"page says; median {r['click_ms_median']:.1f} ms)",
+             r["click_ms_max"], "ms", ("<", 0.33), source=src, yardstick=beside)
+    rows.add("page.building_redraw", f"the same, a change's curd drawn while the 3-D view's reload is half its "
+             f"{r['reload_course_ms']:.0f} ms course in, median ({r['rest_redraw_ms_median']:.1f} ms at rest)",
+             r["redraw_ms_median"], "ms", ("<", 0.05), source=src, yardstick=beside)
+
+
 def compare(rows, previous):
     """Rows more than 20 % worse than the committed results."""
     old = {r["key"]: r for r in previous.get("rows", [])}
@@ -325,6 +355,7 @@ def main():
         result["patterns_ms"], result["patterns_yardstick_ms"] = patterns_whole(build, rows, work)
     if not a.no_page:
         page(build, rows)
+        building_page(build, rows)
     add_first_run(rows)
     result["load_after"] = load()
     result["rows"] = rows.rows

@@ -331,6 +331,19 @@ try {
           said.endsWith(', ' + field('material')),
           `a click on ${target.id} in 3-D shows its ID, value and material as schedule.csv has them: ${said}`);
   }
+  // A click finds its element in the merged drawing the camera shows, as among the elements'
+  // own objects, at every point of a grid; a click on none says so.
+  const picks = await page.evaluate(() => window.view3d.picksAgree(16));
+  check(picks.differ === 0 && picks.hits > 20 && picks.empty,
+        `a click finds the same element in the merged drawing as among the elements (${picks.points} points, ` +
+        `${picks.hits} on elements, ${picks.differ} differ ${JSON.stringify(picks.first)})`);
+  if (picks.empty) {
+    await page.mouse.click(picks.empty.x, picks.empty.y);
+    await page.waitForFunction(() => document.querySelector('#view3d-info').textContent.startsWith('No element there'),
+                               null, { timeout: 10000 });
+    check(await page.evaluate(() => document.querySelector('#view3d-info').dataset.id === ''),
+          'a click on no element says so');
+  }
   await page.locator('#view3d-figure').screenshot({ path: path.join(shots, '2b-segment-3d.png') });
   // Dragged upwards (60 pixels once put the eye under the paving) and far beyond, the eye stays
   // above ground; Reset view brings back the first view.
@@ -664,6 +677,10 @@ try {
     await page.evaluate(() => document.querySelector('#view3d').scrollIntoView({ block: 'center' }));
     const target = await page.evaluate(() => window.view3d.pointOnElement());
     check(target && /^F-R\d+-C\d+$/.test(target.id), `the building stands in the 3-D view, a brick found by its ID (${target && target.id})`);
+    const buildingPicks = await page.evaluate(() => window.view3d.picksAgree(16));
+    check(buildingPicks.differ === 0 && buildingPicks.hits > 10,
+          `a click on the building finds the brick the bricks' own objects find (${buildingPicks.points} points, ` +
+          `${buildingPicks.hits} on bricks, ${buildingPicks.differ} differ ${JSON.stringify(buildingPicks.first)})`);
     const building = await page.evaluate(() => window.view3d.mergedAgrees());
     check(building.differ < 0.02 && building.merged > 0.05,
           `the building's merged meshes draw what its bricks would (${(building.differ * 100).toFixed(2)} % of pixels differ)`);
