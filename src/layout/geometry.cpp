@@ -9,11 +9,6 @@ namespace {
 constexpr double kEps = 1e-6;  // mm: far below any fabrication tolerance
 }
 
-bool overlaps(const Rect& a, const Rect& b) {
-  return a.x < b.right() - kEps && b.x < a.right() - kEps && a.y < b.top() - kEps &&
-         b.y < a.top() - kEps;
-}
-
 Rect clip(const Rect& r, double width, double height) {
   const double x0 = std::max(0.0, r.x), y0 = std::max(0.0, r.y);
   const double x1 = std::min(width, r.right()), y1 = std::min(height, r.top());

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <unordered_map>
 
 #include "curdle/stop.h"
 #include "layout/installer_sheet_grid.h"
@@ -52,15 +51,14 @@ bool segments_meet(Point a, Point b, Point c, Point d) {
          (d3 == 0 && on_segment(a, b, c)) || (d4 == 0 && on_segment(a, b, d));
 }
 
-// A leader runs through a box's inside (touching its edge is not crossing it): the segment
-// clipped to the box, Liang-Barsky, leaves more than a rounding error.
-bool segment_enters(Point a, Point b, const Rect& r) {
-  const double e = 1e-6;
+// The segment a -> b clipped to [left, right] x [low, high], Liang-Barsky, leaves more than a
+// point.
+[[gnu::noinline]] bool clipped_enters(Point a, Point b, double left, double right, double low,
+                                      double high) {
   double t0 = 0, t1 = 1;
   const double dx = b.x - a.x, dy = b.y - a.y;
   const double p[4] = {-dx, dx, -dy, dy};
-  const double q[4] = {a.x - (r.x + e), (r.right() - e) - a.x, a.y - (r.y + e),
-                       (r.top() - e) - a.y};
+  const double q[4] = {a.x - left, right - a.x, a.y - low, high - a.y};
   for (int i = 0; i < 4; ++i) {
     if (p[i] == 0) {
       if (q[i] < 0) return false;
@@ -76,17 +74,39 @@ bool segment_enters(Point a, Point b, const Rect& r) {
   return true;
 }
 
+// A leader runs through a box's inside (touching its edge is not crossing it): the segment
+// clipped to the box shrunk by a rounding error leaves more than a point. One wholly to one
+// side of the shrunk box is not clipped at all (the clipping's quotients round the same way,
+// to nothing): most leaders a label is tried against.
+inline bool segment_enters(Point a, Point b, const Rect& r) {
+  const double e = 1e-6;
+  const double left = r.x + e, right = r.right() - e, low = r.y + e, high = r.top() - e;
+  if (std::max(a.x, b.x) < left || std::min(a.x, b.x) > right || std::max(a.y, b.y) < low ||
+      std::min(a.y, b.y) > high)
+    return false;
+  return clipped_enters(a, b, left, right, low, high);
+}
+
 // How much a label beside its piece may give way when the sheet is crowded: not at all; its
 // leader over labels inside their pieces; or only its box kept off every other label.
 enum class Leeway { none, over_inside, box_only };
 
 // What is already on the sheets: labels inside and beside their pieces, captions, leaders and
-// the dots they start from, each with the piece it belongs to, found by a grid of buckets.
+// the dots they start from, each with the piece it belongs to, found by a grid of buckets over
+// `extent`. A flat grid: a hash map of buckets spent half the labels' time finding its keys.
+// Whatever lies outside the extent shares the border's buckets, where a query there finds it.
 class PlacedLabels {
  public:
   enum class Mark { reserved, inside, beside, dot, leader };
   static constexpr size_t kNobody = static_cast<size_t>(-1);
-  explicit PlacedLabels(double bucket) : bucket_(bucket) {}
+  PlacedLabels(double bucket, const Rect& extent) : x0_(extent.x), y0_(extent.y) {
+    constexpr double kMostBucketsASide = 1024;  // a larger bucket beyond, for the grid's memory
+    bucket_ = std::max({bucket, extent.w / kMostBucketsASide, extent.h / kMostBucketsASide});
+    if (!(bucket_ > 0) || !std::isfinite(bucket_)) bucket_ = 1;
+    nx_ = along(extent.right(), x0_, static_cast<int64_t>(kMostBucketsASide)) + 1;
+    ny_ = along(extent.top(), y0_, static_cast<int64_t>(kMostBucketsASide)) + 1;
+    buckets_.resize(static_cast<size_t>(nx_ * ny_));
+  }
 
   // A box is free when it overlaps no other piece's box and no leader runs through it.
   bool box_free(const Rect& r, size_t owner = kNobody, Leeway leeway = Leeway::none) const {
@@ -109,12 +129,10 @@ class PlacedLabels {
     });
   }
   void add(const Rect& r, Mark mark, size_t owner = kNobody) {
-    const Item item{r, {}, {}, owner, mark};
-    visit(r, [&](int64_t key) { buckets_[key].push_back(item); });
+    store(r, Item{r, {}, {}, owner, mark});
   }
   void add_leader(Point a, Point b, size_t owner) {
-    const Item item{{}, a, b, owner, Mark::leader};
-    visit(spanning(a, b), [&](int64_t key) { buckets_[key].push_back(item); });
+    store(spanning(a, b), Item{{}, a, b, owner, Mark::leader});
   }
 
  private:
@@ -123,31 +141,49 @@ class PlacedLabels {
     Point from, to;
     size_t owner;
     Mark mark;
+    int32_t first_x = 0, first_y = 0;  // the first bucket of those it is kept in
+  };
+  struct Buckets {
+    int64_t lo_x, hi_x, lo_y, hi_y;
   };
   static Rect spanning(Point a, Point b) {
     return {std::min(a.x, b.x), std::min(a.y, b.y), std::fabs(b.x - a.x), std::fabs(b.y - a.y)};
   }
+  // The bucket along one axis holding v, within [0, last].
+  int64_t along(double v, double origin, int64_t last) const {
+    const double k = std::floor((v - origin) / bucket_);
+    if (!(k > 0)) return 0;
+    return k >= static_cast<double>(last) ? last : static_cast<int64_t>(k);
+  }
+  Buckets covering(const Rect& r) const {
+    return {along(r.x, x0_, nx_ - 1), along(r.right(), x0_, nx_ - 1), along(r.y, y0_, ny_ - 1),
+            along(r.top(), y0_, ny_ - 1)};
+  }
+  void store(const Rect& r, Item item) {
+    const Buckets b = covering(r);
+    item.first_x = static_cast<int32_t>(b.lo_x), item.first_y = static_cast<int32_t>(b.lo_y);
+    for (int64_t y = b.lo_y; y <= b.hi_y; ++y)
+      for (int64_t x = b.lo_x; x <= b.hi_x; ++x)
+        buckets_[static_cast<size_t>(y * nx_ + x)].push_back(item);
+  }
+  // Whether any item near r hits; each item is asked once, in the first bucket it shares with
+  // r (a piece's box spans several buckets, and a query several more).
   template <class Hits>
   bool none_near(const Rect& r, Hits&& hits) const {
-    bool hit = false;
-    visit(r, [&](int64_t key) {
-      const auto it = buckets_.find(key);
-      if (hit || it == buckets_.end()) return;
-      hit = std::any_of(it->second.begin(), it->second.end(), hits);
-    });
-    return !hit;
+    const Buckets b = covering(r);
+    for (int64_t y = b.lo_y; y <= b.hi_y; ++y)
+      for (int64_t x = b.lo_x; x <= b.hi_x; ++x)
+        for (const Item& item : buckets_[static_cast<size_t>(y * nx_ + x)]) {
+          if (std::max<int64_t>(item.first_x, b.lo_x) != x ||
+              std::max<int64_t>(item.first_y, b.lo_y) != y)
+            continue;
+          if (hits(item)) return false;
+        }
+    return true;
   }
-  template <class F>
-  void visit(const Rect& r, F&& f) const {
-    const auto lo_x = static_cast<int64_t>(std::floor(r.x / bucket_));
-    const auto hi_x = static_cast<int64_t>(std::floor(r.right() / bucket_));
-    const auto lo_y = static_cast<int64_t>(std::floor(r.y / bucket_));
-    const auto hi_y = static_cast<int64_t>(std::floor(r.top() / bucket_));
-    for (int64_t y = lo_y; y <= hi_y; ++y)
-      for (int64_t x = lo_x; x <= hi_x; ++x) f(y * 4000037 + x);
-  }
-  double bucket_;
-  std::unordered_map<int64_t, std::vector<Item>> buckets_;
+  double x0_, y0_, bucket_ = 1;
+  int64_t nx_ = 1, ny_ = 1;
+  std::vector<std::vector<Item>> buckets_;
 };
 
 // Where a leader from the piece's centre meets its label: the box's nearest point.
@@ -255,14 +291,28 @@ bool place_beside(const InstallerPiece& piece, double lh, double scale, const In
   return false;
 }
 
+// Where labels are placed: the sheets' windows and the pieces.
+Rect placing_extent(const std::vector<InstallerPiece>& pieces, const InstallerPlan& plan) {
+  double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+  auto take = [&](const Rect& r) {
+    x0 = std::min(x0, r.x), y0 = std::min(y0, r.y);
+    x1 = std::max(x1, r.right()), y1 = std::max(y1, r.top());
+  };
+  for (const InstallerPiece& p : pieces) take(p.bounds);
+  for (const auto& sheet : plan.sheets) take(sheet.window);
+  if (!(x0 <= x1 && y0 <= y1)) return {};
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
 // Places every label at 1 : scale; false when some label found no place.
 bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout& layout,
            InstallerPlan& plan) {
   lay_sheets(pieces, scale, layout, plan);
   const double lh = label_height_mm(plan.text_mm) * scale;
   const double dot = 2 * kLeaderDotMm * scale;
+  const Rect extent = placing_extent(pieces, plan);
   auto reserved = [&] {
-    PlacedLabels placed(lh * 4);
+    PlacedLabels placed(lh * 3, extent);
     for (const MatchCaption& c : plan.captions) placed.add(c.box, PlacedLabels::Mark::reserved);
     for (const Rect& r : plan.start_corner) placed.add(r, PlacedLabels::Mark::reserved);
     return placed;
@@ -288,7 +338,7 @@ bool place(const std::vector<InstallerPiece>& pieces, double scale, const Layout
   // other pieces that need room beside them too, so that no label walls another in; then
   // wherever there is room.
   placed = reserved();
-  PlacedLabels needing_room(lh * 4);
+  PlacedLabels needing_room(lh * 3, extent);
   for (size_t i = 0; i < pieces.size(); ++i)
     if (plan.labels[i].inside) placed.add(plan.labels[i].box, PlacedLabels::Mark::inside, i);
   for (const size_t i : beside) {
