@@ -7,7 +7,8 @@ Rows: the engine alone (in process, curdle_bench), start-up alone (`curdle --hel
 `curdle --version`), and whole processes as a user runs them (start-up included, best of
 five), each against the peer's whole process where it has one; the page from a change to its
 pixels (headless Chromium, tests/js/page_redraw.mjs) and with the pavilion, a change to its
-3-D model drawn and clicks on it answered (tests/js/page_building.mjs); every shipped pattern and brief whole with
+3-D model drawn and clicks on it answered (tests/js/page_building.mjs), and Blender's import of
+its layout.glb (tests/benchmarks/blender_import.sh); every shipped pattern and brief whole with
 every default output (the slowest of each); the screen's layout.glb. The load of the machine is
 taken before and after, and kept with the results.
 
@@ -24,6 +25,7 @@ Usage: table.py [--build DIR] [--peer DIR] [--accept] [--readme] [--no-peer] [--
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -252,6 +254,24 @@ def building_page(build, rows):
              r["redraw_ms_median"], "ms", ("<", 0.05), source=src, yardstick=beside)
 
 
+def blender_import(build, rows):
+    """Blender's own importer on the pavilion's layout.glb (tests/benchmarks/blender_import.sh):
+    no goal, a reading of what a user of Blender waits."""
+    before = yardstick_ms()
+    out = subprocess.run(["bash", str(ROOT / "tests/benchmarks/blender_import.sh"), str(build)],
+                         capture_output=True, text=True).stdout
+    beside = (before + yardstick_ms()) / 2
+    lines = [line for line in out.splitlines() if line.startswith("{")]
+    if not lines:
+        print("blender_import.sh printed no result:", out, file=sys.stderr)
+        return
+    r = json.loads(lines[0])
+    rows.add("blender.pavilion", f"Blender 3.4's own glTF importer on the pavilion's layout.glb ({r['glb_mb']} MB, "
+             f"{r['nodes']:,} nodes sharing {r['meshes']} meshes), the import alone ({r['process_s']:.1f} s and "
+             f"{r['peak_mb']} MB the whole process; every element an object of its ID: {r['missing']} missing)",
+             r["import_s"] * 1000, "ms", source="tests/benchmarks/blender_import.sh", yardstick=beside)
+
+
 def compare(rows, previous):
     """Rows more than 20 % worse than the committed results."""
     old = {r["key"]: r for r in previous.get("rows", [])}
@@ -356,6 +376,8 @@ def main():
     if not a.no_page:
         page(build, rows)
         building_page(build, rows)
+        if shutil.which("blender"):
+            blender_import(build, rows)
     add_first_run(rows)
     result["load_after"] = load()
     result["rows"] = rows.rows

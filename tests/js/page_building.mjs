@@ -6,7 +6,8 @@
 // to the curd's pixels drawn ("curd-redraw"); and clicks on the 3-D view at a grid of points
 // over it (on bricks, in windows, on the sky), each timed from the click's event to the answer
 // shown ("view3d-click"), with how many found an element and how many said there was none.
-// Also the picks the merged drawing makes against the elements' own objects at the same points.
+// Also the picks the merged drawing makes against the elements' own objects at the same points,
+// and three.js's own loader's time on the same layout.glb.
 // Prints one JSON line.
 // Usage: node page_building.mjs CURDLE ROUNDS RECIPE
 import { chromium } from 'playwright-core';
@@ -85,6 +86,15 @@ try {
       if (id) ++found;
       else if (/^No element there/.test(said)) ++none;
     }
+  // three.js's own loader on the same bytes (the page's fallback for a glb its worker does not
+  // read), for comparison with the worker's course.
+  const threejs_loader_ms = await page.evaluate(async () => {
+    const { GLTFLoader } = await import('three/addons/loaders/GLTFLoader.js');
+    const bytes = await (await fetch(window.view3d.src)).arrayBuffer();
+    const t = performance.now();
+    await new GLTFLoader().parseAsync(bytes, '');
+    return performance.now() - t;
+  });
   const picks = await page.evaluate(() => window.view3d.picksAgree(24));
   const bricks = await page.evaluate(() => window.view3d.model().getObjectsByProperty('isMesh', true).length);
   console.log(JSON.stringify({
@@ -94,7 +104,7 @@ try {
     rest_redraw_ms_median: quantile(rest_ms, 0.5), redraw_ms_median: quantile(redraw_ms, 0.5), redraw_ms_max: Math.max(...redraw_ms),
     clicks: click_ms.length, click_found: found, click_none: none,
     click_ms_median: quantile(click_ms, 0.5), click_ms_max: Math.max(...click_ms),
-    picks_compared: picks.points, picks_differ: picks.differ, picks_first_differing: picks.first,
+    threejs_loader_ms, picks_compared: picks.points, picks_differ: picks.differ, picks_first_differing: picks.first,
   }));
   await page.close();
 } finally {
