@@ -2,6 +2,7 @@
 #include "layout/builder.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include "layout_support.h"
 
@@ -290,6 +291,43 @@ TEST(Layout, SlopingAndCurvedEdgesCutPiecesExactly) {
     EXPECT_NEAR(elements + joint_area(layout) + polygon_area(pit), polygon_area(terrace), 1e-2)
         << "bond " << bond;
   }
+}
+
+// A site's pieces are cut along its edges on as many threads as the run has: the same pieces,
+// to the bit and in the same order, on one thread as on four.
+TEST(Layout, PiecesCutOnManyThreadsAreThoseCutOnOne) {
+  const Design d = design(3, 2, {{"3/4", "1/2"}});
+  Polygon site;
+  for (int i = 0; i < 90; ++i)  // a wavy edge: most pieces along it are cut to shape
+    site.push_back({5000 + 4800 * std::cos(i * M_PI / 45) + 150 * std::sin(i * 0.9),
+                    3000 + 2800 * std::sin(i * M_PI / 45)});
+  LayoutSpec spec = test::layout_spec();
+  spec.set_kind(layout_kind("paving"));
+  spec.module_w = 300, spec.module_h = 300, spec.joint = 5;
+  spec.size = std::array<double, 2>{10000, 6000};
+  spec.outline = site;
+  auto lay_on = [&](int threads) {
+    Layout out;
+    tbb::task_arena(threads).execute([&] { out = lay_floor(d, spec, 5); });
+    return out;
+  };
+  const Layout one = lay_on(1), many = lay_on(4);
+  ASSERT_EQ(one.elements.size(), many.elements.size());
+  EXPECT_EQ(one.omitted, many.omitted);
+  size_t shaped = 0;
+  for (size_t i = 0; i < one.elements.size(); ++i) {
+    const Element &a = one.elements[i], &b = many.elements[i];
+    ASSERT_EQ(a.id, b.id);
+    EXPECT_EQ(a.cut, b.cut) << a.id;
+    EXPECT_EQ(a.shape, b.shape) << a.id;
+    ASSERT_EQ(a.outline.has_value(), b.outline.has_value()) << a.id;
+    if (a.outline) {
+      ++shaped;
+      EXPECT_EQ(a.outline->rings, b.outline->rings) << a.id;
+      EXPECT_EQ(a.outline->area, b.outline->area) << a.id;
+    }
+  }
+  EXPECT_GT(shaped, 100u);
 }
 
 }  // namespace curdle

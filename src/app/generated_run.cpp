@@ -101,7 +101,11 @@ GeneratedRun generate_run(Run run, bool with_layout, int threads, RunObserver* o
   }
   const Design& d = g.run.recipe.design;
   g.report = make_report(d, g.run.seed, g.field, g.run.view);
-  if (spec) g.layout = make_layout(d, g.field, g.run.view, *spec);
+  // Laying cuts pieces along a site's edges on as many threads as the run may use.
+  if (spec)
+    tbb::task_arena(threads > 0 ? threads : tbb::task_arena::automatic).execute([&] {
+      g.layout = make_layout(d, g.field, g.run.view, *spec);
+    });
   return g;
 }
 

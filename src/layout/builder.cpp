@@ -1,10 +1,13 @@
 #include "layout/builder.h"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "curdle/check.h"
@@ -99,6 +102,21 @@ void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
   e.cut = true;
 }
 
+// Each element cut along the sloping and curved edges it crosses (cut_along_polygons), on as
+// many threads as the run has: the exact cuts are most of a surveyed site's laying, and each
+// element's cut is its own. Each task works under this thread's stop rule.
+void cut_in_parallel(std::vector<Element>& elements, const PolygonCuts& cuts) {
+  StopRule* rule = current_stop_rule();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, elements.size(), 64), [&](const auto& range) {
+    std::optional<StopScope> scope;
+    if (rule) scope.emplace(*rule);
+    for (size_t i = range.begin(); i < range.end(); ++i) {
+      stop_point();
+      if (!elements[i].shape.empty()) cut_along_polygons(elements[i], cuts);
+    }
+  });
+}
+
 // Value zones give their value to the elements whose centre they hold (the first zone listed
 // that holds it decides); every zone counts what it holds, and an excluded zone the pieces cut
 // along it.
@@ -171,7 +189,8 @@ void lay_elements(Layout& layout, const std::vector<uint16_t>& values, const Lay
   const bool right = from_right(spec.origin);
   const bool top = from_top(spec.origin);
   const int digits = static_cast<int>(std::to_string(std::max(layout.columns, layout.rows)).size());
-  layout.elements.reserve(values.size());
+  std::vector<Element>& placed = layout.elements;  // all first, then those left kept in place
+  placed.reserve(values.size());
   for (int64_t row = 0; row < layout.rows; ++row) {
     for (int64_t column = 0; column < layout.columns; ++column) {
       stop_point();
@@ -190,17 +209,24 @@ void lay_elements(Layout& layout, const std::vector<uint16_t>& values, const Lay
       e.stock_w = spec.module_w, e.stock_h = spec.module_h;
       const Rect laid = clip(e.nominal, layout.width, layout.height);
       e.shape = subtract(laid, holes);
-      if (!cuts.empty() && !e.shape.empty()) cut_along_polygons(e, cuts);
-      if ((e.shape.empty() && !e.outline) || e.area() < kEps) {
-        ++layout.omitted;  // wholly over an opening or zone, or outside the floor or outline
-        continue;
-      }
-      e.cut = e.cut || e.area() < e.nominal.area() - kEps;
-      e.key = ElementId{spec.kind->id_letter(), digits, std::nullopt, row, column, ""};
-      e.id = e.key.text();
-      layout.elements.push_back(std::move(e));
+      placed.push_back(std::move(e));
     }
   }
+  if (!cuts.empty()) cut_in_parallel(placed, cuts);
+  size_t kept = 0;
+  for (size_t k = 0; k < placed.size(); ++k) {
+    Element& e = placed[k];
+    if ((e.shape.empty() && !e.outline) || e.area() < kEps) {
+      ++layout.omitted;  // wholly over an opening or zone, or outside the floor or outline
+      continue;
+    }
+    e.cut = e.cut || e.area() < e.nominal.area() - kEps;
+    e.key = ElementId{spec.kind->id_letter(), digits, std::nullopt, e.row, e.column, ""};
+    e.id = e.key.text();
+    if (kept != k) placed[kept] = std::move(e);
+    ++kept;
+  }
+  placed.erase(placed.begin() + static_cast<std::ptrdiff_t>(kept), placed.end());
 }
 
 // A pattern's unit as laid on the surface (`e.nominal` its extent): whole, keeping its polygon
