@@ -164,7 +164,25 @@ class CanonicalBatch {
     size_t first_block;
   };
 
+  // With the count of planes known at compile time for chains of up to eight states (one to
+  // three planes), the per-child loops over the planes unroll.
   void write_children(const Parent& parent) {
+    switch (planes_.size()) {
+      case 1:
+        return write_children_of<1>(parent);
+      case 2:
+        return write_children_of<2>(parent);
+      case 3:
+        return write_children_of<3>(parent);
+      default:
+        return write_children_of<0>(parent);
+    }
+  }
+
+  // P planes, or planes_.size() when P is 0.
+  template <size_t P>
+  void write_children_of(const Parent& parent) {
+    const size_t planes = P ? P : planes_.size();
     const RowTable& t = rows_[parent.state];
     const ChildFilter filter =
         w_.prune ? children_in_box(w_.index, w_.box, k_, parent.index) : ChildFilter{};
@@ -173,7 +191,7 @@ class CanonicalBatch {
     for (uint64_t c0 = 0; c0 < B_; c0 += 64) {
       const auto count = static_cast<unsigned>(std::min<uint64_t>(64, B_ - c0));
       std::array<uint64_t, 16> bits;  // only the planes' entries: a whole clear costs more
-      std::fill_n(bits.begin(), planes_.size(), uint64_t{0});
+      std::fill_n(bits.begin(), planes, uint64_t{0});
       for (unsigned c = 0; c < count; ++c) {
         const uint64_t at = first_at + c0 + c;
         if (!filter.all && !filter.allows(digits[c0 + c])) continue;
@@ -181,9 +199,9 @@ class CanonicalBatch {
         const uint8_t byte = bytes_[16 * block + (at & 15)];
         uint32_t s = t.by_byte[byte];
         if (s == kUndecided) s = state_from_byte(t, byte, w_.rng, at, roots_[block], w_.curd, k_);
-        for (size_t p = 0; p < planes_.size(); ++p) bits[p] |= uint64_t{s >> p & 1} << c;
+        for (size_t p = 0; p < planes; ++p) bits[p] |= uint64_t{s >> p & 1} << c;
       }
-      for (size_t p = 0; p < planes_.size(); ++p)
+      for (size_t p = 0; p < planes; ++p)
         if (bits[p])
           planes_[p].stages[static_cast<size_t>(k_)].or_bits(parent.index * B_ + c0, bits[p],
                                                              count);
