@@ -281,12 +281,16 @@ void check_cut_widths(Layout& layout, const LayoutSpec& spec, const std::vector<
     return n;
   };
   const size_t cut_now = cut_pieces(layout);
-  std::optional<Trial> best;
-  std::pair<size_t, size_t> fewest{slivers.size(), cut_now};
+  // Each shift once: where one axis keeps its shift, two of the three are the same.
+  std::vector<std::array<double, 2>> shifts;
   for (const std::array<double, 2> shift :
        {std::array{x.shift, y.shift}, std::array{x.shift, spec.shift[1]},
-        std::array{spec.shift[0], y.shift}}) {
-    if (shift == spec.shift) continue;
+        std::array{spec.shift[0], y.shift}})
+    if (shift != spec.shift && std::find(shifts.begin(), shifts.end(), shift) == shifts.end())
+      shifts.push_back(shift);
+  std::optional<Trial> best;
+  std::pair<size_t, size_t> fewest{slivers.size(), cut_now};
+  for (const std::array<double, 2>& shift : shifts) {
     LayoutSpec trial = spec;
     trial.shift = shift;
     Layout blank = lay_blank_grid(trial, openings);
