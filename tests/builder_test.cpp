@@ -293,8 +293,9 @@ TEST(Layout, SlopingAndCurvedEdgesCutPiecesExactly) {
   }
 }
 
-// A site's pieces are cut along its edges on as many threads as the run has: the same pieces,
-// to the bit and in the same order, on one thread as on four.
+// A site's pieces are cut along its edges on as many threads as the run has, and what lies
+// beyond its outline beside them: the same pieces and the same cut-away, to the bit and in the
+// same order, on one thread as on four.
 TEST(Layout, PiecesCutOnManyThreadsAreThoseCutOnOne) {
   const Design d = design(3, 2, {{"3/4", "1/2"}});
   Polygon site;
@@ -314,6 +315,10 @@ TEST(Layout, PiecesCutOnManyThreadsAreThoseCutOnOne) {
   const Layout one = lay_on(1), many = lay_on(4);
   ASSERT_EQ(one.elements.size(), many.elements.size());
   EXPECT_EQ(one.omitted, many.omitted);
+  ASSERT_EQ(one.cut_away.size(), many.cut_away.size());  // made beside the pieces
+  ASSERT_FALSE(one.cut_away.empty());
+  for (size_t i = 0; i < one.cut_away.size(); ++i)
+    EXPECT_EQ(one.cut_away[i].rings, many.cut_away[i].rings);
   size_t shaped = 0;
   for (size_t i = 0; i < one.elements.size(); ++i) {
     const Element &a = one.elements[i], &b = many.elements[i];

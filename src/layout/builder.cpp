@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cmath>
@@ -413,12 +414,22 @@ Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const
     if (z.rule == ZoneRule::exclude && z.rects.empty()) cuts.holes.push_back(z.polygon);
   check_cutting_work(view, cuts);
   cuts.index();
+  // What lies beyond the outline and in the holes (one exact overlay, a fifth of a surveyed
+  // site's laying) is made beside the pieces, under this thread's stop rule.
+  std::vector<Outline> away;
+  tbb::task_group beside;
   if (!cuts.empty() && with_cut_away)
-    layout.cut_away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
+    beside.run([&, rule = current_stop_rule()] {
+      std::optional<StopScope> scope;
+      if (rule) scope.emplace(*rule);
+      away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
+    });
   if (spec.pattern == LayingPattern::grid)
     lay_elements(layout, values, spec, cuts);
   else
     lay_pattern(layout, values, spec, cuts);
+  beside.wait();
+  layout.cut_away = std::move(away);
   apply_zones(layout, spec, value_count);
   return layout;
 }
