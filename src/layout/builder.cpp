@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -415,20 +416,24 @@ Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const
   check_cutting_work(view, cuts);
   cuts.index();
   // What lies beyond the outline and in the holes (one exact overlay, a fifth of a surveyed
-  // site's laying) is made beside the pieces, under this thread's stop rule.
+  // site's laying) is made beside the pieces, under this thread's stop rule. Isolated: a thread
+  // waiting here for the pieces' cuts takes no other work of its caller's (a search scores
+  // seeds in parallel, each with its thread's scratch, and lays each segment).
   std::vector<Outline> away;
-  tbb::task_group beside;
-  if (!cuts.empty() && with_cut_away)
-    beside.run([&, rule = current_stop_rule()] {
-      std::optional<StopScope> scope;
-      if (rule) scope.emplace(*rule);
-      away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
-    });
-  if (spec.pattern == LayingPattern::grid)
-    lay_elements(layout, values, spec, cuts);
-  else
-    lay_pattern(layout, values, spec, cuts);
-  beside.wait();
+  tbb::this_task_arena::isolate([&] {
+    tbb::task_group beside;
+    if (!cuts.empty() && with_cut_away)
+      beside.run([&, rule = current_stop_rule()] {
+        std::optional<StopScope> scope;
+        if (rule) scope.emplace(*rule);
+        away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
+      });
+    if (spec.pattern == LayingPattern::grid)
+      lay_elements(layout, values, spec, cuts);
+    else
+      lay_pattern(layout, values, spec, cuts);
+    beside.wait();
+  });
   layout.cut_away = std::move(away);
   apply_zones(layout, spec, value_count);
   return layout;
