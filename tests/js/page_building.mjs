@@ -37,7 +37,7 @@ try {
     window.reloads = [];
     window.addEventListener('layout3d', () => window.reloads.push(performance.now()));
   });
-  const change_ms = [], redraw_ms = [], rest_ms = [];
+  const change_ms = [], redraw_ms = [], rest_ms = [], fetch_ms = [], server_ms = [];
   let course = 300;  // ms from a reload's start to its model drawn, until measured
   for (let i = 0; i < rounds; ++i) {
     // At rest: the click to the new model drawn.
@@ -53,7 +53,12 @@ try {
       return [e.startTime + e.duration, window.reloads.at(-1)];
     });
     change_ms.push(drawn - clicked);
-    rest_ms.push(await page.evaluate(() => performance.getEntriesByName('curd-redraw').at(-1).duration));
+    const [restMs, fetchMs, serverMs] = await page.evaluate(() => [
+      performance.getEntriesByName('curd-redraw').at(-1).duration,
+      performance.getEntriesByName('curd-fetch').at(-1).duration, page_state.state.whole.server_ms]);
+    rest_ms.push(restMs);
+    fetch_ms.push(fetchMs);
+    server_ms.push(serverMs);
     course = drawn - started;
     await page.waitForTimeout(200);
     // With the reload on its way: a change half its course in, to the curd's pixels drawn.
@@ -101,7 +106,8 @@ try {
     recipe: recipe.split('/').pop(), rounds, bricks, first_model_ms,
     change_ms_median: quantile(change_ms, 0.5), change_ms_max: Math.max(...change_ms),
     reload_course_ms: course,
-    rest_redraw_ms_median: quantile(rest_ms, 0.5), redraw_ms_median: quantile(redraw_ms, 0.5), redraw_ms_max: Math.max(...redraw_ms),
+    rest_redraw_ms_median: quantile(rest_ms, 0.5), rest_fetch_ms_median: quantile(fetch_ms, 0.5),
+    server_ms_median: quantile(server_ms, 0.5), redraw_ms_median: quantile(redraw_ms, 0.5), redraw_ms_max: Math.max(...redraw_ms),
     clicks: click_ms.length, click_found: found, click_none: none,
     click_ms_median: quantile(click_ms, 0.5), click_ms_max: Math.max(...click_ms),
     threejs_loader_ms, picks_compared: picks.points, picks_differ: picks.differ, picks_first_differing: picks.first,
