@@ -5,6 +5,7 @@
 
 #include "curdle/curdling.h"
 #include "layout/builder.h"
+#include "layout/joint_area.h"
 #include "recipe/recipe.h"
 
 int main() {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include "layout/joint_area.h"
 #include "layout_support.h"
 
 namespace curdle {

@@ -9,6 +9,7 @@
 #include "app/fit_run.h"
 #include "curdle/curdling.h"
 #include "curdle/error.h"
+#include "curdle/markov.h"
 #include "curdle/overlay.h"
 #include "export/report/cells_csv.h"
 #include "picture_support.h"

@@ -52,8 +52,4 @@ void count_values(Layout& layout, const Design& design, const LayoutSpec& spec);
 Layout make_layout(const Design& design, const CurdField& field, const Box& view,
                    const LayoutSpec& spec);
 
-// Area of the joints actually laid: the joint strips inside the floor or wall, less openings.
-// Computed from the grid alone, so that elements + joints + openings = floor is a real check.
-double joint_area(const Layout& layout);
-
 }  // namespace curdle
