@@ -5,15 +5,14 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <clocale>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <limits>
-#include <random>
 #include <string>
 #include <vector>
+
+#include "fixed_text_numbers.h"
 
 extern "C" int __snprintf_chk(char* text, size_t size, int flag, size_t room, const char* format,
                               ...) noexcept;
@@ -37,44 +36,7 @@ void expect_as_glibc(double v, int precision) {
 }
 
 TEST(FixedPointSnprintf, TheSameTextAsGlibcForEveryKindOfNumber) {
-  std::vector<double> values = {0.0,
-                                -0.0,
-                                1.0,
-                                -1.0,
-                                0.5,
-                                1.5,
-                                2.5,
-                                -2.5,
-                                0.125,
-                                0.0078125,
-                                1.0 / 1024,
-                                3.0 / 2048,
-                                0.1,
-                                0.05,
-                                1e-7,
-                                5e-7,
-                                1e22,
-                                1e300,
-                                -1e300,
-                                std::numeric_limits<double>::max(),
-                                std::numeric_limits<double>::denorm_min(),
-                                123456.789,
-                                841.8897637795275,
-                                595.2755905511812};
-  // Ties at every precision: odd multiples of 2^-k, exact in binary and halfway in decimal.
-  for (int k = 1; k <= 30; ++k)
-    for (int odd = 1; odd < 40; odd += 2) values.push_back(std::ldexp(odd, -k));
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<double> exponent(-22, 22);
-  for (int i = 0; i < 4000; ++i) {
-    const double v = std::pow(10.0, exponent(random)) * (i % 2 ? -1 : 1);
-    values.push_back(v);
-  }
-  for (int i = 0; i < 2000; ++i) {  // any finite bit pattern
-    const double v = std::bit_cast<double>(random());
-    if (std::isfinite(v)) values.push_back(v);
-  }
-  for (const double v : values)
+  for (const double v : curdle::test::hard_fixed_numbers())
     for (const int precision : {0, 1, 3, 6, 9, 12, 18, 25, 40}) expect_as_glibc(v, precision);
 }
 
