@@ -212,17 +212,23 @@ def patterns_whole(build, rows, work):
 PAGE_ROUNDS = 20  # changes of each kind (at rest, reload under way) per size: a median of 10 moved by a fifth between runs minutes apart
 
 
-def page(build, rows):
+def script_results(script, *args):
+    """The JSON lines a benchmark script in tests/benchmarks prints, run between two
+    yardsticks, and the yardstick beside it; says so when the script printed none."""
     before = yardstick_ms()
-    lines = subprocess.run(["bash", str(ROOT / "tests/benchmarks/page_redraw.sh"), str(build),
-                            str(PAGE_ROUNDS)],
-                           capture_output=True, text=True).stdout.splitlines()
+    out = subprocess.run(["bash", str(ROOT / "tests/benchmarks" / script), *map(str, args)],
+                         capture_output=True, text=True).stdout
     beside = best_beside(before, yardstick_ms())
+    results = [json.loads(line) for line in out.splitlines() if line.startswith("{")]
+    if not results:
+        print(f"{script} printed no result:", out, file=sys.stderr)
+    return results, beside
+
+
+def page(build, rows):
+    results, beside = script_results("page_redraw.sh", build, PAGE_ROUNDS)
     # A frame's budget (16 ms at 60 Hz) as yardsticks of about 0.3 s: 0.05; 50 ms, 0.17.
-    for line in lines:
-        if not line.startswith("{"):
-            continue
-        r = json.loads(line)
+    for r in results:
         goal = {"1024x1024": 0.05, "2048x2048": 0.17}.get(r["cells"])
         if goal:
             side = r["cells"].split("x")[0]
@@ -247,15 +253,10 @@ BUILDING_ROUNDS = 10  # changes of each kind on the pavilion's page
 def building_page(build, rows):
     """The pavilion on the page (tests/benchmarks/page_building.sh): goals of 1 s, 100 ms and a
     frame (16 ms) as yardsticks of 0.3 s."""
-    before = yardstick_ms()
-    out = subprocess.run(["bash", str(ROOT / "tests/benchmarks/page_building.sh"), str(build),
-                          str(BUILDING_ROUNDS)], capture_output=True, text=True).stdout
-    beside = best_beside(before, yardstick_ms())
-    lines = [line for line in out.splitlines() if line.startswith("{")]
-    if not lines:
-        print("page_building.sh printed no result:", out, file=sys.stderr)
+    results, beside = script_results("page_building.sh", build, BUILDING_ROUNDS)
+    if not results:
         return
-    r = json.loads(lines[0])
+    r = results[0]
     src = "tests/benchmarks/page_building.sh"
     rows.add("page.building", f"the page with the pavilion ({r['bricks']:,} elements), a change to its new model "
              f"drawn in the 3-D view, the page at rest (the 300 ms the page waits for the controls to rest "
@@ -273,15 +274,10 @@ def building_page(build, rows):
 def blender_import(build, rows):
     """Blender's own importer on the pavilion's layout.glb (tests/benchmarks/blender_import.sh):
     no goal, a reading of what a user of Blender waits."""
-    before = yardstick_ms()
-    out = subprocess.run(["bash", str(ROOT / "tests/benchmarks/blender_import.sh"), str(build)],
-                         capture_output=True, text=True).stdout
-    beside = best_beside(before, yardstick_ms())
-    lines = [line for line in out.splitlines() if line.startswith("{")]
-    if not lines:
-        print("blender_import.sh printed no result:", out, file=sys.stderr)
+    results, beside = script_results("blender_import.sh", build)
+    if not results:
         return
-    r = json.loads(lines[0])
+    r = results[0]
     rows.add("blender.pavilion", f"Blender 3.4's own glTF importer on the pavilion's layout.glb ({r['glb_mb']} MB, "
              f"{r['nodes']:,} nodes sharing {r['meshes']} meshes), the import alone ({r['process_s']:.1f} s and "
              f"{r['peak_mb']} MB the whole process; every element an object of its ID: {r['missing']} missing)",
