@@ -90,13 +90,9 @@ void append_row(std::string& b, const ScheduleRow& r, const CurdColumns& curds) 
   b += ',';
   append_csv_field(b, r.material);
   b += r.cut ? ",1," : ",0,";
-  const size_t wkt = b.size();
-  append_outlines_wkt(b, r.outlines);
-  if (b.find_first_of(",\"\r\n", wkt) != std::string::npos) {  // quoted as csv_field quotes
-    const std::string text = b.substr(wkt);
-    b.resize(wkt);
-    append_csv_field(b, text);
-  }
+  std::string wkt;
+  append_outlines_wkt(wkt, r.outlines);
+  append_csv_field(b, wkt);
   for (const auto& v : {r.opening_x, r.opening_y, r.opening_diameter}) {
     b += ',';
     append_optional_mm(b, v);

@@ -16,7 +16,7 @@ std::string mm_text(double v) {
 
 void append_mm_text(std::string& out, double v) {
   const double rounded = std::round(v * 1000) / 1000;
-  std::array<char, 400> buffer{};  // to_chars: exact, and without fmt's slow path
+  std::array<char, 400> buffer;  // to_chars_fixed: exact, and without fmt's slow path
   const char* first = buffer.data();
   const char* end = to_chars_fixed(buffer.data(), buffer.data() + buffer.size(),
                                    rounded == 0 ? 0.0 : rounded, 3)  // no "-0"
