@@ -99,26 +99,49 @@ KindAtP at_p(const std::vector<double>& q, const ChildClasses& kind, double p) {
 
 double times_log(double count, double x) { return count == 0 ? 0.0 : count * std::log(x); }
 
+// A kind of parent as the likelihood reads it, hundreds of times a stage: flat arrays, in the
+// order of the stage's maps, so that its sum is the same to the bit.
+struct FlatKind {
+  std::vector<double> q, n;     // per class: chance of keeping a final survivor, children
+  std::vector<double> parents;  // per pattern of occupied children seen
+  std::vector<double> seen;     // per pattern, per class: the occupied children
+};
+
 // A stage's kinds of parent with the chance q of each child class keeping a final survivor.
 struct Stage {
   StageBranching seen;
   std::vector<std::vector<double>> q;  // per kind, per class
+  std::vector<FlatKind> flat;          // the same kinds, with q, flat
+  size_t most_classes = 0;
   double split = 0.5;  // picture_split: where the interval of a coarse count splits its chance
 };
 
+// times_log(count, x) with log(x) given (count 0 adds nothing, whatever x).
+double times_known_log(double count, double log_x) { return count == 0 ? 0.0 : count * log_x; }
+
 double log_likelihood(const Stage& s, double p) {
   double sum = 0;
-  size_t i = 0;
-  for (const auto& [kind, seen] : s.seen.parents) {
-    const KindAtP k = at_p(s.q[i++], kind, p);
-    const double log_any = std::log(-std::expm1(k.log_none));
-    for (const auto& [occupied, parents] : seen) {
+  // Per class: log r and log (1 - r), once a kind, not once a pattern.
+  std::vector<double> logs(2 * s.most_classes);
+  for (const FlatKind& k : s.flat) {
+    const size_t classes = k.q.size();
+    double log_none = 0;
+    for (size_t g = 0; g < classes; ++g) {
+      const double r = std::min(1.0, p * k.q[g]);
+      log_none += r >= 1 ? -INFINITY : k.n[g] * std::log1p(-r);
+      logs[2 * g] = std::log(r);
+      logs[2 * g + 1] = std::log(1 - r);
+    }
+    const double log_any = std::log(-std::expm1(log_none));
+    const double* occupied = k.seen.data();
+    for (const double parents : k.parents) {
       double l = -log_any;
-      for (size_t g = 0; g < kind.size(); ++g) {
-        const auto o = static_cast<double>(occupied[g]);
-        l += times_log(o, k.r[g]) + times_log(static_cast<double>(k.n[g]) - o, 1 - k.r[g]);
+      for (size_t g = 0; g < classes; ++g) {
+        const double o = occupied[g];
+        l += times_known_log(o, logs[2 * g]) + times_known_log(k.n[g] - o, logs[2 * g + 1]);
       }
-      sum += static_cast<double>(parents) * l;
+      occupied += classes;
+      sum += parents * l;
     }
   }
   return std::isnan(sum) ? -INFINITY : sum;
@@ -217,9 +240,20 @@ std::vector<Probability> as_probabilities(const std::vector<double>& p) {
 void set_chances(const Lattice& l, int k, Stage& s, const std::vector<double>& p) {
   ExtinctionChance extinction(l, as_probabilities(p));
   s.q.clear();
+  s.flat.clear();
+  s.most_classes = 0;
   for (const auto& [kind, seen] : s.seen.parents) {
     std::vector<double> q;
     for (const auto& [shape, n] : kind) q.push_back(std::max(1e-300, 1 - extinction(k, shape)));
+    FlatKind flat;
+    flat.q = q;
+    for (const auto& [shape, n] : kind) flat.n.push_back(static_cast<double>(n));
+    for (const auto& [occupied, parents] : seen) {
+      flat.parents.push_back(static_cast<double>(parents));
+      for (uint64_t o : occupied) flat.seen.push_back(static_cast<double>(o));
+    }
+    s.most_classes = std::max(s.most_classes, kind.size());
+    s.flat.push_back(std::move(flat));
     s.q.push_back(std::move(q));
   }
 }
@@ -356,13 +390,18 @@ StageFit fit_stage(const Lattice& l, int k, Stage& s, std::vector<double>& p) {
   return f;
 }
 
-// A number in [0, 1) drawn from the picture itself for stage k, spread evenly over pictures: so
-// the split count's interval is random only as the picture is, and one picture always gives one
-// interval.
-double picture_split(const std::vector<bool>& cells, int k) {
-  uint64_t h = 1469598103934665603ull;  // FNV-1a over the occupied cells' indices
+// FNV-1a over the occupied cells' indices: the picture's own seed for its splits.
+uint64_t picture_hash(const std::vector<bool>& cells) {
+  uint64_t h = 1469598103934665603ull;
   for (size_t i = 0; i < cells.size(); ++i)
     if (cells[i]) h = (h ^ i) * 1099511628211ull;
+  return h;
+}
+
+// A number in [0, 1) drawn from the picture itself (its hash `h`) for stage k, spread evenly over
+// pictures: so the split count's interval is random only as the picture is, and one picture
+// always gives one interval.
+double picture_split(uint64_t h, int k) {
   uint64_t z = h + 0x9e3779b97f4a7c15ull * static_cast<uint64_t>(k);  // splitmix64's finaliser
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
@@ -405,7 +444,8 @@ CurdFit fit_curd(const Lattice& l, const Box& view, const std::vector<bool>& cel
   for (int k = 1; k <= K; ++k)
     stages[k].seen = branching(l, view, levels[static_cast<size_t>(K - k + 1)],
                                levels[static_cast<size_t>(K - k)]);
-  for (int k = 1; k <= K; ++k) stages[k].split = picture_split(cells, k);
+  const uint64_t hash = picture_hash(cells);
+  for (int k = 1; k <= K; ++k) stages[k].split = picture_split(hash, k);
   std::vector<double> p(static_cast<size_t>(K), 1.0);
   CurdFit fit;
   fit.stages.resize(static_cast<size_t>(K));
