@@ -38,10 +38,12 @@ expect_empty() {
   if [ -n "$(ls -A "$1" 2>/dev/null)" ]; then fail "$2 left files: $(ls -A "$1")"; else pass; fi
 }
 
-# A pattern loads and generates all outputs.
+# A pattern loads and generates all outputs: into CURDLE_PATTERN_OUTPUTS/NAME where ctest
+# keeps them for the read-back tests (IFC, GeoPackage), else into a directory of this run's.
 section_pattern() {
   local recipe=$1 f
-  out="$work/patterns/$(basename "$recipe" .toml)"
+  out="${CURDLE_PATTERN_OUTPUTS:-$work/patterns}/$(basename "$recipe" .toml)"
+  rm -rf "$out"
   expect 0 "outputs in" generate "$recipe" --out "$out"
   for f in report.json cells.csv preview.png; do
     [ -s "$out/$f" ] && pass || fail "$recipe: $f missing"

@@ -5,8 +5,8 @@ schedule row with the same ID, material and area_m2, and its geometry the row's 
 metres (shape_wkt is written to the micrometre: extents within 1 µm, areas within a millionth). And one park placed with layout.georef: the layers in
 its EPSG code, every piece where the datum, the rotation and its schedule put it.
 
-Usage: gpkg_read_back.py CURDLE SOURCE_DIR [MODELS]   (Debian's python3 with GDAL)
-MODELS: the directories js.ifc_write wrote (one per pattern it writes, with layout.gpkg and
+Usage: gpkg_read_back.py CURDLE SOURCE_DIR [WRITTEN]   (Debian's python3 with GDAL)
+WRITTEN: a directory per pattern already written (the cli.pattern tests', with layout.gpkg and
 schedule.csv); every other pattern is generated here."""
 import csv
 import sqlite3
@@ -20,7 +20,7 @@ from osgeo import ogr, osr
 
 ogr.UseExceptions()
 curdle, source = sys.argv[1], Path(sys.argv[2])
-models = Path(sys.argv[3]) if len(sys.argv) > 3 else None
+written_dir = Path(sys.argv[3]) if len(sys.argv) > 3 else None
 failures = []
 
 
@@ -131,7 +131,7 @@ total = 0
 patterns = sorted(p for p in (source / "patterns").rglob("*.toml") if "[layout]" in p.read_text(encoding="utf-8"))
 with tempfile.TemporaryDirectory() as tmp:
     for i, recipe in enumerate(patterns):
-        written = models / recipe.stem if models else None
+        written = written_dir / recipe.stem if written_dir else None
         total += check_pattern(recipe, written if written and written.is_dir() else Path(tmp) / str(i))
     check_georef(Path(tmp) / "georef")
 if failures:
