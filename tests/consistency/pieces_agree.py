@@ -9,10 +9,10 @@ the installer's map's drawing of the element; a perforation's sheet DXF. Also th
 millimetres (AutoCAD 2007, $INSUNITS 4) and audits clean, and that the schedule's areas add up
 to the quantities' laid areas.
 
-Usage: pieces_agree.py CURDLE WORKDIR RECIPE[@CORNER,CORNER,...] ...
+Usage: pieces_agree.py CURDLE WORKDIR RECIPE[@CORNER,CORNER,...][|KEY=VALUE...] ...
 (Debian's python3 with python3-ezdxf; each recipe at every corner unless some are named after
-an @, or at its own where the kind takes none; several recipes in one process, so that Python
-and ezdxf start once)
+an @, or at its own where the kind takes none; each KEY=VALUE after a | is a --set of its runs;
+several recipes in one process, so that Python and ezdxf start once)
 """
 import csv
 import json
@@ -340,12 +340,14 @@ def in_runs(eid, runs):
     return bool(m) and (m.group(1), m.group(4), int(m.group(2)), int(m.group(3))) in runs
 
 
-def check(curdle, recipe, out, corner):
+def check(curdle, recipe, out, corner, sets=()):
     with open(recipe, "rb") as f:
         kind = tomllib.load(f).get("layout", {}).get("kind", "tile")
     outputs = "schedule.csv,quantities.csv,layout.dxf,layout.glb,layout.svg,install.svg,sheets"
     args = [curdle, "generate", recipe, "--out", out,
             "--outputs", outputs + (",punching.csv" if kind == "perforation" else "")]
+    for s in sets:
+        args += ["--set", s]
     if corner:
         args += ["--set", f'layout.origin="{corner}"']
     run = subprocess.run(args, capture_output=True, text=True)
@@ -515,6 +517,7 @@ def layout_table(recipe):
 def main():
     curdle, work = sys.argv[1:3]
     for i, item in enumerate(sys.argv[3:]):
+        item, *sets = item.split("|")
         recipe, _, named = item.partition("@")
         corners = named.split(",") if named else CORNERS
         out = os.path.join(work, f"{i:02d}-{os.path.basename(recipe)[:-5]}")
@@ -525,10 +528,10 @@ def main():
         if layout is None:
             print(f"{os.path.basename(recipe)}: no [layout], so no pieces to compare")
         elif layout.get("kind", "tile") in ("rhythm", "blocks") or "building" in layout:
-            check(curdle, recipe, os.path.join(out, "out"), None)
+            check(curdle, recipe, os.path.join(out, "out"), None, sets)
         else:
             for k, corner in enumerate(corners):
-                check(curdle, recipe, os.path.join(out, f"out{k}"), corner)
+                check(curdle, recipe, os.path.join(out, f"out{k}"), corner, sets)
     if failures:
         print(f"{len(failures)} disagreements")
         sys.exit(1)
