@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Generates every pattern's layout.glb (and one .gltf + .bin), validates them all with the
-# Khronos glTF-Validator, and opens them in three.js in headless Chromium.
+# Khronos glTF-Validator, and opens them in three.js in headless Chromium. With
+# CURDLE_PATTERN_OUTPUTS set (ctest), the cli.pattern tests' layout.glb are read instead.
 # Usage: CURDLE=path/to/curdle run.sh SOURCE_DIR SCREENSHOT_DIR
 set -euo pipefail
 src=${1:?source dir}
@@ -17,7 +18,13 @@ shown=()
 while IFS= read -r recipe; do
   grep -q '^\[layout\]' "$recipe" || continue
   out="$work/$(basename "$recipe" .toml)"
-  "$curdle" generate "$recipe" --out "$out" --outputs layout.glb > /dev/null
+  # The layout.glb its cli.pattern test wrote, where ctest keeps them, else made here.
+  written=${CURDLE_PATTERN_OUTPUTS:-}/$(basename "$recipe" .toml)
+  if [ -n "${CURDLE_PATTERN_OUTPUTS:-}" ] && [ -s "$written/layout.glb" ]; then
+    out=$written
+  else
+    "$curdle" generate "$recipe" --out "$out" --outputs layout.glb > /dev/null
+  fi
   models+=("$out/layout.glb")
   case "$recipe" in
     */brick-facade-five-*|*/perforated-aluminium-*|*/stacked-blocks*|*/courtyard-l-shaped*)
