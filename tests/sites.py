@@ -23,6 +23,7 @@ import sys
 import tempfile
 
 import ezdxf
+import numpy
 
 CURDLE, SOURCE = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 PATTERNS = os.path.join(SOURCE, "patterns")
@@ -64,23 +65,29 @@ def fine_ring(vertices):
     return ring
 
 
-def inside(ring, x, y):
-    result = False
-    for i in range(len(ring)):
-        (ax, ay), (bx, by) = ring[i], ring[i - 1]
-        if (ay > y) != (by > y) and x < (bx - ax) * (y - ay) / (by - ay) + ax:
-            result = not result
-    return result
+# A ring's edges as numpy arrays (a 4,000-point arc is asked about thousands of corners): edge i
+# runs from vertex i - 1 to vertex i.
+def edges(ring):
+    b = numpy.array(ring, dtype=float)
+    a = numpy.roll(b, 1, axis=0)
+    return a[:, 0], a[:, 1], b[:, 0], b[:, 1]
 
 
-def distance_to(ring, x, y):
-    best = float("inf")
-    for i in range(len(ring)):
-        (ax, ay), (bx, by) = ring[i - 1], ring[i]
-        dx, dy = bx - ax, by - ay
-        t = max(0.0, min(1.0, ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy or 1)))
-        best = min(best, math.hypot(ax + t * dx - x, ay + t * dy - y))
-    return best
+def inside(ring_edges, x, y):
+    """Even-odd: the edges a ray to +x from (x, y) crosses."""
+    ax, ay, bx, by = ring_edges
+    spans = (ay > y) != (by > y)
+    with numpy.errstate(divide="ignore", invalid="ignore"):
+        crossing = x < (bx - ax) * (y - ay) / (by - ay) + ax
+    return bool(numpy.count_nonzero(spans & crossing) % 2)
+
+
+def distance_to(ring_edges, x, y):
+    ax, ay, bx, by = ring_edges
+    dx, dy = bx - ax, by - ay
+    length2 = dx * dx + dy * dy
+    t = numpy.clip(((x - ax) * dx + (y - ay) * dy) / numpy.where(length2 == 0, 1, length2), 0, 1)
+    return float(numpy.min(numpy.hypot(ax + t * dx - x, ay + t * dy - y)))
 
 
 def piece_corners(row):
@@ -128,7 +135,7 @@ def courtyard(work):
                                   for x, y in drain), "the drain is not the drawing's")
 
     # Every piece inside the true outline, off the pit and the drain.
-    ring = fine_ring(outline)
+    ring = edges(fine_ring(outline))
     rows = schedule(os.path.join(out, "schedule.csv"))
     worst_out, worst_pit = 0.0, 0.0
     cx, cy, r = pit.dxf.center.x, pit.dxf.center.y, pit.dxf.radius
