@@ -102,9 +102,9 @@ double times_log(double count, double x) { return count == 0 ? 0.0 : count * std
 // A kind of parent as the likelihood reads it, hundreds of times a stage: flat arrays, in the
 // order of the stage's maps, so that its sum is the same to the bit.
 struct FlatKind {
-  std::vector<double> q, n;     // per class: chance of keeping a final survivor, children
-  std::vector<double> parents;  // per pattern of occupied children seen
-  std::vector<double> seen;     // per pattern, per class: the occupied children
+  std::vector<double> q, n;      // per class: chance of keeping a final survivor, children
+  std::vector<double> parents;   // per pattern of occupied children seen
+  std::vector<double> occupied;  // per pattern, per class: the occupied children
 };
 
 // A stage's kinds of parent with the chance q of each child class keeping a final survivor.
@@ -133,7 +133,7 @@ double log_likelihood(const Stage& s, double p) {
       logs[2 * g + 1] = std::log(1 - r);
     }
     const double log_any = std::log(-std::expm1(log_none));
-    const double* occupied = k.seen.data();
+    const double* occupied = k.occupied.data();
     for (const double parents : k.parents) {
       double l = -log_any;
       for (size_t g = 0; g < classes; ++g) {
@@ -250,7 +250,7 @@ void set_chances(const Lattice& l, int k, Stage& s, const std::vector<double>& p
     for (const auto& [shape, n] : kind) flat.n.push_back(static_cast<double>(n));
     for (const auto& [occupied, parents] : seen) {
       flat.parents.push_back(static_cast<double>(parents));
-      for (uint64_t o : occupied) flat.seen.push_back(static_cast<double>(o));
+      for (uint64_t o : occupied) flat.occupied.push_back(static_cast<double>(o));
     }
     s.most_classes = std::max(s.most_classes, kind.size());
     s.flat.push_back(std::move(flat));
