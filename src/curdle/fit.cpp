@@ -107,11 +107,11 @@ struct FlatKind {
   std::vector<double> occupied;  // per pattern, per class: the occupied children
 };
 
-// A stage's kinds of parent with the chance q of each child class keeping a final survivor.
+// A stage's kinds of parent, and (flat, in the same order) the chance q of each child class
+// keeping a final survivor.
 struct Stage {
   StageBranching seen;
-  std::vector<std::vector<double>> q;  // per kind, per class
-  std::vector<FlatKind> flat;          // the same kinds, with q, flat
+  std::vector<FlatKind> flat;
   size_t most_classes = 0;
   double split = 0.5;  // picture_split: where the interval of a coarse count splits its chance
 };
@@ -239,22 +239,20 @@ std::vector<Probability> as_probabilities(const std::vector<double>& p) {
 // Each child class's chance of keeping a final survivor, with the later stages' p.
 void set_chances(const Lattice& l, int k, Stage& s, const std::vector<double>& p) {
   ExtinctionChance extinction(l, as_probabilities(p));
-  s.q.clear();
   s.flat.clear();
   s.most_classes = 0;
   for (const auto& [kind, seen] : s.seen.parents) {
-    std::vector<double> q;
-    for (const auto& [shape, n] : kind) q.push_back(std::max(1e-300, 1 - extinction(k, shape)));
     FlatKind flat;
-    flat.q = q;
-    for (const auto& [shape, n] : kind) flat.n.push_back(static_cast<double>(n));
+    for (const auto& [shape, n] : kind) {
+      flat.q.push_back(std::max(1e-300, 1 - extinction(k, shape)));
+      flat.n.push_back(static_cast<double>(n));
+    }
     for (const auto& [occupied, parents] : seen) {
       flat.parents.push_back(static_cast<double>(parents));
       for (uint64_t o : occupied) flat.occupied.push_back(static_cast<double>(o));
     }
     s.most_classes = std::max(s.most_classes, kind.size());
     s.flat.push_back(std::move(flat));
-    s.q.push_back(std::move(q));
   }
 }
 
@@ -289,7 +287,7 @@ std::vector<double> stage_count_distribution(const Stage& s, double p) {
   std::vector<double> total{1.0};
   size_t i = 0;
   for (const auto& [kind, seen] : s.seen.parents) {
-    const KindAtP k = at_p(s.q[i++], kind, p);
+    const KindAtP k = at_p(s.flat[i++].q, kind, p);
     std::vector<double> one = count_distribution(k);
     const double any = -std::expm1(k.log_none);
     one[0] = 0;
@@ -382,7 +380,7 @@ StageFit fit_stage(const Lattice& l, int k, Stage& s, std::vector<double>& p) {
   Test t;
   size_t i = 0;
   for (const auto& [kind, seen] : s.seen.parents)
-    add_test(t, at_p(s.q[i++], kind, f.probability), seen);
+    add_test(t, at_p(s.flat[i++].q, kind, f.probability), seen);
   f.chi_square = t.chi_square;
   f.degrees = std::max(0, t.bins - t.kinds - 1);
   f.p_value = f.degrees > 0 ? chi_square_tail(f.chi_square, f.degrees) : 1.0;
@@ -414,7 +412,7 @@ std::pair<double, double> branching_moments(const Stage& s, double p) {
   double mean = 0, variance = 0, parents = 0;
   size_t i = 0;
   for (const auto& [kind, seen] : s.seen.parents) {
-    const KindAtP k = at_p(s.q[i++], kind, p);
+    const KindAtP k = at_p(s.flat[i++].q, kind, p);
     double n = 0;
     for (const auto& entry : seen) n += static_cast<double>(entry.second);
     mean += n * k.mean, variance += n * k.variance, parents += n;
