@@ -65,5 +65,39 @@ TEST(Stop, ARuleHoldsForItsOwnThreadOnly) {
   EXPECT_THROW(stop_point_now(), WorkStopped);
 }
 
+// Work handed to another thread takes the rule it was handed with (current_stop_rule() there),
+// and none leaves that thread as it is.
+TEST(Stop, HandedOverWorkTakesTheRuleItCameWith) {
+  StopAfter rule(0);
+  StopRule* handed = nullptr;
+  {
+    StopScope scope(rule);
+    handed = current_stop_rule();
+  }
+  bool stopped = false, stopped_without = true;
+  std::thread other([&] {
+    {
+      const StopScope none(static_cast<StopRule*>(nullptr));
+      stopped_without = current_stop_rule() != nullptr;
+    }
+    const StopScope scope(handed);
+    try {
+      stop_point_now();
+    } catch (const WorkStopped&) {
+      stopped = true;
+    }
+  });
+  other.join();
+  EXPECT_TRUE(stopped);
+  EXPECT_FALSE(stopped_without);
+  StopAfter outer(1000000);
+  const StopScope kept(outer);
+  {
+    const StopScope none(static_cast<StopRule*>(nullptr));
+    EXPECT_EQ(current_stop_rule(), &outer);
+  }
+  EXPECT_EQ(current_stop_rule(), &outer);
+}
+
 }  // namespace
 }  // namespace curdle

@@ -145,8 +145,7 @@ void write_generated(const GeneratedRun& g, const std::vector<const Output*>& ou
   arena.execute([&] {
     // Each of the arena's threads takes the next output in that order until none is left.
     tbb::parallel_for(0, arena.max_concurrency(), [&](int) {
-      std::optional<StopScope> scope;
-      if (rule) scope.emplace(*rule);
+      const StopScope scope(rule);
       for (size_t i = next++; i < others.size(); i = next++) others[i]->write(context, sink);
     });
   });

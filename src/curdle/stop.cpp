@@ -7,6 +7,12 @@ StopScope::StopScope(StopRule& rule) : outer_(detail::stop_state.rule) {
   detail::stop_state.countdown = 0;
 }
 
+StopScope::StopScope(StopRule* rule) : outer_(detail::stop_state.rule) {
+  if (!rule) return;
+  detail::stop_state.rule = rule;
+  detail::stop_state.countdown = 0;
+}
+
 StopScope::~StopScope() { detail::stop_state.rule = outer_; }
 
 namespace detail {

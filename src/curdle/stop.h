@@ -28,6 +28,9 @@ class StopRule {
 class StopScope {
  public:
   explicit StopScope(StopRule& rule);
+  // The rule of work handed over from another thread (its current_stop_rule()), when it has
+  // one; with none, this thread's rule stays as it is.
+  explicit StopScope(StopRule* rule);
   ~StopScope();
   StopScope(const StopScope&) = delete;
   StopScope& operator=(const StopScope&) = delete;

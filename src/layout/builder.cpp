@@ -110,8 +110,7 @@ void cut_along_polygons(Element& e, const PolygonCuts& cuts) {
 void cut_in_parallel(std::vector<Element>& elements, const PolygonCuts& cuts) {
   StopRule* rule = current_stop_rule();
   tbb::parallel_for(tbb::blocked_range<size_t>(0, elements.size(), 64), [&](const auto& range) {
-    std::optional<StopScope> scope;
-    if (rule) scope.emplace(*rule);
+    const StopScope scope(rule);
     for (size_t i = range.begin(); i < range.end(); ++i) {
       stop_point();
       if (!elements[i].shape.empty()) cut_along_polygons(elements[i], cuts);
@@ -424,8 +423,7 @@ Layout lay_values(const std::vector<uint16_t>& values, size_t value_count, const
     tbb::task_group beside;
     if (!cuts.empty() && with_cut_away)
       beside.run([&, rule = current_stop_rule()] {
-        std::optional<StopScope> scope;
-        if (rule) scope.emplace(*rule);
+        const StopScope scope(rule);
         away = cut_away(Rect{0, 0, layout.width, layout.height}, cuts);
       });
     if (spec.pattern == LayingPattern::grid)
