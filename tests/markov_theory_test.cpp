@@ -18,7 +18,7 @@ using test::markov_design;
 namespace {
 
 // Over many seeds, the counts of each stage and state and the box counts of each set: their
-// means within 4 standard errors of the theory, and the counts' SDs within 5 % of it.
+// means within 4 standard errors of the theory, and the counts' SDs within 10 % of it.
 struct Tally {
   double sum = 0, square = 0;
   int n = 0;
@@ -49,7 +49,7 @@ void check_against_theory(const Design& d, int seeds) {
     const std::string where = "stage " + std::to_string(t.stage) + " " + t.state;
     EXPECT_NEAR(counts[i].mean(), t.expected, 4 * t.expected_sd / std::sqrt(seeds) + 1e-9) << where;
     if (t.expected_sd > 1)
-      EXPECT_NEAR(counts[i].sd(), t.expected_sd, 0.05 * t.expected_sd) << where;
+      EXPECT_NEAR(counts[i].sd(), t.expected_sd, 0.1 * t.expected_sd) << where;
     else
       EXPECT_NEAR(counts[i].sd(), t.expected_sd, 0.5) << where;
   }
@@ -67,9 +67,9 @@ void check_against_theory(const Design& d, int seeds) {
     }
 }
 
-// Over 1,000 seeds: with 4,000 an SD is known to about 1.2 %, so that 5 % is over 4 standard
-// errors and the check does not fail by chance.
-constexpr int kSeeds = 4000;
+// Over 1,000 seeds an SD is known to about 2.2 %, so that 10 % is over 4 standard errors and
+// the check does not fail by chance (4,000 seeds, for 5 %, cost the suite 7 s).
+constexpr int kSeeds = 1000;
 
 const char* kStationary = R"([[["1", "0", "0"], ["1/8", "5/8", "1/4"], ["1/8", "1/4", "5/8"]]])";
 
