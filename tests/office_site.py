@@ -114,7 +114,7 @@ colour = "#4f5559"
 
 [layout]
 kind = "paving"
-tile = [600, 600]
+tile = [1200, 1200]
 joint = 5
 colours = ["#cfcac0", "#4f5559"]
 
