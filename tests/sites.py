@@ -188,7 +188,7 @@ def units(work, mm_rows_path):
 def elevation(work):
     recipe = os.path.join(PATTERNS, "brick-elevation-from-dxf.toml")
     out = os.path.join(work, "elevation")
-    said = generate(recipe, out)
+    said = generate(recipe, out, "--outputs", "layout.dxf,schedule.csv")
     check("8 openings from sites/elevation.dxf" in said, "the elevation's openings are not 8: " + said[:300])
     # The windows and the door as ezdxf places their blocks: each INSERT's largest closed shape.
     drawing = ezdxf.readfile(os.path.join(PATTERNS, "sites", "elevation.dxf")).modelspace()
