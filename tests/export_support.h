@@ -1,7 +1,6 @@
 // Helpers the exporters' tests share.
 #pragma once
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
