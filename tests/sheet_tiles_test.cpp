@@ -122,6 +122,10 @@ TEST(SheetTiles, AMergedOpeningClearOfTheRestIsATileOfItsBoxLessItsRing) {
   }
   EXPECT_NEAR(face, grown * grown - 1500, 1e-9);
   EXPECT_NEAR(signed_area(tile.hole), -1500, 1e-9);
+  // The ring alone, as the writers tell shapes apart by it, is the tile's, either way round.
+  EXPECT_EQ(outline_tile_hole(ring), tile.hole);
+  EXPECT_EQ(outline_tile_hole(Ring(ring.rbegin(), ring.rend())).size(), tile.hole.size());
+  EXPECT_NEAR(signed_area(outline_tile_hole(Ring(ring.rbegin(), ring.rend()))), -1500, 1e-9);
 }
 
 }  // namespace

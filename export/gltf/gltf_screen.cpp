@@ -22,12 +22,11 @@ std::vector<int> add_screen_sheets(ModelBuilder& b, const Layout& layout, int me
     for (const size_t i : on_sheet) {
       stop_point();
       const Element& e = layout.elements[i];
-      const OpeningTile tile = tile_of(layout, e);
-      auto [it, added] = tile_meshes.try_emplace(tile_shape(tile), 0);
+      auto [it, added] = tile_meshes.try_emplace(tile_shape(layout, e), 0);
       if (added) {
         std::vector<Vec3> tp, tn;
         std::vector<uint32_t> ti;
-        add_tile_solid(true, tile, t, tp, tn, ti);
+        add_tile_solid(true, tile_of(layout, e), t, tp, tn, ti);
         it->second = b.add_mesh(fmt::format("sheet round opening {}", tile_meshes.size()),
                                 {b.primitive(tp, tn, ti, metal)});
       }

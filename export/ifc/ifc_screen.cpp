@@ -14,12 +14,11 @@ int64_t IfcScreenSheets::body(size_t k, const Rgb& colour) {
                 {0, 0, 0}, {1, 0})};
   for (const size_t i : screen_.tiled[k]) {
     const Element& e = l_.elements[i];
-    const OpeningTile tile = tile_of(l_, e);
-    auto [it, added] = tile_maps_.try_emplace(tile_shape(tile), 0);
+    auto [it, added] = tile_maps_.try_emplace(tile_shape(l_, e), 0);
     if (added) {
       std::vector<Vec3> p, n;
       std::vector<uint32_t> idx;
-      add_tile_solid(true, tile, l_.thickness, p, n, idx);
+      add_tile_solid(true, tile_of(l_, e), l_.thickness, p, n, idx);
       std::vector<std::array<double, 3>> mm;
       for (const Vec3& v : p) mm.push_back({v[0] * 1000.0, v[1] * 1000.0, v[2] * 1000.0});
       it->second = g_.representation_map(g_.triangles(mm, idx, colour));

@@ -1,8 +1,9 @@
 #include "layout/framed_sheet.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
-#include <map>
+#include <unordered_map>
 
 #include "layout/piece.h"
 #include "layout/triangulation.h"
@@ -13,6 +14,15 @@ namespace {
 
 using Point = std::array<double, 2>;
 using Triangle = std::array<Point, 3>;
+
+// A corner's hash from its coordinates' bits (+ 0.0: -0 and 0 are one corner, as == has them).
+struct CornerHash {
+  size_t operator()(const Point& p) const {
+    const auto x = std::bit_cast<uint64_t>(p[0] + 0.0), y = std::bit_cast<uint64_t>(p[1] + 0.0);
+    const uint64_t h = x * 0x9e3779b97f4a7c15ull;
+    return static_cast<size_t>(h ^ (y + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2)));
+  }
+};
 
 Vec3 gltf_point(const BuildingPoint& p) {
   return {float(p[0] / 1000), float(p[2] / 1000), float(-p[1] / 1000)};
@@ -215,7 +225,8 @@ void add_framed_sheet(const SurfaceFrame& frame, const std::vector<Ring>& rings,
   auto& idx = mesh.indices;
   for (int face = 0; face < 2; ++face) {  // the outer face, then the back facing in
     const double inward = face ? thickness : 0;
-    std::map<Point, uint32_t> corner;  // a face's corners shared by its triangles
+    // A face's corners shared by its triangles, numbered as they first come.
+    std::unordered_map<Point, uint32_t, CornerHash> corner(caps.size() * 2);
     for (const Triangle& t : caps)
       for (int k = 0; k < 3; ++k) {
         const Point& v = t[face ? 2 - k : k];
@@ -325,9 +336,11 @@ FramedPose opening_pose(const Layout& layout, const Element& e) {
   return {p, {(q[0] - p[0]) / len, (q[1] - p[1]) / len}};
 }
 
-std::vector<int64_t> tile_shape(const OpeningTile& tile) {
+std::vector<int64_t> tile_shape(const Layout& layout, const Element& e) {
+  const Ring hole = e.outline ? outline_tile_hole(e.outline->rings[0])
+                              : opening_tile(e.circle->d, layout.chord_tolerance).hole;
   std::vector<int64_t> shape;
-  for (const auto& [x, y] : tile.hole)
+  for (const auto& [x, y] : hole)
     shape.push_back(std::llround(x * 1e6)), shape.push_back(std::llround(y * 1e6));
   return shape;
 }

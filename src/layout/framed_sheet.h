@@ -68,8 +68,10 @@ FramedPose tile_pose(const Layout& layout, const Element& opening);
 // The tile of an opening (sheet_tiles.h) from its pose's origin.
 OpeningTile tile_of(const Layout& layout, const Element& opening);
 
-// A tile's shape to a nanometre: openings alike share one mesh (glTF) or map (IFC).
-std::vector<int64_t> tile_shape(const OpeningTile& tile);
+// An opening's tile's shape to a nanometre, from its ring alone (tile_of triangulates a merged
+// opening's, which only the first of a shape needs): openings alike share one mesh (glTF) or
+// map (IFC).
+std::vector<int64_t> tile_shape(const Layout& layout, const Element& opening);
 
 // A tile as a solid `thickness` deep out of its plane: its face both sides and the hole's
 // wall (gltf_solids.h: `upright`, standing; else lying).

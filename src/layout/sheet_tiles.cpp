@@ -169,11 +169,18 @@ OpeningTile opening_tile(double d, double tolerance) {
   return tile;
 }
 
+Ring outline_tile_hole(const Ring& ring) {
+  const Square box = box_of(ring);
+  Ring hole;
+  for (const auto& [x, y] : ring) hole.push_back({x - box.x0, y - box.y0});
+  if (signed_area(hole) > 0) std::reverse(hole.begin(), hole.end());
+  return hole;
+}
+
 OpeningTile outline_tile(const Ring& ring) {
   const Square box = box_of(ring);
   OpeningTile tile;
-  for (const auto& [x, y] : ring) tile.hole.push_back({x - box.x0, y - box.y0});
-  if (signed_area(tile.hole) > 0) std::reverse(tile.hole.begin(), tile.hole.end());
+  tile.hole = outline_tile_hole(ring);
   const Ring square{
       {0, 0}, {box.x1 - box.x0, 0}, {box.x1 - box.x0, box.y1 - box.y0}, {0, box.y1 - box.y0}};
   tile.triangles = triangulate({square, tile.hole});

@@ -41,6 +41,8 @@ OpeningTile opening_tile(double d, double tolerance);
 // ([x0, y0, x1, y1]), is the least round the ring grown by kTileMargin.
 inline constexpr double kTileMargin = 0.01;  // mm
 OpeningTile outline_tile(const Ring& ring);
+// Its ring alone, as outline_tile gives it (no triangles: what tells two tiles apart).
+Ring outline_tile_hole(const Ring& ring);
 std::array<double, 4> outline_box(const Ring& ring);
 
 }  // namespace curdle
