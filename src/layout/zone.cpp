@@ -8,29 +8,6 @@ namespace {
 
 constexpr double kEps = 1e-9;
 
-double cross(const std::array<double, 2>& o, const std::array<double, 2>& a,
-             const std::array<double, 2>& b) {
-  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-}
-
-bool on_segment(const std::array<double, 2>& p, const std::array<double, 2>& a,
-                const std::array<double, 2>& b) {
-  return std::min(a[0], b[0]) - kEps <= p[0] && p[0] <= std::max(a[0], b[0]) + kEps &&
-         std::min(a[1], b[1]) - kEps <= p[1] && p[1] <= std::max(a[1], b[1]) + kEps;
-}
-
-bool segments_meet(const std::array<double, 2>& a, const std::array<double, 2>& b,
-                   const std::array<double, 2>& c, const std::array<double, 2>& d) {
-  const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
-  if (((d1 > kEps && d2 < -kEps) || (d1 < -kEps && d2 > kEps)) &&
-      ((d3 > kEps && d4 < -kEps) || (d3 < -kEps && d4 > kEps)))
-    return true;
-  return (std::fabs(d1) <= kEps && on_segment(a, c, d)) ||
-         (std::fabs(d2) <= kEps && on_segment(b, c, d)) ||
-         (std::fabs(d3) <= kEps && on_segment(c, a, b)) ||
-         (std::fabs(d4) <= kEps && on_segment(d, a, b));
-}
-
 }  // namespace
 
 Polygon rect_polygon(const Rect& r) {
@@ -75,51 +52,6 @@ std::optional<std::array<double, 2>> point_inside(const Polygon& ring) {
 bool is_simple(const Polygon& polygon) {
   if (polygon.size() < 3 || polygon_area(polygon) <= kEps) return false;
   return !first_crossing(polygon);
-}
-
-std::optional<std::array<double, 2>> first_crossing(const Polygon& polygon) {
-  const size_t n = polygon.size();
-  if (n < 4) return std::nullopt;
-  double x0 = polygon[0][0], y0 = polygon[0][1], x1 = x0, y1 = y0;
-  for (const auto& p : polygon)
-    x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]),
-    y1 = std::max(y1, p[1]);
-  // About one edge a bucket; an edge goes into every bucket its bounding box touches.
-  const auto side = static_cast<size_t>(std::clamp(std::sqrt(static_cast<double>(n)), 1.0, 1024.0));
-  const double w = std::max(x1 - x0, 1e-9) / static_cast<double>(side);
-  const double h = std::max(y1 - y0, 1e-9) / static_cast<double>(side);
-  auto bucket = [&](double v, double lo, double size) {
-    return std::min(side - 1, static_cast<size_t>(std::max(0.0, (v - lo) / size)));
-  };
-  std::vector<std::vector<uint32_t>> buckets(side * side);
-  for (size_t i = 0; i < n; ++i) {
-    const auto& a = polygon[i];
-    const auto& b = polygon[(i + 1) % n];
-    const size_t bx0 = bucket(std::min(a[0], b[0]) - kEps, x0, w);
-    const size_t bx1 = bucket(std::max(a[0], b[0]) + kEps, x0, w);
-    const size_t by0 = bucket(std::min(a[1], b[1]) - kEps, y0, h);
-    const size_t by1 = bucket(std::max(a[1], b[1]) + kEps, y0, h);
-    for (size_t by = by0; by <= by1; ++by)
-      for (size_t bx = bx0; bx <= bx1; ++bx)
-        buckets[by * side + bx].push_back(static_cast<uint32_t>(i));
-  }
-  for (const auto& edges : buckets)
-    for (size_t p = 0; p < edges.size(); ++p)
-      for (size_t q = p + 1; q < edges.size(); ++q) {
-        const size_t i = std::min(edges[p], edges[q]), j = std::max(edges[p], edges[q]);
-        if (j == i + 1 || (i == 0 && j == n - 1)) continue;
-        const auto& a = polygon[i];
-        const auto& b = polygon[(i + 1) % n];
-        const auto& c = polygon[j];
-        const auto& d = polygon[(j + 1) % n];
-        if (!segments_meet(a, b, c, d)) continue;
-        // Where they meet: the lines' intersection, or a shared end of touching edges.
-        const double den = (b[0] - a[0]) * (d[1] - c[1]) - (b[1] - a[1]) * (d[0] - c[0]);
-        if (std::fabs(den) < 1e-12) return c;
-        const double t = ((c[0] - a[0]) * (d[1] - c[1]) - (c[1] - a[1]) * (d[0] - c[0])) / den;
-        return std::array<double, 2>{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
-      }
-  return std::nullopt;
 }
 
 std::optional<std::vector<Rect>> as_rectangles(const Polygon& polygon) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "layout/layout.h"
+#include "layout/polygon_crossing.h"
 
 namespace curdle {
 
@@ -24,10 +25,6 @@ std::optional<std::array<double, 2>> point_inside(const Polygon& ring);
 
 // Whether no two edges of the polygon cross or touch, other than neighbours at their vertex.
 bool is_simple(const Polygon& polygon);
-// Where two edges that are not neighbours cross or touch first found, or nullopt for a simple
-// polygon; edges are bucketed on a grid, so that a surveyed outline of 100,000 corners is
-// checked in well under a second.
-std::optional<std::array<double, 2>> first_crossing(const Polygon& polygon);
 
 // Whether the segment a-b meets the rectangle shrunk by `inset` on every side (Liang and
 // Barsky's clipping): 0 the closed rectangle, a little more its open inside.
