@@ -36,9 +36,9 @@ bool segments_meet(const Point& a, const Point& b, const Point& c, const Point& 
 struct Grid {
   double x0, y0, w, h;
   uint32_t side;
-  uint32_t column(double x) const { return clamp((x - x0) / w); }
-  uint32_t row(double y) const { return clamp((y - y0) / h); }
-  uint32_t clamp(double v) const {
+  uint32_t column(double x) const { return index((x - x0) / w); }
+  uint32_t row(double y) const { return index((y - y0) / h); }
+  uint32_t index(double v) const {
     return static_cast<uint32_t>(std::clamp(v, 0.0, static_cast<double>(side - 1)));
   }
 };
@@ -49,15 +49,16 @@ template <class F>
 void for_cells_of(const Grid& g, const Point& a, const Point& b, F&& f) {
   const double lo = std::min(a[0], b[0]) - kEps, hi = std::max(a[0], b[0]) + kEps;
   const uint32_t first = g.column(lo), last = g.column(hi);
+  auto y_at = [&](double x) {  // on the edge, x clamped to its ends
+    const double t = std::clamp((x - a[0]) / (b[0] - a[0]), 0.0, 1.0);
+    return a[1] + t * (b[1] - a[1]);
+  };
   for (uint32_t c = first; c <= last; ++c) {
-    const double from = std::max(lo, g.x0 + c * g.w), to = std::min(hi, g.x0 + (c + 1) * g.w);
-    auto y_at = [&](double x) {
-      if (a[0] == b[0]) return a[1];
-      const double t = std::clamp((x - a[0]) / (b[0] - a[0]), 0.0, 1.0);
-      return a[1] + t * (b[1] - a[1]);
-    };
-    double ylo = a[0] == b[0] ? std::min(a[1], b[1]) : std::min(y_at(from), y_at(to));
-    double yhi = a[0] == b[0] ? std::max(a[1], b[1]) : std::max(y_at(from), y_at(to));
+    double ylo = std::min(a[1], b[1]), yhi = std::max(a[1], b[1]);
+    if (a[0] != b[0]) {
+      const double from = std::max(lo, g.x0 + c * g.w), to = std::min(hi, g.x0 + (c + 1) * g.w);
+      ylo = std::min(y_at(from), y_at(to)), yhi = std::max(y_at(from), y_at(to));
+    }
     for (uint32_t r = g.row(ylo - kEps); r <= g.row(yhi + kEps); ++r) f(r * g.side + c);
   }
 }
@@ -86,12 +87,14 @@ std::optional<std::array<double, 2>> first_crossing(const Polygon& polygon) {
   // within 32 an edge or 4 M in all, 32 MB (a polygon of long edges crossing the whole grid).
   Grid g{x0, y0, 0, 0, static_cast<uint32_t>(std::clamp(4 * std::sqrt(double(n)), 1.0, 4096.0))};
   const uint64_t most = std::max<uint64_t>(32 * uint64_t{n}, uint64_t{1} << 22);
+  uint64_t count = 0;
   for (;; g.side = std::max(1u, g.side / 2)) {
     g.w = std::max(x1 - x0, 1e-9) / g.side, g.h = std::max(y1 - y0, 1e-9) / g.side;
-    if (g.side == 1 || entries(g, polygon) <= most) break;
+    count = entries(g, polygon);
+    if (g.side == 1 || count <= most) break;
   }
   std::vector<uint64_t> filed;  // cell << 32 | edge, sorted: each cell's edges side by side
-  filed.reserve(entries(g, polygon));
+  filed.reserve(count);
   for (size_t i = 0; i < n; ++i)
     for_cells_of(g, polygon[i], polygon[(i + 1) % n],
                  [&](uint64_t cell) { filed.push_back(cell << 32 | i); });
