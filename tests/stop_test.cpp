@@ -23,6 +23,16 @@ class StopAfter : public StopRule {
   int left_;
 };
 
+// Whether this thread's rule stops work at a point that asks it now.
+bool stops_now() {
+  try {
+    stop_point_now();
+  } catch (const WorkStopped&) {
+    return true;
+  }
+  return false;
+}
+
 TEST(Stop, WorkStopsWhenItsRuleSaysSoAndNotBefore) {
   StopAfter rule(3);
   StopScope scope(rule);
@@ -53,13 +63,7 @@ TEST(Stop, ARuleHoldsForItsOwnThreadOnly) {
   StopAfter rule(0);
   StopScope scope(rule);
   bool stopped_elsewhere = false;
-  std::thread other([&] {
-    try {
-      stop_point_now();
-    } catch (const WorkStopped&) {
-      stopped_elsewhere = true;
-    }
-  });
+  std::thread other([&] { stopped_elsewhere = stops_now(); });
   other.join();
   EXPECT_FALSE(stopped_elsewhere);
   EXPECT_THROW(stop_point_now(), WorkStopped);
@@ -81,11 +85,7 @@ TEST(Stop, HandedOverWorkTakesTheRuleItCameWith) {
       stopped_without = current_stop_rule() != nullptr;
     }
     const StopScope scope(handed);
-    try {
-      stop_point_now();
-    } catch (const WorkStopped&) {
-      stopped = true;
-    }
+    stopped = stops_now();
   });
   other.join();
   EXPECT_TRUE(stopped);

@@ -2,10 +2,7 @@
 
 namespace curdle {
 
-StopScope::StopScope(StopRule& rule) : outer_(detail::stop_state.rule) {
-  detail::stop_state.rule = &rule;
-  detail::stop_state.countdown = 0;
-}
+StopScope::StopScope(StopRule& rule) : StopScope(&rule) {}
 
 StopScope::StopScope(StopRule* rule) : outer_(detail::stop_state.rule) {
   if (!rule) return;
