@@ -101,9 +101,9 @@ class IfcModel {
                                        "*,*,*,{},$,.PLAN_VIEW.,$)"),
                            ref(model));
     if (l_.kind->ground() == Ground::sheet)
-      profile_context_ = w_.add(FMT_COMPILE("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Profile','Model'"
-                                            ",*,*,*,*,{},$,.MODEL_VIEW.,$)"),
-                                ref(model));
+      hole_context_ = w_.add(FMT_COMPILE("IFCGEOMETRICREPRESENTATIONSUBCONTEXT('Annotation','Model'"
+                                         ",*,*,*,*,{},$,.MODEL_VIEW.,$)"),
+                             ref(model));
     // Added one by one: arguments of one call are evaluated in no fixed order, and the bytes
     // must not depend on the compiler.
     const std::vector<int64_t> unit_ids{w_.add("IFCSIUNIT(*,.LENGTHUNIT.,.MILLI.,.METRE.)"),
@@ -285,8 +285,8 @@ class IfcModel {
     return {g_.solid(profile, base, depth, colour)};
   }
 
-  // An opening's outline, as a 'Profile' curve in the sheet's plane: its hole is in the sheet's
-  // body already, so no reader has to subtract it (a screen has thousands).
+  // An opening's outline, as an 'Annotation' curve in the sheet's plane: its hole is in the
+  // sheet's body already, so no reader has anything to subtract (a screen has thousands).
   std::vector<Ring> opening_rings(const Element& e) const {
     if (e.circle) return {ifc_circle_ring(*e.circle, l_.chord_tolerance)};
     std::vector<Ring> rings;
@@ -297,14 +297,14 @@ class IfcModel {
   int64_t opening_shape(const Element& e) {
     std::vector<int64_t> curves;
     for (const Ring& ring : opening_rings(e)) curves.push_back(g_.shared_polyline(ring));
-    const int64_t rep = w_.add(FMT_COMPILE("IFCSHAPEREPRESENTATION({},'Profile','Curve2D',{})"),
-                               ref(profile_context_), step_refs(curves));
+    const int64_t rep = w_.add(FMT_COMPILE("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',{})"),
+                               ref(hole_context_), step_refs(curves));
     return w_.add(FMT_COMPILE("IFCPRODUCTDEFINITIONSHAPE($,$,({}))"), ref(rep));
   }
 
   // The fabrication sheets a perforated surface is cut into: each a plate whose body has its
-  // openings as voids in its profile (one solid a reader meshes in a moment), each opening
-  // still an element voiding it, with its data.
+  // openings as voids in its profile (one solid a reader meshes in a moment, as punched), each
+  // opening an annotation assigned to it, with its data (element()).
   void sheets() {
     const double t = l_.thickness;
     const Rgb metal{201, 205, 210};
@@ -414,19 +414,20 @@ class IfcModel {
     const int64_t product_shape = framed    ? unit.shape
                                   : opening ? opening_shape(e)
                                             : g_.body(solids(e, parts, piece_colour(l_, e)));
-    const int64_t id = w_.add(FMT_COMPILE("{}({},{},$,{},{},{},{},{})"), c.entity, root(e.id),
-                              text(e.id), text(element_type_of(l_, e)), ref(where),
-                              ref(product_shape), text(e.id), c.predefined);
-    if (opening) {
-      if (e.sheet >= 0)
-        w_.add(FMT_COMPILE("IFCRELVOIDSELEMENT({},$,$,{},{})"), root("void ", e.id),
-               ref(sheet_plates_[static_cast<size_t>(e.sheet)]), ref(id));
-    } else {
-      if (framed)
-        parts_[envelope_.facade_of(e)].push_back(id);  // nested in its façade's wall, only
-      else
-        contained_.push_back(id);
-    }
+    // An opening is no IfcOpeningElement: one voiding a sheet whose body has the hole already
+    // has every reader run a Boolean operation for nothing (web-ifc gives up on a sheet with
+    // more than 150 and says so). It annotates its sheet, whose body is the sheet as punched.
+    const int64_t id =
+        opening ? w_.add(FMT_COMPILE("IFCANNOTATION({},{},$,{},{},{})"), root(e.id), text(e.id),
+                         text(element_type_of(l_, e)), ref(where), ref(product_shape))
+                : w_.add(FMT_COMPILE("{}({},{},$,{},{},{},{},{})"), c.entity, root(e.id),
+                         text(e.id), text(element_type_of(l_, e)), ref(where), ref(product_shape),
+                         text(e.id), c.predefined);
+    if (opening && e.sheet >= 0) holes_[static_cast<size_t>(e.sheet)].push_back(id);
+    if (framed)
+      parts_[envelope_.facade_of(e)].push_back(id);  // nested in its façade's wall, only
+    else
+      contained_.push_back(id);
     const std::string& material = piece_material(l_, e);
     materials_[material].push_back(id);
     if (c.typed) {
@@ -527,7 +528,8 @@ class IfcModel {
     return k == 0 ? contained_ : upper_[k];
   }
 
-  // What groups elements: containment in each storey, materials and covering types.
+  // What groups elements: containment in each storey, each sheet's holes, materials and
+  // covering types.
   void closing_relations() {
     if (!contained_.empty())
       w_.add(FMT_COMPILE("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})"), root("contained"),
@@ -536,6 +538,10 @@ class IfcModel {
       if (!upper_[k].empty())
         w_.add(FMT_COMPILE("IFCRELCONTAINEDINSPATIALSTRUCTURE({},$,$,{},{})"),
                root("contained " + std::to_string(k)), step_refs(upper_[k]), ref(storeys_[k]));
+    for (size_t k = 0; k < holes_.size(); ++k)
+      if (!holes_[k].empty())
+        w_.add(FMT_COMPILE("IFCRELASSIGNSTOPRODUCT({},'holes',$,{},$,{})"),
+               root("holes " + l_.sheets()[k].id), step_refs(holes_[k]), ref(sheet_plates_[k]));
     for (const auto& [name, ids] : materials_) {
       const int64_t m = w_.add(FMT_COMPILE("IFCMATERIAL({},$,$)"), text(name));
       w_.add(FMT_COMPILE("IFCRELASSOCIATESMATERIAL({},$,$,{},{})"), root("material " + name),
@@ -574,8 +580,10 @@ class IfcModel {
   IfcGuidSource guids_;
   fmt::memory_buffer scratch_;  // a shared entity's text, reused
   int64_t owner_ = 0, world_ = 0, out_of_wall_ = 0, along_ = 0, annotation_ = 0;
-  int64_t profile_context_ = 0, project_ = 0, container_ = 0, container_place_ = 0;
+  int64_t hole_context_ = 0, project_ = 0, container_ = 0, container_place_ = 0;
   std::vector<int64_t> contained_, sheet_plates_, sheet_places_;
+  std::vector<std::vector<int64_t>> holes_ =  // each sheet's openings
+      std::vector<std::vector<int64_t>>(l_.sheets().size());
   IfcScreenSheets screen_sheets_{g_, l_};    // a screen on a building: its sheets' bodies
   std::vector<int64_t> storeys_;             // Level 0, 1, ...
   std::vector<double> levels_{0};            // their floors, mm above the base

@@ -2,14 +2,15 @@
 // so that Revit, ArchiCAD, BricsCAD BIM, Vectorworks or Solibri load every element with its
 // data. A project with a site, and façades, screens and blocks in a building's storey or ground
 // works (paving, tiles, parks) in an external space on the site; one element per row of
-// schedule.csv, named and tagged by its ID:
+// schedule.csv, named and tagged by its ID (an annotation has no tag):
 //   tiles, paving and façade pieces  IfcCovering FLOORING, or CLADDING on an upright surface,
 //                                    typed by an IfcCoveringType per material and stock size
 //                                    (with Curdle_Tiling's TileLength and TileWidth: IFC4 has no
 //                                    set for a tile's size);
 //   perforations                     an IfcPlate per fabrication sheet, its openings holes in
-//                                    its profile, each an IfcOpeningElement voiding it
-//                                    (IfcRelVoidsElement) drawn by its outline;
+//                                    its profile, each an IfcAnnotation drawn by its outline
+//                                    and assigned to it (IfcRelAssignsToProduct): nothing for
+//                                    a reader to subtract;
 //   parks                            surfaces as IfcCovering FLOORING, trees as
 //                                    IfcGeographicElement, other objects as IfcFurniture;
 //   blocks                           IfcBuildingElementProxy.

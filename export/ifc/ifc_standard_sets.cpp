@@ -61,8 +61,8 @@ std::vector<IfcSet> standard_sets(std::string_view entity, const IfcMeasures& m)
 
 IfcClass class_of(const Layout& layout, const Element& e) {
   switch (e.form) {
-    case ElementForm::opening:
-      return {"IFCOPENINGELEMENT", ".OPENING."};
+    case ElementForm::opening:  // a sheet's hole, in its body: no opening to subtract
+      return {"IFCANNOTATION", ""};
     case ElementForm::block:
       return {"IFCBUILDINGELEMENTPROXY", ".ELEMENT."};
     case ElementForm::object:

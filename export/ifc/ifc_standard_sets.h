@@ -46,7 +46,7 @@ std::vector<IfcSet> standard_sets(std::string_view entity, const IfcMeasures& m)
 // What an element becomes in the model: its IFC4 class, whose standard sets it carries.
 struct IfcClass {
   const char* entity;      // IFCCOVERING, ...
-  const char* predefined;  // its PredefinedType
+  const char* predefined;  // its PredefinedType (an IfcAnnotation has none)
   bool typed = false;      // grouped by an IfcCoveringType
 };
 

@@ -5,9 +5,11 @@
 // its body one solid (a tree: trunk and canopy) whose extent (from web-ifc's own meshes) is the
 // row's box within 0.01 mm; each element but the openings in a space or a storey (a building's
 // units in them through the wall that nests them, its walls, windows and doors in one); every
-// opening a void of a plate, its outline (a 'Profile' curve) the row's box, and each plate's
-// mesh as open as its sheet (the holes are in its body); every setting-out annotation's
-// IfcIndexedPolyCurve with its arcs as IfcArcIndex through three distinct points on a circle.
+// opening of a sheet an annotation assigned to its plate, its outline (an 'Annotation' curve)
+// the row's box, and each plate's mesh as open as its sheet (the holes are in its body, and no
+// IfcOpeningElement voids it: nothing for a reader to subtract); every setting-out annotation's
+// IfcIndexedPolyCurve with its arcs as IfcArcIndex through three distinct points on a circle;
+// and that web-ifc logs nothing, not even a warning, on any model.
 // Lines are read raw where only a few attributes are needed (and where web-ifc's typed reader
 // has no select values).
 // Prints the slowest model's time to open and mesh.
@@ -17,13 +19,19 @@ import path from 'path';
 import * as W from 'web-ifc';
 import { boxMiss, buildingMiss, csvRows, expectedBox, isBuilding, isFramedScreen } from './schedule_rows.mjs';
 
+// What web-ifc logs, caught: its module prints through console.log as bound when it starts.
+const logged = [];
+const print = console.log;
+console.log = (...words) => {
+  const line = words.join(' ');
+  if (line.startsWith('[WEB-IFC]')) logged.push(line);
+  else print(...words);
+};
 const api = new W.IfcAPI();
 await api.Init();
-// A plate's openings are in its body, so web-ifc's subtraction of their (curve-only) solids
-// finds nothing to take away and says so on every plate: not a fault of the model.
-api.SetLogLevel(W.LogLevel.LOG_LEVEL_OFF);
+api.SetLogLevel(W.LogLevel.LOG_LEVEL_WARN);
 const kTolerance = 1e-5;  // 0.01 mm, in web-ifc's metres
-const kClasses = [W.IFCCOVERING, W.IFCOPENINGELEMENT, W.IFCGEOGRAPHICELEMENT, W.IFCFURNITURE,
+const kClasses = [W.IFCCOVERING, W.IFCANNOTATION, W.IFCGEOGRAPHICELEMENT, W.IFCFURNITURE,
                   W.IFCBUILDINGELEMENTPROXY, W.IFCBUILDINGELEMENTPART];
 
 // Each element's extent in web-ifc's frame (metres, Y up, Z towards the viewer).
@@ -250,6 +258,23 @@ function enclosedVolume(model, id) {
   return volume;
 }
 
+// The openings each plate's IfcRelAssignsToProduct assigns to it (an opening of the schedule
+// and to one plate only): how many.
+function holesOfPlates(model, byId, problems) {
+  const seen = new Set();
+  const rels = api.GetLineIDsWithType(model, W.IFCRELASSIGNSTOPRODUCT);
+  for (let i = 0; i < rels.size(); ++i) {
+    const a = api.GetRawLineData(model, rels.get(i)).arguments;
+    if (api.GetLineType(model, a[6].value) !== W.IFCPLATE) continue;
+    for (const hole of a[4]) {
+      if (byId.get(hole.value)?.type !== W.IFCANNOTATION) problems.push(`#${hole.value}: assigned to a sheet, not an opening`);
+      if (seen.has(hole.value)) problems.push(`#${hole.value}: assigned to two sheets`);
+      seen.add(hole.value);
+    }
+  }
+  return seen.size;
+}
+
 function check(dir) {
   const problems = [];
   const rows = csvRows(fs.readFileSync(path.join(dir, 'schedule.csv'), 'utf8'));
@@ -267,15 +292,16 @@ function check(dir) {
       // Representation, Tag.
       const a = api.GetRawLineData(model, ids.get(i)).arguments;
       const line = { ObjectPlacement: a[5], Representation: a[6] };
-      if (a[2]?.value !== a[7]?.value) problems.push(`#${ids.get(i)}: Name and Tag differ`);
-      if (a[1]?.value !== owners.get(0)) problems.push(`${a[7]?.value}: no owner history`);
-      byTag.set(a[7]?.value, { id: ids.get(i), type, line, material: null });
+      // A sheet's opening is an annotation, known by its name (IFC4 gives an annotation no tag).
+      if (type === W.IFCANNOTATION && a[4]?.value !== 'opening') continue;
+      const tag = type === W.IFCANNOTATION ? a[2]?.value : a[7]?.value;
+      if (a[2]?.value !== tag) problems.push(`#${ids.get(i)}: Name and Tag differ`);
+      if (a[1]?.value !== owners.get(0)) problems.push(`${tag}: no owner history`);
+      byTag.set(tag, { id: ids.get(i), type, line, material: null });
     }
   }
   const building = isBuilding(rows);
   const screen = isFramedScreen(rows);  // its openings are rows, placed on its façades
-  if (building)  // a building's openings are its walls', not schedule rows
-    for (const [tag, e] of byTag) if (e.type === W.IFCOPENINGELEMENT) byTag.delete(tag);
   const byId = new Map([...byTag.values()].map((e) => [e.id, e]));
   const wallOf = building ? wallsOfParts(model) : new Map();
   const sets = setsOf(model, ['Curdle_Element', 'Qto_PlateBaseQuantities']);
@@ -295,8 +321,10 @@ function check(dir) {
     if (String(own.Value) !== row.value) problems.push(`${row.element_id}: value ${own.Value}, schedule ${row.value}`);
     if (own.Lot !== row.lot) problems.push(`${row.element_id}: lot ${own.Lot}, schedule ${row.lot}`);
     if (e.material !== row.material) problems.push(`${row.element_id}: material ${e.material}, schedule ${row.material}`);
-    if (e.type !== W.IFCOPENINGELEMENT) {
-      const holder = heldBy.get(e.id);
+    const holder = heldBy.get(e.id);
+    if (e.type === W.IFCANNOTATION) {
+      if (holder !== W.IFCSPACE && holder !== W.IFCBUILDINGSTOREY) problems.push(`${row.element_id}: not in a space or a storey`);
+    } else {
       if (building && wallOf.get(e.id) !== row.facade) problems.push(`${row.element_id}: a part of wall ${wallOf.get(e.id)}, not ${row.facade}`);
       // A building's unit is in the storeys through its wall, which nests it: not contained too.
       if (building && e.type === W.IFCBUILDINGELEMENTPART) {
@@ -322,7 +350,7 @@ function check(dir) {
     const e = byTag.get(row.element_id);
     if (!e) continue;
     if (building || screen) {  // its face's middle on its mesh's outside, at its course's height
-      const extent = e.type === W.IFCOPENINGELEMENT ? outlineExtent(model, e, frames) : meshes.get(e.id);
+      const extent = e.type === W.IFCANNOTATION ? outlineExtent(model, e, frames) : meshes.get(e.id);
       if (!extent) { problems.push(`${row.element_id}: no mesh`); continue; }
       const miss = buildingMiss(extent, row, curved);
       worst = Math.max(worst, miss);
@@ -334,7 +362,7 @@ function check(dir) {
     const corner = modelPoint(Number(row.x_mm), Number(row.y_mm), upright);
     const off = Math.max(Math.abs(at[0] - corner[0]), Math.abs(at[1] - corner[1]), Math.abs(at[2] - corner[2]));
     if (off > 0.01) problems.push(`${row.element_id}: placed ${off.toFixed(3)} mm from its corner`);
-    const extent = e.type === W.IFCOPENINGELEMENT ? outlineExtent(model, e, frames) : meshes.get(e.id);
+    const extent = e.type === W.IFCANNOTATION ? outlineExtent(model, e, frames) : meshes.get(e.id);
     if (!extent) { problems.push(`${row.element_id}: no mesh`); continue; }
     const miss = boxMiss(extent, expectedBox(row, upright));
     worst = Math.max(worst, miss);
@@ -343,8 +371,10 @@ function check(dir) {
   const arcs = annotationArcs(model, problems);
   const openings = rows.filter((r) => r.element_type === 'opening').length;
   const voids = api.GetLineIDsWithType(model, W.IFCRELVOIDSELEMENT).size();
-  if (!building && voids !== openings) problems.push(`${voids} voids for ${openings} openings`);
+  if (!building && voids) problems.push(`${voids} voids: a reader would subtract what the sheets' bodies have cut`);
   const plates = api.GetLineIDsWithType(model, W.IFCPLATE);
+  const holes = holesOfPlates(model, byId, problems);
+  if (plates.size() && holes !== openings) problems.push(`${holes} openings assigned to sheets, ${openings} in the schedule`);
   for (let i = 0; i < plates.size(); ++i) {
     const plate = plates.get(i);
     const { NetArea: net, GrossArea: gross } = sets.get(plate)?.Qto_PlateBaseQuantities ?? {};
@@ -357,18 +387,19 @@ function check(dir) {
     if (!(Math.abs(area - net) <= 0.05 * (gross - net))) problems.push(`sheet #${plate}: ${area.toFixed(5)} m² of metal, ${net} net of ${gross}`);
   }
   api.CloseModel(model);
+  for (const line of logged.splice(0)) problems.push(`web-ifc logged: ${line}`);
   const name = path.basename(dir);
   if (problems.length) {
     console.log(`${name}: ${problems.length} problems`);
     for (const p of problems.slice(0, 10)) console.log('  ' + p);
   } else {
-    console.log(`${name}: ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)${built ? `, ${built.walls} walls with their ${built.openings} openings filled (windows and doors by storey: ${built.storeys})` : ''}${voids ? `, ${voids} voids` : ''}${plates.size() ? `, ${plates.size()} sheets as punched` : ''}${arcs ? `, ${arcs} arcs set out` : ''}; opened and meshed in ${(meshed / 1000).toFixed(2)} s`);
+    console.log(`${name}: ${rows.length} elements agree (extents within ${(worst * 1000).toFixed(4)} mm)${built ? `, ${built.walls} walls with their ${built.openings} openings filled (windows and doors by storey: ${built.storeys})` : ''}${plates.size() ? `, ${plates.size()} sheets as punched with ${holes} openings assigned` : ''}${arcs ? `, ${arcs} arcs set out` : ''}; opened and meshed in ${(meshed / 1000).toFixed(2)} s`);
   }
   slowest = Math.max(slowest, meshed / 1000);
   return problems.length === 0;
 }
 
-// An opening's extent from its 'Profile' outline, in web-ifc's frame (metres, Y up, Z towards
+// An opening's extent from its 'Annotation' outline, in web-ifc's frame (metres, Y up, Z towards
 // the viewer), as the meshes give the others'.
 function outlineExtent(model, e, frames) {
   const [o, x, y] = placementFrame(model, e.line.ObjectPlacement.value, frames);

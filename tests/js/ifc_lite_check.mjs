@@ -2,8 +2,9 @@
 // IFC reader independent of web-ifc) beside the schedule.csv written with it, and checks:
 // one element per schedule row, named and tagged by its ID, with its value, lot and material;
 // its common property set's Reference and its base quantities' area as the schedule's; its
-// mesh's extent equal to the row's box within 0.01 mm (openings are outlines, not bodies: the
-// sheets' meshes carry their holes); a building's windows and doors each in the storey its base
+// mesh's extent equal to the row's box within 0.01 mm (a sheet's openings are annotations drawn
+// by their outlines, each assigned to its sheet, and the sheets' meshes carry their holes: no
+// IfcOpeningElement voids a sheet); a building's windows and doors each in the storey its base
 // stands in, as IFClite's spatial hierarchy has it. And a schema check of every entity in the file against
 // IFC4's EXPRESS schema as IFClite's registry holds it: a known, instantiable entity, with as
 // many attributes as the schema gives it, none left out that is not optional, an aggregate
@@ -19,10 +20,9 @@ import { boxMiss, buildingMiss, csvRows, expectedBox, isBuilding, isFramedScreen
 await init({ module_or_path: fs.readFileSync(new URL('./node_modules/@ifc-lite/wasm/pkg/ifc-lite_bg.wasm', import.meta.url)) });
 const geometry = new IfcAPI();
 const kTolerance = 1e-5;  // 0.01 mm, in metres
-const kClasses = ['IFCCOVERING', 'IFCOPENINGELEMENT', 'IFCGEOGRAPHICELEMENT', 'IFCFURNITURE', 'IFCBUILDINGELEMENTPROXY', 'IFCBUILDINGELEMENTPART'];
+const kClasses = ['IFCCOVERING', 'IFCANNOTATION', 'IFCGEOGRAPHICELEMENT', 'IFCFURNITURE', 'IFCBUILDINGELEMENTPROXY', 'IFCBUILDINGELEMENTPART'];
 const kStandardSets = new Map([
   ['IFCCOVERING', ['Pset_CoveringCommon', 'Qto_CoveringBaseQuantities', 'NetArea']],
-  ['IFCOPENINGELEMENT', ['Pset_OpeningElementCommon', 'Qto_OpeningElementBaseQuantities', 'Area']],
   ['IFCBUILDINGELEMENTPROXY', ['Pset_BuildingElementProxyCommon', 'Qto_BuildingElementProxyQuantities', 'NetSurfaceArea']],
 ]);
 
@@ -154,13 +154,16 @@ async function check(dir) {
   for (const type of kClasses)
     for (const id of store.entityIndex.byType.get(type) ?? []) {
       const a = Lite.extractEntityAttributesOnDemand(store, id);
+      if (type === 'IFCANNOTATION') {  // a sheet's opening, by its name (IFC4 gives no tag)
+        if (a.objectType === 'opening') byTag.set(a.name, { id, type });
+        continue;
+      }
       if (a.name !== a.tag) problems.push(`#${id}: Name and Tag differ`);
       byTag.set(a.tag, { id, type });
     }
   const building = isBuilding(rows);
   let curved = false;
   if (building) {  // its openings are its walls', not schedule rows: one wall per façade
-    for (const [tag, e] of byTag) if (e.type === 'IFCOPENINGELEMENT') byTag.delete(tag);
     const facades = JSON.parse(fs.readFileSync(path.join(dir, 'report.json'), 'utf8')).layout.facades;
     curved = facades.some((f) => f.curved);
     const walls = store.entityIndex.byType.get('IFCWALL')?.length ?? 0;
@@ -168,7 +171,7 @@ async function check(dir) {
   }
   if (byTag.size !== rows.length) problems.push(`${byTag.size} elements for ${rows.length} schedule rows`);
   const meshes = extents(bytes);
-  const bodies = rows.filter((r) => byTag.get(r.element_id)?.type !== 'IFCOPENINGELEMENT');
+  const bodies = rows.filter((r) => byTag.get(r.element_id)?.type !== 'IFCANNOTATION');
   const first = bodies.find((r) => meshes.has(byTag.get(r.element_id)?.id));
   const upright = first && boxMiss(meshes.get(byTag.get(first.element_id).id), expectedBox(first, true)) <
                   boxMiss(meshes.get(byTag.get(first.element_id).id), expectedBox(first, false));
@@ -190,7 +193,7 @@ async function check(dir) {
       const net = quantities?.quantities.find((q) => q.name === area)?.value;
       if (!(Math.abs(net - Number(row.area_m2)) <= 1e-6 + 1e-6 * net)) problems.push(`${row.element_id}: ${qto}.${area} ${net}, schedule ${row.area_m2}`);
     }
-    if (e.type === 'IFCOPENINGELEMENT') continue;
+    if (e.type === 'IFCANNOTATION') continue;
     const extent = meshes.get(e.id);
     if (!extent) { problems.push(`${row.element_id}: no mesh`); continue; }
     const miss = building ? buildingMiss(extent, row, curved) : boxMiss(extent, expectedBox(row, upright));
@@ -198,6 +201,9 @@ async function check(dir) {
     if (miss > kTolerance) problems.push(`${row.element_id}: extent off by ${(miss * 1000).toFixed(4)} mm`);
   }
   const storeys = building ? storeyProblems(store, meshes, problems) : '';
+  // No sheet voided by what its body has cut already: no Boolean operation for a reader to run.
+  if (!building && store.entityIndex.byType.get('IFCRELVOIDSELEMENT')?.length)
+    problems.push(`${store.entityIndex.byType.get('IFCRELVOIDSELEMENT').length} voids: a reader would subtract what the sheets' bodies have cut`);
   for (const plate of store.entityIndex.byType.get('IFCPLATE') ?? [])
     if (!meshes.has(plate)) problems.push(`sheet #${plate}: no mesh`);
   if (isFramedScreen(rows)) {  // a screen on a building: each opening's middle in a sheet's mesh
