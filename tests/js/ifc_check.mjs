@@ -3,8 +3,8 @@
 // its ID, with the model's owner history; its value, lot and material as the schedule gives
 // them (the standard sets are ifc_lite_check.mjs's to read); its placement at its own corner;
 // its body one solid (a tree: trunk and canopy) whose extent (from web-ifc's own meshes) is the
-// row's box within 0.01 mm; each element but the openings in a space or a storey (a building's
-// units in them through the wall that nests them, its walls, windows and doors in one); every
+// row's box within 0.01 mm; each element in a space or a storey (a building's units in them
+// through the wall that nests them, its walls, windows and doors in one); every
 // opening of a sheet an annotation assigned to its plate, its outline (an 'Annotation' curve)
 // the row's box, and each plate's mesh as open as its sheet (the holes are in its body, and no
 // IfcOpeningElement voids it: nothing for a reader to subtract); every setting-out annotation's
@@ -209,6 +209,10 @@ function buildingProblems(model, dir, problems) {
                            ['windows and doors', count(W.IFCWINDOW) + count(W.IFCDOOR)]])
     if (n !== openings) problems.push(`${n} ${what} for ${openings} openings in the report`);
   if (count(W.IFCBUILDINGSTOREY) < 1) problems.push('no storey');
+  // The walls meshed, their openings cut where a wall has a body (a backing leaf), so that
+  // whatever web-ifc logs doing it is caught.
+  const walls = api.GetLineIDsWithType(model, W.IFCWALL);
+  extents(model, Array.from({ length: walls.size() }, (_, i) => walls.get(i)));
   // Walls, windows and doors each in a storey (the one their base stands in).
   const heldBy = containers(model);
   for (const type of [W.IFCWALL, W.IFCWINDOW, W.IFCDOOR]) {
