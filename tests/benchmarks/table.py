@@ -16,7 +16,7 @@ Every goal is a ratio, so that the table holds on any machine within its noise: 
 peer where there is one, else to the yardstick (YARDSTICK below: a fixed single-core Python loop
 of a few tenths of a second, no IO, as a whole process), measured in the same minute as the
 row: the best of its runs there (best_beside), as each row is the best of its own (the fastest
-of curdle_bench's repetitions, and of the peer's runs). The absolute times stand beside the
+of curdle_bench's runs, and of the peer's). The absolute times stand beside the
 ratios for reading.
 
 Usage: table.py [--build DIR] [--peer DIR] [--accept] [--readme] [--no-peer] [--no-page]
@@ -44,7 +44,7 @@ RESULTS = ROOT / "tests" / "benchmarks" / "results.json"
 BEGIN, END = "<!-- benchmark table: begin -->", "<!-- benchmark table: end -->"
 WORSE = 1.2  # a row more than 20 % worse than its committed result fails
 AGREE = 0.25  # two machines' ratios are to agree within 25 %
-BENCH_RUNS = 3  # curdle_bench's repetitions, of which each row takes the fastest
+BENCH_RUNS = 3  # curdle_bench's runs, of which each row takes the fastest
 PEER_RUNS = 2  # the peer's runs, of which each row takes the fastest (its cube takes 25 s)
 
 
@@ -80,21 +80,21 @@ def once_ms(args):
 
 
 def yardstick_ms():
-    return best_ms(YARDSTICK, runs=3)
+    return best_ms(YARDSTICK, runs=5)
 
 
 # The rows are each the best of their runs, so the yardstick beside them is the best of its runs
 # around them too: the best of the yardsticks taken before and after a row, or of the five taken
-# nearest a pattern's (within half a minute). On the shared machine the yardstick's best of three
-# moved between 125 and 250 ms from one minute to the next, and a ratio to one such measurement
-# moved with it.
+# nearest a pattern's (within half a minute), or between curdle_bench's runs. On the shared
+# machine the yardstick's best of three moved between 125 and 250 ms from one minute to the next,
+# and a ratio to one such measurement moved with it; it is the best of five.
 def best_beside(*measured):
     return min(measured)
 
 
 def best_repetitions(benchmarks):
-    """Each benchmark's fastest repetition, as a row is the best of its runs (a benchmark's mean
-    moved by a third from one run to the next on the shared machine)."""
+    """Each benchmark's fastest run or repetition, as a row is the best of its runs (a
+    benchmark's mean moved by a third from one run to the next on the shared machine)."""
     best = {}
     for b in benchmarks:
         if b.get("run_type", "iteration") != "iteration":
@@ -140,13 +140,17 @@ def engine_and_processes(build, peer_dir, rows, with_peer, work):
     subprocess.run([py, str(ROOT / "patterns/sites/make_sites.py"), str(survey), "--survey"],
                    check=True, stdout=subprocess.DEVNULL)
     env = dict(os.environ, CURDLE_SURVEY_DIR=str(survey))
-    before = yardstick_ms()
-    bench = json.loads(subprocess.run([str(build / "tests/curdle_bench"), "--benchmark_format=json",
-                                       f"--benchmark_repetitions={BENCH_RUNS}"],
-                                      capture_output=True, text=True, check=True, env=env).stdout)
-    in_process = best_beside(before, yardstick_ms())  # the benchmarks run between the two
+    # curdle_bench run BENCH_RUNS times between yardsticks: a yardstick taken only before and
+    # after the benchmarks' minute found it 124 ms in one run and 206 ms in the next.
+    sticks, runs = [yardstick_ms()], []
+    for _ in range(BENCH_RUNS):
+        runs += json.loads(subprocess.run([str(build / "tests/curdle_bench"), "--benchmark_format=json"],
+                                          capture_output=True, text=True, check=True,
+                                          env=env).stdout)["benchmarks"]
+        sticks.append(yardstick_ms())
+    in_process = best_beside(*sticks)
     ours = {}
-    for b in best_repetitions(bench["benchmarks"]):
+    for b in best_repetitions(runs):
         ours.setdefault(b["name"].split("/")[0], b)
         ours["/".join(b["name"].split("/")[:2])] = b
     curdle = str(build / "curdle")
@@ -159,11 +163,15 @@ def engine_and_processes(build, peer_dir, rows, with_peer, work):
     Path(cases, "cube.toml").write_text(
         f'name = "cube"\n[lattice]\nbase = 4\ndimension = 3\n[[curds]]\nname = "c"\nprobabilities = [{p08}]\n')
     out = str(Path(work, "out"))
+    # The plane's whole run, 20-30 ms, and start-up, 3 ms, the best of more runs than the cube's
+    # quarter of a second: the shorter a run, the more of it one busy moment of the host takes.
     whole = {name: best_ms([curdle, "generate", str(cases / f"{name}.toml"), "--outputs",
-                            "report.json", "--out", out]) for name in ("plane", "cube")}
-    help_ms = best_ms([curdle, "--help"])
-    version_ms = best_ms([curdle, "--version"])
-    startup = yardstick_ms()
+                            "report.json", "--out", out], runs=runs)
+             for name, runs in (("plane", 15), ("cube", 5))}
+    before = yardstick_ms()
+    help_ms = best_ms([curdle, "--help"], runs=15)
+    version_ms = best_ms([curdle, "--version"], runs=15)
+    startup = best_beside(before, yardstick_ms())
     peer = {}
     if with_peer:
         # The peer's best of its runs too, as ours are.
