@@ -166,8 +166,8 @@ def engine_and_processes(build, peer_dir, rows, with_peer, work):
     # The plane's whole run, 20-30 ms, and start-up, 3 ms, the best of more runs than the cube's
     # quarter of a second: the shorter a run, the more of it one busy moment of the host takes.
     whole = {name: best_ms([curdle, "generate", str(cases / f"{name}.toml"), "--outputs",
-                            "report.json", "--out", out], runs=runs)
-             for name, runs in (("plane", 15), ("cube", 5))}
+                            "report.json", "--out", out], runs=tries)
+             for name, tries in (("plane", 15), ("cube", 5))}
     before = yardstick_ms()
     help_ms = best_ms([curdle, "--help"], runs=15)
     version_ms = best_ms([curdle, "--version"], runs=15)

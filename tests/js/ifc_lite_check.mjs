@@ -1,7 +1,8 @@
 // Reads every layout.ifc back with IFClite (@ifc-lite/parser and its WASM geometry, a second
 // IFC reader independent of web-ifc) beside the schedule.csv written with it, and checks:
 // one element per schedule row, named and tagged by its ID, with its value, lot and material;
-// its common property set's Reference and its base quantities' area as the schedule's; its
+// its common property set's Reference and its base quantities' area as the schedule's (a
+// sheet's opening: curdle's quantities' area); its
 // mesh's extent equal to the row's box within 0.01 mm (a sheet's openings are annotations drawn
 // by their outlines, each assigned to its sheet, and the sheets' meshes carry their holes: no
 // IfcOpeningElement voids a sheet); a building's windows and doors each in the storey its base
@@ -24,6 +25,7 @@ const kClasses = ['IFCCOVERING', 'IFCANNOTATION', 'IFCGEOGRAPHICELEMENT', 'IFCFU
 const kStandardSets = new Map([
   ['IFCCOVERING', ['Pset_CoveringCommon', 'Qto_CoveringBaseQuantities', 'NetArea']],
   ['IFCBUILDINGELEMENTPROXY', ['Pset_BuildingElementProxyCommon', 'Qto_BuildingElementProxyQuantities', 'NetSurfaceArea']],
+  ['IFCANNOTATION', [null, 'Curdle_Quantities', 'NetArea']],  // IFC4 has no set for an annotation
 ]);
 
 // The parser reports its phases on the console (and that a site's ground works have no
@@ -188,7 +190,7 @@ async function check(dir) {
     const standard = kStandardSets.get(e.type);
     if (standard) {
       const [pset, qto, area] = standard;
-      if (sets[pset]?.Reference !== row.element_id) problems.push(`${row.element_id}: no ${pset} with its reference`);
+      if (pset && sets[pset]?.Reference !== row.element_id) problems.push(`${row.element_id}: no ${pset} with its reference`);
       const quantities = Lite.extractQuantitiesOnDemand(store, e.id).find((q) => q.name === qto);
       const net = quantities?.quantities.find((q) => q.name === area)?.value;
       if (!(Math.abs(net - Number(row.area_m2)) <= 1e-6 + 1e-6 * net)) problems.push(`${row.element_id}: ${qto}.${area} ${net}, schedule ${row.area_m2}`);
