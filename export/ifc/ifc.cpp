@@ -17,6 +17,7 @@
 #include "export/ifc/ifc_geometry.h"
 #include "export/ifc/ifc_screen.h"
 #include "export/ifc/ifc_standard_sets.h"
+#include "export/ifc/punched_sheets.h"
 #include "export/ifc/step_file.h"
 #include "layout/contour.h"
 #include "layout/framed_sheet.h"
@@ -287,16 +288,10 @@ class IfcModel {
 
   // An opening's outline, as an 'Annotation' curve in the sheet's plane: its hole is in the
   // sheet's body already, so no reader has anything to subtract (a screen has thousands).
-  std::vector<Ring> opening_rings(const Element& e) const {
-    if (e.circle) return {ifc_circle_ring(*e.circle, l_.chord_tolerance)};
-    std::vector<Ring> rings;
-    if (e.outline)
-      for (const Outline& part : outline_parts(*e.outline)) rings.push_back(part.rings.front());
-    return rings;
-  }
   int64_t opening_shape(const Element& e) {
     std::vector<int64_t> curves;
-    for (const Ring& ring : opening_rings(e)) curves.push_back(g_.shared_polyline(ring));
+    for (const Ring& ring : opening_rings(e, l_.chord_tolerance))
+      curves.push_back(g_.shared_polyline(ring));
     const int64_t rep = w_.add(FMT_COMPILE("IFCSHAPEREPRESENTATION({},'Annotation','Curve2D',{})"),
                                ref(hole_context_), step_refs(curves));
     return w_.add(FMT_COMPILE("IFCPRODUCTDEFINITIONSHAPE($,$,({}))"), ref(rep));
@@ -310,26 +305,16 @@ class IfcModel {
     const Rgb metal{201, 205, 210};
     const int64_t material =
         w_.add(FMT_COMPILE("IFCMATERIAL({},$,'metal')"), text(fmt::format("sheet, {:g} mm", t)));
-    std::vector<std::vector<Ring>> holes(l_.sheets().size());
-    // Merged openings' islands, per sheet: metal the outline leaves standing.
-    std::vector<std::vector<Outline>> islands(l_.sheets().size());
-    for (const Element& e : l_.elements) {
-      if (e.form != ElementForm::opening || e.sheet < 0) continue;
-      for (const Ring& ring : opening_rings(e)) holes[static_cast<size_t>(e.sheet)].push_back(ring);
-      if (e.outline)
-        for (const Outline& part : outline_parts(*e.outline))
-          for (size_t i = 1; i < part.rings.size(); ++i)
-            islands[static_cast<size_t>(e.sheet)].push_back({{part.rings[i]}, 0});
-    }
+    const bool framed = l_.envelope.has_value();  // its bodies are screen_sheets_'
+    const std::vector<std::vector<Outline>> punched =
+        framed ? std::vector<std::vector<Outline>>{} : punched_sheets(l_);
     for (size_t k = 0; k < l_.sheets().size(); ++k) {
       const FabricationSheet& s = l_.sheets()[k];
-      const bool framed = l_.envelope.has_value();
       const int64_t where = framed ? w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"),
                                             ref(container_place_), ref(world_))
                                    : placement_at(s.area.x, s.area.y);
-      const int64_t body =
-          framed ? screen_sheets_.body(k, metal)
-                 : g_.body({g_.solid(sheet_profile(s, holes[k], islands[k]), 0, t, metal)});
+      const int64_t body = framed ? screen_sheets_.body(k, metal)
+                                  : g_.body({g_.solid(g_.profile(punched[k]), 0, t, metal)});
       const int64_t plate =
           w_.add(FMT_COMPILE("IFCPLATE({},{},$,'perforated sheet',{},{},{},.SHEET.)"),
                  root("sheet " + s.id), text(s.id), ref(where), ref(body), text(s.id));
@@ -353,26 +338,6 @@ class IfcModel {
     return w_.add(FMT_COMPILE("IFCLOCALPLACEMENT({},{})"),
                   ref(sheet_places_[static_cast<size_t>(e.sheet)]),
                   ref(g_.axes(pose.origin, {dy, -dx, 0}, {dx, dy, 0})));
-  }
-
-  // A sheet (its rectangle, or each part of its outline) less the holes inside it; the islands
-  // of merged openings inside it as parts of their own.
-  int64_t sheet_profile(const FabricationSheet& s, const std::vector<Ring>& holes,
-                        const std::vector<Outline>& islands) {
-    std::vector<Outline> parts;
-    if (s.outline.empty()) {
-      parts.push_back({{rect_polygon(s.area)}, s.area.area()});
-    } else {
-      Outline whole;
-      whole.rings = s.outline;
-      parts = outline_parts(whole);
-    }
-    for (Outline& part : parts)
-      for (const Ring& hole : holes)
-        if (contains(part.rings.front(), hole.front()[0], hole.front()[1]))
-          part.rings.push_back(hole);
-    parts.insert(parts.end(), islands.begin(), islands.end());
-    return g_.profile(parts);
   }
 
   bool has_arc_contours() const {
