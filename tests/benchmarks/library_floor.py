@@ -82,12 +82,17 @@ def shares_in_report(report):
     return {name: n / total for name, n in samples.items()}
 
 
+def group_of(name):
+    """"own", "process" or "libraries": whose a shared object's samples are."""
+    return "own" if OWN.match(name) else "process" if PROCESS.match(name) else "libraries"
+
+
 def grouped(shares):
     """{"own", "process", "libraries"}: the shares of curdle's own code, the process's and the
     writers' libraries."""
     groups = {"own": 0, "process": 0, "libraries": 0}
     for name, share in shares.items():
-        groups["own" if OWN.match(name) else "process" if PROCESS.match(name) else "libraries"] += share
+        groups[group_of(name)] += share
     return groups
 
 
@@ -127,7 +132,7 @@ def main():
             goal = GOALS.get(recipe, 2)
             floor = groups["libraries"] * cpu / cores / stick
             with_process = (groups["libraries"] + groups["process"]) * cpu / cores / stick
-            libraries = {n: v for n, v in shares.items() if not OWN.match(n) and not PROCESS.match(n)}
+            libraries = {n: v for n, v in shares.items() if group_of(n) == "libraries"}
             top = ", ".join(f"{name} {share:.0%}" for name, share in
                             sorted(libraries.items(), key=lambda kv: -kv[1])[:5])
             print(f"\n{recipe}: {wall * 1e3:.0f} ms whole = {wall / stick:.1f} yardsticks "
