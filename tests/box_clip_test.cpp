@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
 #include "layout/zone.h"
 
 namespace curdle {
@@ -33,6 +36,64 @@ TEST(BoxClipTest, SeveralPiecesAreLeftToTheCaller) {
   // Touching the box's side from outside is not an exact clip either.
   const Polygon touching{{0, 0}, {4, 0}, {5, 2}, {6, 0}, {10, 0}, {10, -5}, {0, -5}};
   EXPECT_FALSE(clip_to_box(touching, Rect{3, 2, 4, 4}));
+}
+
+// A surveyed outline's kind of polygon: 3,000 corners round a wavy circle, each a little off
+// the wave.
+Polygon wobbly_outline() {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> wobble(-0.002, 0.002);
+  Polygon p;
+  for (int i = 0; i < 3000; ++i) {
+    const double a = 2 * M_PI * i / 3000;
+    const double r = 20000 * (1 + 0.15 * std::sin(7 * a) + wobble(random));
+    p.push_back({1234.5 + r * std::cos(a), -987.25 + r * std::sin(a)});
+  }
+  return p;
+}
+
+TEST(BoxClipTest, TheIndexedClipIsThePlainOneToTheBit) {
+  const Polygon outline = wobbly_outline();
+  const PolygonIndex index(outline);
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> at(-30000, 30000), size(0.5, 4000);
+  int clipped = 0, whole = 0, empty = 0, left = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Rect box{at(random), at(random), size(random), size(random)};
+    const std::optional<Polygon> plain = clip_to_box(outline, box);
+    ASSERT_EQ(clip_to_box(index, box), plain) << box.x << ", " << box.y;
+    if (!plain)
+      ++left;
+    else if (plain->empty())
+      ++empty;
+    else if (*plain == rect_polygon(box))
+      ++whole;
+    else
+      ++clipped;
+  }
+  // Every way a clip can end is met, each many times.
+  EXPECT_GT(clipped, 20);
+  EXPECT_GT(whole, 20);
+  EXPECT_GT(empty, 20);
+  EXPECT_GT(left, 20);
+  // The box round everything, and boxes off the outline's bounds on every side.
+  for (const Rect& box : {Rect{-40000, -40000, 80000, 80000}, Rect{30000, 0, 10, 10},
+                          Rect{-40000, 0, 10, 10}, Rect{0, 30000, 10, 10}, Rect{0, -40000, 10, 10}})
+    EXPECT_EQ(clip_to_box(index, box), clip_to_box(outline, box));
+}
+
+TEST(BoxClipTest, AnIndexSaysWhereAPointIsAsThePolygonDoes) {
+  const Polygon outline = wobbly_outline();
+  const PolygonIndex index(outline);
+  std::mt19937_64 random(13);
+  std::uniform_real_distribution<double> at(-30000, 30000);
+  for (int k = 0; k < 20000; ++k) {
+    const double x = at(random), y = at(random);
+    ASSERT_EQ(index.contains_as_polygon(x, y), contains(outline, x, y)) << x << ", " << y;
+  }
+  for (const auto& [x, y] : outline) {  // on the corners themselves
+    EXPECT_EQ(index.contains_as_polygon(x, y), contains(outline, x, y));
+  }
 }
 
 }  // namespace

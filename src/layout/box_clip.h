@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "layout/layout.h"
+#include "layout/zone.h"
 
 namespace curdle {
 
@@ -15,5 +16,9 @@ namespace curdle {
 // do not meet; the box's corners when it lies inside the polygon; nullopt when the part may
 // fall in several pieces (or touches the box's side), where the caller uses the whole polygon.
 std::optional<Polygon> clip_to_box(const Polygon& polygon, const Rect& box);
+
+// The same, to the bit, for a polygon with an index of its edges: the edges far from the box,
+// which the count of its corners inside and of entries never counts, are not looked at.
+std::optional<Polygon> clip_to_box(const PolygonIndex& index, const Rect& box);
 
 }  // namespace curdle

@@ -186,7 +186,9 @@ Rect bounds_of(const std::vector<std::array<double, 2>>& points) {
 void cut_with(CGAL::Polygon_set_2<Kernel>& set, const Rect& piece, const PolygonCuts& cuts) {
   const Rect box{piece.x - 1, piece.y - 1, piece.w + 2, piece.h + 2};
   if (!cuts.outline.empty()) {
-    const std::optional<Polygon> near = clip_to_box(cuts.outline, box);
+    const PolygonIndex* index = cuts.outline_index();
+    const std::optional<Polygon> near =
+        index ? clip_to_box(*index, box) : clip_to_box(cuts.outline, box);
     if (near && near->empty()) {
       set.clear();
       return;

@@ -40,6 +40,7 @@ struct PolygonCuts {
   void index();
   Crossing outline_crossing(const Rect& r) const;
   Crossing hole_crossing(size_t hole, const Rect& r) const;
+  const PolygonIndex* outline_index() const { return outline_index_.get(); }
 
  private:
   std::shared_ptr<const PolygonIndex> outline_index_;

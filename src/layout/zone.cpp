@@ -189,7 +189,29 @@ Crossing PolygonIndex::crossing(const Rect& r) const {
 bool PolygonIndex::contains(double x, double y) const {
   const size_t n = polygon_.size();
   if (n == 0 || y < bounds_.y || y > bounds_.top() || x > bounds_.right()) return false;
-  // The even-odd rule of curdle::contains, over the edges of y's band alone.
+  return contains_as_polygon(x, y);
+}
+
+std::vector<uint32_t> PolygonIndex::edges_near(const Rect& r) const {
+  std::vector<uint32_t> edges;
+  if (polygon_.empty() || r.right() < bounds_.x || r.x > bounds_.right() || r.top() < bounds_.y ||
+      r.y > bounds_.top())
+    return edges;
+  for (size_t row = row_of(r.y); row <= row_of(r.top()); ++row)
+    for (size_t col = column_of(r.x); col <= column_of(r.right()); ++col)
+      edges.insert(edges.end(), cells_[row * columns_ + col].begin(),
+                   cells_[row * columns_ + col].end());
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+bool PolygonIndex::contains_as_polygon(double x, double y) const {
+  const size_t n = polygon_.size();
+  if (n == 0 || bands_.empty()) return false;
+  // The even-odd rule of curdle::contains, over the edges of y's band alone: an edge straddling
+  // y has its lower end's row at or below y's and its upper end's at or above (row_of rises
+  // with y), so it is filed under y's row.
   bool in = false;
   for (const uint32_t i : bands_[row_of(y)]) {
     const auto& a = polygon_[(i + 1) % n];

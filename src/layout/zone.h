@@ -50,6 +50,13 @@ class PolygonIndex {
   explicit PolygonIndex(const Polygon& polygon);
   Crossing crossing(const Rect& r) const;
   bool contains(double x, double y) const;
+  // curdle::contains(polygon, x, y) to the bit: its even-odd rule over y's band of edges alone
+  // (an edge that straddles y is always in it), with no shortcut of its own.
+  bool contains_as_polygon(double x, double y) const;
+  // The edges (edge i runs from corner i to i + 1) filed under the cells the rectangle covers,
+  // each once, in order: every edge that meets it or starts in it, and others near it.
+  std::vector<uint32_t> edges_near(const Rect& r) const;
+  const Polygon& polygon() const { return polygon_; }
 
  private:
   Polygon polygon_;
