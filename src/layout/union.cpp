@@ -166,6 +166,10 @@ Crossing PolygonCuts::outline_crossing(const Rect& r) const {
   return outline_index_ ? outline_index_->crossing(r) : crossing(r, outline);
 }
 
+std::optional<Polygon> PolygonCuts::outline_near(const Rect& box) const {
+  return outline_index_ ? clip_to_box(*outline_index_, box) : clip_to_box(outline, box);
+}
+
 Crossing PolygonCuts::hole_crossing(size_t hole, const Rect& r) const {
   return hole < hole_index_.size() ? hole_index_[hole]->crossing(r) : crossing(r, holes[hole]);
 }
@@ -186,9 +190,7 @@ Rect bounds_of(const std::vector<std::array<double, 2>>& points) {
 void cut_with(CGAL::Polygon_set_2<Kernel>& set, const Rect& piece, const PolygonCuts& cuts) {
   const Rect box{piece.x - 1, piece.y - 1, piece.w + 2, piece.h + 2};
   if (!cuts.outline.empty()) {
-    const PolygonIndex* index = cuts.outline_index();
-    const std::optional<Polygon> near =
-        index ? clip_to_box(*index, box) : clip_to_box(cuts.outline, box);
+    const std::optional<Polygon> near = cuts.outline_near(box);
     if (near && near->empty()) {
       set.clear();
       return;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "layout/layout.h"
@@ -40,7 +41,8 @@ struct PolygonCuts {
   void index();
   Crossing outline_crossing(const Rect& r) const;
   Crossing hole_crossing(size_t hole, const Rect& r) const;
-  const PolygonIndex* outline_index() const { return outline_index_.get(); }
+  // The outline's part within the box (box_clip.h's clip_to_box, through the index once built).
+  std::optional<Polygon> outline_near(const Rect& box) const;
 
  private:
   std::shared_ptr<const PolygonIndex> outline_index_;

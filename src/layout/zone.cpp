@@ -174,11 +174,14 @@ size_t PolygonIndex::row_of(double y) const {
                                  0.0, (y - bounds_.y) / bounds_.h * static_cast<double>(rows_))));
 }
 
+bool PolygonIndex::misses_bounds(const Rect& r) const {
+  return polygon_.empty() || r.right() < bounds_.x || r.x > bounds_.right() ||
+         r.top() < bounds_.y || r.y > bounds_.top();
+}
+
 Crossing PolygonIndex::crossing(const Rect& r) const {
   const size_t n = polygon_.size();
-  if (n == 0 || r.right() < bounds_.x || r.x > bounds_.right() || r.top() < bounds_.y ||
-      r.y > bounds_.top())
-    return Crossing::outside;
+  if (misses_bounds(r)) return Crossing::outside;
   for (size_t row = row_of(r.y); row <= row_of(r.top()); ++row)
     for (size_t col = column_of(r.x); col <= column_of(r.right()); ++col)
       for (const uint32_t i : cells_[row * columns_ + col])
@@ -194,9 +197,7 @@ bool PolygonIndex::contains(double x, double y) const {
 
 std::vector<uint32_t> PolygonIndex::edges_near(const Rect& r) const {
   std::vector<uint32_t> edges;
-  if (polygon_.empty() || r.right() < bounds_.x || r.x > bounds_.right() || r.top() < bounds_.y ||
-      r.y > bounds_.top())
-    return edges;
+  if (misses_bounds(r)) return edges;
   for (size_t row = row_of(r.y); row <= row_of(r.top()); ++row)
     for (size_t col = column_of(r.x); col <= column_of(r.right()); ++col)
       edges.insert(edges.end(), cells_[row * columns_ + col].begin(),

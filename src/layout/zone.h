@@ -66,6 +66,7 @@ class PolygonIndex {
   std::vector<std::vector<uint32_t>> bands_;  // edges by row, for the ray of `contains`
   size_t column_of(double x) const;
   size_t row_of(double y) const;
+  bool misses_bounds(const Rect& r) const;  // no edge can meet r, nor start in it
 };
 
 // A polygon whose edges all run along x or y as disjoint rectangles (bands between its
